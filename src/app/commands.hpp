@@ -1,0 +1,16 @@
+// Sub-command registration: each command family lives in its own file and
+// adds itself to the CLI11 app; main() only dispatches and maps errors to
+// exit codes. A handler returns the process exit code.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace rollspin::app {
+
+using CommandHandler = std::function<int()>;
+
+// Adds `solve` and `timeline`; sets `handler` when one of them is chosen.
+void registerSolveCommands(CLI::App& cli, CommandHandler& handler);
+
+}  // namespace rollspin::app

@@ -1,0 +1,38 @@
+// rollspin — a ball rolling without slipping or spinning is a spin-1/2 in a
+// magnetic field, with arc length as time. Entry point: parses the command
+// line, runs one command, and maps errors to exit codes (2 bad input,
+// 1 runtime failure).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+
+#include "app/commands.hpp"
+#include "core/error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App cli{"rollspin: the rolling sphere and the quantum spin"};
+  cli.require_subcommand(1);
+  rollspin::app::CommandHandler handler;
+  rollspin::app::registerSolveCommands(cli, handler);
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::ParseError& e) {
+    cli.exit(e);
+    return 2;
+  }
+
+  try {
+    return handler ? handler() : 2;
+  } catch (const rollspin::Error& e) {
+    std::fprintf(stderr, "rollspin: error: %s\n", e.what());
+    return e.exitCode();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "rollspin: internal error: %s\n", e.what());
+    return 1;
+  }
+}

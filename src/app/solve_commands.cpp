@@ -1,0 +1,98 @@
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "app/scene_model.hpp"
+#include "app/solve_job.hpp"
+#include "app/timeline_csv.hpp"
+#include "scene/scene_loader.hpp"
+#include "spin/su2.hpp"
+
+namespace rollspin::app {
+
+namespace {
+
+struct SolveOptions {
+  std::string scenePath;
+  std::vector<std::string> overrides;
+  bool json = false;
+  std::string output;
+};
+
+std::filesystem::path defaultOutput(const scene::SceneSpec& spec, const std::string& extension) {
+  std::filesystem::create_directories("output");
+  return std::filesystem::path("output") / (spec.name + extension);
+}
+
+int runSolve(const SolveOptions& o) {
+  const scene::SceneSpec spec = scene::loadSceneFile(o.scenePath, o.overrides);
+  const RollingModel model = buildModel(spec);
+  const SolverChoice choice = chooseSolver(spec, model);
+  const spin::SolveStats stats = solveScene(spec, model, choice);
+  const spin::AngleAxis aa = spin::rotationAngleAxis(stats.final);
+  const double psi = spin::spinorAngle(stats.final);
+  const spin::Su2& q = stats.final;
+  if (o.json) {
+    fmt::print(
+        "{{\n  \"scene\": \"{}\",\n  \"length\": {:.17g},\n  \"method\": \"{}\",\n  \"steps\": {},\n"
+        "  \"quaternion\": [{:.17g}, {:.17g}, {:.17g}, {:.17g}],\n  \"angle\": {:.17g},\n"
+        "  \"axis\": [{:.17g}, {:.17g}, {:.17g}],\n  \"spinor_angle\": {:.17g},\n"
+        "  \"unitarity_error\": {:.6g},\n  \"solve_seconds\": {:.6g}\n}}\n",
+        spec.name, model.path->length(), spin::methodName(choice.method), stats.steps, q.w, q.x, q.y, q.z, aa.angle,
+        aa.axis.x(), aa.axis.y(), aa.axis.z(), psi, stats.unitarityError, stats.seconds);
+    return 0;
+  }
+  constexpr double deg = 180.0 / std::numbers::pi;
+  fmt::print("scene            {}\n", o.scenePath);
+  fmt::print("path             {}\n", model.path->describe());
+  fmt::print("ball radius      {:.17g}\n", model.ballRadius);
+  fmt::print("length           {:.17g}\n", model.path->length());
+  fmt::print("method           {} ({} steps{})\n", spin::methodName(choice.method), stats.steps,
+             choice.method == spin::Method::Exact ? ", closed form" : choice.automaticSteps ? ", automatic" : "");
+  fmt::print("quaternion       [{:.17g}, {:.17g}, {:.17g}, {:.17g}]  (qw, qx, qy, qz)\n", q.w, q.x, q.y, q.z);
+  fmt::print("rotation angle   {:.17g} rad ({:.12g} deg)\n", aa.angle, aa.angle * deg);
+  fmt::print("rotation axis    [{:.17g}, {:.17g}, {:.17g}]\n", aa.axis.x(), aa.axis.y(), aa.axis.z());
+  fmt::print("spinor angle     {:.17g} rad ({:.12g} deg; {} sheet)\n", psi, psi * deg,
+             q.w < 0.0 ? "negative (U ~ -1)" : "positive");
+  fmt::print("unitarity error  {:.3g}\n", stats.unitarityError);
+  fmt::print("solve time       {:.3g} s\n", stats.seconds);
+  return 0;
+}
+
+int runTimeline(const SolveOptions& o) {
+  const scene::SceneSpec spec = scene::loadSceneFile(o.scenePath, o.overrides);
+  const RollingModel model = buildModel(spec);
+  const SolverChoice choice = chooseSolver(spec, model);
+  const std::vector<double> samples = timelineArcLengths(spec, model);
+  const std::filesystem::path out = o.output.empty() ? defaultOutput(spec, ".csv") : std::filesystem::path(o.output);
+  const spin::SolveStats stats = writeTimelineCsv(out, model, choice, samples);
+  std::fprintf(stderr, "rollspin: wrote %zu samples to %s (%s, %lld steps, %.3g s)\n", samples.size(),
+               out.string().c_str(), std::string(spin::methodName(choice.method)).c_str(), stats.steps, stats.seconds);
+  return 0;
+}
+
+}  // namespace
+
+void registerSolveCommands(CLI::App& cli, CommandHandler& handler) {
+  auto options = std::make_shared<SolveOptions>();
+
+  CLI::App* solve = cli.add_subcommand("solve", "Propagate the rolling spinor and print the final orientation");
+  solve->add_option("scene", options->scenePath, "Scene file (TOML)")->required();
+  solve->add_option("--set", options->overrides, "Override a scene key: --set key.sub=value (repeatable)");
+  solve->add_flag("--json", options->json, "Print JSON");
+  solve->callback([options, &handler] { handler = [options] { return runSolve(*options); }; });
+
+  CLI::App* timeline = cli.add_subcommand("timeline", "Write the orientation timeline as CSV");
+  timeline->add_option("scene", options->scenePath, "Scene file (TOML)")->required();
+  timeline->add_option("--set", options->overrides, "Override a scene key: --set key.sub=value (repeatable)");
+  timeline->add_option("-o,--output", options->output, "Output CSV (default: output/<scene>.csv)");
+  timeline->callback([options, &handler] { handler = [options] { return runTimeline(*options); }; });
+}
+
+}  // namespace rollspin::app

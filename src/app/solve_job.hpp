@@ -1,0 +1,37 @@
+// What a solve needs from a scene: the method, the step count (automatic
+// unless the scene sets solver.steps) and the timeline's sample arc lengths.
+#pragma once
+
+#include <vector>
+
+#include "app/scene_model.hpp"
+#include "scene/scene_spec.hpp"
+#include "spin/propagator.hpp"
+
+namespace rollspin::app {
+
+struct SolverChoice {
+  spin::Method method = spin::Method::Magnus4;
+  long long steps = 0;
+  bool automaticSteps = true;
+};
+
+// Throws BadInput (at solver.method) when 'exact' is asked for a path with
+// varying curvatures.
+[[nodiscard]] SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& model);
+
+// Automatic step count: h·max|ω| small enough that magnus4 reaches ~1e-13
+// per unit rotation on the foundation's paths (see README, "Solver").
+[[nodiscard]] long long automaticSteps(const RollingModel& model, spin::Method method);
+
+// Default sample count: 60 per turn of the path or of the ball, whichever is
+// more, plus the end point.
+[[nodiscard]] long long defaultSampleCount(const RollingModel& model);
+[[nodiscard]] std::vector<double> timelineArcLengths(const scene::SceneSpec& spec, const RollingModel& model);
+
+// Runs the solver once for its final value and statistics; throws Runtime on
+// a non-finite result.
+[[nodiscard]] spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model,
+                                          const SolverChoice& choice);
+
+}  // namespace rollspin::app

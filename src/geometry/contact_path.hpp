@@ -1,0 +1,62 @@
+// ContactPath — the curve traced by the contact point on the surface,
+// parametrised by arc length s ∈ [0, length()], with its Darboux frame:
+//   t = dP/ds,  n = unit surface normal pointing from the surface to the ball
+//   centre,  u = n × t,  and (Darboux equations, (t, u, n) right-handed)
+//   dt/ds =  κ_g u + κ_n n,   du/ds = −κ_g t + τ_g n,   dn/ds = −κ_n t − τ_g u.
+// The ball centre is C(s) = P(s) + R n(s).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rollspin::geometry {
+
+using Vec3 = Eigen::Vector3d;
+
+// Frame and curvatures at one arc length.
+struct DarbouxSample {
+  double s = 0.0;
+  Vec3 point = Vec3::Zero();          // P(s)
+  Vec3 tangent = Vec3::UnitX();       // t
+  Vec3 normal = Vec3::UnitZ();        // n, towards the ball centre
+  Vec3 tangentNormal = Vec3::UnitY(); // u = n × t
+  double normalCurvature = 0.0;       // κ_n
+  double geodesicCurvature = 0.0;     // κ_g
+  double geodesicTorsion = 0.0;       // τ_g (the paper's τ_r)
+
+  [[nodiscard]] Vec3 centre(double ballRadius) const { return point + ballRadius * normal; }
+};
+
+class ContactPath {
+ public:
+  virtual ~ContactPath() = default;
+
+  [[nodiscard]] virtual double length() const = 0;
+  // Frame and curvatures (closed form or from the fundamental forms).
+  [[nodiscard]] virtual DarbouxSample at(double s) const = 0;
+  // Contact point and normal only, from the surface's own point and normal
+  // functions: the independent kinematic oracle uses these and nothing else.
+  [[nodiscard]] virtual Vec3 point(double s) const = 0;
+  [[nodiscard]] virtual Vec3 normal(double s) const = 0;
+  // True when κ_n, κ_g and τ_g are constant along the whole path, so the
+  // closed-form propagator applies.
+  [[nodiscard]] virtual bool hasConstantCurvatures() const = 0;
+  // Interior arc lengths where a curvature jumps; steppers land on them.
+  [[nodiscard]] virtual std::vector<double> breakpoints() const { return {}; }
+  // Number of closed circuits (0 for an open path); sets default sampling.
+  [[nodiscard]] virtual double turns() const { return 0.0; }
+  [[nodiscard]] virtual std::string describe() const = 0;
+};
+
+// The Darboux vector d with dX/ds = d × X for X ∈ {t, u, n}:
+//   d = τ_g t − κ_n u + κ_g n.
+[[nodiscard]] Vec3 darbouxVector(const DarbouxSample& f);
+
+// A unit vector perpendicular to n, chosen deterministically: horizontal
+// (ẑ × n) when n is not vertical, else x̂. The default in-plane direction.
+[[nodiscard]] Vec3 defaultTangentFor(const Vec3& n);
+
+}  // namespace rollspin::geometry

@@ -1,0 +1,119 @@
+#include "kinematics/rolling_kinematics.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace rollspin::kinematics {
+
+namespace {
+Mat3 skew(const Vec3& w) {
+  Mat3 m;
+  m << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
+  return m;
+}
+}  // namespace
+
+std::vector<double> firstDerivativeWeights(std::span<const double> nodes, double x0) {
+  // Fornberg (1988), "Generation of finite difference formulas on arbitrarily
+  // spaced grids", specialised to derivative orders 0 and 1.
+  const std::size_t n = nodes.size();
+  std::vector<std::vector<double>> c0(n, std::vector<double>(n, 0.0)), c1 = c0;
+  c0[0][0] = 1.0;
+  double c1prod = 1.0;
+  for (std::size_t i = 1; i < n; ++i) {
+    double c2 = 1.0;
+    for (std::size_t j = 0; j < i; ++j) {
+      const double c3 = nodes[i] - nodes[j];
+      c2 *= c3;
+      c1[i][j] = ((nodes[i] - x0) * c1[i - 1][j] - c0[i - 1][j]) / c3;
+      c0[i][j] = ((nodes[i] - x0) * c0[i - 1][j]) / c3;
+    }
+    c1[i][i] = c1prod / c2 * (c0[i - 1][i - 1] - (nodes[i - 1] - x0) * c1[i - 1][i - 1]);
+    c0[i][i] = -c1prod / c2 * (nodes[i - 1] - x0) * c0[i - 1][i - 1];
+    c1prod = c2;
+  }
+  return c1[n - 1];
+}
+
+RollingKinematics::RollingKinematics(const geometry::ContactPath& path, double ballRadius, KinematicSettings settings)
+    : path_(path), ballRadius_(ballRadius), settings_(settings) {
+  cuts_.push_back(0.0);
+  for (double b : path_.breakpoints())
+    if (b > 0.0 && b < path_.length()) cuts_.push_back(b);
+  cuts_.push_back(path_.length());
+  if (settings_.fdStep <= 0.0) {
+    // Balance truncation (h⁸ C⁽⁹⁾) against round-off (ε|C|/h): about 1e-2 of
+    // the smaller of R and the shortest segment.
+    double shortest = path_.length();
+    for (std::size_t i = 0; i + 1 < cuts_.size(); ++i) shortest = std::min(shortest, cuts_[i + 1] - cuts_[i]);
+    settings_.fdStep = 1e-2 * std::min(ballRadius_, shortest / 8.0);
+  }
+}
+
+Vec3 RollingKinematics::centre(double s) const { return path_.point(s) + ballRadius_ * path_.normal(s); }
+
+Vec3 RollingKinematics::centreVelocity(double s) const {
+  // Segment containing s (a node on a cut belongs to the segment it starts,
+  // except the end point).
+  std::size_t seg = 0;
+  while (seg + 2 < cuts_.size() && s >= cuts_[seg + 1]) ++seg;
+  const double a = cuts_[seg], b = cuts_[seg + 1], h = settings_.fdStep;
+  // 9 nodes, centred when possible, shifted to stay inside [a, b]: 8th order.
+  double first = s - 4.0 * h;
+  if (first < a) first = a;
+  if (first + 8.0 * h > b) first = std::max(a, b - 8.0 * h);
+  double nodes[9];
+  for (int k = 0; k < 9; ++k) nodes[k] = first + k * h;
+  const std::vector<double> w = firstDerivativeWeights(nodes, s);
+  Vec3 v = Vec3::Zero();
+  for (int k = 0; k < 9; ++k) v += w[k] * centre(nodes[k]);
+  return v;
+}
+
+Vec3 RollingKinematics::omega(double s) const { return path_.normal(s).cross(centreVelocity(s)) / ballRadius_; }
+
+Mat3 RollingKinematics::rk4Step(const Mat3& q, double s, double h) const {
+  const Mat3 wa = skew(omega(s)), wb = skew(omega(s + 0.5 * h)), wc = skew(omega(s + h));
+  const Mat3 k1 = wa * q;
+  const Mat3 k2 = wb * (q + 0.5 * h * k1);
+  const Mat3 k3 = wb * (q + 0.5 * h * k2);
+  const Mat3 k4 = wc * (q + h * k3);
+  return q + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+}
+
+std::vector<Mat3> RollingKinematics::orientations(std::span<const double> sampleS) const {
+  std::vector<Mat3> out;
+  out.reserve(sampleS.size());
+  const double length = path_.length();
+  Mat3 q = Mat3::Identity();
+  std::size_t next = 0;
+  for (std::size_t seg = 0; seg + 1 < cuts_.size(); ++seg) {
+    const double a = cuts_[seg], b = cuts_[seg + 1];
+    const long long n = std::max<long long>(
+        1, std::llround(static_cast<double>(settings_.steps) * (b - a) / std::max(length, 1e-300)));
+    const double h = (b - a) / static_cast<double>(n);
+    for (long long k = 0; k < n; ++k) {
+      const double s = a + static_cast<double>(k) * h;
+      const double sNext = (k + 1 == n) ? b : s + h;
+      while (next < sampleS.size() && sampleS[next] < sNext) {
+        const double dh = std::max(0.0, sampleS[next] - s);
+        out.push_back(dh == 0.0 ? q : rk4Step(q, s, dh));
+        ++next;
+      }
+      q = rk4Step(q, s, sNext - s);
+    }
+  }
+  while (next < sampleS.size()) {
+    out.push_back(q);
+    ++next;
+  }
+  return out;
+}
+
+Mat3 RollingKinematics::finalOrientation() const {
+  const double end[1] = {path_.length()};
+  return orientations(end).front();
+}
+
+}  // namespace rollspin::kinematics

@@ -1,0 +1,53 @@
+// Independent oracle for the rolling ball: integrates the rigid-body
+// kinematics in SO(3),
+//   dQ/ds = [ω]× Q,   ω = (1/R) n × dC/ds,   C(s) = P(s) + R n(s),   Q(0) = 1,
+// with classical RK4 on the nine entries of Q and dC/ds from high-order
+// finite differences of C. It reads only ContactPath::point and ::normal
+// (the surface's own point and normal functions): no curvature, no Darboux
+// frame, no spinor. Precondition: point/normal are smooth on each breakpoint
+// segment; stencils stay inside the segment they differentiate.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <span>
+#include <vector>
+
+#include "geometry/contact_path.hpp"
+
+namespace rollspin::kinematics {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+
+struct KinematicSettings {
+  long long steps = 20000;  // RK4 steps over the whole path
+  double fdStep = 0.0;      // finite-difference spacing; 0 → automatic
+};
+
+class RollingKinematics {
+ public:
+  RollingKinematics(const geometry::ContactPath& path, double ballRadius, KinematicSettings settings = {});
+
+  // C(s) = P(s) + R n(s).
+  [[nodiscard]] Vec3 centre(double s) const;
+  // dC/ds by an 8th-order finite-difference stencil inside s's segment.
+  [[nodiscard]] Vec3 centreVelocity(double s) const;
+  // ω(s) = (1/R) n × dC/ds.
+  [[nodiscard]] Vec3 omega(double s) const;
+  // Q at each s of sampleS (non-decreasing, inside [0, L]).
+  [[nodiscard]] std::vector<Mat3> orientations(std::span<const double> sampleS) const;
+  [[nodiscard]] Mat3 finalOrientation() const;
+
+ private:
+  [[nodiscard]] Mat3 rk4Step(const Mat3& q, double s, double h) const;
+  const geometry::ContactPath& path_;
+  double ballRadius_;
+  KinematicSettings settings_;
+  std::vector<double> cuts_;  // 0, breakpoints, L
+};
+
+// Fornberg's weights for the first derivative at x0 from values at nodes x.
+[[nodiscard]] std::vector<double> firstDerivativeWeights(std::span<const double> nodes, double x0);
+
+}  // namespace rollspin::kinematics

@@ -1,0 +1,76 @@
+// SceneSpec — what a scene file asks for, as plain structs. Every default
+// lives here, in the member initialisers, and README.md documents the same
+// values. Each key that was given remembers where (file:line:col or the --set
+// argument) through SceneSpec::where().
+#pragma once
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace rollspin::scene {
+
+using Vec3 = std::array<double, 3>;
+
+struct BallSpec {
+  double radius = 1.0;  // R
+};
+
+enum class SurfaceKind { Plane, Sphere };
+enum class SurfaceSide { Outside, Inside };
+
+struct SurfaceSpec {
+  SurfaceKind kind = SurfaceKind::Plane;
+  Vec3 normal{0.0, 0.0, 1.0};  // plane: unit normal on the ball's side (normalised on load)
+  double radius = 3.0;          // sphere: r
+  SurfaceSide side = SurfaceSide::Outside;
+};
+
+enum class PathKind { Line, Circle, Parallel };
+
+struct PathSpec {
+  PathKind kind = PathKind::Circle;
+  double turns = 1.0;                 // circle, parallel
+  bool counterClockwise = true;       // direction = "ccw" | "cw"
+  double length = 10.0;               // line
+  std::optional<Vec3> directionVector;  // line; default: horizontal in the plane (see README)
+  double radius = 3.0;                // circle: contact circle radius r
+  double colatitudeDeg = 60.0;        // parallel: θ in degrees
+};
+
+struct PlateSpec {
+  double radius = 0.0;  // R1: radius of the circle each plate point describes
+};
+
+struct SolverSpec {
+  std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4
+  std::optional<long long> steps;  // default: automatic (see README)
+};
+
+struct TimelineSpec {
+  std::optional<long long> samples;  // default: 60 per turn (+1)
+};
+
+struct SceneSpec {
+  std::string sourceFile;  // the scene file ("" when built in code)
+  std::string name;        // file stem, e.g. "lollipop"
+  BallSpec ball;
+  SurfaceSpec surface;
+  PathSpec path;
+  std::optional<PlateSpec> plate;  // [plate] present: Brockett's upper plate
+  SolverSpec solver;
+  TimelineSpec timeline;
+
+  // Where a dotted key ("ball.radius") was set; the file (no line) when the
+  // key took its default.
+  [[nodiscard]] SourceLoc where(const std::string& key) const;
+  std::map<std::string, SourceLoc> locations;
+};
+
+[[nodiscard]] std::string toString(SurfaceKind k);
+[[nodiscard]] std::string toString(PathKind k);
+
+}  // namespace rollspin::scene

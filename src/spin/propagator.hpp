@@ -1,0 +1,87 @@
+// Propagators for the rolling spinor  dU/ds = −(i/2) ω(s)·σ U,  U(0) = 1
+// (ω = −B, see field.hpp), each marching a fixed grid of `steps` steps over
+// [0, L] (distributed over the path's breakpoint segments so that grid nodes
+// land on curvature jumps):
+//   exact    closed form for constant κ_n, κ_g, τ_g (rotating-frame
+//            construction):  U(s) = exp(−(i/2) s d₀·σ) exp(−(i/2) s e₀·σ),
+//            d₀ = τ_g t₀ − κ_n u₀ + κ_g n₀ (Darboux vector), e₀ = ω₀ − d₀
+//            = u₀/R − κ_g n₀. Evaluated directly at each s: no stepping.
+//   magnus2  exponential midpoint: U ← exp(h A(s + h/2)) U.
+//   magnus4  two Gauss points c = ½ ∓ √3/6 and one commutator:
+//            Ω = (h/2)(A₁ + A₂) + (√3/12) h² [A₂, A₁].
+//   rk4      classical Runge–Kutta on the raw spinor (not renormalised).
+// In su(2) ≅ (R³, ×): A(ω) = −(i/2) ω·σ and [A(a), A(b)] = A(a × b).
+// A sample s between grid nodes is reached by one partial step from the
+// preceding node, so samples never perturb the main march.
+// The numeric core returns a status; it never prints or throws.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "geometry/contact_path.hpp"
+#include "spin/su2.hpp"
+
+namespace rollspin::spin {
+
+enum class Method { Exact, Magnus2, Magnus4, Rk4 };
+
+[[nodiscard]] std::string_view methodName(Method m);
+[[nodiscard]] std::optional<Method> parseMethod(std::string_view name);
+[[nodiscard]] std::span<const Method> allMethods();
+// Order of accuracy of the method (0 for exact).
+[[nodiscard]] int methodOrder(Method m);
+
+enum class SolveStatus {
+  Ok,
+  NonFinite,                    // NaN or infinity appeared; the march stopped
+  ExactNeedsConstantCurvature,  // exact asked for a path whose curvatures vary
+  BadSteps,                     // steps < 1 for a stepping method
+};
+[[nodiscard]] std::string_view statusMessage(SolveStatus s);
+
+struct SolveStats {
+  SolveStatus status = SolveStatus::Ok;
+  Method method = Method::Magnus4;
+  long long steps = 0;          // grid steps taken (0 for exact)
+  double unitarityError = 0.0;  // max |‖U‖ − 1| over grid nodes and samples
+  double seconds = 0.0;         // wall time of the march alone
+  Su2 final;                    // U(L)
+};
+
+// Called once per requested sample, in order: (sample index, s, U(s)).
+using SampleSink = std::function<void(std::size_t, double, const Su2&)>;
+
+class Propagator {
+ public:
+  Propagator(const geometry::ContactPath& path, double ballRadius, Method method, long long steps);
+
+  // Marches [0, L] once and reports U at every s of sampleS (non-decreasing,
+  // inside [0, L]). Also returns U(L) and the unitarity error.
+  [[nodiscard]] SolveStats run(std::span<const double> sampleS, const SampleSink& sink) const;
+  // U(L) only.
+  [[nodiscard]] SolveStats solveFinal() const { return run({}, {}); }
+
+  // One step of the method from s to s + h.
+  [[nodiscard]] Su2 step(const Su2& u, double s, double h) const;
+  // Closed form U(s) (Method::Exact only; path must have constant curvatures).
+  [[nodiscard]] Su2 closedForm(double s) const;
+  [[nodiscard]] Vec3 omega(double s) const;
+
+  [[nodiscard]] Method method() const { return method_; }
+
+ private:
+  const geometry::ContactPath& path_;
+  double ballRadius_;
+  Method method_;
+  long long steps_;
+  Vec3 d0_ = Vec3::Zero(), e0_ = Vec3::Zero();  // exact method's two rates
+};
+
+// s_j = j L / (count − 1), j = 0 … count − 1 (count ≥ 2).
+[[nodiscard]] std::vector<double> uniformSamples(double length, std::size_t count);
+
+}  // namespace rollspin::spin

@@ -1,0 +1,52 @@
+#include "spin/su2.hpp"
+
+#include <numbers>
+
+namespace rollspin::spin {
+
+Mat3 Su2::rotationMatrix() const {
+  const double ww = w * w, xx = x * x, yy = y * y, zz = z * z;
+  Mat3 m;
+  m << ww + xx - yy - zz, 2 * (x * y - w * z), 2 * (x * z + w * y),  //
+      2 * (x * y + w * z), ww - xx + yy - zz, 2 * (y * z - w * x),    //
+      2 * (x * z - w * y), 2 * (y * z + w * x), ww - xx - yy + zz;
+  return m;
+}
+
+Vec3 Su2::rotate(const Vec3& v) const { return rotationMatrix() * v; }
+
+Su2 expRotation(const Vec3& v) {
+  const double half = 0.5 * v.norm();
+  // sin(h)/h: below 1e-4 the 3-term series is exact to round-off (h⁶/5040 < 1e-26).
+  double sincHalf;
+  if (half < 1e-4) {
+    const double h2 = half * half;
+    sincHalf = 1.0 - h2 / 6.0 + h2 * h2 / 120.0;
+  } else {
+    sincHalf = std::sin(half) / half;
+  }
+  const double k = 0.5 * sincHalf;  // sin(|v|/2)/|v|
+  return {std::cos(half), k * v.x(), k * v.y(), k * v.z()};
+}
+
+AngleAxis rotationAngleAxis(const Su2& q) {
+  const double vn = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
+  AngleAxis aa;
+  aa.angle = 2.0 * std::atan2(vn, std::abs(q.w));
+  if (vn > 0.0) aa.axis = (q.w < 0.0 ? -1.0 : 1.0) * q.vec() / vn;
+  return aa;
+}
+
+double spinorAngle(const Su2& q) {
+  const double angle = rotationAngleAxis(q).angle;
+  return q.w < 0.0 ? angle + 2.0 * std::numbers::pi : angle;
+}
+
+double spinorDistance(const Su2& a, const Su2& b) {
+  const Su2 d = a.conjugate() * b;
+  return 2.0 * std::atan2(d.vec().norm(), d.w);
+}
+
+double rotationDistance(const Su2& a, const Su2& b) { return rotationAngleAxis(a.conjugate() * b).angle; }
+
+}  // namespace rollspin::spin

@@ -1,0 +1,26 @@
+// Runs the built rollspin binary as a subprocess (no shell), capturing exit
+// code, stdout and stderr: the CLI is tested the way a user meets it.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace rollspin::test {
+
+struct CliResult {
+  int exitCode = -1;
+  std::string out;
+  std::string err;
+};
+
+// argv excludes the program name. cwd: working directory ("" = current).
+CliResult runRollspin(const std::vector<std::string>& args, const std::filesystem::path& cwd = {});
+
+// A fresh empty directory under the build tree for one test.
+std::filesystem::path freshTempDir(const std::string& name);
+
+std::filesystem::path sourceDir();
+std::filesystem::path binaryPath();
+
+}  // namespace rollspin::test

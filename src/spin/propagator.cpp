@@ -5,6 +5,9 @@
 #include <chrono>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
+#include "spin/block_kernel.hpp"
 #include "spin/field.hpp"
 
 namespace rollspin::spin {
@@ -18,6 +21,7 @@ Su2 derivative(const Vec3& w, const Su2& u) {
   return half * u;
 }
 Su2 axpy(const Su2& u, double h, const Su2& k) { return {u.w + h * k.w, u.x + h * k.x, u.y + h * k.y, u.z + h * k.z}; }
+constexpr std::size_t kBlock = kernel::kBlockSteps;
 }  // namespace
 
 std::string_view methodName(Method m) {
@@ -73,27 +77,59 @@ Vec3 Propagator::omega(double s) const { return angularVelocity(path_.at(s), bal
 Su2 Propagator::closedForm(double s) const { return expRotation(s * d0_) * expRotation(s * e0_); }
 
 Su2 Propagator::step(const Su2& u, double s, double h) const {
-  switch (method_) {
-    case Method::Exact: return closedForm(s + h);
-    case Method::Magnus2: return expRotation(h * omega(s + 0.5 * h)) * u;
+  if (method_ == Method::Exact) return closedForm(s + h);
+  const std::span<const double> nodes = stepNodes(method_);
+  Vec3 w[kMaxNodes];
+  for (std::size_t i = 0; i < nodes.size(); ++i) w[i] = omega(s + nodes[i] * h);
+  return stepElement(method_, h, w) * u;
+}
+
+std::span<const double> stepNodes(Method m) {
+  static constexpr double kMidpoint[] = {0.5};
+  static constexpr double kGauss2[] = {0.5 - 0.28867513459481288225, 0.5 + 0.28867513459481288225};  // ½ ∓ √3/6
+  static constexpr double kSimpson[] = {0.0, 0.5, 1.0};
+  switch (m) {
+    case Method::Magnus2: return kMidpoint;
+    case Method::Magnus4: return kGauss2;
+    case Method::Rk4: return kSimpson;
+    case Method::Exact: break;
+  }
+  return {};
+}
+
+// Every stepper here maps U ↦ E U with E independent of U (the equation is
+// linear and all terms multiply from the left), so a step is one SU(2)
+// element built from ω at the method's nodes.
+Su2 stepElement(Method m, double h, const Vec3* w) {
+  switch (m) {
+    case Method::Magnus2: return expRotation(h * w[0]);
     case Method::Magnus4: {
-      constexpr double c = 0.28867513459481288225;  // √3/6
-      const Vec3 w1 = omega(s + (0.5 - c) * h), w2 = omega(s + (0.5 + c) * h);
-      const Vec3 magnus = (0.5 * h) * (w1 + w2) + (0.14433756729740644113 * h * h) * w2.cross(w1);  // √3/12
-      return expRotation(magnus) * u;
+      const Vec3 magnus = (0.5 * h) * (w[0] + w[1]) + (0.14433756729740644113 * h * h) * w[1].cross(w[0]);  // √3/12
+      return expRotation(magnus);
     }
     case Method::Rk4: {
-      const Vec3 wa = omega(s), wb = omega(s + 0.5 * h), wc = omega(s + h);
-      const Su2 k1 = derivative(wa, u);
-      const Su2 k2 = derivative(wb, axpy(u, 0.5 * h, k1));
-      const Su2 k3 = derivative(wb, axpy(u, 0.5 * h, k2));
-      const Su2 k4 = derivative(wc, axpy(u, h, k3));
-      return {u.w + h / 6.0 * (k1.w + 2 * k2.w + 2 * k3.w + k4.w), u.x + h / 6.0 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x),
-              u.y + h / 6.0 * (k1.y + 2 * k2.y + 2 * k3.y + k4.y), u.z + h / 6.0 * (k1.z + 2 * k2.z + 2 * k3.z + k4.z)};
+      const Su2 one = Su2::identity();
+      const Su2 k1 = derivative(w[0], one);
+      const Su2 k2 = derivative(w[1], axpy(one, 0.5 * h, k1));
+      const Su2 k3 = derivative(w[1], axpy(one, 0.5 * h, k2));
+      const Su2 k4 = derivative(w[2], axpy(one, h, k3));
+      return {1.0 + h / 6.0 * (k1.w + 2 * k2.w + 2 * k3.w + k4.w), h / 6.0 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x),
+              h / 6.0 * (k1.y + 2 * k2.y + 2 * k3.y + k4.y), h / 6.0 * (k1.z + 2 * k2.z + 2 * k3.z + k4.z)};
     }
+    case Method::Exact: break;
   }
-  return u;
+  return Su2::identity();
 }
+
+namespace {
+// E[m−1] ⋯ E[1] E[0] by pairwise products: round-off grows like log m
+// instead of m, and the independent products pipeline well.
+Su2 orderedProduct(Su2* e, std::size_t m) {
+  for (std::size_t stride = 1; stride < m; stride *= 2)
+    for (std::size_t i = 0; i + stride < m; i += 2 * stride) e[i] = e[i + stride] * e[i];
+  return e[0];
+}
+}  // namespace
 
 SolveStats Propagator::run(std::span<const double> sampleS, const SampleSink& sink) const {
   using Clock = std::chrono::steady_clock;
@@ -130,35 +166,94 @@ SolveStats Propagator::run(std::span<const double> sampleS, const SampleSink& si
     if (b > 0.0 && b < length) cuts.push_back(b);
   cuts.push_back(length);
 
+  const std::span<const double> nodes = stepNodes(method_);
+  const std::size_t nodeCount = nodes.size();
+  // On a path of constant curvatures the frame turns rigidly about the fixed
+  // Darboux vector d, so ω(s + jh) = Rot(d, j h |d|) ω(s) exactly: the field
+  // at a block's nodes is one direct evaluation per node and a precomputed
+  // rotation per step (no trigonometry inside the block).
+  const bool rigidField = path_.hasConstantCurvatures();
+  const Vec3 darboux = rigidField ? geometry::darbouxVector(path_.at(0.0)) : Vec3::Zero();
+  const bool geometric = method_ != Method::Rk4;  // Magnus methods: unit step elements
+  const bool vectorKernel = rigidField && (method_ == Method::Magnus2 || method_ == Method::Magnus4);
+
+  std::array<Su2, kBlock> elements;
+  std::array<Vec3, kBlock * kMaxNodes> w;
+  kernel::RotationPowers powers;
+  auto power = [&powers](std::size_t j) {
+    // Step j sits at position 4i + c with j = 16c + i (see block_kernel.hpp).
+    const std::size_t p = (j % kernel::kChainLength) * kernel::kChains + j / kernel::kChainLength;
+    Mat3 r;
+    for (int k = 0; k < 9; ++k) r(k / 3, k % 3) = powers.m[k][p];
+    return r;
+  };
   Su2 u = Su2::identity();
   std::size_t next = 0;
-  auto emitUpTo = [&](double sNode, const Su2& uNode, double sEnd, double h, bool inclusiveEnd) {
-    // Samples in [sNode, sEnd) (or [sNode, sEnd] at the very end): one partial step each.
-    while (next < sampleS.size() && (sampleS[next] < sEnd || (inclusiveEnd && sampleS[next] <= sEnd))) {
-      const double sj = std::max(sampleS[next], sNode);
-      const double dh = sj - sNode;
-      const Su2 uj = dh == 0.0 ? uNode : (dh >= h ? step(uNode, sNode, h) : step(uNode, sNode, dh));
-      if (!track(uj)) return false;
-      if (sink) sink(next, sampleS[next], uj);
-      ++next;
-    }
-    return true;
-  };
 
   for (std::size_t seg = 0; seg + 1 < cuts.size(); ++seg) {
     const double a = cuts[seg], b = cuts[seg + 1];
     const long long n =
         std::max<long long>(1, std::llround(static_cast<double>(steps_) * (b - a) / std::max(length, 1e-300)));
     const double h = (b - a) / static_cast<double>(n);
-    for (long long k = 0; k < n; ++k) {
-      const double s = a + static_cast<double>(k) * h;
-      const bool lastStep = (seg + 2 == cuts.size()) && (k + 1 == n);
-      const double sNext = (k + 1 == n) ? b : s + h;
-      if (!emitUpTo(s, u, sNext, h, false)) return finish(SolveStatus::NonFinite);
-      u = step(u, s, sNext - s);
-      ++stats.steps;
+    if (rigidField) kernel::fillRotationPowers(powers, darboux, h);
+    for (long long k0 = 0; k0 < n; k0 += static_cast<long long>(kBlock)) {
+      const std::size_t m = static_cast<std::size_t>(std::min<long long>(kBlock, n - k0));
+      const double sBlock = a + static_cast<double>(k0) * h;
+      const double sBlockEnd = (k0 + static_cast<long long>(m) == n) ? b : sBlock + static_cast<double>(m) * h;
+      const bool lastBlock = seg + 2 == cuts.size() && k0 + static_cast<long long>(m) == n;
+      const bool samplesHere = next < sampleS.size() && sampleS[next] < sBlockEnd;
+      const bool useKernel = vectorKernel && m == kBlock;
+
+      Vec3 anchors[kMaxNodes];
+      for (std::size_t i = 0; i < nodeCount; ++i) anchors[i] = omega(sBlock + nodes[i] * h);
+      // Scalar step elements: needed for partial blocks, varying fields and
+      // for walking to samples; the vector kernel makes its own.
+      if (!useKernel || samplesHere) {
+        for (std::size_t j = 0; j < m; ++j) {
+          for (std::size_t i = 0; i < nodeCount; ++i) {
+            w[j * kMaxNodes + i] = rigidField ? Vec3(power(j) * anchors[i])
+                                              : omega(sBlock + (static_cast<double>(j) + nodes[i]) * h);
+          }
+          elements[j] = stepElement(method_, h, &w[j * kMaxNodes]);
+        }
+      }
+
+      // Samples inside this block: walk the prefix products from the block's
+      // start, then one partial step from the node before each sample. They
+      // never feed back into the march, so U(L) does not depend on them.
+      if (samplesHere) {
+        Su2 prefix = u;
+        std::size_t node = 0;
+        while (next < sampleS.size() && sampleS[next] < sBlockEnd) {
+          const double sj = std::max(sampleS[next], sBlock);
+          const std::size_t target =
+              std::min<std::size_t>(m - 1, static_cast<std::size_t>(std::max(0.0, (sj - sBlock) / h)));
+          for (; node < target; ++node) prefix = elements[node] * prefix;
+          const double sNode = sBlock + static_cast<double>(node) * h;
+          const double dh = sj - sNode;
+          const Su2 uj = dh <= 0.0 ? prefix : step(prefix, sNode, dh);
+          if (!track(uj)) return finish(SolveStatus::NonFinite);
+          if (sink) sink(next, sampleS[next], uj);
+          ++next;
+        }
+      }
+
+      Su2 block = useKernel ? kernel::rigidMagnusBlock(methodOrder(method_), h, anchors, powers)
+                            : orderedProduct(elements.data(), m);
+      // A product of unit elements is unit; remove the round-off in its norm
+      // so that it cannot accumulate over millions of steps.
+      if (geometric) {
+        const double norm = block.norm();
+        block = {block.w / norm, block.x / norm, block.y / norm, block.z / norm};
+      }
+      u = block * u;
+      stats.steps += static_cast<long long>(m);
       if (!track(u)) return finish(SolveStatus::NonFinite);
-      if (lastStep && !emitUpTo(sNext, u, sNext, h, true)) return finish(SolveStatus::NonFinite);
+      if (lastBlock) {
+        for (; next < sampleS.size(); ++next) {
+          if (sink) sink(next, sampleS[next], u);
+        }
+      }
     }
   }
   stats.final = u;

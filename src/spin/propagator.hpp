@@ -12,7 +12,9 @@
 //   rk4      classical Runge–Kutta on the raw spinor (not renormalised).
 // In su(2) ≅ (R³, ×): A(ω) = −(i/2) ω·σ and [A(a), A(b)] = A(a × b).
 // A sample s between grid nodes is reached by one partial step from the
-// preceding node, so samples never perturb the main march.
+// preceding node, so samples never perturb the main march. The march
+// multiplies blocks of 64 step elements pairwise before applying them, so
+// round-off grows with the number of blocks, not of steps.
 // The numeric core returns a status; it never prints or throws.
 #pragma once
 
@@ -80,6 +82,13 @@ class Propagator {
   long long steps_;
   Vec3 d0_ = Vec3::Zero(), e0_ = Vec3::Zero();  // exact method's two rates
 };
+
+// Fractions c ∈ [0, 1] of a step at which a stepping method samples ω.
+inline constexpr std::size_t kMaxNodes = 3;
+[[nodiscard]] std::span<const double> stepNodes(Method m);
+// The step U ↦ E U of a stepping method, from ω at its nodes (w[i] at
+// s + c_i h). Every method here is linear in U from the left.
+[[nodiscard]] Su2 stepElement(Method m, double h, const Vec3* w);
 
 // s_j = j L / (count − 1), j = 0 … count − 1 (count ≥ 2).
 [[nodiscard]] std::vector<double> uniformSamples(double length, std::size_t count);

@@ -174,6 +174,8 @@ SolveStats Propagator::run(std::span<const double> sampleS, const SampleSink& si
   // rotation per step (no trigonometry inside the block).
   const bool rigidField = path_.hasConstantCurvatures();
   const Vec3 darboux = rigidField ? geometry::darbouxVector(path_.at(0.0)) : Vec3::Zero();
+  const Vec3 darbouxAxis = darboux.norm() > 0.0 ? Vec3(darboux.normalized()) : Vec3::UnitZ();
+  Vec3 firstAnchors[kMaxNodes];
   const bool geometric = method_ != Method::Rk4;  // Magnus methods: unit step elements
   const bool vectorKernel = rigidField && (method_ == Method::Magnus2 || method_ == Method::Magnus4);
 
@@ -204,8 +206,17 @@ SolveStats Propagator::run(std::span<const double> sampleS, const SampleSink& si
       const bool samplesHere = next < sampleS.size() && sampleS[next] < sBlockEnd;
       const bool useKernel = vectorKernel && m == kBlock;
 
+      // ω at the nodes of the block's first step: on a rigid field, the
+      // segment's first-step values turned by Rot(d, k₀ h |d|) (one direct
+      // rotation per block, no accumulation); otherwise evaluated.
       Vec3 anchors[kMaxNodes];
-      for (std::size_t i = 0; i < nodeCount; ++i) anchors[i] = omega(sBlock + nodes[i] * h);
+      if (rigidField && k0 > 0) {
+        const Mat3 turn = Eigen::AngleAxisd(static_cast<double>(k0) * h * darboux.norm(), darbouxAxis).toRotationMatrix();
+        for (std::size_t i = 0; i < nodeCount; ++i) anchors[i] = turn * firstAnchors[i];
+      } else {
+        for (std::size_t i = 0; i < nodeCount; ++i) anchors[i] = omega(sBlock + nodes[i] * h);
+        if (rigidField) std::copy(anchors, anchors + nodeCount, firstAnchors);
+      }
       // Scalar step elements: needed for partial blocks, varying fields and
       // for walking to samples; the vector kernel makes its own.
       if (!useKernel || samplesHere) {
@@ -238,15 +249,17 @@ SolveStats Propagator::run(std::span<const double> sampleS, const SampleSink& si
         }
       }
 
-      Su2 block = useKernel ? kernel::rigidMagnusBlock(methodOrder(method_), h, anchors, powers)
-                            : orderedProduct(elements.data(), m);
-      // A product of unit elements is unit; remove the round-off in its norm
-      // so that it cannot accumulate over millions of steps.
-      if (geometric) {
-        const double norm = block.norm();
-        block = {block.w / norm, block.x / norm, block.y / norm, block.z / norm};
-      }
+      const Su2 block = useKernel ? kernel::rigidMagnusBlock(methodOrder(method_), h, anchors, powers)
+                                  : orderedProduct(elements.data(), m);
       u = block * u;
+      // A product of unit elements is unit: project the round-off in the norm
+      // away once per block, so it cannot accumulate over millions of steps
+      // (the direction on S³, i.e. the orientation, is untouched). rk4 is the
+      // raw baseline and keeps its drift.
+      if (geometric) {
+        const double norm = u.norm();
+        u = {u.w / norm, u.x / norm, u.y / norm, u.z / norm};
+      }
       stats.steps += static_cast<long long>(m);
       if (!track(u)) return finish(SolveStatus::NonFinite);
       if (lastBlock) {

@@ -16,17 +16,16 @@ Mat3 Su2::rotationMatrix() const {
 Vec3 Su2::rotate(const Vec3& v) const { return rotationMatrix() * v; }
 
 Su2 expRotation(const Vec3& v) {
-  // x = |v|/2. Small steps (every stepper's normal case) use even Taylor
-  // polynomials in x² for cos x and sin(x)/x: no sqrt, no libm call, and
-  // exact to round-off for x < 1/4 (first omitted terms x¹⁶/16!, x¹⁶/17! <
-  // 3e-23). Larger angles use libm.
+  // x = |v|/2; small steps (every stepper's normal case) need no sqrt and no
+  // libm call (see the series in su2.hpp).
   const double x2 = 0.25 * v.squaredNorm();
   double cosHalf, sincHalf;
-  if (x2 < 0.0625) {
-    cosHalf = 1.0 + x2 * (-1.0 / 2 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 +
-              x2 * (1.0 / 479001600 + x2 * (-1.0 / 87178291200.0)))))));
-    sincHalf = 1.0 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 + x2 * (-1.0 / 39916800 +
-               x2 * (1.0 / 6227020800.0 + x2 * (-1.0 / 1307674368000.0)))))));
+  if (x2 < kShortSeriesX2) {
+    cosHalf = cosHalfShort(x2);
+    sincHalf = sincHalfShort(x2);
+  } else if (x2 < kLongSeriesX2) {
+    cosHalf = cosHalfLong(x2);
+    sincHalf = sincHalfLong(x2);
   } else {
     const double half = std::sqrt(x2);
     cosHalf = std::cos(half);

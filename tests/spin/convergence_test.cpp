@@ -48,15 +48,15 @@ TEST(Convergence, Rk4IsFourthOrderButNotUnitary) {
 }
 
 TEST(Convergence, GeometricMethodsStayUnitaryWhereRk4Drifts) {
-  // 200 circuits with h|ω| = 0.1: rk4's amplification factor per step is
+  // 1000 circuits with h|ω| = 0.1: rk4's amplification factor per step is
   // 1 − O((h|ω|)⁶), which adds up to a visible loss of norm; the Magnus
   // methods multiply exact SU(2) elements.
-  const auto path = lollipopPath(3.0, 200.0);
+  const auto path = lollipopPath(3.0, 1000.0);
   const long long steps = static_cast<long long>(path->length() / 0.1);
   const auto rk4 = spin::Propagator(*path, 1.0, Method::Rk4, steps).solveFinal();
   const auto m4 = spin::Propagator(*path, 1.0, Method::Magnus4, steps).solveFinal();
   const auto m2 = spin::Propagator(*path, 1.0, Method::Magnus2, steps).solveFinal();
-  EXPECT_GT(rk4.unitarityError, 1e-5);
+  EXPECT_GT(rk4.unitarityError, 1e-5);  // measured: 2e-5
   EXPECT_LT(m4.unitarityError, 1e-13);
   EXPECT_LT(m2.unitarityError, 1e-13);
 }

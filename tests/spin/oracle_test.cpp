@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "oracle_support.hpp"
+#include "spin/field.hpp"
 #include "support/test_paths.hpp"
 
 using namespace rollspin;
@@ -23,13 +24,17 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kKinematicTol = 1e-10;
 // Solver ≈ oracle: the bar for exact and magnus4.
 constexpr double kSolverTol = 1e-12;
-constexpr long long kMagnus4Steps = 20000;
+// magnus4 grid: h|ω| ≈ 1/400, where the truncation error (~1e-13 per
+// revolution) is well below the bar and round-off (~1e-15) is negligible.
+long long magnus4Steps(const geometry::ContactPath& path, double R) {
+  return std::max<long long>(2000, std::llround(400.0 * spin::integratedFieldStrength(path, R)));
+}
 
 namespace {
 
 void expectSolversMatch(const geometry::ContactPath& path, double R, const Su2& oracle, const char* what) {
   for (Method m : {Method::Exact, Method::Magnus4}) {
-    const Su2 u = solveFinal(path, R, m, kMagnus4Steps);
+    const Su2 u = solveFinal(path, R, m, magnus4Steps(path, R));
     EXPECT_LT(spin::spinorDistance(u, oracle), kSolverTol) << what << " method " << spin::methodName(m);
   }
 }
@@ -102,7 +107,7 @@ TEST(Oracle, SpinorSignAfterFullCircuitsHasPeriodTwo) {
   }
   // r/R = √3: δ = 4π, so one circuit is the identity in SO(3) and −1 as a spinor.
   const auto path = lollipopPath(std::sqrt(3.0));
-  const Su2 u = solveFinal(*path, 1.0, Method::Magnus4, kMagnus4Steps);
+  const Su2 u = solveFinal(*path, 1.0, Method::Magnus4, magnus4Steps(*path, 1.0));
   EXPECT_LT(spin::rotationAngleAxis(u).angle, 1e-11);
   EXPECT_NEAR(u.w, -1.0, 1e-12);
   EXPECT_NEAR(kinematicLift(*path, 1.0).w, -1.0, 1e-9);

@@ -20,8 +20,8 @@ struct SolverChoice {
 // varying curvatures.
 [[nodiscard]] SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& model);
 
-// Automatic step count: h·max|ω| small enough that magnus4 reaches ~1e-13
-// per unit rotation on the foundation's paths (see README, "Solver").
+// Automatic step count: 400 per unit of ∫(|ω| + |d|) ds, so that magnus4
+// reaches ~1e-13 on the foundation's paths (see README, "Solver").
 [[nodiscard]] long long automaticSteps(const RollingModel& model, spin::Method method);
 
 // Default sample count: 60 per turn of the path or of the ball, whichever is

@@ -5,9 +5,11 @@
 
 namespace rollspin::spin {
 
-double integratedFieldStrength(const geometry::ContactPath& path, double ballRadius) {
-  // 5-point Gauss–Legendre on 64 panels per breakpoint segment: |B| is smooth
-  // within a segment, and this is only used for heuristics and the floor.
+namespace {
+// ∫₀ᴸ f(frame at s) ds: 5-point Gauss–Legendre on 64 panels per breakpoint
+// segment (f is smooth inside a segment; used for heuristics and the floor).
+template <typename F>
+double integrateAlong(const geometry::ContactPath& path, F&& f) {
   static constexpr double x[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
                                   0.9061798459386640};
   static constexpr double wts[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
@@ -21,12 +23,21 @@ double integratedFieldStrength(const geometry::ContactPath& path, double ballRad
     const double a = cuts[seg], h = (cuts[seg + 1] - a) / panels;
     for (int p = 0; p < panels; ++p) {
       const double mid = a + (p + 0.5) * h;
-      for (int k = 0; k < 5; ++k) {
-        total += 0.5 * h * wts[k] * angularVelocity(path.at(mid + 0.5 * h * x[k]), ballRadius).norm();
-      }
+      for (int k = 0; k < 5; ++k) total += 0.5 * h * wts[k] * f(path.at(mid + 0.5 * h * x[k]));
     }
   }
   return total;
+}
+}  // namespace
+
+double integratedFieldStrength(const geometry::ContactPath& path, double ballRadius) {
+  return integrateAlong(path, [&](const geometry::DarbouxSample& f) { return angularVelocity(f, ballRadius).norm(); });
+}
+
+double integratedStepBudget(const geometry::ContactPath& path, double ballRadius) {
+  return integrateAlong(path, [&](const geometry::DarbouxSample& f) {
+    return angularVelocity(f, ballRadius).norm() + geometry::darbouxVector(f).norm();
+  });
 }
 
 }  // namespace rollspin::spin

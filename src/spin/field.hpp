@@ -19,9 +19,12 @@ namespace rollspin::spin {
   return -angularVelocity(f, ballRadius);
 }
 
-// ∫₀ᴸ |B| ds by composite Gauss–Legendre (for step heuristics and the
-// round-off floor ε·∫|B| ds).
+// ∫₀ᴸ |B| ds by composite Gauss–Legendre (the rotation budget; the round-off
+// floor ε·∫|B| ds).
 [[nodiscard]] double integratedFieldStrength(const geometry::ContactPath& path, double ballRadius);
+// ∫₀ᴸ (|ω| + |d|) ds, d the Darboux vector: how far the field turns as well
+// as how strong it is; sets the automatic step count.
+[[nodiscard]] double integratedStepBudget(const geometry::ContactPath& path, double ballRadius);
 
 }  // namespace rollspin::spin
 

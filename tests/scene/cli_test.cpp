@@ -1,0 +1,91 @@
+// The CLI end to end on the real scenes: solve (text and JSON) and timeline.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "support/cli_runner.hpp"
+
+using rollspin::test::freshTempDir;
+using rollspin::test::runRollspin;
+using rollspin::test::sourceDir;
+
+namespace {
+std::string scenePath(const char* name) { return (sourceDir() / "scenes" / name).string(); }
+
+std::vector<std::vector<std::string>> readCsv(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::vector<std::vector<std::string>> rows;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+double jsonNumber(const std::string& json, const std::string& key) {
+  const auto at = json.find("\"" + key + "\":");
+  EXPECT_NE(at, std::string::npos) << key;
+  return std::stod(json.substr(at + key.size() + 3));
+}
+}  // namespace
+
+TEST(Cli, SolveJsonHasEveryKeyAndTheLollipopAngle) {
+  const auto r = runRollspin({"solve", scenePath("lollipop.toml"), "--json"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* key : {"length", "method", "steps", "quaternion", "angle", "axis", "spinor_angle",
+                          "unitarity_error", "solve_seconds"})
+    EXPECT_NE(r.out.find(std::string("\"") + key + "\""), std::string::npos) << key;
+  // δ = 2π√10 reduced to [0, π].
+  const double delta = 2 * std::numbers::pi * std::sqrt(10.0);
+  EXPECT_NEAR(jsonNumber(r.out, "angle"), std::abs(std::remainder(delta, 2 * std::numbers::pi)), 1e-11);
+  EXPECT_NEAR(jsonNumber(r.out, "length"), 6 * std::numbers::pi, 1e-12);
+  EXPECT_LT(jsonNumber(r.out, "unitarity_error"), 1e-13);
+}
+
+TEST(Cli, SetOverridesTheScene) {
+  const auto r = runRollspin({"solve", scenePath("lollipop.toml"), "--json", "--set", "path.radius=1",
+                              "--set", "solver.method=exact"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NEAR(jsonNumber(r.out, "length"), 2 * std::numbers::pi, 1e-12);
+  EXPECT_NE(r.out.find("\"exact\""), std::string::npos);
+}
+
+TEST(Cli, TimelineHasTheNamedColumnsAndShowsTheSpinorSign) {
+  const auto dir = freshTempDir("timeline");
+  const auto out = dir / "t.csv";
+  // r/R = √3: δ = 4π per circuit. Over two circuits the SO(3) rotation is the
+  // identity after each, but q runs from +1 through −1 back to +1.
+  const auto r = runRollspin({"timeline", scenePath("lollipop.toml"), "-o", out.string(), "--set",
+                              "path.radius=1.7320508075688772", "--set", "path.turns=2", "--set",
+                              "timeline.samples=241"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto rows = readCsv(out);
+  ASSERT_EQ(rows.size(), 242u);
+  const std::vector<std::string> named{"s", "px", "py", "pz", "nx", "ny", "nz", "cx", "cy", "cz",
+                                       "qw", "qx", "qy", "qz", "Bx", "By", "Bz"};
+  for (std::size_t i = 0; i < named.size(); ++i) EXPECT_EQ(rows[0][i], named[i]);
+  auto qw = [&](std::size_t row) { return std::stod(rows[row][10]); };
+  EXPECT_NEAR(qw(1), 1.0, 1e-15);
+  EXPECT_NEAR(qw(121), -1.0, 1e-11);  // after one circuit: −1
+  EXPECT_NEAR(qw(241), 1.0, 1e-11);   // after two: +1
+  // Full precision: 17 significant digits.
+  EXPECT_GE(rows[50][0].size(), 15u);
+  // C = P + R n on every row.
+  for (std::size_t i = 1; i < rows.size(); i += 40)
+    EXPECT_NEAR(std::stod(rows[i][9]), std::stod(rows[i][3]) + std::stod(rows[i][6]), 1e-15);
+}
+
+TEST(Cli, EveryFoundationSceneSolves) {
+  for (const char* name : {"lollipop.toml", "wall.toml", "tennis-ball.toml", "sphere-outside.toml",
+                           "sphere-inside.toml", "penny.toml"}) {
+    const auto r = runRollspin({"solve", scenePath(name), "--json"});
+    EXPECT_EQ(r.exitCode, 0) << name << "\n" << r.err;
+  }
+}

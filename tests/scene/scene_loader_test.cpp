@@ -1,0 +1,97 @@
+// Scene loading: defaults, locations, overrides, and the model built from it
+// (including Brockett's plate, whose contact circle is derived).
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "app/scene_model.hpp"
+#include "app/solve_job.hpp"
+#include "scene/scene_loader.hpp"
+#include "spin/field.hpp"
+#include "spin/propagator.hpp"
+
+using namespace rollspin;
+
+TEST(SceneLoader, EmptySceneTakesEveryDefault) {
+  const scene::SceneSpec spec = scene::loadSceneText("", "<empty>");
+  EXPECT_EQ(spec.ball.radius, 1.0);
+  EXPECT_EQ(spec.surface.kind, scene::SurfaceKind::Plane);
+  EXPECT_EQ(spec.path.kind, scene::PathKind::Circle);
+  EXPECT_EQ(spec.path.radius, 3.0);
+  EXPECT_EQ(spec.path.turns, 1.0);
+  EXPECT_TRUE(spec.path.counterClockwise);
+  EXPECT_EQ(spec.solver.method, "magnus4");
+  EXPECT_FALSE(spec.solver.steps.has_value());
+  EXPECT_FALSE(spec.plate.has_value());
+  EXPECT_EQ(spec.where("ball.radius").str(), "<empty>");  // default: the file, no line
+}
+
+TEST(SceneLoader, RemembersWhereEachKeyWasSet) {
+  const scene::SceneSpec spec = scene::loadSceneText("[ball]\n  radius = 2.5\n", "s.toml");
+  EXPECT_EQ(spec.ball.radius, 2.5);
+  EXPECT_EQ(spec.where("ball.radius").str(), "s.toml:2:12");
+}
+
+TEST(SceneLoader, OverridesReplaceAndCreateKeys) {
+  const std::vector<std::string> sets{"ball.radius=0.5", "surface.kind=sphere", "path.colatitude_deg=30",
+                                      "solver.method=exact", "timeline.samples=11"};
+  const scene::SceneSpec spec = scene::loadSceneText("[ball]\nradius = 2\n", "s.toml", sets);
+  EXPECT_EQ(spec.ball.radius, 0.5);
+  EXPECT_EQ(spec.surface.kind, scene::SurfaceKind::Sphere);
+  EXPECT_EQ(spec.path.kind, scene::PathKind::Parallel);  // the sphere's one path kind
+  EXPECT_EQ(spec.path.colatitudeDeg, 30.0);
+  EXPECT_EQ(spec.where("ball.radius").str(), "--set ball.radius=0.5");
+  EXPECT_EQ(*spec.timeline.samples, 11);
+}
+
+TEST(SceneLoader, PlaneNormalIsNormalisedAndLineDefaultsToAHorizontalDirection) {
+  const scene::SceneSpec spec = scene::loadSceneText("[surface]\nnormal = [0, -2, 0]\n[path]\nkind = \"line\"\n", "w");
+  const app::RollingModel model = app::buildModel(spec);
+  const geometry::DarbouxSample f = model.path->at(0.0);
+  EXPECT_NEAR(f.normal.y(), -1.0, 1e-15);
+  EXPECT_NEAR(f.tangent.z(), 0.0, 1e-15);  // horizontal
+  EXPECT_NEAR(std::abs(f.tangentNormal.z()), 1.0, 1e-15);
+}
+
+TEST(BrockettPlate, ContactCircleIsHalfThePlateCircleAndTheTopMovesWithThePlate) {
+  const scene::SceneSpec spec = scene::loadSceneText("[ball]\nradius = 1\n[plate]\nradius = 4\n", "brockett");
+  const app::RollingModel model = app::buildModel(spec);
+  ASSERT_TRUE(model.plate.has_value());
+  EXPECT_NEAR(model.plate->contactSpeedRatio, 2.0, 1e-15);
+  EXPECT_NEAR(model.path->length(), 2 * std::numbers::pi * 2.0, 1e-12);  // r = R1/2 = 2
+  // Along the path, the velocity of the ball's top point (from the solver's
+  // quaternions: C' + ω × R n) is twice the contact velocity, so a plate
+  // translated by 2(P(s) − P(0)) stays on the top without slipping and its
+  // points describe circles of radius R1.
+  const double R = model.ballRadius, h = 1e-4;
+  const spin::Propagator propagator(*model.path, R, spin::Method::Exact, 0);
+  for (double s : {0.5, 3.0, 7.0, 11.0}) {
+    const std::vector<double> at{s - h, s, s + h};
+    std::vector<spin::Su2> q(3);
+    (void)propagator.run(at, [&](std::size_t j, double, const spin::Su2& u) { q[j] = u; });
+    const spin::Su2 dq{(q[2].w - q[0].w) / (2 * h), (q[2].x - q[0].x) / (2 * h), (q[2].y - q[0].y) / (2 * h),
+                       (q[2].z - q[0].z) / (2 * h)};
+    const Eigen::Vector3d omega = 2.0 * (dq * q[1].conjugate()).vec();
+    const geometry::DarbouxSample f = model.path->at(s);
+    const Eigen::Vector3d top = f.tangent + omega.cross(R * f.normal);  // C' = t on a plane
+    EXPECT_LT((top - 2.0 * f.tangent).norm(), 1e-7) << s;
+    const Eigen::Vector3d platePoint = model.plate->initialTopPoint + 2.0 * (f.point - model.path->point(0.0));
+    EXPECT_NEAR((platePoint - Eigen::Vector3d(0, 0, 2 * R) - Eigen::Vector3d(-2, 0, 0)).head<2>().norm(), 4.0, 1e-12);
+  }
+}
+
+TEST(SolveJob, AutomaticStepsReachRoundOffOnTheLollipop) {
+  const scene::SceneSpec spec = scene::loadSceneText("", "lollipop");
+  const app::RollingModel model = app::buildModel(spec);
+  const app::SolverChoice choice = app::chooseSolver(spec, model);
+  EXPECT_TRUE(choice.automaticSteps);
+  const spin::Su2 exact = spin::Propagator(*model.path, 1.0, spin::Method::Exact, 0).solveFinal().final;
+  const spin::Su2 got = app::solveScene(spec, model, choice).final;
+  EXPECT_LT(spin::spinorDistance(got, exact), 1e-12);
+}
+
+TEST(SolveJob, DefaultSamplesAreSixtyPerTurn) {
+  const scene::SceneSpec spec = scene::loadSceneText("[path]\nturns = 2\n[ball]\nradius = 100\n", "slow");
+  const app::RollingModel model = app::buildModel(spec);
+  EXPECT_EQ(app::defaultSampleCount(model), 121);  // the path turns more than the ball
+}

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Fresh machine → rollspin's main job on the default scene: installs the
+# Debian packages, builds Release, solves the lollipop and writes its
+# orientation timeline to output/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+bash scripts/build.sh
+./build/rollspin solve scenes/lollipop.toml
+./build/rollspin timeline scenes/lollipop.toml -o output/lollipop.csv

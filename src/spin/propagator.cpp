@@ -9,11 +9,12 @@
 
 #include "spin/block_kernel.hpp"
 #include "spin/field.hpp"
+#include "spin/frame_propagator.hpp"
 
 namespace rollspin::spin {
 
 namespace {
-constexpr std::array kMethods{Method::Exact, Method::Magnus2, Method::Magnus4, Method::Rk4};
+constexpr std::array kMethods{Method::Exact, Method::Magnus2, Method::Magnus4, Method::Rk4, Method::Frame4};
 
 // dU/ds = ½ (0, ω) ⊗ U in quaternion form, for the raw-spinor RK4.
 Su2 derivative(const Vec3& w, const Su2& u) {
@@ -30,6 +31,7 @@ std::string_view methodName(Method m) {
     case Method::Magnus2: return "magnus2";
     case Method::Magnus4: return "magnus4";
     case Method::Rk4: return "rk4";
+    case Method::Frame4: return "frame4";
   }
   return "?";
 }
@@ -48,6 +50,7 @@ int methodOrder(Method m) {
     case Method::Magnus2: return 2;
     case Method::Magnus4: return 4;
     case Method::Rk4: return 4;
+    case Method::Frame4: return 4;
   }
   return 0;
 }
@@ -78,6 +81,7 @@ Su2 Propagator::closedForm(double s) const { return expRotation(s * d0_) * expRo
 
 Su2 Propagator::step(const Su2& u, double s, double h) const {
   if (method_ == Method::Exact) return closedForm(s + h);
+  if (method_ == Method::Frame4) return frame4Element(path_, ballRadius_, s, h) * u;
   const std::span<const double> nodes = stepNodes(method_);
   Vec3 w[kMaxNodes];
   for (std::size_t i = 0; i < nodes.size(); ++i) w[i] = omega(s + nodes[i] * h);
@@ -92,7 +96,8 @@ std::span<const double> stepNodes(Method m) {
     case Method::Magnus2: return kMidpoint;
     case Method::Magnus4: return kGauss2;
     case Method::Rk4: return kSimpson;
-    case Method::Exact: break;
+    case Method::Exact:
+    case Method::Frame4: break;  // frame4 samples the frame, not ω (frame_propagator.hpp)
   }
   return {};
 }
@@ -116,7 +121,8 @@ Su2 stepElement(Method m, double h, const Vec3* w) {
       return {1.0 + h / 6.0 * (k1.w + 2 * k2.w + 2 * k3.w + k4.w), h / 6.0 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x),
               h / 6.0 * (k1.y + 2 * k2.y + 2 * k3.y + k4.y), h / 6.0 * (k1.z + 2 * k2.z + 2 * k3.z + k4.z)};
     }
-    case Method::Exact: break;
+    case Method::Exact:
+    case Method::Frame4: break;
   }
   return Su2::identity();
 }
@@ -225,7 +231,9 @@ SolveStats Propagator::run(std::span<const double> sampleS, const SampleSink& si
             w[j * kMaxNodes + i] = rigidField ? Vec3(power(j) * anchors[i])
                                               : omega(sBlock + (static_cast<double>(j) + nodes[i]) * h);
           }
-          elements[j] = stepElement(method_, h, &w[j * kMaxNodes]);
+          elements[j] = method_ == Method::Frame4
+                            ? frame4Element(path_, ballRadius_, sBlock + static_cast<double>(j) * h, h)
+                            : stepElement(method_, h, &w[j * kMaxNodes]);
         }
       }
 

@@ -10,6 +10,8 @@
 //   magnus4  two Gauss points c = ½ ∓ √3/6 and one commutator:
 //            Ω = (h/2)(A₁ + A₂) + (√3/12) h² [A₂, A₁].
 //   rk4      classical Runge–Kutta on the raw spinor (not renormalised).
+//   frame4   4th-order Magnus in the Darboux frame, where only κ_g drives the
+//            motion, composed exactly with the frame (frame_propagator.hpp).
 // In su(2) ≅ (R³, ×): A(ω) = −(i/2) ω·σ and [A(a), A(b)] = A(a × b).
 // A sample s between grid nodes is reached by one partial step from the
 // preceding node, so samples never perturb the main march. The march
@@ -29,7 +31,7 @@
 
 namespace rollspin::spin {
 
-enum class Method { Exact, Magnus2, Magnus4, Rk4 };
+enum class Method { Exact, Magnus2, Magnus4, Rk4, Frame4 };
 
 [[nodiscard]] std::string_view methodName(Method m);
 [[nodiscard]] std::optional<Method> parseMethod(std::string_view name);

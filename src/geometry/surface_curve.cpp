@@ -1,0 +1,256 @@
+#include "geometry/surface_curve.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace rollspin::geometry {
+
+namespace {
+
+constexpr int kGaussPoints = 20;
+constexpr int kChebyshevDegree = 24;
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+// Gauss–Legendre nodes and weights on [−1, 1], by Newton on P_n (computed once).
+struct GaussLegendre {
+  std::array<double, kGaussPoints> x{}, w{};
+  GaussLegendre() {
+    const int n = kGaussPoints;
+    for (int i = 0; i < n; ++i) {
+      double z = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5)), dp = 1.0;
+      for (int it = 0; it < 100; ++it) {
+        double p0 = 1.0, p1 = z;
+        for (int k = 2; k <= n; ++k) {
+          const double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
+          p0 = p1;
+          p1 = p2;
+        }
+        dp = n * (z * p1 - p0) / (z * z - 1.0);
+        const double dz = p1 / dp;
+        z -= dz;
+        if (std::abs(dz) < 1e-17) break;
+      }
+      x[static_cast<std::size_t>(i)] = z;
+      w[static_cast<std::size_t>(i)] = 2.0 / ((1.0 - z * z) * dp * dp);
+    }
+  }
+};
+const GaussLegendre& gauss() {
+  static const GaussLegendre g;
+  return g;
+}
+
+// x = cos(π (j + ½)/n): points halfway between Lobatto nodes, for checking.
+std::vector<double> checkNodes(int n) {
+  std::vector<double> x(static_cast<std::size_t>(n));
+  for (int j = 0; j < n; ++j) x[static_cast<std::size_t>(j)] = std::cos(std::numbers::pi * (j + 0.5) / n);
+  return x;
+}
+
+}  // namespace
+
+SurfaceCurvePath::SurfaceCurvePath(std::shared_ptr<const Surface> surface, std::shared_ptr<const UvCurve> curve,
+                                   SurfaceCurveOptions options)
+    : surface_(std::move(surface)), curve_(std::move(curve)), options_(options) {
+  std::vector<double> cuts{curve_->start()};
+  for (double b : curve_->breakpoints())
+    if (b > curve_->start() && b < curve_->end()) cuts.push_back(b);
+  cuts.push_back(curve_->end());
+  if (!(cuts.back() > cuts.front())) throw GeometryError("the curve has an empty parameter range");
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    buildSegment(cuts[i], cuts[i + 1]);
+    if (i + 2 < cuts.size()) breakpoints_.push_back(length_);
+  }
+  for (const Panel& p : panels_) panelStarts_.push_back(p.sStart);
+}
+
+double SurfaceCurvePath::speed(double sigma) const {
+  const UvJet c = curve_->at(sigma);
+  const SurfaceJet j = surface_->jet(c.uv);
+  return (j.xu * c.d1.x() + j.xv * c.d1.y()).norm();
+}
+
+double SurfaceCurvePath::panelArcLength(double sigmaStart, double sigma) const {
+  const GaussLegendre& g = gauss();
+  const double mid = 0.5 * (sigmaStart + sigma), half = 0.5 * (sigma - sigmaStart);
+  double sum = 0.0;
+  for (int i = 0; i < kGaussPoints; ++i) sum += g.w[static_cast<std::size_t>(i)] * speed(mid + half * g.x[static_cast<std::size_t>(i)]);
+  return half * sum;
+}
+
+void SurfaceCurvePath::buildSegment(double sigmaStart, double sigmaEnd) {
+  // Walk the segment first: stay in the domain, finite, with non-zero speed.
+  const ParameterDomain domain = surface_->domain();
+  constexpr int kProbe = 512;
+  double approxS = length_, typicalSpeed = 0.0;
+  std::vector<double> speeds(kProbe + 1);
+  for (int k = 0; k <= kProbe; ++k) {
+    const double sigma = sigmaStart + (sigmaEnd - sigmaStart) * k / kProbe;
+    const UvJet c = curve_->at(sigma);
+    const bool finite = c.uv.allFinite() && c.d1.allFinite() && c.d2.allFinite();
+    if (!finite || !domain.contains(c.uv)) {
+      throw GeometryError("the path leaves the surface's domain at arc length ≈ " + num(approxS) +
+                          " (curve parameter " + num(sigma) + ", surface parameters (" + num(c.uv.x()) + ", " +
+                          num(c.uv.y()) + ") " + surface_->parameterNames() + ")");
+    }
+    const SurfaceJet j = surface_->jet(c.uv);
+    const double sp = (j.xu * c.d1.x() + j.xv * c.d1.y()).norm();
+    const double area = j.xu.cross(j.xv).norm();
+    if (!j.x.allFinite() || !j.xu.allFinite() || !j.xv.allFinite() || !j.xuu.allFinite() || !j.xuv.allFinite() ||
+        !j.xvv.allFinite() || !std::isfinite(sp) || !(area > 0.0)) {
+      throw GeometryError("the surface is undefined or singular at arc length ≈ " + num(approxS) +
+                          " (surface parameters (" + num(c.uv.x()) + ", " + num(c.uv.y()) +
+                          "): a value or derivative is not finite, or x_u × x_v = 0)");
+    }
+    speeds[static_cast<std::size_t>(k)] = sp;
+    typicalSpeed = std::max(typicalSpeed, sp);
+    if (k > 0) approxS += 0.5 * (sp + speeds[static_cast<std::size_t>(k - 1)]) * (sigmaEnd - sigmaStart) / kProbe;
+  }
+  for (int k = 0; k <= kProbe; ++k) {
+    if (!(speeds[static_cast<std::size_t>(k)] > 1e-9 * typicalSpeed) || typicalSpeed == 0.0) {
+      const double sigma = sigmaStart + (sigmaEnd - sigmaStart) * k / kProbe;
+      throw GeometryError("the curve stops (zero speed: a cusp or corner) at curve parameter " + num(sigma));
+    }
+  }
+  constexpr int kInitialPanels = 4;
+  for (int p = 0; p < kInitialPanels; ++p) {
+    const double a = sigmaStart + (sigmaEnd - sigmaStart) * p / kInitialPanels;
+    const double b = p + 1 == kInitialPanels ? sigmaEnd : sigmaStart + (sigmaEnd - sigmaStart) * (p + 1) / kInitialPanels;
+    fitPanel(a, b, length_, 0);
+    length_ = panels_.back().sEnd;
+  }
+}
+
+void SurfaceCurvePath::fitPanel(double sigmaStart, double sigmaEnd, double sStart, int depth) {
+  constexpr int kMaxDepth = 30;
+  const double total = panelArcLength(sigmaStart, sigmaEnd);
+  const double sigmaMid = 0.5 * (sigmaStart + sigmaEnd);
+  auto split = [&] {
+    fitPanel(sigmaStart, sigmaMid, sStart, depth + 1);
+    fitPanel(sigmaMid, sigmaEnd, panels_.back().sEnd, depth + 1);
+  };
+  // The quadrature must be converged on the panel: compare with its halves.
+  const double halves = panelArcLength(sigmaStart, sigmaMid) + panelArcLength(sigmaMid, sigmaEnd);
+  const double tolerance = 2e-15 * (1.0 + total);
+  if (std::abs(total - halves) > tolerance && depth < kMaxDepth) return split();
+
+  // σ at Chebyshev–Lobatto nodes in s, by Newton on the quadrature.
+  auto solveSigma = [&](double ds) {
+    double sigma = sigmaStart + (sigmaEnd - sigmaStart) * ds / total;
+    for (int it = 0; it < 40; ++it) {
+      const double f = panelArcLength(sigmaStart, sigma) - ds;
+      const double step = f / speed(sigma);
+      sigma -= step;
+      if (std::abs(step) <= 1e-16 * (std::abs(sigma) + std::abs(sigmaEnd - sigmaStart))) break;
+    }
+    return sigma;
+  };
+  const std::vector<double> x = chebyshevLobattoNodes(kChebyshevDegree);
+  std::vector<double> values(x.size());
+  for (std::size_t j = 0; j < x.size(); ++j) {
+    if (j == 0) values[j] = sigmaEnd - sigmaStart;
+    else if (j + 1 == x.size()) values[j] = 0.0;
+    else values[j] = solveSigma(0.5 * total * (x[j] + 1.0)) - sigmaStart;
+  }
+  Panel panel{sigmaStart, sigmaEnd, sStart, sStart + total, chebyshevCoefficients(values)};
+  // Between the nodes, the interpolant must still invert the quadrature.
+  if (depth < kMaxDepth) {
+    for (double xc : checkNodes(kChebyshevDegree)) {
+      const double ds = 0.5 * total * (xc + 1.0);
+      const double sigma = sigmaStart + chebyshevValue(panel.coefficients, xc);
+      if (std::abs(panelArcLength(sigmaStart, sigma) - ds) > tolerance) return split();
+    }
+  }
+  panels_.push_back(std::move(panel));
+}
+
+double SurfaceCurvePath::parameterAt(double s) const {
+  s = std::clamp(s, 0.0, length_);
+  const auto it = std::upper_bound(panelStarts_.begin() + 1, panelStarts_.end(), s);
+  const Panel& p = panels_[static_cast<std::size_t>(it - panelStarts_.begin()) - 1];
+  const double x = 2.0 * (s - p.sStart) / (p.sEnd - p.sStart) - 1.0;
+  return p.sigmaStart + chebyshevValue(p.coefficients, std::clamp(x, -1.0, 1.0));
+}
+
+double SurfaceCurvePath::arcLengthAt(double sigma) const {
+  for (const Panel& p : panels_)
+    if (sigma <= p.sigmaEnd || &p == &panels_.back()) return p.sStart + panelArcLength(p.sigmaStart, sigma);
+  return length_;
+}
+
+Vec3 SurfaceCurvePath::point(double s) const { return surface_->position(uvAt(s)); }
+
+Vec3 SurfaceCurvePath::normal(double s) const { return surface_->normal(uvAt(s)); }
+
+DarbouxSample SurfaceCurvePath::at(double s) const {
+  const UvJet c = curve_->at(parameterAt(s));
+  const SurfaceJet j = surface_->jet(c.uv);
+  const double du = c.d1.x(), dv = c.d1.y();
+  const Vec3 d1 = j.xu * du + j.xv * dv;
+  const Vec3 d2 = j.xuu * (du * du) + j.xuv * (2.0 * du * dv) + j.xvv * (dv * dv) + j.xu * c.d2.x() + j.xv * c.d2.y();
+  const double speed = d1.norm();
+  DarbouxSample f;
+  f.s = s;
+  f.point = j.x;
+  f.tangent = d1 / speed;
+  f.normal = surface_->orientation() * j.xu.cross(j.xv).normalized();
+  f.tangentNormal = f.normal.cross(f.tangent);
+  const Vec3 curvature = (d2 - d2.dot(f.tangent) * f.tangent) / (speed * speed);
+  f.normalCurvature = curvature.dot(f.normal);
+  f.geodesicCurvature = curvature.dot(f.tangentNormal);
+  // Weingarten: the normal's derivatives from the fundamental forms.
+  const double E = j.xu.dot(j.xu), F = j.xu.dot(j.xv), G = j.xv.dot(j.xv);
+  const double L = j.xuu.dot(f.normal), M = j.xuv.dot(f.normal), N = j.xvv.dot(f.normal);
+  const double det = E * G - F * F;
+  const Vec3 nu = ((F * M - G * L) * j.xu + (F * L - E * M) * j.xv) / det;
+  const Vec3 nv = ((F * N - G * M) * j.xu + (F * M - E * N) * j.xv) / det;
+  const Vec3 dnds = (nu * du + nv * dv) / speed;
+  f.geodesicTorsion = -dnds.dot(f.tangentNormal);
+  return f;
+}
+
+std::string SurfaceCurvePath::describe() const { return curve_->describe() + " on a " + surface_->describe(); }
+
+// ---- physical validity -------------------------------------------------------
+
+ContactCheck checkSingleContact(const SurfaceCurvePath& path, double ballRadius, int samples) {
+  auto k1At = [&](double s) { return shapeAt(path.surface(), path.uvAt(s)).maxCurvature; };
+  auto fails = [&](double s) { return !(ballRadius * k1At(s) < 1.0); };
+  std::vector<double> grid;
+  const double length = path.length();
+  for (int k = 0; k <= samples; ++k) grid.push_back(length * k / samples);
+  for (double b : path.breakpoints()) grid.push_back(b);
+  std::sort(grid.begin(), grid.end());
+  ContactCheck check;
+  for (std::size_t k = 0; k < grid.size(); ++k) {
+    if (!fails(grid[k])) continue;
+    double lo = k == 0 ? grid[0] : grid[k - 1], hi = grid[k];
+    if (k > 0) {
+      for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (fails(mid) ? hi : lo) = mid;
+      }
+    }
+    check.ok = false;
+    check.s = hi;
+    check.point = path.point(hi);
+    check.curvature = k1At(hi);
+    check.reason = "at arc length s = " + num(hi) + " (point (" + num(check.point.x()) + ", " +
+                   num(check.point.y()) + ", " + num(check.point.z()) +
+                   ")) the surface curves towards the ball with principal curvature " + num(check.curvature) +
+                   " (radius of curvature " + num(1.0 / check.curvature) + "), but the ball's radius is " +
+                   num(ballRadius) + ": the ball no longer touches at one point (needs ball.radius < " +
+                   num(1.0 / check.curvature) + ")";
+    return check;
+  }
+  return check;
+}
+
+}  // namespace rollspin::geometry

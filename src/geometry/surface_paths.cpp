@@ -1,0 +1,224 @@
+#include "geometry/surface_paths.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <numbers>
+
+namespace rollspin::geometry {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+std::string deg(double radians) { return num(radians * 180.0 / kPi) + " deg"; }
+
+std::unique_ptr<SurfaceCurvePath> wrap(std::shared_ptr<const Surface> surface, FunctionUvCurve::Function f,
+                                       double start, double end, std::string description,
+                                       SurfaceCurveOptions options = {}) {
+  auto curve = std::make_shared<FunctionUvCurve>(std::move(f), start, end, std::move(description));
+  return std::make_unique<SurfaceCurvePath>(std::move(surface), std::move(curve), options);
+}
+
+SurfaceCurveOptions closedCircuit(double turns) {
+  SurfaceCurveOptions o;
+  o.constantCurvatures = true;
+  o.turns = turns;
+  return o;
+}
+
+}  // namespace
+
+// ---- parallels ---------------------------------------------------------------
+
+std::unique_ptr<SurfaceCurvePath> sphereParallel(std::shared_ptr<const Sphere> sphere, double colatitude, double turns,
+                                                 bool ccw) {
+  const double sense = ccw ? 1.0 : -1.0;
+  return wrap(sphere, [=](const Jet& t) { return std::array<Jet, 2>{Jet(colatitude), sense * t}; }, 0.0,
+              2.0 * kPi * turns, "parallel at colatitude " + deg(colatitude), closedCircuit(turns));
+}
+
+std::unique_ptr<SurfaceCurvePath> cylinderParallel(std::shared_ptr<const Cylinder> cylinder, double height,
+                                                   double turns, bool ccw) {
+  const double sense = ccw ? 1.0 : -1.0;
+  return wrap(cylinder, [=](const Jet& t) { return std::array<Jet, 2>{sense * t, Jet(height)}; }, 0.0,
+              2.0 * kPi * turns, "parallel at height " + num(height), closedCircuit(turns));
+}
+
+std::unique_ptr<SurfaceCurvePath> torusParallel(std::shared_ptr<const Torus> torus, double tubeAngle, double turns,
+                                                bool ccw) {
+  const double sense = ccw ? 1.0 : -1.0;
+  return wrap(torus, [=](const Jet& t) { return std::array<Jet, 2>{sense * t, Jet(tubeAngle)}; }, 0.0,
+              2.0 * kPi * turns, "parallel at tube angle " + deg(tubeAngle), closedCircuit(turns));
+}
+
+std::unique_ptr<SurfaceCurvePath> heightFieldParallel(std::shared_ptr<const HeightField> field, double radius,
+                                                      double turns, bool ccw) {
+  const double sense = ccw ? 1.0 : -1.0;
+  return wrap(field,
+              [=](const Jet& t) { return std::array<Jet, 2>{radius * cos(sense * t), radius * sin(sense * t)}; },
+              0.0, 2.0 * kPi * turns, "parallel of radius " + num(radius), closedCircuit(turns));
+}
+
+// ---- meridians ---------------------------------------------------------------
+
+std::unique_ptr<SurfaceCurvePath> sphereMeridian(std::shared_ptr<const Sphere> sphere, double azimuth,
+                                                 double colatitudeStart, double colatitudeEnd) {
+  // σ ∈ [0, 1] so that the curve may run either way in θ.
+  const double span = colatitudeEnd - colatitudeStart;
+  return wrap(sphere, [=](const Jet& t) { return std::array<Jet, 2>{colatitudeStart + span * t, Jet(azimuth)}; },
+              0.0, 1.0,
+              "meridian at azimuth " + deg(azimuth) + " from colatitude " + deg(colatitudeStart) + " to " +
+                  deg(colatitudeEnd),
+              closedCircuit(0.0));  // a great circle: κ_n = ∓1/r, κ_g = τ_g = 0
+}
+
+std::unique_ptr<SurfaceCurvePath> torusMeridian(std::shared_ptr<const Torus> torus, double azimuth,
+                                                double tubeAngleStart, double turns, bool ccw) {
+  const double sense = ccw ? 1.0 : -1.0;
+  return wrap(torus,
+              [=](const Jet& t) { return std::array<Jet, 2>{Jet(azimuth), tubeAngleStart + sense * t}; }, 0.0,
+              2.0 * kPi * turns, "meridian (round the tube) at azimuth " + deg(azimuth), closedCircuit(turns));
+}
+
+std::unique_ptr<SurfaceCurvePath> cylinderMeridian(std::shared_ptr<const Cylinder> cylinder, double azimuth,
+                                                   double height, double length) {
+  return wrap(cylinder, [=](const Jet& t) { return std::array<Jet, 2>{Jet(azimuth), height + t}; }, 0.0, length,
+              "generator line at azimuth " + deg(azimuth) + " of length " + num(length), closedCircuit(0.0));
+}
+
+std::unique_ptr<SurfaceCurvePath> heightFieldMeridian(std::shared_ptr<const HeightField> field, double azimuth,
+                                                      double length) {
+  const double c = std::cos(azimuth), s = std::sin(azimuth);
+  return wrap(field, [=](const Jet& t) { return std::array<Jet, 2>{c * t, s * t}; }, -0.5 * length, 0.5 * length,
+              "vertical section through the z axis at azimuth " + deg(azimuth));
+}
+
+// ---- helix and loxodrome ---------------------------------------------------------
+
+std::unique_ptr<SurfaceCurvePath> cylinderHelix(std::shared_ptr<const Cylinder> cylinder, double pitchAngle,
+                                                double height, double turns, bool ccw) {
+  const double sense = ccw ? 1.0 : -1.0, rise = cylinder->radius() * std::tan(pitchAngle);
+  return wrap(cylinder, [=](const Jet& t) { return std::array<Jet, 2>{sense * t, height + rise * t}; }, 0.0,
+              2.0 * kPi * turns, "helix with pitch angle " + deg(pitchAngle), closedCircuit(turns));
+}
+
+std::unique_ptr<SurfaceCurvePath> sphereLoxodrome(std::shared_ptr<const Sphere> sphere, double heading,
+                                                  double azimuth, double colatitudeStart, double colatitudeEnd) {
+  const double span = colatitudeEnd - colatitudeStart, k = std::tan(heading);
+  const double logStart = std::log(std::tan(0.5 * colatitudeStart));
+  return wrap(sphere,
+              [=](const Jet& t) {
+                const Jet theta = colatitudeStart + span * t;
+                return std::array<Jet, 2>{theta, azimuth + k * (log(tan(0.5 * theta)) - logStart)};
+              },
+              0.0, 1.0, "loxodrome at heading " + deg(heading) + " from colatitude " + deg(colatitudeStart) +
+                            " to " + deg(colatitudeEnd));
+}
+
+// ---- geodesics -----------------------------------------------------------------
+
+namespace {
+using State = Eigen::Vector4d;  // (u, v, u', v') in arc length
+
+// Geodesic equation: α'' ⊥ surface ⇒ (u'', v'') = −I⁻¹ (x_u·Q, x_v·Q),
+// Q = x_uu u'² + 2 x_uv u'v' + x_vv v'².
+State geodesicRate(const Surface& surface, const State& y) {
+  const SurfaceJet j = surface.jet(Vec2(y[0], y[1]));
+  const double a = y[2], b = y[3];
+  const Vec3 q = j.xuu * (a * a) + j.xuv * (2.0 * a * b) + j.xvv * (b * b);
+  Eigen::Matrix2d metric;
+  metric << j.xu.dot(j.xu), j.xu.dot(j.xv), j.xu.dot(j.xv), j.xv.dot(j.xv);
+  const Vec2 acc = -metric.inverse() * Vec2(j.xu.dot(q), j.xv.dot(q));
+  return {a, b, acc.x(), acc.y()};
+}
+
+State rk4(const Surface& surface, const State& y, double h) {
+  const State k1 = geodesicRate(surface, y);
+  const State k2 = geodesicRate(surface, y + 0.5 * h * k1);
+  const State k3 = geodesicRate(surface, y + 0.5 * h * k2);
+  const State k4 = geodesicRate(surface, y + h * k3);
+  return y + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+}
+}  // namespace
+
+std::unique_ptr<SurfaceCurvePath> geodesicPath(std::shared_ptr<const Surface> surface, const Vec2& startUv,
+                                               const Vec3& direction, double length) {
+  const SurfaceJet j0 = surface->jet(startUv);
+  const Vec3 n0 = j0.xu.cross(j0.xv).normalized();
+  const Vec3 w = direction - direction.dot(n0) * n0;
+  if (!(w.norm() > 1e-9 * direction.norm()))
+    throw GeometryError("the geodesic's direction is perpendicular to the surface at its start point");
+  Eigen::Matrix2d metric;
+  metric << j0.xu.dot(j0.xu), j0.xu.dot(j0.xv), j0.xu.dot(j0.xv), j0.xv.dot(j0.xv);
+  const Vec3 unit = w.normalized();
+  const Vec2 rate = metric.inverse() * Vec2(j0.xu.dot(unit), j0.xv.dot(unit));
+
+  // Integrate on a fine uniform grid, keeping every node (dense output by one
+  // partial RK4 step from the node below).
+  const auto steps = static_cast<long long>(std::max(2000.0, std::ceil(500.0 * length)));
+  const double h = length / static_cast<double>(steps);
+  std::vector<State> nodes{State(startUv.x(), startUv.y(), rate.x(), rate.y())};
+  const ParameterDomain domain = surface->domain();
+  for (long long k = 0; k < steps; ++k) {
+    const State next = rk4(*surface, nodes.back(), h);
+    if (!next.allFinite() || !domain.contains(Vec2(next[0], next[1])))
+      throw GeometryError("the geodesic leaves the surface's domain at arc length ≈ " +
+                          num(static_cast<double>(k + 1) * h) + " (surface parameters (" + num(next[0]) + ", " +
+                          num(next[1]) + ") " + surface->parameterNames() + ")");
+    nodes.push_back(next);
+  }
+  auto dense = [&](double s) {
+    const auto k = std::clamp<long long>(static_cast<long long>(s / h), 0, steps - 1);
+    const double ds = s - static_cast<double>(k) * h;
+    const State y = ds == 0.0 ? nodes[static_cast<std::size_t>(k)] : rk4(*surface, nodes[static_cast<std::size_t>(k)], ds);
+    return Vec2(y[0], y[1]);
+  };
+  // Chebyshev panels of length ≤ 1/2 (halved until the fit matches the
+  // integration to 1e-12 between nodes).
+  constexpr int kDegree = 24;
+  double panelLength = std::min(0.5, length);
+  for (int attempt = 0;; ++attempt) {
+    const auto panels = static_cast<long long>(std::ceil(length / panelLength));
+    std::vector<double> cuts;
+    for (long long p = 0; p <= panels; ++p) cuts.push_back(length * static_cast<double>(p) / static_cast<double>(panels));
+    auto curve = std::make_shared<PiecewiseChebyshevUvCurve>(
+        dense, cuts, kDegree, "geodesic of length " + num(length) + " (integrated, RK4 + Chebyshev panels)");
+    double worst = 0.0;
+    for (long long p = 0; p < panels; ++p)
+      for (int q = 0; q < 8; ++q) {
+        const double s = cuts[static_cast<std::size_t>(p)] +
+                         (cuts[static_cast<std::size_t>(p + 1)] - cuts[static_cast<std::size_t>(p)]) * (q + 0.37) / 8.0;
+        worst = std::max(worst, (curve->at(s).uv - dense(s)).norm());
+      }
+    if (worst <= 1e-12 || attempt >= 6) return std::make_unique<SurfaceCurvePath>(surface, curve);
+    panelLength *= 0.5;
+  }
+}
+
+// ---- expressions and control points ------------------------------------------------
+
+std::unique_ptr<SurfaceCurvePath> uvExpressionPath(std::shared_ptr<const Surface> surface,
+                                                   std::shared_ptr<const Expression> u,
+                                                   std::shared_ptr<const Expression> v, double tStart, double tEnd) {
+  const std::string description = "curve u = " + u->text() + ", v = " + v->text() + " for t in [" + num(tStart) +
+                                  ", " + num(tEnd) + "]";
+  return wrap(surface, [u, v](const Jet& t) { return std::array<Jet, 2>{u->jet(t), v->jet(t)}; }, tStart, tEnd,
+              description);
+}
+
+std::unique_ptr<SurfaceCurvePath> pointsPath(std::shared_ptr<const Surface> surface, const std::vector<Vec2>& pointsUv,
+                                             bool closed, PointsInterpolation interpolation, double cornerRadius) {
+  std::shared_ptr<const UvCurve> curve = interpolation == PointsInterpolation::CubicSpline
+                                             ? std::static_pointer_cast<const UvCurve>(SplineUvCurve::cubic(pointsUv, closed))
+                                             : SplineUvCurve::roundedPolyline(pointsUv, closed, cornerRadius);
+  SurfaceCurveOptions options;
+  options.turns = closed ? 1.0 : 0.0;
+  return std::make_unique<SurfaceCurvePath>(std::move(surface), std::move(curve), options);
+}
+
+}  // namespace rollspin::geometry

@@ -30,7 +30,7 @@ long long automaticSteps(const RollingModel& model, spin::Method method) {
   // lollipop 5e-14, see tests). Other methods get the same grid: they are
   // baselines, and a user studying them sets solver.steps.
   const double budget = spin::integratedStepBudget(*model.path, model.ballRadius);
-  return std::clamp<long long>(static_cast<long long>(std::ceil(400.0 * budget)), 64, 100'000'000);
+  return std::clamp<long long>(static_cast<long long>(std::ceil(400.0 * budget)), 64, 10'000'000'000LL);
 }
 
 long long defaultSampleCount(const RollingModel& model) {
@@ -39,9 +39,9 @@ long long defaultSampleCount(const RollingModel& model) {
   return std::clamp<long long>(static_cast<long long>(std::ceil(60.0 * turns)), 1, 100'000'000) + 1;
 }
 
-std::vector<double> timelineArcLengths(const scene::SceneSpec& spec, const RollingModel& model) {
+spin::SampleArcLengths timelineArcLengths(const scene::SceneSpec& spec, const RollingModel& model) {
   const long long count = spec.timeline.samples ? *spec.timeline.samples : defaultSampleCount(model);
-  return spin::uniformSamples(model.path->length(), static_cast<std::size_t>(count));
+  return spin::SampleArcLengths::uniform(model.path->length(), static_cast<std::size_t>(count));
 }
 
 spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model, const SolverChoice& choice) {

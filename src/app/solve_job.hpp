@@ -27,7 +27,7 @@ struct SolverChoice {
 // Default sample count: 60 per turn of the path or of the ball, whichever is
 // more, plus the end point.
 [[nodiscard]] long long defaultSampleCount(const RollingModel& model);
-[[nodiscard]] std::vector<double> timelineArcLengths(const scene::SceneSpec& spec, const RollingModel& model);
+[[nodiscard]] spin::SampleArcLengths timelineArcLengths(const scene::SceneSpec& spec, const RollingModel& model);
 
 // Runs the solver once for its final value and statistics; throws Runtime on
 // a non-finite result.

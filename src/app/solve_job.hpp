@@ -23,6 +23,8 @@ struct SolverChoice {
 // Automatic step count: 400 per unit of ∫(|ω| + |d|) ds, so that magnus4
 // reaches ~1e-13 on the foundation's paths (see README, "Solver").
 [[nodiscard]] long long automaticSteps(const RollingModel& model, spin::Method method);
+// The unclamped automatic step count (may exceed the limit, or be inf/NaN).
+[[nodiscard]] double requiredAutomaticSteps(const RollingModel& model);
 
 // Default sample count: 60 per turn of the path or of the ball, whichever is
 // more, plus the end point.

@@ -406,15 +406,15 @@ SceneSpec Reader::read() {
   const toml::table* solver = section("solver", {"method", "steps"});
   if (auto m = text(solver, "solver", "method", {"exact", "magnus2", "magnus4", "rk4"})) spec_.solver.method = *m;
   if (auto n = integer(solver, "solver", "steps")) {
-    if (*n < 1 || *n > 10'000'000'000LL)
-      failAt("solver.steps", fmt::format("expected an integer in [1, 1e10], got {}", *n));
+    if (*n < 1 || *n > kMaxSolverSteps)
+      failAt("solver.steps", fmt::format("expected an integer in [1, 1e11], got {}", *n));
     spec_.solver.steps = *n;
   }
 
   // [timeline]
   const toml::table* timeline = section("timeline", {"samples"});
   if (auto n = integer(timeline, "timeline", "samples")) {
-    if (*n < 2 || *n > 100'000'000LL)
+    if (*n < 2 || *n > kMaxTimelineSamples)
       failAt("timeline.samples", fmt::format("expected an integer in [2, 1e8], got {}", *n));
     spec_.timeline.samples = *n;
   }

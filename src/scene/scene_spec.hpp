@@ -47,6 +47,10 @@ struct PlateSpec {
   double radius = 0.0;  // R1: radius of the circle each plate point describes
 };
 
+// Limits (README, "Limits and errors").
+inline constexpr long long kMaxSolverSteps = 100'000'000'000LL;  // ~10 min of magnus4
+inline constexpr long long kMaxTimelineSamples = 100'000'000LL;
+
 struct SolverSpec {
   std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4
   std::optional<long long> steps;  // default: automatic (see README)

@@ -106,6 +106,10 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     fs::create_directories("output", ec);
   }
 
+  // From here on a Ctrl-C only raises a flag: the loop below then finishes
+  // what exists (nothing, if it comes during set-up) instead of leaving a
+  // temporary file behind.
+  InterruptGuard interrupts;
   std::unique_ptr<media::FrameSink> sink;
   if (format == scene::VideoFormat::Mp4) {
     if (spec.render.transparent)
@@ -138,7 +142,6 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   BoundedQueue<Frame> queue(3);
   ProgressMeter progress(range.count(), o.quiet);
   std::exception_ptr encodeError;
-  InterruptGuard interrupts;
   std::thread encoder([&] {
     try {
       while (const auto frame = queue.pop()) {

@@ -184,6 +184,39 @@ TEST(VideoCli, SigintLeavesAShorterPlayableVideoNamedSoAndNothingAtTheFinalName)
   EXPECT_LT(probe.ptsSeconds.size(), 3000u + 30u);
 }
 
+TEST(VideoCli, SigtermDuringSetUpLeavesAPartialVideoOrNothing) {
+  const fs::path dir = test::freshTempDir("video_sigterm");
+  const fs::path out = dir / "clip.mp4";
+  const pid_t pid = spawnRollspin({"render", lollipop(), "--set", "render.width=64", "--set", "render.height=48",
+                                   "--set", "animation.duration=100", "-o", out.string()},
+                                  dir / "stderr");
+  ASSERT_GT(pid, 0);
+  // The temporary file exists once the encoder is open: the GL context and
+  // the shaders are usually still being set up.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  bool opened = false;
+  while (!opened && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.path().filename().string().starts_with(".clip.mp4.")) opened = true;
+  }
+  kill(pid, SIGTERM);
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(opened);
+  const std::string err = slurp(dir / "stderr");
+  ASSERT_TRUE(WIFEXITED(status)) << err;
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM) << err;
+  EXPECT_FALSE(fs::exists(out));
+  const auto files = filesIn(dir);
+  if (files == std::vector<std::string>{"stderr"}) {
+    EXPECT_NE(err.find("nothing written"), std::string::npos) << err;
+  } else {
+    ASSERT_EQ(files, (std::vector<std::string>{"clip.partial.mp4", "stderr"}));
+    EXPECT_GT(test::probeVideo(dir / "clip.partial.mp4").ptsSeconds.size(), 0u);
+  }
+}
+
 TEST(VideoCli, QualityPresetSetsSizeAndFrameRateAndDefaultOutputIsTheSceneName) {
   const fs::path dir = test::freshTempDir("video_default");
   const auto r = test::runRollspin({"render", lollipop(), "--quality", "low", "--quiet", "--set",

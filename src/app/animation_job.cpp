@@ -7,6 +7,7 @@
 #include <cmath>
 #include <exception>
 #include <memory>
+#include <mutex>
 #include <thread>
 
 #include "app/bounded_queue.hpp"
@@ -62,6 +63,32 @@ scene::VideoFormat chooseFormat(const scene::SceneSpec& spec, const fs::path& ou
   throw badInput(outputLoc, "unknown video format '{}': expected a .mp4 file, or a folder for PNG frames", ext);
 }
 
+// Frames travel to the encoder thread and come back here for reuse: a few
+// buffers for the whole clip instead of a fresh allocation (and its page
+// faults) per frame.
+class ImagePool : public std::enable_shared_from_this<ImagePool> {
+ public:
+  std::shared_ptr<media::Image> acquire() {
+    std::unique_ptr<media::Image> image;
+    {
+      std::lock_guard lock(mutex_);
+      if (!free_.empty()) {
+        image = std::move(free_.back());
+        free_.pop_back();
+      }
+    }
+    if (!image) image = std::make_unique<media::Image>();
+    return {image.release(), [pool = shared_from_this()](media::Image* used) {
+              std::lock_guard lock(pool->mutex_);
+              pool->free_.emplace_back(used);
+            }};
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::unique_ptr<media::Image>> free_;
+};
+
 }  // namespace
 
 const QualityPreset* findQualityPreset(const std::string& name) {
@@ -90,6 +117,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   if (o.height) overrides.push_back("render.height=" + std::to_string(*o.height));
   if (o.transparent) overrides.push_back("render.transparent=true");
   const scene::SceneSpec spec = scene::loadSceneFile(o.scenePath, overrides);
+  checkFrameMemory(spec);  // the queue and x264 add a few frames more: small next to MSAA buffers
   const RollingModel model = buildModel(spec);
   const FrameClock clock(model.path->length(), spec);
   const FrameRange range = o.frames ? parseFrameRange(*o.frames, clock.frameCount())
@@ -154,6 +182,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     }
   });
 
+  const auto pool = std::make_shared<ImagePool>();
   try {
     Frame previous;
     double previousS = std::nan("");
@@ -162,7 +191,9 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
       const double s = clock.arcLength(k);
       // Held frames show the same pose: the same pixels, rendered once.
       if (!previous || s != previousS) {
-        previous = std::make_shared<const media::Image>(renderer.render(drawer.draw(solveFrame(spec, model, s))));
+        const std::shared_ptr<media::Image> image = pool->acquire();
+        renderer.render(drawer.draw(solveFrame(spec, model, s)), *image);
+        previous = image;
         previousS = s;
       }
       if (!queue.push(previous)) break;  // the encoder failed

@@ -6,6 +6,8 @@
 // solves.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 
 #include "support/cli_runner.hpp"
@@ -80,11 +82,36 @@ TEST(SurfaceCli, BadCurvedScenesExitTwoAndWriteNothing) {
 }
 
 TEST(SurfaceCli, CurvedScenesSolve) {
-  for (const char* name : {"torus", "cylinder-helix", "plane-spline", "saddle-geodesic", "height-bumps"}) {
+  for (const char* name :
+       {"torus", "cylinder-helix", "plane-spline", "saddle-geodesic", "height-bumps", "sphere-loxodrome"}) {
     const auto r = runRollspin({"solve", (sourceDir() / "scenes" / (std::string(name) + ".toml")).string(), "--json"});
     EXPECT_EQ(r.exitCode, 0) << name << "\n" << r.err;
     EXPECT_NE(r.out.find("\"spinor_angle\""), std::string::npos) << name;
   }
+}
+
+// Control points may be given as points in space: they are mapped to the
+// surface's parameters (here a sphere's (θ, φ)), and the path goes through them.
+TEST(SurfaceCli, PointsInSpaceAreMappedOntoTheSurface) {
+  const auto dir = freshTempDir("surface_points3d");
+  const auto scene = dir / "scene.toml";
+  std::ofstream(scene) << "[surface]\nkind = \"sphere\"\nradius = 2\n[path]\nkind = \"points\"\nclosed = true\n"
+                          "points = [[2, 0, 0.5], [0, 2, 0.5], [-2, 0, 0.5], [0, -2, 1]]\n";
+  const auto out = dir / "timeline.csv";
+  const auto r = runRollspin({"timeline", scene.string(), "-o", out.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::ifstream in(out);
+  std::string header, row;
+  std::getline(in, header);
+  std::getline(in, row);
+  // First sample: on the sphere, in the direction of the first point.
+  double s, px, py, pz;
+  ASSERT_EQ(std::sscanf(row.c_str(), "%lf,%lf,%lf,%lf", &s, &px, &py, &pz), 4);
+  const double norm = std::sqrt(px * px + py * py + pz * pz);
+  EXPECT_NEAR(norm, 2.0, 1e-12);
+  EXPECT_NEAR(px / norm, 2.0 / std::sqrt(4.25), 1e-12);
+  EXPECT_NEAR(py, 0.0, 1e-12);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -74,7 +74,7 @@ inline constexpr long long kMaxSolverSteps = 100'000'000'000LL;  // ~10 min of m
 inline constexpr long long kMaxTimelineSamples = 100'000'000LL;
 
 struct SolverSpec {
-  std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4
+  std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4 | frame4
   std::optional<long long> steps;  // default: automatic (see README)
 };
 

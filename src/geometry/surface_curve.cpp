@@ -343,6 +343,11 @@ ContactCheck checkSingleContact(const SurfaceCurvePath& path, double ballRadius,
   const double length = path.length();
   for (int k = 0; k <= samples; ++k) grid.push_back(length * k / samples);
   for (double b : path.breakpoints()) grid.push_back(b);
+  const std::vector<double>& starts = path.panelStarts();
+  for (std::size_t p = 0; p < starts.size(); ++p) {
+    const double end = p + 1 < starts.size() ? starts[p + 1] : length;
+    for (int k = 0; k < 16; ++k) grid.push_back(starts[p] + (end - starts[p]) * k / 16.0);
+  }
   std::sort(grid.begin(), grid.end());
   ContactCheck check;
   for (std::size_t k = 0; k < grid.size(); ++k) {

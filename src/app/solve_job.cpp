@@ -18,6 +18,11 @@ SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& mode
                    model.path->describe());
   }
   choice.automaticSteps = !spec.solver.steps.has_value();
+  if (spin::isAdaptive(choice.method)) {
+    choice.automaticSteps = false;
+    choice.tolerance = spec.solver.tolerance.value_or(scene::SolverSpec::kDefaultTolerance);
+    return choice;
+  }
   choice.steps = spec.solver.steps ? *spec.solver.steps : automaticSteps(model, choice.method);
   return choice;
 }
@@ -45,7 +50,7 @@ std::vector<double> timelineArcLengths(const scene::SceneSpec& spec, const Rolli
 }
 
 spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model, const SolverChoice& choice) {
-  const spin::Propagator propagator(*model.path, model.ballRadius, choice.method, choice.steps);
+  const spin::Propagator propagator(*model.path, model.ballRadius, choice.method, choice.steps, choice.tolerance);
   spin::SolveStats stats = propagator.solveFinal();
   if (stats.status != spin::SolveStatus::Ok) {
     throw runtimeError(spec.where("solver.method"), "solver failed: {}", spin::statusMessage(stats.status));

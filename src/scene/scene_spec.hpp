@@ -46,8 +46,10 @@ struct PlateSpec {
 };
 
 struct SolverSpec {
-  std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4
+  std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4 | frame4 | cf4 | magnus6 | rk45 | magnus46
   std::optional<long long> steps;  // default: automatic (see README)
+  std::optional<double> tolerance;  // adaptive methods; default kDefaultTolerance; alone → magnus46
+  static constexpr double kDefaultTolerance = 1e-10;
 };
 
 struct TimelineSpec {

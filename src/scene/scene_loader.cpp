@@ -286,7 +286,7 @@ SceneSpec Reader::read() {
   // [solver]
   const toml::table* solver = section("solver", {"method", "steps", "tolerance"});
   if (auto m = text(solver, "solver", "method",
-                    {"exact", "magnus2", "magnus4", "rk4", "frame4", "cf4", "magnus6", "rk45", "magnus46"}))
+                    {"exact", "magnus2", "magnus4", "rk4", "frame4", "cf4", "magnus6", "rk45", "frame6a"}))
     spec_.solver.method = *m;
   if (auto n = integer(solver, "solver", "steps")) {
     if (*n < 1 || *n > 10'000'000'000LL)
@@ -301,10 +301,10 @@ SceneSpec Reader::read() {
   // A tolerance and no step count: the adaptive geometric method by default.
   // Steps and tolerance each belong to one kind of method.
   const bool methodGiven = spec_.locations.contains("solver.method");
-  const bool adaptive = spec_.solver.method == "rk45" || spec_.solver.method == "magnus46";
-  if (!methodGiven && spec_.solver.tolerance && !spec_.solver.steps) spec_.solver.method = "magnus46";
+  const bool adaptive = spec_.solver.method == "rk45" || spec_.solver.method == "frame6a";
+  if (!methodGiven && spec_.solver.tolerance && !spec_.solver.steps) spec_.solver.method = "frame6a";
   else if (spec_.solver.tolerance && !adaptive)
-    failAt("solver.tolerance", fmt::format("applies to the adaptive methods (\"magnus46\", \"rk45\"), but "
+    failAt("solver.tolerance", fmt::format("applies to the adaptive methods (\"frame6a\", \"rk45\"), but "
                                            "solver.method is \"{}\"; remove solver.tolerance or solver.steps",
                                            spec_.solver.method));
   if (adaptive && spec_.solver.steps)

@@ -46,9 +46,9 @@ struct PlateSpec {
 };
 
 struct SolverSpec {
-  std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4 | frame4 | cf4 | magnus6 | rk45 | magnus46
+  std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4 | frame4 | cf4 | magnus6 | rk45 | frame6a
   std::optional<long long> steps;  // default: automatic (see README)
-  std::optional<double> tolerance;  // adaptive methods; default kDefaultTolerance; alone → magnus46
+  std::optional<double> tolerance;  // adaptive methods; default kDefaultTolerance; alone → frame6a
   static constexpr double kDefaultTolerance = 1e-10;
 };
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "spin/field.hpp"
+#include "spin/frame_propagator.hpp"
 
 namespace rollspin::spin {
 
@@ -23,9 +24,10 @@ constexpr double kA[7][6] = {
     {35.0 / 384, 0.0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84},
 };
 // b₅ − b₄ (the error weights).
-constexpr std::array<double, 7> kE{71.0 / 57600,      0.0,          -71.0 / 16695, 71.0 / 1920,
-                                   -17253.0 / 339200, 22.0 / 525,  -1.0 / 40};
+constexpr std::array<double, 7> kE{71.0 / 57600,      0.0,         -71.0 / 16695, 71.0 / 1920,
+                                   -17253.0 / 339200, 22.0 / 525, -1.0 / 40};
 constexpr double kGaussOffset = 0.38729833462074168852;  // √15/10
+constexpr double kMaxFrameTurn = 2.5;                     // rad per step, < π
 
 struct Quat {
   double v[4];
@@ -43,7 +45,7 @@ struct DpResult {
   double error = 0.0;  // scaled RMS error (≤ 1 accept)
 };
 
-// One Dormand–Prince step; ω(s + c_i h) from `omega`. tol = 0: no estimate.
+// One Dormand–Prince step; tol = 0: no estimate.
 template <typename Omega>
 DpResult dormandPrince(const Omega& omega, const Su2& u, double s, double h, double tol) {
   const Quat y0 = toQuat(u);
@@ -57,7 +59,7 @@ DpResult dormandPrince(const Omega& omega, const Su2& u, double s, double h, dou
     if (i == 6) {
       DpResult r{y, 0.0};
       if (tol <= 0.0) return r;
-      k[6] = derivative(w[5], y);  // c₇ = 1: same node as stage 6 (FSAL)
+      k[6] = derivative(w[5], y);  // c₇ = 1: the node of stage 6
       double sum = 0.0;
       for (int c = 0; c < 4; ++c) {
         double e = 0.0;
@@ -73,24 +75,64 @@ DpResult dormandPrince(const Omega& omega, const Su2& u, double s, double h, dou
   return {};
 }
 
+// The frame6 element Φ(b) exp(Ω_g) Φ(a)† on [a, b], given the frames at the
+// ends (their spinors) and κ_g at the three Gauss nodes; the frame's own turn
+// on the short arc, as in frame4Element.
+Su2 frame6Element(const Su2& phiA, const Su2& phiB, const double* kappaG, double ballRadius, double h) {
+  const Vec3 g[3] = {{0.0, 1.0 / ballRadius, -kappaG[0]}, {0.0, 1.0 / ballRadius, -kappaG[1]},
+                     {0.0, 1.0 / ballRadius, -kappaG[2]}};
+  Su2 turn = phiB * phiA.conjugate();
+  if (turn.w < 0.0) turn = -turn;
+  return turn * (phiA * expRotation(magnus6Exponent(h, g)) * phiA.conjugate());
+}
+
+// κ_g at the Gauss nodes of [s, s + h] and the largest frame rate |d| there.
+void gaussKappa(const geometry::ContactPath& path, double s, double h, double* kappaG, double& turnRate) {
+  const double c[3] = {0.5 - kGaussOffset, 0.5, 0.5 + kGaussOffset};
+  for (int i = 0; i < 3; ++i) {
+    const geometry::DarbouxSample f = path.at(s + c[i] * h);
+    kappaG[i] = f.geodesicCurvature;
+    turnRate = std::max(turnRate, geometry::darbouxVector(f).norm());
+  }
+}
+
+// s as hi + lo (Neumaier): exact enough that 1e9 steps do not drift it.
+struct ArcLength {
+  double hi = 0.0, lo = 0.0;
+  void add(double x) {
+    const double t = hi + x;
+    lo += std::abs(hi) >= std::abs(x) ? (hi - t) + x : (x - t) + hi;
+    hi = t;
+  }
+  [[nodiscard]] double value() const { return hi + lo; }
+};
+
 }  // namespace
 
 Su2 adaptiveStep(const geometry::ContactPath& path, double ballRadius, Method method, const Su2& u, double s,
                  double h) {
-  auto omega = [&](double x) { return angularVelocity(path.at(x), ballRadius); };
-  if (method == Method::Rk45) return toSu2(dormandPrince(omega, u, s, h, 0.0).y5);
-  const Vec3 w[3] = {omega(s + (0.5 - kGaussOffset) * h), omega(s + 0.5 * h), omega(s + (0.5 + kGaussOffset) * h)};
-  return expRotation(magnus6Exponent(h, w)) * u;
+  if (method == Method::Rk45) {
+    auto omega = [&](double x) { return angularVelocity(path.at(x), ballRadius); };
+    return toSu2(dormandPrince(omega, u, s, h, 0.0).y5);
+  }
+  double kappa[3], rate = 0.0;
+  gaussKappa(path, s, h, kappa, rate);
+  return frame6Element(frameSpinor(path.at(s)), frameSpinor(path.at(s + h)), kappa, ballRadius, h) * u;
 }
 
 SolveStats adaptiveRun(const geometry::ContactPath& path, double ballRadius, Method method, double tolerance,
-                       std::span<const double> sampleS, const SampleSink& sink) {
+                       long long stepLimit, std::span<const double> sampleS, const SampleSink& sink) {
   SolveStats stats;
   stats.method = method;
   const double length = path.length();
   auto track = [&stats](const Su2& u) {
     stats.unitarityError = std::max(stats.unitarityError, std::abs(u.norm() - 1.0));
     return u.isFinite();
+  };
+  auto stop = [&stats](SolveStatus status, const Su2& u) {
+    stats.status = status;
+    stats.final = u;
+    return stats;
   };
   auto omega = [&](double x) { return angularVelocity(path.at(x), ballRadius); };
 
@@ -99,16 +141,16 @@ SolveStats adaptiveRun(const geometry::ContactPath& path, double ballRadius, Met
     if (b > 0.0 && b < length) cuts.push_back(b);
   cuts.push_back(length);
 
-  // A runaway march (tolerance far below round-off, or a field that keeps
-  // the step tiny) stops with a status instead of running for hours.
-  constexpr long long kMaxAttempts = 2'000'000'000;
   Su2 u = Su2::identity();
   std::size_t next = 0;
   double h = 0.0;
 
   for (std::size_t seg = 0; seg + 1 < cuts.size(); ++seg) {
     const double a = cuts[seg], b = cuts[seg + 1];
-    double s = a;
+    ArcLength s;
+    s.hi = a;
+    // frame6a reuses the frame at the step's start from the previous step's end.
+    Su2 phiStart = method == Method::Frame6a ? frameSpinor(path.at(a)) : Su2{};
     if (h <= 0.0) {
       // First guess: half a radian of rotation or of frame turn; the
       // controller corrects it within a few attempts.
@@ -116,64 +158,48 @@ SolveStats adaptiveRun(const geometry::ContactPath& path, double ballRadius, Met
       const double rate = angularVelocity(f, ballRadius).norm() + geometry::darbouxVector(f).norm();
       h = rate > 0.0 ? 0.5 / rate : (b - a);
     }
-    while (s < b) {
-      if (stats.steps + stats.rejectedSteps >= kMaxAttempts) {
-        stats.status = SolveStatus::StepSizeUnderflow;
-        stats.final = u;
-        return stats;
-      }
+    while (b - s.value() > 0.0) {
+      if (stats.steps + stats.rejectedSteps >= stepLimit) return stop(SolveStatus::StepLimit, u);
+      const double here = s.value();
       // Land on the breakpoint: stretch a step that would leave a sliver.
-      const bool last = h >= 0.999 * (b - s);
-      const double step = last ? b - s : h;
-      if (!(step > 1e-14 * std::max(1.0, std::abs(b)))) {
-        stats.status = SolveStatus::StepSizeUnderflow;
-        stats.final = u;
-        return stats;
-      }
+      const bool last = h >= 0.999 * (b - here);
+      const double step = last ? b - here : h;
+      if (!(step > 1e-14 * std::max(1.0, std::abs(b)))) return stop(SolveStatus::StepSizeUnderflow, u);
 
-      Su2 candidate;
+      Su2 candidate, phiEnd;
       double factor = 1.0;
       bool accept = false;
       if (method == Method::Rk45) {
-        const DpResult r = dormandPrince(omega, u, s, step, tolerance);
-        if (!std::isfinite(r.error)) {
-          stats.status = SolveStatus::NonFinite;
-          stats.final = toSu2(r.y5);
-          return stats;
-        }
+        const DpResult r = dormandPrince(omega, u, here, step, tolerance);
+        if (!std::isfinite(r.error)) return stop(SolveStatus::NonFinite, toSu2(r.y5));
         candidate = toSu2(r.y5);
         accept = r.error <= 1.0;
-        factor = r.error > 0.0 ? 0.9 * std::pow(r.error, -0.2) : 5.0;
-        factor = std::clamp(factor, 0.2, 5.0);
+        factor = r.error > 0.0 ? std::clamp(0.9 * std::pow(r.error, -0.2), 0.2, 5.0) : 5.0;
       } else {
-        Vec3 w[3];
-        double turnRate = 0.0;
-        const double c[3] = {0.5 - kGaussOffset, 0.5, 0.5 + kGaussOffset};
-        for (int i = 0; i < 3; ++i) {
-          const geometry::DarbouxSample f = path.at(s + c[i] * step);
-          w[i] = angularVelocity(f, ballRadius);
-          turnRate = std::max(turnRate, geometry::darbouxVector(f).norm());
-        }
-        Vec3 fourth;
-        const Vec3 sixth = magnus6Exponent(step, w, &fourth);
-        const double estimate = (sixth - fourth).norm();
-        if (!std::isfinite(estimate) || !sixth.allFinite()) {
-          stats.status = SolveStatus::NonFinite;
-          stats.final = u;
-          return stats;
-        }
-        const double allowed = tolerance * step / length;
-        const double ratio = estimate / allowed;
-        factor = ratio > 0.0 ? std::clamp(0.9 * std::pow(ratio, -0.25), 0.2, 4.0) : 4.0;
+        const double half = 0.5 * step;
+        double kFull[3], kLeft[3], kRight[3], turnRate = 0.0;
+        gaussKappa(path, here, step, kFull, turnRate);
+        gaussKappa(path, here, half, kLeft, turnRate);
+        gaussKappa(path, here + half, step - half, kRight, turnRate);
+        const Su2 phiMid = frameSpinor(path.at(here + half));
+        phiEnd = frameSpinor(path.at(last ? b : here + step));
+        const Su2 whole = frame6Element(phiStart, phiEnd, kFull, ballRadius, step);
+        const Su2 halves = frame6Element(phiMid, phiEnd, kRight, ballRadius, step - half) *
+                           frame6Element(phiStart, phiMid, kLeft, ballRadius, half);
+        // Richardson: the two halves are 2⁶ times more accurate than the whole.
+        const double error = spinorDistance(whole, halves) / 63.0;
+        if (!std::isfinite(error) || !halves.isFinite()) return stop(SolveStatus::NonFinite, u);
+        const double ratio = error / (tolerance * step / length);
+        factor = ratio > 0.0 ? std::clamp(0.9 * std::pow(ratio, -1.0 / 6.0), 0.2, 4.0) : 4.0;
         accept = ratio <= 1.0;
-        if (turnRate * step > 1.0) {
+        if (turnRate * step > kMaxFrameTurn) {
           accept = false;
-          factor = std::min(factor, 0.9 / (turnRate * step));
+          factor = std::min(factor, 0.9 * kMaxFrameTurn / (turnRate * step));
         } else if (turnRate > 0.0) {
-          factor = std::min(factor, 1.0 / (turnRate * step));
+          factor = std::min(factor, kMaxFrameTurn / (turnRate * step));
         }
         if (accept) {
-          candidate = expRotation(sixth) * u;
+          candidate = halves * u;
           const double norm = candidate.norm();  // unit elements: project round-off in the norm away
           candidate = {candidate.w / norm, candidate.x / norm, candidate.y / norm, candidate.z / norm};
         }
@@ -184,29 +210,27 @@ SolveStats adaptiveRun(const geometry::ContactPath& path, double ballRadius, Met
         h = step * std::min(factor, 1.0);
         continue;
       }
-      // Samples inside [s, s + step): one partial step from the accepted node.
-      const double end = last ? b : s + step;
+      // Samples inside [here, here + step): a partial step from this node.
+      const double end = last ? b : here + step;
       while (next < sampleS.size() && sampleS[next] < end) {
-        const double dh = sampleS[next] - s;
-        const Su2 uj = dh <= 0.0 ? u : adaptiveStep(path, ballRadius, method, u, s, dh);
-        if (!track(uj)) {
-          stats.status = SolveStatus::NonFinite;
-          stats.final = uj;
-          return stats;
-        }
+        const double dh = (sampleS[next] - s.hi) - s.lo;
+        const Su2 uj = dh <= 0.0 ? u : adaptiveStep(path, ballRadius, method, u, here, dh);
+        if (!track(uj)) return stop(SolveStatus::NonFinite, uj);
         if (sink) sink(next, sampleS[next], uj);
         ++next;
       }
       u = candidate;
+      phiStart = phiEnd;
       ++stats.steps;
-      if (!track(u)) {
-        stats.status = SolveStatus::NonFinite;
-        stats.final = u;
-        return stats;
+      if (!track(u)) return stop(SolveStatus::NonFinite, u);
+      if (last) {
+        s.hi = b;
+        s.lo = 0.0;
+      } else {
+        s.add(step);
       }
-      s = end;
-      // After a cut step keep the controller's h, not the sliver.
-      h = last ? std::max(h, step) * factor : step * factor;
+      // After a step cut to the breakpoint keep the controller's h, not the sliver.
+      h = (last ? std::max(h, step) : step) * factor;
     }
   }
   for (; next < sampleS.size(); ++next)

@@ -16,7 +16,7 @@ namespace rollspin::spin {
 
 namespace {
 constexpr std::array kMethods{Method::Exact, Method::Magnus2, Method::Magnus4, Method::Rk4,     Method::Frame4,
-                              Method::Cf4,   Method::Magnus6, Method::Rk45,    Method::Magnus46};
+                              Method::Cf4,   Method::Magnus6, Method::Rk45,    Method::Frame6a};
 
 // dU/ds = ½ (0, ω) ⊗ U in quaternion form, for the raw-spinor RK4.
 Su2 derivative(const Vec3& w, const Su2& u) {
@@ -37,7 +37,7 @@ std::string_view methodName(Method m) {
     case Method::Cf4: return "cf4";
     case Method::Magnus6: return "magnus6";
     case Method::Rk45: return "rk45";
-    case Method::Magnus46: return "magnus46";
+    case Method::Frame6a: return "frame6a";
   }
   return "?";
 }
@@ -60,12 +60,12 @@ int methodOrder(Method m) {
     case Method::Cf4: return 4;
     case Method::Magnus6: return 6;
     case Method::Rk45: return 5;
-    case Method::Magnus46: return 6;
+    case Method::Frame6a: return 6;
   }
   return 0;
 }
 
-bool isAdaptive(Method m) { return m == Method::Rk45 || m == Method::Magnus46; }
+bool isAdaptive(Method m) { return m == Method::Rk45 || m == Method::Frame6a; }
 bool isGeometric(Method m) { return m != Method::Rk4 && m != Method::Rk45; }
 
 std::string_view statusMessage(SolveStatus s) {
@@ -78,6 +78,7 @@ std::string_view statusMessage(SolveStatus s) {
     case SolveStatus::BadTolerance: return "an adaptive method needs solver.tolerance > 0";
     case SolveStatus::StepSizeUnderflow:
       return "the adaptive step size underflowed: the tolerance is below what double precision can reach here";
+    case SolveStatus::StepLimit: return "the adaptive method reached its step limit";
   }
   return "?";
 }
@@ -120,7 +121,7 @@ std::span<const double> stepNodes(Method m) {
     case Method::Exact:
     case Method::Frame4:  // frame4 samples the frame, not ω (frame_propagator.hpp)
     case Method::Rk45:
-    case Method::Magnus46: break;  // adaptive: their own march (adaptive_march.hpp)
+    case Method::Frame6a: break;  // adaptive: their own march (adaptive_march.hpp)
   }
   return {};
 }
@@ -154,22 +155,20 @@ Su2 stepElement(Method m, double h, const Vec3* w) {
     case Method::Exact:
     case Method::Frame4:
     case Method::Rk45:
-    case Method::Magnus46: break;
+    case Method::Frame6a: break;
   }
   return Su2::identity();
 }
 
 // In su(2) ≅ (R³, ×) every commutator is a cross product, so the two nested
 // commutators of the sixth-order formula cost a few flops.
-Vec3 magnus6Exponent(double h, const Vec3* w, Vec3* fourth) {
+Vec3 magnus6Exponent(double h, const Vec3* w) {
   const Vec3 a1 = h * w[1];
   const Vec3 a2 = (1.2909944487358056284 * h) * (w[2] - w[0]);  // √15/3
   const Vec3 a3 = (10.0 / 3.0 * h) * (w[2] - 2.0 * w[1] + w[0]);
   const Vec3 c1 = a1.cross(a2);
   const Vec3 c2 = (-1.0 / 60.0) * a1.cross(2.0 * a3 + c1);
-  const Vec3 base = a1 + a3 / 12.0;
-  if (fourth != nullptr) *fourth = base - c1 / 12.0;
-  return base + (1.0 / 240.0) * (-20.0 * a1 - a3 + c1).cross(a2 + c2);
+  return a1 + a3 / 12.0 + (1.0 / 240.0) * (-20.0 * a1 - a3 + c1).cross(a2 + c2);
 }
 
 namespace {
@@ -211,7 +210,7 @@ SolveStats Propagator::run(std::span<const double> sampleS, const SampleSink& si
   }
   if (isAdaptive(method_)) {
     if (!(tolerance_ > 0.0)) return finish(SolveStatus::BadTolerance);
-    SolveStats adaptive = adaptiveRun(path_, ballRadius_, method_, tolerance_, sampleS, sink);
+    SolveStats adaptive = adaptiveRun(path_, ballRadius_, method_, tolerance_, stepLimit_, sampleS, sink);
     adaptive.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return adaptive;
   }

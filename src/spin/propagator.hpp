@@ -20,9 +20,10 @@
 //            Ω = α₁ + α₃/12 + (1/240)[−20α₁ − α₃ + C₁, α₂ + C₂].
 //   rk45     adaptive Dormand–Prince 5(4) on the raw spinor (the generic ODE
 //            baseline; rtol = atol = tolerance per step), adaptive_march.hpp.
-//   magnus46 adaptive magnus6 with the embedded 4th-order Ω₄ = α₁ + α₃/12 −
-//            [α₁, α₂]/12 from the same nodes as error estimate, per unit
-//            length: |Ω₆ − Ω₄| ≤ tolerance · h / L (adaptive_march.hpp).
+//   frame6a  adaptive magnus6 in the Darboux frame (frame4's factorisation, so
+//            only κ_g drives the integrated part and constant κ_g is exact at
+//            any h), error by step doubling, controlled per unit length so the
+//            sum over the path stays ≤ tolerance (adaptive_march.hpp).
 // In su(2) ≅ (R³, ×): A(ω) = −(i/2) ω·σ and [A(a), A(b)] = A(a × b).
 // A sample s between grid nodes is reached by one partial step from the
 // preceding node, so samples never perturb the main march. The march
@@ -42,14 +43,14 @@
 
 namespace rollspin::spin {
 
-enum class Method { Exact, Magnus2, Magnus4, Rk4, Frame4, Cf4, Magnus6, Rk45, Magnus46 };
+enum class Method { Exact, Magnus2, Magnus4, Rk4, Frame4, Cf4, Magnus6, Rk45, Frame6a };
 
 [[nodiscard]] std::string_view methodName(Method m);
 [[nodiscard]] std::optional<Method> parseMethod(std::string_view name);
 [[nodiscard]] std::span<const Method> allMethods();
 // Order of accuracy of the method (0 for exact).
 [[nodiscard]] int methodOrder(Method m);
-// Adaptive methods choose their own steps from a tolerance (rk45, magnus46).
+// Adaptive methods choose their own steps from a tolerance (rk45, frame6a).
 [[nodiscard]] bool isAdaptive(Method m);
 // Methods that multiply exact SU(2) elements (unitary to round-off).
 [[nodiscard]] bool isGeometric(Method m);
@@ -61,6 +62,7 @@ enum class SolveStatus {
   BadSteps,                     // steps < 1 for a stepping method
   BadTolerance,                 // an adaptive method needs a tolerance > 0
   StepSizeUnderflow,            // an adaptive method could not meet its tolerance
+  StepLimit,                    // an adaptive method used up its step budget (setStepLimit)
 };
 [[nodiscard]] std::string_view statusMessage(SolveStatus s);
 
@@ -96,6 +98,9 @@ class Propagator {
   [[nodiscard]] Vec3 omega(double s) const;
 
   [[nodiscard]] Method method() const { return method_; }
+  // Adaptive methods stop with StepLimit after this many attempted steps
+  // (default 2e9): a report can bound a hopeless cell's cost.
+  void setStepLimit(long long attempts) { stepLimit_ = attempts; }
 
  private:
   const geometry::ContactPath& path_;
@@ -103,6 +108,7 @@ class Propagator {
   Method method_;
   long long steps_;
   double tolerance_;
+  long long stepLimit_ = 2'000'000'000;
   Vec3 d0_ = Vec3::Zero(), e0_ = Vec3::Zero();  // exact method's two rates
 };
 
@@ -113,8 +119,8 @@ inline constexpr std::size_t kMaxNodes = 3;
 // s + c_i h). Every method here is linear in U from the left.
 [[nodiscard]] Su2 stepElement(Method m, double h, const Vec3* w);
 // magnus6's exponent Ω₆ (as a rotation vector) from ω at its three Gauss
-// nodes; with `fourth`, also the embedded 4th-order Ω₄ from the same nodes.
-[[nodiscard]] Vec3 magnus6Exponent(double h, const Vec3* w, Vec3* fourth = nullptr);
+// nodes c = ½ − √15/10, ½, ½ + √15/10.
+[[nodiscard]] Vec3 magnus6Exponent(double h, const Vec3* w);
 
 // s_j = j L / (count − 1), j = 0 … count − 1 (count ≥ 2).
 [[nodiscard]] std::vector<double> uniformSamples(double length, std::size_t count);

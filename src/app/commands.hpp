@@ -13,4 +13,7 @@ using CommandHandler = std::function<int()>;
 // Adds `solve` and `timeline`; sets `handler` when one of them is chosen.
 void registerSolveCommands(CLI::App& cli, CommandHandler& handler);
 
+// Adds `render` (stills) and `compare` (images); render_commands.cpp.
+void registerRenderCommands(CLI::App& cli, CommandHandler& handler);
+
 }  // namespace rollspin::app

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   cli.require_subcommand(1);
   rollspin::app::CommandHandler handler;
   rollspin::app::registerSolveCommands(cli, handler);
+  rollspin::app::registerRenderCommands(cli, handler);
 
   try {
     cli.parse(argc, argv);

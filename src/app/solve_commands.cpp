@@ -73,7 +73,7 @@ int runTimeline(const SolveOptions& o) {
   const scene::SceneSpec spec = scene::loadSceneFile(o.scenePath, o.overrides);
   const RollingModel model = buildModel(spec);
   const SolverChoice choice = chooseSolver(spec, model);
-  const std::vector<double> samples = timelineArcLengths(spec, model);
+  const spin::SampleArcLengths samples = timelineArcLengths(spec, model);
   const std::filesystem::path out = o.output.empty() ? defaultOutput(spec, ".csv") : std::filesystem::path(o.output);
   const spin::SolveStats stats = writeTimelineCsv(out, model, choice, samples);
   std::fprintf(stderr, "rollspin: wrote %zu samples to %s (%s, %lld steps, %.3g s)\n", samples.size(),

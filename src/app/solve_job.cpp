@@ -8,6 +8,15 @@
 
 namespace rollspin::app {
 
+namespace {
+// The key a user would change to shorten the path: the first one given.
+std::pair<std::string, SourceLoc> pathSizeKey(const scene::SceneSpec& spec) {
+  for (const char* key : {"path.turns", "path.length", "path.radius", "path.colatitude_deg", "plate.radius"})
+    if (spec.locations.contains(key)) return {key, spec.where(key)};
+  return {"path", spec.where("path")};
+}
+}  // namespace
+
 SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& model) {
   SolverChoice choice;
   choice.method = *spin::parseMethod(spec.solver.method);  // validated by the loader
@@ -17,14 +26,35 @@ SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& mode
                    "use \"magnus4\"",
                    model.path->describe());
   }
+  const double length = model.path->length();
+  if (!(std::isfinite(length) && length > 0.0)) {
+    const auto [key, loc] = pathSizeKey(spec);
+    throw badInput(loc, "{}: the path's length {} is not a finite positive number", key, length);
+  }
   choice.automaticSteps = !spec.solver.steps.has_value();
   if (spin::isAdaptive(choice.method)) {
     choice.automaticSteps = false;
     choice.tolerance = spec.solver.tolerance.value_or(scene::SolverSpec::kDefaultTolerance);
     return choice;
   }
-  choice.steps = spec.solver.steps ? *spec.solver.steps : automaticSteps(model, choice.method);
+  if (spec.solver.steps) {
+    choice.steps = *spec.solver.steps;
+  } else if (choice.method != spin::Method::Exact) {
+    const double needed = requiredAutomaticSteps(model);
+    if (!(needed <= static_cast<double>(scene::kMaxSolverSteps))) {
+      const auto [key, loc] = pathSizeKey(spec);
+      throw badInput(loc,
+                     "{}: automatic stepping would need {:.3g} steps, above the limit of 1e11; shorten the "
+                     "path or set solver.steps",
+                     key, needed);
+    }
+    choice.steps = automaticSteps(model, choice.method);
+  }
   return choice;
+}
+
+double requiredAutomaticSteps(const RollingModel& model) {
+  return 400.0 * spin::integratedStepBudget(*model.path, model.ballRadius);
 }
 
 long long automaticSteps(const RollingModel& model, spin::Method method) {
@@ -34,19 +64,22 @@ long long automaticSteps(const RollingModel& model, spin::Method method) {
   // near 1e-13 per radian of rotation on the foundation's scenes (measured:
   // lollipop 5e-14, see tests). Other methods get the same grid: they are
   // baselines, and a user studying them sets solver.steps.
-  const double budget = spin::integratedStepBudget(*model.path, model.ballRadius);
-  return std::clamp<long long>(static_cast<long long>(std::ceil(400.0 * budget)), 64, 100'000'000);
+  const double needed = requiredAutomaticSteps(model);
+  if (!(needed <= static_cast<double>(scene::kMaxSolverSteps))) return scene::kMaxSolverSteps;  // NaN too
+  return std::max<long long>(64, static_cast<long long>(std::ceil(needed)));
 }
 
 long long defaultSampleCount(const RollingModel& model) {
   const double ballTurns = spin::integratedFieldStrength(*model.path, model.ballRadius) / (2.0 * std::numbers::pi);
   const double turns = std::max(model.path->turns(), ballTurns);
-  return std::clamp<long long>(static_cast<long long>(std::ceil(60.0 * turns)), 1, 100'000'000) + 1;
+  // Clamp in floating point first: turns may be huge (or inf) on bad input.
+  const double rows = std::clamp(std::ceil(60.0 * turns), 1.0, static_cast<double>(scene::kMaxTimelineSamples - 1));
+  return static_cast<long long>(std::isfinite(rows) ? rows : 1.0) + 1;
 }
 
-std::vector<double> timelineArcLengths(const scene::SceneSpec& spec, const RollingModel& model) {
+spin::SampleArcLengths timelineArcLengths(const scene::SceneSpec& spec, const RollingModel& model) {
   const long long count = spec.timeline.samples ? *spec.timeline.samples : defaultSampleCount(model);
-  return spin::uniformSamples(model.path->length(), static_cast<std::size_t>(count));
+  return spin::SampleArcLengths::uniform(model.path->length(), static_cast<std::size_t>(count));
 }
 
 spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model, const SolverChoice& choice) {

@@ -24,11 +24,13 @@ struct SolverChoice {
 // Automatic step count: 400 per unit of ∫(|ω| + |d|) ds, so that magnus4
 // reaches ~1e-13 on the foundation's paths (see README, "Solver").
 [[nodiscard]] long long automaticSteps(const RollingModel& model, spin::Method method);
+// The unclamped automatic step count (may exceed the limit, or be inf/NaN).
+[[nodiscard]] double requiredAutomaticSteps(const RollingModel& model);
 
 // Default sample count: 60 per turn of the path or of the ball, whichever is
 // more, plus the end point.
 [[nodiscard]] long long defaultSampleCount(const RollingModel& model);
-[[nodiscard]] std::vector<double> timelineArcLengths(const scene::SceneSpec& spec, const RollingModel& model);
+[[nodiscard]] spin::SampleArcLengths timelineArcLengths(const scene::SceneSpec& spec, const RollingModel& model);
 
 // Runs the solver once for its final value and statistics; throws Runtime on
 // a non-finite result.

@@ -9,7 +9,7 @@
 namespace rollspin::app {
 
 spin::SolveStats writeTimelineCsv(const std::filesystem::path& out, const RollingModel& model,
-                                  const SolverChoice& choice, std::span<const double> sampleS) {
+                                  const SolverChoice& choice, const spin::SampleArcLengths& sampleS) {
   AtomicFile file(out);
   fmt::memory_buffer buffer;
   fmt::format_to(std::back_inserter(buffer),

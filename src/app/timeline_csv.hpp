@@ -18,6 +18,6 @@
 namespace rollspin::app {
 
 [[nodiscard]] spin::SolveStats writeTimelineCsv(const std::filesystem::path& out, const RollingModel& model,
-                                                const SolverChoice& choice, std::span<const double> sampleS);
+                                                const SolverChoice& choice, const spin::SampleArcLengths& sampleS);
 
 }  // namespace rollspin::app

@@ -58,6 +58,9 @@ class Reader {
   std::optional<std::string> text(const toml::table* t, const std::string& section, const std::string& key,
                                   const std::set<std::string>& choices);
   std::optional<Vec3> vector(const toml::table* t, const std::string& section, const std::string& key);
+  std::optional<bool> boolean(const toml::table* t, const std::string& section, const std::string& key);
+  std::optional<std::string> anyText(const toml::table* t, const std::string& section, const std::string& key);
+  void readRender();
   void forbid(const toml::table* t, const std::string& section, const std::string& key, const std::string& why);
 
   [[noreturn]] void fail(const std::string& key, const SourceLoc& loc, const std::string& expected,
@@ -149,6 +152,74 @@ std::optional<Vec3> Reader::vector(const toml::table* t, const std::string& sect
   return v;
 }
 
+std::optional<bool> Reader::boolean(const toml::table* t, const std::string& section, const std::string& key) {
+  const toml::node* node = get(t, section, key);
+  if (node == nullptr) return std::nullopt;
+  const std::string full = section + "." + key;
+  if (!node->is_boolean()) fail(full, locOf(full, *node), "true or false", describeNode(*node));
+  return node->as_boolean()->get();
+}
+
+std::optional<std::string> Reader::anyText(const toml::table* t, const std::string& section, const std::string& key) {
+  const toml::node* node = get(t, section, key);
+  if (node == nullptr) return std::nullopt;
+  const std::string full = section + "." + key;
+  if (!node->is_string()) fail(full, locOf(full, *node), "a string", describeNode(*node));
+  return node->as_string()->get();
+}
+
+// [render] — image size, layout, strobe, text, camera (render issue).
+void Reader::readRender() {
+  const toml::table* render = section(
+      "render", {"width", "height", "layout", "strobe", "title", "labels", "transparent", "msaa", "azimuth_deg",
+                 "elevation_deg", "distance", "target", "follow", "fov_deg"});
+  RenderSpec& r = spec_.render;
+  constexpr long long kMaxSide = 8192;  // "8K": the renderer's size limit
+  for (const char* key : {"width", "height"}) {
+    if (auto n = integer(render, "render", key)) {
+      if (*n < 1 || *n > kMaxSide)
+        failAt(std::string("render.") + key, fmt::format("expected an image size in [1, {}] pixels, got {}", kMaxSide, *n));
+      (std::string(key) == "width" ? r.width : r.height) = *n;
+    }
+  }
+  if (auto l = text(render, "render", "layout", {"side-by-side", "inset", "ball", "twin"}))
+    r.layout = *l == "side-by-side" ? RenderLayout::SideBySide
+             : *l == "inset"        ? RenderLayout::Inset
+             : *l == "ball"         ? RenderLayout::Ball
+                                    : RenderLayout::Twin;
+  if (auto n = integer(render, "render", "strobe")) {
+    if (*n < 0 || *n == 1 || *n > 200)
+      failAt("render.strobe", fmt::format("expected 0 (off) or a number of positions in [2, 200], got {}", *n));
+    r.strobe = *n;
+  }
+  if (auto t = anyText(render, "render", "title")) r.title = *t;
+  if (auto b = boolean(render, "render", "labels")) r.labels = *b;
+  if (auto b = boolean(render, "render", "transparent")) r.transparent = *b;
+  if (auto n = integer(render, "render", "msaa")) {
+    if (*n != 1 && *n != 2 && *n != 4) failAt("render.msaa", fmt::format("expected 1, 2 or 4 samples, got {}", *n));
+    r.msaa = *n;
+  }
+  if (auto a = number(render, "render", "azimuth_deg")) r.azimuthDeg = *a;
+  if (auto e = number(render, "render", "elevation_deg")) {
+    if (!(*e > -90.0 && *e < 90.0))
+      failAt("render.elevation_deg", fmt::format("expected an elevation in (-90, 90) degrees, got {}", *e));
+    r.elevationDeg = *e;
+  }
+  if (auto d = number(render, "render", "distance")) {
+    if (*d <= 0.0) failAt("render.distance", fmt::format("expected a camera distance > 0, got {}", *d));
+    r.distance = *d;
+  }
+  if (auto t = vector(render, "render", "target")) r.target = *t;
+  if (auto f = boolean(render, "render", "follow")) r.follow = *f;
+  if (auto f = number(render, "render", "fov_deg")) {
+    if (!(*f >= 5.0 && *f <= 120.0))
+      failAt("render.fov_deg", fmt::format("expected a vertical field of view in [5, 120] degrees, got {}", *f));
+    r.fovDeg = *f;
+  }
+  if (r.follow && spec_.locations.contains("render.target"))
+    failAt("render.target", "conflicts with render.follow = true (the camera then targets the ball)");
+}
+
 void Reader::forbid(const toml::table* t, const std::string& section, const std::string& key,
                     const std::string& why) {
   if (t == nullptr) return;
@@ -162,7 +233,7 @@ double norm3(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] 
 
 SceneSpec Reader::read() {
   spec_.sourceFile = file_;
-  static const std::set<std::string> kSections{"ball", "surface", "path", "plate", "solver", "timeline"};
+  static const std::set<std::string> kSections{"ball", "surface", "path", "plate", "solver", "timeline", "render"};
   for (auto&& [k, v] : root_) {
     const std::string key(k.str());
     if (!kSections.contains(key)) {
@@ -171,10 +242,19 @@ SceneSpec Reader::read() {
   }
 
   // [ball]
-  const toml::table* ball = section("ball", {"radius"});
+  const toml::table* ball = section("ball", {"radius", "texture", "marker"});
   if (auto r = number(ball, "ball", "radius")) {
     if (*r <= 0.0) failAt("ball.radius", fmt::format("expected a radius > 0, got {}", *r));
     spec_.ball.radius = *r;
+  }
+  if (auto t = anyText(ball, "ball", "texture")) {
+    if (t->empty()) failAt("ball.texture", "expected a PNG or JPG file name, got an empty string");
+    spec_.ball.texture = *t;
+  }
+  if (auto m = vector(ball, "ball", "marker")) {
+    const double len = norm3(*m);
+    if (len < 1e-12) failAt("ball.marker", "expected a non-zero vector (a direction in the ball), got [0, 0, 0]");
+    spec_.ball.marker = Vec3{(*m)[0] / len, (*m)[1] / len, (*m)[2] / len};
   }
   const double R = spec_.ball.radius;
 
@@ -289,8 +369,8 @@ SceneSpec Reader::read() {
                     {"exact", "magnus2", "magnus4", "rk4", "frame4", "cf4", "magnus6", "rk45", "frame6a"}))
     spec_.solver.method = *m;
   if (auto n = integer(solver, "solver", "steps")) {
-    if (*n < 1 || *n > 10'000'000'000LL)
-      failAt("solver.steps", fmt::format("expected an integer in [1, 1e10], got {}", *n));
+    if (*n < 1 || *n > kMaxSolverSteps)
+      failAt("solver.steps", fmt::format("expected an integer in [1, 1e11], got {}", *n));
     spec_.solver.steps = *n;
   }
   if (auto tol = number(solver, "solver", "tolerance")) {
@@ -314,10 +394,12 @@ SceneSpec Reader::read() {
   // [timeline]
   const toml::table* timeline = section("timeline", {"samples"});
   if (auto n = integer(timeline, "timeline", "samples")) {
-    if (*n < 2 || *n > 100'000'000LL)
+    if (*n < 2 || *n > kMaxTimelineSamples)
       failAt("timeline.samples", fmt::format("expected an integer in [2, 1e8], got {}", *n));
     spec_.timeline.samples = *n;
   }
+
+  readRender();
   return spec_;
 }
 

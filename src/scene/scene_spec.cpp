@@ -18,4 +18,14 @@ std::string toString(PathKind k) {
   return "?";
 }
 
+std::string toString(RenderLayout l) {
+  switch (l) {
+    case RenderLayout::SideBySide: return "side-by-side";
+    case RenderLayout::Inset: return "inset";
+    case RenderLayout::Ball: return "ball";
+    case RenderLayout::Twin: return "twin";
+  }
+  return "?";
+}
+
 }  // namespace rollspin::scene

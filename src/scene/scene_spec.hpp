@@ -17,6 +17,8 @@ using Vec3 = std::array<double, 3>;
 
 struct BallSpec {
   double radius = 1.0;  // R
+  std::string texture;  // equirectangular PNG/JPG (relative to the scene file); "" = built-in tennis ball
+  std::optional<Vec3> marker;  // body point whose direction is the tracked Bloch vector; default: the top n(0)
 };
 
 enum class SurfaceKind { Plane, Sphere };
@@ -45,6 +47,10 @@ struct PlateSpec {
   double radius = 0.0;  // R1: radius of the circle each plate point describes
 };
 
+// Limits (README, "Limits and errors").
+inline constexpr long long kMaxSolverSteps = 100'000'000'000LL;  // ~10 min of magnus4
+inline constexpr long long kMaxTimelineSamples = 100'000'000LL;
+
 struct SolverSpec {
   std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4 | frame4 | cf4 | magnus6 | rk45 | frame6a
   std::optional<long long> steps;  // default: automatic (see README)
@@ -56,6 +62,27 @@ struct TimelineSpec {
   std::optional<long long> samples;  // default: 60 per turn (+1)
 };
 
+enum class RenderLayout { SideBySide, Inset, Ball, Twin };
+
+// [render]: stills and frames. Camera: orbit about `target` (default: the
+// path's centre) at `distance` (default: frames the whole path), or `follow`.
+struct RenderSpec {
+  long long width = 1280;
+  long long height = 720;
+  RenderLayout layout = RenderLayout::SideBySide;
+  long long strobe = 0;  // > 1: the ball at N evenly spaced positions in one image
+  std::string title;     // "" = no title
+  bool labels = true;    // axis, pole and live labels (s, angles)
+  bool transparent = false;
+  long long msaa = 4;    // 1 | 2 | 4
+  double azimuthDeg = -60.0;
+  double elevationDeg = 28.0;
+  std::optional<double> distance;
+  std::optional<Vec3> target;
+  bool follow = false;
+  double fovDeg = 32.0;
+};
+
 struct SceneSpec {
   std::string sourceFile;  // the scene file ("" when built in code)
   std::string name;        // file stem, e.g. "lollipop"
@@ -65,6 +92,7 @@ struct SceneSpec {
   std::optional<PlateSpec> plate;  // [plate] present: Brockett's upper plate
   SolverSpec solver;
   TimelineSpec timeline;
+  RenderSpec render;
 
   // Where a dotted key ("ball.radius") was set; the file (no line) when the
   // key took its default.
@@ -74,5 +102,6 @@ struct SceneSpec {
 
 [[nodiscard]] std::string toString(SurfaceKind k);
 [[nodiscard]] std::string toString(PathKind k);
+[[nodiscard]] std::string toString(RenderLayout l);
 
 }  // namespace rollspin::scene

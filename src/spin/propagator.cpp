@@ -181,7 +181,7 @@ Su2 orderedProduct(Su2* e, std::size_t m) {
 }
 }  // namespace
 
-SolveStats Propagator::run(std::span<const double> sampleS, const SampleSink& sink) const {
+SolveStats Propagator::run(const SampleArcLengths& sampleS, const SampleSink& sink) const {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   SolveStats stats;
@@ -329,6 +329,14 @@ SolveStats Propagator::run(std::span<const double> sampleS, const SampleSink& si
   }
   stats.final = u;
   return finish(SolveStatus::Ok);
+}
+
+SampleArcLengths SampleArcLengths::uniform(double length, std::size_t count) {
+  SampleArcLengths grid;
+  grid.uniform_ = true;
+  grid.count_ = std::max<std::size_t>(count, 2);
+  grid.length_ = length;
+  return grid;
 }
 
 std::vector<double> uniformSamples(double length, std::size_t count) {

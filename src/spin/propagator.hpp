@@ -76,6 +76,31 @@ struct SolveStats {
   Su2 final;                    // U(L)
 };
 
+// The arc lengths at which a run reports U: an explicit non-decreasing list,
+// or a uniform grid s_j = j L/(count − 1) generated on the fly, so a
+// timeline of 1e8 rows needs no 800 MB array.
+class SampleArcLengths {
+ public:
+  SampleArcLengths() = default;
+  SampleArcLengths(std::span<const double> explicitS) : explicit_(explicitS), count_(explicitS.size()) {}
+  SampleArcLengths(const std::vector<double>& explicitS) : SampleArcLengths(std::span<const double>(explicitS)) {}
+  // count ≥ 2 points from 0 to length inclusive (the last is exactly length).
+  [[nodiscard]] static SampleArcLengths uniform(double length, std::size_t count);
+
+  [[nodiscard]] std::size_t size() const { return count_; }
+  [[nodiscard]] bool empty() const { return count_ == 0; }
+  [[nodiscard]] double operator[](std::size_t j) const {
+    if (!uniform_) return explicit_[j];
+    return j + 1 == count_ ? length_ : length_ * static_cast<double>(j) / static_cast<double>(count_ - 1);
+  }
+
+ private:
+  std::span<const double> explicit_;
+  std::size_t count_ = 0;
+  bool uniform_ = false;
+  double length_ = 0.0;
+};
+
 // Called once per requested sample, in order: (sample index, s, U(s)).
 using SampleSink = std::function<void(std::size_t, double, const Su2&)>;
 
@@ -87,7 +112,7 @@ class Propagator {
 
   // Marches [0, L] once and reports U at every s of sampleS (non-decreasing,
   // inside [0, L]). Also returns U(L) and the unitarity error.
-  [[nodiscard]] SolveStats run(std::span<const double> sampleS, const SampleSink& sink) const;
+  [[nodiscard]] SolveStats run(const SampleArcLengths& sampleS, const SampleSink& sink) const;
   // U(L) only.
   [[nodiscard]] SolveStats solveFinal() const { return run({}, {}); }
 

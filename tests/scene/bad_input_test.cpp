@@ -50,7 +50,7 @@ const BadCase kCases[] = {
     {"line with turns", "[path]\nkind = \"line\"\nturns = 2\n", {}, "path.turns", ":3:", "circle or parallel"},
     {"radius on a plane", "[surface]\nradius = 2\n", {}, "surface.radius", ":2:", "sphere"},
     {"unknown method", "[solver]\nmethod = \"euler\"\n", {}, "solver.method", ":2:", "\"magnus4\""},
-    {"zero steps", "[solver]\nsteps = 0\n", {}, "solver.steps", ":2:", "[1, 1e10]"},
+    {"zero steps", "[solver]\nsteps = 0\n", {}, "solver.steps", ":2:", "[1, 1e11]"},
     {"fractional steps", "[solver]\nsteps = 1.5\n", {}, "solver.steps", ":2:", "integer"},
     {"one sample", "[timeline]\nsamples = 1\n", {}, "timeline.samples", ":2:", "[2, 1e8]"},
     {"plate without radius", "[plate]\n", {}, "plate.radius", ":1:", "missing"},

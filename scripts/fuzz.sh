@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets with clang (ASan + UBSan + coverage) into
+# build-fuzz/ and runs each for FUZZ_SECONDS (default 60) from a seed corpus
+# (scenes/ for the scene loader, tests/fuzz/seeds/expression for the
+# expression parser). A crash leaves its input in build-fuzz/artifacts/ and
+# fails the script: turn it into a regression test.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${FUZZ_SECONDS:-60}
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DROLLSPIN_FUZZ=ON \
+  -DROLLSPIN_BUILD_TESTS=OFF -DROLLSPIN_BUILD_BENCHMARKS=OFF >/dev/null
+cmake --build build-fuzz -j2 --target fuzz_scene fuzz_expression
+mkdir -p build-fuzz/artifacts build-fuzz/corpus/scene build-fuzz/corpus/expression
+cp scenes/*.toml build-fuzz/corpus/scene/
+cp tests/fuzz/seeds/expression/* build-fuzz/corpus/expression/
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+for target in scene expression; do
+  echo "fuzz: $target for ${seconds}s"
+  ./build-fuzz/tests/fuzz/fuzz_$target build-fuzz/corpus/$target -max_total_time="$seconds" -timeout=10 \
+    -rss_limit_mb=2048 -max_len=4096 -artifact_prefix=build-fuzz/artifacts/$target- -print_final_stats=1 \
+    2>&1 | tail -n 12
+done

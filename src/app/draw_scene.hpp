@@ -1,0 +1,72 @@
+// SceneDrawer — turns (scene, model, orientation samples) into a DrawList:
+// the textured ball at its centre C(s) oriented by worldFromBody = R(U(s)),
+// the surface, the contact path (travelled part highlighted), Brockett's
+// glass plate, and the Bloch-sphere twin with the Bloch vector of the marker
+// X(s) = Q(s) X(0), the field direction B/|B| and their trails. Only what
+// the layout shows is built. It never runs the solver: the caller passes the
+// orientations (FrameOrientations) it computed.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "app/scene_model.hpp"
+#include "render/draw_list.hpp"
+#include "scene/scene_spec.hpp"
+#include "spin/su2.hpp"
+
+namespace rollspin::app {
+
+struct OrientedSample {
+  double s = 0.0;
+  spin::Su2 q;  // U(s): worldFromBody
+};
+
+// Everything time-dependent one image needs.
+struct FrameOrientations {
+  OrientedSample current;              // the ball (and the twin's arrows) at s
+  std::vector<OrientedSample> trail;   // U on [0, s], increasing s, for the Bloch trail
+  std::vector<OrientedSample> strobe;  // render.strobe > 1: the extra ball positions
+};
+
+// Arc lengths the solver must report for a still at `s`: the trail samples
+// and the strobe positions (sorted, unique, inside [0, L]).
+struct FrameSampling {
+  std::vector<double> trail;
+  std::vector<double> strobe;
+};
+[[nodiscard]] FrameSampling frameSampling(const scene::SceneSpec& spec, const RollingModel& model, double s);
+
+class SceneDrawer {
+ public:
+  // `ballTexture` null: the built-in tennis ball. Meshes are built once here
+  // and shared by every frame.
+  SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model,
+              std::shared_ptr<const render::TextureImage> ballTexture);
+
+  [[nodiscard]] render::DrawList draw(const FrameOrientations& frame) const;
+
+  // The marker's body direction X(0) (unit).
+  [[nodiscard]] const geometry::Vec3& markerBody() const { return markerBody_; }
+
+ private:
+  void addBallView(render::DrawList& list, const FrameOrientations& frame, int view) const;
+  void addTwinView(render::DrawList& list, const FrameOrientations& frame, int view) const;
+  render::View ballCamera(const render::DrawList& list, int x, int y, int w, int h, double s) const;
+
+  const scene::SceneSpec& spec_;
+  const RollingModel& model_;
+  geometry::Vec3 markerBody_;
+  std::vector<geometry::Vec3> pathPoints_;  // dense samples of P(s)
+  std::vector<double> pathS_;
+  geometry::Vec3 frameCentre_ = geometry::Vec3::Zero();  // shadow-map centre
+  double frameRadius_ = 1.0;                             // bounding radius of all that moves
+  std::vector<geometry::Vec3> framePoints_;  // the default camera keeps these (padded by R) in view
+  std::shared_ptr<const render::TextureImage> ballTexture_;
+  std::shared_ptr<render::MeshData> sphereMesh_, surfaceMesh_, blochSphereMesh_, discMesh_;
+  render::Material surfaceMaterial_;
+  glm::mat4 surfaceFromModel_{1.0f};
+  geometry::Vec3 plateCircleCentre_ = geometry::Vec3::Zero();
+};
+
+}  // namespace rollspin::app

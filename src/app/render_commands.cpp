@@ -1,0 +1,88 @@
+// `rollspin render SCENE --still ...` and `rollspin compare A.png B.png ...`.
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <memory>
+
+#include "app/commands.hpp"
+#include "app/render_jobs.hpp"
+#include "media/image_compare.hpp"
+#include "media/image_io.hpp"
+
+namespace rollspin::app {
+
+namespace {
+
+struct RenderCliOptions {
+  StillOptions still;
+  bool stillFlag = false;
+  std::string at, output, shaderDir;
+  long long width = 0, height = 0;
+};
+
+int runRender(RenderCliOptions& o, const CLI::App& command) {
+  if (!o.stillFlag)
+    throw badInput({"render"}, "only stills are implemented: pass --still (video output comes with the encoder)");
+  if (command.count("--at") > 0) o.still.at = o.at;
+  if (command.count("--width") > 0) o.still.width = o.width;
+  if (command.count("--height") > 0) o.still.height = o.height;
+  o.still.output = o.output;
+  o.still.shaderDir = o.shaderDir;
+  const auto written = renderStill(o.still);
+  std::fprintf(stderr, "rollspin: wrote %s\n", written.string().c_str());
+  return 0;
+}
+
+struct CompareOptions {
+  std::string a, b, diff;
+  double maxDelta = 0.0, meanDelta = 0.0;
+};
+
+int runCompare(const CompareOptions& o) {
+  const media::Image a = media::loadImage(o.a, SourceLoc{o.a});
+  const media::Image b = media::loadImage(o.b, SourceLoc{o.b});
+  if (a.width != b.width || a.height != b.height) {
+    fmt::print("size mismatch: {}x{} vs {}x{}\n", a.width, a.height, b.width, b.height);
+    return 1;
+  }
+  const media::ImageDifference d = media::compareImages(a.view(), b.view());
+  fmt::print("max delta       R {} G {} B {} A {}  (overall {})\n", d.maxDelta[0], d.maxDelta[1], d.maxDelta[2],
+             d.maxDelta[3], d.maxOverall());
+  fmt::print("mean delta      R {:.4f} G {:.4f} B {:.4f} A {:.4f}  (overall {:.4f})\n", d.meanDelta[0], d.meanDelta[1],
+             d.meanDelta[2], d.meanDelta[3], d.meanOverall());
+  fmt::print("differing px    {} of {}\n", d.differingPixels, std::int64_t{a.width} * a.height);
+  if (!o.diff.empty()) media::writePng(o.diff, media::differenceHeatMap(a.view(), b.view()).view());
+  const bool within = d.maxOverall() <= o.maxDelta && d.meanOverall() <= o.meanDelta;
+  fmt::print("{}\n", within ? "within tolerance" : "DIFFERENT");
+  return within ? 0 : 1;
+}
+
+}  // namespace
+
+void registerRenderCommands(CLI::App& cli, CommandHandler& handler) {
+  auto options = std::make_shared<RenderCliOptions>();
+  CLI::App* render = cli.add_subcommand("render", "Render a scene: a still PNG (--still)");
+  render->add_option("scene", options->still.scenePath, "Scene file (TOML)")->required();
+  render->add_flag("--still", options->stillFlag, "Render one still image");
+  render->add_option("--at", options->at, "Where: s=ARC_LENGTH or fraction=F (default: fraction=0.5)");
+  render->add_option("-o,--output", options->output, "Output PNG (default: output/<scene>.png)");
+  render->add_option("--width", options->width, "Image width in pixels (1..8192)");
+  render->add_option("--height", options->height, "Image height in pixels (1..8192)");
+  render->add_flag("--transparent", options->still.transparent, "RGBA PNG without background");
+  render->add_option("--set", options->still.overrides, "Override a scene key: --set key.sub=value (repeatable)");
+  render->add_option("--shader-dir", options->shaderDir, "Read shaders from this folder instead of the built-in copies");
+  render->callback([options, render, &handler] {
+    handler = [options, render] { return runRender(*options, *render); };
+  });
+
+  auto compare = std::make_shared<CompareOptions>();
+  CLI::App* cmp = cli.add_subcommand("compare", "Compare two images (exit 0 within tolerance, 1 not, 2 bad input)");
+  cmp->add_option("a", compare->a, "First image (PNG/JPG)")->required();
+  cmp->add_option("b", compare->b, "Second image (PNG/JPG)")->required();
+  cmp->add_option("--max-delta", compare->maxDelta, "Largest allowed per-channel difference (0-255, default 0)");
+  cmp->add_option("--mean-delta", compare->meanDelta, "Largest allowed mean per-channel difference (default 0)");
+  cmp->add_option("--diff", compare->diff, "Write a heat map of the difference (PNG)");
+  cmp->callback([compare, &handler] { handler = [compare] { return runCompare(*compare); }; });
+}
+
+}  // namespace rollspin::app

@@ -1,0 +1,119 @@
+#include "app/render_jobs.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+#include "app/solve_job.hpp"
+#include "media/image_io.hpp"
+#include "render/gl_context.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace rollspin::app {
+
+ArcPosition parseArcPosition(const std::string& text) {
+  const SourceLoc loc{"--at " + text};
+  const auto eq = text.find('=');
+  const std::string key = eq == std::string::npos ? "" : text.substr(0, eq);
+  const std::string value = eq == std::string::npos ? "" : text.substr(eq + 1);
+  ArcPosition at;
+  if (key == "s") at.kind = ArcPosition::Kind::ArcLength;
+  else if (key == "fraction") at.kind = ArcPosition::Kind::Fraction;
+  else throw badInput(loc, "expected --at s=VALUE or --at fraction=F (e.g. --at fraction=0.5)");
+  const char* first = value.data();
+  const char* last = value.data() + value.size();
+  const auto [ptr, ec] = std::from_chars(first, last, at.value);
+  if (value.empty() || ec != std::errc() || ptr != last || !std::isfinite(at.value))
+    throw badInput(loc, "'{}' is not a number", value);
+  return at;
+}
+
+double resolveArcPosition(const ArcPosition& at, double length, const std::string& argument) {
+  const SourceLoc loc{"--at " + argument};
+  if (at.kind == ArcPosition::Kind::Fraction) {
+    if (at.value < 0.0 || at.value > 1.0) throw badInput(loc, "fraction: expected a value in [0, 1], got {}", at.value);
+    return at.value * length;
+  }
+  if (at.value < 0.0 || at.value > length * (1.0 + 1e-12))
+    throw badInput(loc, "s: expected an arc length in [0, {}] (the path's length), got {}", length, at.value);
+  return std::min(at.value, length);
+}
+
+FrameOrientations solveFrame(const scene::SceneSpec& spec, const RollingModel& model, double s) {
+  const FrameSampling sampling = frameSampling(spec, model, s);
+  std::vector<double> all = sampling.trail;
+  all.insert(all.end(), sampling.strobe.begin(), sampling.strobe.end());
+  all.push_back(s);
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  std::vector<spin::Su2> orientation(all.size());
+  const SolverChoice choice = chooseSolver(spec, model);
+  const spin::Propagator propagator(*model.path, model.ballRadius, choice.method, choice.steps);
+  const spin::SolveStats stats =
+      propagator.run(all, [&](std::size_t i, double, const spin::Su2& q) { orientation[i] = q; });
+  if (stats.status != spin::SolveStatus::Ok)
+    throw runtimeError(spec.where("solver.method"), "solver failed: {}", spin::statusMessage(stats.status));
+  auto lookup = [&](double x) {
+    const auto it = std::lower_bound(all.begin(), all.end(), x);
+    return OrientedSample{x, orientation[static_cast<std::size_t>(it - all.begin())]};
+  };
+  FrameOrientations frame;
+  frame.current = lookup(s);
+  for (double x : sampling.trail) frame.trail.push_back(lookup(x));
+  for (double x : sampling.strobe) frame.strobe.push_back(lookup(x));
+  return frame;
+}
+
+std::shared_ptr<const render::TextureImage> loadBallTexture(const scene::SceneSpec& spec) {
+  if (spec.ball.texture.empty()) return nullptr;
+  const SourceLoc where = spec.where("ball.texture");
+  std::filesystem::path file = spec.ball.texture;
+  const bool fromCommandLine = where.file.rfind("--set", 0) == 0;
+  if (file.is_relative() && !fromCommandLine && !spec.sourceFile.empty())
+    file = std::filesystem::path(spec.sourceFile).parent_path() / file;
+  media::Image image = media::loadImage(file, where);
+  if (image.width > 16384 || image.height > 16384)
+    throw badInput(where, "ball.texture: {}x{} is larger than the 16384 px a texture may have", image.width, image.height);
+  auto texture = std::make_shared<render::TextureImage>();
+  texture->width = image.width;
+  texture->height = image.height;
+  texture->rgba = std::move(image.rgba);
+  return texture;
+}
+
+std::filesystem::path renderStill(const StillOptions& o) {
+  for (const auto& [flag, value] : {std::pair{"--width", o.width}, std::pair{"--height", o.height}})
+    if (value && (*value < 1 || *value > 8192))
+      throw badInput({flag}, "expected an image size in [1, 8192] pixels, got {}", *value);
+  std::vector<std::string> overrides = o.overrides;
+  // Command-line sizes go through the scene validation like --set does.
+  if (o.width) overrides.push_back("render.width=" + std::to_string(*o.width));
+  if (o.height) overrides.push_back("render.height=" + std::to_string(*o.height));
+  if (o.transparent) overrides.push_back("render.transparent=true");
+  const scene::SceneSpec spec = scene::loadSceneFile(o.scenePath, overrides);
+  const RollingModel model = buildModel(spec);
+  const double length = model.path->length();
+  double s = spec.render.strobe > 1 ? length : 0.5 * length;
+  if (o.at) s = resolveArcPosition(parseArcPosition(*o.at), length, *o.at);
+  const auto texture = spec.render.layout == scene::RenderLayout::Twin ? nullptr : loadBallTexture(spec);
+
+  std::filesystem::path out = o.output;
+  if (out.empty()) {
+    std::filesystem::create_directories("output");
+    out = std::filesystem::path("output") / (spec.name + ".png");
+  }
+  const FrameOrientations frame = solveFrame(spec, model, s);
+  const SceneDrawer drawer(spec, model, texture);
+  const render::DrawList list = drawer.draw(frame);
+
+  const auto context = render::createOsMesaContext();
+  const render::ShaderLibrary shaders(o.shaderDir);
+  render::Renderer renderer(*context, shaders);
+  const media::Image image = renderer.render(list);
+  media::writePng(out, image.view(), list.transparent ? media::PngChannels::Rgba : media::PngChannels::Rgb);
+  return out;
+}
+
+}  // namespace rollspin::app

@@ -1,0 +1,50 @@
+// Render jobs: a still image of a scene at one arc length, from scene file to
+// PNG. Kept apart from the CLI so tests and benchmarks can call it; the GL
+// context is created here and nowhere on the solve/timeline path.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/draw_scene.hpp"
+#include "app/scene_model.hpp"
+#include "media/image_view.hpp"
+#include "render/draw_list.hpp"
+#include "scene/scene_spec.hpp"
+
+namespace rollspin::app {
+
+// Where along the path: `--at s=VALUE` or `--at fraction=F`.
+struct ArcPosition {
+  enum class Kind { ArcLength, Fraction } kind = Kind::Fraction;
+  double value = 0.5;
+};
+// Parses "s=1.5" / "fraction=0.25"; throws BadInput naming the argument.
+[[nodiscard]] ArcPosition parseArcPosition(const std::string& text);
+// The arc length in [0, L]; throws BadInput when outside.
+[[nodiscard]] double resolveArcPosition(const ArcPosition& at, double length, const std::string& argument);
+
+// Runs the propagator once for the frame's arc lengths (trail, strobe, s).
+[[nodiscard]] FrameOrientations solveFrame(const scene::SceneSpec& spec, const RollingModel& model, double s);
+
+// The ball texture named by ball.texture (resolved against the scene file's
+// folder, or the working directory for --set), or null for the built-in one.
+// A missing or corrupt file is BadInput at ball.texture.
+[[nodiscard]] std::shared_ptr<const render::TextureImage> loadBallTexture(const scene::SceneSpec& spec);
+
+struct StillOptions {
+  std::string scenePath;
+  std::vector<std::string> overrides;
+  std::optional<std::string> at;  // "s=..." | "fraction=..."; default: middle (end for a strobe)
+  std::filesystem::path output;   // default output/<scene>.png
+  std::optional<long long> width, height;
+  bool transparent = false;
+  std::filesystem::path shaderDir;
+};
+
+// Renders one still and writes it; returns the path written.
+std::filesystem::path renderStill(const StillOptions& options);
+
+}  // namespace rollspin::app

@@ -1,0 +1,136 @@
+// DrawList — everything one image shows, as plain data: meshes with model
+// matrices and materials, arrows, polylines and text labels, grouped into
+// views (rectangles of the image, each with its camera and light). The
+// renderer draws it and knows nothing of rolling or spinors; app/ fills it
+// (the way MuJoCo's mjv_updateScene fills an abstract scene). Colours are
+// linear RGB in [0, 1]; the renderer encodes sRGB on output.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rollspin::render {
+
+struct Vertex {
+  glm::vec3 position{0.0f};
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};
+  glm::vec2 uv{0.0f};
+};
+
+struct MeshData {
+  std::vector<Vertex> vertices;
+  std::vector<std::uint32_t> indices;  // triangles
+};
+
+// RGBA8 texture, top row first, sRGB-encoded colours (decoded on sampling).
+struct TextureImage {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgba;
+};
+
+enum class Pattern { Plain, Checker, Texture };
+enum class Cull { Back, Front, None };
+
+struct Material {
+  glm::vec3 color{0.8f};
+  glm::vec3 color2{0.6f};  // Checker: the second colour
+  float opacity = 1.0f;    // < 1: drawn after opaque items, sorted far to near
+  float specular = 0.25f;
+  float shininess = 48.0f;
+  Pattern pattern = Pattern::Plain;
+  glm::vec2 patternScale{1.0f};  // Checker: cells per unit of uv
+  std::shared_ptr<const TextureImage> texture;  // Pattern::Texture
+  bool lit = true;
+  bool castsShadow = true;
+  bool receivesShadow = true;
+  Cull cull = Cull::Back;
+};
+
+struct MeshItem {
+  std::shared_ptr<const MeshData> mesh;
+  glm::mat4 worldFromModel{1.0f};
+  Material material;
+  int view = 0;
+};
+
+// A solid arrow (cylinder + cone) from origin to tip.
+struct ArrowItem {
+  glm::vec3 origin{0.0f};
+  glm::vec3 tip{0.0f, 0.0f, 1.0f};
+  float shaftRadius = 0.02f;
+  glm::vec3 color{0.8f, 0.1f, 0.1f};
+  int view = 0;
+};
+
+// A polyline of constant width in pixels (drawn as screen-space quads).
+struct PolylineItem {
+  std::vector<glm::vec3> points;
+  glm::vec4 color{0.0f, 0.0f, 0.0f, 1.0f};
+  float widthPx = 2.0f;
+  bool depthTested = true;
+  int view = 0;
+};
+
+enum class Align { Left, Center, Right };
+
+// Text in UTF-8. view < 0: `anchor.xy` is in image pixels (top-left origin).
+// view >= 0 with worldAnchored: `anchor` is a world point projected by that
+// view's camera; otherwise anchor.xy is in the view's pixels.
+struct LabelItem {
+  std::string text;
+  glm::vec3 anchor{0.0f};
+  bool worldAnchored = false;
+  glm::vec2 offsetPx{0.0f};  // added after projection; +y is down
+  float sizePx = 16.0f;
+  glm::vec4 color{0.0f, 0.0f, 0.0f, 1.0f};
+  Align align = Align::Left;
+  bool bold = false;
+  int view = -1;
+};
+
+struct Camera {
+  glm::mat4 viewFromWorld{1.0f};
+  glm::mat4 clipFromView{1.0f};
+  glm::vec3 position{0.0f, 0.0f, 1.0f};
+};
+
+// One directional key light with an optional shadow map that covers the
+// sphere (shadowCenter, shadowRadius), plus hemispheric ambient fill.
+struct Light {
+  glm::vec3 towardLight = glm::normalize(glm::vec3(0.4f, -0.3f, 1.0f));
+  glm::vec3 color{1.0f};
+  float ambient = 0.35f;
+  bool shadow = true;
+  glm::vec3 shadowCenter{0.0f};
+  float shadowRadius = 10.0f;
+  float shadowSoftnessTexels = 2.5f;  // PCF radius: a soft key light
+};
+
+struct View {
+  int x = 0, y = 0, width = 0, height = 0;  // pixels, top-left origin
+  Camera camera;
+  Light light;
+  bool background = true;  // gradient; off for transparent output
+  glm::vec3 backgroundTop{0.30f, 0.38f, 0.50f};     // linear RGB: a soft slate-blue sky
+  glm::vec3 backgroundBottom{0.82f, 0.84f, 0.87f};  // that lightens towards the horizon
+  bool frame = false;  // thin border (an inset)
+};
+
+struct DrawList {
+  int width = 1280;
+  int height = 720;
+  int msaaSamples = 4;       // 1 disables multisampling
+  bool transparent = false;  // alpha 0 where nothing is drawn; PNG keeps alpha
+  std::vector<View> views;
+  std::vector<MeshItem> meshes;
+  std::vector<ArrowItem> arrows;
+  std::vector<PolylineItem> polylines;
+  std::vector<LabelItem> labels;
+};
+
+}  // namespace rollspin::render

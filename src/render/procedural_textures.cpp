@@ -1,0 +1,53 @@
+#include "render/procedural_textures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace rollspin::render {
+
+std::shared_ptr<const TextureImage> tennisBallTexture(int width) {
+  const int height = width / 2;
+  // The classic seam: (a cos t + b cos 3t, a sin t − b sin 3t, 2√(ab) sin 2t)
+  // has constant norm a + b = 1 — a closed curve on the unit sphere that
+  // splits it into two congruent lobes.
+  constexpr double a = 0.72, b = 0.28;
+  const double c = 2.0 * std::sqrt(a * b);
+  constexpr int kSeamSamples = 720;
+  std::vector<glm::dvec3> seam;
+  for (int k = 0; k < kSeamSamples; ++k) {
+    const double t = 2.0 * std::numbers::pi * k / kSeamSamples;
+    seam.emplace_back(a * std::cos(t) + b * std::cos(3 * t), a * std::sin(t) - b * std::sin(3 * t), c * std::sin(2 * t));
+  }
+  auto tex = std::make_shared<TextureImage>();
+  tex->width = width;
+  tex->height = height;
+  tex->rgba.resize(static_cast<std::size_t>(width) * height * 4);
+  constexpr double kSeamHalfWidth = 0.045;  // radians on the unit sphere
+  for (int y = 0; y < height; ++y) {
+    const double theta = std::numbers::pi * (y + 0.5) / height;
+    for (int x = 0; x < width; ++x) {
+      const double phi = 2.0 * std::numbers::pi * (x + 0.5) / width - std::numbers::pi;
+      const glm::dvec3 d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+      double best = -1.0;
+      for (const auto& p : seam) best = std::max(best, glm::dot(d, p));
+      const double dist = std::acos(std::clamp(best, -1.0, 1.0));
+      // Smooth edge over ~1.5 texels; a faint felt nap breaks up the flat colour.
+      const double texel = std::numbers::pi / height;
+      const double seamWeight = std::clamp((kSeamHalfWidth - dist) / (1.5 * texel) + 0.5, 0.0, 1.0);
+      const double felt[3] = {0.80, 0.88, 0.22};
+      const double noise = 0.03 * std::sin(37.0 * phi + 11.0 * theta) * std::sin(53.0 * theta - 7.0 * phi);
+      std::uint8_t* px = &tex->rgba[(static_cast<std::size_t>(y) * width + x) * 4];
+      for (int ch = 0; ch < 3; ++ch) {
+        const double white = ch == 2 ? 0.92 : 0.97;
+        const double v = (1.0 - seamWeight) * (felt[ch] + noise) + seamWeight * white;
+        px[ch] = static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(v, 0.0, 1.0)));
+      }
+      px[3] = 255;
+    }
+  }
+  return tex;
+}
+
+}  // namespace rollspin::render

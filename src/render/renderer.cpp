@@ -1,0 +1,607 @@
+#include "render/renderer.hpp"
+
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/error.hpp"
+#include "render/font_atlas.hpp"
+#include "render/gl.hpp"
+#include "render/mesh_builders.hpp"
+
+namespace rollspin::render {
+
+namespace {
+
+constexpr int kShadowMapSize = 2048;
+
+GLuint compileShader(GLenum type, const std::string& source, const std::string& name) {
+  const GLuint shader = glCreateShader(type);
+  const char* text = source.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    std::string log(4096, '\0');
+    GLsizei len = 0;
+    glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), &len, log.data());
+    log.resize(static_cast<std::size_t>(len));
+    glDeleteShader(shader);
+    throw runtimeError({name}, "shader compilation failed:\n{}", log);
+  }
+  return shader;
+}
+
+// A linked program with a uniform-location cache.
+class Program {
+ public:
+  Program() = default;
+  Program(const ShaderLibrary& lib, const std::string& vert, const std::string& frag, const std::string& geom = {}) {
+    id_ = glCreateProgram();
+    std::vector<GLuint> shaders{compileShader(GL_VERTEX_SHADER, lib.source(vert), vert),
+                                compileShader(GL_FRAGMENT_SHADER, lib.source(frag), frag)};
+    if (!geom.empty()) shaders.push_back(compileShader(GL_GEOMETRY_SHADER, lib.source(geom), geom));
+    for (GLuint s : shaders) glAttachShader(id_, s);
+    glLinkProgram(id_);
+    for (GLuint s : shaders) glDeleteShader(s);
+    GLint ok = 0;
+    glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+    if (!ok) {
+      std::string log(4096, '\0');
+      GLsizei len = 0;
+      glGetProgramInfoLog(id_, static_cast<GLsizei>(log.size()), &len, log.data());
+      log.resize(static_cast<std::size_t>(len));
+      throw runtimeError({vert + " + " + frag}, "shader link failed:\n{}", log);
+    }
+  }
+  void use() const { glUseProgram(id_); }
+  GLint at(const char* name) {
+    auto it = locations_.find(name);
+    if (it == locations_.end()) it = locations_.emplace(name, glGetUniformLocation(id_, name)).first;
+    return it->second;
+  }
+  void set(const char* n, const glm::mat4& m) { glUniformMatrix4fv(at(n), 1, GL_FALSE, glm::value_ptr(m)); }
+  void set(const char* n, const glm::mat3& m) { glUniformMatrix3fv(at(n), 1, GL_FALSE, glm::value_ptr(m)); }
+  void set(const char* n, const glm::vec4& v) { glUniform4fv(at(n), 1, glm::value_ptr(v)); }
+  void set(const char* n, const glm::vec3& v) { glUniform3fv(at(n), 1, glm::value_ptr(v)); }
+  void set(const char* n, const glm::vec2& v) { glUniform2fv(at(n), 1, glm::value_ptr(v)); }
+  void set(const char* n, float v) { glUniform1f(at(n), v); }
+  void set(const char* n, int v) { glUniform1i(at(n), v); }
+  void release() {
+    if (id_ != 0) glDeleteProgram(id_);
+    id_ = 0;
+  }
+
+ private:
+  GLuint id_ = 0;
+  std::map<std::string, GLint> locations_;
+};
+
+struct GpuMesh {
+  GLuint vao = 0, vbo = 0, ebo = 0;
+  GLsizei indexCount = 0;
+};
+
+GpuMesh upload(const MeshData& m) {
+  GpuMesh g;
+  glGenVertexArrays(1, &g.vao);
+  glGenBuffers(1, &g.vbo);
+  glGenBuffers(1, &g.ebo);
+  glBindVertexArray(g.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, g.vbo);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(m.vertices.size() * sizeof(Vertex)), m.vertices.data(),
+               GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.ebo);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(m.indices.size() * sizeof(std::uint32_t)),
+               m.indices.data(), GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, position)));
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, uv)));
+  glBindVertexArray(0);
+  g.indexCount = static_cast<GLsizei>(m.indices.size());
+  return g;
+}
+
+void release(GpuMesh& g) {
+  glDeleteBuffers(1, &g.vbo);
+  glDeleteBuffers(1, &g.ebo);
+  glDeleteVertexArrays(1, &g.vao);
+  g = {};
+}
+
+// worldFromModel for a unit z-aligned primitive stretched from a to b.
+glm::mat4 alongSegment(const glm::vec3& a, const glm::vec3& b, float radius) {
+  const glm::vec3 d = b - a;
+  const float len = glm::length(d);
+  const glm::vec3 z = len > 0.0f ? d / len : glm::vec3(0, 0, 1);
+  const glm::vec3 helper = std::abs(z.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
+  const glm::vec3 x = glm::normalize(glm::cross(helper, z));
+  const glm::vec3 y = glm::cross(z, x);
+  glm::mat4 m(1.0f);
+  m[0] = glm::vec4(x * radius, 0.0f);
+  m[1] = glm::vec4(y * radius, 0.0f);
+  m[2] = glm::vec4(d, 0.0f);
+  m[3] = glm::vec4(a, 1.0f);
+  return m;
+}
+
+}  // namespace
+
+struct Renderer::Impl {
+  Program mesh, shadow, line, text, background;
+  GLuint emptyVao = 0;
+  GLuint streamVao = 0, streamVbo = 0;  // polylines (vec3)
+  GLuint textVao = 0, textVbo = 0;      // glyph quads (vec2 pixel, vec2 uv)
+  GLuint shadowFbo = 0, shadowTexture = 0;
+  GLuint msaaFbo = 0, msaaColor = 0, msaaDepth = 0;
+  GLuint resolveFbo = 0, resolveColor = 0, resolveDepth = 0;
+  int fbWidth = 0, fbHeight = 0, fbSamples = 0;
+
+  struct CachedMesh {
+    std::shared_ptr<const MeshData> keepAlive;
+    GpuMesh gpu;
+    bool used = false;  // by the current frame; unused entries are evicted after it
+  };
+  std::map<const MeshData*, CachedMesh> meshes;
+  struct CachedTexture {
+    std::shared_ptr<const TextureImage> keepAlive;
+    GLuint id = 0;
+  };
+  std::map<const TextureImage*, CachedTexture> textures;
+  struct CachedFont {
+    std::unique_ptr<FontAtlas> atlas;
+    GLuint id = 0;
+  };
+  std::map<std::pair<int, bool>, CachedFont> fonts;
+  std::shared_ptr<MeshData> cylinder = unitCylinder(24), cone = unitCone(32);
+
+  explicit Impl(const ShaderLibrary& lib)
+      : mesh(lib, "mesh.vert", "mesh.frag"),
+        shadow(lib, "shadow.vert", "shadow.frag"),
+        line(lib, "line.vert", "line.frag", "line.geom"),
+        text(lib, "text.vert", "text.frag"),
+        background(lib, "background.vert", "background.frag") {
+    glGenVertexArrays(1, &emptyVao);
+    glGenVertexArrays(1, &streamVao);
+    glGenBuffers(1, &streamVbo);
+    glBindVertexArray(streamVao);
+    glBindBuffer(GL_ARRAY_BUFFER, streamVbo);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    glGenVertexArrays(1, &textVao);
+    glGenBuffers(1, &textVbo);
+    glBindVertexArray(textVao);
+    glBindBuffer(GL_ARRAY_BUFFER, textVbo);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 4 * sizeof(float), reinterpret_cast<void*>(2 * sizeof(float)));
+    glBindVertexArray(0);
+
+    // Depth texture with hardware comparison: sampler2DShadow does the test.
+    glGenTextures(1, &shadowTexture);
+    glBindTexture(GL_TEXTURE_2D, shadowTexture);
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH_COMPONENT24, kShadowMapSize, kShadowMapSize);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glGenFramebuffers(1, &shadowFbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, shadowFbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, shadowTexture, 0);
+    glDrawBuffer(GL_NONE);
+    glReadBuffer(GL_NONE);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+
+  ~Impl() {
+    for (auto& [k, m] : meshes) release(m.gpu);
+    for (auto& [k, t] : textures) glDeleteTextures(1, &t.id);
+    for (auto& [k, f] : fonts) glDeleteTextures(1, &f.id);
+    releaseFramebuffers();
+    glDeleteFramebuffers(1, &shadowFbo);
+    glDeleteTextures(1, &shadowTexture);
+    glDeleteBuffers(1, &streamVbo);
+    glDeleteBuffers(1, &textVbo);
+    glDeleteVertexArrays(1, &streamVao);
+    glDeleteVertexArrays(1, &textVao);
+    glDeleteVertexArrays(1, &emptyVao);
+    for (Program* p : {&mesh, &shadow, &line, &text, &background}) p->release();
+  }
+
+  void releaseFramebuffers() {
+    GLuint fbos[] = {msaaFbo, resolveFbo};
+    GLuint rbs[] = {msaaColor, msaaDepth, resolveColor, resolveDepth};
+    glDeleteFramebuffers(2, fbos);
+    glDeleteRenderbuffers(4, rbs);
+    msaaFbo = resolveFbo = msaaColor = msaaDepth = resolveColor = resolveDepth = 0;
+  }
+
+  void ensureFramebuffers(int w, int h, int samples) {
+    if (w == fbWidth && h == fbHeight && samples == fbSamples) return;
+    releaseFramebuffers();
+    auto makeTarget = [&](GLuint& fbo, GLuint& color, GLuint& depth, int s) {
+      glGenFramebuffers(1, &fbo);
+      glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+      glGenRenderbuffers(1, &color);
+      glBindRenderbuffer(GL_RENDERBUFFER, color);
+      glRenderbufferStorageMultisample(GL_RENDERBUFFER, s, GL_RGBA8, w, h);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+      glGenRenderbuffers(1, &depth);
+      glBindRenderbuffer(GL_RENDERBUFFER, depth);
+      glRenderbufferStorageMultisample(GL_RENDERBUFFER, s, GL_DEPTH_COMPONENT24, w, h);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw runtimeError({}, "OpenGL could not create a {}x{} framebuffer with {} samples (out of memory?)", w, h, s);
+    };
+    if (samples > 1) makeTarget(msaaFbo, msaaColor, msaaDepth, samples);
+    makeTarget(resolveFbo, resolveColor, resolveDepth, 0);
+    fbWidth = w;
+    fbHeight = h;
+    fbSamples = samples;
+  }
+
+  const GpuMesh& gpuMesh(const std::shared_ptr<const MeshData>& m) {
+    auto it = meshes.find(m.get());
+    if (it == meshes.end()) it = meshes.emplace(m.get(), CachedMesh{m, upload(*m), false}).first;
+    it->second.used = true;
+    return it->second.gpu;
+  }
+
+  GLuint gpuTexture(const std::shared_ptr<const TextureImage>& t) {
+    auto it = textures.find(t.get());
+    if (it != textures.end()) return it->second.id;
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    glBindTexture(GL_TEXTURE_2D, id);
+    const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(t->width, t->height))));
+    glTexStorage2D(GL_TEXTURE_2D, levels, GL_SRGB8_ALPHA8, t->width, t->height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    // Row 0 of the image is v = 0 (the +z pole of an equirectangular map).
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, t->width, t->height, GL_RGBA, GL_UNSIGNED_BYTE, t->rgba.data());
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    textures.emplace(t.get(), CachedTexture{t, id});
+    return id;
+  }
+
+  CachedFont& font(float sizePx, bool bold) {
+    const auto key = std::make_pair(static_cast<int>(std::lround(sizePx)), bold);
+    auto it = fonts.find(key);
+    if (it != fonts.end()) return it->second;
+    CachedFont f;
+    f.atlas = std::make_unique<FontAtlas>(defaultFontFile(bold), static_cast<float>(key.first));
+    glGenTextures(1, &f.id);
+    glBindTexture(GL_TEXTURE_2D, f.id);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, f.atlas->atlasWidth(), f.atlas->atlasHeight(), 0, GL_RED, GL_UNSIGNED_BYTE,
+                 f.atlas->coverage().data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return fonts.emplace(key, std::move(f)).first->second;
+  }
+
+  // Everything a view draws as a lit mesh: its MeshItems plus its arrows.
+  struct Drawable {
+    std::shared_ptr<const MeshData> mesh;
+    glm::mat4 worldFromModel;
+    const Material* material;
+  };
+
+  std::vector<Drawable> drawablesOf(const DrawList& list, int view, std::vector<Material>& arrowMaterials) {
+    std::vector<Drawable> out;
+    for (const MeshItem& m : list.meshes)
+      if (m.view == view && m.mesh) out.push_back({m.mesh, m.worldFromModel, &m.material});
+    for (const ArrowItem& a : list.arrows) {
+      if (a.view != view) continue;
+      const float len = glm::length(a.tip - a.origin);
+      if (len <= 0.0f) continue;
+      const float headLength = std::min(len * 0.35f, a.shaftRadius * 6.0f);
+      const glm::vec3 dir = (a.tip - a.origin) / len;
+      const glm::vec3 neck = a.tip - dir * headLength;
+      Material& mat = arrowMaterials.emplace_back();
+      mat.color = a.color;
+      mat.specular = 0.35f;
+      mat.shininess = 64.0f;
+      out.push_back({cylinder, alongSegment(a.origin, neck, a.shaftRadius), &mat});
+      out.push_back({cone, alongSegment(neck, a.tip, a.shaftRadius * 2.6f), &mat});
+    }
+    return out;
+  }
+
+  glm::mat4 shadowPass(const View& v, const std::vector<Drawable>& items) {
+    const Light& l = v.light;
+    const glm::vec3 toward = glm::normalize(l.towardLight);
+    const glm::vec3 up = std::abs(toward.z) < 0.95f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
+    const float r = l.shadowRadius;
+    const glm::mat4 lightViewFromWorld = glm::lookAt(l.shadowCenter + toward * (2.0f * r), l.shadowCenter, up);
+    const glm::mat4 lightClipFromWorld = glm::ortho(-r, r, -r, r, 0.01f * r, 4.0f * r) * lightViewFromWorld;
+    glBindFramebuffer(GL_FRAMEBUFFER, shadowFbo);
+    glDisable(GL_SCISSOR_TEST);
+    glViewport(0, 0, kShadowMapSize, kShadowMapSize);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.5f, 2.0f);
+    shadow.use();
+    for (const Drawable& d : items) {
+      if (!d.material->castsShadow || d.material->opacity < 0.5f) continue;
+      shadow.set("lightClipFromModel", lightClipFromWorld * d.worldFromModel);
+      const GpuMesh& g = gpuMesh(d.mesh);
+      glBindVertexArray(g.vao);
+      glDrawElements(GL_TRIANGLES, g.indexCount, GL_UNSIGNED_INT, nullptr);
+    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    return lightClipFromWorld;
+  }
+
+  void drawMesh(const View& v, const Drawable& d, bool shadowOn, const glm::mat4& lightClipFromWorld, Cull cull) {
+    const Material& m = *d.material;
+    mesh.set("worldFromModel", d.worldFromModel);
+    mesh.set("normalWorldFromModel", glm::inverseTranspose(glm::mat3(d.worldFromModel)));
+    mesh.set("color", m.color);
+    mesh.set("color2", m.color2);
+    mesh.set("opacity", m.opacity);
+    mesh.set("specular", m.specular);
+    mesh.set("shininess", m.shininess);
+    int pattern = m.pattern == Pattern::Checker ? 1 : 0;
+    if (m.pattern == Pattern::Texture && m.texture) {
+      pattern = 2;
+      glActiveTexture(GL_TEXTURE0);
+      glBindTexture(GL_TEXTURE_2D, gpuTexture(m.texture));
+    }
+    mesh.set("pattern", pattern);
+    mesh.set("patternScale", m.patternScale);
+    mesh.set("lit", m.lit ? 1 : 0);
+    mesh.set("receivesShadow", m.receivesShadow ? 1 : 0);
+    mesh.set("shadowEnabled", shadowOn ? 1 : 0);
+    mesh.set("lightClipFromWorld", lightClipFromWorld);
+    (void)v;
+    if (cull == Cull::None) {
+      glDisable(GL_CULL_FACE);
+    } else {
+      glEnable(GL_CULL_FACE);
+      glCullFace(cull == Cull::Back ? GL_BACK : GL_FRONT);
+    }
+    const GpuMesh& g = gpuMesh(d.mesh);
+    glBindVertexArray(g.vao);
+    glDrawElements(GL_TRIANGLES, g.indexCount, GL_UNSIGNED_INT, nullptr);
+  }
+
+  void drawPolyline(const PolylineItem& p, const glm::mat4& clipFromWorld, const View& v) {
+    if (p.points.size() < 2) return;
+    line.use();
+    line.set("clipFromWorld", clipFromWorld);
+    line.set("viewportSize", glm::vec2(v.width, v.height));
+    line.set("widthPx", p.widthPx);
+    line.set("depthBias", p.depthTested ? 0.0008f : 0.0f);
+    line.set("lineColor", p.color);
+    glBindVertexArray(streamVao);
+    glBindBuffer(GL_ARRAY_BUFFER, streamVbo);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(p.points.size() * sizeof(glm::vec3)), p.points.data(),
+                 GL_STREAM_DRAW);
+    glDrawArrays(GL_LINE_STRIP, 0, static_cast<GLsizei>(p.points.size()));
+  }
+
+  // Pixel-space quads (x0, y0, x1, y1, s0, t0, s1, t1) with the text program.
+  void drawQuads(const std::vector<GlyphQuad>& quads, glm::vec2 viewportSize, const glm::vec4& color, GLuint atlas,
+                 bool solid) {
+    if (quads.empty()) return;
+    std::vector<float> data;
+    data.reserve(quads.size() * 24);
+    for (const GlyphQuad& q : quads) {
+      const float v[6][4] = {{q.x0, q.y0, q.s0, q.t0}, {q.x0, q.y1, q.s0, q.t1}, {q.x1, q.y1, q.s1, q.t1},
+                             {q.x0, q.y0, q.s0, q.t0}, {q.x1, q.y1, q.s1, q.t1}, {q.x1, q.y0, q.s1, q.t0}};
+      for (const auto& vert : v) data.insert(data.end(), vert, vert + 4);
+    }
+    text.use();
+    text.set("viewportSize", viewportSize);
+    text.set("textColor", color);
+    text.set("solid", solid ? 1 : 0);
+    text.set("glyphAtlas", 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, atlas);
+    glBindVertexArray(textVao);
+    glBindBuffer(GL_ARRAY_BUFFER, textVbo);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), GL_STREAM_DRAW);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(quads.size() * 6));
+  }
+
+  void drawLabel(const LabelItem& label, glm::vec2 viewportSize, const glm::mat4* clipFromWorld) {
+    glm::vec2 pen(label.anchor.x, label.anchor.y);
+    if (label.worldAnchored && clipFromWorld != nullptr) {
+      const glm::vec4 c = *clipFromWorld * glm::vec4(label.anchor, 1.0f);
+      if (c.w <= 0.0f) return;
+      pen = glm::vec2((c.x / c.w * 0.5f + 0.5f) * viewportSize.x, (0.5f - c.y / c.w * 0.5f) * viewportSize.y);
+    }
+    pen += label.offsetPx;
+    CachedFont& f = font(label.sizePx, label.bold);
+    const float width = f.atlas->layout(label.text, 0.0f, 0.0f, nullptr);
+    if (label.align == Align::Center) pen.x -= 0.5f * width;
+    if (label.align == Align::Right) pen.x -= width;
+    // Anchor = the middle of the capital height, which centres labels on points.
+    const float baseline = pen.y + 0.36f * f.atlas->pixelHeight();
+    std::vector<GlyphQuad> quads;
+    f.atlas->layout(label.text, std::round(pen.x), std::round(baseline), &quads);
+    drawQuads(quads, viewportSize, label.color, f.id, false);
+  }
+
+  void drawView(const DrawList& list, int index) {
+    const View& v = list.views[static_cast<std::size_t>(index)];
+    std::vector<Material> arrowMaterials;
+    arrowMaterials.reserve(list.arrows.size());
+    const std::vector<Drawable> items = drawablesOf(list, index, arrowMaterials);
+
+    bool shadowOn = v.light.shadow;
+    glm::mat4 lightClipFromWorld(1.0f);
+    if (shadowOn) lightClipFromWorld = shadowPass(v, items);
+
+    const GLuint target = fbSamples > 1 ? msaaFbo : resolveFbo;
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    const int glY = list.height - v.y - v.height;  // GL counts rows from the bottom
+    glViewport(v.x, glY, v.width, v.height);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(v.x, glY, v.width, v.height);
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+
+    if (v.background && !list.transparent) {
+      glDisable(GL_DEPTH_TEST);
+      glDepthMask(GL_FALSE);
+      background.use();
+      background.set("topColor", v.backgroundTop);
+      background.set("bottomColor", v.backgroundBottom);
+      glBindVertexArray(emptyVao);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+
+    const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_TRUE);
+    mesh.use();
+    mesh.set("clipFromWorld", clipFromWorld);
+    mesh.set("towardLight", glm::normalize(v.light.towardLight));
+    mesh.set("lightColor", v.light.color);
+    mesh.set("ambient", v.light.ambient);
+    mesh.set("cameraPosition", v.camera.position);
+    mesh.set("albedoTexture", 0);
+    mesh.set("shadowMap", 1);
+    mesh.set("shadowTexel", 1.0f / kShadowMapSize);
+    mesh.set("shadowSoftness", v.light.shadowSoftnessTexels);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, shadowTexture);
+
+    std::vector<const Drawable*> translucent;
+    for (const Drawable& d : items) {
+      if (d.material->opacity < 1.0f) {
+        translucent.push_back(&d);
+        continue;
+      }
+      drawMesh(v, d, shadowOn, lightClipFromWorld, d.material->cull);
+    }
+    glDisable(GL_CULL_FACE);
+    glDepthMask(GL_FALSE);
+    for (const PolylineItem& p : list.polylines)
+      if (p.view == index && p.depthTested) drawPolyline(p, clipFromWorld, v);
+
+    // Far to near; a closed translucent mesh shows its back half first.
+    auto depthOf = [&](const Drawable* d) { return (v.camera.viewFromWorld * d->worldFromModel[3]).z; };
+    std::stable_sort(translucent.begin(), translucent.end(),
+                     [&](const Drawable* a, const Drawable* b) { return depthOf(a) < depthOf(b); });
+    mesh.use();
+    for (const Drawable* d : translucent) {
+      if (d->material->cull == Cull::Back) {
+        drawMesh(v, *d, shadowOn, lightClipFromWorld, Cull::Front);
+        drawMesh(v, *d, shadowOn, lightClipFromWorld, Cull::Back);
+      } else {
+        drawMesh(v, *d, shadowOn, lightClipFromWorld, d->material->cull);
+      }
+    }
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_DEPTH_TEST);
+    for (const PolylineItem& p : list.polylines)
+      if (p.view == index && !p.depthTested) drawPolyline(p, clipFromWorld, v);
+    for (const LabelItem& l : list.labels)
+      if (l.view == index) drawLabel(l, glm::vec2(v.width, v.height), &clipFromWorld);
+    if (v.frame) {
+      const float w = float(v.width), h = float(v.height), t = std::max(1.0f, h / 300.0f);
+      const std::vector<GlyphQuad> border{{0, 0, w, t, 0, 0, 0, 0}, {0, h - t, w, h, 0, 0, 0, 0},
+                                          {0, 0, t, h, 0, 0, 0, 0}, {w - t, 0, w, h, 0, 0, 0, 0}};
+      drawQuads(border, glm::vec2(w, h), glm::vec4(0.35f, 0.38f, 0.42f, 1.0f), 0, true);
+    }
+    glDepthMask(GL_TRUE);
+  }
+
+  media::Image render(const DrawList& list) {
+    if (list.width <= 0 || list.height <= 0)
+      throw badInput({}, "image size {}x{}: expected positive width and height", list.width, list.height);
+    ensureFramebuffers(list.width, list.height, std::max(1, list.msaaSamples));
+    const GLuint target = fbSamples > 1 ? msaaFbo : resolveFbo;
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glDisable(GL_SCISSOR_TEST);
+    glViewport(0, 0, list.width, list.height);
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    for (int i = 0; i < static_cast<int>(list.views.size()); ++i) drawView(list, i);
+
+    // Image-level labels (titles) over everything.
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glDisable(GL_SCISSOR_TEST);
+    glViewport(0, 0, list.width, list.height);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    for (const LabelItem& l : list.labels)
+      if (l.view < 0) drawLabel(l, glm::vec2(list.width, list.height), nullptr);
+
+    if (fbSamples > 1) {
+      glBindFramebuffer(GL_READ_FRAMEBUFFER, msaaFbo);
+      glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolveFbo);
+      glBlitFramebuffer(0, 0, list.width, list.height, 0, 0, list.width, list.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, resolveFbo);
+    glFinish();
+    media::Image raw(list.width, list.height);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, list.width, list.height, GL_RGBA, GL_UNSIGNED_BYTE, raw.rgba.data());
+    if (const GLenum err = glGetError(); err != GL_NO_ERROR)
+      throw runtimeError({}, "OpenGL error 0x{:x} while rendering a {}x{} image", err, list.width, list.height);
+
+    // Per-frame meshes (arrows' materials aside, e.g. a rebuilt surface)
+    // must not pile up across the frames of a video.
+    for (auto it = meshes.begin(); it != meshes.end();) {
+      if (!it->second.used && it->second.keepAlive != cylinder && it->second.keepAlive != cone) {
+        release(it->second.gpu);
+        it = meshes.erase(it);
+      } else {
+        it->second.used = false;
+        ++it;
+      }
+    }
+
+    // GL rows are bottom-up: flip exactly once, here.
+    const media::ImageView bottomUp{list.width, list.height, std::ptrdiff_t{list.width} * 4, raw.rgba.data(),
+                                    media::RowOrder::BottomUp};
+    media::Image image = media::copyTopDown(bottomUp);
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+      std::uint8_t* p = &image.rgba[i];
+      if (!list.transparent) {
+        p[3] = 255;
+      } else if (p[3] != 0 && p[3] != 255) {
+        // Blending left premultiplied colour over the empty background.
+        for (int c = 0; c < 3; ++c) p[c] = static_cast<std::uint8_t>(std::min(255, (p[c] * 255 + p[3] / 2) / p[3]));
+      }
+    }
+    return image;
+  }
+};
+
+Renderer::Renderer(GlContext& /*context*/, const ShaderLibrary& shaders) : impl_(std::make_unique<Impl>(shaders)) {}
+Renderer::~Renderer() = default;
+media::Image Renderer::render(const DrawList& list) { return impl_->render(list); }
+
+}  // namespace rollspin::render

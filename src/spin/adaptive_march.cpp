@@ -121,7 +121,7 @@ Su2 adaptiveStep(const geometry::ContactPath& path, double ballRadius, Method me
 }
 
 SolveStats adaptiveRun(const geometry::ContactPath& path, double ballRadius, Method method, double tolerance,
-                       long long stepLimit, std::span<const double> sampleS, const SampleSink& sink) {
+                       long long stepLimit, const SampleArcLengths& sampleS, const SampleSink& sink) {
   SolveStats stats;
   stats.method = method;
   const double length = path.length();

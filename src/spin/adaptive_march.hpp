@@ -35,7 +35,7 @@ namespace rollspin::spin {
 // The whole march (method rk45 or frame6a, tolerance > 0, at most stepLimit
 // attempted steps); seconds is left 0.
 [[nodiscard]] SolveStats adaptiveRun(const geometry::ContactPath& path, double ballRadius, Method method,
-                                     double tolerance, long long stepLimit, std::span<const double> sampleS,
+                                     double tolerance, long long stepLimit, const SampleArcLengths& sampleS,
                                      const SampleSink& sink);
 
 }  // namespace rollspin::spin

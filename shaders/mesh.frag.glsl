@@ -2,6 +2,23 @@
 // Blinn–Phong in linear light with a hemispheric ambient fill and a
 // percentage-closer-filtered shadow (a soft key light), then sRGB encoding:
 // the framebuffer holds display-ready sRGB bytes.
+//
+// Compiled in variants (the renderer prepends the defines): llvmpipe runs
+// both sides of every branch, even on uniforms, so features a draw does not
+// use must be compiled out, not skipped.
+//   PATTERN  0 plain, 1 checker, 2 texture
+//   SHADOWED 1: sample the shadow map
+//   LIT      0: flat colour (no lighting)
+#ifndef PATTERN
+#define PATTERN 0
+#endif
+#ifndef SHADOWED
+#define SHADOWED 0
+#endif
+#ifndef LIT
+#define LIT 1
+#endif
+
 in vec3 vWorldPosition;
 in vec3 vNormal;
 in vec2 vUv;
@@ -12,19 +29,15 @@ uniform vec3 color2;
 uniform float opacity;
 uniform float specular;
 uniform float shininess;
-uniform int pattern;  // 0 plain, 1 checker, 2 texture
 uniform vec2 patternScale;
 uniform sampler2D albedoTexture;
-uniform bool lit;
-uniform bool receivesShadow;
-uniform bool shadowEnabled;
 uniform sampler2DShadow shadowMap;
-uniform float shadowTexel;
-uniform float shadowSoftness;
+uniform float shadowFilterRadius;  // PCF radius in shadow-map uv
 uniform vec3 towardLight;
 uniform vec3 lightColor;
 uniform float ambient;
 uniform vec3 cameraPosition;
+uniform bool twoSided;  // light the side that faces the camera
 
 out vec4 fragColor;
 
@@ -40,42 +53,44 @@ float checker(vec2 p) {
   return 0.5 - 0.5 * i.x * i.y;
 }
 
-const vec2 kPoisson[12] = vec2[](
-    vec2(-0.326, -0.406), vec2(-0.840, -0.074), vec2(-0.696, 0.457), vec2(-0.203, 0.621),
-    vec2(0.962, -0.195), vec2(0.473, -0.480), vec2(0.519, 0.767), vec2(0.185, -0.893),
-    vec2(0.507, 0.064), vec2(0.896, 0.412), vec2(-0.322, -0.933), vec2(-0.792, -0.598));
+#if SHADOWED
+// Eight taps on a rotated disc, each a bilinear 2×2 comparison: a soft edge.
+const vec2 kPoisson[8] = vec2[](vec2(-0.326, -0.406), vec2(-0.840, -0.074), vec2(-0.696, 0.457),
+                                vec2(-0.203, 0.621), vec2(0.962, -0.195), vec2(0.473, -0.480),
+                                vec2(0.519, 0.767), vec2(0.185, -0.893));
 
 float shadowFactor(vec3 n, vec3 l) {
-  if (!shadowEnabled || !receivesShadow) return 1.0;
   vec3 p = vLightClip.xyz / vLightClip.w * 0.5 + 0.5;
-  if (p.x <= 0.0 || p.x >= 1.0 || p.y <= 0.0 || p.y >= 1.0 || p.z >= 1.0) return 1.0;
   float bias = 0.0015 + 0.004 * (1.0 - max(dot(n, l), 0.0));
   float lit = 0.0;
-  for (int k = 0; k < 12; ++k)
-    lit += texture(shadowMap, vec3(p.xy + kPoisson[k] * shadowSoftness * shadowTexel, p.z - bias));
-  return lit / 12.0;
+  for (int k = 0; k < 8; ++k)
+    lit += texture(shadowMap, vec3(p.xy + kPoisson[k] * shadowFilterRadius, p.z - bias));
+  // Outside the map (the draw is clipped to it, this guards its rim) is lit.
+  return p.z >= 1.0 ? 1.0 : lit / 8.0;
 }
+#endif
 
 void main() {
   vec3 albedo = color;
   float alpha = opacity;
-  if (pattern == 1) {
-    albedo = mix(color, color2, checker(vUv * patternScale));
-  } else if (pattern == 2) {
-    vec4 t = texture(albedoTexture, vUv);
-    albedo = t.rgb * color;
-    alpha *= t.a;
-  }
-  if (!lit) {
-    fragColor = vec4(encodeSrgb(albedo), alpha);
-    return;
-  }
-  vec3 n = normalize(vNormal);
-  if (!gl_FrontFacing) n = -n;
-  vec3 l = normalize(towardLight);
+#if PATTERN == 1
+  albedo = mix(color, color2, checker(vUv * patternScale));
+#elif PATTERN == 2
+  vec4 t = texture(albedoTexture, vUv);
+  albedo = t.rgb * color;
+  alpha *= t.a;
+#endif
+#if LIT
   vec3 v = normalize(cameraPosition - vWorldPosition);
+  vec3 n = normalize(vNormal);
+  n = twoSided ? faceforward(n, -v, n) : (gl_FrontFacing ? n : -n);
+  vec3 l = normalize(towardLight);
   float ndl = max(dot(n, l), 0.0);
-  float shadow = ndl > 0.0 ? shadowFactor(n, l) : 0.0;
+#if SHADOWED
+  float shadow = shadowFactor(n, l);
+#else
+  float shadow = 1.0;
+#endif
   // Sky light from +z, warm bounce from below.
   vec3 hemisphere = mix(vec3(0.62, 0.58, 0.55), vec3(1.0, 1.0, 1.02), 0.5 + 0.5 * n.z);
   vec3 h = normalize(l + v);
@@ -84,4 +99,7 @@ void main() {
   // Translucent surfaces (glass, the Bloch sphere) thicken at grazing angles.
   if (opacity < 1.0) alpha = clamp(alpha * (1.0 + 2.0 * pow(1.0 - abs(dot(n, v)), 3.0)), 0.0, 1.0);
   fragColor = vec4(encodeSrgb(c), alpha);
+#else
+  fragColor = vec4(encodeSrgb(albedo), alpha);
+#endif
 }

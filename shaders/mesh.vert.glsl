@@ -9,6 +9,12 @@ uniform mat4 worldFromModel;
 uniform mat3 normalWorldFromModel;
 uniform mat4 clipFromWorld;
 uniform mat4 lightClipFromWorld;
+// Shadow receivers are drawn in two passes (see renderer.cpp): inside the
+// shadow box, clipped to it, with the shadow filter; then the rest without.
+uniform bool clipToShadowBox;
+uniform vec4 cutPlane;  // the material's cut-away (0, 0, 0, 1: none)
+
+out float gl_ClipDistance[5];
 
 out vec3 vWorldPosition;
 out vec3 vNormal;
@@ -21,5 +27,11 @@ void main() {
   vNormal = normalWorldFromModel * aNormal;
   vUv = aUv;
   vLightClip = lightClipFromWorld * world;
+  vec2 box = vLightClip.xy / vLightClip.w;
+  gl_ClipDistance[0] = clipToShadowBox ? 1.0 - box.x : 1.0;
+  gl_ClipDistance[1] = clipToShadowBox ? 1.0 + box.x : 1.0;
+  gl_ClipDistance[2] = clipToShadowBox ? 1.0 - box.y : 1.0;
+  gl_ClipDistance[3] = clipToShadowBox ? 1.0 + box.y : 1.0;
+  gl_ClipDistance[4] = dot(cutPlane, world);
   gl_Position = clipFromWorld * world;
 }

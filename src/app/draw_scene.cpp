@@ -43,6 +43,12 @@ struct OrbitAngles {
 
 bool isCircuit(const RollingModel& model) { return model.path->turns() > 0.0; }
 
+OrbitAngles orbitAngles(const scene::SceneSpec& spec, const RollingModel& model);
+Vec3 towardEye(const OrbitAngles& a) {
+  return {std::cos(a.elevation) * std::cos(a.azimuth), std::cos(a.elevation) * std::sin(a.azimuth),
+          std::sin(a.elevation)};
+}
+
 }  // namespace
 
 FrameSampling frameSampling(const scene::SceneSpec& spec, const RollingModel& model, double s) {
@@ -96,6 +102,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
 
   sphereMesh_ = render::uvSphere(96, 48);
   surfaceMaterial_.castsShadow = false;
+  surfaceMaterial_.receivesShadow = true;
   surfaceMaterial_.specular = 0.08f;
   surfaceMaterial_.shininess = 16.0f;
   surfaceMaterial_.pattern = render::Pattern::Checker;
@@ -125,13 +132,21 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
     surfaceMaterial_.patternScale = glm::vec2(1.0f);
   } else if (const auto* sphere = dynamic_cast<const geometry::Sphere*>(model.surface.get())) {
     const double r = sphere->radius();
-    // Outside: the whole globe. Inside: a bowl (or a dome) cut 35° beyond
-    // the path, so the ball inside is seen.
-    double c0 = 0.0, c1 = std::numbers::pi;
+    const double c0 = 0.0, c1 = std::numbers::pi;
     if (sphere->side() == geometry::Side::Inside) {
-      const double theta = std::acos(std::clamp(start.point.z() / r, -1.0, 1.0));
-      if (theta >= 0.5 * std::numbers::pi) c0 = std::max(0.0, theta - 35.0 * kDeg);
-      else c1 = std::min(std::numbers::pi, theta + 35.0 * kDeg);
+      // Cut away the cap that faces the camera, so the ball inside is seen
+      // wherever it rolls; a rim line marks the cut.
+      const Vec3 toEye = towardEye(orbitAngles(spec, model));
+      const double offset = 0.25 * r;
+      surfaceMaterial_.cutPlane = glm::vec4(-toGlm(toEye), float(offset));
+      const Vec3 e1 = Vec3::UnitZ().cross(toEye).normalized(), e2 = toEye.cross(e1);
+      const double rimRadius = std::sqrt(r * r - offset * offset);
+      for (int k = 0; k <= 180; ++k) {
+        const double phi = 2.0 * std::numbers::pi * k / 180;
+        cutRim_.push_back(offset * toEye + rimRadius * (std::cos(phi) * e1 + std::sin(phi) * e2));
+      }
+    } else {
+      surfaceMaterial_.castsShadow = true;  // the globe hides the ball's shadow from its far side
     }
     surfaceMesh_ = render::parametricPatch(
         [&](float a, float b, glm::vec3& p, glm::vec3& nn) {
@@ -153,8 +168,52 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
       lo[k] = std::min(lo[k], -r);
       hi[k] = std::max(hi[k], r);
     }
-    if (c0 > 0.0) hi.z() = std::min(hi.z(), std::max(r * std::cos(c0), lo.z() + 1e-9) + R);
-    if (c1 < std::numbers::pi) lo.z() = std::max(lo.z(), std::min(r * std::cos(c1), hi.z() - 1e-9) - R);
+  }
+  else if (model.surface) {
+    // Any other surface (cylinder, torus, height field, ...): mesh its own
+    // chart x(u, v) over the parameter box the path visits, padded by about
+    // 3R on the surface, with checker cells of about R.
+    const geometry::Surface& surface = *model.surface;
+    const geometry::ParameterDomain domain = surface.domain();
+    double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300, speedU = 0.0, speedV = 0.0;
+    int found = 0;
+    for (std::size_t i = 0; i < pathPoints_.size(); i += std::max<std::size_t>(1, pathPoints_.size() / 200)) {
+      const auto uv = surface.parametersOf(pathPoints_[i]);
+      if (!uv) continue;
+      u0 = std::min(u0, uv->x());
+      u1 = std::max(u1, uv->x());
+      v0 = std::min(v0, uv->y());
+      v1 = std::max(v1, uv->y());
+      const geometry::SurfaceJet j = surface.jet(*uv);
+      speedU += j.xu.norm();
+      speedV += j.xv.norm();
+      ++found;
+    }
+    if (found > 0) {
+      speedU = std::max(speedU / found, 1e-9);
+      speedV = std::max(speedV / found, 1e-9);
+      const double eps = 1e-6;
+      u0 = std::max(u0 - 3.0 * R / speedU, domain.uMin + eps);
+      u1 = std::min(u1 + 3.0 * R / speedU, domain.uMax - eps);
+      v0 = std::max(v0 - 3.0 * R / speedV, domain.vMin + eps);
+      v1 = std::min(v1 + 3.0 * R / speedV, domain.vMax - eps);
+      const auto cellsU = float((u1 - u0) * speedU / R), cellsV = float((v1 - v0) * speedV / R);
+      surfaceMesh_ = render::parametricPatch(
+          [&](float a, float b, glm::vec3& p, glm::vec3& nn) {
+            const geometry::Vec2 uv(u0 + (u1 - u0) * a, v0 + (v1 - v0) * b);
+            p = toGlm(surface.position(uv));
+            nn = toGlm(surface.normal(uv));
+          },
+          std::clamp(int(cellsU * 4), 16, 256), std::clamp(int(cellsV * 4), 16, 256), glm::vec2(cellsU, cellsV));
+      surfaceMaterial_.color = {0.78f, 0.77f, 0.74f};
+      surfaceMaterial_.color2 = {0.55f, 0.57f, 0.60f};
+      surfaceMaterial_.castsShadow = true;  // may hide the ball's shadow from its own far side
+      for (const auto& v : surfaceMesh_->vertices) {
+        const Vec3 p(v.position.x, v.position.y, v.position.z);
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+      }
+    }
   }
   if (model.plate) {
     // Brockett's plate translates with the top point: on a plane the top
@@ -272,9 +331,6 @@ OrbitAngles orbitAngles(const scene::SceneSpec& spec, const RollingModel& model)
     } else if (n.z() < 0.0 && !elevationGiven) {
       a.elevation = -a.elevation;  // a ceiling: look from below
     }
-  } else if (const auto* sphere = dynamic_cast<const geometry::Sphere*>(model.surface.get())) {
-    const Vec3 p0 = model.path->point(0.0);
-    if (sphere->side() == geometry::Side::Inside && p0.z() > 0.0 && !elevationGiven) a.elevation = -a.elevation;
   }
   return a;
 }
@@ -297,7 +353,13 @@ render::View SceneDrawer::ballCamera(const render::DrawList& list, int x, int y,
   glm::vec3 up(0, 0, 1);
   if (const auto* plane = dynamic_cast<const geometry::Plane*>(model_.surface.get())) up = toGlm(plane->normal());
   const glm::vec3 eyeDir = glm::normalize(v.camera.position - toGlm(target));
-  v.light = keyLight(up, eyeDir, toGlm(frameCentre_), float(frameRadius_ + 2.0 * R));
+  // The shadow box hugs the ball (a strobe: all of them), see render::Light.
+  if (spec_.render.strobe > 1) {
+    v.light = keyLight(up, eyeDir, toGlm(frameCentre_), float(frameRadius_ + R));
+  } else {
+    v.light = keyLight(up, eyeDir, toGlm(model_.path->at(s).centre(R)), float(1.8 * R));
+  }
+  v.light.shadowSoftness = float(0.12 * R);
   return v;
 }
 
@@ -383,6 +445,14 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
   const render::View& v = list.views[static_cast<std::size_t>(view)];
 
   if (surfaceMesh_) list.meshes.push_back({surfaceMesh_, glm::mat4(1.0f), surfaceMaterial_, view});
+  if (!cutRim_.empty()) {
+    render::PolylineItem rim;
+    rim.color = glm::vec4(0.25f, 0.27f, 0.30f, 1.0f);
+    rim.widthPx = std::max(1.2f, float(list.height) / 450.0f);
+    rim.view = view;
+    for (const Vec3& p : cutRim_) rim.points.push_back(toGlm(p));
+    list.polylines.push_back(rim);
+  }
 
   // The contact path, lifted a hair along the normal; travelled part on top.
   render::PolylineItem full, travelled;
@@ -632,7 +702,7 @@ void SceneDrawer::addTwinView(render::DrawList& list, const FrameOrientations& f
     heading.sizePx = text * 1.1f;
     heading.bold = true;
     heading.color = kTextColor;
-    list.labels.push_back(heading);
+    if (!v.frame) list.labels.push_back(heading);  // an inset has no room for it
     const std::pair<std::string, glm::vec3> legend[2] = {{"● spin  X(s) = Q(s) X(0)", kMarkerColor},
                                                          {"● field  B/|B|", kFieldColor}};
     for (int i = 0; i < 2 && !v.frame; ++i) {  // an inset is too small for a legend

@@ -67,6 +67,7 @@ class SceneDrawer {
   render::Material surfaceMaterial_;
   glm::mat4 surfaceFromModel_{1.0f};
   geometry::Vec3 plateCircleCentre_ = geometry::Vec3::Zero();
+  std::vector<geometry::Vec3> cutRim_;  // inside a sphere: the edge of the cut-away
 };
 
 }  // namespace rollspin::app

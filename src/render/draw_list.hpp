@@ -47,8 +47,14 @@ struct Material {
   std::shared_ptr<const TextureImage> texture;  // Pattern::Texture
   bool lit = true;
   bool castsShadow = true;
-  bool receivesShadow = true;
-  Cull cull = Cull::Back;
+  // Shows the key light's shadow (the surfaces). Off for convex solids such
+  // as balls and arrows, whose own n·l shading already darkens their far
+  // side: the shadow filter is the most expensive part of a frame.
+  bool receivesShadow = false;
+  Cull cull = Cull::Back;  // Cull::None: lit on whichever side faces the camera
+  // Keep only the part with dot(cutPlane, (p, 1)) >= 0 (world p): a
+  // cut-away, e.g. the near half of a sphere the ball rolls inside.
+  glm::vec4 cutPlane{0.0f, 0.0f, 0.0f, 1.0f};
 };
 
 struct MeshItem {
@@ -100,7 +106,9 @@ struct Camera {
 };
 
 // One directional key light with an optional shadow map that covers the
-// sphere (shadowCenter, shadowRadius), plus hemispheric ambient fill.
+// sphere (shadowCenter, shadowRadius) — keep it tight around the casters: it
+// sets the shadow's resolution, and receivers outside it skip the filter —
+// plus hemispheric ambient fill.
 struct Light {
   glm::vec3 towardLight = glm::normalize(glm::vec3(0.4f, -0.3f, 1.0f));
   glm::vec3 color{1.0f};
@@ -108,7 +116,7 @@ struct Light {
   bool shadow = true;
   glm::vec3 shadowCenter{0.0f};
   float shadowRadius = 10.0f;
-  float shadowSoftnessTexels = 2.5f;  // PCF radius: a soft key light
+  float shadowSoftness = 0.1f;  // PCF radius in world units: a soft key light
 };
 
 struct View {

@@ -20,7 +20,7 @@ namespace rollspin::render {
 
 namespace {
 
-constexpr int kShadowMapSize = 2048;
+constexpr int kShadowMapSize = 1024;
 
 GLuint compileShader(GLenum type, const std::string& source, const std::string& name) {
   const GLuint shader = glCreateShader(type);
@@ -44,10 +44,17 @@ GLuint compileShader(GLenum type, const std::string& source, const std::string& 
 class Program {
  public:
   Program() = default;
-  Program(const ShaderLibrary& lib, const std::string& vert, const std::string& frag, const std::string& geom = {}) {
+  // `defines` ("#define X 1\n...") go right after each stage's #version line.
+  Program(const ShaderLibrary& lib, const std::string& vert, const std::string& frag, const std::string& geom = {},
+          const std::string& defines = {}) {
+    auto withDefines = [&](std::string text) {
+      if (defines.empty()) return text;
+      const auto eol = text.find('\n');
+      return eol == std::string::npos ? text : text.insert(eol + 1, defines);
+    };
     id_ = glCreateProgram();
-    std::vector<GLuint> shaders{compileShader(GL_VERTEX_SHADER, lib.source(vert), vert),
-                                compileShader(GL_FRAGMENT_SHADER, lib.source(frag), frag)};
+    std::vector<GLuint> shaders{compileShader(GL_VERTEX_SHADER, withDefines(lib.source(vert)), vert),
+                                compileShader(GL_FRAGMENT_SHADER, withDefines(lib.source(frag)), frag)};
     if (!geom.empty()) shaders.push_back(compileShader(GL_GEOMETRY_SHADER, lib.source(geom), geom));
     for (GLuint s : shaders) glAttachShader(id_, s);
     glLinkProgram(id_);
@@ -138,8 +145,22 @@ glm::mat4 alongSegment(const glm::vec3& a, const glm::vec3& b, float radius) {
 
 }  // namespace
 
+// Per-view state every mesh program needs.
+struct MeshViewUniforms {
+  glm::mat4 clipFromWorld{1.0f};
+  glm::mat4 lightClipFromWorld{1.0f};
+  glm::vec3 towardLight{0.0f, 0.0f, 1.0f};
+  glm::vec3 lightColor{1.0f};
+  float ambient = 0.35f;
+  glm::vec3 cameraPosition{0.0f};
+  float shadowFilterRadius = 0.0f;
+};
+
 struct Renderer::Impl {
-  Program mesh, shadow, line, text, background;
+  ShaderLibrary library;  // a copy: mesh variants compile lazily
+  std::map<int, Program> meshPrograms;  // by variant: pattern * 4 + shadowed * 2 + lit
+  MeshViewUniforms viewUniforms;
+  Program shadow, line, text, background;
   GLuint emptyVao = 0;
   GLuint streamVao = 0, streamVbo = 0;  // polylines (vec3)
   GLuint textVao = 0, textVbo = 0;      // glyph quads (vec2 pixel, vec2 uv)
@@ -167,7 +188,7 @@ struct Renderer::Impl {
   std::shared_ptr<MeshData> cylinder = unitCylinder(24), cone = unitCone(32);
 
   explicit Impl(const ShaderLibrary& lib)
-      : mesh(lib, "mesh.vert", "mesh.frag"),
+      : library(lib),
         shadow(lib, "shadow.vert", "shadow.frag"),
         line(lib, "line.vert", "line.frag", "line.geom"),
         text(lib, "text.vert", "text.frag"),
@@ -219,7 +240,8 @@ struct Renderer::Impl {
     glDeleteVertexArrays(1, &streamVao);
     glDeleteVertexArrays(1, &textVao);
     glDeleteVertexArrays(1, &emptyVao);
-    for (Program* p : {&mesh, &shadow, &line, &text, &background}) p->release();
+    for (auto& [key, p] : meshPrograms) p.release();
+    for (Program* p : {&shadow, &line, &text, &background}) p->release();
   }
 
   void releaseFramebuffers() {
@@ -242,8 +264,8 @@ struct Renderer::Impl {
       glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
       glGenRenderbuffers(1, &depth);
       glBindRenderbuffer(GL_RENDERBUFFER, depth);
-      glRenderbufferStorageMultisample(GL_RENDERBUFFER, s, GL_DEPTH_COMPONENT24, w, h);
-      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+      glRenderbufferStorageMultisample(GL_RENDERBUFFER, s, GL_DEPTH24_STENCIL8, w, h);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth);
       if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw runtimeError({}, "OpenGL could not create a {}x{} framebuffer with {} samples (out of memory?)", w, h, s);
     };
@@ -356,8 +378,55 @@ struct Renderer::Impl {
     return lightClipFromWorld;
   }
 
-  void drawMesh(const View& v, const Drawable& d, bool shadowOn, const glm::mat4& lightClipFromWorld, Cull cull) {
+  // Shadow receivers (the surfaces) pay for the shadow filter only inside
+  // the shadow box: llvmpipe runs both sides of every branch, even on
+  // uniforms, so the split is made with two draws instead. Pass 1: the whole
+  // mesh without the filter. Pass 2: the mesh clipped to the box, with the
+  // filter, pulled forward by a polygon offset so it replaces pass 1 there.
+  void drawReceiver(const View& v, const Drawable& d, const glm::mat4& lightClipFromWorld) {
+    drawMesh(v, d, false, lightClipFromWorld, d.material->cull, false);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(-1.0f, -4.0f);
+    drawMesh(v, d, true, lightClipFromWorld, d.material->cull, true);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+  }
+
+  Program& meshProgram(int pattern, bool shadowed, bool lit) {
+    const int key = pattern * 4 + (shadowed ? 2 : 0) + (lit ? 1 : 0);
+    auto it = meshPrograms.find(key);
+    if (it == meshPrograms.end()) {
+      const std::string defines = fmt::format("#define PATTERN {}\n#define SHADOWED {}\n#define LIT {}\n", pattern,
+                                              shadowed ? 1 : 0, lit ? 1 : 0);
+      it = meshPrograms.emplace(key, Program(library, "mesh.vert", "mesh.frag", {}, defines)).first;
+    }
+    return it->second;
+  }
+
+  void drawMesh(const View& v, const Drawable& d, bool shadowOn, const glm::mat4& lightClipFromWorld, Cull cull,
+                bool clipToShadowBox = false) {
     const Material& m = *d.material;
+    int pattern = m.pattern == Pattern::Checker ? 1 : 0;
+    if (m.pattern == Pattern::Texture && m.texture) {
+      pattern = 2;
+      glActiveTexture(GL_TEXTURE0);
+      glBindTexture(GL_TEXTURE_2D, gpuTexture(m.texture));
+    }
+    Program& mesh = meshProgram(pattern, shadowOn && m.lit, m.lit);
+    mesh.use();
+    const MeshViewUniforms& u = viewUniforms;
+    mesh.set("clipFromWorld", u.clipFromWorld);
+    mesh.set("lightClipFromWorld", u.lightClipFromWorld);
+    mesh.set("towardLight", u.towardLight);
+    mesh.set("lightColor", u.lightColor);
+    mesh.set("ambient", u.ambient);
+    mesh.set("cameraPosition", u.cameraPosition);
+    mesh.set("albedoTexture", 0);
+    mesh.set("shadowMap", 1);
+    mesh.set("shadowFilterRadius", u.shadowFilterRadius);
+    mesh.set("clipToShadowBox", clipToShadowBox ? 1 : 0);
+    mesh.set("cutPlane", m.cutPlane);
+    mesh.set("twoSided", m.cull == Cull::None ? 1 : 0);
+    (void)lightClipFromWorld;
     mesh.set("worldFromModel", d.worldFromModel);
     mesh.set("normalWorldFromModel", glm::inverseTranspose(glm::mat3(d.worldFromModel)));
     mesh.set("color", m.color);
@@ -365,18 +434,7 @@ struct Renderer::Impl {
     mesh.set("opacity", m.opacity);
     mesh.set("specular", m.specular);
     mesh.set("shininess", m.shininess);
-    int pattern = m.pattern == Pattern::Checker ? 1 : 0;
-    if (m.pattern == Pattern::Texture && m.texture) {
-      pattern = 2;
-      glActiveTexture(GL_TEXTURE0);
-      glBindTexture(GL_TEXTURE_2D, gpuTexture(m.texture));
-    }
-    mesh.set("pattern", pattern);
     mesh.set("patternScale", m.patternScale);
-    mesh.set("lit", m.lit ? 1 : 0);
-    mesh.set("receivesShadow", m.receivesShadow ? 1 : 0);
-    mesh.set("shadowEnabled", shadowOn ? 1 : 0);
-    mesh.set("lightClipFromWorld", lightClipFromWorld);
     (void)v;
     if (cull == Cull::None) {
       glDisable(GL_CULL_FACE);
@@ -463,13 +521,15 @@ struct Renderer::Impl {
     glViewport(v.x, glY, v.width, v.height);
     glEnable(GL_SCISSOR_TEST);
     glScissor(v.x, glY, v.width, v.height);
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
+    glClearColor(0.0f, 0.0f, 0.0f, list.transparent ? 0.0f : 1.0f);
+    glClearStencil(0);
+    glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
     if (v.background && !list.transparent) {
       glDisable(GL_DEPTH_TEST);
+      glDisable(GL_BLEND);  // opaque: no read-modify-write per sample
       glDepthMask(GL_FALSE);
       background.use();
       background.set("topColor", v.backgroundTop);
@@ -482,29 +542,33 @@ struct Renderer::Impl {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_TRUE);
-    mesh.use();
-    mesh.set("clipFromWorld", clipFromWorld);
-    mesh.set("towardLight", glm::normalize(v.light.towardLight));
-    mesh.set("lightColor", v.light.color);
-    mesh.set("ambient", v.light.ambient);
-    mesh.set("cameraPosition", v.camera.position);
-    mesh.set("albedoTexture", 0);
-    mesh.set("shadowMap", 1);
-    mesh.set("shadowTexel", 1.0f / kShadowMapSize);
-    mesh.set("shadowSoftness", v.light.shadowSoftnessTexels);
+    viewUniforms.clipFromWorld = clipFromWorld;
+    viewUniforms.lightClipFromWorld = lightClipFromWorld;
+    viewUniforms.towardLight = glm::normalize(v.light.towardLight);
+    viewUniforms.lightColor = v.light.color;
+    viewUniforms.ambient = v.light.ambient;
+    viewUniforms.cameraPosition = v.camera.position;
+    // At least 1.5 texels, so even a wide shadow box filters its edges.
+    viewUniforms.shadowFilterRadius =
+        std::max(v.light.shadowSoftness / (2.0f * v.light.shadowRadius), 1.5f / float(kShadowMapSize));
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, shadowTexture);
 
     std::vector<const Drawable*> translucent;
+    glDisable(GL_BLEND);
+    for (GLenum plane = 0; plane < 5; ++plane) glEnable(GL_CLIP_DISTANCE0 + plane);
     for (const Drawable& d : items) {
       if (d.material->opacity < 1.0f) {
         translucent.push_back(&d);
         continue;
       }
-      drawMesh(v, d, shadowOn, lightClipFromWorld, d.material->cull);
+      if (shadowOn && d.material->receivesShadow) drawReceiver(v, d, lightClipFromWorld);
+      else drawMesh(v, d, false, lightClipFromWorld, d.material->cull);
     }
+    for (GLenum plane = 0; plane < 5; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);  // lines write none
     glDisable(GL_CULL_FACE);
     glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
     for (const PolylineItem& p : list.polylines)
       if (p.view == index && p.depthTested) drawPolyline(p, clipFromWorld, v);
 
@@ -512,15 +576,17 @@ struct Renderer::Impl {
     auto depthOf = [&](const Drawable* d) { return (v.camera.viewFromWorld * d->worldFromModel[3]).z; };
     std::stable_sort(translucent.begin(), translucent.end(),
                      [&](const Drawable* a, const Drawable* b) { return depthOf(a) < depthOf(b); });
-    mesh.use();
+    for (GLenum plane = 0; plane < 5; ++plane) glEnable(GL_CLIP_DISTANCE0 + plane);
     for (const Drawable* d : translucent) {
+      // Translucent layers (glass, the Bloch sphere) take no shadow: cheap.
       if (d->material->cull == Cull::Back) {
-        drawMesh(v, *d, shadowOn, lightClipFromWorld, Cull::Front);
-        drawMesh(v, *d, shadowOn, lightClipFromWorld, Cull::Back);
+        drawMesh(v, *d, false, lightClipFromWorld, Cull::Front);
+        drawMesh(v, *d, false, lightClipFromWorld, Cull::Back);
       } else {
-        drawMesh(v, *d, shadowOn, lightClipFromWorld, d->material->cull);
+        drawMesh(v, *d, false, lightClipFromWorld, d->material->cull);
       }
     }
+    for (GLenum plane = 0; plane < 5; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);
     glDisable(GL_CULL_FACE);
     glDisable(GL_DEPTH_TEST);
     for (const PolylineItem& p : list.polylines)
@@ -544,7 +610,9 @@ struct Renderer::Impl {
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glDisable(GL_SCISSOR_TEST);
     glViewport(0, 0, list.width, list.height);
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    // Opaque output: alpha starts at 1 and every blend keeps it there, so
+    // the read-back needs no alpha pass.
+    glClearColor(0.0f, 0.0f, 0.0f, list.transparent ? 0.0f : 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     for (int i = 0; i < static_cast<int>(list.views.size()); ++i) drawView(list, i);
 
@@ -587,13 +655,13 @@ struct Renderer::Impl {
     const media::ImageView bottomUp{list.width, list.height, std::ptrdiff_t{list.width} * 4, raw.rgba.data(),
                                     media::RowOrder::BottomUp};
     media::Image image = media::copyTopDown(bottomUp);
-    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
-      std::uint8_t* p = &image.rgba[i];
-      if (!list.transparent) {
-        p[3] = 255;
-      } else if (p[3] != 0 && p[3] != 255) {
-        // Blending left premultiplied colour over the empty background.
-        for (int c = 0; c < 3; ++c) p[c] = static_cast<std::uint8_t>(std::min(255, (p[c] * 255 + p[3] / 2) / p[3]));
+    if (list.transparent) {
+      for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+        std::uint8_t* p = &image.rgba[i];
+        if (p[3] != 0 && p[3] != 255) {
+          // Blending left premultiplied colour over the empty background.
+          for (int c = 0; c < 3; ++c) p[c] = static_cast<std::uint8_t>(std::min(255, (p[c] * 255 + p[3] / 2) / p[3]));
+        }
       }
     }
     return image;

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <cstdint>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace rollspin::geometry {
@@ -59,6 +62,8 @@ std::vector<double> checkNodes(int n) {
 SurfaceCurvePath::SurfaceCurvePath(std::shared_ptr<const Surface> surface, std::shared_ptr<const UvCurve> curve,
                                    SurfaceCurveOptions options)
     : surface_(std::move(surface)), curve_(std::move(curve)), options_(options) {
+  static std::atomic<std::uint64_t> nextId{1};
+  id_ = nextId++;
   std::vector<double> cuts{curve_->start()};
   for (double b : curve_->breakpoints())
     if (b > curve_->start() && b < curve_->end()) cuts.push_back(b);
@@ -129,7 +134,9 @@ void SurfaceCurvePath::buildSegment(double sigmaStart, double sigmaEnd) {
 }
 
 void SurfaceCurvePath::fitPanel(double sigmaStart, double sigmaEnd, double sStart, int depth) {
-  constexpr int kMaxDepth = 30;
+  // Depth 14 allows panels down to 1/65536 of a segment's quarter; beyond
+  // that the tolerance below is round-off, not truncation.
+  constexpr int kMaxDepth = 14;
   const double total = panelArcLength(sigmaStart, sigmaEnd);
   const double sigmaMid = 0.5 * (sigmaStart + sigmaEnd);
   auto split = [&] {
@@ -138,7 +145,12 @@ void SurfaceCurvePath::fitPanel(double sigmaStart, double sigmaEnd, double sStar
   };
   // The quadrature must be converged on the panel: compare with its halves.
   const double halves = panelArcLength(sigmaStart, sigmaMid) + panelArcLength(sigmaMid, sigmaEnd);
-  const double tolerance = 2e-15 * (1.0 + total);
+  // Round-off: a 20-term sum of speeds carries a few ε·total, and σ itself is
+  // only known to ε|σ|, i.e. s to ε|σ|·speed. Ask for a small multiple of both.
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const double speedScale = std::max({speed(sigmaStart), speed(sigmaMid), speed(sigmaEnd)});
+  const double sigmaScale = std::max(std::abs(sigmaStart), std::abs(sigmaEnd));
+  const double tolerance = 8.0 * eps * (1.0 + total) + 4.0 * eps * sigmaScale * speedScale;
   if (std::abs(total - halves) > tolerance && depth < kMaxDepth) return split();
 
   // σ at Chebyshev–Lobatto nodes in s, by Newton on the quadrature.
@@ -185,9 +197,25 @@ double SurfaceCurvePath::arcLengthAt(double sigma) const {
   return length_;
 }
 
-Vec3 SurfaceCurvePath::point(double s) const { return surface_->position(uvAt(s)); }
+// The oracle asks for point(s) and then normal(s) at the same s; a
+// one-entry per-thread cache of (u, v)(s) halves its cost.
+namespace {
+struct UvCache {
+  std::uint64_t owner = 0;  // SurfaceCurvePath::id_ (addresses get reused)
+  double s = 0.0;
+  Vec2 uv = Vec2::Zero();
+};
+thread_local UvCache uvCache;
+}  // namespace
 
-Vec3 SurfaceCurvePath::normal(double s) const { return surface_->normal(uvAt(s)); }
+Vec2 SurfaceCurvePath::cachedUvAt(double s) const {
+  if (uvCache.owner != id_ || uvCache.s != s) uvCache = {id_, s, uvAt(s)};
+  return uvCache.uv;
+}
+
+Vec3 SurfaceCurvePath::point(double s) const { return surface_->position(cachedUvAt(s)); }
+
+Vec3 SurfaceCurvePath::normal(double s) const { return surface_->normal(cachedUvAt(s)); }
 
 DarbouxSample SurfaceCurvePath::at(double s) const {
   const UvJet c = curve_->at(parameterAt(s));

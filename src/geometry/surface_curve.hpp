@@ -5,7 +5,7 @@
 // panels refined until the quadrature is converged; the inverse σ(s) is a
 // degree-24 Chebyshev–Lobatto interpolant per panel, its nodes solved by
 // Newton on the quadrature and checked between nodes:
-// |s(σ(s)) − s| ≤ 1e-15 (1 + s) (so |dP/ds| = 1 to about 1e-14).
+// |s(σ(s)) − s| ≤ 8ε (1 + panel length) + 4ε |σ| |α′| (σ is only known to ε|σ|).
 //
 // Frame and curvatures from the fundamental forms (n on the ball's side):
 //   α' = x_u u' + x_v v',  α'' = x_uu u'² + 2 x_uv u'v' + x_vv v'² + x_u u'' + x_v v'',
@@ -17,6 +17,7 @@
 // point(s) and normal(s) use only the surface's x(u, v) and unit normal.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -54,6 +55,7 @@ class SurfaceCurvePath final : public ContactPath {
   // s(σ) by quadrature (for tests of the inverse).
   [[nodiscard]] double arcLengthAt(double sigma) const;
   [[nodiscard]] const Surface& surface() const { return *surface_; }
+  [[nodiscard]] std::size_t panelCount() const { return panels_.size(); }
   [[nodiscard]] const UvCurve& curve() const { return *curve_; }
 
  private:
@@ -63,6 +65,7 @@ class SurfaceCurvePath final : public ContactPath {
     std::vector<double> coefficients; // σ − sigmaStart as a Chebyshev series in s
   };
   [[nodiscard]] double speed(double sigma) const;
+  [[nodiscard]] Vec2 cachedUvAt(double s) const;
   [[nodiscard]] double panelArcLength(double sigmaStart, double sigma) const;
   void buildSegment(double sigmaStart, double sigmaEnd);
   void fitPanel(double sigmaStart, double sigmaEnd, double sStart, int depth);
@@ -74,6 +77,7 @@ class SurfaceCurvePath final : public ContactPath {
   std::vector<double> panelStarts_;  // panels_[i].sStart, for lookup
   std::vector<double> breakpoints_;  // s of the curve's σ breakpoints
   double length_ = 0.0;
+  std::uint64_t id_ = 0;  // identifies this path in the per-thread (u, v) cache
 };
 
 // Where the ball stops touching the surface at a single point along a path.

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   rollspin::app::CommandHandler handler;
   rollspin::app::registerSolveCommands(cli, handler);
   rollspin::app::registerRenderCommands(cli, handler);
+  rollspin::app::registerReportCommands(cli, handler);
 
   try {
     cli.parse(argc, argv);

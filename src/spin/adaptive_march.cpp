@@ -189,7 +189,10 @@ SolveStats adaptiveRun(const geometry::ContactPath& path, double ballRadius, Met
         // Richardson: the two halves are 2⁶ times more accurate than the whole.
         const double error = spinorDistance(whole, halves) / 63.0;
         if (!std::isfinite(error) || !halves.isFinite()) return stop(SolveStatus::NonFinite, u);
-        const double ratio = error / (tolerance * step / length);
+        // Never ask a step for less than round-off: a tolerance below what
+        // double precision can reach degrades to the floor instead of
+        // shrinking h until it underflows.
+        const double ratio = error / std::max(tolerance * step / length, 8.0 * 2.220446049250313e-16);
         factor = ratio > 0.0 ? std::clamp(0.9 * std::pow(ratio, -1.0 / 6.0), 0.2, 4.0) : 4.0;
         accept = ratio <= 1.0;
         if (turnRate * step > kMaxFrameTurn) {

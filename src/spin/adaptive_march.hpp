@@ -14,7 +14,8 @@
 //            is exact, so only the variation of κ_g costs steps (constant κ_g:
 //            exact at any h, whatever |B| h). Error by step doubling,
 //            err = dist(E(s,h), E(s+h/2,h/2) E(s,h/2)) / 63, accepted when
-//            err ≤ tol · h / L (per unit length: the sum stays ≤ tol), the
+//            err ≤ max(tol · h / L, 8ε) (per unit length: the sum stays ≤ tol,
+//            but no step is asked for less than round-off), the
 //            two half steps advance, h ← h · 0.9 (tol h / L / err)^(1/6).
 //            The frame may turn by at most 2.5 rad per step (h·|d| ≤ 2.5 at
 //            the nodes), below the π where its short-arc lift would flip.

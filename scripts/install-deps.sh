@@ -11,6 +11,7 @@ packages=(
   libosmesa6-dev libstb-dev fonts-dejavu-core
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   libmuparser-dev
+  gnuplot-nox
   clang libclang-rt-14-dev time
 )
 

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "app/commands.hpp"
 #include "core/error.hpp"
@@ -16,6 +17,18 @@ int main(int argc, char** argv) {
   rollspin::app::registerSolveCommands(cli, handler);
   rollspin::app::registerRenderCommands(cli, handler);
   rollspin::app::registerReportCommands(cli, handler);
+
+  // Name an unknown command instead of CLI11's generic "a subcommand is required".
+  std::string known;
+  bool isKnown = false;
+  for (const CLI::App* sub : cli.get_subcommands({})) {
+    known += (known.empty() ? "" : ", ") + sub->get_name();
+    isKnown = isKnown || (argc > 1 && sub->get_name() == argv[1]);
+  }
+  if (argc > 1 && argv[1][0] != '-' && !isKnown) {
+    std::fprintf(stderr, "rollspin: error: unknown command '%s'; commands: %s\n", argv[1], known.c_str());
+    return 2;
+  }
 
   try {
     cli.parse(argc, argv);

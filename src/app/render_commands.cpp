@@ -39,6 +39,9 @@ struct CompareOptions {
 };
 
 int runCompare(const CompareOptions& o) {
+  for (const auto& [flag, value] : {std::pair{"--max-delta", o.maxDelta}, std::pair{"--mean-delta", o.meanDelta}})
+    if (!(value >= 0.0 && value <= 255.0))
+      throw badInput({flag}, "expected a tolerance in [0, 255], got {}", value);
   const media::Image a = media::loadImage(o.a, SourceLoc{o.a});
   const media::Image b = media::loadImage(o.b, SourceLoc{o.b});
   if (a.width != b.width || a.height != b.height) {
@@ -79,8 +82,11 @@ void registerRenderCommands(CLI::App& cli, CommandHandler& handler) {
   CLI::App* cmp = cli.add_subcommand("compare", "Compare two images (exit 0 within tolerance, 1 not, 2 bad input)");
   cmp->add_option("a", compare->a, "First image (PNG/JPG)")->required();
   cmp->add_option("b", compare->b, "Second image (PNG/JPG)")->required();
-  cmp->add_option("--max-delta", compare->maxDelta, "Largest allowed per-channel difference (0-255, default 0)");
-  cmp->add_option("--mean-delta", compare->meanDelta, "Largest allowed mean per-channel difference (default 0)");
+  // Negative or out-of-range tolerances are bad input (exit 2), not "different".
+  cmp->add_option("--max-delta", compare->maxDelta, "Largest allowed per-channel difference (0-255, default 0)")
+      ->check(CLI::Range(0.0, 255.0));
+  cmp->add_option("--mean-delta", compare->meanDelta, "Largest allowed mean per-channel difference (default 0)")
+      ->check(CLI::Range(0.0, 255.0));
   cmp->add_option("--diff", compare->diff, "Write a heat map of the difference (PNG)");
   cmp->callback([compare, &handler] { handler = [compare] { return runCompare(*compare); }; });
 }

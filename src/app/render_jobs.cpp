@@ -1,5 +1,7 @@
 #include "app/render_jobs.hpp"
 
+#include "core/memory_budget.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -83,6 +85,22 @@ std::shared_ptr<const render::TextureImage> loadBallTexture(const scene::SceneSp
   return texture;
 }
 
+void checkFrameMemory(const scene::SceneSpec& spec) {
+  // Per pixel: multisampled colour and depth-stencil (4 + 4 bytes per sample),
+  // the resolved colour, the read-back, the flipped image and the PNG rows
+  // (4 bytes each); plus a fixed 96 MiB for the shadow map, the GL stack and
+  // the meshes. Refuse before creating a context when that cannot fit.
+  const std::uint64_t pixels = static_cast<std::uint64_t>(spec.render.width) * spec.render.height;
+  const std::uint64_t needed = pixels * (8ULL * spec.render.msaa + 16ULL) + (96ULL << 20);
+  const auto available = availableMemoryBytes();
+  if (available && needed > *available) {
+    const std::string key = spec.locations.contains("render.height") ? "render.height" : "render.width";
+    throw badInput(spec.where(key), "{}x{} with {}x MSAA needs about {} MiB for its frame buffers, but only {} MiB "
+                                    "are available",
+                   spec.render.width, spec.render.height, spec.render.msaa, needed >> 20, *available >> 20);
+  }
+}
+
 std::filesystem::path renderStill(const StillOptions& o) {
   for (const auto& [flag, value] : {std::pair{"--width", o.width}, std::pair{"--height", o.height}})
     if (value && (*value < 1 || *value > 8192))
@@ -93,6 +111,7 @@ std::filesystem::path renderStill(const StillOptions& o) {
   if (o.height) overrides.push_back("render.height=" + std::to_string(*o.height));
   if (o.transparent) overrides.push_back("render.transparent=true");
   const scene::SceneSpec spec = scene::loadSceneFile(o.scenePath, overrides);
+  checkFrameMemory(spec);
   const RollingModel model = buildModel(spec);
   const double length = model.path->length();
   double s = spec.render.strobe > 1 ? length : 0.5 * length;

@@ -45,6 +45,10 @@ struct StillOptions {
 };
 
 // Renders one still and writes it; returns the path written.
+// Refuses (BadInput, with the numbers) a frame size whose buffers would not
+// fit in the memory available to the process.
+void checkFrameMemory(const scene::SceneSpec& spec);
+
 std::filesystem::path renderStill(const StillOptions& options);
 
 }  // namespace rollspin::app

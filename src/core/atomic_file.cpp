@@ -12,6 +12,9 @@ namespace rollspin {
 AtomicFile::AtomicFile(std::filesystem::path finalPath) : finalPath_(std::move(finalPath)) {
   const auto dir = finalPath_.has_parent_path() ? finalPath_.parent_path() : std::filesystem::path(".");
   std::error_code ec;
+  if (std::filesystem::is_directory(finalPath_, ec)) {
+    throw runtimeError({finalPath_.string()}, "the output '{}' is a directory; give a file name", finalPath_.string());
+  }
   if (!std::filesystem::is_directory(dir, ec)) {
     throw runtimeError({finalPath_.string()}, "output directory '{}' does not exist", dir.string());
   }

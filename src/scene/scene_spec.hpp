@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
 
@@ -21,17 +22,23 @@ struct BallSpec {
   std::optional<Vec3> marker;  // body point whose direction is the tracked Bloch vector; default: the top n(0)
 };
 
-enum class SurfaceKind { Plane, Sphere };
+enum class SurfaceKind { Plane, Sphere, Cylinder, Torus, Paraboloid, Saddle, Height };
+// Height fields (paraboloid, saddle, height) say "above" / "below": stored as Outside / Inside.
 enum class SurfaceSide { Outside, Inside };
 
 struct SurfaceSpec {
   SurfaceKind kind = SurfaceKind::Plane;
   Vec3 normal{0.0, 0.0, 1.0};  // plane: unit normal on the ball's side (normalised on load)
-  double radius = 3.0;          // sphere: r
+  double radius = 3.0;          // sphere: r; cylinder: a
   SurfaceSide side = SurfaceSide::Outside;
+  Vec3 axis{0.0, 0.0, 1.0};     // cylinder: axis through the origin (normalised on load)
+  double majorRadius = 3.0;     // torus: A (about the z axis)
+  double minorRadius = 1.0;     // torus: tube radius a
+  double a = 4.0, b = 4.0;      // paraboloid / saddle: z = (x²/a ± y²/b)/2
+  std::string z = "0";          // height: z = f(x, y), a muparser expression
 };
 
-enum class PathKind { Line, Circle, Parallel };
+enum class PathKind { Line, Circle, Parallel, Meridian, Helix, Loxodrome, Geodesic, Uv, Points };
 
 struct PathSpec {
   PathKind kind = PathKind::Circle;
@@ -41,6 +48,21 @@ struct PathSpec {
   std::optional<Vec3> directionVector;  // line; default: horizontal in the plane (see README)
   double radius = 3.0;                // circle: contact circle radius r
   double colatitudeDeg = 60.0;        // parallel: θ in degrees
+  // Curved surfaces (issue 3). Angles in degrees; see README "Curves".
+  double tubeAngleDeg = 0.0;          // torus parallel / meridian start: ψ (0 = outer equator)
+  double height = 0.0;                // cylinder parallel / helix / meridian: start height along the axis
+  double azimuthDeg = 0.0;            // meridian, loxodrome: φ0
+  double colatitudeStartDeg = 30.0;   // sphere meridian, loxodrome: θ0
+  double colatitudeEndDeg = 150.0;    // sphere meridian, loxodrome: θ1
+  double pitchAngleDeg = 30.0;        // helix: β from the parallels
+  double headingDeg = 45.0;           // loxodrome: α from the meridians
+  std::optional<Vec3> startPoint;     // geodesic: projected onto the surface; default per surface
+  std::string u = "t", v = "0";       // uv: surface parameters as expressions of t
+  double tStart = 0.0, tEnd = 1.0;    // uv: range of t
+  std::vector<std::vector<double>> points;  // points: [u, v] parameters or [x, y, z] points
+  bool closed = false;                // points: periodic spline / closed polygon
+  std::string interpolation = "spline";  // points: "spline" | "polyline"
+  double cornerRadius = 0.0;          // points, polyline: arc radius rounding each corner
 };
 
 struct PlateSpec {

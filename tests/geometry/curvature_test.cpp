@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <numbers>
 
 #include "geometry/analytic_paths.hpp"
@@ -73,6 +75,25 @@ TEST(Curvature, ParaboloidParallelsMatchClosedForms) {
         EXPECT_NEAR(f.normalCurvature, side / (a * q), 1e-13);
         EXPECT_NEAR(std::abs(f.geodesicCurvature), 1.0 / (rho * q), 1e-13);
         EXPECT_NEAR(f.geodesicTorsion, 0.0, 1e-13);
+      }
+    }
+}
+
+TEST(Curvature, LoxodromeMatchesClosedForms) {
+  // Heading α from the meridians on a sphere of radius r: κ_n = ∓1/r (every
+  // direction is principal: τ_g = 0), |κ_g| = |sin α cot θ| / r.
+  const double r = 3.0;
+  for (bool outside : {true, false})
+    for (double alpha : {-60 * kDeg, 20 * kDeg, 75 * kDeg}) {
+      auto sphere = std::make_shared<const Sphere>(r, outside ? Side::Outside : Side::Inside);
+      const auto path = sphereLoxodrome(sphere, alpha, 0.3, 25 * kDeg, 160 * kDeg);
+      EXPECT_NEAR(path->length(), r * (135 * kDeg) / std::cos(alpha), 1e-12);
+      for (double s : grid(path->length(), 30)) {
+        const DarbouxSample f = path->at(s);
+        const double theta = path->uvAt(s).x();
+        EXPECT_NEAR(f.normalCurvature, (outside ? -1.0 : 1.0) / r, 1e-13);
+        EXPECT_NEAR(f.geodesicTorsion, 0.0, 1e-13);
+        EXPECT_NEAR(std::abs(f.geodesicCurvature), std::abs(std::sin(alpha) / std::tan(theta)) / r, 1e-12);
       }
     }
 }
@@ -174,6 +195,7 @@ TEST(Torsion, DroppingItOnAHelixChangesTheResult) {
   const double gapWith = rotationGap(with, truth), gapWithout = rotationGap(without, truth);
   EXPECT_LE(gapWith, 1e-10);
   EXPECT_GT(gapWithout, 1e-3);
+  if (std::getenv("ROLLSPIN_VERBOSE")) std::printf("helix: with τ_g %.2e, without %.3e rad\n", gapWith, gapWithout);
   RecordProperty("gap_with_torsion", std::to_string(gapWith));
   RecordProperty("gap_without_torsion", std::to_string(gapWithout));
 }

@@ -2,6 +2,7 @@
 // code, stdout and stderr: the CLI is tested the way a user meets it.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -15,7 +16,10 @@ struct CliResult {
 };
 
 // argv excludes the program name. cwd: working directory ("" = current).
-CliResult runRollspin(const std::vector<std::string>& args, const std::filesystem::path& cwd = {});
+// addressSpaceLimit: RLIMIT_AS for the child in bytes (0 = unlimited), to
+// simulate a machine with little memory.
+CliResult runRollspin(const std::vector<std::string>& args, const std::filesystem::path& cwd = {},
+                      std::uint64_t addressSpaceLimit = 0);
 
 // A fresh empty directory under the build tree for one test.
 std::filesystem::path freshTempDir(const std::string& name);

@@ -1,0 +1,174 @@
+// The bad-input matrix: every command fed broken input. Each case checks the
+// exit code (2 bad input, 1 runtime failure), that the message names the
+// problem, that nothing is left at the output path (nor a temporary beside
+// it), and — in the sanitizer build — that nothing crashed.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <functional>
+#include <random>
+
+#include "support/cli_runner.hpp"
+
+using rollspin::test::freshTempDir;
+using rollspin::test::runRollspin;
+using rollspin::test::sourceDir;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Case {
+  const char* name;
+  std::vector<std::string> args;  // {DIR} → a fresh directory, {SCENE} → scenes/lollipop.toml
+  int exitCode;
+  const char* message;            // must appear on stderr
+  const char* output = nullptr;   // relative to {DIR}: must not exist afterwards
+  std::function<void(const fs::path&)> prepare = {};
+};
+
+void write(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+
+void writeRandom(const fs::path& p, std::size_t n) {
+  std::mt19937 rng(42);
+  std::string bytes(n, '\0');
+  for (auto& c : bytes) c = static_cast<char>(rng());
+  write(p, bytes);
+}
+
+void writeScene(const fs::path& dir, const std::string& text) { write(dir / "s.toml", text); }
+
+std::vector<Case> cases() {
+  const std::string out = "{DIR}/out";
+  std::vector<Case> c = {
+      // ---- command line ------------------------------------------------
+      {"no command", {}, 2, "subcommand"},
+      {"unknown command", {"explode"}, 2, "explode"},
+      {"unknown option", {"solve", "{SCENE}", "--frobnicate"}, 2, "frobnicate"},
+      {"solve without scene", {"solve"}, 2, "scene"},
+      // ---- scene files ------------------------------------------------
+      {"missing scene", {"solve", "{DIR}/nope.toml"}, 2, "cannot read the scene file"},
+      {"scene is a directory", {"solve", "{DIR}"}, 2, "cannot read the scene file"},
+      {"binary garbage scene", {"timeline", "{DIR}/s.toml", "-o", out + ".csv"}, 2, "TOML syntax error", "out.csv",
+       [](const fs::path& d) { writeRandom(d / "s.toml", 600); }},
+      {"empty key", {"solve", "{DIR}/s.toml"}, 2, "syntax", nullptr, [](const fs::path& d) { writeScene(d, "= 3\n"); }},
+      {"nan radius", {"timeline", "{SCENE}", "--set", "ball.radius=nan", "-o", out + ".csv"}, 2, "finite", "out.csv"},
+      {"inf radius", {"timeline", "{SCENE}", "--set", "ball.radius=inf", "-o", out + ".csv"}, 2, "finite", "out.csv"},
+      {"negative radius", {"solve", "{SCENE}", "--set", "ball.radius=-1"}, 2, "ball.radius"},
+      {"zero radius", {"solve", "{SCENE}", "--set", "path.radius=0"}, 2, "path.radius"},
+      {"huge turns", {"timeline", "{SCENE}", "--set", "path.turns=1e300", "-o", out + ".csv"}, 2, "above the limit",
+       "out.csv"},
+      {"huge steps", {"solve", "{SCENE}", "--set", "solver.steps=1000000000000"}, 2, "solver.steps"},
+      {"negative steps", {"solve", "{SCENE}", "--set", "solver.steps=-5"}, 2, "solver.steps"},
+      {"too many samples", {"timeline", "{SCENE}", "--set", "timeline.samples=1000000000", "-o", out + ".csv"}, 2,
+       "timeline.samples", "out.csv"},
+      {"wrong type", {"solve", "{SCENE}", "--set", "path.turns=[1,2]"}, 2, "path.turns"},
+      {"unknown key", {"solve", "{SCENE}", "--set", "path.color=red"}, 2, "unknown key"},
+      {"unknown section", {"solve", "{SCENE}", "--set", "physics.g=9.8"}, 2, "unknown key"},
+      {"ball does not fit", {"solve", "{DIR}/s.toml"}, 2, "does not fit", nullptr,
+       [](const fs::path& d) { writeScene(d, "[ball]\nradius = 5\n[surface]\nkind = \"sphere\"\nside = \"inside\"\n"); }},
+      {"impossible colatitude", {"solve", "{DIR}/s.toml", "--set", "path.colatitude_deg=-10"}, 2, "colatitude", nullptr,
+       [](const fs::path& d) { writeScene(d, "[surface]\nkind = \"sphere\"\n"); }},
+      {"path leaves the surface", {"solve", "{DIR}/s.toml", "--set", "path.direction_vector=[0,0,1]"}, 2,
+       "leaves the surface", nullptr, [](const fs::path& d) { writeScene(d, "[path]\nkind = \"line\"\n"); }},
+      // ---- outputs -------------------------------------------------------
+      {"timeline into a missing directory", {"timeline", "{SCENE}", "-o", "{DIR}/missing/t.csv"}, 1, "does not exist"},
+      {"timeline onto a directory", {"timeline", "{SCENE}", "-o", "{DIR}"}, 1, "is a directory"},
+      {"timeline to a full disk", {"timeline", "{SCENE}", "-o", "/dev/full"}, 1, "write failed"},
+      {"timeline into /proc", {"timeline", "{SCENE}", "-o", "/proc/rollspin.csv"}, 1, "cannot write"},
+      // ---- render --------------------------------------------------------
+      {"zero width", {"render", "{SCENE}", "--still", "--width", "0", "-o", out + ".png"}, 2, "--width", "out.png"},
+      {"width above the limit", {"render", "{SCENE}", "--still", "--width", "9000", "-o", out + ".png"}, 2, "8192",
+       "out.png"},
+      {"negative height", {"render", "{SCENE}", "--still", "--height", "-5", "-o", out + ".png"}, 2, "--height",
+       "out.png"},
+      {"scene width zero", {"render", "{SCENE}", "--still", "--set", "render.width=0", "-o", out + ".png"}, 2,
+       "render.width", "out.png"},
+      {"unknown layout", {"render", "{SCENE}", "--still", "--set", "render.layout=grid", "-o", out + ".png"}, 2,
+       "render.layout", "out.png"},
+      {"missing texture", {"render", "{SCENE}", "--still", "--set", "ball.texture={DIR}/none.png", "-o", out + ".png"},
+       2, "cannot read the image", "out.png"},
+      {"corrupt texture",
+       {"render", "{SCENE}", "--still", "--set", "ball.texture={DIR}/bad.png", "-o", out + ".png"}, 2,
+       "not a readable PNG", "out.png", [](const fs::path& d) { writeRandom(d / "bad.png", 2000); }},
+      {"truncated PNG texture",
+       {"render", "{SCENE}", "--still", "--set", "ball.texture={DIR}/cut.png", "-o", out + ".png"}, 2, "cut.png",
+       "out.png", [](const fs::path& d) { write(d / "cut.png", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16)); }},
+      {"texture is a directory", {"render", "{SCENE}", "--still", "--set", "ball.texture={DIR}", "-o", out + ".png"}, 2,
+       "cannot read the image", "out.png"},
+      {"fraction outside [0,1]", {"render", "{SCENE}", "--still", "--at", "fraction=1.5", "-o", out + ".png"}, 2,
+       "fraction", "out.png"},
+      {"negative arc length", {"render", "{SCENE}", "--still", "--at", "s=-2", "-o", out + ".png"}, 2, "arc length",
+       "out.png"},
+      {"garbage --at", {"render", "{SCENE}", "--still", "--at", "middle", "-o", out + ".png"}, 2, "--at", "out.png"},
+      {"bad msaa", {"render", "{SCENE}", "--still", "--set", "render.msaa=3", "-o", out + ".png"}, 2, "render.msaa",
+       "out.png"},
+      {"bad strobe", {"render", "{SCENE}", "--still", "--set", "render.strobe=-4", "-o", out + ".png"}, 2,
+       "render.strobe", "out.png"},
+      {"missing shader dir", {"render", "{SCENE}", "--still", "--shader-dir", "{DIR}/none", "-o", out + ".png"}, 2,
+       "shader", "out.png"},
+      {"still into a missing directory", {"render", "{SCENE}", "--still", "-o", "{DIR}/missing/x.png"}, 1,
+       "does not exist"},
+      {"still to a full disk", {"render", "{SCENE}", "--still", "--width", "64", "--height", "64", "-o", "/dev/full"}, 1,
+       "write failed"},
+      // ---- compare -------------------------------------------------------
+      {"compare missing file", {"compare", "{DIR}/a.png", "{DIR}/b.png"}, 2, "cannot read the image"},
+      {"compare corrupt file", {"compare", "{DIR}/bad.png", "{DIR}/bad.png"}, 2, "not a readable PNG", nullptr,
+       [](const fs::path& d) { writeRandom(d / "bad.png", 300); }},
+      {"compare negative tolerance", {"compare", "{DIR}/bad.png", "{DIR}/bad.png", "--max-delta", "-1"}, 2,
+       "max-delta"},
+      {"compare nan tolerance", {"compare", "{DIR}/bad.png", "{DIR}/bad.png", "--mean-delta", "nan"}, 2,
+       "mean-delta"},
+  };
+  return c;
+}
+
+std::string substitute(std::string arg, const fs::path& dir) {
+  for (const auto& [key, value] :
+       {std::pair{std::string("{DIR}"), dir.string()},
+        std::pair{std::string("{SCENE}"), (sourceDir() / "scenes" / "lollipop.toml").string()}}) {
+    for (auto at = arg.find(key); at != std::string::npos; at = arg.find(key)) arg.replace(at, key.size(), value);
+  }
+  return arg;
+}
+
+}  // namespace
+
+TEST(BadInputMatrix, EveryCaseFailsCleanly) {
+  const auto all = cases();
+  ASSERT_GE(all.size(), 40u);
+  for (const Case& c : all) {
+    const fs::path dir = freshTempDir("matrix");
+    if (c.prepare) c.prepare(dir);
+    std::vector<std::string> args;
+    for (const auto& a : c.args) args.push_back(substitute(a, dir));
+    const auto r = runRollspin(args);
+    EXPECT_EQ(r.exitCode, c.exitCode) << c.name << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.name << ": '" << c.message << "' not in\n" << r.err;
+    EXPECT_EQ(r.err.find("AddressSanitizer"), std::string::npos) << c.name;
+    EXPECT_EQ(r.err.find("runtime error"), std::string::npos) << c.name;  // UBSan
+    if (c.output != nullptr) {
+      EXPECT_FALSE(fs::exists(dir / c.output)) << c.name;
+      for (const auto& e : fs::directory_iterator(dir))
+        EXPECT_EQ(e.path().extension(), e.path().extension() == ".tmp" ? ".none" : e.path().extension())
+            << c.name << ": temporary left behind: " << e.path();
+    }
+    fs::remove_all(dir);
+  }
+}
+
+TEST(BadInputMatrix, FrameBuffersLargerThanMemoryAreRefusedUpFront) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: RLIMIT_AS cannot be set";
+#else
+  // 8192² with 4× MSAA needs ~3.1 GiB; allow the process 2 GiB of address space.
+  const fs::path dir = freshTempDir("memory");
+  const auto r = runRollspin({"render", (sourceDir() / "scenes" / "lollipop.toml").string(), "--still", "--width",
+                              "8192", "--height", "8192", "-o", (dir / "big.png").string()},
+                             {}, 2ULL << 30);
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("MiB"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("available"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "big.png"));
+  fs::remove_all(dir);
+#endif
+}

@@ -65,6 +65,7 @@ class Reader {
   std::optional<bool> boolean(const toml::table* t, const std::string& section, const std::string& key);
   std::optional<std::string> anyText(const toml::table* t, const std::string& section, const std::string& key);
   void readRender();
+  void readAnimation();
   void forbid(const toml::table* t, const std::string& section, const std::string& key, const std::string& why);
 
   [[noreturn]] void fail(const std::string& key, const SourceLoc& loc, const std::string& expected,
@@ -176,7 +177,7 @@ std::optional<std::string> Reader::anyText(const toml::table* t, const std::stri
 void Reader::readRender() {
   const toml::table* render = section(
       "render", {"width", "height", "layout", "strobe", "title", "labels", "transparent", "msaa", "azimuth_deg",
-                 "elevation_deg", "distance", "target", "follow", "fov_deg"});
+                 "elevation_deg", "distance", "target", "follow", "fov_deg", "format"});
   RenderSpec& r = spec_.render;
   constexpr long long kMaxSide = 8192;  // "8K": the renderer's size limit
   for (const char* key : {"width", "height"}) {
@@ -222,6 +223,44 @@ void Reader::readRender() {
   }
   if (r.follow && spec_.locations.contains("render.target"))
     failAt("render.target", "conflicts with render.follow = true (the camera then targets the ball)");
+  if (auto f = text(render, "render", "format", {"mp4", "png"}))
+    r.format = *f == "mp4" ? VideoFormat::Mp4 : VideoFormat::Png;
+}
+
+// [animation] — frame time → arc length, and the H.264 settings (video issue).
+void Reader::readAnimation() {
+  const toml::table* animation =
+      section("animation", {"fps", "duration", "speed", "easing", "hold", "crf", "preset"});
+  AnimationSpec& a = spec_.animation;
+  if (auto n = integer(animation, "animation", "fps")) {
+    if (*n < 1 || *n > 240) failAt("animation.fps", fmt::format("expected frames per second in [1, 240], got {}", *n));
+    a.fps = *n;
+  }
+  if (auto d = number(animation, "animation", "duration")) {
+    if (!(*d > 0.0 && *d <= 36000.0))
+      failAt("animation.duration", fmt::format("expected a duration in (0, 36000] seconds, got {}", *d));
+    a.duration = *d;
+  }
+  if (auto v = number(animation, "animation", "speed")) {
+    if (!(*v > 0.0)) failAt("animation.speed", fmt::format("expected an arc length per second > 0, got {}", *v));
+    if (spec_.locations.contains("animation.duration"))
+      failAt("animation.speed", "conflicts with animation.duration: give the duration or the speed, not both");
+    a.speed = *v;
+  }
+  if (auto e = text(animation, "animation", "easing", {"linear", "smooth"}))
+    a.easing = *e == "linear" ? Easing::Linear : Easing::Smooth;
+  if (auto h = number(animation, "animation", "hold")) {
+    if (!(*h >= 0.0 && *h <= 3600.0))
+      failAt("animation.hold", fmt::format("expected a hold in [0, 3600] seconds, got {}", *h));
+    a.hold = *h;
+  }
+  if (auto c = number(animation, "animation", "crf")) {
+    if (!(*c >= 0.0 && *c <= 51.0)) failAt("animation.crf", fmt::format("expected a CRF in [0, 51], got {}", *c));
+    a.crf = *c;
+  }
+  if (auto p = text(animation, "animation", "preset",
+                    {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}))
+    a.preset = *p;
 }
 
 std::optional<std::string> Reader::expression(const toml::table* t, const std::string& section,
@@ -276,7 +315,7 @@ double norm3(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] 
 
 SceneSpec Reader::read() {
   spec_.sourceFile = file_;
-  static const std::set<std::string> kSections{"ball", "surface", "path", "plate", "solver", "timeline", "render"};
+  static const std::set<std::string> kSections{"ball", "surface", "path", "plate", "solver", "timeline", "render", "animation"};
   for (auto&& [k, v] : root_) {
     const std::string key(k.str());
     if (!kSections.contains(key)) {
@@ -593,6 +632,7 @@ SceneSpec Reader::read() {
   }
 
   readRender();
+  readAnimation();
   return spec_;
 }
 

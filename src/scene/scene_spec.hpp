@@ -85,6 +85,7 @@ struct TimelineSpec {
 };
 
 enum class RenderLayout { SideBySide, Inset, Ball, Twin };
+enum class VideoFormat { Mp4, Png };  // an animation's sink: one MP4, or a folder of PNG frames
 
 // [render]: stills and frames. Camera: orbit about `target` (default: the
 // path's centre) at `distance` (default: frames the whole path), or `follow`.
@@ -103,6 +104,21 @@ struct RenderSpec {
   std::optional<Vec3> target;
   bool follow = false;
   double fovDeg = 32.0;
+  std::optional<VideoFormat> format;  // animations; default: from the output's extension, else mp4
+};
+
+enum class Easing { Linear, Smooth };
+
+// [animation]: how frame time maps to arc length, and the encoder's settings.
+// The motion lasts `duration` seconds, or L/speed when `speed` is given.
+struct AnimationSpec {
+  long long fps = 30;
+  double duration = 10.0;        // seconds for the whole path
+  std::optional<double> speed;   // arc length per second (instead of duration)
+  Easing easing = Easing::Smooth;
+  double hold = 0.5;             // seconds the first and the last frame are held
+  double crf = 18.0;             // H.264 constant rate factor (0 lossless … 51)
+  std::string preset = "medium"; // x264 preset
 };
 
 struct SceneSpec {
@@ -115,6 +131,7 @@ struct SceneSpec {
   SolverSpec solver;
   TimelineSpec timeline;
   RenderSpec render;
+  AnimationSpec animation;
 
   // Where a dotted key ("ball.radius") was set; the file (no line) when the
   // key took its default.

@@ -53,6 +53,8 @@ const BadCase kCases[] = {
     {"corner without a radius",
      "[path]\nkind = \"points\"\npoints = [[0, 0], [2, 0], [2, 2]]\ninterpolation = \"polyline\"\n", "path.points",
      ":3:", "corner at point 2"},
+    {"kink in a uv curve", "[path]\nkind = \"uv\"\nu = \"t\"\nv = \"abs(t - 0.5)\"\n", "path.u", ":3:",
+     "corner at curve parameter 0.5"},
     {"torus key on a sphere", "[surface]\nkind = \"sphere\"\nmajor_radius = 3\n", "surface.major_radius", ":3:",
      "torus"},
     {"helix on a sphere", "[surface]\nkind = \"sphere\"\n[path]\nkind = \"helix\"\n", "path.kind", ":4:",

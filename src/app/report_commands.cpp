@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,6 +29,10 @@ struct ReportArgs {
 report::ReportOptions optionsFrom(const ReportArgs& a) {
   report::ReportOptions o;
   o.outDir = a.outDir;
+  // Fail before the work, not after it, when the folder cannot be made.
+  std::error_code ec;
+  std::filesystem::create_directories(o.outDir, ec);
+  if (ec) throw runtimeError(SourceLoc{"--output-dir " + a.outDir}, "cannot create {}: {}", a.outDir, ec.message());
   o.progress = [](const std::string& line) { std::fprintf(stderr, "rollspin: %s\n", line.c_str()); };
   return o;
 }

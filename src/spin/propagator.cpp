@@ -281,9 +281,18 @@ SolveStats Propagator::run(const SampleArcLengths& sampleS, const SampleSink& si
             w[j * kMaxNodes + i] = rigidField ? Vec3(power(j) * anchors[i])
                                               : omega(sBlock + (static_cast<double>(j) + nodes[i]) * h);
           }
-          elements[j] = method_ == Method::Frame4
-                            ? frame4Element(path_, ballRadius_, sBlock + static_cast<double>(j) * h, h)
-                            : stepElement(method_, h, &w[j * kMaxNodes]);
+          if (method_ == Method::Frame4) {
+            // Each step's end node is the next step's start node, bit for
+            // bit, so the frame factors Φ(s_{j+1}) Φ(s_j)† telescope: with
+            // s + h recomputed per step the two differ by ε·s and the
+            // mismatch accumulated to 6e-4 over 1e6 lollipop turns.
+            const long long k = k0 + static_cast<long long>(j);
+            const double sj = a + static_cast<double>(k) * h;
+            const double sNext = k + 1 == n ? b : a + static_cast<double>(k + 1) * h;
+            elements[j] = frame4Element(path_, ballRadius_, sj, sNext - sj);
+          } else {
+            elements[j] = stepElement(method_, h, &w[j * kMaxNodes]);
+          }
         }
       }
 

@@ -74,6 +74,21 @@ TEST(Methods, Frame4IsFourthOrderOnAVaryingPath) {
   for (long long n : {40, 80}) EXPECT_NEAR(std::log2(err(n) / err(2 * n)), 4.0, 0.3) << n;
 }
 
+TEST(Methods, Frame6aBaseStepIsSixthOrderOnAVaryingPath) {
+  // frame6a's step (magnus6 on g in the Darboux frame) on a uniform grid,
+  // no error control, on the loxodrome where κ_g varies.
+  auto sphere = std::make_shared<const geometry::Sphere>(2.0, geometry::Side::Outside);
+  const auto path = geometry::sphereLoxodrome(sphere, 1.2, 0.0, 0.4, 2.6);
+  const spin::Su2 ref = solveFinal(*path, 0.7, Method::Magnus6, 4000);
+  auto err = [&](int n) {
+    spin::Su2 u;
+    const double h = path->length() / n;
+    for (int k = 0; k < n; ++k) u = spin::adaptiveStep(*path, 0.7, Method::Frame6a, u, k * h, h);
+    return spin::spinorDistance(u, ref);
+  };
+  for (int n : {10, 20}) EXPECT_NEAR(std::log2(err(n) / err(2 * n)), 6.0, 0.4) << n;
+}
+
 TEST(Methods, DormandPrinceStepIsFifthOrder) {
   // The rk45 base step on a uniform grid (no error control): order 5 in the
   // raw quaternion. (The leading local error, (1/600 − 1/720)(h ω)⁶ for a

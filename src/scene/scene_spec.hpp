@@ -57,7 +57,7 @@ struct PathSpec {
   double pitchAngleDeg = 30.0;        // helix: β from the parallels
   double headingDeg = 45.0;           // loxodrome: α from the meridians
   std::optional<Vec3> startPoint;     // geodesic: projected onto the surface; default per surface
-  std::string u = "t", v = "0";       // uv: surface parameters as expressions of t
+  std::string u = "0.5 + t", v = "t";  // uv: surface parameters as expressions of t (valid on every surface)
   double tStart = 0.0, tEnd = 1.0;    // uv: range of t
   std::vector<std::vector<double>> points;  // points: [u, v] parameters or [x, y, z] points
   bool closed = false;                // points: periodic spline / closed polygon

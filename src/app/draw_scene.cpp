@@ -94,6 +94,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
     lo = lo.cwiseMin(c - Vec3::Constant(R));
     hi = hi.cwiseMax(c + Vec3::Constant(R));
   }
+  dotMesh_ = render::uvSphere(24, 12);  // small dots need few triangles
   const bool layoutShowsTwin = spec.render.layout != scene::RenderLayout::Ball;
   if (layoutShowsTwin) blochSphereMesh_ = render::uvSphere(64, 32);
   const bool layoutShowsBall = spec.render.layout != scene::RenderLayout::Twin;
@@ -101,9 +102,12 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
   if (!ballTexture_) ballTexture_ = render::tennisBallTexture();
 
   sphereMesh_ = render::uvSphere(96, 48);
+  // Surfaces receive the ball's shadow but cast none: a surface shadowing
+  // itself only adds acne, and where the ball's shadow would pass through a
+  // surface to its far side, that side faces away from the light anyway.
   surfaceMaterial_.castsShadow = false;
   surfaceMaterial_.receivesShadow = true;
-  surfaceMaterial_.specular = 0.08f;
+  surfaceMaterial_.specular = 0.0f;  // matte: cheaper, and no glare on the board
   surfaceMaterial_.shininess = 16.0f;
   surfaceMaterial_.pattern = render::Pattern::Checker;
   surfaceMaterial_.cull = render::Cull::None;
@@ -145,8 +149,6 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
         const double phi = 2.0 * std::numbers::pi * k / 180;
         cutRim_.push_back(offset * toEye + rimRadius * (std::cos(phi) * e1 + std::sin(phi) * e2));
       }
-    } else {
-      surfaceMaterial_.castsShadow = true;  // the globe hides the ball's shadow from its far side
     }
     surfaceMesh_ = render::parametricPatch(
         [&](float a, float b, glm::vec3& p, glm::vec3& nn) {
@@ -207,7 +209,6 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
           std::clamp(int(cellsU * 4), 16, 256), std::clamp(int(cellsV * 4), 16, 256), glm::vec2(cellsU, cellsV));
       surfaceMaterial_.color = {0.78f, 0.77f, 0.74f};
       surfaceMaterial_.color2 = {0.55f, 0.57f, 0.60f};
-      surfaceMaterial_.castsShadow = true;  // may hide the ball's shadow from its own far side
       for (const auto& v : surfaceMesh_->vertices) {
         const Vec3 p(v.position.x, v.position.y, v.position.z);
         lo = lo.cwiseMin(p);
@@ -488,7 +489,7 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
                            glm::translate(glm::mat4(1.0f), toGlm(c)) * worldFromBody * glm::scale(glm::mat4(1.0f), glm::vec3(float(R))),
                            ballMaterial, view});
     const Vec3 marker = c + 0.97 * R * pose.q.rotate(markerBody_);
-    list.meshes.push_back({sphereMesh_,
+    list.meshes.push_back({dotMesh_,
                            glm::translate(glm::mat4(1.0f), toGlm(marker)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.13 * R))),
                            markerMaterial, view});
   };
@@ -621,7 +622,7 @@ void SceneDrawer::addTwinView(render::DrawList& list, const FrameOrientations& f
   list.meshes.push_back({blochSphere, glm::mat4(1.0f), glass, view});
   render::Material origin;
   origin.color = {0.2f, 0.2f, 0.22f};
-  list.meshes.push_back({blochSphere, glm::scale(glm::mat4(1.0f), glm::vec3(0.035f)), origin, view});
+  list.meshes.push_back({dotMesh_, glm::scale(glm::mat4(1.0f), glm::vec3(0.035f)), origin, view});
 
   // Equator and two meridians, and the axes.
   const glm::vec4 gridColor{0.30f, 0.36f, 0.45f, 0.75f};

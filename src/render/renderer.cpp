@@ -158,7 +158,7 @@ struct MeshViewUniforms {
 
 struct Renderer::Impl {
   ShaderLibrary library;  // a copy: mesh variants compile lazily
-  std::map<int, Program> meshPrograms;  // by variant: pattern * 4 + shadowed * 2 + lit
+  std::map<int, Program> meshPrograms;  // by variant: pattern * 8 + shadowed * 4 + lit * 2 + specular
   MeshViewUniforms viewUniforms;
   Program shadow, line, text, background;
   GLuint emptyVao = 0;
@@ -392,12 +392,13 @@ struct Renderer::Impl {
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
 
-  Program& meshProgram(int pattern, bool shadowed, bool lit) {
-    const int key = pattern * 4 + (shadowed ? 2 : 0) + (lit ? 1 : 0);
+  Program& meshProgram(int pattern, bool shadowed, bool lit, bool specular) {
+    const int key = pattern * 8 + (shadowed ? 4 : 0) + (lit ? 2 : 0) + (specular ? 1 : 0);
     auto it = meshPrograms.find(key);
     if (it == meshPrograms.end()) {
-      const std::string defines = fmt::format("#define PATTERN {}\n#define SHADOWED {}\n#define LIT {}\n", pattern,
-                                              shadowed ? 1 : 0, lit ? 1 : 0);
+      const std::string defines =
+          fmt::format("#define PATTERN {}\n#define SHADOWED {}\n#define LIT {}\n#define SPECULAR {}\n", pattern,
+                      shadowed ? 1 : 0, lit ? 1 : 0, specular ? 1 : 0);
       it = meshPrograms.emplace(key, Program(library, "mesh.vert", "mesh.frag", {}, defines)).first;
     }
     return it->second;
@@ -412,7 +413,7 @@ struct Renderer::Impl {
       glActiveTexture(GL_TEXTURE0);
       glBindTexture(GL_TEXTURE_2D, gpuTexture(m.texture));
     }
-    Program& mesh = meshProgram(pattern, shadowOn && m.lit, m.lit);
+    Program& mesh = meshProgram(pattern, shadowOn && m.lit, m.lit, m.specular > 0.0f);
     mesh.use();
     const MeshViewUniforms& u = viewUniforms;
     mesh.set("clipFromWorld", u.clipFromWorld);
@@ -523,7 +524,9 @@ struct Renderer::Impl {
     glEnable(GL_SCISSOR_TEST);
     glScissor(v.x, glY, v.width, v.height);
     glClearColor(0.0f, 0.0f, 0.0f, list.transparent ? 0.0f : 1.0f);
-    glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
+    // With a backdrop every pixel is written anyway (geometry or backdrop):
+    // only depth needs clearing, which saves a pass over 4 samples a pixel.
+    glClear(v.background && !list.transparent ? GL_DEPTH_BUFFER_BIT : GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
@@ -575,19 +578,15 @@ struct Renderer::Impl {
     for (const PolylineItem& p : list.polylines)
       if (p.view == index && p.depthTested) drawPolyline(p, clipFromWorld, v);
 
-    // Far to near; a closed translucent mesh shows its back half first.
+    // Far to near. A closed translucent mesh shows its front half only: its
+    // back half would double the blending cost for little visual gain.
     auto depthOf = [&](const Drawable* d) { return (v.camera.viewFromWorld * d->worldFromModel[3]).z; };
     std::stable_sort(translucent.begin(), translucent.end(),
                      [&](const Drawable* a, const Drawable* b) { return depthOf(a) < depthOf(b); });
     for (GLenum plane = 0; plane < 5; ++plane) glEnable(GL_CLIP_DISTANCE0 + plane);
     for (const Drawable* d : translucent) {
-      // Translucent layers (glass, the Bloch sphere) take no shadow: cheap.
-      if (d->material->cull == Cull::Back) {
-        drawMesh(v, *d, false, lightClipFromWorld, Cull::Front);
-        drawMesh(v, *d, false, lightClipFromWorld, Cull::Back);
-      } else {
-        drawMesh(v, *d, false, lightClipFromWorld, d->material->cull);
-      }
+      // Translucent layers (glass, the Bloch sphere) take no shadow.
+      drawMesh(v, *d, false, lightClipFromWorld, d->material->cull);
     }
     for (GLenum plane = 0; plane < 5; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);
     glDisable(GL_CULL_FACE);

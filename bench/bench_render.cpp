@@ -5,7 +5,9 @@
 // encoding it feeds. Run: ./build/bench/bench_render
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <ctime>
 #include <string>
 #include <vector>
 
@@ -19,8 +21,10 @@ namespace {
 
 void BM_RenderFrame1080p(benchmark::State& state) {
   using namespace rollspin;
-  const std::vector<std::string> overrides{"render.width=1920", "render.height=1080", "render.layout=side-by-side",
-                                           "render.msaa=" + std::to_string(state.range(0))};
+  std::vector<std::string> overrides{"render.width=1920", "render.height=1080", "render.layout=side-by-side",
+                                     "render.msaa=" + std::to_string(state.range(0))};
+  // ROLLSPIN_BENCH_SET=key=value: one extra scene override, for experiments.
+  if (const char* extra = std::getenv("ROLLSPIN_BENCH_SET")) overrides.emplace_back(extra);
   const scene::SceneSpec spec = scene::loadSceneFile(ROLLSPIN_SOURCE_DIR "/scenes/lollipop.toml", overrides);
   const app::RollingModel model = app::buildModel(spec);
   const app::FrameOrientations frame = app::solveFrame(spec, model, 0.3 * model.path->length());
@@ -30,11 +34,23 @@ void BM_RenderFrame1080p(benchmark::State& state) {
   const char* shaderDir = std::getenv("ROLLSPIN_SHADER_DIR");
   render::Renderer renderer(*context, render::ShaderLibrary{shaderDir != nullptr ? shaderDir : ""});
   (void)renderer.render(drawer.draw(frame));  // warm-up: shader JIT, uploads
+  // CPU time of the whole process (llvmpipe's worker threads included): on a
+  // busy shared machine wall time mostly measures the neighbours, this does
+  // not. On an idle machine wall ≈ process CPU / cores.
+  auto processCpuSeconds = [] {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+  };
+  const double cpuStart = processCpuSeconds();
+  media::Image image;
   for (auto _ : state) {
     const render::DrawList list = drawer.draw(frame);
-    media::Image image = renderer.render(list);
+    renderer.render(list, image);
     benchmark::DoNotOptimize(image.rgba.data());
   }
+  state.counters["process_cpu_ms_per_frame"] =
+      1e3 * (processCpuSeconds() - cpuStart) / double(std::max<benchmark::IterationCount>(1, state.iterations()));
   state.SetLabel("1920x1080, " + std::to_string(state.range(0)) + "x MSAA, shadow, side-by-side");
 }
 // Arg = MSAA samples; 4 is the target configuration, 1 shows what MSAA costs.

@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libosmesa6-dev libstb-dev fonts-dejavu-core
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
+  ffmpeg
   libmuparser-dev
   clang libclang-rt-14-dev time
 )

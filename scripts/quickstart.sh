@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Fresh machine → rollspin's main job on the default scene: installs the
-# Debian packages, builds Release, solves the lollipop and writes its
-# orientation timeline to output/.
+# Debian packages, builds Release, solves the lollipop, writes its
+# orientation timeline to output/ and renders its video, output/lollipop.mp4.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
 ./build/rollspin solve scenes/lollipop.toml
 ./build/rollspin timeline scenes/lollipop.toml -o output/lollipop.csv
+./build/rollspin render scenes/lollipop.toml

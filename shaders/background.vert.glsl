@@ -15,5 +15,5 @@ void main() {
   // p.y = 0 at the bottom edge, 1 at the top, 2 beyond it (off screen).
   vec3 bottom = encodeSrgb(bottomColor), top = encodeSrgb(topColor);
   vColor = bottom + (top - bottom) * p.y;
-  gl_Position = vec4(p * 2.0 - 1.0, 0.9999, 1.0);
+  gl_Position = vec4(p * 2.0 - 1.0, 1.0, 1.0);  // the far plane: drawn only where nothing else is
 }

@@ -9,6 +9,7 @@
 //   PATTERN  0 plain, 1 checker, 2 texture
 //   SHADOWED 1: sample the shadow map
 //   LIT      0: flat colour (no lighting)
+//   SPECULAR 0: no highlight (matte surfaces skip its normalize and pow)
 #ifndef PATTERN
 #define PATTERN 0
 #endif
@@ -17,6 +18,9 @@
 #endif
 #ifndef LIT
 #define LIT 1
+#endif
+#ifndef SPECULAR
+#define SPECULAR 1
 #endif
 
 in vec3 vWorldPosition;
@@ -93,8 +97,12 @@ void main() {
 #endif
   // Sky light from +z, warm bounce from below.
   vec3 hemisphere = mix(vec3(0.62, 0.58, 0.55), vec3(1.0, 1.0, 1.02), 0.5 + 0.5 * n.z);
+#if SPECULAR
   vec3 h = normalize(l + v);
   float spec = ndl > 0.0 ? specular * pow(max(dot(n, h), 0.0), shininess) : 0.0;
+#else
+  const float spec = 0.0;
+#endif
   vec3 c = albedo * (ambient * hemisphere + (1.0 - ambient) * lightColor * ndl * shadow) + spec * shadow * lightColor;
   // Translucent surfaces (glass, the Bloch sphere) thicken at grazing angles.
   if (opacity < 1.0) alpha = clamp(alpha * (1.0 + 2.0 * pow(1.0 - abs(dot(n, v)), 3.0)), 0.0, 1.0);

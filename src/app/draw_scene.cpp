@@ -94,6 +94,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
     lo = lo.cwiseMin(c - Vec3::Constant(R));
     hi = hi.cwiseMax(c + Vec3::Constant(R));
   }
+  dotMesh_ = render::uvSphere(24, 12);  // small dots need few triangles
   const bool layoutShowsTwin = spec.render.layout != scene::RenderLayout::Ball;
   if (layoutShowsTwin) blochSphereMesh_ = render::uvSphere(64, 32);
   const bool layoutShowsBall = spec.render.layout != scene::RenderLayout::Twin;
@@ -103,7 +104,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
   sphereMesh_ = render::uvSphere(96, 48);
   surfaceMaterial_.castsShadow = false;
   surfaceMaterial_.receivesShadow = true;
-  surfaceMaterial_.specular = 0.08f;
+  surfaceMaterial_.specular = 0.0f;  // matte: cheaper, and no glare on the board
   surfaceMaterial_.shininess = 16.0f;
   surfaceMaterial_.pattern = render::Pattern::Checker;
   surfaceMaterial_.cull = render::Cull::None;
@@ -488,7 +489,7 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
                            glm::translate(glm::mat4(1.0f), toGlm(c)) * worldFromBody * glm::scale(glm::mat4(1.0f), glm::vec3(float(R))),
                            ballMaterial, view});
     const Vec3 marker = c + 0.97 * R * pose.q.rotate(markerBody_);
-    list.meshes.push_back({sphereMesh_,
+    list.meshes.push_back({dotMesh_,
                            glm::translate(glm::mat4(1.0f), toGlm(marker)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.13 * R))),
                            markerMaterial, view});
   };
@@ -621,7 +622,7 @@ void SceneDrawer::addTwinView(render::DrawList& list, const FrameOrientations& f
   list.meshes.push_back({blochSphere, glm::mat4(1.0f), glass, view});
   render::Material origin;
   origin.color = {0.2f, 0.2f, 0.22f};
-  list.meshes.push_back({blochSphere, glm::scale(glm::mat4(1.0f), glm::vec3(0.035f)), origin, view});
+  list.meshes.push_back({dotMesh_, glm::scale(glm::mat4(1.0f), glm::vec3(0.035f)), origin, view});
 
   // Equator and two meridians, and the axes.
   const glm::vec4 gridColor{0.30f, 0.36f, 0.45f, 0.75f};

@@ -63,7 +63,7 @@ class SceneDrawer {
   double frameRadius_ = 1.0;                             // bounding radius of all that moves
   std::vector<geometry::Vec3> framePoints_;  // the default camera keeps these (padded by R) in view
   std::shared_ptr<const render::TextureImage> ballTexture_;
-  std::shared_ptr<render::MeshData> sphereMesh_, surfaceMesh_, blochSphereMesh_, discMesh_;
+  std::shared_ptr<render::MeshData> sphereMesh_, dotMesh_, surfaceMesh_, blochSphereMesh_, discMesh_;
   render::Material surfaceMaterial_;
   glm::mat4 surfaceFromModel_{1.0f};
   geometry::Vec3 plateCircleCentre_ = geometry::Vec3::Zero();

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/animation_job.hpp"
 #include "app/commands.hpp"
 #include "app/render_jobs.hpp"
 #include "media/image_compare.hpp"
@@ -18,11 +19,33 @@ struct RenderCliOptions {
   bool stillFlag = false;
   std::string at, output, shaderDir;
   long long width = 0, height = 0;
+  std::string frames, quality;
+  bool quiet = false;
 };
 
+// Without --still: an animation (animation_job.hpp); 128 + signal when interrupted.
+int runAnimation(const RenderCliOptions& o, const CLI::App& command) {
+  for (const char* stillOnly : {"--at"})
+    if (command.count(stillOnly) > 0) throw badInput({stillOnly}, "applies to --still only");
+  AnimationOptions a;
+  a.scenePath = o.still.scenePath;
+  a.overrides = o.still.overrides;
+  a.output = o.output;
+  if (command.count("--frames") > 0) a.frames = o.frames;
+  if (command.count("--quality") > 0) a.quality = o.quality;
+  if (command.count("--width") > 0) a.width = o.width;
+  if (command.count("--height") > 0) a.height = o.height;
+  a.transparent = o.still.transparent;
+  a.quiet = o.quiet;
+  a.shaderDir = o.shaderDir;
+  const AnimationResult result = renderAnimation(a);
+  return result.interruptedBy != 0 ? 128 + result.interruptedBy : 0;
+}
+
 int runRender(RenderCliOptions& o, const CLI::App& command) {
-  if (!o.stillFlag)
-    throw badInput({"render"}, "only stills are implemented: pass --still (video output comes with the encoder)");
+  if (!o.stillFlag) return runAnimation(o, command);
+  for (const char* animationOnly : {"--frames", "--quality"})
+    if (command.count(animationOnly) > 0) throw badInput({animationOnly}, "applies to animations only (without --still)");
   if (command.count("--at") > 0) o.still.at = o.at;
   if (command.count("--width") > 0) o.still.width = o.width;
   if (command.count("--height") > 0) o.still.height = o.height;
@@ -64,11 +87,19 @@ int runCompare(const CompareOptions& o) {
 
 void registerRenderCommands(CLI::App& cli, CommandHandler& handler) {
   auto options = std::make_shared<RenderCliOptions>();
-  CLI::App* render = cli.add_subcommand("render", "Render a scene: a still PNG (--still)");
+  CLI::App* render =
+      cli.add_subcommand("render", "Render a scene: an animation (MP4 or PNG frames), or a still PNG (--still)");
   render->add_option("scene", options->still.scenePath, "Scene file (TOML)")->required();
   render->add_flag("--still", options->stillFlag, "Render one still image");
   render->add_option("--at", options->at, "Where: s=ARC_LENGTH or fraction=F (default: fraction=0.5)");
-  render->add_option("-o,--output", options->output, "Output PNG (default: output/<scene>.png)");
+  render->add_option("-o,--output", options->output,
+                     "Output: FILE.mp4, or a folder for PNG frames; with --still a PNG "
+                     "(default: output/<scene>.mp4, output/<scene>/ or output/<scene>.png)");
+  render->add_option("--frames", options->frames, "Render only frames FIRST:LAST (0-based, inclusive) of the animation");
+  render->add_option("--quality", options->quality,
+                     "Animation size and frame rate: low (854x480@15), medium (1280x720@30), high (1920x1080@60), "
+                     "4k (3840x2160@60)");
+  render->add_flag("--quiet", options->quiet, "No progress bar or summary line");
   render->add_option("--width", options->width, "Image width in pixels (1..8192)");
   render->add_option("--height", options->height, "Image height in pixels (1..8192)");
   render->add_flag("--transparent", options->still.transparent, "RGBA PNG without background");

@@ -5,6 +5,7 @@
 
 #include <numbers>
 
+#include "app/surface_model.hpp"
 #include "geometry/analytic_paths.hpp"
 #include "spin/field.hpp"
 
@@ -15,6 +16,7 @@ geometry::Vec3 toVec(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
 }  // namespace
 
 RollingModel buildModel(const scene::SceneSpec& spec) {
+  if (!isAnalyticScene(spec)) return buildSurfaceModel(spec);  // curved surfaces, any curve (surface_model.cpp)
   RollingModel model;
   model.ballRadius = spec.ball.radius;
   const double R = model.ballRadius;
@@ -50,8 +52,7 @@ RollingModel buildModel(const scene::SceneSpec& spec) {
         if (model.plate) model.plate->initialTopPoint = model.path->point(0.0) + 2.0 * R * plane->normal();
         break;
       }
-      case scene::PathKind::Parallel:
-        break;  // rejected by the loader
+      default: break;  // not on a plane: isAnalyticScene sent it to buildSurfaceModel
     }
   } else {
     auto sphere = std::make_shared<const geometry::Sphere>(

@@ -143,7 +143,11 @@ Expression::Expression(std::string text, std::vector<std::string> variables)
     parser.SetExpr(text_);
     (void)parser.Eval();  // compiles the bytecode
   } catch (const mu::Parser::exception_type& e) {
-    throw ExpressionError(static_cast<int>(e.GetPos()), e.GetMsg());
+    // muparser appends its own 0-based "at position N"; the caller reports
+    // the position (1-based, and as a file column), so drop it here.
+    std::string message = e.GetMsg();
+    if (const auto cut = message.find(" at position "); cut != std::string::npos) message.erase(cut);
+    throw ExpressionError(static_cast<int>(e.GetPos()), message);
   }
   if (parser.GetNumResults() != 1) throw ExpressionError(0, "expected one expression, got a comma-separated list");
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <numbers>
 
 namespace rollspin::geometry {
@@ -55,6 +56,40 @@ std::vector<double> checkNodes(int n) {
   std::vector<double> x(static_cast<std::size_t>(n));
   for (int j = 0; j < n; ++j) x[static_cast<std::size_t>(j)] = std::cos(std::numbers::pi * (j + 0.5) / n);
   return x;
+}
+
+// Tangent, normal and their rates at curve parameter σ, for the smoothness
+// check: |dt/ds| = |k| (curvature vector), |dn/ds| = √(κ_n² + τ_g²).
+struct LocalFrame {
+  Vec3 tangent, normal;
+  double speed = 0.0, tangentRate = 0.0, normalRate = 0.0;
+};
+LocalFrame localFrame(const Surface& surface, const UvCurve& curve, double sigma) {
+  const UvJet c = curve.at(sigma);
+  const SurfaceJet j = surface.jet(c.uv);
+  const double du = c.d1.x(), dv = c.d1.y();
+  const Vec3 d1 = j.xu * du + j.xv * dv;
+  const Vec3 d2 = j.xuu * (du * du) + j.xuv * (2.0 * du * dv) + j.xvv * (dv * dv) + j.xu * c.d2.x() + j.xv * c.d2.y();
+  LocalFrame f;
+  f.speed = d1.norm();
+  f.tangent = d1 / f.speed;
+  f.normal = j.xu.cross(j.xv).normalized();
+  f.tangentRate = (d2 - d2.dot(f.tangent) * f.tangent).norm() / (f.speed * f.speed);
+  const double E = j.xu.dot(j.xu), F = j.xu.dot(j.xv), G = j.xv.dot(j.xv);
+  const double L = j.xuu.dot(f.normal), M = j.xuv.dot(f.normal), N = j.xvv.dot(f.normal);
+  const double det = E * G - F * F;
+  const Vec3 nu = ((F * M - G * L) * j.xu + (F * L - E * M) * j.xv) / det;
+  const Vec3 nv = ((F * N - G * M) * j.xu + (F * M - E * N) * j.xv) / det;
+  f.normalRate = (nu * du + nv * dv).norm() / f.speed;
+  return f;
+}
+
+// A unit vector cannot move further than the integral of its rate: a jump
+// beyond 1.5× Simpson's estimate of ∫ rate ds (plus round-off) over a probe
+// interval is a kink of the curve (t) or of the surface under it (n).
+bool jumps(const Vec3& a, const Vec3& b, double rateA, double rateMid, double rateB, double ds) {
+  const double travel = ds * (rateA + 4.0 * rateMid + rateB) / 6.0;
+  return (b - a).norm() > 1.5 * travel + 1e-7;
 }
 
 }  // namespace
@@ -124,6 +159,47 @@ void SurfaceCurvePath::buildSegment(double sigmaStart, double sigmaEnd) {
       throw GeometryError("the curve stops (zero speed: a cusp or corner) at curve parameter " + num(sigma));
     }
   }
+  // Kinks: the tangent or the normal jumping between neighbouring probes.
+  // Bisect a suspicious interval; a jump that survives to a width of 1e-12 is
+  // a corner.
+  auto kinkBetween = [&](double a, double b) {
+    for (int it = 0; it < 60; ++it) {
+      const double m = 0.5 * (a + b);
+      const LocalFrame fa = localFrame(*surface_, *curve_, a), fm = localFrame(*surface_, *curve_, m),
+                       fb = localFrame(*surface_, *curve_, b);
+      auto bad = [&](const LocalFrame& p, const LocalFrame& q, double x, double y) {
+        const LocalFrame mid = localFrame(*surface_, *curve_, 0.5 * (x + y));
+        const double ds = (y - x) * (p.speed + 4.0 * mid.speed + q.speed) / 6.0;
+        return jumps(p.tangent, q.tangent, p.tangentRate, mid.tangentRate, q.tangentRate, ds) ||
+               jumps(p.normal, q.normal, p.normalRate, mid.normalRate, q.normalRate, ds);
+      };
+      if (bad(fa, fm, a, m)) b = m;
+      else if (bad(fm, fb, m, b)) a = m;
+      else return std::optional<double>();  // smooth after all: fast but continuous turning
+      if (b - a < 1e-12 * (1.0 + std::abs(a))) return std::optional<double>(0.5 * (a + b));
+    }
+    return std::optional<double>(0.5 * (a + b));
+  };
+  for (int k = 0; k < kProbe; ++k) {
+    const double a = sigmaStart + (sigmaEnd - sigmaStart) * k / kProbe;
+    const double b = sigmaStart + (sigmaEnd - sigmaStart) * (k + 1) / kProbe;
+    const LocalFrame fa = localFrame(*surface_, *curve_, a), fb = localFrame(*surface_, *curve_, b),
+                     fm = localFrame(*surface_, *curve_, 0.5 * (a + b));
+    const double ds = (b - a) * (fa.speed + 4.0 * fm.speed + fb.speed) / 6.0;
+    if (!jumps(fa.tangent, fb.tangent, fa.tangentRate, fm.tangentRate, fb.tangentRate, ds) &&
+        !jumps(fa.normal, fb.normal, fa.normalRate, fm.normalRate, fb.normalRate, ds))
+      continue;
+    if (const auto at = kinkBetween(a, b)) {
+      const LocalFrame before = localFrame(*surface_, *curve_, *at - 1e-9 * (1.0 + std::abs(*at)));
+      const LocalFrame after = localFrame(*surface_, *curve_, *at + 1e-9 * (1.0 + std::abs(*at)));
+      const double turn = std::acos(std::clamp(before.tangent.dot(after.tangent), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+      const double fold = std::acos(std::clamp(before.normal.dot(after.normal), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+      throw GeometryError("the path has a corner at curve parameter " + num(*at) + " (the tangent turns by " +
+                          num(turn) + " deg, the surface normal by " + num(fold) +
+                          " deg): round it (points with interpolation = \"polyline\" and a corner_radius) or "
+                          "end the curve there");
+    }
+  }
   constexpr int kInitialPanels = 4;
   for (int p = 0; p < kInitialPanels; ++p) {
     const double a = sigmaStart + (sigmaEnd - sigmaStart) * p / kInitialPanels;
@@ -151,7 +227,18 @@ void SurfaceCurvePath::fitPanel(double sigmaStart, double sigmaEnd, double sStar
   const double speedScale = std::max({speed(sigmaStart), speed(sigmaMid), speed(sigmaEnd)});
   const double sigmaScale = std::max(std::abs(sigmaStart), std::abs(sigmaEnd));
   const double tolerance = 8.0 * eps * (1.0 + total) + 4.0 * eps * sigmaScale * speedScale;
-  if (std::abs(total - halves) > tolerance && depth < kMaxDepth) return split();
+  // Still not converged on a panel 2^-14 of a quarter segment wide: the
+  // curve (or the surface under it) is not smooth there — a kink that the
+  // scene must round, or a cusp.
+  auto notSmooth = [&] {
+    throw GeometryError("the path is not smooth near curve parameter " + num(sigmaMid) +
+                        " (arc length ≈ " + num(sStart) + "): a kink or cusp; round corners with a polyline's "
+                        "corner_radius or split the curve there");
+  };
+  if (std::abs(total - halves) > tolerance) {
+    if (depth < kMaxDepth) return split();
+    notSmooth();
+  }
 
   // σ at Chebyshev–Lobatto nodes in s, by Newton on the quadrature.
   auto solveSigma = [&](double ds) {
@@ -173,11 +260,12 @@ void SurfaceCurvePath::fitPanel(double sigmaStart, double sigmaEnd, double sStar
   }
   Panel panel{sigmaStart, sigmaEnd, sStart, sStart + total, chebyshevCoefficients(values)};
   // Between the nodes, the interpolant must still invert the quadrature.
-  if (depth < kMaxDepth) {
-    for (double xc : checkNodes(kChebyshevDegree)) {
-      const double ds = 0.5 * total * (xc + 1.0);
-      const double sigma = sigmaStart + chebyshevValue(panel.coefficients, xc);
-      if (std::abs(panelArcLength(sigmaStart, sigma) - ds) > tolerance) return split();
+  for (double xc : checkNodes(kChebyshevDegree)) {
+    const double ds = 0.5 * total * (xc + 1.0);
+    const double sigma = sigmaStart + chebyshevValue(panel.coefficients, xc);
+    if (std::abs(panelArcLength(sigmaStart, sigma) - ds) > tolerance) {
+      if (depth < kMaxDepth) return split();
+      notSmooth();
     }
   }
   panels_.push_back(std::move(panel));
@@ -255,6 +343,11 @@ ContactCheck checkSingleContact(const SurfaceCurvePath& path, double ballRadius,
   const double length = path.length();
   for (int k = 0; k <= samples; ++k) grid.push_back(length * k / samples);
   for (double b : path.breakpoints()) grid.push_back(b);
+  const std::vector<double>& starts = path.panelStarts();
+  for (std::size_t p = 0; p < starts.size(); ++p) {
+    const double end = p + 1 < starts.size() ? starts[p + 1] : length;
+    for (int k = 0; k < 16; ++k) grid.push_back(starts[p] + (end - starts[p]) * k / 16.0);
+  }
   std::sort(grid.begin(), grid.end());
   ContactCheck check;
   for (std::size_t k = 0; k < grid.size(); ++k) {

@@ -56,6 +56,9 @@ class SurfaceCurvePath final : public ContactPath {
   [[nodiscard]] double arcLengthAt(double sigma) const;
   [[nodiscard]] const Surface& surface() const { return *surface_; }
   [[nodiscard]] std::size_t panelCount() const { return panels_.size(); }
+  // Arc lengths where the arc-length panels start (finer where the curve's
+  // speed varies faster): a scale for sampling the path.
+  [[nodiscard]] const std::vector<double>& panelStarts() const { return panelStarts_; }
   [[nodiscard]] const UvCurve& curve() const { return *curve_; }
 
  private:
@@ -92,8 +95,8 @@ struct ContactCheck {
 // A ball of radius R touches a surface at one point (locally) only while
 // R k1 < 1, k1 the largest principal curvature towards the ball (inside a
 // sphere: R < r; inside a cylinder: R < a; on a saddle: R < the concave
-// principal radius). Scans `samples` points (and every breakpoint) and
-// bisects to the first failing s. Global overlaps far from the contact point
+// principal radius). Scans `samples` uniform points, 16 per arc-length panel
+// and every breakpoint, and bisects to the first failing s. Global overlaps far from the contact point
 // are not checked.
 [[nodiscard]] ContactCheck checkSingleContact(const SurfaceCurvePath& path, double ballRadius, int samples = 4000);
 

@@ -14,12 +14,14 @@ std::shared_ptr<const TextureImage> tennisBallTexture(int width) {
   // splits it into two congruent lobes.
   constexpr double a = 0.72, b = 0.28;
   const double c = 2.0 * std::sqrt(a * b);
-  constexpr int kSeamSamples = 720;
-  std::vector<glm::dvec3> seam;
-  for (int k = 0; k < kSeamSamples; ++k) {
-    const double t = 2.0 * std::numbers::pi * k / kSeamSamples;
-    seam.emplace_back(a * std::cos(t) + b * std::cos(3 * t), a * std::sin(t) - b * std::sin(3 * t), c * std::sin(2 * t));
-  }
+  auto seamPoint = [&](double t) {
+    return glm::dvec3(a * std::cos(t) + b * std::cos(3 * t), a * std::sin(t) - b * std::sin(3 * t), c * std::sin(2 * t));
+  };
+  // Nearest seam point: a coarse scan, then a fine scan around the best
+  // coarse sample (the seam is smooth, so this finds the true nearest point).
+  constexpr int kCoarse = 96, kFine = 24;
+  std::vector<glm::dvec3> fine;
+  for (int k = 0; k < kCoarse * kFine; ++k) fine.push_back(seamPoint(2.0 * std::numbers::pi * k / (kCoarse * kFine)));
   auto tex = std::make_shared<TextureImage>();
   tex->width = width;
   tex->height = height;
@@ -30,8 +32,18 @@ std::shared_ptr<const TextureImage> tennisBallTexture(int width) {
     for (int x = 0; x < width; ++x) {
       const double phi = 2.0 * std::numbers::pi * (x + 0.5) / width - std::numbers::pi;
       const glm::dvec3 d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
-      double best = -1.0;
-      for (const auto& p : seam) best = std::max(best, glm::dot(d, p));
+      int bestK = 0;
+      double best = -2.0;
+      for (int k = 0; k < kCoarse; ++k) {
+        const double dot = glm::dot(d, fine[static_cast<std::size_t>(k * kFine)]);
+        if (dot > best) {
+          best = dot;
+          bestK = k;
+        }
+      }
+      constexpr int kAll = kCoarse * kFine;
+      for (int f = -kFine; f <= kFine; ++f)
+        best = std::max(best, glm::dot(d, fine[static_cast<std::size_t>((bestK * kFine + f + kAll) % kAll)]));
       const double dist = std::acos(std::clamp(best, -1.0, 1.0));
       // Smooth edge over ~1.5 texels; a faint felt nap breaks up the flat colour.
       const double texel = std::numbers::pi / height;

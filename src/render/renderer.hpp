@@ -26,6 +26,8 @@ class Renderer {
   // Transparent lists come back with straight (not premultiplied) alpha;
   // opaque ones with alpha 255 everywhere.
   [[nodiscard]] media::Image render(const DrawList& list);
+  // Same, into `image`, reusing its storage (frame after frame of a video).
+  void render(const DrawList& list, media::Image& image);
 
  private:
   struct Impl;

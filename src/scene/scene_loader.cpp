@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <numbers>
 #include <set>
 #include <sstream>
@@ -60,9 +61,13 @@ class Reader {
   std::optional<std::string> text(const toml::table* t, const std::string& section, const std::string& key,
                                   const std::set<std::string>& choices);
   std::optional<Vec3> vector(const toml::table* t, const std::string& section, const std::string& key);
+  std::optional<std::string> expression(const toml::table* t, const std::string& section, const std::string& key);
+  std::optional<std::vector<std::vector<double>>> pointList(const toml::table* t, const std::string& section,
+                                                            const std::string& key);
   std::optional<bool> boolean(const toml::table* t, const std::string& section, const std::string& key);
   std::optional<std::string> anyText(const toml::table* t, const std::string& section, const std::string& key);
   void readRender();
+  void readAnimation();
   void forbid(const toml::table* t, const std::string& section, const std::string& key, const std::string& why);
 
   [[noreturn]] void fail(const std::string& key, const SourceLoc& loc, const std::string& expected,
@@ -174,7 +179,7 @@ std::optional<std::string> Reader::anyText(const toml::table* t, const std::stri
 void Reader::readRender() {
   const toml::table* render = section(
       "render", {"width", "height", "layout", "strobe", "title", "labels", "transparent", "msaa", "azimuth_deg",
-                 "elevation_deg", "distance", "target", "follow", "fov_deg"});
+                 "elevation_deg", "distance", "target", "follow", "fov_deg", "format"});
   RenderSpec& r = spec_.render;
   constexpr long long kMaxSide = 8192;  // "8K": the renderer's size limit
   for (const char* key : {"width", "height"}) {
@@ -220,6 +225,83 @@ void Reader::readRender() {
   }
   if (r.follow && spec_.locations.contains("render.target"))
     failAt("render.target", "conflicts with render.follow = true (the camera then targets the ball)");
+  if (auto f = text(render, "render", "format", {"mp4", "png"}))
+    r.format = *f == "mp4" ? VideoFormat::Mp4 : VideoFormat::Png;
+}
+
+// [animation] — frame time → arc length, and the H.264 settings (video issue).
+void Reader::readAnimation() {
+  const toml::table* animation =
+      section("animation", {"fps", "duration", "speed", "easing", "hold", "crf", "preset"});
+  AnimationSpec& a = spec_.animation;
+  if (auto n = integer(animation, "animation", "fps")) {
+    if (*n < 1 || *n > 240) failAt("animation.fps", fmt::format("expected frames per second in [1, 240], got {}", *n));
+    a.fps = *n;
+  }
+  if (auto d = number(animation, "animation", "duration")) {
+    if (!(*d > 0.0 && *d <= 36000.0))
+      failAt("animation.duration", fmt::format("expected a duration in (0, 36000] seconds, got {}", *d));
+    a.duration = *d;
+  }
+  if (auto v = number(animation, "animation", "speed")) {
+    if (!(*v > 0.0)) failAt("animation.speed", fmt::format("expected an arc length per second > 0, got {}", *v));
+    if (spec_.locations.contains("animation.duration"))
+      failAt("animation.speed", "conflicts with animation.duration: give the duration or the speed, not both");
+    a.speed = *v;
+  }
+  if (auto e = text(animation, "animation", "easing", {"linear", "smooth"}))
+    a.easing = *e == "linear" ? Easing::Linear : Easing::Smooth;
+  if (auto h = number(animation, "animation", "hold")) {
+    if (!(*h >= 0.0 && *h <= 3600.0))
+      failAt("animation.hold", fmt::format("expected a hold in [0, 3600] seconds, got {}", *h));
+    a.hold = *h;
+  }
+  if (auto c = number(animation, "animation", "crf")) {
+    if (!(*c >= 0.0 && *c <= 51.0)) failAt("animation.crf", fmt::format("expected a CRF in [0, 51], got {}", *c));
+    a.crf = *c;
+  }
+  if (auto p = text(animation, "animation", "preset",
+                    {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}))
+    a.preset = *p;
+}
+
+std::optional<std::string> Reader::expression(const toml::table* t, const std::string& section,
+                                              const std::string& key) {
+  const toml::node* node = get(t, section, key);
+  if (node == nullptr) return std::nullopt;
+  const std::string full = section + "." + key;
+  if (!node->is_string()) fail(full, locOf(full, *node), "an expression string such as \"0.3*sin(x)\"", describeNode(*node));
+  std::string v = node->as_string()->get();
+  if (v.find_first_not_of(" \t") == std::string::npos) fail(full, locOf(full, *node), "a non-empty expression", "\"\"");
+  return v;
+}
+
+std::optional<std::vector<std::vector<double>>> Reader::pointList(const toml::table* t, const std::string& section,
+                                                                  const std::string& key) {
+  const toml::node* node = get(t, section, key);
+  if (node == nullptr) return std::nullopt;
+  const std::string full = section + "." + key;
+  const std::string expected = "an array of points, each [u, v] (surface parameters) or [x, y, z]";
+  const toml::array* a = node->as_array();
+  if (a == nullptr) fail(full, locOf(full, *node), expected, describeNode(*node));
+  std::vector<std::vector<double>> points;
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const toml::array* p = a->get(i)->as_array();
+    if (p == nullptr || (p->size() != 2 && p->size() != 3))
+      fail(full, locOf(full, *node), expected, "point " + std::to_string(i + 1) + " = " + describeNode(*a->get(i)));
+    std::vector<double> xs;
+    for (std::size_t k = 0; k < p->size(); ++k) {
+      const toml::node& e = *p->get(k);
+      if (!e.is_number() || !std::isfinite(e.value<double>().value()))
+        fail(full, locOf(full, *node), expected, "point " + std::to_string(i + 1) + " has " + describeNode(e));
+      xs.push_back(e.value<double>().value());
+    }
+    if (!points.empty() && xs.size() != points.front().size())
+      fail(full, locOf(full, *node), "all points with the same number of coordinates",
+           "point " + std::to_string(i + 1) + " with " + std::to_string(xs.size()));
+    points.push_back(std::move(xs));
+  }
+  return points;
 }
 
 void Reader::forbid(const toml::table* t, const std::string& section, const std::string& key,
@@ -235,7 +317,7 @@ double norm3(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] 
 
 SceneSpec Reader::read() {
   spec_.sourceFile = file_;
-  static const std::set<std::string> kSections{"ball", "surface", "path", "plate", "solver", "timeline", "render"};
+  static const std::set<std::string> kSections{"ball", "surface", "path", "plate", "solver", "timeline", "render", "animation"};
   for (auto&& [k, v] : root_) {
     const std::string key(k.str());
     if (!kSections.contains(key)) {
@@ -261,31 +343,81 @@ SceneSpec Reader::read() {
   const double R = spec_.ball.radius;
 
   // [surface]
-  const toml::table* surface = section("surface", {"kind", "normal", "radius", "side"});
-  if (auto kind = text(surface, "surface", "kind", {"plane", "sphere"}))
-    spec_.surface.kind = *kind == "plane" ? SurfaceKind::Plane : SurfaceKind::Sphere;
-  if (spec_.surface.kind == SurfaceKind::Plane) {
-    forbid(surface, "surface", "radius", "applies to kind = \"sphere\" only; this surface is a plane");
-    forbid(surface, "surface", "side", "applies to kind = \"sphere\" only; this surface is a plane");
-    if (auto n = vector(surface, "surface", "normal")) {
-      const double len = norm3(*n);
-      if (len < 1e-12) failAt("surface.normal", "expected a non-zero vector, got [0, 0, 0]");
-      spec_.surface.normal = {(*n)[0] / len, (*n)[1] / len, (*n)[2] / len};
+  const toml::table* surface = section(
+      "surface", {"kind", "normal", "radius", "side", "axis", "major_radius", "minor_radius", "a", "b", "z"});
+  static const std::map<std::string, SurfaceKind> kSurfaceKinds{
+      {"plane", SurfaceKind::Plane},       {"sphere", SurfaceKind::Sphere}, {"cylinder", SurfaceKind::Cylinder},
+      {"torus", SurfaceKind::Torus},       {"paraboloid", SurfaceKind::Paraboloid},
+      {"saddle", SurfaceKind::Saddle},     {"height", SurfaceKind::Height}};
+  if (auto kind = text(surface, "surface", "kind",
+                       {"plane", "sphere", "cylinder", "torus", "paraboloid", "saddle", "height"}))
+    spec_.surface.kind = kSurfaceKinds.at(*kind);
+  const SurfaceKind sk = spec_.surface.kind;
+  const std::string skName = toString(sk);
+  const bool heightField = sk == SurfaceKind::Paraboloid || sk == SurfaceKind::Saddle || sk == SurfaceKind::Height;
+  auto surfaceOnly = [&](const std::string& key, bool applies, const std::string& kinds) {
+    if (!applies) forbid(surface, "surface", key, "applies to kind = " + kinds + " only; this surface is a " + skName);
+  };
+  surfaceOnly("normal", sk == SurfaceKind::Plane, "\"plane\"");
+  surfaceOnly("radius", sk == SurfaceKind::Sphere || sk == SurfaceKind::Cylinder, "\"sphere\" or \"cylinder\"");
+  surfaceOnly("side", sk != SurfaceKind::Plane, "sphere, cylinder, torus (outside | inside) or a height field (above | below)");
+  surfaceOnly("axis", sk == SurfaceKind::Cylinder, "\"cylinder\"");
+  surfaceOnly("major_radius", sk == SurfaceKind::Torus, "\"torus\"");
+  surfaceOnly("minor_radius", sk == SurfaceKind::Torus, "\"torus\"");
+  surfaceOnly("a", sk == SurfaceKind::Paraboloid || sk == SurfaceKind::Saddle, "\"paraboloid\" or \"saddle\"");
+  surfaceOnly("b", sk == SurfaceKind::Paraboloid || sk == SurfaceKind::Saddle, "\"paraboloid\" or \"saddle\"");
+  surfaceOnly("z", sk == SurfaceKind::Height, "\"height\"");
+  auto positive = [&](const std::string& key, double& target) {
+    if (auto r = number(surface, "surface", key)) {
+      if (*r <= 0.0) failAt("surface." + key, fmt::format("expected a value > 0, got {}", *r));
+      target = *r;
     }
-  } else {
-    forbid(surface, "surface", "normal", "applies to kind = \"plane\" only; this surface is a sphere");
-    if (auto r = number(surface, "surface", "radius")) {
-      if (*r <= 0.0) failAt("surface.radius", fmt::format("expected a radius > 0, got {}", *r));
-      spec_.surface.radius = *r;
-    }
-    if (auto side = text(surface, "surface", "side", {"outside", "inside"}))
-      spec_.surface.side = *side == "outside" ? SurfaceSide::Outside : SurfaceSide::Inside;
-    if (spec_.surface.side == SurfaceSide::Inside && !(R < spec_.surface.radius)) {
-      const std::string key = spec_.locations.contains("ball.radius") ? "ball.radius" : "surface.radius";
-      failAt(key, fmt::format("a ball of radius {} does not fit inside a sphere of radius {} "
-                              "(inside rolling needs ball.radius < surface.radius)",
-                              R, spec_.surface.radius));
-    }
+  };
+  if (auto n = vector(surface, "surface", "normal")) {
+    const double len = norm3(*n);
+    if (len < 1e-12) failAt("surface.normal", "expected a non-zero vector, got [0, 0, 0]");
+    spec_.surface.normal = {(*n)[0] / len, (*n)[1] / len, (*n)[2] / len};
+  }
+  if (auto r = number(surface, "surface", "radius")) {
+    if (*r <= 0.0) failAt("surface.radius", fmt::format("expected a radius > 0, got {}", *r));
+    spec_.surface.radius = *r;
+  }
+  if (heightField) {
+    if (auto side = text(surface, "surface", "side", {"above", "below"}))
+      spec_.surface.side = *side == "above" ? SurfaceSide::Outside : SurfaceSide::Inside;
+  } else if (auto side = text(surface, "surface", "side", {"outside", "inside"})) {
+    spec_.surface.side = *side == "outside" ? SurfaceSide::Outside : SurfaceSide::Inside;
+  }
+  if (auto ax = vector(surface, "surface", "axis")) {
+    const double len = norm3(*ax);
+    if (len < 1e-12) failAt("surface.axis", "expected a non-zero vector, got [0, 0, 0]");
+    spec_.surface.axis = {(*ax)[0] / len, (*ax)[1] / len, (*ax)[2] / len};
+  }
+  positive("major_radius", spec_.surface.majorRadius);
+  positive("minor_radius", spec_.surface.minorRadius);
+  positive("a", spec_.surface.a);
+  positive("b", spec_.surface.b);
+  if (auto z = expression(surface, "surface", "z")) spec_.surface.z = *z;
+
+  // Does the ball fit? (Along the path, app/ checks the curvature everywhere.)
+  const bool inside = spec_.surface.side == SurfaceSide::Inside;
+  auto mustFit = [&](double limit, const std::string& what, const std::string& surfaceKey) {
+    if (R < limit) return;
+    const std::string key = spec_.locations.contains("ball.radius") ? "ball.radius" : surfaceKey;
+    failAt(key, fmt::format("a ball of radius {} does not fit inside {} (needs ball.radius < {})", R, what, limit));
+  };
+  if (sk == SurfaceKind::Sphere && inside)
+    mustFit(spec_.surface.radius, fmt::format("a sphere of radius {}", spec_.surface.radius), "surface.radius");
+  if (sk == SurfaceKind::Cylinder && inside)
+    mustFit(spec_.surface.radius, fmt::format("a cylinder of radius {}", spec_.surface.radius), "surface.radius");
+  if (sk == SurfaceKind::Torus) {
+    if (!(spec_.surface.minorRadius < spec_.surface.majorRadius))
+      failAt(spec_.locations.contains("surface.minor_radius") ? "surface.minor_radius" : "surface.major_radius",
+             fmt::format("expected minor_radius < major_radius (a ring torus), got {} and {}",
+                         spec_.surface.minorRadius, spec_.surface.majorRadius));
+    if (inside)
+      mustFit(spec_.surface.minorRadius, fmt::format("a torus tube of radius {}", spec_.surface.minorRadius),
+              "surface.minor_radius");
   }
 
   // [plate] — Brockett's upper plate; the contact path is then derived.
@@ -301,34 +433,82 @@ SceneSpec Reader::read() {
 
   // [path]
   const toml::table* path = section(
-      "path", {"kind", "turns", "direction", "length", "direction_vector", "radius", "colatitude_deg"});
+      "path", {"kind", "turns", "direction", "length", "direction_vector", "radius", "colatitude_deg",
+               "tube_angle_deg", "height", "azimuth_deg", "colatitude_start_deg", "colatitude_end_deg",
+               "pitch_angle_deg", "heading_deg", "start_point", "u", "v", "t_start", "t_end", "points", "closed",
+               "interpolation", "corner_radius"});
   const bool pathKindGiven = path != nullptr && path->get("kind") != nullptr;
-  if (auto kind = text(path, "path", "kind", {"line", "circle", "parallel"})) {
-    spec_.path.kind = *kind == "line" ? PathKind::Line : *kind == "circle" ? PathKind::Circle : PathKind::Parallel;
-  } else if (spec_.surface.kind == SurfaceKind::Sphere) {
-    spec_.path.kind = PathKind::Parallel;  // the one path a sphere offers
+  static const std::map<std::string, PathKind> kPathKinds{
+      {"line", PathKind::Line},           {"circle", PathKind::Circle},       {"parallel", PathKind::Parallel},
+      {"meridian", PathKind::Meridian},   {"helix", PathKind::Helix},         {"loxodrome", PathKind::Loxodrome},
+      {"geodesic", PathKind::Geodesic},   {"uv", PathKind::Uv},               {"points", PathKind::Points}};
+  if (auto kind = text(path, "path", "kind",
+                       {"line", "circle", "parallel", "meridian", "helix", "loxodrome", "geodesic", "uv", "points"})) {
+    spec_.path.kind = kPathKinds.at(*kind);
+  } else if (sk == SurfaceKind::Sphere || sk == SurfaceKind::Cylinder || sk == SurfaceKind::Torus ||
+             sk == SurfaceKind::Paraboloid) {
+    spec_.path.kind = PathKind::Parallel;  // the natural closed path of a surface of revolution
+  } else if (sk == SurfaceKind::Saddle || sk == SurfaceKind::Height) {
+    spec_.path.kind = PathKind::Meridian;
   }
   const PathKind pk = spec_.path.kind;
   const std::string pkName = toString(pk);
-  const std::string needs = pk == PathKind::Parallel ? "sphere" : "plane";
-  if (toString(spec_.surface.kind) != needs) {
+  // Which surfaces each path kind lies on.
+  const bool revolution = sk == SurfaceKind::Sphere || sk == SurfaceKind::Cylinder || sk == SurfaceKind::Torus ||
+                          sk == SurfaceKind::Paraboloid;
+  std::string needs;
+  bool lies = true;
+  switch (pk) {
+    case PathKind::Line:
+    case PathKind::Circle: lies = sk == SurfaceKind::Plane; needs = "plane"; break;
+    case PathKind::Parallel: lies = revolution; needs = "sphere, cylinder, torus or paraboloid"; break;
+    case PathKind::Meridian: lies = sk != SurfaceKind::Plane; needs = "curved surface"; break;
+    case PathKind::Helix: lies = sk == SurfaceKind::Cylinder; needs = "cylinder"; break;
+    case PathKind::Loxodrome: lies = sk == SurfaceKind::Sphere; needs = "sphere"; break;
+    case PathKind::Geodesic:
+    case PathKind::Uv:
+    case PathKind::Points: break;
+  }
+  if (!lies) {
     const std::string key = pathKindGiven ? "path.kind" : "surface.kind";
     failAt(key, fmt::format("a {} path lies on a {}, but surface.kind is \"{}\" (the path would leave the surface)",
-                            pkName, needs, toString(spec_.surface.kind)));
+                            pkName, needs, skName));
   }
   auto only = [&](const std::string& key, bool applies, const std::string& kinds) {
-    if (!applies) forbid(path, "path", key, "applies to path kind " + kinds + " only; this path is a " + pkName);
+    if (!applies) forbid(path, "path", key, "applies to path kind " + kinds + " only; this path is a " + pkName +
+                                                " on a " + skName);
   };
-  only("turns", pk != PathKind::Line, "circle or parallel");
-  only("length", pk == PathKind::Line, "line");
-  only("direction_vector", pk == PathKind::Line, "line");
-  only("radius", pk == PathKind::Circle, "circle");
-  only("colatitude_deg", pk == PathKind::Parallel, "parallel");
+  const bool onSphere = sk == SurfaceKind::Sphere, onTorus = sk == SurfaceKind::Torus,
+             onCylinder = sk == SurfaceKind::Cylinder;
+  const bool meridian = pk == PathKind::Meridian, parallel = pk == PathKind::Parallel;
+  only("turns", pk == PathKind::Circle || parallel || pk == PathKind::Helix || (meridian && onTorus),
+       "circle or parallel (or helix, or meridian on a torus)");
+  only("direction", pk == PathKind::Circle || parallel || pk == PathKind::Helix || (meridian && onTorus),
+       "circle or parallel (or helix, or meridian on a torus)");
+  only("length", pk == PathKind::Line || pk == PathKind::Geodesic || (meridian && !onSphere && !onTorus),
+       "line, geodesic or meridian on a cylinder or height field");
+  only("direction_vector", pk == PathKind::Line || pk == PathKind::Geodesic, "line or geodesic");
+  only("radius", pk == PathKind::Circle || (parallel && sk == SurfaceKind::Paraboloid),
+       "circle or parallel on a paraboloid");
+  only("colatitude_deg", parallel && onSphere, "parallel on a sphere");
+  only("tube_angle_deg", (parallel || meridian) && onTorus, "parallel or meridian on a torus");
+  only("height", (parallel || meridian || pk == PathKind::Helix) && onCylinder,
+       "parallel, meridian or helix on a cylinder");
+  only("azimuth_deg", meridian || pk == PathKind::Loxodrome, "meridian or loxodrome");
+  only("colatitude_start_deg", (meridian && onSphere) || pk == PathKind::Loxodrome, "meridian on a sphere or loxodrome");
+  only("colatitude_end_deg", (meridian && onSphere) || pk == PathKind::Loxodrome, "meridian on a sphere or loxodrome");
+  only("pitch_angle_deg", pk == PathKind::Helix, "helix");
+  only("heading_deg", pk == PathKind::Loxodrome, "loxodrome");
+  only("start_point", pk == PathKind::Geodesic, "geodesic");
+  for (const char* key : {"u", "v", "t_start", "t_end"}) only(key, pk == PathKind::Uv, "uv");
+  for (const char* key : {"points", "closed", "interpolation", "corner_radius"}) only(key, pk == PathKind::Points, "points");
+
   if (auto t = number(path, "path", "turns")) {
     if (*t <= 0.0) failAt("path.turns", fmt::format("expected a number of turns > 0, got {}", *t));
     spec_.path.turns = *t;
   }
   if (auto d = text(path, "path", "direction", {"ccw", "cw"})) spec_.path.counterClockwise = *d == "ccw";
+  if (pk == PathKind::Geodesic && !spec_.locations.contains("path.length")) spec_.path.length = 6.0;
   if (auto len = number(path, "path", "length")) {
     if (*len <= 0.0) failAt("path.length", fmt::format("expected a length > 0, got {}", *len));
     spec_.path.length = *len;
@@ -339,11 +519,11 @@ SceneSpec Reader::read() {
     const Vec3 d{(*dv)[0] / len, (*dv)[1] / len, (*dv)[2] / len};
     const Vec3& n = spec_.surface.normal;
     const double along = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
-    if (std::abs(along) > 1e-9) {
+    if (sk == SurfaceKind::Plane && std::abs(along) > 1e-9) {
       failAt("path.direction_vector",
-             fmt::format("the line leaves the surface: its direction has a component {:.6g} along the plane "
+             fmt::format("the {} leaves the surface: its direction has a component {:.6g} along the plane "
                          "normal [{}, {}, {}]; expected a vector in the plane",
-                         along, n[0], n[1], n[2]));
+                         pkName, along, n[0], n[1], n[2]));
     }
     spec_.path.directionVector = d;
   }
@@ -351,10 +531,62 @@ SceneSpec Reader::read() {
     if (*r <= 0.0) failAt("path.radius", fmt::format("expected a radius > 0, got {}", *r));
     spec_.path.radius = *r;
   }
-  if (auto th = number(path, "path", "colatitude_deg")) {
-    if (!(*th > 0.0 && *th < 180.0))
-      failAt("path.colatitude_deg", fmt::format("expected a colatitude in (0, 180) degrees, got {}", *th));
-    spec_.path.colatitudeDeg = *th;
+  if (pk == PathKind::Parallel && sk == SurfaceKind::Paraboloid) {
+    if (spec_.surface.a != spec_.surface.b)
+      failAt(pathKindGiven ? "path.kind" : "surface.a",
+             fmt::format("a parallel needs a surface of revolution; this paraboloid has a = {} != b = {}",
+                         spec_.surface.a, spec_.surface.b));
+    if (!spec_.locations.contains("path.radius")) spec_.path.radius = 2.0;
+  }
+  auto colatitude = [&](const std::string& key, double& target) {
+    if (auto th = number(path, "path", key)) {
+      if (!(*th > 0.0 && *th < 180.0))
+        failAt("path." + key, fmt::format("expected a colatitude in (0, 180) degrees, got {}", *th));
+      target = *th;
+    }
+  };
+  colatitude("colatitude_deg", spec_.path.colatitudeDeg);
+  colatitude("colatitude_start_deg", spec_.path.colatitudeStartDeg);
+  colatitude("colatitude_end_deg", spec_.path.colatitudeEndDeg);
+  if ((meridian && onSphere) || pk == PathKind::Loxodrome) {
+    if (spec_.path.colatitudeStartDeg == spec_.path.colatitudeEndDeg)
+      failAt("path.colatitude_end_deg", "expected colatitude_end_deg != colatitude_start_deg (an empty path)");
+  }
+  if (auto v = number(path, "path", "tube_angle_deg")) spec_.path.tubeAngleDeg = *v;
+  if (auto v = number(path, "path", "height")) spec_.path.height = *v;
+  if (auto v = number(path, "path", "azimuth_deg")) spec_.path.azimuthDeg = *v;
+  if (auto v = number(path, "path", "pitch_angle_deg")) {
+    if (!(std::abs(*v) < 90.0))
+      failAt("path.pitch_angle_deg", fmt::format("expected a pitch angle in (-90, 90) degrees, got {}", *v));
+    spec_.path.pitchAngleDeg = *v;
+  }
+  if (auto v = number(path, "path", "heading_deg")) {
+    if (!(std::abs(*v) < 90.0))
+      failAt("path.heading_deg", fmt::format("expected a heading in (-90, 90) degrees from the meridians "
+                                             "(90 is a parallel: use kind = \"parallel\"), got {}", *v));
+    spec_.path.headingDeg = *v;
+  }
+  if (auto p = vector(path, "path", "start_point")) spec_.path.startPoint = *p;
+  if (auto e = expression(path, "path", "u")) spec_.path.u = *e;
+  if (auto e = expression(path, "path", "v")) spec_.path.v = *e;
+  if (auto v = number(path, "path", "t_start")) spec_.path.tStart = *v;
+  if (auto v = number(path, "path", "t_end")) spec_.path.tEnd = *v;
+  if (pk == PathKind::Uv && !(spec_.path.tEnd > spec_.path.tStart))
+    failAt(spec_.locations.contains("path.t_end") ? "path.t_end" : "path.t_start",
+           fmt::format("expected t_end > t_start, got [{}, {}]", spec_.path.tStart, spec_.path.tEnd));
+  if (auto pts = pointList(path, "path", "points")) spec_.path.points = *pts;
+  if (auto c = boolean(path, "path", "closed")) spec_.path.closed = *c;
+  if (auto i = text(path, "path", "interpolation", {"spline", "polyline"})) spec_.path.interpolation = *i;
+  if (auto r = number(path, "path", "corner_radius")) {
+    if (*r < 0.0) failAt("path.corner_radius", fmt::format("expected a radius >= 0, got {}", *r));
+    spec_.path.cornerRadius = *r;
+  }
+  if (pk == PathKind::Points) {
+    const std::size_t need = spec_.path.closed ? 3 : 2;
+    if (spec_.path.points.size() < need)
+      throw badInput(spec_.locations.contains("path.points") ? where("path.points") : where("path"),
+                     "path.points: expected at least {} points for {} path, got {}", need,
+                     spec_.path.closed ? "a closed" : "an open", spec_.path.points.size());
   }
   if (spec_.plate) {
     if (pk != PathKind::Circle)
@@ -367,7 +599,8 @@ SceneSpec Reader::read() {
 
   // [solver]
   const toml::table* solver = section("solver", {"method", "steps"});
-  if (auto m = text(solver, "solver", "method", {"exact", "magnus2", "magnus4", "rk4"})) spec_.solver.method = *m;
+  if (auto m = text(solver, "solver", "method", {"exact", "magnus2", "magnus4", "rk4", "frame4"}))
+    spec_.solver.method = *m;
   if (auto n = integer(solver, "solver", "steps")) {
     if (*n < 1 || *n > kMaxSolverSteps)
       failAt("solver.steps", fmt::format("expected an integer in [1, 1e11], got {}", *n));
@@ -383,6 +616,7 @@ SceneSpec Reader::read() {
   }
 
   readRender();
+  readAnimation();
   return spec_;
 }
 

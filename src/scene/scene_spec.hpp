@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
 
@@ -21,17 +22,23 @@ struct BallSpec {
   std::optional<Vec3> marker;  // body point whose direction is the tracked Bloch vector; default: the top n(0)
 };
 
-enum class SurfaceKind { Plane, Sphere };
+enum class SurfaceKind { Plane, Sphere, Cylinder, Torus, Paraboloid, Saddle, Height };
+// Height fields (paraboloid, saddle, height) say "above" / "below": stored as Outside / Inside.
 enum class SurfaceSide { Outside, Inside };
 
 struct SurfaceSpec {
   SurfaceKind kind = SurfaceKind::Plane;
   Vec3 normal{0.0, 0.0, 1.0};  // plane: unit normal on the ball's side (normalised on load)
-  double radius = 3.0;          // sphere: r
+  double radius = 3.0;          // sphere: r; cylinder: a
   SurfaceSide side = SurfaceSide::Outside;
+  Vec3 axis{0.0, 0.0, 1.0};     // cylinder: axis through the origin (normalised on load)
+  double majorRadius = 3.0;     // torus: A (about the z axis)
+  double minorRadius = 1.0;     // torus: tube radius a
+  double a = 4.0, b = 4.0;      // paraboloid / saddle: z = (x²/a ± y²/b)/2
+  std::string z = "0";          // height: z = f(x, y), a muparser expression
 };
 
-enum class PathKind { Line, Circle, Parallel };
+enum class PathKind { Line, Circle, Parallel, Meridian, Helix, Loxodrome, Geodesic, Uv, Points };
 
 struct PathSpec {
   PathKind kind = PathKind::Circle;
@@ -41,6 +48,21 @@ struct PathSpec {
   std::optional<Vec3> directionVector;  // line; default: horizontal in the plane (see README)
   double radius = 3.0;                // circle: contact circle radius r
   double colatitudeDeg = 60.0;        // parallel: θ in degrees
+  // Curved surfaces (issue 3). Angles in degrees; see README "Curves".
+  double tubeAngleDeg = 0.0;          // torus parallel / meridian start: ψ (0 = outer equator)
+  double height = 0.0;                // cylinder parallel / helix / meridian: start height along the axis
+  double azimuthDeg = 0.0;            // meridian, loxodrome: φ0
+  double colatitudeStartDeg = 30.0;   // sphere meridian, loxodrome: θ0
+  double colatitudeEndDeg = 150.0;    // sphere meridian, loxodrome: θ1
+  double pitchAngleDeg = 30.0;        // helix: β from the parallels
+  double headingDeg = 45.0;           // loxodrome: α from the meridians
+  std::optional<Vec3> startPoint;     // geodesic: projected onto the surface; default per surface
+  std::string u = "t", v = "0";       // uv: surface parameters as expressions of t
+  double tStart = 0.0, tEnd = 1.0;    // uv: range of t
+  std::vector<std::vector<double>> points;  // points: [u, v] parameters or [x, y, z] points
+  bool closed = false;                // points: periodic spline / closed polygon
+  std::string interpolation = "spline";  // points: "spline" | "polyline"
+  double cornerRadius = 0.0;          // points, polyline: arc radius rounding each corner
 };
 
 struct PlateSpec {
@@ -52,7 +74,7 @@ inline constexpr long long kMaxSolverSteps = 100'000'000'000LL;  // ~10 min of m
 inline constexpr long long kMaxTimelineSamples = 100'000'000LL;
 
 struct SolverSpec {
-  std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4
+  std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4 | frame4
   std::optional<long long> steps;  // default: automatic (see README)
 };
 
@@ -61,6 +83,7 @@ struct TimelineSpec {
 };
 
 enum class RenderLayout { SideBySide, Inset, Ball, Twin };
+enum class VideoFormat { Mp4, Png };  // an animation's sink: one MP4, or a folder of PNG frames
 
 // [render]: stills and frames. Camera: orbit about `target` (default: the
 // path's centre) at `distance` (default: frames the whole path), or `follow`.
@@ -79,6 +102,21 @@ struct RenderSpec {
   std::optional<Vec3> target;
   bool follow = false;
   double fovDeg = 32.0;
+  std::optional<VideoFormat> format;  // animations; default: from the output's extension, else mp4
+};
+
+enum class Easing { Linear, Smooth };
+
+// [animation]: how frame time maps to arc length, and the encoder's settings.
+// The motion lasts `duration` seconds, or L/speed when `speed` is given.
+struct AnimationSpec {
+  long long fps = 30;
+  double duration = 10.0;        // seconds for the whole path
+  std::optional<double> speed;   // arc length per second (instead of duration)
+  Easing easing = Easing::Smooth;
+  double hold = 0.5;             // seconds the first and the last frame are held
+  double crf = 18.0;             // H.264 constant rate factor (0 lossless … 51)
+  std::string preset = "medium"; // x264 preset
 };
 
 struct SceneSpec {
@@ -91,6 +129,7 @@ struct SceneSpec {
   SolverSpec solver;
   TimelineSpec timeline;
   RenderSpec render;
+  AnimationSpec animation;
 
   // Where a dotted key ("ball.radius") was set; the file (no line) when the
   // key took its default.

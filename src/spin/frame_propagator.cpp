@@ -17,14 +17,21 @@ Su2 frameSpinor(const geometry::DarbouxSample& f) {
 
 Su2 frame4Element(const geometry::ContactPath& path, double ballRadius, double s, double h) {
   constexpr double c = 0.28867513459481288225;  // √3/6: Gauss points ½ ∓ √3/6
+  constexpr double k = 0.14433756729740644113;    // √3/12
   const geometry::DarbouxSample fa = path.at(s), fb = path.at(s + h);
-  const Vec3 g1 = frameAngularVelocity(path.at(s + (0.5 - c) * h), ballRadius);
-  const Vec3 g2 = frameAngularVelocity(path.at(s + (0.5 + c) * h), ballRadius);
-  const Vec3 magnus = (0.5 * h) * (g1 + g2) + (0.14433756729740644113 * h * h) * g2.cross(g1);  // √3/12
+  const geometry::DarbouxSample f1 = path.at(s + (0.5 - c) * h), f2 = path.at(s + (0.5 + c) * h);
+  const Vec3 g1 = frameAngularVelocity(f1, ballRadius), g2 = frameAngularVelocity(f2, ballRadius);
+  const Vec3 magnus = (0.5 * h) * (g1 + g2) + (k * h * h) * g2.cross(g1);
   const Su2 phiA = frameSpinor(fa), phiB = frameSpinor(fb);
-  // The frame's own turn over the step, on the short arc (continuous lift).
+  // The frame's own turn over the step, D = Φ(s+h) Φ(s)†, known up to sign
+  // from the two frames. The continuous lift is the sign nearer the Magnus
+  // estimate of the frame's turn, exp(Ω_d) with F' = [d]× F: correct while
+  // that estimate is within π of the truth, even when the frame turns by a
+  // full circle or more within one step (exact for constant curvatures).
+  const Vec3 d1 = geometry::darbouxVector(f1), d2 = geometry::darbouxVector(f2);
+  const Su2 predicted = expRotation((0.5 * h) * (d1 + d2) + (k * h * h) * d2.cross(d1));
   Su2 turn = phiB * phiA.conjugate();
-  if (turn.w < 0.0) turn = -turn;
+  if (turn.w * predicted.w + turn.x * predicted.x + turn.y * predicted.y + turn.z * predicted.z < 0.0) turn = -turn;
   // The moving-frame rotation expressed in world axes at s (sign-free: Φ appears twice).
   const Su2 body = phiA * expRotation(magnus) * phiA.conjugate();
   return turn * body;

@@ -8,8 +8,9 @@
 // One step from s to s + h applies 4th-order Magnus to V (two Gauss points,
 // one commutator) and composes with the frame exactly:
 //   U(s+h) = D · Φ(s) exp(Ω_g) Φ(s)† · U(s),   D = Φ(s+h) Φ(s)†,
-// where D is taken on the short arc (D.w ≥ 0), the continuous lift while the
-// frame turns by less than π per step. Exact for constant κ_g at any h.
+// where D's sign (the continuous lift) is the one nearer the Magnus estimate
+// exp(Ω_d) of the frame's turn (d the Darboux vector at the same Gauss
+// points). Exact for constant κ_n, κ_g, τ_g at any h.
 #pragma once
 
 #include "geometry/contact_path.hpp"

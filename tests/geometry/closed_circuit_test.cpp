@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <numbers>
 
 #include "kinematics/rolling_kinematics.hpp"
@@ -64,6 +66,9 @@ TEST(ClosedCircuit, ParallelsTurnTheBallByTheClosedForm) {
                                  std::pair{spin::Method::Magnus4, 6000LL}}) {
       const spin::SolveStats st = spin::Propagator(*path, c.R, method, steps).solveFinal();
       ASSERT_EQ(st.status, spin::SolveStatus::Ok) << c.name;
+      if (std::getenv("ROLLSPIN_VERBOSE"))
+        std::printf("%-26s %-8s δ = %8.4f  |U − U_closed| = %.1e\n", c.name.c_str(),
+                    std::string(spin::methodName(method)).c_str(), delta, spin::spinorDistance(st.final, expected));
       EXPECT_LE(spin::spinorDistance(st.final, expected), 1e-10)
           << c.name << " method " << spin::methodName(method) << " δ = " << delta;
     }
@@ -80,6 +85,8 @@ TEST(ClosedCircuit, KinematicsAgreeWithTheClosedFormOnBothSides) {
             .finalOrientation();
     const Eigen::AngleAxisd aa(q);
     const double folded = std::abs(std::remainder(delta, 2 * kPi));
+    if (std::getenv("ROLLSPIN_VERBOSE"))
+      std::printf("%-26s kinematics angle gap %.1e\n", c.name.c_str(), std::abs(aa.angle() - folded));
     EXPECT_NEAR(aa.angle(), folded, 1e-9) << c.name;
   }
 }

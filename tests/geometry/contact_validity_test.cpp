@@ -79,6 +79,23 @@ TEST(CurveErrors, LeavingTheDomainIsReported) {
   }
 }
 
+TEST(CurveErrors, KinksInExpressionsAreRefused) {
+  auto plane = std::make_shared<const Plane>(Vec3(0, 0, 1));
+  auto e = [](const char* t) { return std::make_shared<const Expression>(t, std::vector<std::string>{"t"}); };
+  try {
+    (void)uvExpressionPath(plane, e("t"), e("abs(t-0.3)"), -1.0, 1.0);
+    ADD_FAILURE() << "a kink was accepted";
+  } catch (const GeometryError& err) {
+    EXPECT_NE(std::string(err.what()).find("corner at curve parameter 0.3"), std::string::npos) << err.what();
+  }
+  // A crease in the surface under a smooth curve: the normal jumps.
+  auto creased = HeightField::fromExpression(
+      std::make_shared<const Expression>("0.5*abs(x-0.2)", std::vector<std::string>{"x", "y"}), true);
+  EXPECT_THROW((void)uvExpressionPath(creased, e("t"), e("0.3*t"), -1.0, 1.0), GeometryError);
+  // A cusp: zero speed at t = 0.
+  EXPECT_THROW((void)uvExpressionPath(plane, e("t^3"), e("t^2"), -1.0, 1.0), GeometryError);
+}
+
 TEST(CurveErrors, CornersNeedARadius) {
   const std::vector<Vec2> square{{0, 0}, {2, 0}, {2, 2}, {0, 2}};
   try {

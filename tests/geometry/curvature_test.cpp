@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <numbers>
 
 #include "geometry/analytic_paths.hpp"
@@ -77,6 +79,25 @@ TEST(Curvature, ParaboloidParallelsMatchClosedForms) {
     }
 }
 
+TEST(Curvature, LoxodromeMatchesClosedForms) {
+  // Heading α from the meridians on a sphere of radius r: κ_n = ∓1/r (every
+  // direction is principal: τ_g = 0), |κ_g| = |sin α cot θ| / r.
+  const double r = 3.0;
+  for (bool outside : {true, false})
+    for (double alpha : {-60 * kDeg, 20 * kDeg, 75 * kDeg}) {
+      auto sphere = std::make_shared<const Sphere>(r, outside ? Side::Outside : Side::Inside);
+      const auto path = sphereLoxodrome(sphere, alpha, 0.3, 25 * kDeg, 160 * kDeg);
+      EXPECT_NEAR(path->length(), r * (135 * kDeg) / std::cos(alpha), 1e-12);
+      for (double s : grid(path->length(), 30)) {
+        const DarbouxSample f = path->at(s);
+        const double theta = path->uvAt(s).x();
+        EXPECT_NEAR(f.normalCurvature, (outside ? -1.0 : 1.0) / r, 1e-13);
+        EXPECT_NEAR(f.geodesicTorsion, 0.0, 1e-13);
+        EXPECT_NEAR(std::abs(f.geodesicCurvature), std::abs(std::sin(alpha) / std::tan(theta)) / r, 1e-12);
+      }
+    }
+}
+
 TEST(Curvature, GenericSphereParallelEqualsTheAnalyticPath) {
   for (bool outside : {true, false})
     for (double theta : {20 * kDeg, 90 * kDeg, 130 * kDeg}) {
@@ -132,6 +153,19 @@ TEST(Curvature, IdentityAndFiniteDifferencesOnEveryCase) {
   }
 }
 
+// Geodesics are integrated (RK4 in arc length, then Chebyshev panels), not
+// chords: their geodesic curvature stays at the integration error.
+TEST(Geodesic, GeodesicCurvatureVanishes) {
+  for (const SurfaceCase& c : allSurfaceCases()) {
+    if (c.name.find("geodesic") == std::string::npos) continue;
+    const auto path = c.make();
+    double worst = 0.0;
+    for (double s : grid(path->length(), 400)) worst = std::max(worst, std::abs(path->at(s).geodesicCurvature));
+    if (std::getenv("ROLLSPIN_VERBOSE")) std::printf("%-20s max |κ_g| %.1e\n", c.name.c_str(), worst);
+    EXPECT_LE(worst, 3e-8) << c.name;  // measured ≤ 7.2e-9 (sphere, torus)
+  }
+}
+
 TEST(ArcLength, InverseMapIsExactToRoundOff) {
   for (const SurfaceCase& c : allSurfaceCases()) {
     const auto path = c.make();
@@ -174,6 +208,7 @@ TEST(Torsion, DroppingItOnAHelixChangesTheResult) {
   const double gapWith = rotationGap(with, truth), gapWithout = rotationGap(without, truth);
   EXPECT_LE(gapWith, 1e-10);
   EXPECT_GT(gapWithout, 1e-3);
+  if (std::getenv("ROLLSPIN_VERBOSE")) std::printf("helix: with τ_g %.2e, without %.3e rad\n", gapWith, gapWithout);
   RecordProperty("gap_with_torsion", std::to_string(gapWith));
   RecordProperty("gap_without_torsion", std::to_string(gapWithout));
 }

@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# Video benchmark (on demand, not in CI): a 10 s 1080p30 clip of the lollipop
+# (300 frames, no holds), measured in one run:
+#   (a) rollspin render → MP4, end to end (solve, render, convert, encode, mux)
+#   (b) the ffmpeg tool encoding the same frames from raw RGBA with the same
+#       codec settings (libx264, preset, CRF, yuv420p through the BT.709
+#       matrix with swscale's bilinear filter, BT.709 tags, +faststart)
+#   (c) rollspin writing PNG frames, then the ffmpeg tool encoding them (the
+#       way a QuTiP/matplotlib script makes a video)
+#   peak RSS of a 40 s clip against the 10 s clip (rollspin, MP4).
+# Targets: (a)/(b) ≤ 1.5, (c)/(a) ≥ 3, RSS(40 s)/RSS(10 s) ≤ 1.10.
+# Needs a Release build (scripts/build.sh) and Debian's ffmpeg package.
+# Usage: bash scripts/bench_video.sh [WORK_DIR]   (default: a fresh temp dir)
+# DURATION / LONG_DURATION / SIZE override 10, 40 and 1920x1080 for a quick try.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+bin=$root/build/rollspin
+[ -x "$bin" ] || { echo "bench_video: build first (bash scripts/build.sh)" >&2; exit 1; }
+command -v ffmpeg >/dev/null || { echo "bench_video: needs the ffmpeg tool (apt-get install ffmpeg)" >&2; exit 1; }
+
+work=${1:-$(mktemp -d /tmp/rollspin-bench-video.XXXXXX)}
+mkdir -p "$work"
+duration=${DURATION:-10}
+long=${LONG_DURATION:-40}
+size=${SIZE:-1920x1080}
+width=${size%x*}
+height=${size#*x}
+fps=30
+crf=18
+preset=medium
+scene=$root/scenes/lollipop.toml
+common=(--set render.width="$width" --set render.height="$height" --set animation.fps=$fps
+        --set animation.hold=0 --set animation.crf=$crf --set animation.preset=$preset --quiet)
+
+# Runs a command; prints "WALL_SECONDS PEAK_RSS_KIB" (RSS of the largest child).
+measure() {
+  python3 - "$@" <<'EOF'
+import resource, subprocess, sys, time
+start = time.monotonic()
+subprocess.run(sys.argv[1:], check=True)
+wall = time.monotonic() - start
+print(f"{wall:.3f} {resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss}")
+EOF
+}
+
+echo "bench_video: ${duration} s at ${width}x${height}@${fps}, libx264 preset ${preset} crf ${crf}; work dir $work"
+echo "machine: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
+
+# (a) rollspin end to end.
+read -r a_wall a_rss < <(measure "$bin" render "$scene" "${common[@]}" --set animation.duration="$duration" \
+                                 -o "$work/a.mp4")
+echo "(a) rollspin render → MP4:                  ${a_wall} s  (peak RSS $((a_rss / 1024)) MiB)"
+
+# (c) PNG frames, then the ffmpeg tool (timed together).
+rm -rf "$work/frames"
+read -r c1_wall _ < <(measure "$bin" render "$scene" "${common[@]}" --set animation.duration="$duration" \
+                               --set render.format=png -o "$work/frames")
+x264_args=(-c:v libx264 -preset $preset -crf $crf -pix_fmt yuv420p
+           -vf "scale=out_color_matrix=bt709:out_range=tv:flags=bilinear"
+           -colorspace bt709 -color_primaries bt709 -color_trc bt709 -color_range tv -movflags +faststart)
+read -r c2_wall _ < <(measure ffmpeg -v error -y -framerate $fps -i "$work/frames/frame_%05d.png" "${x264_args[@]}" \
+                               "$work/c.mp4")
+c_wall=$(python3 -c "print(f'{$c1_wall + $c2_wall:.3f}')")
+echo "(c) PNG frames + ffmpeg tool:               ${c_wall} s  (frames ${c1_wall} s, encode ${c2_wall} s)"
+
+# (b) the same frames as raw RGBA (prepared untimed, read from the page cache).
+ffmpeg -v error -y -i "$work/frames/frame_%05d.png" -f rawvideo -pix_fmt rgba "$work/frames.rgba"
+cat "$work/frames.rgba" > /dev/null
+read -r b_wall _ < <(measure ffmpeg -v error -y -f rawvideo -pix_fmt rgba -s "${width}x${height}" -framerate $fps \
+                               -i "$work/frames.rgba" "${x264_args[@]}" "$work/b.mp4")
+rm -f "$work/frames.rgba"
+echo "(b) ffmpeg tool, raw RGBA → MP4:            ${b_wall} s"
+
+# Peak RSS of a clip 4× longer.
+read -r l_wall l_rss < <(measure "$bin" render "$scene" "${common[@]}" --set animation.duration="$long" \
+                                 -o "$work/long.mp4")
+echo "    rollspin ${long} s clip:                    ${l_wall} s  (peak RSS $((l_rss / 1024)) MiB)"
+
+python3 - "$a_wall" "$b_wall" "$c_wall" "$a_rss" "$l_rss" <<'EOF'
+import sys
+a, b, c, rss10, rss40 = map(float, sys.argv[1:])
+def verdict(ok): return "ok" if ok else "MISSED"
+print(f"(a)/(b) = {a / b:.2f}   target <= 1.5   {verdict(a / b <= 1.5)}")
+print(f"(c)/(a) = {c / a:.2f}   target >= 3     {verdict(c / a >= 3)}")
+print(f"RSS long/short = {rss40 / rss10:.3f} ({rss40 / 1024:.0f} / {rss10 / 1024:.0f} MiB)   target <= 1.10   "
+      f"{verdict(rss40 / rss10 <= 1.10)}")
+EOF

@@ -1,0 +1,45 @@
+// Animation job: scene file → frames at the exact arc lengths s(t_k) of the
+// FrameClock → an MP4 (H.264) or a folder of PNG frames. Streaming: the
+// main thread solves and renders frame after frame (the GL context lives on
+// it) while a second thread converts and encodes, with a small bounded queue
+// between them, so both cores work and memory does not grow with the clip.
+// SIGINT/SIGTERM stop between frames and leave a shorter, valid output under
+// a name that says so (or nothing); errors leave nothing at the final name.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rollspin::app {
+
+struct AnimationOptions {
+  std::string scenePath;
+  std::vector<std::string> overrides;          // --set
+  std::filesystem::path output;                // "" → output/<scene>.mp4 or output/<scene>/
+  std::optional<std::string> frames;           // "A:B", inclusive
+  std::optional<std::string> quality;          // low | medium | high | 4k
+  std::optional<long long> width, height;
+  bool transparent = false;
+  bool quiet = false;
+  std::filesystem::path shaderDir;
+};
+
+struct AnimationResult {
+  std::filesystem::path written;  // empty when interrupted before any frame
+  long long framesWritten = 0;
+  long long framesRequested = 0;
+  int interruptedBy = 0;          // the signal, or 0
+};
+
+// Quality presets (Manim's spirit): size and frame rate.
+struct QualityPreset {
+  const char* name;
+  int width, height, fps;
+};
+[[nodiscard]] const QualityPreset* findQualityPreset(const std::string& name);
+
+AnimationResult renderAnimation(const AnimationOptions& options);
+
+}  // namespace rollspin::app

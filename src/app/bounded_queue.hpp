@@ -1,0 +1,64 @@
+// BoundedQueue — a fixed-capacity FIFO between one producer thread and one
+// consumer thread. The producer blocks while the queue is full, so memory
+// stays bounded however long the stream; close() ends the stream (the
+// consumer drains what is left), abort() ends it and drops what is left.
+#pragma once
+
+#include <condition_variable>
+#include <cstddef>
+#include <deque>
+#include <mutex>
+#include <optional>
+
+namespace rollspin::app {
+
+template <typename T>
+class BoundedQueue {
+ public:
+  explicit BoundedQueue(std::size_t capacity) : capacity_(capacity < 1 ? 1 : capacity) {}
+
+  // Blocks while full; false when the queue was closed (the item is dropped).
+  bool push(T item) {
+    std::unique_lock lock(mutex_);
+    notFull_.wait(lock, [&] { return closed_ || items_.size() < capacity_; });
+    if (closed_) return false;
+    items_.push_back(std::move(item));
+    notEmpty_.notify_one();
+    return true;
+  }
+
+  // Blocks while empty and open; nullopt once closed and drained.
+  std::optional<T> pop() {
+    std::unique_lock lock(mutex_);
+    notEmpty_.wait(lock, [&] { return closed_ || !items_.empty(); });
+    if (items_.empty()) return std::nullopt;
+    T item = std::move(items_.front());
+    items_.pop_front();
+    notFull_.notify_one();
+    return item;
+  }
+
+  void close() {
+    std::lock_guard lock(mutex_);
+    closed_ = true;
+    notEmpty_.notify_all();
+    notFull_.notify_all();
+  }
+
+  void abort() {
+    std::lock_guard lock(mutex_);
+    closed_ = true;
+    items_.clear();
+    notEmpty_.notify_all();
+    notFull_.notify_all();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable notFull_, notEmpty_;
+  std::deque<T> items_;
+  std::size_t capacity_;
+  bool closed_ = false;
+};
+
+}  // namespace rollspin::app

@@ -1,0 +1,27 @@
+// InterruptGuard — while one is alive, SIGINT and SIGTERM only raise a flag,
+// so a long render can stop between frames and still finish its output
+// cleanly (flush the encoder, write the trailer). The handler resets itself:
+// a second Ctrl-C kills the process the usual way (only temporary files can
+// be left, never a corrupt file at a final name). The previous handlers are
+// restored when the guard goes.
+#pragma once
+
+#include <csignal>
+
+namespace rollspin::app {
+
+class InterruptGuard {
+ public:
+  InterruptGuard();
+  ~InterruptGuard();
+  InterruptGuard(const InterruptGuard&) = delete;
+  InterruptGuard& operator=(const InterruptGuard&) = delete;
+
+  // The signal received (SIGINT, SIGTERM) or 0.
+  [[nodiscard]] static int received();
+
+ private:
+  struct sigaction previousInt_ {}, previousTerm_ {};
+};
+
+}  // namespace rollspin::app

@@ -1,0 +1,151 @@
+// Mp4Writer on synthetic frames (no GL): what a player sees (codec, pixel
+// format, BT.709 tags, timestamps, faststart), colours that survive the
+// RGBA → yuv420p → RGBA round trip, and every failure leaving nothing behind.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "core/error.hpp"
+#include "media/mp4_writer.hpp"
+#include "media/video_probe.hpp"
+#include "support/cli_runner.hpp"
+
+namespace rollspin {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Flat colour blocks (chroma subsampling cannot blur them away) and a bar
+// that moves one block per frame, so every frame differs.
+media::Image testFrame(int width, int height, int k) {
+  media::Image image(width, height);
+  static const std::uint8_t kColours[4][3] = {{200, 30, 30}, {30, 160, 60}, {40, 60, 210}, {235, 235, 235}};
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const int block = (x / 16 + y / 16 + k) % 4;
+      std::uint8_t* p = image.pixel(x, y);
+      for (int c = 0; c < 3; ++c) p[c] = kColours[block][c];
+      p[3] = 255;
+    }
+  return image;
+}
+
+std::vector<fs::path> filesIn(const fs::path& dir) {
+  std::vector<fs::path> out;
+  for (const auto& e : fs::directory_iterator(dir)) out.push_back(e.path().filename());
+  return out;
+}
+
+TEST(Mp4Writer, WritesH264Yuv420pTaggedBt709WithMonotonicTimestamps) {
+  const fs::path dir = test::freshTempDir("mp4_tags");
+  const fs::path out = dir / "clip.mp4";
+  media::Mp4Settings settings{64, 48, 12};
+  {
+    media::Mp4Writer writer(out, settings);
+    for (int k = 0; k < 24; ++k) writer.write(testFrame(64, 48, k).view());
+    EXPECT_FALSE(fs::exists(out)) << "the final name appears only on finish()";
+    EXPECT_EQ(writer.finish(), out);
+  }
+  EXPECT_EQ(filesIn(dir), std::vector<fs::path>{"clip.mp4"}) << "no temporary file left";
+  const test::VideoProbe probe = test::probeVideo(out, {5});
+  EXPECT_EQ(probe.codec, "h264");
+  EXPECT_EQ(probe.pixelFormat, "yuv420p");
+  EXPECT_EQ(probe.colorSpace, "bt709");
+  EXPECT_EQ(probe.colorPrimaries, "bt709");
+  EXPECT_EQ(probe.colorTransfer, "bt709");
+  EXPECT_EQ(probe.colorRange, "tv");
+  EXPECT_EQ(probe.width, 64);
+  EXPECT_EQ(probe.height, 48);
+  EXPECT_DOUBLE_EQ(probe.frameRate, 12.0);
+  EXPECT_TRUE(probe.indexBeforeData) << "+faststart: moov before mdat";
+  ASSERT_EQ(probe.ptsSeconds.size(), 24u);
+  for (std::size_t k = 0; k < probe.ptsSeconds.size(); ++k)
+    EXPECT_NEAR(probe.ptsSeconds[k], double(k) / 12.0, 1e-6) << "frame " << k;
+
+  // Flat blocks away from their edges: the BT.709 round trip is within a few
+  // levels (8-bit limited-range YUV quantisation plus CRF 18).
+  ASSERT_EQ(probe.kept.size(), 1u);
+  const media::Image expected = testFrame(64, 48, 5);
+  double worst = 0.0;
+  for (int y = 4; y < 48; y += 16)
+    for (int x = 4; x < 64; x += 16)
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(double(probe.kept[0].pixel(x + 4, y + 4)[c]) - expected.pixel(x + 4, y + 4)[c]));
+  EXPECT_LE(worst, 6.0);
+}
+
+TEST(Mp4Writer, FinishPartialGivesAShorterPlayableVideoUnderAPartialName) {
+  const fs::path dir = test::freshTempDir("mp4_partial");
+  const fs::path out = dir / "clip.mp4";
+  {
+    media::Mp4Writer writer(out, {32, 32, 10});
+    for (int k = 0; k < 5; ++k) writer.write(testFrame(32, 32, k).view());
+    EXPECT_EQ(writer.finishPartial(), dir / "clip.partial.mp4");
+  }
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(filesIn(dir), std::vector<fs::path>{"clip.partial.mp4"});
+  EXPECT_EQ(test::probeVideo(dir / "clip.partial.mp4").ptsSeconds.size(), 5u);
+}
+
+TEST(Mp4Writer, NothingIsLeftWithoutFramesOrWithoutFinish) {
+  const fs::path dir = test::freshTempDir("mp4_nothing");
+  {
+    media::Mp4Writer writer(dir / "a.mp4", {32, 32, 10});
+    EXPECT_TRUE(writer.finishPartial().empty());
+  }
+  {
+    media::Mp4Writer writer(dir / "b.mp4", {32, 32, 10});
+    writer.write(testFrame(32, 32, 0).view());
+  }  // destroyed unfinished (an error elsewhere)
+  EXPECT_TRUE(filesIn(dir).empty());
+}
+
+TEST(Mp4Writer, RefusesOddSizesAndMissingEncodersUpFront) {
+  const fs::path dir = test::freshTempDir("mp4_refuse");
+  try {
+    media::Mp4Writer writer(dir / "odd.mp4", {33, 32, 10});
+    FAIL() << "odd width accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.exitCode(), 2);
+    EXPECT_NE(std::string(e.what()).find("even"), std::string::npos) << e.what();
+  }
+  media::Mp4Settings settings{32, 32, 10};
+  settings.encoder = "no-such-encoder";
+  try {
+    media::Mp4Writer writer(dir / "codec.mp4", settings);
+    FAIL() << "unknown encoder accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.exitCode(), 1);
+    EXPECT_NE(std::string(e.what()).find("no-such-encoder"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(filesIn(dir).empty());
+}
+
+TEST(Mp4Writer, UnwritableFolderIsAClearRuntimeError) {
+  const fs::path dir = test::freshTempDir("mp4_unwritable");
+  std::ofstream(dir / "file") << "x";
+  try {
+    media::Mp4Writer writer(dir / "file" / "clip.mp4", {32, 32, 10});  // a file as the folder
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.exitCode(), 1);
+    EXPECT_NE(std::string(e.what()).find("cannot create"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Mp4Writer, FullDiskIsAClearRuntimeError) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  try {
+    media::Mp4Writer writer("/dev/full", {64, 48, 10});
+    for (int k = 0; k < 40; ++k) writer.write(testFrame(64, 48, k).view());
+    writer.finish();
+    FAIL() << "writing to /dev/full succeeded";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.exitCode(), 1);
+    EXPECT_NE(std::string(e.what()).find("No space left"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace rollspin

@@ -1,0 +1,33 @@
+// Test helper: decodes a video file with the FFmpeg libraries (no ffprobe
+// needed) and reports what a player would see: codec, pixel format, colour
+// tags, every frame's presentation timestamp, and chosen frames as RGBA
+// (BT.709, limited range → full-range RGB, the inverse of the encoder's
+// conversion).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "media/image_view.hpp"
+
+namespace rollspin::test {
+
+struct VideoProbe {
+  std::string container;     // "mov,mp4,m4a,3gp,3g2,mj2"
+  std::string codec;         // "h264"
+  std::string pixelFormat;   // "yuv420p"
+  std::string colorSpace, colorPrimaries, colorTransfer, colorRange;  // "bt709", …, "tv"
+  int width = 0, height = 0;
+  double frameRate = 0.0;    // average, from the stream
+  std::vector<double> ptsSeconds;   // decoded frames, in presentation order
+  std::vector<media::Image> kept;   // the frames asked for, in index order
+  bool indexBeforeData = false;     // 'moov' before 'mdat' (+faststart)
+};
+
+// Throws std::runtime_error when the file cannot be opened or decoded.
+VideoProbe probeVideo(const std::filesystem::path& file, const std::set<long long>& keepFrames = {});
+
+}  // namespace rollspin::test

@@ -6,6 +6,7 @@
 // in the same run that times it.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <memory>
 
 #include "geometry/analytic_paths.hpp"
@@ -56,6 +57,33 @@ static void BM_LollipopRevolution_Rk4_1e11(benchmark::State& s) { runAtAccuracy(
 BENCHMARK(BM_LollipopRevolution_Rk4_1e11)->Unit(benchmark::kMicrosecond);
 static void BM_LollipopRevolution_Magnus2_1e8(benchmark::State& s) { runAtAccuracy(s, spin::Method::Magnus2, 1e-8); }
 BENCHMARK(BM_LollipopRevolution_Magnus2_1e8)->Unit(benchmark::kMicrosecond);
+
+// The adaptive methods at the largest tolerance 1e-8·10^(−k/8) whose final
+// error is ≤ 1e-11 (the same search as `rollspin report errors`).
+void runAdaptiveAtAccuracy(benchmark::State& state, spin::Method m, double target) {
+  const auto path = lollipop();
+  const spin::Su2 exact = spin::Propagator(*path, 1.0, spin::Method::Exact, 0).solveFinal().final;
+  double tol = 1e-8, error = 1.0;
+  for (int k = 0; k < 64; ++k) {
+    tol = 1e-8 * std::pow(10.0, -k / 8.0);
+    error = spin::spinorDistance(spin::Propagator(*path, 1.0, m, 0, tol).solveFinal().final, exact);
+    if (error <= target) break;
+  }
+  const spin::Propagator propagator(*path, 1.0, m, 0, tol);
+  long long steps = 0;
+  for (auto _ : state) {
+    spin::SolveStats stats = propagator.solveFinal();
+    steps = stats.steps;
+    benchmark::DoNotOptimize(stats.final);
+  }
+  state.counters["steps"] = static_cast<double>(steps);
+  state.counters["error"] = error;
+  state.counters["tolerance"] = tol;
+}
+static void BM_LollipopRevolution_Rk45_1e11(benchmark::State& s) { runAdaptiveAtAccuracy(s, spin::Method::Rk45, 1e-11); }
+BENCHMARK(BM_LollipopRevolution_Rk45_1e11)->Unit(benchmark::kMicrosecond);
+static void BM_LollipopRevolution_Magnus6_1e11(benchmark::State& s) { runAtAccuracy(s, spin::Method::Magnus6, 1e-11); }
+BENCHMARK(BM_LollipopRevolution_Magnus6_1e11)->Unit(benchmark::kMicrosecond);
 
 static void BM_LollipopRevolution_Exact(benchmark::State& state) {
   const auto path = lollipop();

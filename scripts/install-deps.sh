@@ -12,6 +12,7 @@ packages=(
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   ffmpeg
   libmuparser-dev
+  gnuplot-nox
   clang libclang-rt-14-dev time
 )
 

@@ -16,4 +16,7 @@ void registerSolveCommands(CLI::App& cli, CommandHandler& handler);
 // Adds `render` (stills) and `compare` (images); render_commands.cpp.
 void registerRenderCommands(CLI::App& cli, CommandHandler& handler);
 
+// Adds `report` with errors | stress | paper; report_commands.cpp.
+void registerReportCommands(CLI::App& cli, CommandHandler& handler);
+
 }  // namespace rollspin::app

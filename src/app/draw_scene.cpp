@@ -102,6 +102,9 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
   if (!ballTexture_) ballTexture_ = render::tennisBallTexture();
 
   sphereMesh_ = render::uvSphere(96, 48);
+  // Surfaces receive the ball's shadow but cast none: a surface shadowing
+  // itself only adds acne, and where the ball's shadow would pass through a
+  // surface to its far side, that side faces away from the light anyway.
   surfaceMaterial_.castsShadow = false;
   surfaceMaterial_.receivesShadow = true;
   surfaceMaterial_.specular = 0.0f;  // matte: cheaper, and no glare on the board
@@ -146,8 +149,6 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
         const double phi = 2.0 * std::numbers::pi * k / 180;
         cutRim_.push_back(offset * toEye + rimRadius * (std::cos(phi) * e1 + std::sin(phi) * e2));
       }
-    } else {
-      surfaceMaterial_.castsShadow = true;  // the globe hides the ball's shadow from its far side
     }
     surfaceMesh_ = render::parametricPatch(
         [&](float a, float b, glm::vec3& p, glm::vec3& nn) {
@@ -208,7 +209,6 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
           std::clamp(int(cellsU * 4), 16, 256), std::clamp(int(cellsV * 4), 16, 256), glm::vec2(cellsU, cellsV));
       surfaceMaterial_.color = {0.78f, 0.77f, 0.74f};
       surfaceMaterial_.color2 = {0.55f, 0.57f, 0.60f};
-      surfaceMaterial_.castsShadow = true;  // may hide the ball's shadow from its own far side
       for (const auto& v : surfaceMesh_->vertices) {
         const Vec3 p(v.position.x, v.position.y, v.position.z);
         lo = lo.cwiseMin(p);

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   rollspin::app::CommandHandler handler;
   rollspin::app::registerSolveCommands(cli, handler);
   rollspin::app::registerRenderCommands(cli, handler);
+  rollspin::app::registerReportCommands(cli, handler);
 
   // Name an unknown command instead of CLI11's generic "a subcommand is required".
   std::string known;

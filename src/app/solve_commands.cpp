@@ -56,7 +56,11 @@ int runSolve(const SolveOptions& o) {
   fmt::print("ball radius      {:.17g}\n", model.ballRadius);
   fmt::print("length           {:.17g}\n", model.path->length());
   fmt::print("method           {} ({} steps{})\n", spin::methodName(choice.method), stats.steps,
-             choice.method == spin::Method::Exact ? ", closed form" : choice.automaticSteps ? ", automatic" : "");
+             choice.method == spin::Method::Exact ? ", closed form"
+             : spin::isAdaptive(choice.method)    ? fmt::format(", adaptive, tolerance {:g}, {} rejected",
+                                                                choice.tolerance, stats.rejectedSteps)
+             : choice.automaticSteps              ? ", automatic"
+                                                  : "");
   fmt::print("quaternion       [{:.17g}, {:.17g}, {:.17g}, {:.17g}]  (qw, qx, qy, qz)\n", q.w, q.x, q.y, q.z);
   fmt::print("rotation angle   {:.17g} rad ({:.12g} deg)\n", aa.angle, aa.angle * deg);
   fmt::print("rotation axis    [{:.17g}, {:.17g}, {:.17g}]\n", aa.axis.x(), aa.axis.y(), aa.axis.z());

@@ -32,6 +32,11 @@ SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& mode
     throw badInput(loc, "{}: the path's length {} is not a finite positive number", key, length);
   }
   choice.automaticSteps = !spec.solver.steps.has_value();
+  if (spin::isAdaptive(choice.method)) {
+    choice.automaticSteps = false;
+    choice.tolerance = spec.solver.tolerance.value_or(scene::SolverSpec::kDefaultTolerance);
+    return choice;
+  }
   if (spec.solver.steps) {
     choice.steps = *spec.solver.steps;
   } else if (choice.method != spin::Method::Exact) {
@@ -78,7 +83,7 @@ spin::SampleArcLengths timelineArcLengths(const scene::SceneSpec& spec, const Ro
 }
 
 spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model, const SolverChoice& choice) {
-  const spin::Propagator propagator(*model.path, model.ballRadius, choice.method, choice.steps);
+  const spin::Propagator propagator(*model.path, model.ballRadius, choice.method, choice.steps, choice.tolerance);
   spin::SolveStats stats = propagator.solveFinal();
   if (stats.status != spin::SolveStatus::Ok) {
     throw runtimeError(spec.where("solver.method"), "solver failed: {}", spin::statusMessage(stats.status));

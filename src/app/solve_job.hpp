@@ -14,6 +14,7 @@ struct SolverChoice {
   spin::Method method = spin::Method::Magnus4;
   long long steps = 0;
   bool automaticSteps = true;
+  double tolerance = 0.0;  // adaptive methods (rk45, frame6a)
 };
 
 // Throws BadInput (at solver.method) when 'exact' is asked for a path with

@@ -31,7 +31,7 @@ spin::SolveStats writeTimelineCsv(const std::filesystem::path& out, const Rollin
       buffer.clear();
     }
   };
-  const spin::Propagator propagator(*model.path, R, choice.method, choice.steps);
+  const spin::Propagator propagator(*model.path, R, choice.method, choice.steps, choice.tolerance);
   const spin::SolveStats stats = propagator.run(sampleS, sink);
   if (stats.status != spin::SolveStatus::Ok) {
     throw runtimeError(SourceLoc{out.string()}, "solver failed: {}; nothing written",

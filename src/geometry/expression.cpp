@@ -194,6 +194,7 @@ Expression::Expression(std::string text, std::vector<std::string> variables)
     compiled_->maxStack = std::max(compiled_->maxStack, depth);
     compiled_->program.push_back(ins);
   }
+  if (compiled_->program.empty()) throw ExpressionError(0, "empty expression");
   compiled_->maxStack += 2;
 }
 

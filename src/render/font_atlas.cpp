@@ -22,9 +22,10 @@ namespace {
 struct Range {
   char32_t first, last;
 };
-// ASCII, Latin-1 signs (° · ²), Greek, − ≈ × ⟨ ⟩, subscripts and ●.
-constexpr Range kRanges[] = {{0x20, 0x7E}, {0xB0, 0xB7}, {0xD7, 0xD7}, {0x391, 0x3C9},
-                             {0x2212, 0x2212}, {0x2248, 0x2248}, {0x27E8, 0x27E9}, {0x2080, 0x2089}, {0x25CF, 0x25CF}};
+// ASCII, Latin-1 signs (° · ²), Greek, mathematical operators (− √ ≈ ∫ …),
+// ⟨ ⟩, subscripts and ●.
+constexpr Range kRanges[] = {{0x20, 0x7E},     {0xB0, 0xB7},     {0xD7, 0xD7},     {0x391, 0x3C9},
+                             {0x2080, 0x2089}, {0x2200, 0x22FF}, {0x25CF, 0x25CF}, {0x27E8, 0x27E9}};
 }  // namespace
 
 std::u32string decodeUtf8(std::string_view s) {

@@ -598,14 +598,32 @@ SceneSpec Reader::read() {
   }
 
   // [solver]
-  const toml::table* solver = section("solver", {"method", "steps"});
-  if (auto m = text(solver, "solver", "method", {"exact", "magnus2", "magnus4", "rk4", "frame4"}))
+  const toml::table* solver = section("solver", {"method", "steps", "tolerance"});
+  if (auto m = text(solver, "solver", "method",
+                    {"exact", "magnus2", "magnus4", "rk4", "frame4", "cf4", "magnus6", "rk45", "frame6a"}))
     spec_.solver.method = *m;
   if (auto n = integer(solver, "solver", "steps")) {
     if (*n < 1 || *n > kMaxSolverSteps)
       failAt("solver.steps", fmt::format("expected an integer in [1, 1e11], got {}", *n));
     spec_.solver.steps = *n;
   }
+  if (auto tol = number(solver, "solver", "tolerance")) {
+    if (!(*tol >= 1e-15 && *tol <= 1.0))
+      failAt("solver.tolerance", fmt::format("expected a tolerance in [1e-15, 1], got {}", *tol));
+    spec_.solver.tolerance = *tol;
+  }
+  // A tolerance and no step count: the adaptive geometric method by default.
+  // Steps and tolerance each belong to one kind of method.
+  const bool methodGiven = spec_.locations.contains("solver.method");
+  const bool adaptive = spec_.solver.method == "rk45" || spec_.solver.method == "frame6a";
+  if (!methodGiven && spec_.solver.tolerance && !spec_.solver.steps) spec_.solver.method = "frame6a";
+  else if (spec_.solver.tolerance && !adaptive)
+    failAt("solver.tolerance", fmt::format("applies to the adaptive methods (\"frame6a\", \"rk45\"), but "
+                                           "solver.method is \"{}\"; remove solver.tolerance or solver.steps",
+                                           spec_.solver.method));
+  if (adaptive && spec_.solver.steps)
+    failAt("solver.steps", fmt::format("method \"{}\" chooses its own steps; set solver.tolerance instead",
+                                       spec_.solver.method));
 
   // [timeline]
   const toml::table* timeline = section("timeline", {"samples"});

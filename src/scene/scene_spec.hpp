@@ -57,7 +57,7 @@ struct PathSpec {
   double pitchAngleDeg = 30.0;        // helix: β from the parallels
   double headingDeg = 45.0;           // loxodrome: α from the meridians
   std::optional<Vec3> startPoint;     // geodesic: projected onto the surface; default per surface
-  std::string u = "t", v = "0";       // uv: surface parameters as expressions of t
+  std::string u = "0.5 + t", v = "t";  // uv: surface parameters as expressions of t (valid on every surface)
   double tStart = 0.0, tEnd = 1.0;    // uv: range of t
   std::vector<std::vector<double>> points;  // points: [u, v] parameters or [x, y, z] points
   bool closed = false;                // points: periodic spline / closed polygon
@@ -74,8 +74,10 @@ inline constexpr long long kMaxSolverSteps = 100'000'000'000LL;  // ~10 min of m
 inline constexpr long long kMaxTimelineSamples = 100'000'000LL;
 
 struct SolverSpec {
-  std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4 | frame4
+  std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4 | frame4 | cf4 | magnus6 | rk45 | frame6a
   std::optional<long long> steps;  // default: automatic (see README)
+  std::optional<double> tolerance;  // adaptive methods; default kDefaultTolerance; alone → frame6a
+  static constexpr double kDefaultTolerance = 1e-10;
 };
 
 struct TimelineSpec {

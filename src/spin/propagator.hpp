@@ -12,6 +12,18 @@
 //   rk4      classical Runge–Kutta on the raw spinor (not renormalised).
 //   frame4   4th-order Magnus in the Darboux frame, where only κ_g drives the
 //            motion, composed exactly with the frame (frame_propagator.hpp).
+//   cf4      Blanes–Moan commutator-free, two exponentials at the Gauss points:
+//            E = exp(h(a₂A₁ + a₁A₂)) exp(h(a₁A₁ + a₂A₂)), a₁,₂ = ¼ ± √3/6.
+//   magnus6  three Gauss points c = ½ − √15/10, ½, ½ + √15/10 (Blanes–Casas–Ros):
+//            α₁ = hA₂, α₂ = (√15/3)h(A₃ − A₁), α₃ = (10/3)h(A₃ − 2A₂ + A₁),
+//            C₁ = [α₁, α₂], C₂ = −(1/60)[α₁, 2α₃ + C₁],
+//            Ω = α₁ + α₃/12 + (1/240)[−20α₁ − α₃ + C₁, α₂ + C₂].
+//   rk45     adaptive Dormand–Prince 5(4) on the raw spinor (the generic ODE
+//            baseline; rtol = atol = tolerance per step), adaptive_march.hpp.
+//   frame6a  adaptive magnus6 in the Darboux frame (frame4's factorisation, so
+//            only κ_g drives the integrated part and constant κ_g is exact at
+//            any h), error by step doubling, controlled per unit length so the
+//            sum over the path stays ≤ tolerance (adaptive_march.hpp).
 // In su(2) ≅ (R³, ×): A(ω) = −(i/2) ω·σ and [A(a), A(b)] = A(a × b).
 // A sample s between grid nodes is reached by one partial step from the
 // preceding node, so samples never perturb the main march. The march
@@ -31,26 +43,34 @@
 
 namespace rollspin::spin {
 
-enum class Method { Exact, Magnus2, Magnus4, Rk4, Frame4 };
+enum class Method { Exact, Magnus2, Magnus4, Rk4, Frame4, Cf4, Magnus6, Rk45, Frame6a };
 
 [[nodiscard]] std::string_view methodName(Method m);
 [[nodiscard]] std::optional<Method> parseMethod(std::string_view name);
 [[nodiscard]] std::span<const Method> allMethods();
 // Order of accuracy of the method (0 for exact).
 [[nodiscard]] int methodOrder(Method m);
+// Adaptive methods choose their own steps from a tolerance (rk45, frame6a).
+[[nodiscard]] bool isAdaptive(Method m);
+// Methods that multiply exact SU(2) elements (unitary to round-off).
+[[nodiscard]] bool isGeometric(Method m);
 
 enum class SolveStatus {
   Ok,
   NonFinite,                    // NaN or infinity appeared; the march stopped
   ExactNeedsConstantCurvature,  // exact asked for a path whose curvatures vary
   BadSteps,                     // steps < 1 for a stepping method
+  BadTolerance,                 // an adaptive method needs a tolerance > 0
+  StepSizeUnderflow,            // an adaptive method could not meet its tolerance
+  StepLimit,                    // an adaptive method used up its step budget (setStepLimit)
 };
 [[nodiscard]] std::string_view statusMessage(SolveStatus s);
 
 struct SolveStats {
   SolveStatus status = SolveStatus::Ok;
   Method method = Method::Magnus4;
-  long long steps = 0;          // grid steps taken (0 for exact)
+  long long steps = 0;          // grid steps taken (0 for exact); accepted steps if adaptive
+  long long rejectedSteps = 0;  // adaptive methods only
   double unitarityError = 0.0;  // max |‖U‖ − 1| over grid nodes and samples
   double seconds = 0.0;         // wall time of the march alone
   Su2 final;                    // U(L)
@@ -86,7 +106,9 @@ using SampleSink = std::function<void(std::size_t, double, const Su2&)>;
 
 class Propagator {
  public:
-  Propagator(const geometry::ContactPath& path, double ballRadius, Method method, long long steps);
+  // steps: for fixed-step methods; tolerance: for adaptive ones (isAdaptive).
+  Propagator(const geometry::ContactPath& path, double ballRadius, Method method, long long steps,
+             double tolerance = 0.0);
 
   // Marches [0, L] once and reports U at every s of sampleS (non-decreasing,
   // inside [0, L]). Also returns U(L) and the unitarity error.
@@ -101,12 +123,17 @@ class Propagator {
   [[nodiscard]] Vec3 omega(double s) const;
 
   [[nodiscard]] Method method() const { return method_; }
+  // Adaptive methods stop with StepLimit after this many attempted steps
+  // (default 2e9): a report can bound a hopeless cell's cost.
+  void setStepLimit(long long attempts) { stepLimit_ = attempts; }
 
  private:
   const geometry::ContactPath& path_;
   double ballRadius_;
   Method method_;
   long long steps_;
+  double tolerance_;
+  long long stepLimit_ = 2'000'000'000;
   Vec3 d0_ = Vec3::Zero(), e0_ = Vec3::Zero();  // exact method's two rates
 };
 
@@ -116,6 +143,9 @@ inline constexpr std::size_t kMaxNodes = 3;
 // The step U ↦ E U of a stepping method, from ω at its nodes (w[i] at
 // s + c_i h). Every method here is linear in U from the left.
 [[nodiscard]] Su2 stepElement(Method m, double h, const Vec3* w);
+// magnus6's exponent Ω₆ (as a rotation vector) from ω at its three Gauss
+// nodes c = ½ − √15/10, ½, ½ + √15/10.
+[[nodiscard]] Vec3 magnus6Exponent(double h, const Vec3* w);
 
 // s_j = j L / (count − 1), j = 0 … count − 1 (count ≥ 2).
 [[nodiscard]] std::vector<double> uniformSamples(double length, std::size_t count);

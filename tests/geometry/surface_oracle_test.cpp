@@ -7,6 +7,7 @@
 
 #include <cstdlib>
 
+#include "kinematics/rolling_kinematics.hpp"
 #include "surface_support.hpp"
 
 using namespace rollspin;
@@ -25,14 +26,25 @@ long long kinematicSteps(const geometry::ContactPath& path) {
 TEST_P(SurfaceOracle, SpinorMatchesKinematics) {
   const SurfaceCase& c = GetParam();
   const auto path = c.make();
-  const long long steps = generousSteps(*path, c.R), kin = kinematicSteps(*path);
-  const OracleComparison m4 = compareWithKinematics(*path, c.R, spin::Method::Magnus4, steps, kin);
-  const OracleComparison f4 = compareWithKinematics(*path, c.R, spin::Method::Frame4, steps, kin);
-  if (std::getenv("ROLLSPIN_VERBOSE"))
-    std::printf("%-32s L=%7.3f steps=%6lld magnus4 %.2e frame4 %.2e\n", c.name.c_str(), path->length(), steps,
+  const long long steps = generousSteps(*path, c.R);
+  const std::vector<double> s = spin::uniformSamples(path->length(), 41);
+  const auto oracle =
+      kinematics::RollingKinematics(*path, c.R, {kinematicSteps(*path), oracleDifferenceStep(c.R)}).orientations(s);
+  const OracleComparison m4 = compareWithOrientations(*path, c.R, spin::Method::Magnus4, steps, s, oracle);
+  const OracleComparison f4 = compareWithOrientations(*path, c.R, spin::Method::Frame4, steps, s, oracle);
+  // Constant κ_n, κ_g, τ_g (parallels, helices, great circles, torus
+  // meridians): the closed form is an oracle too.
+  OracleComparison ex;
+  if (path->hasConstantCurvatures()) ex = compareWithOrientations(*path, c.R, spin::Method::Exact, 0, s, oracle);
+  if (std::getenv("ROLLSPIN_VERBOSE")) {
+    std::printf("%-32s L=%7.3f steps=%6lld magnus4 %.2e frame4 %.2e", c.name.c_str(), path->length(), steps,
                 m4.worstGap, f4.worstGap);
+    if (path->hasConstantCurvatures()) std::printf(" exact %.2e", ex.worstGap);
+    std::printf("\n");
+  }
   EXPECT_LE(m4.worstGap, 1e-10) << c.name << ": " << path->describe();
   EXPECT_LE(f4.worstGap, 1e-10) << c.name << ": " << path->describe();
+  EXPECT_LE(ex.worstGap, 1e-10) << c.name << ": " << path->describe();
   EXPECT_LE(m4.unitarityError, 1e-13);
   EXPECT_LE(f4.unitarityError, 1e-13);
 }

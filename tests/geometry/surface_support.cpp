@@ -97,11 +97,16 @@ double rotationGap(const spin::Su2& u, const Eigen::Matrix3d& q) {
 OracleComparison compareWithKinematics(const ContactPath& path, double R, spin::Method method, long long steps,
                                        long long kinematicSteps, std::size_t samples) {
   const std::vector<double> s = spin::uniformSamples(path.length(), samples);
+  const auto q = kinematics::RollingKinematics(path, R, {kinematicSteps, oracleDifferenceStep(R)}).orientations(s);
+  return compareWithOrientations(path, R, method, steps, s, q);
+}
+
+OracleComparison compareWithOrientations(const ContactPath& path, double R, spin::Method method, long long steps,
+                                         const std::vector<double>& s, const std::vector<Eigen::Matrix3d>& q) {
   std::vector<spin::Su2> u(s.size());
   const spin::SolveStats st =
-      spin::Propagator(path, R, method, steps).run(s, [&](std::size_t j, double, const spin::Su2& q) { u[j] = q; });
+      spin::Propagator(path, R, method, steps).run(s, [&](std::size_t j, double, const spin::Su2& v) { u[j] = v; });
   EXPECT_EQ(st.status, spin::SolveStatus::Ok);
-  const auto q = kinematics::RollingKinematics(path, R, {kinematicSteps, oracleDifferenceStep(R)}).orientations(s);
   OracleComparison c;
   c.unitarityError = st.unitarityError;
   for (std::size_t j = 0; j < s.size(); ++j) c.worstGap = std::max(c.worstGap, rotationGap(u[j], q[j]));

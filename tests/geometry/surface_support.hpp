@@ -47,6 +47,11 @@ struct OracleComparison {
 OracleComparison compareWithKinematics(const geometry::ContactPath& path, double R, spin::Method method,
                                        long long steps, long long kinematicSteps, std::size_t samples = 41);
 
+// The same against orientations the oracle already produced at `s`.
+OracleComparison compareWithOrientations(const geometry::ContactPath& path, double R, spin::Method method,
+                                         long long steps, const std::vector<double>& s,
+                                         const std::vector<Eigen::Matrix3d>& oracle);
+
 struct Residuals {
   double slip = 0.0, spin = 0.0;
 };

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <cstdlib>
 #include <fstream>
 
 #include "media/image_io.hpp"
@@ -35,6 +36,45 @@ TEST(RenderCli, CustomTextureIsUsed) {
   media::writePng(dir / "red.png", tex.view(), media::PngChannels::Rgba);
   const auto r = test::runRollspin({"render", scene("transparent"), "--still", "--set",
                                     "ball.texture=" + (dir / "red.png").string(), "-o", (dir / "a.png").string()});
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+}
+
+TEST(RenderCli, CameraAndLayoutOptionsRender) {
+  const fs::path dir = test::freshTempDir("cli_options");
+  const std::vector<std::vector<std::string>> variants{
+      {"--set", "render.follow=true", "--set", "render.layout=inset"},
+      {"--set", "render.msaa=1", "--set", "render.labels=false", "--set", "render.azimuth_deg=30"},
+      {"--set", "render.distance=20", "--set", "render.target=[0, 0, 1]", "--set", "render.elevation_deg=-20"},
+      {"--set", "ball.marker=[1, 0, 0]", "--set", "render.strobe=4", "--at", "s=0"},
+  };
+  for (const auto& extra : variants) {
+    std::vector<std::string> args{"render", scene("lollipop_side_by_side"), "--still", "--width", "96", "--height",
+                                  "54", "-o", (dir / "a.png").string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = test::runRollspin(args);
+    EXPECT_EQ(r.exitCode, 0) << extra[1] << ": " << r.err;
+    EXPECT_TRUE(fs::exists(dir / "a.png"));
+    fs::remove(dir / "a.png");
+  }
+}
+
+// No OpenGL 4.5 context (simulated by capping Mesa's version): a clear
+// message and exit code 1, and no file.
+TEST(RenderCli, ContextFailureExitsOne) {
+  const fs::path dir = test::freshTempDir("cli_nocontext");
+  ::setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1);
+  const auto r = test::runRollspin({"render", scene("twin_only"), "--still", "-o", (dir / "a.png").string()});
+  ::unsetenv("MESA_GL_VERSION_OVERRIDE");
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_NE(r.err.find("OSMesa could not create"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "a.png"));
+}
+
+TEST(SolveCli, NeedsNoGlContext) {
+  // solve never creates a context: it works even where GL 4.5 is unavailable.
+  ::setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1);
+  const auto r = test::runRollspin({"solve", scene("lollipop_side_by_side")});
+  ::unsetenv("MESA_GL_VERSION_OVERRIDE");
   EXPECT_EQ(r.exitCode, 0) << r.err;
 }
 

@@ -1,0 +1,87 @@
+// `rollspin report errors [SCENE.toml ...] | stress | paper [-o DIR]`: the
+// report library (src/report) does the work; this file turns scene files
+// into contact paths, prints progress on stderr and the headline on stdout.
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <system_error>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "app/scene_model.hpp"
+#include "core/error.hpp"
+#include "report/report.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace rollspin::app {
+
+namespace {
+
+struct ReportArgs {
+  std::vector<std::string> scenes;
+  std::vector<std::string> overrides;
+  std::string outDir = "output/report";
+};
+
+report::ReportOptions optionsFrom(const ReportArgs& a) {
+  report::ReportOptions o;
+  o.outDir = a.outDir;
+  // Fail before the work, not after it, when the folder cannot be made.
+  std::error_code ec;
+  std::filesystem::create_directories(o.outDir, ec);
+  if (ec) throw runtimeError(SourceLoc{"--output-dir " + a.outDir}, "cannot create {}: {}", a.outDir, ec.message());
+  o.progress = [](const std::string& line) { std::fprintf(stderr, "rollspin: %s\n", line.c_str()); };
+  return o;
+}
+
+int finish(const report::ReportOutcome& out) {
+  for (const auto& p : out.written) std::fprintf(stderr, "rollspin: wrote %s\n", p.string().c_str());
+  std::printf("%s\n", out.headline.c_str());
+  if (!out.plotError.empty())
+    throw runtimeError(SourceLoc{}, "report written, but the plot is missing: {}", out.plotError);
+  return 0;
+}
+
+int runErrors(const ReportArgs& a) {
+  std::vector<report::ReportScene> scenes;
+  if (a.scenes.empty()) {
+    scenes = report::defaultErrorScenes();
+  } else {
+    for (const std::string& file : a.scenes) {
+      const scene::SceneSpec spec = scene::loadSceneFile(file, a.overrides);
+      RollingModel model = buildModel(spec);
+      scenes.push_back({spec.name, model.path->describe(), std::shared_ptr<const geometry::ContactPath>(std::move(model.path)),
+                        model.ballRadius});
+    }
+  }
+  return finish(report::errorsReport(scenes, optionsFrom(a)));
+}
+
+}  // namespace
+
+void registerReportCommands(CLI::App& cli, CommandHandler& handler) {
+  auto args = std::make_shared<ReportArgs>();
+  CLI::App* report = cli.add_subcommand("report", "Accuracy and cost reports (output/report/)");
+  report->require_subcommand(1);
+  auto addOut = [&](CLI::App* c) { c->add_option("-o,--output-dir", args->outDir, "Output folder (default output/report)"); };
+
+  CLI::App* errors = report->add_subcommand("errors", "Error against run time for every method (CSV, PNG, Markdown)");
+  errors->add_option("scenes", args->scenes, "Scene files (default: a built-in set: plane, sphere outside/inside, "
+                                             "torus knot, clothoid, stiff lollipop)");
+  errors->add_option("--set", args->overrides, "Override a key in every given scene: --set key.sub=value");
+  addOut(errors);
+  errors->callback([args, &handler] { handler = [args] { return runErrors(*args); }; });
+
+  CLI::App* stress = report->add_subcommand("stress", "Stiff and extreme cases x methods, pass/fail against bounds");
+  addOut(stress);
+  stress->callback([args, &handler] { handler = [args] { return finish(report::stressReport(optionsFrom(*args))); }; });
+
+  CLI::App* paper = report->add_subcommand("paper", "The paper's closed-form claims against the solver");
+  addOut(paper);
+  paper->callback([args, &handler] { handler = [args] { return finish(report::paperReport(optionsFrom(*args))); }; });
+}
+
+}  // namespace rollspin::app

@@ -1,0 +1,56 @@
+// solver.tolerance and the issue-6 methods in scene files: a tolerance alone
+// selects frame6a, the new method names load, and steps/tolerance given to
+// the wrong kind of method are bad input naming the key.
+#include <gtest/gtest.h>
+
+#include "app/scene_model.hpp"
+#include "app/solve_job.hpp"
+#include "core/error.hpp"
+#include "scene/scene_loader.hpp"
+#include "support/test_paths.hpp"
+
+using namespace rollspin;
+
+namespace {
+scene::SceneSpec load(const std::vector<std::string>& sets) {
+  return scene::loadSceneFile(std::string(ROLLSPIN_SOURCE_DIR) + "/scenes/lollipop.toml", sets);
+}
+std::string badInputMessage(const std::vector<std::string>& sets) {
+  try {
+    (void)load(sets);
+  } catch (const Error& e) {
+    EXPECT_EQ(e.exitCode(), 2);
+    return e.what();
+  }
+  return "no error";
+}
+}  // namespace
+
+TEST(SolverTolerance, AToleranceAloneSelectsFrame6a) {
+  const scene::SceneSpec spec = load({"solver.tolerance=1e-9"});
+  EXPECT_EQ(spec.solver.method, "frame6a");
+  const app::RollingModel model = app::buildModel(spec);
+  const app::SolverChoice choice = app::chooseSolver(spec, model);
+  EXPECT_EQ(choice.method, spin::Method::Frame6a);
+  EXPECT_DOUBLE_EQ(choice.tolerance, 1e-9);
+  const spin::SolveStats st = app::solveScene(spec, model, choice);
+  EXPECT_GT(st.steps, 0);
+}
+
+TEST(SolverTolerance, EveryMethodNameLoads) {
+  for (const char* m : {"cf4", "magnus6", "rk45", "frame6a", "frame4"}) {
+    const scene::SceneSpec spec = load({std::string("solver.method=") + m});
+    const app::RollingModel model = app::buildModel(spec);
+    const app::SolverChoice choice = app::chooseSolver(spec, model);
+    EXPECT_EQ(spin::methodName(choice.method), m);
+    if (spin::isAdaptive(choice.method)) EXPECT_DOUBLE_EQ(choice.tolerance, scene::SolverSpec::kDefaultTolerance);
+  }
+}
+
+TEST(SolverTolerance, WrongKindOfMethodIsBadInput) {
+  EXPECT_NE(badInputMessage({"solver.method=magnus4", "solver.tolerance=1e-8"}).find("solver.tolerance"),
+            std::string::npos);
+  EXPECT_NE(badInputMessage({"solver.method=rk45", "solver.steps=100"}).find("solver.steps"), std::string::npos);
+  EXPECT_NE(badInputMessage({"solver.tolerance=0"}).find("[1e-15, 1]"), std::string::npos);
+  EXPECT_NE(badInputMessage({"solver.tolerance=2"}).find("[1e-15, 1]"), std::string::npos);
+}

@@ -338,8 +338,7 @@ OrbitAngles orbitAngles(const scene::SceneSpec& spec, const RollingModel& model)
 
 }  // namespace
 
-render::View SceneDrawer::ballCamera(const render::DrawList& list, int x, int y, int w, int h, double s) const {
-  (void)list;
+render::View SceneDrawer::ballCamera(int x, int y, int w, int h, double s) const {
   const OrbitAngles a = orbitAngles(spec_, model_);
   const double R = model_.ballRadius;
   const double aspect = double(w) / double(std::max(h, 1));
@@ -396,7 +395,7 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
   switch (rs.layout) {
     case scene::RenderLayout::SideBySide: {
       const int ballWidth = static_cast<int>(std::lround(W * 0.6));
-      list.views.push_back(ballCamera(list, 0, top, ballWidth, bodyHeight, frame.current.s));
+      list.views.push_back(ballCamera(0, top, ballWidth, bodyHeight, frame.current.s));
       addBallView(list, frame, int(list.views.size()) - 1);
       render::View twin;
       twin.x = ballWidth;
@@ -408,7 +407,7 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
       break;
     }
     case scene::RenderLayout::Inset: {
-      list.views.push_back(ballCamera(list, 0, top, W, bodyHeight, frame.current.s));
+      list.views.push_back(ballCamera(0, top, W, bodyHeight, frame.current.s));
       addBallView(list, frame, int(list.views.size()) - 1);
       const int margin = static_cast<int>(std::lround(H * 0.025));
       const int side = static_cast<int>(std::lround(std::min(W, bodyHeight) * 0.42));
@@ -423,7 +422,7 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
       break;
     }
     case scene::RenderLayout::Ball:
-      list.views.push_back(ballCamera(list, 0, top, W, bodyHeight, frame.current.s));
+      list.views.push_back(ballCamera(0, top, W, bodyHeight, frame.current.s));
       addBallView(list, frame, int(list.views.size()) - 1);
       break;
     case scene::RenderLayout::Twin: {

@@ -70,6 +70,13 @@ std::vector<Case> cases() {
        [](const fs::path& d) { writeScene(d, "[surface]\nkind = \"sphere\"\n"); }},
       {"path leaves the surface", {"solve", "{DIR}/s.toml", "--set", "path.direction_vector=[0,0,1]"}, 2,
        "leaves the surface", nullptr, [](const fs::path& d) { writeScene(d, "[path]\nkind = \"line\"\n"); }},
+      {"extends cycle", {"timeline", "{DIR}/s.toml", "-o", out + ".csv"}, 2, "cycle", "out.csv",
+       [](const fs::path& d) {
+         writeScene(d, "extends = \"t.toml\"\n");
+         write(d / "t.toml", "extends = \"s.toml\"\n");
+       }},
+      {"extends a missing file", {"solve", "{DIR}/s.toml"}, 2, "cannot read the scene file", nullptr,
+       [](const fs::path& d) { writeScene(d, "extends = \"gone.toml\"\n"); }},
       // ---- outputs -------------------------------------------------------
       {"timeline into a missing directory", {"timeline", "{SCENE}", "-o", "{DIR}/missing/t.csv"}, 1, "does not exist"},
       {"timeline onto a directory", {"timeline", "{SCENE}", "-o", "{DIR}"}, 1, "is a directory"},

@@ -15,6 +15,7 @@
 #include "app/interrupt_guard.hpp"
 #include "app/progress_meter.hpp"
 #include "app/render_jobs.hpp"
+#include "core/stage_log.hpp"
 #include "media/mp4_writer.hpp"
 #include "media/png_sequence.hpp"
 #include "render/gl_context.hpp"
@@ -153,8 +154,10 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     settings.fps = static_cast<int>(clock.fps());
     settings.crf = spec.animation.crf;
     settings.preset = spec.animation.preset;
+    StageLog::instance().record("encoder");
     sink = std::make_unique<media::Mp4Writer>(out, settings);
   } else {
+    StageLog::instance().record("png-frames");
     sink = std::make_unique<media::PngSequenceWriter>(
         out, range.first, spec.render.transparent ? media::PngChannels::Rgba : media::PngChannels::Rgb);
   }

@@ -120,7 +120,6 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
     const Vec3 centre = mid - n * n.dot(mid);
     const double half = 0.5 * (hi - lo).norm() + 3.0 * R;
     const Vec3 e1 = geometry::defaultTangentFor(n), e2 = n.cross(e1);
-    const double o1 = centre.dot(e1) / R, o2 = centre.dot(e2) / R;
     surfaceMesh_ = render::parametricPatch(
         [&](float a, float b, glm::vec3& p, glm::vec3& nn) {
           p = toGlm(centre + (2.0 * a - 1.0) * half * e1 + (2.0 * b - 1.0) * half * e2);
@@ -129,7 +128,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
         48, 48);
     for (auto& v : surfaceMesh_->vertices) {
       const Vec3 p(v.position.x, v.position.y, v.position.z);
-      v.uv = glm::vec2(float(p.dot(e1) / R - o1 + o1), float(p.dot(e2) / R - o2 + o2));
+      v.uv = glm::vec2(float(p.dot(e1) / R), float(p.dot(e2) / R));  // cells of size R, a corner at the origin
     }
     surfaceMaterial_.color = {0.80f, 0.78f, 0.74f};
     surfaceMaterial_.color2 = {0.55f, 0.56f, 0.58f};

@@ -37,6 +37,8 @@ struct Row {
 };
 
 struct Claim {
+  Claim(std::string id_, std::string statement_, std::string measuredAs_)
+      : id(std::move(id_)), statement(std::move(statement_)), measuredAs(std::move(measuredAs_)) {}
   std::string id, statement, measuredAs;
   bool asymptotic = false;
   std::vector<Row> rows;

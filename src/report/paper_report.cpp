@@ -382,7 +382,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
     if (!c.note.empty()) details += " " + c.note + ".";
     details += "\n\n| where | claim | solver | deviation |\n| --- | --- | --- | --- |\n";
     for (const Row& r : c.rows) {
-      details += fmt::format("| {} | {} | {} | {} |\n", r.where, r.predicted, r.measured,
+      details += fmt::format("| {} | {} | {} | {} |\n", mdCell(r.where), mdCell(r.predicted), mdCell(r.measured),
                              std::isfinite(r.deviation) ? fmtNum(r.deviation) : "formula undefined");
       csv += fmt::format("{},\"{}\",\"{}\",\"{}\",{},{}\n", c.id, r.where, r.predicted, r.measured,
                          std::isfinite(r.deviation) ? fmt::format("{:.3e}", r.deviation) : "", c.verdict);

@@ -120,7 +120,6 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
     const Vec3 centre = mid - n * n.dot(mid);
     const double half = 0.5 * (hi - lo).norm() + 3.0 * R;
     const Vec3 e1 = geometry::defaultTangentFor(n), e2 = n.cross(e1);
-    const double o1 = centre.dot(e1) / R, o2 = centre.dot(e2) / R;
     surfaceMesh_ = render::parametricPatch(
         [&](float a, float b, glm::vec3& p, glm::vec3& nn) {
           p = toGlm(centre + (2.0 * a - 1.0) * half * e1 + (2.0 * b - 1.0) * half * e2);
@@ -129,7 +128,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
         48, 48);
     for (auto& v : surfaceMesh_->vertices) {
       const Vec3 p(v.position.x, v.position.y, v.position.z);
-      v.uv = glm::vec2(float(p.dot(e1) / R - o1 + o1), float(p.dot(e2) / R - o2 + o2));
+      v.uv = glm::vec2(float(p.dot(e1) / R), float(p.dot(e2) / R));  // cells of size R, a corner at the origin
     }
     surfaceMaterial_.color = {0.80f, 0.78f, 0.74f};
     surfaceMaterial_.color2 = {0.55f, 0.56f, 0.58f};
@@ -338,8 +337,7 @@ OrbitAngles orbitAngles(const scene::SceneSpec& spec, const RollingModel& model)
 
 }  // namespace
 
-render::View SceneDrawer::ballCamera(const render::DrawList& list, int x, int y, int w, int h, double s) const {
-  (void)list;
+render::View SceneDrawer::ballCamera(int x, int y, int w, int h, double s) const {
   const OrbitAngles a = orbitAngles(spec_, model_);
   const double R = model_.ballRadius;
   const double aspect = double(w) / double(std::max(h, 1));
@@ -396,7 +394,7 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
   switch (rs.layout) {
     case scene::RenderLayout::SideBySide: {
       const int ballWidth = static_cast<int>(std::lround(W * 0.6));
-      list.views.push_back(ballCamera(list, 0, top, ballWidth, bodyHeight, frame.current.s));
+      list.views.push_back(ballCamera(0, top, ballWidth, bodyHeight, frame.current.s));
       addBallView(list, frame, int(list.views.size()) - 1);
       render::View twin;
       twin.x = ballWidth;
@@ -408,7 +406,7 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
       break;
     }
     case scene::RenderLayout::Inset: {
-      list.views.push_back(ballCamera(list, 0, top, W, bodyHeight, frame.current.s));
+      list.views.push_back(ballCamera(0, top, W, bodyHeight, frame.current.s));
       addBallView(list, frame, int(list.views.size()) - 1);
       const int margin = static_cast<int>(std::lround(H * 0.025));
       const int side = static_cast<int>(std::lround(std::min(W, bodyHeight) * 0.42));
@@ -423,7 +421,7 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
       break;
     }
     case scene::RenderLayout::Ball:
-      list.views.push_back(ballCamera(list, 0, top, W, bodyHeight, frame.current.s));
+      list.views.push_back(ballCamera(0, top, W, bodyHeight, frame.current.s));
       addBallView(list, frame, int(list.views.size()) - 1);
       break;
     case scene::RenderLayout::Twin: {

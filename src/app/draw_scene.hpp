@@ -52,7 +52,7 @@ class SceneDrawer {
  private:
   void addBallView(render::DrawList& list, const FrameOrientations& frame, int view) const;
   void addTwinView(render::DrawList& list, const FrameOrientations& frame, int view) const;
-  render::View ballCamera(const render::DrawList& list, int x, int y, int w, int h, double s) const;
+  render::View ballCamera(int x, int y, int w, int h, double s) const;
 
   const scene::SceneSpec& spec_;
   const RollingModel& model_;

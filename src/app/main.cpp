@@ -9,10 +9,15 @@
 
 #include "app/commands.hpp"
 #include "core/error.hpp"
+#include "core/stage_log.hpp"
 
 int main(int argc, char** argv) {
   CLI::App cli{"rollspin: the rolling sphere and the quantum spin"};
   cli.require_subcommand(1);
+  // Global flags may also follow the subcommand: rollspin solve X --verbose.
+  cli.fallthrough(true);
+  bool verbose = false;
+  cli.add_flag("-v,--verbose", verbose, "List the pipeline stages as they run");
   rollspin::app::CommandHandler handler;
   rollspin::app::registerSolveCommands(cli, handler);
   rollspin::app::registerRenderCommands(cli, handler);
@@ -41,6 +46,7 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  rollspin::StageLog::instance().setEcho(verbose);
   try {
     return handler ? handler() : 2;
   } catch (const rollspin::Error& e) {

@@ -1,5 +1,8 @@
 #include "app/scene_model.hpp"
 
+#include "core/stage_log.hpp"
+#include "scene/scene_loader.hpp"
+
 #include <numbers>
 
 #include "app/surface_model.hpp"
@@ -60,6 +63,16 @@ RollingModel buildModel(const scene::SceneSpec& spec) {
         sphere, spec.path.colatitudeDeg * std::numbers::pi / 180.0, spec.path.turns, spec.path.counterClockwise);
   }
   return model;
+}
+
+scene::SceneSpec loadScene(const std::string& file, const std::vector<std::string>& overrides) {
+  StageLog::instance().record("scene");
+  return scene::loadSceneFile(file, overrides);
+}
+
+RollingModel buildSceneModel(const scene::SceneSpec& spec) {
+  StageLog::instance().record("model");
+  return buildModel(spec);
 }
 
 }  // namespace rollspin::app

@@ -4,6 +4,8 @@
 
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "geometry/contact_path.hpp"
 #include "geometry/surface.hpp"
@@ -25,5 +27,10 @@ struct RollingModel {
 };
 
 [[nodiscard]] RollingModel buildModel(const scene::SceneSpec& spec);
+
+// The same two steps as every command runs them, recorded in the StageLog
+// ("scene", "model").
+[[nodiscard]] scene::SceneSpec loadScene(const std::string& file, const std::vector<std::string>& overrides);
+[[nodiscard]] RollingModel buildSceneModel(const scene::SceneSpec& spec);
 
 }  // namespace rollspin::app

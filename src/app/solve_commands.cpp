@@ -12,6 +12,7 @@
 #include "app/solve_job.hpp"
 #include "app/timeline_csv.hpp"
 #include "scene/scene_loader.hpp"
+#include "core/stage_log.hpp"
 #include "spin/su2.hpp"
 
 namespace rollspin::app {
@@ -31,9 +32,10 @@ std::filesystem::path defaultOutput(const scene::SceneSpec& spec, const std::str
 }
 
 int runSolve(const SolveOptions& o) {
-  const scene::SceneSpec spec = scene::loadSceneFile(o.scenePath, o.overrides);
-  const RollingModel model = buildModel(spec);
+  const scene::SceneSpec spec = loadScene(o.scenePath, o.overrides);
+  const RollingModel model = buildSceneModel(spec);
   const SolverChoice choice = chooseSolver(spec, model);
+  StageLog::instance().record("solver");
   const spin::SolveStats stats = solveScene(spec, model, choice);
   const spin::AngleAxis aa = spin::rotationAngleAxis(stats.final);
   const double psi = spin::spinorAngle(stats.final);
@@ -70,9 +72,11 @@ int runSolve(const SolveOptions& o) {
 }
 
 int runTimeline(const SolveOptions& o) {
-  const scene::SceneSpec spec = scene::loadSceneFile(o.scenePath, o.overrides);
-  const RollingModel model = buildModel(spec);
+  const scene::SceneSpec spec = loadScene(o.scenePath, o.overrides);
+  const RollingModel model = buildSceneModel(spec);
   const SolverChoice choice = chooseSolver(spec, model);
+  StageLog::instance().record("solver");
+  StageLog::instance().record("timeline-csv");
   const spin::SampleArcLengths samples = timelineArcLengths(spec, model);
   const std::filesystem::path out = o.output.empty() ? defaultOutput(spec, ".csv") : std::filesystem::path(o.output);
   const spin::SolveStats stats = writeTimelineCsv(out, model, choice, samples);

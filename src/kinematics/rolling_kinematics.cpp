@@ -44,10 +44,24 @@ RollingKinematics::RollingKinematics(const geometry::ContactPath& path, double b
   cuts_.push_back(path_.length());
   if (settings_.fdStep <= 0.0) {
     // Balance truncation (h⁸ C⁽⁹⁾) against round-off (ε|C|/h): about 1e-2 of
-    // the smaller of R and the shortest segment.
+    // the shortest length scale — R, the shortest segment, and the radii on
+    // which P and n turn. Those radii are estimated from P and n themselves
+    // (second and first differences on a coarse grid), never from κ.
     double shortest = path_.length();
     for (std::size_t i = 0; i + 1 < cuts_.size(); ++i) shortest = std::min(shortest, cuts_[i + 1] - cuts_[i]);
-    settings_.fdStep = 1e-2 * std::min(ballRadius_, shortest / 8.0);
+    double turning = 0.0;  // max |P''| and |n'| seen
+    for (std::size_t seg = 0; seg + 1 < cuts_.size(); ++seg) {
+      const double a = cuts_[seg], b = cuts_[seg + 1], d = (b - a) / 512.0;
+      for (int k = 1; k < 512; k += 4) {
+        const double s = a + k * d;
+        const Vec3 p0 = path_.point(s - d), p1 = path_.point(s), p2 = path_.point(s + d);
+        turning = std::max(turning, (p2 - 2.0 * p1 + p0).norm() / (d * d));
+        turning = std::max(turning, (path_.normal(s + d) - path_.normal(s - d)).norm() / (2.0 * d));
+      }
+    }
+    double scale = std::min(ballRadius_, shortest / 8.0);
+    if (turning > 0.0 && std::isfinite(turning)) scale = std::min(scale, 1.0 / turning);
+    settings_.fdStep = 1e-2 * scale;
   }
 }
 

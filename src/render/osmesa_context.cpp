@@ -1,10 +1,10 @@
-#include <GL/osmesa.h>
 
 #include <array>
 #include <vector>
 
 #include "core/error.hpp"
 #include "render/gl.hpp"
+#include "render/osmesa_api.hpp"
 #include "render/gl_context.hpp"
 
 namespace rollspin::render {
@@ -14,25 +14,26 @@ namespace {
 class OsMesaContext final : public GlContext {
  public:
   OsMesaContext() {
+    loadOsMesa();
     const std::array<int, 11> attribs{OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE,
                                       OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 4,
                                       OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
-    context_ = OSMesaCreateContextAttribs(attribs.data(), nullptr);
+    context_ = osmesa_api::createContextAttribs(attribs.data(), nullptr);
     if (context_ == nullptr) {
       throw runtimeError({}, "OSMesa could not create an OpenGL 4.5 core context (is libosmesa6 from Mesa >= 20 "
                              "installed? try scripts/install-deps.sh)");
     }
     // All drawing goes to the renderer's FBOs; OSMesa still wants a buffer
     // to make the context current, so give it a tiny one.
-    if (!OSMesaMakeCurrent(context_, placeholder_.data(), GL_UNSIGNED_BYTE, 1, 1)) {
-      OSMesaDestroyContext(context_);
+    if (!osmesa_api::makeCurrent(context_, placeholder_.data(), GL_UNSIGNED_BYTE, 1, 1)) {
+      osmesa_api::destroyContext(context_);
       throw runtimeError({}, "OSMesa could not make its OpenGL context current");
     }
     const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
     const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     description_ = fmt::format("OSMesa: {} on {}", version ? version : "?", renderer ? renderer : "?");
   }
-  ~OsMesaContext() override { OSMesaDestroyContext(context_); }
+  ~OsMesaContext() override { osmesa_api::destroyContext(context_); }
   OsMesaContext(const OsMesaContext&) = delete;
   OsMesaContext& operator=(const OsMesaContext&) = delete;
 

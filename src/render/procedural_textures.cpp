@@ -45,15 +45,14 @@ std::shared_ptr<const TextureImage> tennisBallTexture(int width) {
       for (int f = -kFine; f <= kFine; ++f)
         best = std::max(best, glm::dot(d, fine[static_cast<std::size_t>((bestK * kFine + f + kAll) % kAll)]));
       const double dist = std::acos(std::clamp(best, -1.0, 1.0));
-      // Smooth edge over ~1.5 texels; a faint felt nap breaks up the flat colour.
+      // Smooth edge over ~1.5 texels.
       const double texel = std::numbers::pi / height;
       const double seamWeight = std::clamp((kSeamHalfWidth - dist) / (1.5 * texel) + 0.5, 0.0, 1.0);
       const double felt[3] = {0.80, 0.88, 0.22};
-      const double noise = 0.03 * std::sin(37.0 * phi + 11.0 * theta) * std::sin(53.0 * theta - 7.0 * phi);
       std::uint8_t* px = &tex->rgba[(static_cast<std::size_t>(y) * width + x) * 4];
       for (int ch = 0; ch < 3; ++ch) {
         const double white = ch == 2 ? 0.92 : 0.97;
-        const double v = (1.0 - seamWeight) * (felt[ch] + noise) + seamWeight * white;
+        const double v = (1.0 - seamWeight) * felt[ch] + seamWeight * white;
         px[ch] = static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(v, 0.0, 1.0)));
       }
       px[3] = 255;

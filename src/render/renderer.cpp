@@ -384,11 +384,11 @@ struct Renderer::Impl {
   // uniforms, so the split is made with two draws instead. Pass 1: the whole
   // mesh without the filter. Pass 2: the mesh clipped to the box, with the
   // filter, pulled forward by a polygon offset so it replaces pass 1 there.
-  void drawReceiver(const View& v, const Drawable& d, const glm::mat4& lightClipFromWorld) {
-    drawMesh(v, d, false, lightClipFromWorld, d.material->cull, false);
+  void drawReceiver(const Drawable& d) {
+    drawMesh(d, false, d.material->cull, false);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(-1.0f, -4.0f);
-    drawMesh(v, d, true, lightClipFromWorld, d.material->cull, true);
+    drawMesh(d, true, d.material->cull, true);
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
 
@@ -404,8 +404,7 @@ struct Renderer::Impl {
     return it->second;
   }
 
-  void drawMesh(const View& v, const Drawable& d, bool shadowOn, const glm::mat4& lightClipFromWorld, Cull cull,
-                bool clipToShadowBox = false) {
+  void drawMesh(const Drawable& d, bool shadowOn, Cull cull, bool clipToShadowBox = false) {
     const Material& m = *d.material;
     int pattern = m.pattern == Pattern::Checker ? 1 : 0;
     if (m.pattern == Pattern::Texture && m.texture) {
@@ -428,7 +427,6 @@ struct Renderer::Impl {
     mesh.set("clipToShadowBox", clipToShadowBox ? 1 : 0);
     mesh.set("cutPlane", m.cutPlane);
     mesh.set("twoSided", m.cull == Cull::None ? 1 : 0);
-    (void)lightClipFromWorld;
     mesh.set("worldFromModel", d.worldFromModel);
     mesh.set("normalWorldFromModel", glm::inverseTranspose(glm::mat3(d.worldFromModel)));
     mesh.set("color", m.color);
@@ -437,7 +435,6 @@ struct Renderer::Impl {
     mesh.set("specular", m.specular);
     mesh.set("shininess", m.shininess);
     mesh.set("patternScale", m.patternScale);
-    (void)v;
     if (cull == Cull::None) {
       glDisable(GL_CULL_FACE);
     } else {
@@ -554,8 +551,8 @@ struct Renderer::Impl {
         translucent.push_back(&d);
         continue;
       }
-      if (shadowOn && d.material->receivesShadow) drawReceiver(v, d, lightClipFromWorld);
-      else drawMesh(v, d, false, lightClipFromWorld, d.material->cull);
+      if (shadowOn && d.material->receivesShadow) drawReceiver(d);
+      else drawMesh(d, false, d.material->cull);
     }
     for (GLenum plane = 0; plane < 5; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);  // lines write none
     glDisable(GL_CULL_FACE);
@@ -586,7 +583,7 @@ struct Renderer::Impl {
     for (GLenum plane = 0; plane < 5; ++plane) glEnable(GL_CLIP_DISTANCE0 + plane);
     for (const Drawable* d : translucent) {
       // Translucent layers (glass, the Bloch sphere) take no shadow.
-      drawMesh(v, *d, false, lightClipFromWorld, d->material->cull);
+      drawMesh(*d, false, d->material->cull);
     }
     for (GLenum plane = 0; plane < 5; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);
     glDisable(GL_CULL_FACE);

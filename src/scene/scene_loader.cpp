@@ -45,9 +45,11 @@ class Reader {
  private:
   SourceLoc locOf(const std::string& key, const toml::node& node) const {
     if (auto it = overrides_.find(key); it != overrides_.end()) return it->second;
+    // A value inherited through `extends` remembers its own file.
     const auto& src = node.source();
-    if (src.begin.line == 0) return SourceLoc{file_};
-    return SourceLoc{file_, static_cast<int>(src.begin.line), static_cast<int>(src.begin.column)};
+    const std::string& file = src.path ? *src.path : file_;
+    if (src.begin.line == 0) return SourceLoc{file};
+    return SourceLoc{file, static_cast<int>(src.begin.line), static_cast<int>(src.begin.column)};
   }
   SourceLoc fileLoc() const { return SourceLoc{file_}; }
 
@@ -680,29 +682,106 @@ void applyOverride(toml::table& root, const std::string& arg, std::map<std::stri
 
 }  // namespace
 
-SceneSpec loadSceneText(std::string_view text, const std::string& sourceName, std::span<const std::string> overrides) {
-  toml::table root;
+namespace {
+
+toml::table parseText(std::string_view text, const std::string& sourceName) {
   try {
-    root = toml::parse(text, sourceName);
+    return toml::parse(text, sourceName);
   } catch (const toml::parse_error& e) {
     throw badInput(SourceLoc{sourceName, static_cast<int>(e.source().begin.line),
                              static_cast<int>(e.source().begin.column)},
                    "TOML syntax error: {}", e.description());
   }
-  std::map<std::string, SourceLoc> overrideLocs;
-  for (const auto& arg : overrides) applyOverride(root, arg, overrideLocs);
-  SceneSpec spec = Reader(root, sourceName, std::move(overrideLocs)).read();
+}
+
+std::string readSceneFile(const std::filesystem::path& file, const SourceLoc& askedBy, const std::string& what) {
+  std::ifstream in(file, std::ios::binary);
+  std::error_code ec;
+  if (!in || std::filesystem::is_directory(file, ec)) {
+    if (askedBy.empty()) throw badInput(SourceLoc{file.string()}, "cannot read the scene file");
+    throw badInput(askedBy, "{}: cannot read the scene file '{}'", what, file.string());
+  }
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+// Tables merge key by key, anything else in `derived` replaces `base`'s.
+void mergeInto(toml::table& base, const toml::table& derived) {
+  for (auto&& [key, node] : derived) {
+    toml::node* existing = base.get(key.str());
+    if (existing != nullptr && existing->is_table() && node.is_table()) {
+      mergeInto(*existing->as_table(), *node.as_table());
+    } else {
+      base.insert_or_assign(key, node);
+    }
+  }
+}
+
+// Records where every key of a parsed file is (toml++ does not carry source
+// positions through node copies, and merging copies).
+void collectLocations(const toml::table& t, const std::string& prefix, const std::string& file,
+                      std::map<std::string, SourceLoc>& out) {
+  for (auto&& [key, node] : t) {
+    const std::string path = prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
+    const auto& src = node.source();
+    out[path] = src.begin.line == 0
+                    ? SourceLoc{file}
+                    : SourceLoc{file, static_cast<int>(src.begin.line), static_cast<int>(src.begin.column)};
+    if (const toml::table* sub = node.as_table()) collectLocations(*sub, path, file, out);
+  }
+}
+
+// `extends = "other.toml"` (relative to the extending file): the other scene
+// is loaded first, recursively, and this file's keys are laid over it; each
+// key keeps the location of the file that set it.
+toml::table resolveExtends(toml::table root, const std::filesystem::path& file,
+                           std::vector<std::filesystem::path>& chain, std::map<std::string, SourceLoc>& locations) {
+  const toml::node* extends = root.get("extends");
+  if (extends == nullptr) {
+    collectLocations(root, "", file.string(), locations);
+    return root;
+  }
+  const auto& src = extends->source();
+  const SourceLoc loc{file.string(), static_cast<int>(src.begin.line), static_cast<int>(src.begin.column)};
+  if (!extends->is_string()) throw badInput(loc, "extends: expected the path of a scene file (a string)");
+  const std::filesystem::path base =
+      ((file.has_parent_path() ? file.parent_path() : std::filesystem::path(".")) / extends->as_string()->get())
+          .lexically_normal();
+  std::error_code ec;
+  const std::filesystem::path canonical = std::filesystem::weakly_canonical(base, ec);
+  for (const auto& seen : chain) {
+    if (seen == canonical) {
+      std::string cycle;
+      for (const auto& c : chain) cycle += c.filename().string() + " -> ";
+      throw badInput(loc, "extends: cycle: {}{}", cycle, canonical.filename().string());
+    }
+  }
+  if (chain.size() >= 32) throw badInput(loc, "extends: more than 32 levels");
+  chain.push_back(canonical);
+  toml::table merged =
+      resolveExtends(parseText(readSceneFile(base, loc, "extends"), base.string()), base, chain, locations);
+  chain.pop_back();
+  root.erase("extends");
+  collectLocations(root, "", file.string(), locations);
+  mergeInto(merged, root);
+  return merged;
+}
+
+}  // namespace
+
+SceneSpec loadSceneText(std::string_view text, const std::string& sourceName, std::span<const std::string> overrides) {
+  std::error_code ec;
+  std::vector<std::filesystem::path> chain{std::filesystem::weakly_canonical(sourceName, ec)};
+  std::map<std::string, SourceLoc> locations;  // file:line:col per key; --set arguments win
+  toml::table root = resolveExtends(parseText(text, sourceName), sourceName, chain, locations);
+  for (const auto& arg : overrides) applyOverride(root, arg, locations);
+  SceneSpec spec = Reader(root, sourceName, std::move(locations)).read();
   return spec;
 }
 
 SceneSpec loadSceneFile(const std::filesystem::path& file, std::span<const std::string> overrides) {
-  std::ifstream in(file, std::ios::binary);
-  std::error_code ec;
-  if (!in || std::filesystem::is_directory(file, ec))
-    throw badInput(SourceLoc{file.string()}, "cannot read the scene file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  SceneSpec spec = loadSceneText(buffer.str(), file.string(), overrides);
+  SceneSpec spec = loadSceneText(readSceneFile(file, {}, ""), file.string(), overrides);
   spec.name = file.stem().string();
   return spec;
 }

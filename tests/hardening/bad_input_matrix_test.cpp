@@ -70,6 +70,13 @@ std::vector<Case> cases() {
        [](const fs::path& d) { writeScene(d, "[surface]\nkind = \"sphere\"\n"); }},
       {"path leaves the surface", {"solve", "{DIR}/s.toml", "--set", "path.direction_vector=[0,0,1]"}, 2,
        "leaves the surface", nullptr, [](const fs::path& d) { writeScene(d, "[path]\nkind = \"line\"\n"); }},
+      {"extends cycle", {"timeline", "{DIR}/s.toml", "-o", out + ".csv"}, 2, "cycle", "out.csv",
+       [](const fs::path& d) {
+         writeScene(d, "extends = \"t.toml\"\n");
+         write(d / "t.toml", "extends = \"s.toml\"\n");
+       }},
+      {"extends a missing file", {"solve", "{DIR}/s.toml"}, 2, "cannot read the scene file", nullptr,
+       [](const fs::path& d) { writeScene(d, "extends = \"gone.toml\"\n"); }},
       // ---- outputs -------------------------------------------------------
       {"timeline into a missing directory", {"timeline", "{SCENE}", "-o", "{DIR}/missing/t.csv"}, 1, "does not exist"},
       {"timeline onto a directory", {"timeline", "{SCENE}", "-o", "{DIR}"}, 1, "is a directory"},
@@ -171,4 +178,29 @@ TEST(BadInputMatrix, FrameBuffersLargerThanMemoryAreRefusedUpFront) {
   EXPECT_FALSE(fs::exists(dir / "big.png"));
   fs::remove_all(dir);
 #endif
+}
+
+// ---- only what a job needs: the GL library ---------------------------------
+
+TEST(WithoutOsMesa, SolveAndTimelineRunAndDrawingFailsClearly) {
+  // A broken libOSMesa.so.8 first on the library path, and the loader told
+  // to use nothing else: the binary must still start and solve (it does not
+  // link libOSMesa; it loads it only to draw), and a render must fail with
+  // exit code 1 and a message naming the library.
+  const fs::path dir = freshTempDir("no-osmesa");
+  writeRandom(dir / "libOSMesa.so.8", 4096);
+  const std::vector<std::string> env{"LD_LIBRARY_PATH=" + dir.string(),
+                                     "ROLLSPIN_OSMESA_LIBRARY=" + (dir / "libOSMesa.so.8").string()};
+  const std::string scene = (sourceDir() / "scenes" / "lollipop.toml").string();
+  const auto solve = runRollspin({"solve", scene, "--json"}, {}, 0, env);
+  EXPECT_EQ(solve.exitCode, 0) << solve.err;
+  EXPECT_NE(solve.out.find("\"angle\""), std::string::npos);
+  const auto timeline = runRollspin({"timeline", scene, "-o", (dir / "t.csv").string()}, {}, 0, env);
+  EXPECT_EQ(timeline.exitCode, 0) << timeline.err;
+  EXPECT_TRUE(fs::exists(dir / "t.csv"));
+  const auto still = runRollspin({"render", scene, "--still", "-o", (dir / "x.png").string()}, {}, 0, env);
+  EXPECT_EQ(still.exitCode, 1) << still.err;
+  EXPECT_NE(still.err.find("OSMesa"), std::string::npos) << still.err;
+  EXPECT_FALSE(fs::exists(dir / "x.png"));
+  fs::remove_all(dir);
 }

@@ -2,7 +2,10 @@
 // (including Brockett's plate, whose contact circle is derived).
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <numbers>
+
+#include <unistd.h>
 
 #include "app/scene_model.hpp"
 #include "app/solve_job.hpp"
@@ -94,4 +97,64 @@ TEST(SolveJob, DefaultSamplesAreSixtyPerTurn) {
   const scene::SceneSpec spec = scene::loadSceneText("[path]\nturns = 2\n[ball]\nradius = 100\n", "slow");
   const app::RollingModel model = app::buildModel(spec);
   EXPECT_EQ(app::defaultSampleCount(model), 121);  // the path turns more than the ball
+}
+
+// ---- extends -------------------------------------------------------------
+
+namespace {
+std::filesystem::path writeFile(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+  return p;
+}
+}  // namespace
+
+TEST(Extends, ChildKeysOverrideTheBaseAndBaseKeysKeepTheirLocation) {
+  const auto dir = std::filesystem::temp_directory_path() / ("rollspin-extends-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir / "family");
+  writeFile(dir / "base.toml", "[ball]\nradius = 0.5\n[path]\nturns = 2\nradius = 4\n");
+  const auto child = writeFile(dir / "family" / "child.toml", "extends = \"../base.toml\"\n[path]\nradius = 1.5\n");
+  const scene::SceneSpec spec = scene::loadSceneFile(child);
+  EXPECT_EQ(spec.ball.radius, 0.5);    // inherited
+  EXPECT_EQ(spec.path.turns, 2.0);     // inherited
+  EXPECT_EQ(spec.path.radius, 1.5);    // overridden
+  EXPECT_EQ(spec.name, "child");
+  EXPECT_EQ(spec.where("ball.radius").str(), (dir / "base.toml").lexically_normal().string() + ":2:10");
+  EXPECT_EQ(spec.where("path.radius").line, 3);
+  // Two levels, and an override on top.
+  const auto grandchild = writeFile(dir / "family" / "g.toml", "extends = \"child.toml\"\n[ball]\nradius = 2\n");
+  const std::vector<std::string> sets{"path.turns=3"};
+  const scene::SceneSpec g = scene::loadSceneFile(grandchild, sets);
+  EXPECT_EQ(g.ball.radius, 2.0);
+  EXPECT_EQ(g.path.radius, 1.5);
+  EXPECT_EQ(g.path.turns, 3.0);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Extends, CyclesMissingFilesAndBadValuesAreErrors) {
+  const auto dir = std::filesystem::temp_directory_path() / ("rollspin-extends-bad-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto a = writeFile(dir / "a.toml", "extends = \"b.toml\"\n");
+  writeFile(dir / "b.toml", "# b\nextends = \"a.toml\"\n");
+  const auto self = writeFile(dir / "self.toml", "extends = \"self.toml\"\n");
+  const auto missing = writeFile(dir / "missing.toml", "extends = \"nope.toml\"\n");
+  const auto number = writeFile(dir / "number.toml", "extends = 3\n");
+  const auto badBase = writeFile(dir / "badbase.toml", "extends = \"base.toml\"\n");
+  writeFile(dir / "base.toml", "[ball]\nradius = -1\n");
+  auto message = [](const std::filesystem::path& p) {
+    try {
+      (void)scene::loadSceneFile(p);
+    } catch (const Error& e) {
+      EXPECT_EQ(e.exitCode(), 2);
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message(a).find("cycle: a.toml -> b.toml -> a.toml"), std::string::npos) << message(a);
+  EXPECT_NE(message(a).find("b.toml:2:11"), std::string::npos) << message(a);
+  EXPECT_NE(message(self).find("cycle"), std::string::npos);
+  EXPECT_NE(message(missing).find("cannot read the scene file"), std::string::npos);
+  EXPECT_NE(message(missing).find("missing.toml:1:11"), std::string::npos);
+  EXPECT_NE(message(number).find("expected the path"), std::string::npos);
+  EXPECT_NE(message(badBase).find("base.toml:2:10: ball.radius"), std::string::npos) << message(badBase);
+  std::filesystem::remove_all(dir);
 }

@@ -9,6 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 
+extern char** environ;
+
 namespace rollspin::test {
 
 namespace {
@@ -31,7 +33,7 @@ std::filesystem::path freshTempDir(const std::string& name) {
 }
 
 CliResult runRollspin(const std::vector<std::string>& args, const std::filesystem::path& cwd,
-                      std::uint64_t addressSpaceLimit) {
+                      std::uint64_t addressSpaceLimit, const std::vector<std::string>& environment) {
   // stdout/stderr go to files: simple, no pipe deadlocks on large output.
   const std::filesystem::path dir = freshTempDir("cli");
   const std::string outPath = (dir / "stdout").string(), errPath = (dir / "stderr").string();
@@ -40,6 +42,12 @@ CliResult runRollspin(const std::vector<std::string>& args, const std::filesyste
   std::vector<char*> argv;
   for (auto& a : argvStore) argv.push_back(a.data());
   argv.push_back(nullptr);
+  std::vector<std::string> envStore;
+  for (char** e = environ; *e != nullptr; ++e) envStore.emplace_back(*e);
+  envStore.insert(envStore.end(), environment.begin(), environment.end());
+  std::vector<char*> envp;
+  for (auto& e : envStore) envp.push_back(e.data());
+  envp.push_back(nullptr);
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("fork failed");
   if (pid == 0) {
@@ -52,7 +60,7 @@ CliResult runRollspin(const std::vector<std::string>& args, const std::filesyste
       const rlimit limit{addressSpaceLimit, addressSpaceLimit};
       if (setrlimit(RLIMIT_AS, &limit) != 0) _exit(127);
     }
-    execv(argv[0], argv.data());
+    execve(argv[0], argv.data(), envp.data());
     _exit(127);
   }
   int status = 0;

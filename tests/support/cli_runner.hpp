@@ -18,8 +18,9 @@ struct CliResult {
 // argv excludes the program name. cwd: working directory ("" = current).
 // addressSpaceLimit: RLIMIT_AS for the child in bytes (0 = unlimited), to
 // simulate a machine with little memory.
+// environment: extra "NAME=value" entries for the child.
 CliResult runRollspin(const std::vector<std::string>& args, const std::filesystem::path& cwd = {},
-                      std::uint64_t addressSpaceLimit = 0);
+                      std::uint64_t addressSpaceLimit = 0, const std::vector<std::string>& environment = {});
 
 // A fresh empty directory under the build tree for one test.
 std::filesystem::path freshTempDir(const std::string& name);

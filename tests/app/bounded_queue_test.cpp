@@ -1,0 +1,60 @@
+// BoundedQueue: order, the bound on what is held, close (drain) and abort
+// (drop, unblock) — the render → encode pipeline's back-pressure.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <thread>
+
+#include "app/bounded_queue.hpp"
+
+namespace rollspin::app {
+namespace {
+
+TEST(BoundedQueue, KeepsOrderAndNeverHoldsMoreThanItsCapacity) {
+  BoundedQueue<int> queue(3);
+  std::atomic<int> pushed{0};
+  std::thread producer([&] {
+    for (int i = 0; i < 1000; ++i) {
+      ASSERT_TRUE(queue.push(i));
+      ++pushed;
+    }
+    queue.close();
+  });
+  int expected = 0;
+  while (const auto item = queue.pop()) {
+    EXPECT_EQ(*item, expected);
+    ++expected;
+    // Popped `expected` items; at most 3 more (+1 in flight) can be pushed.
+    EXPECT_LE(pushed.load(), expected + 4);
+  }
+  producer.join();
+  EXPECT_EQ(expected, 1000);
+}
+
+TEST(BoundedQueue, CloseDrainsAndAbortDropsAndUnblocks) {
+  BoundedQueue<int> drained(2);
+  ASSERT_TRUE(drained.push(1));
+  ASSERT_TRUE(drained.push(2));
+  drained.close();
+  EXPECT_FALSE(drained.push(3));
+  EXPECT_EQ(drained.pop(), 1);
+  EXPECT_EQ(drained.pop(), 2);
+  EXPECT_EQ(drained.pop(), std::nullopt);
+
+  BoundedQueue<int> aborted(1);
+  ASSERT_TRUE(aborted.push(1));
+  std::atomic<bool> blockedPushReturned{false};
+  std::thread producer([&] {
+    EXPECT_FALSE(aborted.push(2));  // blocks (full) until the abort
+    blockedPushReturned = true;
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_FALSE(blockedPushReturned.load());
+  aborted.abort();
+  producer.join();
+  EXPECT_TRUE(blockedPushReturned.load());
+  EXPECT_EQ(aborted.pop(), std::nullopt) << "abort drops what was queued";
+}
+
+}  // namespace
+}  // namespace rollspin::app

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <numbers>
 #include <string>
@@ -12,6 +13,7 @@
 #include "app/solve_job.hpp"
 #include "app/timeline_csv.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/scene_writer.hpp"
 #include "core/stage_log.hpp"
 #include "spin/su2.hpp"
 
@@ -23,6 +25,7 @@ struct SolveOptions {
   std::string scenePath;
   std::vector<std::string> overrides;
   bool json = false;
+  bool print = false;
   std::string output;
 };
 
@@ -85,6 +88,23 @@ int runTimeline(const SolveOptions& o) {
   return 0;
 }
 
+// The resolved scene, with what the engine derives noted beside the keys.
+int runScenePrint(const SolveOptions& o) {
+  const scene::SceneSpec spec = loadScene(o.scenePath, o.overrides);
+  const RollingModel model = buildSceneModel(spec);
+  const SolverChoice choice = chooseSolver(spec, model);
+  std::map<std::string, std::string> notes;
+  if (choice.method != spin::Method::Exact && choice.automaticSteps)
+    notes["solver.steps"] = fmt::format("automatic: {} steps", choice.steps);
+  if (!spec.timeline.samples) notes["timeline.samples"] = fmt::format("{} (60 per turn + 1)", defaultSampleCount(model));
+  if (model.plate)
+    notes["plate.radius"] = fmt::format("the contact circle's radius is derived: R1/{} = {}",
+                                        model.plate->contactSpeedRatio, model.plate->radius / model.plate->contactSpeedRatio);
+  fmt::print("# {} resolved: every default filled in, extends and --set applied.\n# path: {}, length {}\n\n{}",
+             o.scenePath, model.path->describe(), model.path->length(), scene::writeScene(spec, notes));
+  return 0;
+}
+
 }  // namespace
 
 void registerSolveCommands(CLI::App& cli, CommandHandler& handler) {
@@ -101,6 +121,12 @@ void registerSolveCommands(CLI::App& cli, CommandHandler& handler) {
   timeline->add_option("--set", options->overrides, "Override a scene key: --set key.sub=value (repeatable)");
   timeline->add_option("-o,--output", options->output, "Output CSV (default: output/<scene>.csv)");
   timeline->callback([options, &handler] { handler = [options] { return runTimeline(*options); }; });
+
+  CLI::App* sceneCmd = cli.add_subcommand("scene", "Show a scene as the engine will run it");
+  sceneCmd->add_option("scene", options->scenePath, "Scene file (TOML)")->required();
+  sceneCmd->add_option("--set", options->overrides, "Override a scene key: --set key.sub=value (repeatable)");
+  sceneCmd->add_flag("--print", options->print, "Print the fully resolved scene as TOML")->required();
+  sceneCmd->callback([options, &handler] { handler = [options] { return runScenePrint(*options); }; });
 }
 
 }  // namespace rollspin::app

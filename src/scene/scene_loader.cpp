@@ -313,6 +313,13 @@ void Reader::forbid(const toml::table* t, const std::string& section, const std:
   }
 }
 
+// v / len, except that a vector already unit to round-off is kept as given,
+// so that a printed (normalised) scene reads back bit for bit.
+Vec3 unitVector(const Vec3& v, double len) {
+  if (std::abs(len - 1.0) <= 1e-15) return v;
+  return {v[0] / len, v[1] / len, v[2] / len};
+}
+
 double norm3(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
 SceneSpec Reader::read() {
@@ -338,7 +345,7 @@ SceneSpec Reader::read() {
   if (auto m = vector(ball, "ball", "marker")) {
     const double len = norm3(*m);
     if (len < 1e-12) failAt("ball.marker", "expected a non-zero vector (a direction in the ball), got [0, 0, 0]");
-    spec_.ball.marker = Vec3{(*m)[0] / len, (*m)[1] / len, (*m)[2] / len};
+    spec_.ball.marker = unitVector(*m, len);
   }
   const double R = spec_.ball.radius;
 
@@ -358,15 +365,10 @@ SceneSpec Reader::read() {
   auto surfaceOnly = [&](const std::string& key, bool applies, const std::string& kinds) {
     if (!applies) forbid(surface, "surface", key, "applies to kind = " + kinds + " only; this surface is a " + skName);
   };
-  surfaceOnly("normal", sk == SurfaceKind::Plane, "\"plane\"");
-  surfaceOnly("radius", sk == SurfaceKind::Sphere || sk == SurfaceKind::Cylinder, "\"sphere\" or \"cylinder\"");
-  surfaceOnly("side", sk != SurfaceKind::Plane, "sphere, cylinder, torus (outside | inside) or a height field (above | below)");
-  surfaceOnly("axis", sk == SurfaceKind::Cylinder, "\"cylinder\"");
-  surfaceOnly("major_radius", sk == SurfaceKind::Torus, "\"torus\"");
-  surfaceOnly("minor_radius", sk == SurfaceKind::Torus, "\"torus\"");
-  surfaceOnly("a", sk == SurfaceKind::Paraboloid || sk == SurfaceKind::Saddle, "\"paraboloid\" or \"saddle\"");
-  surfaceOnly("b", sk == SurfaceKind::Paraboloid || sk == SurfaceKind::Saddle, "\"paraboloid\" or \"saddle\"");
-  surfaceOnly("z", sk == SurfaceKind::Height, "\"height\"");
+  for (const auto& key : kSurfaceKeys) {
+    const KeyRule rule = surfaceKeyRule(key, sk);
+    surfaceOnly(key, rule.applies, rule.kinds);
+  }
   auto positive = [&](const std::string& key, double& target) {
     if (auto r = number(surface, "surface", key)) {
       if (*r <= 0.0) failAt("surface." + key, fmt::format("expected a value > 0, got {}", *r));
@@ -376,7 +378,7 @@ SceneSpec Reader::read() {
   if (auto n = vector(surface, "surface", "normal")) {
     const double len = norm3(*n);
     if (len < 1e-12) failAt("surface.normal", "expected a non-zero vector, got [0, 0, 0]");
-    spec_.surface.normal = {(*n)[0] / len, (*n)[1] / len, (*n)[2] / len};
+    spec_.surface.normal = unitVector(*n, len);
   }
   if (auto r = number(surface, "surface", "radius")) {
     if (*r <= 0.0) failAt("surface.radius", fmt::format("expected a radius > 0, got {}", *r));
@@ -391,7 +393,7 @@ SceneSpec Reader::read() {
   if (auto ax = vector(surface, "surface", "axis")) {
     const double len = norm3(*ax);
     if (len < 1e-12) failAt("surface.axis", "expected a non-zero vector, got [0, 0, 0]");
-    spec_.surface.axis = {(*ax)[0] / len, (*ax)[1] / len, (*ax)[2] / len};
+    spec_.surface.axis = unitVector(*ax, len);
   }
   positive("major_radius", spec_.surface.majorRadius);
   positive("minor_radius", spec_.surface.minorRadius);
@@ -478,30 +480,12 @@ SceneSpec Reader::read() {
     if (!applies) forbid(path, "path", key, "applies to path kind " + kinds + " only; this path is a " + pkName +
                                                 " on a " + skName);
   };
-  const bool onSphere = sk == SurfaceKind::Sphere, onTorus = sk == SurfaceKind::Torus,
-             onCylinder = sk == SurfaceKind::Cylinder;
-  const bool meridian = pk == PathKind::Meridian, parallel = pk == PathKind::Parallel;
-  only("turns", pk == PathKind::Circle || parallel || pk == PathKind::Helix || (meridian && onTorus),
-       "circle or parallel (or helix, or meridian on a torus)");
-  only("direction", pk == PathKind::Circle || parallel || pk == PathKind::Helix || (meridian && onTorus),
-       "circle or parallel (or helix, or meridian on a torus)");
-  only("length", pk == PathKind::Line || pk == PathKind::Geodesic || (meridian && !onSphere && !onTorus),
-       "line, geodesic or meridian on a cylinder or height field");
-  only("direction_vector", pk == PathKind::Line || pk == PathKind::Geodesic, "line or geodesic");
-  only("radius", pk == PathKind::Circle || (parallel && sk == SurfaceKind::Paraboloid),
-       "circle or parallel on a paraboloid");
-  only("colatitude_deg", parallel && onSphere, "parallel on a sphere");
-  only("tube_angle_deg", (parallel || meridian) && onTorus, "parallel or meridian on a torus");
-  only("height", (parallel || meridian || pk == PathKind::Helix) && onCylinder,
-       "parallel, meridian or helix on a cylinder");
-  only("azimuth_deg", meridian || pk == PathKind::Loxodrome, "meridian or loxodrome");
-  only("colatitude_start_deg", (meridian && onSphere) || pk == PathKind::Loxodrome, "meridian on a sphere or loxodrome");
-  only("colatitude_end_deg", (meridian && onSphere) || pk == PathKind::Loxodrome, "meridian on a sphere or loxodrome");
-  only("pitch_angle_deg", pk == PathKind::Helix, "helix");
-  only("heading_deg", pk == PathKind::Loxodrome, "loxodrome");
-  only("start_point", pk == PathKind::Geodesic, "geodesic");
-  for (const char* key : {"u", "v", "t_start", "t_end"}) only(key, pk == PathKind::Uv, "uv");
-  for (const char* key : {"points", "closed", "interpolation", "corner_radius"}) only(key, pk == PathKind::Points, "points");
+  for (const auto& key : kPathKeys) {
+    const KeyRule rule = pathKeyRule(key, pk, sk);
+    only(key, rule.applies, rule.kinds);
+  }
+  const bool onSphere = sk == SurfaceKind::Sphere;
+  const bool meridian = pk == PathKind::Meridian;
 
   if (auto t = number(path, "path", "turns")) {
     if (*t <= 0.0) failAt("path.turns", fmt::format("expected a number of turns > 0, got {}", *t));
@@ -516,7 +500,7 @@ SceneSpec Reader::read() {
   if (auto dv = vector(path, "path", "direction_vector")) {
     const double len = norm3(*dv);
     if (len < 1e-12) failAt("path.direction_vector", "expected a non-zero vector, got [0, 0, 0]");
-    const Vec3 d{(*dv)[0] / len, (*dv)[1] / len, (*dv)[2] / len};
+    const Vec3 d = unitVector(*dv, len);
     const Vec3& n = spec_.surface.normal;
     const double along = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
     if (sk == SurfaceKind::Plane && std::abs(along) > 1e-9) {

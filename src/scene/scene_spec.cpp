@@ -2,6 +2,48 @@
 
 namespace rollspin::scene {
 
+KeyRule surfaceKeyRule(const std::string& key, SurfaceKind sk) {
+  if (key == "normal") return {sk == SurfaceKind::Plane, "\"plane\""};
+  if (key == "radius") return {sk == SurfaceKind::Sphere || sk == SurfaceKind::Cylinder, "\"sphere\" or \"cylinder\""};
+  if (key == "side")
+    return {sk != SurfaceKind::Plane, "sphere, cylinder, torus (outside | inside) or a height field (above | below)"};
+  if (key == "axis") return {sk == SurfaceKind::Cylinder, "\"cylinder\""};
+  if (key == "major_radius" || key == "minor_radius") return {sk == SurfaceKind::Torus, "\"torus\""};
+  if (key == "a" || key == "b")
+    return {sk == SurfaceKind::Paraboloid || sk == SurfaceKind::Saddle, "\"paraboloid\" or \"saddle\""};
+  if (key == "z") return {sk == SurfaceKind::Height, "\"height\""};
+  return {true, ""};
+}
+
+KeyRule pathKeyRule(const std::string& key, PathKind pk, SurfaceKind sk) {
+  const bool onSphere = sk == SurfaceKind::Sphere, onTorus = sk == SurfaceKind::Torus,
+             onCylinder = sk == SurfaceKind::Cylinder;
+  const bool meridian = pk == PathKind::Meridian, parallel = pk == PathKind::Parallel;
+  if (key == "turns" || key == "direction")
+    return {pk == PathKind::Circle || parallel || pk == PathKind::Helix || (meridian && onTorus),
+            "circle or parallel (or helix, or meridian on a torus)"};
+  if (key == "length")
+    return {pk == PathKind::Line || pk == PathKind::Geodesic || (meridian && !onSphere && !onTorus),
+            "line, geodesic or meridian on a cylinder or height field"};
+  if (key == "direction_vector") return {pk == PathKind::Line || pk == PathKind::Geodesic, "line or geodesic"};
+  if (key == "radius")
+    return {pk == PathKind::Circle || (parallel && sk == SurfaceKind::Paraboloid), "circle or parallel on a paraboloid"};
+  if (key == "colatitude_deg") return {parallel && onSphere, "parallel on a sphere"};
+  if (key == "tube_angle_deg") return {(parallel || meridian) && onTorus, "parallel or meridian on a torus"};
+  if (key == "height")
+    return {(parallel || meridian || pk == PathKind::Helix) && onCylinder, "parallel, meridian or helix on a cylinder"};
+  if (key == "azimuth_deg") return {meridian || pk == PathKind::Loxodrome, "meridian or loxodrome"};
+  if (key == "colatitude_start_deg" || key == "colatitude_end_deg")
+    return {(meridian && onSphere) || pk == PathKind::Loxodrome, "meridian on a sphere or loxodrome"};
+  if (key == "pitch_angle_deg") return {pk == PathKind::Helix, "helix"};
+  if (key == "heading_deg") return {pk == PathKind::Loxodrome, "loxodrome"};
+  if (key == "start_point") return {pk == PathKind::Geodesic, "geodesic"};
+  if (key == "u" || key == "v" || key == "t_start" || key == "t_end") return {pk == PathKind::Uv, "uv"};
+  if (key == "points" || key == "closed" || key == "interpolation" || key == "corner_radius")
+    return {pk == PathKind::Points, "points"};
+  return {true, ""};
+}
+
 SourceLoc SceneSpec::where(const std::string& key) const {
   if (auto it = locations.find(key); it != locations.end()) return it->second;
   return SourceLoc{sourceFile.empty() ? std::string("<scene>") : sourceFile};

@@ -139,6 +139,22 @@ struct SceneSpec {
   std::map<std::string, SourceLoc> locations;
 };
 
+// Which kind-specific keys apply: the loader rejects the others, and the
+// scene printer prints exactly these. `kinds` says where a key applies, for
+// messages.
+struct KeyRule {
+  bool applies = true;
+  std::string kinds;
+};
+inline const std::vector<std::string> kSurfaceKeys{"normal", "radius", "side", "axis", "major_radius",
+                                                   "minor_radius", "a", "b", "z"};
+inline const std::vector<std::string> kPathKeys{
+    "turns", "direction", "length", "direction_vector", "radius", "colatitude_deg", "tube_angle_deg", "height",
+    "azimuth_deg", "colatitude_start_deg", "colatitude_end_deg", "pitch_angle_deg", "heading_deg", "start_point",
+    "u", "v", "t_start", "t_end", "points", "closed", "interpolation", "corner_radius"};
+[[nodiscard]] KeyRule surfaceKeyRule(const std::string& key, SurfaceKind sk);
+[[nodiscard]] KeyRule pathKeyRule(const std::string& key, PathKind pk, SurfaceKind sk);
+
 [[nodiscard]] std::string toString(SurfaceKind k);
 [[nodiscard]] std::string toString(PathKind k);
 [[nodiscard]] std::string toString(RenderLayout l);

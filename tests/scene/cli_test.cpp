@@ -89,3 +89,49 @@ TEST(Cli, EveryFoundationSceneSolves) {
     EXPECT_EQ(r.exitCode, 0) << name << "\n" << r.err;
   }
 }
+
+// ---- scene --print ---------------------------------------------------------
+
+namespace {
+std::string withoutHeader(const std::string& printed) {
+  // The first three lines name the file and the path; the rest is the scene.
+  std::size_t at = 0;
+  for (int i = 0; i < 3 && at != std::string::npos; ++i) at = printed.find('\n', at) + 1;
+  return printed.substr(at);
+}
+}  // namespace
+
+TEST(ScenePrint, EverySceneRoundTripsThroughItsPrintedForm) {
+  const auto dir = freshTempDir("print");
+  int checked = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(sourceDir() / "scenes")) {
+    if (entry.path().extension() != ".toml") continue;
+    const auto first = runRollspin({"scene", entry.path().string(), "--print"});
+    ASSERT_EQ(first.exitCode, 0) << entry.path() << "\n" << first.err;
+    const auto printed = dir / entry.path().filename();
+    std::ofstream(printed) << first.out;
+    const auto second = runRollspin({"scene", printed.string(), "--print"});
+    ASSERT_EQ(second.exitCode, 0) << printed << "\n" << second.err << "\n" << first.out;
+    EXPECT_EQ(withoutHeader(first.out), withoutHeader(second.out)) << entry.path();
+    // The engine does the same thing from either file.
+    const auto a = runRollspin({"solve", entry.path().string(), "--json"});
+    const auto b = runRollspin({"solve", printed.string(), "--json"});
+    auto result = [](const std::string& json) {  // everything but the timing
+      const auto from = json.find("\"length\""), to = json.find("\"solve_seconds\"");
+      return json.substr(from, to - from);
+    };
+    EXPECT_EQ(result(a.out), result(b.out)) << entry.path();
+    ++checked;
+  }
+  EXPECT_GE(checked, 10);
+}
+
+TEST(ScenePrint, ShowsDefaultsOverridesAndDerivedValues) {
+  const auto r = runRollspin({"scene", scenePath("tennis-ball.toml"), "--print", "--set", "ball.radius=0.5"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("radius = 0.5"), std::string::npos);                  // the override
+  EXPECT_NE(r.out.find("direction = \"ccw\""), std::string::npos);            // a default
+  EXPECT_NE(r.out.find("derived: R1/2 = 1"), std::string::npos) << r.out;     // Brockett's circle
+  EXPECT_NE(r.out.find("# steps = automatic: "), std::string::npos);         // the automatic step count
+  EXPECT_EQ(r.out.find("colatitude_deg"), std::string::npos);                // keys of other kinds are not shown
+}

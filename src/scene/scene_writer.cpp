@@ -1,0 +1,181 @@
+#include "scene/scene_writer.hpp"
+
+#include <fmt/format.h>
+
+namespace rollspin::scene {
+
+namespace {
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+
+// Shortest text that reads back as the same double (fmt's default).
+std::string number(double v) { return fmt::format("{}", v); }
+std::string vec(const Vec3& v) { return fmt::format("[{}, {}, {}]", v[0], v[1], v[2]); }
+std::string boolean(bool b) { return b ? "true" : "false"; }
+
+class Writer {
+ public:
+  Writer(const SceneSpec& spec, const std::map<std::string, std::string>& notes) : spec_(spec), notes_(notes) {}
+
+  void section(const std::string& name) {
+    section_ = name;
+    out_ += (out_.empty() ? "" : "\n") + ("[" + name + "]\n");
+  }
+  void key(const std::string& key, const std::string& value) {
+    const std::string full = section_ + "." + key;
+    std::string line = key + " = " + value;
+    if (auto it = notes_.find(full); it != notes_.end()) line += "  # " + it->second;
+    out_ += line + "\n";
+  }
+  // A key whose default is computed: a comment, unless the scene set it.
+  void computed(const std::string& key, const std::string& fallback) {
+    const std::string full = section_ + "." + key;
+    auto it = notes_.find(full);
+    out_ += "# " + key + " = " + (it != notes_.end() ? it->second : fallback) + "\n";
+  }
+  [[nodiscard]] const std::string& text() const { return out_; }
+
+ private:
+  const SceneSpec& spec_;
+  const std::map<std::string, std::string>& notes_;
+  std::string section_;
+  std::string out_;
+};
+
+std::string pathKindName(PathKind k) { return toString(k); }
+
+}  // namespace
+
+std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::string>& notes) {
+  Writer w(spec, notes);
+  const SurfaceKind sk = spec.surface.kind;
+  const PathKind pk = spec.path.kind;
+
+  w.section("ball");
+  w.key("radius", number(spec.ball.radius));
+  if (!spec.ball.texture.empty()) w.key("texture", quoted(spec.ball.texture));
+  else w.computed("texture", "the built-in tennis ball");
+  if (spec.ball.marker) w.key("marker", vec(*spec.ball.marker));
+  else w.computed("marker", "the top of the ball at s = 0");
+
+  w.section("surface");
+  w.key("kind", quoted(toString(sk)));
+  const bool heightField = sk == SurfaceKind::Paraboloid || sk == SurfaceKind::Saddle || sk == SurfaceKind::Height;
+  for (const auto& key : kSurfaceKeys) {
+    if (!surfaceKeyRule(key, sk).applies) continue;
+    const SurfaceSpec& s = spec.surface;
+    if (key == "normal") w.key(key, vec(s.normal));
+    else if (key == "radius") w.key(key, number(s.radius));
+    else if (key == "side") {
+      const bool outside = s.side == SurfaceSide::Outside;
+      w.key(key, quoted(heightField ? (outside ? "above" : "below") : (outside ? "outside" : "inside")));
+    } else if (key == "axis") w.key(key, vec(s.axis));
+    else if (key == "major_radius") w.key(key, number(s.majorRadius));
+    else if (key == "minor_radius") w.key(key, number(s.minorRadius));
+    else if (key == "a") w.key(key, number(s.a));
+    else if (key == "b") w.key(key, number(s.b));
+    else if (key == "z") w.key(key, quoted(s.z));
+  }
+
+  if (spec.plate) {
+    w.section("plate");
+    w.key("radius", number(spec.plate->radius));
+  }
+
+  w.section("path");
+  w.key("kind", quoted(pathKindName(pk)));
+  for (const auto& key : kPathKeys) {
+    if (!pathKeyRule(key, pk, sk).applies) continue;
+    const PathSpec& p = spec.path;
+    // With [plate] the circle's radius is derived, and setting it is an error.
+    if (key == "radius" && spec.plate) continue;
+    if (key == "turns") w.key(key, number(p.turns));
+    else if (key == "direction") w.key(key, quoted(p.counterClockwise ? "ccw" : "cw"));
+    else if (key == "length") w.key(key, number(p.length));
+    else if (key == "direction_vector") {
+      if (p.directionVector) w.key(key, vec(*p.directionVector));
+      else w.computed(key, "the default direction on this surface");
+    } else if (key == "radius") w.key(key, number(p.radius));
+    else if (key == "colatitude_deg") w.key(key, number(p.colatitudeDeg));
+    else if (key == "tube_angle_deg") w.key(key, number(p.tubeAngleDeg));
+    else if (key == "height") w.key(key, number(p.height));
+    else if (key == "azimuth_deg") w.key(key, number(p.azimuthDeg));
+    else if (key == "colatitude_start_deg") w.key(key, number(p.colatitudeStartDeg));
+    else if (key == "colatitude_end_deg") w.key(key, number(p.colatitudeEndDeg));
+    else if (key == "pitch_angle_deg") w.key(key, number(p.pitchAngleDeg));
+    else if (key == "heading_deg") w.key(key, number(p.headingDeg));
+    else if (key == "start_point") {
+      if (p.startPoint) w.key(key, vec(*p.startPoint));
+      else w.computed(key, "the default start on this surface");
+    } else if (key == "u") w.key(key, quoted(p.u));
+    else if (key == "v") w.key(key, quoted(p.v));
+    else if (key == "t_start") w.key(key, number(p.tStart));
+    else if (key == "t_end") w.key(key, number(p.tEnd));
+    else if (key == "points") {
+      std::string list = "[";
+      for (std::size_t i = 0; i < p.points.size(); ++i) {
+        list += i ? ", [" : "[";
+        for (std::size_t j = 0; j < p.points[i].size(); ++j) list += (j ? ", " : "") + number(p.points[i][j]);
+        list += "]";
+      }
+      w.key(key, list + "]");
+    } else if (key == "closed") w.key(key, boolean(p.closed));
+    else if (key == "interpolation") w.key(key, quoted(p.interpolation));
+    else if (key == "corner_radius") w.key(key, number(p.cornerRadius));
+  }
+
+  w.section("solver");
+  w.key("method", quoted(spec.solver.method));
+  if (spec.solver.steps) w.key("steps", std::to_string(*spec.solver.steps));
+  else w.computed("steps", "automatic");
+  if (spec.solver.tolerance) w.key("tolerance", number(*spec.solver.tolerance));
+
+  w.section("timeline");
+  if (spec.timeline.samples) w.key("samples", std::to_string(*spec.timeline.samples));
+  else w.computed("samples", "60 per turn + 1");
+
+  const RenderSpec& r = spec.render;
+  w.section("render");
+  w.key("width", std::to_string(r.width));
+  w.key("height", std::to_string(r.height));
+  w.key("layout", quoted(toString(r.layout)));
+  w.key("strobe", std::to_string(r.strobe));
+  w.key("title", quoted(r.title));
+  w.key("labels", boolean(r.labels));
+  w.key("transparent", boolean(r.transparent));
+  w.key("msaa", std::to_string(r.msaa));
+  w.key("azimuth_deg", number(r.azimuthDeg));
+  w.key("elevation_deg", number(r.elevationDeg));
+  if (r.distance) w.key("distance", number(*r.distance));
+  else w.computed("distance", "framed automatically");
+  if (r.target) w.key("target", vec(*r.target));
+  else w.computed("target", "framed automatically");
+  w.key("follow", boolean(r.follow));
+  w.key("fov_deg", number(r.fovDeg));
+  if (r.format) w.key("format", quoted(*r.format == VideoFormat::Mp4 ? "mp4" : "png"));
+  else w.computed("format", "from the output's extension, else mp4");
+
+  const AnimationSpec& a = spec.animation;
+  w.section("animation");
+  w.key("fps", std::to_string(a.fps));
+  if (a.speed) w.key("speed", number(*a.speed));
+  else w.key("duration", number(a.duration));
+  w.key("easing", quoted(a.easing == Easing::Linear ? "linear" : "smooth"));
+  w.key("hold", number(a.hold));
+  w.key("crf", number(a.crf));
+  w.key("preset", quoted(a.preset));
+  return w.text();
+}
+
+}  // namespace rollspin::scene

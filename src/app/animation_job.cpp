@@ -1,5 +1,7 @@
 #include "app/animation_job.hpp"
 
+#include "core/stage_log.hpp"
+
 #include <fmt/format.h>
 
 #include <array>
@@ -116,9 +118,9 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   if (o.width) overrides.push_back("render.width=" + std::to_string(*o.width));
   if (o.height) overrides.push_back("render.height=" + std::to_string(*o.height));
   if (o.transparent) overrides.push_back("render.transparent=true");
-  const scene::SceneSpec spec = scene::loadSceneFile(o.scenePath, overrides);
+  const scene::SceneSpec spec = loadScene(o.scenePath, overrides);
   checkFrameMemory(spec);  // the queue and x264 add a few frames more: small next to MSAA buffers
-  const RollingModel model = buildModel(spec);
+  const RollingModel model = buildSceneModel(spec);
   const FrameClock clock(model.path->length(), spec);
   const FrameRange range = o.frames ? parseFrameRange(*o.frames, clock.frameCount())
                                     : FrameRange{0, clock.frameCount() - 1};
@@ -153,8 +155,10 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     settings.fps = static_cast<int>(clock.fps());
     settings.crf = spec.animation.crf;
     settings.preset = spec.animation.preset;
+    StageLog::instance().record("encoder");
     sink = std::make_unique<media::Mp4Writer>(out, settings);
   } else {
+    StageLog::instance().record("png-sequence");
     sink = std::make_unique<media::PngSequenceWriter>(
         out, range.first, spec.render.transparent ? media::PngChannels::Rgba : media::PngChannels::Rgb);
   }

@@ -179,7 +179,7 @@ std::optional<std::string> Reader::anyText(const toml::table* t, const std::stri
 void Reader::readRender() {
   const toml::table* render = section(
       "render", {"width", "height", "layout", "strobe", "title", "labels", "transparent", "msaa", "azimuth_deg",
-                 "elevation_deg", "distance", "target", "follow", "fov_deg", "format"});
+                 "elevation_deg", "distance", "target", "follow", "fov_deg", "format", "trails", "shadow"});
   RenderSpec& r = spec_.render;
   constexpr long long kMaxSide = 8192;  // "8K": the renderer's size limit
   for (const char* key : {"width", "height"}) {
@@ -218,6 +218,8 @@ void Reader::readRender() {
   }
   if (auto t = vector(render, "render", "target")) r.target = *t;
   if (auto f = boolean(render, "render", "follow")) r.follow = *f;
+  if (auto t = boolean(render, "render", "trails")) r.trails = *t;
+  if (auto sh = boolean(render, "render", "shadow")) r.shadow = *sh;
   if (auto f = number(render, "render", "fov_deg")) {
     if (!(*f >= 5.0 && *f <= 120.0))
       failAt("render.fov_deg", fmt::format("expected a vertical field of view in [5, 120] degrees, got {}", *f));

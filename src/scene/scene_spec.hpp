@@ -96,6 +96,8 @@ struct RenderSpec {
   long long strobe = 0;  // > 1: the ball at N evenly spaced positions in one image
   std::string title;     // "" = no title
   bool labels = true;    // axis, pole and live labels (s, angles)
+  bool trails = true;    // the marker's and the field's trails
+  bool shadow = true;    // the key light's shadow map
   bool transparent = false;
   long long msaa = 4;    // 1 | 2 | 4
   double azimuthDeg = -60.0;

@@ -153,6 +153,8 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   w.key("strobe", std::to_string(r.strobe));
   w.key("title", quoted(r.title));
   w.key("labels", boolean(r.labels));
+  w.key("trails", boolean(r.trails));
+  w.key("shadow", boolean(r.shadow));
   w.key("transparent", boolean(r.transparent));
   w.key("msaa", std::to_string(r.msaa));
   w.key("azimuth_deg", number(r.azimuthDeg));

@@ -1,7 +1,5 @@
 #include "app/animation_job.hpp"
 
-#include "core/stage_log.hpp"
-
 #include <fmt/format.h>
 
 #include <array>
@@ -17,6 +15,7 @@
 #include "app/interrupt_guard.hpp"
 #include "app/progress_meter.hpp"
 #include "app/render_jobs.hpp"
+#include "core/stage_log.hpp"
 #include "media/mp4_writer.hpp"
 #include "media/png_sequence.hpp"
 #include "render/gl_context.hpp"
@@ -158,7 +157,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     StageLog::instance().record("encoder");
     sink = std::make_unique<media::Mp4Writer>(out, settings);
   } else {
-    StageLog::instance().record("png-sequence");
+    StageLog::instance().record("png-frames");
     sink = std::make_unique<media::PngSequenceWriter>(
         out, range.first, spec.render.transparent ? media::PngChannels::Rgba : media::PngChannels::Rgb);
   }

@@ -37,6 +37,8 @@ struct Row {
 };
 
 struct Claim {
+  Claim(std::string id_, std::string statement_, std::string measuredAs_)
+      : id(std::move(id_)), statement(std::move(statement_)), measuredAs(std::move(measuredAs_)) {}
   std::string id, statement, measuredAs;
   bool asymptotic = false;
   std::vector<Row> rows;
@@ -90,7 +92,7 @@ void judge(Claim& c) {
   c.verdict = ok ? "agree (asymptotically)" : "disagree";
 }
 
-Row spinorRow(std::string where, std::shared_ptr<const geometry::ContactPath> path, double R, double delta,
+Row spinorRow(std::string where, std::shared_ptr<const geometry::ContactPath> path, double R,
               const std::function<double(const spin::Su2&)>& measure, std::string predicted) {
   Row r;
   r.where = std::move(where);
@@ -100,7 +102,6 @@ Row spinorRow(std::string where, std::shared_ptr<const geometry::ContactPath> pa
   r.deviation = measure(r.solver);
   r.predicted = std::move(predicted);
   r.measured = fmt::format("ψ = {:.9f}", spin::spinorAngle(-r.solver));
-  (void)delta;
   return r;
 }
 }  // namespace
@@ -126,7 +127,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
       const Vec3 stick = (r * f.tangentNormal - R * f.normal).normalized();
       const double delta = 2 * kPi * std::sqrt(1 + (r / R) * (r / R));
       const spin::Su2 predicted = -spin::expRotation(delta * stick);
-      c.rows.push_back(spinorRow(fmt::format("r/R = {:g}", r / R), path, R, delta,
+      c.rows.push_back(spinorRow(fmt::format("r/R = {:g}", r / R), path, R,
                                  [&](const spin::Su2& u) { return spin::spinorDistance(u, predicted); },
                                  fmt::format("δ = {:.9f}", delta)));
     }
@@ -141,7 +142,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
       const geometry::DarbouxSample f = path->at(0.0);
       const Vec3 axis45 = (f.tangentNormal - f.normal).normalized();
       const spin::Su2 predicted = spin::expRotation(beta * f.normal) * spin::expRotation(k * kPi * axis45);
-      Row row = spinorRow(fmt::format("k = {}", k), path, R, k * kPi,
+      Row row = spinorRow(fmt::format("k = {}", k), path, R,
                           [&](const spin::Su2& u) { return spin::spinorDistance(u, predicted); },
                           fmt::format("{}π about ê₄₅", k));
       c.rows.push_back(row);
@@ -184,7 +185,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
         if (th == 90) continue;  // tan θ: the formula's limit is the great circle
         const double t = th * kPi / 180;
         const double delta = 2 * kPi * std::cos(t) * std::sqrt(1 + std::pow(r * std::tan(t) / R, 2));
-        c.rows.push_back(spinorRow(fmt::format("r/R = {:g}, θ = {:g}°", r / R, th), parallel(r, true, t), R, delta,
+        c.rows.push_back(spinorRow(fmt::format("r/R = {:g}, θ = {:g}°", r / R, th), parallel(r, true, t), R,
                                    [&](const spin::Su2& u) { return angleDeviation(-u, delta); },
                                    fmt::format("δ₊ = {:.9f}", delta)));
       }
@@ -195,7 +196,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
             "U(L) against +1 (rotating frame −U(L) = a 2π turn = −1)"};
     for (double th : thetas) {
       const double t = th * kPi / 180;
-      c.rows.push_back(spinorRow(fmt::format("θ = {:g}°", th), parallel(R, true, t), R, 2 * kPi,
+      c.rows.push_back(spinorRow(fmt::format("θ = {:g}°", th), parallel(R, true, t), R,
                                  [](const spin::Su2& u) { return spin::spinorDistance(u, spin::Su2::identity()); },
                                  "δ = 2π"));
     }
@@ -216,9 +217,9 @@ ReportOutcome paperReport(const ReportOptions& options) {
         const double derived = 2 * kPi * std::sqrt(rho * rho / (R * R) + std::pow(std::cos(t), 2));
         auto path = parallel(r, false, t);
         const std::string where = fmt::format("r/R = {:g}, θ = {:g}°", r / R, th);
-        c.rows.push_back(spinorRow(where, path, R, paper, [&](const spin::Su2& u) { return angleDeviation(-u, paper); },
+        c.rows.push_back(spinorRow(where, path, R, [&](const spin::Su2& u) { return angleDeviation(-u, paper); },
                                    fmt::format("δ₋ = {:.9f}", paper)));
-        d.rows.push_back(spinorRow(where, path, R, derived,
+        d.rows.push_back(spinorRow(where, path, R,
                                    [&](const spin::Su2& u) { return angleDeviation(-u, derived); },
                                    fmt::format("δ = {:.9f}", derived)));
       }
@@ -231,7 +232,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
     c.note = "follows from the inside formula (README); at the equator 2π and the kinematic 6π are the same spinor";
     for (double th : thetas) {
       const double t = th * kPi / 180;
-      c.rows.push_back(spinorRow(fmt::format("θ = {:g}°", th), parallel(3 * R, false, t), R, 2 * kPi,
+      c.rows.push_back(spinorRow(fmt::format("θ = {:g}°", th), parallel(3 * R, false, t), R,
                                  [](const spin::Su2& u) { return spin::spinorDistance(u, spin::Su2::identity()); },
                                  "δ = 2π"));
     }
@@ -278,10 +279,10 @@ ReportOutcome paperReport(const ReportOptions& options) {
         const double pOut = 2 * kPi * r * std::sin(t) / Rb;
         const double pIn = pOut - 4 * kPi * std::sin(t);
         const std::string where = fmt::format("θ = {:g}°, R/r = {:.0e}", th, ratio);
-        out.rows.push_back(spinorRow(where, parallel(r, true, t), Rb, pOut,
+        out.rows.push_back(spinorRow(where, parallel(r, true, t), Rb,
                                      [&](const spin::Su2& u) { return angleDeviation(-u, pOut); },
                                      fmt::format("{:.6f}", pOut)));
-        in.rows.push_back(spinorRow(where, parallel(r, false, t), Rb, pIn,
+        in.rows.push_back(spinorRow(where, parallel(r, false, t), Rb,
                                     [&](const spin::Su2& u) { return angleDeviation(-u, pIn); },
                                     fmt::format("{:.6f}", pIn)));
       }
@@ -381,7 +382,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
     if (!c.note.empty()) details += " " + c.note + ".";
     details += "\n\n| where | claim | solver | deviation |\n| --- | --- | --- | --- |\n";
     for (const Row& r : c.rows) {
-      details += fmt::format("| {} | {} | {} | {} |\n", r.where, r.predicted, r.measured,
+      details += fmt::format("| {} | {} | {} | {} |\n", mdCell(r.where), mdCell(r.predicted), mdCell(r.measured),
                              std::isfinite(r.deviation) ? fmtNum(r.deviation) : "formula undefined");
       csv += fmt::format("{},\"{}\",\"{}\",\"{}\",{},{}\n", c.id, r.where, r.predicted, r.measured,
                          std::isfinite(r.deviation) ? fmt::format("{:.3e}", r.deviation) : "", c.verdict);

@@ -130,6 +130,12 @@ std::string fmtSeconds(double s) {
   return fmt::format("{:.3g} s", s);
 }
 
+std::string mdCell(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
+
 void writeFile(const std::filesystem::path& path, const std::string& text) {
   AtomicFile file(path);
   file.write(text);

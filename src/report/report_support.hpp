@@ -57,6 +57,8 @@ struct RunResult {
 // %.3g, or "—" for NaN/inf (never a number that is not one).
 [[nodiscard]] std::string fmtNum(double v);
 [[nodiscard]] std::string fmtSeconds(double seconds);
+// Text for a Markdown table cell: '|' escaped so |B| does not split the cell.
+[[nodiscard]] std::string mdCell(const std::string& text);
 
 // Writes text to path via a temporary name and rename (core/atomic_file).
 void writeFile(const std::filesystem::path& path, const std::string& text);

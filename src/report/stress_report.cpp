@@ -115,7 +115,7 @@ ReportOutcome stressReport(const ReportOptions& options) {
   std::string detail =
       "| case | method | settings | error | unitarity drift | steps | time | bound | verdict |\n"
       "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
-  std::string matrix = "| case | why | h·max(|B|) (fixed grid) |";
+  std::string matrix = "| case | why | h·max(\\|B\\|) (fixed grid) |";
   for (spin::Method m : spin::allMethods()) matrix += fmt::format(" {} |", spin::methodName(m));
   matrix += "\n| --- | --- | --- |";
   for (std::size_t k = 0; k < spin::allMethods().size(); ++k) matrix += " --- |";
@@ -129,7 +129,7 @@ ReportOutcome stressReport(const ReportOptions& options) {
     const double bound = stressBound(c);
     const double hB = c.path->length() / static_cast<double>(c.fixedSteps) *
                       spin::angularVelocity(c.path->at(0.0), c.ballRadius).norm();
-    matrix += fmt::format("| {} | {} | {} |", c.name, c.what, fmtNum(hB));
+    matrix += fmt::format("| {} | {} | {} |", mdCell(c.name), mdCell(c.what), fmtNum(hB));
     for (spin::Method m : spin::allMethods()) {
       const bool adaptive = spin::isAdaptive(m);
       const long long steps = adaptive ? 0 : c.fixedSteps;
@@ -154,7 +154,7 @@ ReportOutcome stressReport(const ReportOptions& options) {
                          tol > 0 ? fmt::format("{:.0e}", tol) : "", r.ok() ? "ok" : failureWord(r.status), verdict,
                          r.ok() ? fmt::format("{:.3e}", r.timelineError) : "", r.unitarity, r.steps,
                          r.ok() ? fmt::format("{:.4e}", r.seconds) : "", bound, ref.floor);
-      detail += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", c.name, spin::methodName(m), settings,
+      detail += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", mdCell(c.name), spin::methodName(m), settings,
                             err, fmtNum(r.unitarity), r.steps, r.ok() ? fmtSeconds(r.seconds) : "—", fmtNum(bound),
                             verdict == "pass" ? verdict : "**" + verdict + "**");
       matrix += verdict == "pass" ? fmt::format(" pass {} |", err)

@@ -76,24 +76,37 @@ DpResult dormandPrince(const Omega& omega, const Su2& u, double s, double h, dou
 }
 
 // The frame6 element Φ(b) exp(Ω_g) Φ(a)† on [a, b], given the frames at the
-// ends (their spinors) and κ_g at the three Gauss nodes; the frame's own turn
-// on the short arc, as in frame4Element.
-Su2 frame6Element(const Su2& phiA, const Su2& phiB, const double* kappaG, double ballRadius, double h) {
-  const Vec3 g[3] = {{0.0, 1.0 / ballRadius, -kappaG[0]}, {0.0, 1.0 / ballRadius, -kappaG[1]},
-                     {0.0, 1.0 / ballRadius, -kappaG[2]}};
+// ends (their spinors), κ_g at the three Gauss nodes and the Darboux vector
+// at the middle one. The frame's own turn D = Φ(b) Φ(a)† is known up to
+// sign; the lift is the sign nearer exp(h d_mid) (as in frame4Element):
+// exact for constant curvatures at any h, and right while that estimate is
+// within π of the truth (the step cap below keeps it so on varying paths).
+struct GaussData {
+  double kappaG[3];
+  Vec3 darbouxMid = Vec3::Zero();
+  double turnRate = 0.0;  // max |d| at the nodes
+};
+Su2 frame6Element(const Su2& phiA, const Su2& phiB, const GaussData& gd, double ballRadius, double h) {
+  const Vec3 g[3] = {{0.0, 1.0 / ballRadius, -gd.kappaG[0]}, {0.0, 1.0 / ballRadius, -gd.kappaG[1]},
+                     {0.0, 1.0 / ballRadius, -gd.kappaG[2]}};
   Su2 turn = phiB * phiA.conjugate();
-  if (turn.w < 0.0) turn = -turn;
+  const Su2 predicted = expRotation(h * gd.darbouxMid);
+  if (turn.w * predicted.w + turn.x * predicted.x + turn.y * predicted.y + turn.z * predicted.z < 0.0) turn = -turn;
   return turn * (phiA * expRotation(magnus6Exponent(h, g)) * phiA.conjugate());
 }
 
-// κ_g at the Gauss nodes of [s, s + h] and the largest frame rate |d| there.
-void gaussKappa(const geometry::ContactPath& path, double s, double h, double* kappaG, double& turnRate) {
+// κ_g and |d| at the Gauss nodes of [s, s + h], d at the middle one.
+GaussData gaussData(const geometry::ContactPath& path, double s, double h) {
   const double c[3] = {0.5 - kGaussOffset, 0.5, 0.5 + kGaussOffset};
+  GaussData gd;
   for (int i = 0; i < 3; ++i) {
     const geometry::DarbouxSample f = path.at(s + c[i] * h);
-    kappaG[i] = f.geodesicCurvature;
-    turnRate = std::max(turnRate, geometry::darbouxVector(f).norm());
+    gd.kappaG[i] = f.geodesicCurvature;
+    const Vec3 d = geometry::darbouxVector(f);
+    if (i == 1) gd.darbouxMid = d;
+    gd.turnRate = std::max(gd.turnRate, d.norm());
   }
+  return gd;
 }
 
 // s as hi + lo (Neumaier): exact enough that 1e9 steps do not drift it.
@@ -115,9 +128,7 @@ Su2 adaptiveStep(const geometry::ContactPath& path, double ballRadius, Method me
     auto omega = [&](double x) { return angularVelocity(path.at(x), ballRadius); };
     return toSu2(dormandPrince(omega, u, s, h, 0.0).y5);
   }
-  double kappa[3], rate = 0.0;
-  gaussKappa(path, s, h, kappa, rate);
-  return frame6Element(frameSpinor(path.at(s)), frameSpinor(path.at(s + h)), kappa, ballRadius, h) * u;
+  return frame6Element(frameSpinor(path.at(s)), frameSpinor(path.at(s + h)), gaussData(path, s, h), ballRadius, h) * u;
 }
 
 SolveStats adaptiveRun(const geometry::ContactPath& path, double ballRadius, Method method, double tolerance,
@@ -135,6 +146,9 @@ SolveStats adaptiveRun(const geometry::ContactPath& path, double ballRadius, Met
     return stats;
   };
   auto omega = [&](double x) { return angularVelocity(path.at(x), ballRadius); };
+  // On constant curvatures frame6a is exact at any h and the lift exact too:
+  // no cap, so 1e6 lollipop turns take a dozen steps.
+  const double maxFrameTurn = path.hasConstantCurvatures() ? INFINITY : kMaxFrameTurn;
 
   std::vector<double> cuts{0.0};
   for (double b : path.breakpoints())
@@ -177,15 +191,14 @@ SolveStats adaptiveRun(const geometry::ContactPath& path, double ballRadius, Met
         factor = r.error > 0.0 ? std::clamp(0.9 * std::pow(r.error, -0.2), 0.2, 5.0) : 5.0;
       } else {
         const double half = 0.5 * step;
-        double kFull[3], kLeft[3], kRight[3], turnRate = 0.0;
-        gaussKappa(path, here, step, kFull, turnRate);
-        gaussKappa(path, here, half, kLeft, turnRate);
-        gaussKappa(path, here + half, step - half, kRight, turnRate);
+        const GaussData full = gaussData(path, here, step), left = gaussData(path, here, half),
+                        right = gaussData(path, here + half, step - half);
+        const double turnRate = std::max({full.turnRate, left.turnRate, right.turnRate});
         const Su2 phiMid = frameSpinor(path.at(here + half));
         phiEnd = frameSpinor(path.at(last ? b : here + step));
-        const Su2 whole = frame6Element(phiStart, phiEnd, kFull, ballRadius, step);
-        const Su2 halves = frame6Element(phiMid, phiEnd, kRight, ballRadius, step - half) *
-                           frame6Element(phiStart, phiMid, kLeft, ballRadius, half);
+        const Su2 whole = frame6Element(phiStart, phiEnd, full, ballRadius, step);
+        const Su2 halves = frame6Element(phiMid, phiEnd, right, ballRadius, step - half) *
+                           frame6Element(phiStart, phiMid, left, ballRadius, half);
         // Richardson: the two halves are 2⁶ times more accurate than the whole.
         const double error = spinorDistance(whole, halves) / 63.0;
         if (!std::isfinite(error) || !halves.isFinite()) return stop(SolveStatus::NonFinite, u);
@@ -195,11 +208,11 @@ SolveStats adaptiveRun(const geometry::ContactPath& path, double ballRadius, Met
         const double ratio = error / std::max(tolerance * step / length, 8.0 * 2.220446049250313e-16);
         factor = ratio > 0.0 ? std::clamp(0.9 * std::pow(ratio, -1.0 / 6.0), 0.2, 4.0) : 4.0;
         accept = ratio <= 1.0;
-        if (turnRate * step > kMaxFrameTurn) {
+        if (turnRate * step > maxFrameTurn) {
           accept = false;
-          factor = std::min(factor, 0.9 * kMaxFrameTurn / (turnRate * step));
+          factor = std::min(factor, 0.9 * maxFrameTurn / (turnRate * step));
         } else if (turnRate > 0.0) {
-          factor = std::min(factor, kMaxFrameTurn / (turnRate * step));
+          factor = std::min(factor, maxFrameTurn / (turnRate * step));
         }
         if (accept) {
           candidate = halves * u;

@@ -17,8 +17,11 @@
 //            err ≤ max(tol · h / L, 8ε) (per unit length: the sum stays ≤ tol,
 //            but no step is asked for less than round-off), the
 //            two half steps advance, h ← h · 0.9 (tol h / L / err)^(1/6).
-//            The frame may turn by at most 2.5 rad per step (h·|d| ≤ 2.5 at
-//            the nodes), below the π where its short-arc lift would flip.
+//            The frame factor's sign is the one nearer exp(h d_mid); on a
+//            path whose curvatures vary, the frame may turn by at most 2.5
+//            rad per step (h·|d| ≤ 2.5 at the nodes) so that this estimate
+//            stays within π of the truth; on constant curvatures there is no
+//            cap (everything is exact at any h).
 #pragma once
 
 #include <span>

@@ -26,7 +26,13 @@ namespace rollspin::spin {
   return {0.0, 1.0 / ballRadius, -f.geodesicCurvature};
 }
 
-// The frame4 step element E with U(s + h) = E U(s).
-[[nodiscard]] Su2 frame4Element(const geometry::ContactPath& path, double ballRadius, double s, double h);
+// The frame4 step element E with U(s + h) = E U(s). A march passes `end`,
+// its own next node (s + h up to rounding), so that consecutive steps share
+// the frame at their common node and the frame factors telescope.
+[[nodiscard]] Su2 frame4Element(const geometry::ContactPath& path, double ballRadius, double s, double h,
+                                double end);
+[[nodiscard]] inline Su2 frame4Element(const geometry::ContactPath& path, double ballRadius, double s, double h) {
+  return frame4Element(path, ballRadius, s, h, s + h);
+}
 
 }  // namespace rollspin::spin

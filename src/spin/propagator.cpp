@@ -285,11 +285,13 @@ SolveStats Propagator::run(const SampleArcLengths& sampleS, const SampleSink& si
             // Each step's end node is the next step's start node, bit for
             // bit, so the frame factors Φ(s_{j+1}) Φ(s_j)† telescope: with
             // s + h recomputed per step the two differ by ε·s and the
-            // mismatch accumulated to 6e-4 over 1e6 lollipop turns.
+            // mismatch accumulated to 6e-4 over 1e6 lollipop turns. The
+            // body rotation keeps the uniform h (at R/r = 1e-6 an angle of
+            // |g| h ≈ 1e5 per step would feel the rounding of sNext − sj).
             const long long k = k0 + static_cast<long long>(j);
             const double sj = a + static_cast<double>(k) * h;
             const double sNext = k + 1 == n ? b : a + static_cast<double>(k + 1) * h;
-            elements[j] = frame4Element(path_, ballRadius_, sj, sNext - sj);
+            elements[j] = frame4Element(path_, ballRadius_, sj, h, sNext);
           } else {
             elements[j] = stepElement(method_, h, &w[j * kMaxNodes]);
           }

@@ -43,7 +43,9 @@ TEST(SolverTolerance, EveryMethodNameLoads) {
     const app::RollingModel model = app::buildModel(spec);
     const app::SolverChoice choice = app::chooseSolver(spec, model);
     EXPECT_EQ(spin::methodName(choice.method), m);
-    if (spin::isAdaptive(choice.method)) EXPECT_DOUBLE_EQ(choice.tolerance, scene::SolverSpec::kDefaultTolerance);
+    if (spin::isAdaptive(choice.method)) {
+      EXPECT_DOUBLE_EQ(choice.tolerance, scene::SolverSpec::kDefaultTolerance);
+    }
   }
 }
 

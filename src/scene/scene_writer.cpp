@@ -135,6 +135,8 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
     } else if (key == "closed") w.key(key, boolean(p.closed));
     else if (key == "interpolation") w.key(key, quoted(p.interpolation));
     else if (key == "corner_radius") w.key(key, number(p.cornerRadius));
+    else if (key == "curvature_start") w.key(key, number(p.curvatureStart));
+    else if (key == "curvature_rate") w.key(key, number(p.curvatureRate));
   }
 
   w.section("solver");

@@ -117,9 +117,9 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   if (o.width) overrides.push_back("render.width=" + std::to_string(*o.width));
   if (o.height) overrides.push_back("render.height=" + std::to_string(*o.height));
   if (o.transparent) overrides.push_back("render.transparent=true");
-  const scene::SceneSpec spec = scene::loadSceneFile(o.scenePath, overrides);
+  const scene::SceneSpec spec = loadScene(o.scenePath, overrides);
   checkFrameMemory(spec);  // the queue and x264 add a few frames more: small next to MSAA buffers
-  const RollingModel model = buildModel(spec);
+  const RollingModel model = buildSceneModel(spec);
   const FrameClock clock(model.path->length(), spec);
   const FrameRange range = o.frames ? parseFrameRange(*o.frames, clock.frameCount())
                                     : FrameRange{0, clock.frameCount() - 1};

@@ -1,5 +1,7 @@
 #include "app/draw_scene.hpp"
 
+#include "core/stage_log.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -59,10 +61,14 @@ FrameSampling frameSampling(const scene::SceneSpec& spec, const RollingModel& mo
   const double ballTurns = spin::integratedFieldStrength(*model.path, model.ballRadius) / (2.0 * std::numbers::pi);
   const double perUnit = std::max(240.0, 120.0 * std::max(ballTurns, model.path->turns())) / length;
   const auto count = static_cast<std::size_t>(std::clamp(std::ceil(perUnit * s), 1.0, 20000.0)) + 1;
-  for (std::size_t i = 0; i < count; ++i) out.trail.push_back(s * double(i) / double(count - 1));
-  out.trail.back() = s;
+  if (spec.render.trails) {
+    StageLog::instance().record("trails");
+    for (std::size_t i = 0; i < count; ++i) out.trail.push_back(s * double(i) / double(count - 1));
+    out.trail.back() = s;
+  }
   const long long n = spec.render.strobe;
   if (n > 1) {
+    StageLog::instance().record("strobe");
     // A closed circuit would repeat its start at s = L: spread N over [0, L).
     const double denominator = isCircuit(model) && std::abs(model.path->turns() - std::round(model.path->turns())) < 1e-9
                                    ? double(n)
@@ -96,9 +102,13 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
   }
   dotMesh_ = render::uvSphere(24, 12);  // small dots need few triangles
   const bool layoutShowsTwin = spec.render.layout != scene::RenderLayout::Ball;
-  if (layoutShowsTwin) blochSphereMesh_ = render::uvSphere(64, 32);
+  if (layoutShowsTwin) {
+    StageLog::instance().record("twin-geometry");
+    blochSphereMesh_ = render::uvSphere(64, 32);
+  }
   const bool layoutShowsBall = spec.render.layout != scene::RenderLayout::Twin;
   if (!layoutShowsBall) return;  // the twin needs none of the surface geometry
+  StageLog::instance().record("surface-mesh");
   if (!ballTexture_) ballTexture_ = render::tennisBallTexture();
 
   sphereMesh_ = render::uvSphere(96, 48);
@@ -359,6 +369,7 @@ render::View SceneDrawer::ballCamera(int x, int y, int w, int h, double s) const
     v.light = keyLight(up, eyeDir, toGlm(model_.path->at(s).centre(R)), float(1.8 * R));
   }
   v.light.shadowSoftness = float(0.12 * R);
+  v.light.shadow = spec_.render.shadow;
   return v;
 }
 

@@ -1,6 +1,7 @@
 #include "app/render_jobs.hpp"
 
 #include "core/memory_budget.hpp"
+#include "core/stage_log.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -44,6 +45,7 @@ double resolveArcPosition(const ArcPosition& at, double length, const std::strin
 }
 
 FrameOrientations solveFrame(const scene::SceneSpec& spec, const RollingModel& model, double s) {
+  StageLog::instance().record("solver");
   const FrameSampling sampling = frameSampling(spec, model, s);
   std::vector<double> all = sampling.trail;
   all.insert(all.end(), sampling.strobe.begin(), sampling.strobe.end());
@@ -70,6 +72,7 @@ FrameOrientations solveFrame(const scene::SceneSpec& spec, const RollingModel& m
 
 std::shared_ptr<const render::TextureImage> loadBallTexture(const scene::SceneSpec& spec) {
   if (spec.ball.texture.empty()) return nullptr;
+  StageLog::instance().record("ball-texture");
   const SourceLoc where = spec.where("ball.texture");
   std::filesystem::path file = spec.ball.texture;
   const bool fromCommandLine = where.file.rfind("--set", 0) == 0;
@@ -110,9 +113,9 @@ std::filesystem::path renderStill(const StillOptions& o) {
   if (o.width) overrides.push_back("render.width=" + std::to_string(*o.width));
   if (o.height) overrides.push_back("render.height=" + std::to_string(*o.height));
   if (o.transparent) overrides.push_back("render.transparent=true");
-  const scene::SceneSpec spec = scene::loadSceneFile(o.scenePath, overrides);
+  const scene::SceneSpec spec = loadScene(o.scenePath, overrides);
   checkFrameMemory(spec);
-  const RollingModel model = buildModel(spec);
+  const RollingModel model = buildSceneModel(spec);
   const double length = model.path->length();
   double s = spec.render.strobe > 1 ? length : 0.5 * length;
   if (o.at) s = resolveArcPosition(parseArcPosition(*o.at), length, *o.at);
@@ -131,6 +134,7 @@ std::filesystem::path renderStill(const StillOptions& o) {
   const render::ShaderLibrary shaders(o.shaderDir);
   render::Renderer renderer(*context, shaders);
   const media::Image image = renderer.render(list);
+  StageLog::instance().record("png");
   media::writePng(out, image.view(), list.transparent ? media::PngChannels::Rgba : media::PngChannels::Rgb);
   return out;
 }

@@ -7,6 +7,7 @@
 
 #include "app/surface_model.hpp"
 #include "geometry/analytic_paths.hpp"
+#include "geometry/clothoid_path.hpp"
 #include "spin/field.hpp"
 
 namespace rollspin::app {
@@ -29,6 +30,11 @@ RollingModel buildModel(const scene::SceneSpec& spec) {
     switch (spec.path.kind) {
       case scene::PathKind::Line:
         model.path = std::make_unique<geometry::PlaneLinePath>(plane, geometry::Vec3::Zero(), e1, spec.path.length);
+        break;
+      case scene::PathKind::Clothoid:
+        model.path = std::make_unique<geometry::PlaneClothoidPath>(plane, geometry::Vec3::Zero(), e1,
+                                                                   spec.path.curvatureStart, spec.path.curvatureRate,
+                                                                   spec.path.length);
         break;
       case scene::PathKind::Circle: {
         double radius = spec.path.radius;

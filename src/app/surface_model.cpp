@@ -129,7 +129,8 @@ std::unique_ptr<geometry::SurfaceCurvePath> buildPath(const scene::SceneSpec& sp
                                   p.cornerRadius);
     }
     case PathKind::Line:
-    case PathKind::Circle: break;
+    case PathKind::Circle:
+    case PathKind::Clothoid: break;  // plane paths, built by buildModel
   }
   throw badInput(spec.where("path.kind"), "path.kind: a {} path is not available on a {}", scene::toString(p.kind),
                  scene::toString(sk));
@@ -150,7 +151,8 @@ std::string keyForPathError(const scene::SceneSpec& spec) {
 bool isAnalyticScene(const scene::SceneSpec& spec) {
   const auto sk = spec.surface.kind;
   const auto pk = spec.path.kind;
-  return (sk == scene::SurfaceKind::Plane && (pk == scene::PathKind::Line || pk == scene::PathKind::Circle)) ||
+  return (sk == scene::SurfaceKind::Plane &&
+          (pk == scene::PathKind::Line || pk == scene::PathKind::Circle || pk == scene::PathKind::Clothoid)) ||
          (sk == scene::SurfaceKind::Sphere && pk == scene::PathKind::Parallel);
 }
 

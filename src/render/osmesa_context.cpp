@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/stage_log.hpp"
 #include "render/gl.hpp"
 #include "render/osmesa_api.hpp"
 #include "render/gl_context.hpp"
@@ -14,6 +15,7 @@ namespace {
 class OsMesaContext final : public GlContext {
  public:
   OsMesaContext() {
+    StageLog::instance().record("gl-context");
     loadOsMesa();
     const std::array<int, 11> attribs{OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE,
                                       OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 4,

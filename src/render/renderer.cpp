@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/stage_log.hpp"
 #include "render/font_atlas.hpp"
 #include "render/gl.hpp"
 #include "render/mesh_builders.hpp"
@@ -309,6 +310,7 @@ struct Renderer::Impl {
     auto it = fonts.find(key);
     if (it != fonts.end()) return it->second;
     CachedFont f;
+    StageLog::instance().record("font");
     f.atlas = std::make_unique<FontAtlas>(defaultFontFile(bold), static_cast<float>(key.first));
     glGenTextures(1, &f.id);
     glBindTexture(GL_TEXTURE_2D, f.id);
@@ -512,7 +514,10 @@ struct Renderer::Impl {
 
     bool shadowOn = v.light.shadow;
     glm::mat4 lightClipFromWorld(1.0f);
-    if (shadowOn) lightClipFromWorld = shadowPass(v, items);
+    if (shadowOn) {
+      StageLog::instance().record("shadow-map");
+      lightClipFromWorld = shadowPass(v, items);
+    }
 
     const GLuint target = fbSamples > 1 ? msaaFbo : resolveFbo;
     glBindFramebuffer(GL_FRAMEBUFFER, target);

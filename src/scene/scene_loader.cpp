@@ -179,7 +179,7 @@ std::optional<std::string> Reader::anyText(const toml::table* t, const std::stri
 void Reader::readRender() {
   const toml::table* render = section(
       "render", {"width", "height", "layout", "strobe", "title", "labels", "transparent", "msaa", "azimuth_deg",
-                 "elevation_deg", "distance", "target", "follow", "fov_deg", "format"});
+                 "elevation_deg", "distance", "target", "follow", "fov_deg", "format", "trails", "shadow"});
   RenderSpec& r = spec_.render;
   constexpr long long kMaxSide = 8192;  // "8K": the renderer's size limit
   for (const char* key : {"width", "height"}) {
@@ -218,6 +218,8 @@ void Reader::readRender() {
   }
   if (auto t = vector(render, "render", "target")) r.target = *t;
   if (auto f = boolean(render, "render", "follow")) r.follow = *f;
+  if (auto t = boolean(render, "render", "trails")) r.trails = *t;
+  if (auto sh = boolean(render, "render", "shadow")) r.shadow = *sh;
   if (auto f = number(render, "render", "fov_deg")) {
     if (!(*f >= 5.0 && *f <= 120.0))
       failAt("render.fov_deg", fmt::format("expected a vertical field of view in [5, 120] degrees, got {}", *f));
@@ -438,14 +440,16 @@ SceneSpec Reader::read() {
       "path", {"kind", "turns", "direction", "length", "direction_vector", "radius", "colatitude_deg",
                "tube_angle_deg", "height", "azimuth_deg", "colatitude_start_deg", "colatitude_end_deg",
                "pitch_angle_deg", "heading_deg", "start_point", "u", "v", "t_start", "t_end", "points", "closed",
-               "interpolation", "corner_radius"});
+               "interpolation", "corner_radius", "curvature_start", "curvature_rate"});
   const bool pathKindGiven = path != nullptr && path->get("kind") != nullptr;
   static const std::map<std::string, PathKind> kPathKinds{
       {"line", PathKind::Line},           {"circle", PathKind::Circle},       {"parallel", PathKind::Parallel},
       {"meridian", PathKind::Meridian},   {"helix", PathKind::Helix},         {"loxodrome", PathKind::Loxodrome},
-      {"geodesic", PathKind::Geodesic},   {"uv", PathKind::Uv},               {"points", PathKind::Points}};
+      {"geodesic", PathKind::Geodesic},   {"uv", PathKind::Uv},               {"points", PathKind::Points},
+      {"clothoid", PathKind::Clothoid}};
   if (auto kind = text(path, "path", "kind",
-                       {"line", "circle", "parallel", "meridian", "helix", "loxodrome", "geodesic", "uv", "points"})) {
+                       {"line", "circle", "parallel", "meridian", "helix", "loxodrome", "geodesic", "uv", "points",
+                        "clothoid"})) {
     spec_.path.kind = kPathKinds.at(*kind);
   } else if (sk == SurfaceKind::Sphere || sk == SurfaceKind::Cylinder || sk == SurfaceKind::Torus ||
              sk == SurfaceKind::Paraboloid) {
@@ -462,7 +466,8 @@ SceneSpec Reader::read() {
   bool lies = true;
   switch (pk) {
     case PathKind::Line:
-    case PathKind::Circle: lies = sk == SurfaceKind::Plane; needs = "plane"; break;
+    case PathKind::Circle:
+    case PathKind::Clothoid: lies = sk == SurfaceKind::Plane; needs = "plane"; break;
     case PathKind::Parallel: lies = revolution; needs = "sphere, cylinder, torus or paraboloid"; break;
     case PathKind::Meridian: lies = sk != SurfaceKind::Plane; needs = "curved surface"; break;
     case PathKind::Helix: lies = sk == SurfaceKind::Cylinder; needs = "cylinder"; break;
@@ -564,6 +569,12 @@ SceneSpec Reader::read() {
   if (auto r = number(path, "path", "corner_radius")) {
     if (*r < 0.0) failAt("path.corner_radius", fmt::format("expected a radius >= 0, got {}", *r));
     spec_.path.cornerRadius = *r;
+  }
+  for (const char* key : {"curvature_start", "curvature_rate"}) {
+    if (auto v = number(path, "path", key)) {
+      if (std::abs(*v) > 1e6) failAt(std::string("path.") + key, fmt::format("expected |value| <= 1e6, got {}", *v));
+      (std::string(key) == "curvature_start" ? spec_.path.curvatureStart : spec_.path.curvatureRate) = *v;
+    }
   }
   if (pk == PathKind::Points) {
     const std::size_t need = spec_.path.closed ? 3 : 2;

@@ -22,10 +22,13 @@ KeyRule pathKeyRule(const std::string& key, PathKind pk, SurfaceKind sk) {
   if (key == "turns" || key == "direction")
     return {pk == PathKind::Circle || parallel || pk == PathKind::Helix || (meridian && onTorus),
             "circle or parallel (or helix, or meridian on a torus)"};
+  const bool clothoid = pk == PathKind::Clothoid;
   if (key == "length")
-    return {pk == PathKind::Line || pk == PathKind::Geodesic || (meridian && !onSphere && !onTorus),
-            "line, geodesic or meridian on a cylinder or height field"};
-  if (key == "direction_vector") return {pk == PathKind::Line || pk == PathKind::Geodesic, "line or geodesic"};
+    return {pk == PathKind::Line || pk == PathKind::Geodesic || clothoid || (meridian && !onSphere && !onTorus),
+            "line, clothoid, geodesic or meridian on a cylinder or height field"};
+  if (key == "direction_vector")
+    return {pk == PathKind::Line || pk == PathKind::Geodesic || clothoid, "line, clothoid or geodesic"};
+  if (key == "curvature_start" || key == "curvature_rate") return {clothoid, "clothoid"};
   if (key == "radius")
     return {pk == PathKind::Circle || (parallel && sk == SurfaceKind::Paraboloid), "circle or parallel on a paraboloid"};
   if (key == "colatitude_deg") return {parallel && onSphere, "parallel on a sphere"};
@@ -73,6 +76,7 @@ std::string toString(PathKind k) {
     case PathKind::Geodesic: return "geodesic";
     case PathKind::Uv: return "uv";
     case PathKind::Points: return "points";
+    case PathKind::Clothoid: return "clothoid";
   }
   return "?";
 }

@@ -38,7 +38,7 @@ struct SurfaceSpec {
   std::string z = "0";          // height: z = f(x, y), a muparser expression
 };
 
-enum class PathKind { Line, Circle, Parallel, Meridian, Helix, Loxodrome, Geodesic, Uv, Points };
+enum class PathKind { Line, Circle, Parallel, Meridian, Helix, Loxodrome, Geodesic, Uv, Points, Clothoid };
 
 struct PathSpec {
   PathKind kind = PathKind::Circle;
@@ -63,6 +63,8 @@ struct PathSpec {
   bool closed = false;                // points: periodic spline / closed polygon
   std::string interpolation = "spline";  // points: "spline" | "polyline"
   double cornerRadius = 0.0;          // points, polyline: arc radius rounding each corner
+  double curvatureStart = -4.0;       // clothoid: κ_g at s = 0
+  double curvatureRate = 1.0;         // clothoid: α in κ_g = κ₀ + α s
 };
 
 struct PlateSpec {
@@ -96,6 +98,8 @@ struct RenderSpec {
   long long strobe = 0;  // > 1: the ball at N evenly spaced positions in one image
   std::string title;     // "" = no title
   bool labels = true;    // axis, pole and live labels (s, angles)
+  bool trails = true;    // the marker's and the field's trails
+  bool shadow = true;    // the key light's shadow map
   bool transparent = false;
   long long msaa = 4;    // 1 | 2 | 4
   double azimuthDeg = -60.0;
@@ -151,7 +155,8 @@ inline const std::vector<std::string> kSurfaceKeys{"normal", "radius", "side", "
 inline const std::vector<std::string> kPathKeys{
     "turns", "direction", "length", "direction_vector", "radius", "colatitude_deg", "tube_angle_deg", "height",
     "azimuth_deg", "colatitude_start_deg", "colatitude_end_deg", "pitch_angle_deg", "heading_deg", "start_point",
-    "u", "v", "t_start", "t_end", "points", "closed", "interpolation", "corner_radius"};
+    "u", "v", "t_start", "t_end", "points", "closed", "interpolation", "corner_radius", "curvature_start",
+    "curvature_rate"};
 [[nodiscard]] KeyRule surfaceKeyRule(const std::string& key, SurfaceKind sk);
 [[nodiscard]] KeyRule pathKeyRule(const std::string& key, PathKind pk, SurfaceKind sk);
 

@@ -26,11 +26,14 @@ std::string boolean(bool b) { return b ? "true" : "false"; }
 
 class Writer {
  public:
-  Writer(const SceneSpec& spec, const std::map<std::string, std::string>& notes) : spec_(spec), notes_(notes) {}
+  explicit Writer(const std::map<std::string, std::string>& notes) : notes_(notes) {}
 
   void section(const std::string& name) {
     section_ = name;
-    out_ += (out_.empty() ? "" : "\n") + ("[" + name + "]\n");
+    if (!out_.empty()) out_ += '\n';
+    out_ += '[';
+    out_ += name;
+    out_ += "]\n";
   }
   void key(const std::string& key, const std::string& value) {
     const std::string full = section_ + "." + key;
@@ -47,7 +50,6 @@ class Writer {
   [[nodiscard]] const std::string& text() const { return out_; }
 
  private:
-  const SceneSpec& spec_;
   const std::map<std::string, std::string>& notes_;
   std::string section_;
   std::string out_;
@@ -58,7 +60,7 @@ std::string pathKindName(PathKind k) { return toString(k); }
 }  // namespace
 
 std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::string>& notes) {
-  Writer w(spec, notes);
+  Writer w(notes);
   const SurfaceKind sk = spec.surface.kind;
   const PathKind pk = spec.path.kind;
 
@@ -133,6 +135,8 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
     } else if (key == "closed") w.key(key, boolean(p.closed));
     else if (key == "interpolation") w.key(key, quoted(p.interpolation));
     else if (key == "corner_radius") w.key(key, number(p.cornerRadius));
+    else if (key == "curvature_start") w.key(key, number(p.curvatureStart));
+    else if (key == "curvature_rate") w.key(key, number(p.curvatureRate));
   }
 
   w.section("solver");
@@ -153,6 +157,8 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   w.key("strobe", std::to_string(r.strobe));
   w.key("title", quoted(r.title));
   w.key("labels", boolean(r.labels));
+  w.key("trails", boolean(r.trails));
+  w.key("shadow", boolean(r.shadow));
   w.key("transparent", boolean(r.transparent));
   w.key("msaa", std::to_string(r.msaa));
   w.key("azimuth_deg", number(r.azimuthDeg));

@@ -88,13 +88,13 @@ std::shared_ptr<const render::TextureImage> loadBallTexture(const scene::SceneSp
   return texture;
 }
 
-void checkFrameMemory(const scene::SceneSpec& spec) {
+void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerPixel) {
   // Per pixel: multisampled colour and depth-stencil (4 + 4 bytes per sample),
   // the resolved colour, the read-back, the flipped image and the PNG rows
   // (4 bytes each); plus a fixed 96 MiB for the shadow map, the GL stack and
   // the meshes. Refuse before creating a context when that cannot fit.
   const std::uint64_t pixels = static_cast<std::uint64_t>(spec.render.width) * spec.render.height;
-  const std::uint64_t needed = pixels * (8ULL * spec.render.msaa + 16ULL) + (96ULL << 20);
+  const std::uint64_t needed = pixels * (8ULL * spec.render.msaa + 16ULL + extraBytesPerPixel) + (96ULL << 20);
   const auto available = availableMemoryBytes();
   if (available && needed > *available) {
     const std::string key = spec.locations.contains("render.height") ? "render.height" : "render.width";

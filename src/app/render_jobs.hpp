@@ -3,6 +3,8 @@
 // context is created here and nowhere on the solve/timeline path.
 #pragma once
 
+#include <cstdint>
+
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -47,7 +49,9 @@ struct StillOptions {
 // Renders one still and writes it; returns the path written.
 // Refuses (BadInput, with the numbers) a frame size whose buffers would not
 // fit in the memory available to the process.
-void checkFrameMemory(const scene::SceneSpec& spec);
+// extraBytesPerPixel: what a job adds per pixel beyond the renderer (an
+// animation's frame queue, colour conversion and x264's look-ahead).
+void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerPixel = 0);
 
 std::filesystem::path renderStill(const StillOptions& options);
 

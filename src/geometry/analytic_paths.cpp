@@ -8,11 +8,7 @@
 namespace rollspin::geometry {
 
 namespace {
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+std::string num(double v) { return describeNumber(v); }
 }  // namespace
 
 // ---- line --------------------------------------------------------------

@@ -1,10 +1,18 @@
 #include "geometry/contact_path.hpp"
 
+#include <cstdio>
+
 namespace rollspin::geometry {
 
 Vec3 darbouxVector(const DarbouxSample& f) {
   return f.geodesicTorsion * f.tangent - f.normalCurvature * f.tangentNormal +
          f.geodesicCurvature * f.normal;
+}
+
+std::string describeNumber(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
 }
 
 Vec3 defaultTangentFor(const Vec3& n) {

@@ -55,6 +55,9 @@ class ContactPath {
 //   d = τ_g t − κ_n u + κ_g n.
 [[nodiscard]] Vec3 darbouxVector(const DarbouxSample& f);
 
+// A number as describe() strings show it ("%g").
+[[nodiscard]] std::string describeNumber(double v);
+
 // A unit vector perpendicular to n, chosen deterministically: horizontal
 // (ẑ × n) when n is not vertical, else x̂. The default in-plane direction.
 [[nodiscard]] Vec3 defaultTangentFor(const Vec3& n);

@@ -10,11 +10,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+std::string num(double v) { return describeNumber(v); }
 std::string deg(double radians) { return num(radians * 180.0 / kPi) + " deg"; }
 
 std::unique_ptr<SurfaceCurvePath> wrap(std::shared_ptr<const Surface> surface, FunctionUvCurve::Function f,

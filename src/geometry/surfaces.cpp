@@ -10,11 +10,7 @@ namespace rollspin::geometry {
 
 namespace {
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+std::string num(double v) { return describeNumber(v); }
 
 // Evaluates a point function p(u, v) (three Jets) with u, v as the Jet's two
 // variables and unpacks the derivatives.

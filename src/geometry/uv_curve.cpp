@@ -1,5 +1,7 @@
 #include "geometry/uv_curve.hpp"
 
+#include "geometry/contact_path.hpp"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -8,11 +10,7 @@
 namespace rollspin::geometry {
 
 namespace {
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+std::string num(double v) { return describeNumber(v); }
 double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // Index of the piece containing σ among knots k0 < k1 < … (clamped).

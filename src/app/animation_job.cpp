@@ -8,10 +8,12 @@
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 
 #include "app/bounded_queue.hpp"
 #include "app/frame_clock.hpp"
+#include "app/frame_poses.hpp"
 #include "app/interrupt_guard.hpp"
 #include "app/progress_meter.hpp"
 #include "app/render_jobs.hpp"
@@ -189,6 +191,8 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
 
   const auto pool = std::make_shared<ImagePool>();
   try {
+    // All poses from one forward march, a frame or two ahead of us.
+    FramePoseStream poses(spec, model, clock, range);
     Frame previous;
     double previousS = std::nan("");
     for (long long k = range.first; k <= range.last; ++k) {
@@ -196,8 +200,10 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
       const double s = clock.arcLength(k);
       // Held frames show the same pose: the same pixels, rendered once.
       if (!previous || s != previousS) {
+        const std::optional<FrameOrientations> pose = poses.next();
+        if (!pose || pose->current.s != s) throw std::logic_error("frame pose stream out of step with the clock");
         const std::shared_ptr<media::Image> image = pool->acquire();
-        renderer.render(drawer.draw(solveFrame(spec, model, s)), *image);
+        renderer.render(drawer.draw(*pose), *image);
         previous = image;
         previousS = s;
       }

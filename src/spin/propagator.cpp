@@ -350,6 +350,13 @@ SampleArcLengths SampleArcLengths::uniform(double length, std::size_t count) {
   return grid;
 }
 
+SampleArcLengths SampleArcLengths::generated(std::size_t count, std::function<double(std::size_t)> at) {
+  SampleArcLengths samples;
+  samples.generator_ = std::move(at);
+  samples.count_ = count;
+  return samples;
+}
+
 std::vector<double> uniformSamples(double length, std::size_t count) {
   std::vector<double> s(std::max<std::size_t>(count, 2));
   const double n = static_cast<double>(s.size() - 1);

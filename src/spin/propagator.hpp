@@ -77,8 +77,9 @@ struct SolveStats {
 };
 
 // The arc lengths at which a run reports U: an explicit non-decreasing list,
-// or a uniform grid s_j = j L/(count − 1) generated on the fly, so a
-// timeline of 1e8 rows needs no 800 MB array.
+// a uniform grid s_j = j L/(count − 1) generated on the fly, so a
+// timeline of 1e8 rows needs no 800 MB array, or any non-decreasing sequence
+// generated on demand (an animation's frames merged with its trail grid).
 class SampleArcLengths {
  public:
   SampleArcLengths() = default;
@@ -86,16 +87,21 @@ class SampleArcLengths {
   SampleArcLengths(const std::vector<double>& explicitS) : SampleArcLengths(std::span<const double>(explicitS)) {}
   // count ≥ 2 points from 0 to length inclusive (the last is exactly length).
   [[nodiscard]] static SampleArcLengths uniform(double length, std::size_t count);
+  // count points, s_j = at(j). A run asks for j in non-decreasing order (it
+  // may ask for the same j again), so `at` may be a forward-only cursor.
+  [[nodiscard]] static SampleArcLengths generated(std::size_t count, std::function<double(std::size_t)> at);
 
   [[nodiscard]] std::size_t size() const { return count_; }
   [[nodiscard]] bool empty() const { return count_ == 0; }
   [[nodiscard]] double operator[](std::size_t j) const {
+    if (generator_) return generator_(j);
     if (!uniform_) return explicit_[j];
     return j + 1 == count_ ? length_ : length_ * static_cast<double>(j) / static_cast<double>(count_ - 1);
   }
 
  private:
   std::span<const double> explicit_;
+  std::function<double(std::size_t)> generator_;
   std::size_t count_ = 0;
   bool uniform_ = false;
   double length_ = 0.0;

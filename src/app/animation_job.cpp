@@ -155,7 +155,8 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     media::Mp4Settings settings;
     settings.width = width;
     settings.height = height;
-    settings.fps = static_cast<int>(clock.fps());
+    settings.fpsNum = static_cast<int>(clock.fps().num);  // < 2³¹: checked by the scene loader
+    settings.fpsDen = static_cast<int>(clock.fps().den);
     settings.crf = spec.animation.crf;
     settings.preset = spec.animation.preset;
     StageLog::instance().record("encoder");
@@ -242,9 +243,9 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   result.interruptedBy = 0;  // a signal after the last frame changes nothing
   result.written = sink->finish();
   if (!o.quiet)
-    std::fprintf(stderr, "rollspin: wrote %s: %lld frames, %dx%d @ %lld fps (%.2f s of video) in %.1f s (%.1f frames/s)\n",
-                 result.written.string().c_str(), result.framesWritten, width, height, clock.fps(),
-                 double(result.framesWritten) / double(clock.fps()), seconds,
+    std::fprintf(stderr, "rollspin: wrote %s: %lld frames, %dx%d @ %s fps (%.2f s of video) in %.1f s (%.1f frames/s)\n",
+                 result.written.string().c_str(), result.framesWritten, width, height, clock.fps().describe().c_str(),
+                 double(result.framesWritten) / clock.fps().value(), seconds,
                  seconds > 0.0 ? double(result.framesWritten) / seconds : 0.0);
   return result;
 }

@@ -16,15 +16,18 @@ FrameClock::FrameClock(double pathLength, const scene::SceneSpec& spec)
   const scene::AnimationSpec& a = spec.animation;
   const std::string timeKey = a.speed ? "animation.speed" : "animation.duration";
   const double seconds = a.speed ? pathLength / *a.speed : a.duration;
-  const double motion = std::round(seconds * double(fps_));
-  const double hold = std::round(a.hold * double(fps_));
+  // Frames = seconds · num / den, rounded: 10 s at 30000/1001 is 300 frames
+  // (299.7 rounded), lasting 10.01 s.
+  const double rate = double(fps_.num) / double(fps_.den);
+  const double motion = std::round(seconds * rate);
+  const double hold = std::round(a.hold * rate);
   if (!(motion >= 2.0))
     throw badInput(spec.where(timeKey), "{}: {:.6g} s at {} fps is {} frame(s); an animation needs at least 2",
-                   timeKey, seconds, fps_, motion);
+                   timeKey, seconds, fps_.describe(), motion);
   if (motion + 2.0 * hold > double(kMaxFrames))
     throw badInput(spec.where(motion > double(kMaxFrames) / 2 ? timeKey : "animation.hold"),
                    "the clip would have {:.0f} frames ({:.6g} s of motion, {:.6g} s holds at {} fps); the limit is {}",
-                   motion + 2.0 * hold, seconds, a.hold, fps_, kMaxFrames);
+                   motion + 2.0 * hold, seconds, a.hold, fps_.describe(), kMaxFrames);
   motionFrames_ = static_cast<long long>(motion);
   holdFrames_ = static_cast<long long>(hold);
 }

@@ -272,9 +272,22 @@ void Reader::readAnimation() {
   const toml::table* animation =
       section("animation", {"fps", "duration", "speed", "easing", "hold", "crf", "preset"});
   AnimationSpec& a = spec_.animation;
-  if (auto n = integer(animation, "animation", "fps")) {
-    if (*n < 1 || *n > 240) failAt("animation.fps", fmt::format("expected frames per second in [1, 240], got {}", *n));
-    a.fps = *n;
+  if (const toml::node* node = get(animation, "animation", "fps")) {
+    const std::string expected =
+        "frames per second in [1, 240]: an integer, an NTSC rate 23.976 | 29.97 | 59.94 (exactly 24000/1001 …), a "
+        "decimal with at most 3 places, or a string \"num/den\" such as \"30000/1001\"";
+    std::optional<FrameRate> rate;
+    if (node->is_integer()) {
+      const long long n = node->as_integer()->get();
+      if (n >= 1 && n <= 240) rate = FrameRate{n, 1};
+    } else if (node->is_floating_point()) {
+      rate = frameRateFromDecimal(node->as_floating_point()->get());
+    } else if (node->is_string()) {
+      rate = frameRateFromText(node->as_string()->get());
+    }
+    if (!rate || !(rate->value() >= 1.0 && rate->value() <= 240.0))
+      fail("animation.fps", locOf("animation.fps", *node), expected, describeNode(*node));
+    a.fps = *rate;
   }
   if (auto d = number(animation, "animation", "duration")) {
     if (!(*d > 0.0 && *d <= 36000.0))

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "scene/frame_rate.hpp"
 
 namespace rollspin::scene {
 
@@ -129,7 +130,7 @@ enum class Easing { Linear, Smooth };
 // [animation]: how frame time maps to arc length, and the encoder's settings.
 // The motion lasts `duration` seconds, or L/speed when `speed` is given.
 struct AnimationSpec {
-  long long fps = 30;
+  FrameRate fps;                 // 30/1; exact rationals for NTSC (30000/1001)
   double duration = 10.0;        // seconds for the whole path
   std::optional<double> speed;   // arc length per second (instead of duration)
   Easing easing = Easing::Smooth;

@@ -185,7 +185,7 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
 
   const AnimationSpec& a = spec.animation;
   w.section("animation");
-  w.key("fps", std::to_string(a.fps));
+  w.key("fps", a.fps.den == 1 ? a.fps.text() : quoted(a.fps.text()));
   if (a.speed) w.key("speed", number(*a.speed));
   else w.key("duration", number(a.duration));
   w.key("easing", quoted(a.easing == Easing::Linear ? "linear" : "smooth"));

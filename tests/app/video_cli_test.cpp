@@ -11,6 +11,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <fstream>
 #include <sstream>
@@ -122,6 +124,34 @@ TEST(VideoCli, FramesRangeIsByteIdenticalToTheSameFramesOfAFullRender) {
     EXPECT_FALSE(a.empty()) << name;
     EXPECT_TRUE(a == b) << name << " differs between the full and the partial render";
   }
+}
+
+TEST(VideoCli, ARerenderIntoAFrameFolderLeavesNoStaleFramesAndNoForeignFileIsTouched) {
+  const fs::path dir = test::freshTempDir("video_rerender");
+  auto render = [&](const char* duration, std::vector<std::string> more = {}) {
+    auto args = small({"render", lollipop(), "--set", std::string("animation.duration=") + duration, "--set",
+                       "animation.hold=0", "-o", (dir / "f").string()});
+    args.insert(args.end(), more.begin(), more.end());
+    const auto r = test::runRollspin(args);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+  };
+  render("2.4");
+  ASSERT_EQ(filesIn(dir / "f").size(), 24u);
+  std::ofstream(dir / "f" / "notes.txt") << "mine";
+  render("1.2");  // 12 frames: frames 12 … 23 of the first render must go
+  std::vector<std::string> expected{"notes.txt"};
+  for (int k = 0; k < 12; ++k) expected.push_back(fmt::format("frame_{:05d}.png", k));
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(filesIn(dir / "f"), expected);
+  // A part (--frames) replaces its own frames and keeps the others.
+  const std::string before = slurp(dir / "f" / "frame_00003.png");
+  render("2.4", {"--frames", "20:21"});
+  expected.push_back("frame_00020.png");
+  expected.push_back("frame_00021.png");
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(filesIn(dir / "f"), expected);
+  EXPECT_EQ(slurp(dir / "f" / "frame_00003.png"), before);
+  EXPECT_EQ(filesIn(dir), std::vector<std::string>{"f"}) << "no staging folder left";
 }
 
 // Starts rollspin without waiting for it.

@@ -587,7 +587,7 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
     }
     list.polylines.push_back(plateTrail);
   }
-  if (facts_ && facts_->marks) addMarks(list, s, view);
+  if (facts_ && facts_->marks) addMarks(list, s, frame.strobe.empty(), view);
 
   if (spec_.render.labels) {
     const float margin = text * 0.8f;
@@ -625,8 +625,9 @@ Vec3 SceneDrawer::platePoint(double s, double lift) const {
 }
 
 // The marks every β of path angle: dots on the contact path (dark once
-// passed) and, with Brockett's plate, on the plate's trail; numbered.
-void SceneDrawer::addMarks(render::DrawList& list, double s, int view) const {
+// passed) and, where the plate is drawn (not in a strobe), on its trail;
+// numbered.
+void SceneDrawer::addMarks(render::DrawList& list, double s, bool plateShown, int view) const {
   const double R = model_.ballRadius;
   const float text = std::max(11.0f, float(list.height) / 42.0f);
   const MarksFact& m = *facts_->marks;
@@ -641,7 +642,7 @@ void SceneDrawer::addMarks(render::DrawList& list, double s, int view) const {
     list.meshes.push_back({dotMesh_,
                            glm::translate(glm::mat4(1.0f), toGlm(onPath)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.06 * R))),
                            dot, view});
-    if (model_.plate && done) {
+    if (model_.plate && plateShown && done) {
       const Vec3 onPlate = platePoint(m.s[k], 0.06 * R);
       list.meshes.push_back({dotMesh_,
                              glm::translate(glm::mat4(1.0f), toGlm(onPlate)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.05 * R))),

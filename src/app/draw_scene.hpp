@@ -72,7 +72,7 @@ class SceneDrawer {
   void addBallView(render::DrawList& list, const FrameOrientations& frame, int view) const;
   void addTwinView(render::DrawList& list, const FrameOrientations& frame, int view) const;
   render::View ballCamera(int x, int y, int w, int h, double s) const;
-  void addMarks(render::DrawList& list, double s, int view) const;
+  void addMarks(render::DrawList& list, double s, bool plateShown, int view) const;
   void addFactLabels(render::DrawList& list, const FrameOrientations& frame, int view, float top) const;
   // Brockett's plate: the point of the plate above the contact point P(s),
   // lifted by `lift` above the ball's top.

@@ -632,6 +632,17 @@ void SceneDrawer::addMarks(render::DrawList& list, double s, bool plateShown, in
   const float text = std::max(11.0f, float(list.height) / 42.0f);
   const MarksFact& m = *facts_->marks;
   const int passed = facts_->marksPassed(s);
+  // Labels are drawn over everything: leave out a number the ball hides
+  // (its segment from the eye to the mark passes through the ball).
+  const Vec3 eye(list.views[static_cast<std::size_t>(view)].camera.position.x,
+                 list.views[static_cast<std::size_t>(view)].camera.position.y,
+                 list.views[static_cast<std::size_t>(view)].camera.position.z);
+  const Vec3 ball = model_.path->at(s).centre(R);
+  auto hiddenByBall = [&](const Vec3& p) {
+    const Vec3 d = p - eye;
+    const double t = std::clamp((ball - eye).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    return (eye + t * d - ball).norm() < R && t < 1.0;
+  };
   for (std::size_t k = 0; k < m.s.size(); ++k) {
     const bool done = int(k) < passed;
     render::Material dot;
@@ -648,7 +659,7 @@ void SceneDrawer::addMarks(render::DrawList& list, double s, bool plateShown, in
                              glm::translate(glm::mat4(1.0f), toGlm(onPlate)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.05 * R))),
                              dot, view});
     }
-    if (!spec_.render.labels) continue;
+    if (!spec_.render.labels || (plateShown && hiddenByBall(onPath))) continue;
     render::LabelItem number;
     number.view = view;
     number.text = fmt::format("{}", k);
@@ -659,7 +670,7 @@ void SceneDrawer::addMarks(render::DrawList& list, double s, bool plateShown, in
     number.align = render::Align::Center;
     number.sizePx = text * 0.9f;
     number.bold = true;
-    number.color = done ? kTextColor : glm::vec4(0.25f, 0.26f, 0.30f, 1.0f);
+    number.color = done ? kTextColor : glm::vec4(0.12f, 0.13f, 0.16f, 1.0f);
     list.labels.push_back(number);
   }
 }

@@ -245,7 +245,14 @@ int SceneFacts::marksPassed(double s) const {
 }
 
 std::shared_ptr<const SceneFacts> makeSceneFacts(const scene::SceneSpec& spec, const RollingModel& model) {
+  // Only what the image shows: the lines need labels and the ball view; the
+  // marks are drawn on the path, the cone of B in the twin, labels or not.
+  const bool ballView = spec.render.layout != scene::RenderLayout::Twin;
+  const bool twinView = spec.render.layout != scene::RenderLayout::Ball;
   std::vector<Fact> facts = scene::resolveFacts(spec);
+  std::erase_if(facts, [&](Fact f) {
+    return !((spec.render.labels && ballView) || (f == Fact::Marks && ballView) || (f == Fact::PhaseSplit && twinView));
+  });
   if (facts.empty()) return nullptr;
   StageLog::instance().record("facts");
   return std::make_shared<const SceneFacts>(spec, model, std::move(facts));

@@ -122,7 +122,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   // estimate (three queued RGBA frames, the yuv420p copy, x264's look-ahead).
   checkFrameMemory(spec, 256);
   const RollingModel model = buildSceneModel(spec);
-  const FrameClock clock(model.path->length(), spec);
+  const FrameClock clock = clipClock(spec, model);
   const FrameRange range = o.frames ? parseFrameRange(*o.frames, clock.frameCount())
                                     : FrameRange{0, clock.frameCount() - 1};
   const scene::VideoFormat format = chooseFormat(spec, o.output);
@@ -191,15 +191,22 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   try {
     Frame previous;
     double previousS = std::nan("");
+    std::size_t previousSegment = 0;
     for (long long k = range.first; k <= range.last; ++k) {
       if (InterruptGuard::received() != 0) break;
       const double s = clock.arcLength(k);
-      // Held frames show the same pose: the same pixels, rendered once.
-      if (!previous || s != previousS) {
+      const StoryPlace story = clock.place(k);
+      // Held frames show the same pose: the same pixels, rendered once —
+      // unless a storyboard's caption or camera changes meanwhile.
+      const bool cameraMoving = story.segment > 0 && story.seconds < std::min(SceneDrawer::kCameraMove, story.duration);
+      if (!previous || s != previousS || story.segment != previousSegment || cameraMoving) {
         const std::shared_ptr<media::Image> image = pool->acquire();
-        renderer.render(drawer.draw(solveFrame(spec, model, s)), *image);
+        FrameOrientations frame = solveFrame(spec, model, s);
+        frame.story = story;
+        renderer.render(drawer.draw(frame), *image);
         previous = image;
         previousS = s;
+        previousSegment = story.segment;
       }
       if (!queue.push(previous)) break;  // the encoder failed
     }

@@ -8,8 +8,10 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "app/frame_clock.hpp"
 #include "app/scene_model.hpp"
 #include "render/draw_list.hpp"
 #include "scene/scene_spec.hpp"
@@ -25,6 +27,7 @@ struct OrientedSample {
 // Everything time-dependent one image needs.
 struct FrameOrientations {
   OrientedSample current;              // the ball (and the twin's arrows) at s
+  StoryPlace story;                    // a storyboard's segment (caption, title, camera) and its time
   std::vector<OrientedSample> trail;   // U on [0, s], increasing s, for the Bloch trail
   std::vector<OrientedSample> strobe;  // render.strobe > 1: the extra ball positions
 };
@@ -39,6 +42,10 @@ struct FrameSampling {
 
 class SceneDrawer {
  public:
+  // A camera change between segments moves smoothly (3x² − 2x³) over this
+  // many seconds (or the whole segment, when it is shorter).
+  static constexpr double kCameraMove = 1.0;
+
   // `ballTexture` null: the built-in tennis ball. Meshes are built once here
   // and shared by every frame.
   SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model,
@@ -52,7 +59,24 @@ class SceneDrawer {
  private:
   void addBallView(render::DrawList& list, const FrameOrientations& frame, int view) const;
   void addTwinView(render::DrawList& list, const FrameOrientations& frame, int view) const;
-  render::View ballCamera(int x, int y, int w, int h, double s) const;
+  // The camera of a frame: its segment's, or on the way there from the
+  // previous segment's during the first kCameraMove seconds.
+  struct Shot {
+    double azimuth = 0.0, elevation = 0.0, fovDeg = 32.0;  // radians, radians, degrees
+    std::optional<geometry::Vec3> target;
+    std::optional<double> distance;
+    bool follow = false;
+  };
+  struct Aim {
+    geometry::Vec3 target;
+    double distance, azimuth, elevation, fovDeg;
+  };
+  [[nodiscard]] Aim aimOf(const Shot& shot, int w, int h, double s) const;
+  [[nodiscard]] Aim aimAt(const StoryPlace& story, int w, int h, double s) const;
+  render::View ballCamera(int x, int y, int w, int h, double s, const StoryPlace& story) const;
+  void addCaption(render::DrawList& list, const FrameOrientations& frame, int view) const;
+  std::vector<Shot> shots_;  // one per storyboard segment (one for a scene without segments)
+  bool titleBand_ = false;   // render.title or any segment's title: the band is kept for the whole clip
 
   const scene::SceneSpec& spec_;
   const RollingModel& model_;

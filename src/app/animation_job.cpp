@@ -8,10 +8,12 @@
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 
 #include "app/bounded_queue.hpp"
 #include "app/frame_clock.hpp"
+#include "app/frame_poses.hpp"
 #include "app/interrupt_guard.hpp"
 #include "app/progress_meter.hpp"
 #include "app/render_jobs.hpp"
@@ -189,9 +191,12 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
 
   const auto pool = std::make_shared<ImagePool>();
   try {
+    // All poses from one forward march, a frame or two ahead of us.
+    FramePoseStream poses(spec, model, clock, range);
     Frame previous;
     double previousS = std::nan("");
     std::size_t previousSegment = 0;
+    std::optional<FrameOrientations> pose;
     for (long long k = range.first; k <= range.last; ++k) {
       if (InterruptGuard::received() != 0) break;
       const double s = clock.arcLength(k);
@@ -200,10 +205,13 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
       // unless a storyboard's caption or camera changes meanwhile.
       const bool cameraMoving = story.segment > 0 && story.seconds < std::min(SceneDrawer::kCameraMove, story.duration);
       if (!previous || s != previousS || story.segment != previousSegment || cameraMoving) {
+        if (!pose || s != previousS) {  // the stream has one pose per distinct arc length
+          pose = poses.next();
+          if (!pose || pose->current.s != s) throw std::logic_error("frame pose stream out of step with the clock");
+        }
+        pose->story = story;
         const std::shared_ptr<media::Image> image = pool->acquire();
-        FrameOrientations frame = solveFrame(spec, model, s);
-        frame.story = story;
-        renderer.render(drawer.draw(frame), *image);
+        renderer.render(drawer.draw(*pose), *image);
         previous = image;
         previousS = s;
         previousSegment = story.segment;

@@ -53,28 +53,42 @@ Vec3 towardEye(const OrbitAngles& a) {
 
 }  // namespace
 
+TrailGrid trailGrid(const scene::SceneSpec& spec, const RollingModel& model) {
+  TrailGrid grid;
+  grid.length = model.path->length();
+  if (!spec.render.trails) return grid;
+  // Fine enough that the Bloch trail is a smooth curve: ≥ 240 points over the
+  // whole path, 120 per turn of the path or of the ball.
+  const double ballTurns = spin::integratedFieldStrength(*model.path, model.ballRadius) / (2.0 * std::numbers::pi);
+  const double points = std::max(240.0, 120.0 * std::max(ballTurns, model.path->turns()));
+  grid.count = static_cast<std::size_t>(std::clamp(std::ceil(points), 1.0, 20000.0)) + 1;
+  return grid;
+}
+
+std::vector<double> strobeArcLengths(const scene::SceneSpec& spec, const RollingModel& model) {
+  std::vector<double> out;
+  const long long n = spec.render.strobe;
+  if (n <= 1) return out;
+  StageLog::instance().record("strobe");
+  const double length = model.path->length();
+  // A closed circuit would repeat its start at s = L: spread N over [0, L).
+  const double denominator = isCircuit(model) && std::abs(model.path->turns() - std::round(model.path->turns())) < 1e-9
+                                 ? double(n)
+                                 : double(n - 1);
+  for (long long j = 0; j < n; ++j) out.push_back(std::min(length, length * double(j) / denominator));
+  return out;
+}
+
 FrameSampling frameSampling(const scene::SceneSpec& spec, const RollingModel& model, double s) {
   FrameSampling out;
-  const double length = model.path->length();
-  // Trail: fine enough that the Bloch trail is a smooth curve (≥ 240 points
-  // over the whole path, ≥ 2 over [0, s]).
-  const double ballTurns = spin::integratedFieldStrength(*model.path, model.ballRadius) / (2.0 * std::numbers::pi);
-  const double perUnit = std::max(240.0, 120.0 * std::max(ballTurns, model.path->turns())) / length;
-  const auto count = static_cast<std::size_t>(std::clamp(std::ceil(perUnit * s), 1.0, 20000.0)) + 1;
-  if (spec.render.trails) {
+  const TrailGrid grid = trailGrid(spec, model);
+  if (grid.count > 0) {
     StageLog::instance().record("trails");
-    for (std::size_t i = 0; i < count; ++i) out.trail.push_back(s * double(i) / double(count - 1));
-    out.trail.back() = s;
+    out.trail.push_back(grid.at(0));
+    for (std::size_t i = 1; i < grid.count && grid.at(i) < s; ++i) out.trail.push_back(grid.at(i));
+    out.trail.push_back(s);
   }
-  const long long n = spec.render.strobe;
-  if (n > 1) {
-    StageLog::instance().record("strobe");
-    // A closed circuit would repeat its start at s = L: spread N over [0, L).
-    const double denominator = isCircuit(model) && std::abs(model.path->turns() - std::round(model.path->turns())) < 1e-9
-                                   ? double(n)
-                                   : double(n - 1);
-    for (long long j = 0; j < n; ++j) out.strobe.push_back(std::min(length, length * double(j) / denominator));
-  }
+  out.strobe = strobeArcLengths(spec, model);
   return out;
 }
 

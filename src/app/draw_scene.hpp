@@ -32,13 +32,29 @@ struct FrameOrientations {
   std::vector<OrientedSample> strobe;  // render.strobe > 1: the extra ball positions
 };
 
+// The trail's fixed grid g_i = L·i/(count − 1), i = 0 … count − 1 (g_last =
+// L exactly): ≥ 240 points over the path, 120 per turn, at most 20001. The
+// trail of the frame at s is {g_i < s} ∪ {s} (plus g_0 when s = 0), so every
+// frame's trail is a prefix of one sequence: one march serves a whole clip,
+// and a trail's vertices stay put from frame to frame instead of sliding.
+struct TrailGrid {
+  double length = 0.0;
+  std::size_t count = 0;  // 0 when render.trails = false
+  [[nodiscard]] double at(std::size_t i) const {
+    return i + 1 == count ? length : length * double(i) / double(count - 1);
+  }
+};
+[[nodiscard]] TrailGrid trailGrid(const scene::SceneSpec& spec, const RollingModel& model);
+
 // Arc lengths the solver must report for a still at `s`: the trail samples
-// and the strobe positions (sorted, unique, inside [0, L]).
+// (above) and the strobe positions (sorted, inside [0, L]).
 struct FrameSampling {
   std::vector<double> trail;
   std::vector<double> strobe;
 };
 [[nodiscard]] FrameSampling frameSampling(const scene::SceneSpec& spec, const RollingModel& model, double s);
+// The strobe positions alone (empty unless render.strobe > 1).
+[[nodiscard]] std::vector<double> strobeArcLengths(const scene::SceneSpec& spec, const RollingModel& model);
 
 class SceneDrawer {
  public:

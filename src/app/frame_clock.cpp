@@ -30,13 +30,12 @@ FrameClock::FrameClock(double pathLength, const scene::SceneSpec& spec)
   frameCount_ = motionFrames_ + 2 * holdFrames_;
 }
 
-std::vector<double> FrameClock::segmentSeconds(std::span<const double> lengths, const scene::SceneSpec& spec) {
-  double total = 0.0;
-  for (double l : lengths) total += l;
+std::vector<double> FrameClock::segmentSeconds(std::span<const SegmentSpan> spans, const scene::SceneSpec& spec) {
+  const double total = spans.empty() ? 0.0 : spans.back().end;
   std::vector<double> seconds;
   for (std::size_t k = 0; k < spec.segments.size(); ++k) {
     const scene::SegmentSpec& seg = spec.segments[k];
-    const double L = lengths[k];
+    const double L = spans[k].end - spans[k].start;
     if (!seg.path) seconds.push_back(0.0);
     else if (seg.duration) seconds.push_back(*seg.duration);
     else if (seg.speed) seconds.push_back(L / *seg.speed);
@@ -46,12 +45,12 @@ std::vector<double> FrameClock::segmentSeconds(std::span<const double> lengths, 
   return seconds;
 }
 
-FrameClock::FrameClock(std::span<const double> lengths, const scene::SceneSpec& spec)
+FrameClock::FrameClock(std::span<const SegmentSpan> spans, const scene::SceneSpec& spec)
     : length_(0.0), fps_(spec.animation.fps), motionFrames_(0), holdFrames_(0), easing_(spec.animation.easing) {
   const double fps = double(fps_);
   const double hold = std::round(spec.animation.hold * fps);
-  const std::vector<double> seconds = segmentSeconds(lengths, spec);
-  double frames = std::max(hold, 1.0), s = 0.0;
+  const std::vector<double> seconds = segmentSeconds(spans, spec);
+  double frames = std::max(hold, 1.0);
   long long lastFirst = 0;
   std::vector<Stage> stages{{0, static_cast<long long>(frames), 0, 0, 0.0, 0.0, false}};
   for (std::size_t k = 0; k < spec.segments.size(); ++k) {
@@ -72,12 +71,13 @@ FrameClock::FrameClock(std::span<const double> lengths, const scene::SceneSpec& 
     // Segment 1's time runs from the clip's first frame (the opening hold shows it).
     const long long segmentFirst = k == 0 ? 0 : first;
     if (n >= 1.0)
-      stages.push_back({first, static_cast<long long>(n), k, segmentFirst, s, s + lengths[k], seg.path.has_value()});
+      stages.push_back({first, static_cast<long long>(n), k, segmentFirst, spans[k].start, spans[k].end,
+                        seg.path.has_value()});
     if (k + 1 == spec.segments.size()) lastFirst = segmentFirst;
-    s += lengths[k];
     frames += n;
     if (seg.path) motionFrames_ += static_cast<long long>(n);
   }
+  const double s = spans.empty() ? 0.0 : spans.back().end;
   length_ = s;
   holdFrames_ = static_cast<long long>(hold);
   // The closing hold belongs to the last segment: its time keeps running.

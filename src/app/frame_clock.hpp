@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "app/scene_model.hpp"
 #include "scene/scene_spec.hpp"
 
 namespace rollspin::app {
@@ -48,12 +49,13 @@ class FrameClock {
   // Throws BadInput (at the animation key) when the clip would have fewer
   // than 2 motion frames or more than kMaxFrames frames.
   FrameClock(double pathLength, const scene::SceneSpec& spec);
-  // A storyboard: segmentLengths[k] = L_k (0 for a hold), one per
-  // spec.segments entry. Throws BadInput at the segment's timing key when a
-  // motion would get no frame, or the clip more than kMaxFrames.
-  FrameClock(std::span<const double> segmentLengths, const scene::SceneSpec& spec);
+  // A storyboard: spans[k] = where segment k lies on the whole path (a hold:
+  // start = end), one per spec.segments entry; motions show exactly these
+  // arc lengths at their ends. Throws BadInput at the segment's timing key
+  // when a motion would get no frame, or the clip more than kMaxFrames.
+  FrameClock(std::span<const SegmentSpan> spans, const scene::SceneSpec& spec);
   // The seconds of motion T_k of each storyboard segment (0 for a hold).
-  [[nodiscard]] static std::vector<double> segmentSeconds(std::span<const double> segmentLengths,
+  [[nodiscard]] static std::vector<double> segmentSeconds(std::span<const SegmentSpan> spans,
                                                           const scene::SceneSpec& spec);
 
   static constexpr long long kMaxFrames = 10'000'000;

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/solve_job.hpp"
+#include "app/frame_poses.hpp"
 #include "media/image_io.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
@@ -53,12 +53,7 @@ FrameOrientations solveFrame(const scene::SceneSpec& spec, const RollingModel& m
   std::sort(all.begin(), all.end());
   all.erase(std::unique(all.begin(), all.end()), all.end());
   std::vector<spin::Su2> orientation(all.size());
-  const SolverChoice choice = chooseSolver(spec, model);
-  const spin::Propagator propagator(*model.path, model.ballRadius, choice.method, choice.steps);
-  const spin::SolveStats stats =
-      propagator.run(all, [&](std::size_t i, double, const spin::Su2& q) { orientation[i] = q; });
-  if (stats.status != spin::SolveStatus::Ok)
-    throw runtimeError(spec.where("solver.method"), "solver failed: {}", spin::statusMessage(stats.status));
+  marchScene(spec, model, all, [&](std::size_t i, double, const spin::Su2& q) { orientation[i] = q; });
   auto lookup = [&](double x) {
     const auto it = std::lower_bound(all.begin(), all.end(), x);
     return OrientedSample{x, orientation[static_cast<std::size_t>(it - all.begin())]};
@@ -72,9 +67,7 @@ FrameOrientations solveFrame(const scene::SceneSpec& spec, const RollingModel& m
 
 FrameClock clipClock(const scene::SceneSpec& spec, const RollingModel& model) {
   if (!spec.isStoryboard()) return FrameClock(model.path->length(), spec);
-  std::vector<double> lengths;
-  for (const SegmentSpan& span : model.segments) lengths.push_back(span.end - span.start);
-  return FrameClock(lengths, spec);
+  return FrameClock(model.segments, spec);
 }
 
 StoryPlace storyPlaceAt(const RollingModel& model, double s) {

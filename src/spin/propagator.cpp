@@ -192,6 +192,15 @@ Su2 orderedProduct(Su2* e, std::size_t m) {
 }
 }  // namespace
 
+namespace {
+// Thrown by a piece's sink at the first sample that belongs to a later piece
+// (forward-only samples, where the pieces' shares cannot be counted first).
+struct PieceDone {
+  Su2 final;  // that sample's U: the piece's U(L_k), it being clamped to L_k
+  std::size_t sample;
+};
+}  // namespace
+
 SolveStats Propagator::runPieces(const SampleArcLengths& sampleS, const SampleSink& sink) const {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
@@ -207,10 +216,14 @@ SolveStats Propagator::runPieces(const SampleArcLengths& sampleS, const SampleSi
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const geometry::ContactPath& piece = *pieces[k].path;
     const double pieceLength = piece.length();
+    const bool last = k + 1 == pieces.size();
     // This piece's samples: those before the next piece's start (the last
-    // piece takes the rest), found by bisection (the list is non-decreasing).
+    // piece takes the rest). A random-access list is bisected (it is
+    // non-decreasing); a forward-only one is handed over whole, and the
+    // sink stops the piece at the first sample beyond it.
     std::size_t end = sampleS.size();
-    if (k + 1 < pieces.size()) {
+    const bool bisect = !last && !sampleS.forwardOnly();
+    if (bisect) {
       std::size_t lo = next, hi = sampleS.size();
       while (lo < hi) {
         const std::size_t mid = lo + (hi - lo) / 2;
@@ -219,24 +232,39 @@ SolveStats Propagator::runPieces(const SampleArcLengths& sampleS, const SampleSi
       }
       end = lo;
     }
-    const SampleArcLengths mine = sampleS.slice(next, end - next, pieces[k].start, pieceLength);
+    const SampleArcLengths mine =
+        sampleS.slice(next, end - next, pieces[k].start, pieceLength, last ? INFINITY : pieces[k + 1].start);
     const long long steps = pieceSteps_.empty() ? 0 : pieceSteps_[k];
     const double tolerance = tolerance_ * pieceLength / std::max(path_.length(), 1e-300);
     Propagator sub(piece, ballRadius_, method_, steps, tolerance);
     sub.setStepLimit(stepLimit_);
     const std::size_t base = next;
-    const SolveStats part = sub.run(mine, [&](std::size_t j, double, const Su2& u) {
-      if (sink) sink(base + j, sampleS[base + j], u * before);
-    });
-    stats.steps += part.steps;
-    stats.rejectedSteps += part.rejectedSteps;
-    stats.unitarityError = std::max(stats.unitarityError, part.unitarityError);
-    if (part.status != SolveStatus::Ok) {
-      stats.status = part.status;
-      break;
+    const bool watch = !last && !bisect;
+    try {
+      const SolveStats part = sub.run(mine, [&](std::size_t j, double, const Su2& u) {
+        // sampleS[base + j] is the sample the run has just read: a
+        // forward-only cursor is never asked for an earlier one.
+        const double s = sampleS[base + j];
+        if (watch && s >= pieces[k + 1].start) throw PieceDone{u, base + j};
+        if (sink) sink(base + j, s, u * before);
+      });
+      stats.steps += part.steps;
+      stats.rejectedSteps += part.rejectedSteps;
+      stats.unitarityError = std::max(stats.unitarityError, part.unitarityError);
+      if (part.status != SolveStatus::Ok) {
+        stats.status = part.status;
+        break;
+      }
+      before = part.final * before;
+      next = end;
+    } catch (const PieceDone& done) {
+      // The run reached L_k: a sample beyond the piece reads as exactly L_k
+      // (slice) and is reported after the last step with U(L_k), bit for bit
+      // the run's final value. Its step count is lost with it.
+      stats.unitarityError = std::max(stats.unitarityError, std::abs(done.final.norm() - 1.0));
+      before = done.final * before;
+      next = done.sample;
     }
-    before = part.final * before;
-    next = end;
   }
   stats.final = before;
   stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -412,6 +440,13 @@ SampleArcLengths SampleArcLengths::uniform(double length, std::size_t count) {
   grid.total_ = grid.count_;
   grid.length_ = length;
   return grid;
+}
+
+SampleArcLengths SampleArcLengths::generated(std::size_t count, std::function<double(std::size_t)> at) {
+  SampleArcLengths samples;
+  samples.generator_ = std::move(at);
+  samples.count_ = count;
+  return samples;
 }
 
 std::vector<double> uniformSamples(double length, std::size_t count) {

@@ -126,7 +126,7 @@ void writeSegments(Writer& w, const SceneSpec& spec) {
     } else if (seg.speed) {
       w.key("speed", number(*seg.speed));
     } else {
-      w.computed("duration", "its share of animation.duration, by length");
+      w.computed("duration", "its length at the storyboard's speed (see [animation])");
     }
     if (seg.path) {
       w.header("[segment.path]", prefix + ".path");

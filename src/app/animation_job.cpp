@@ -132,9 +132,11 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
 
   fs::path out = o.output;
   if (out.empty()) {
-    // A part of a clip must not take the whole clip's name.
-    const std::string part = o.frames ? fmt::format(".frames_{}-{}", range.first, range.last) : "";
-    out = fs::path("output") / (spec.name + part + (format == scene::VideoFormat::Mp4 ? ".mp4" : ""));
+    // A part of a clip must not take the whole clip's name; PNG frames keep
+    // their clip index, so parts share the clip's folder.
+    const bool mp4 = format == scene::VideoFormat::Mp4;
+    const std::string part = o.frames && mp4 ? fmt::format(".frames_{}-{}", range.first, range.last) : "";
+    out = fs::path("output") / (spec.name + part + (mp4 ? ".mp4" : ""));
     std::error_code ec;
     fs::create_directories("output", ec);
   }
@@ -155,19 +157,22 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     media::Mp4Settings settings;
     settings.width = width;
     settings.height = height;
-    settings.fps = static_cast<int>(clock.fps());
+    settings.fpsNum = static_cast<int>(clock.fps().num);  // < 2³¹: checked by the scene loader
+    settings.fpsDen = static_cast<int>(clock.fps().den);
     settings.crf = spec.animation.crf;
     settings.preset = spec.animation.preset;
     StageLog::instance().record("encoder");
     sink = std::make_unique<media::Mp4Writer>(out, settings);
   } else {
     StageLog::instance().record("png-frames");
+    const bool wholeClip = range.first == 0 && range.last == clock.frameCount() - 1;
     sink = std::make_unique<media::PngSequenceWriter>(
-        out, range.first, spec.render.transparent ? media::PngChannels::Rgba : media::PngChannels::Rgb);
+        out, range.first, spec.render.transparent ? media::PngChannels::Rgba : media::PngChannels::Rgb,
+        wholeClip ? media::PngSequenceScope::WholeClip : media::PngSequenceScope::Part);
   }
 
   const auto texture = spec.render.layout == scene::RenderLayout::Twin ? nullptr : loadBallTexture(spec);
-  const SceneDrawer drawer(spec, model, texture);
+  const SceneDrawer drawer(spec, model, texture, makeSceneFacts(spec, model));
   const auto context = render::createOsMesaContext();
   const render::ShaderLibrary shaders(o.shaderDir);
   render::Renderer renderer(*context, shaders);
@@ -242,18 +247,22 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     else if (format == scene::VideoFormat::Mp4)
       std::fprintf(stderr, "rollspin: interrupted (%s) after %lld of %lld frames: wrote a shorter, playable video %s\n",
                    name, result.framesWritten, result.framesRequested, result.written.string().c_str());
-    else
-      std::fprintf(stderr, "rollspin: interrupted (%s) after %lld of %lld frames: %s holds complete frames %05lld to %05lld only\n",
+    else {
+      std::error_code ec;
+      const std::string untouched = fs::exists(out, ec) ? fmt::format("; {} is unchanged", out.string()) : "";
+      std::fprintf(stderr, "rollspin: interrupted (%s) after %lld of %lld frames: %s holds complete frames %05lld to "
+                           "%05lld only%s\n",
                    name, result.framesWritten, result.framesRequested, result.written.string().c_str(), range.first,
-                   range.first + result.framesWritten - 1);
+                   range.first + result.framesWritten - 1, untouched.c_str());
+    }
     return result;
   }
   result.interruptedBy = 0;  // a signal after the last frame changes nothing
   result.written = sink->finish();
   if (!o.quiet)
-    std::fprintf(stderr, "rollspin: wrote %s: %lld frames, %dx%d @ %lld fps (%.2f s of video) in %.1f s (%.1f frames/s)\n",
-                 result.written.string().c_str(), result.framesWritten, width, height, clock.fps(),
-                 double(result.framesWritten) / double(clock.fps()), seconds,
+    std::fprintf(stderr, "rollspin: wrote %s: %lld frames, %dx%d @ %s fps (%.2f s of video) in %.1f s (%.1f frames/s)\n",
+                 result.written.string().c_str(), result.framesWritten, width, height, clock.fps().describe().c_str(),
+                 double(result.framesWritten) / clock.fps().value(), seconds,
                  seconds > 0.0 ? double(result.framesWritten) / seconds : 0.0);
   return result;
 }

@@ -16,15 +16,18 @@ FrameClock::FrameClock(double pathLength, const scene::SceneSpec& spec)
   const scene::AnimationSpec& a = spec.animation;
   const std::string timeKey = a.speed ? "animation.speed" : "animation.duration";
   const double seconds = a.speed ? pathLength / *a.speed : a.duration;
-  const double motion = std::round(seconds * double(fps_));
-  const double hold = std::round(a.hold * double(fps_));
+  // Frames = seconds · num / den, rounded: 10 s at 30000/1001 is 300 frames
+  // (299.7 rounded), lasting 10.01 s.
+  const double rate = double(fps_.num) / double(fps_.den);
+  const double motion = std::round(seconds * rate);
+  const double hold = std::round(a.hold * rate);
   if (!(motion >= 2.0))
     throw badInput(spec.where(timeKey), "{}: {:.6g} s at {} fps is {} frame(s); an animation needs at least 2",
-                   timeKey, seconds, fps_, motion);
+                   timeKey, seconds, fps_.describe(), motion);
   if (motion + 2.0 * hold > double(kMaxFrames))
     throw badInput(spec.where(motion > double(kMaxFrames) / 2 ? timeKey : "animation.hold"),
                    "the clip would have {:.0f} frames ({:.6g} s of motion, {:.6g} s holds at {} fps); the limit is {}",
-                   motion + 2.0 * hold, seconds, a.hold, fps_, kMaxFrames);
+                   motion + 2.0 * hold, seconds, a.hold, fps_.describe(), kMaxFrames);
   motionFrames_ = static_cast<long long>(motion);
   holdFrames_ = static_cast<long long>(hold);
   frameCount_ = motionFrames_ + 2 * holdFrames_;
@@ -47,7 +50,7 @@ std::vector<double> FrameClock::segmentSeconds(std::span<const SegmentSpan> span
 
 FrameClock::FrameClock(std::span<const SegmentSpan> spans, const scene::SceneSpec& spec)
     : length_(0.0), fps_(spec.animation.fps), motionFrames_(0), holdFrames_(0), easing_(spec.animation.easing) {
-  const double fps = double(fps_);
+  const double fps = fps_.value();
   const double hold = std::round(spec.animation.hold * fps);
   const std::vector<double> seconds = segmentSeconds(spans, spec);
   double frames = std::max(hold, 1.0);
@@ -62,11 +65,11 @@ FrameClock::FrameClock(std::span<const SegmentSpan> spans, const scene::SceneSpe
                                   : seg.speed  ? key + ".speed"
                                                : (spec.animation.speed ? "animation.speed" : "animation.duration");
       throw badInput(spec.where(timeKey), "{}: the motion of {} lasts {:.6g} s, less than one frame at {} fps", timeKey,
-                     key, seconds[k], fps_);
+                     key, seconds[k], fps_.describe());
     }
     if (frames + n + hold > double(kMaxFrames))
       throw badInput(spec.where(key), "{}: the storyboard would have more than {} frames at {} fps", key, kMaxFrames,
-                     fps_);
+                     fps_.describe());
     const auto first = static_cast<long long>(frames);
     // Segment 1's time runs from the clip's first frame (the opening hold shows it).
     const long long segmentFirst = k == 0 ? 0 : first;
@@ -95,9 +98,11 @@ const FrameClock::Stage& FrameClock::stageAt(long long frame) const {
 }
 
 StoryPlace FrameClock::place(long long frame) const {
-  if (stages_.empty()) return {0, double(frame) / double(fps_), double(frameCount_) / double(fps_)};
+  // Frame k starts k · den / num seconds into the clip (exact rationals).
+  auto seconds = [this](long long frames) { return double(frames) * double(fps_.den) / double(fps_.num); };
+  if (stages_.empty()) return {0, seconds(frame), seconds(frameCount_)};
   const Stage& st = stageAt(frame);
-  return {st.segment, std::max(0.0, double(frame - st.segmentFirst) / double(fps_)), double(st.frames) / double(fps_)};
+  return {st.segment, std::max(0.0, seconds(frame - st.segmentFirst)), seconds(st.frames)};
 }
 
 double FrameClock::arcLength(long long frame) const {

@@ -3,7 +3,7 @@
 //   frames H … H+N−1        s_k = L · ease(j / (N − 1)),  j = k − H
 //   frames H+N … H+N+H−1    hold at s = L
 // with N = round(T · fps) motion frames (T = animation.duration, or L/speed),
-// H = round(hold · fps), ease(x) = x (linear) or 3x² − 2x³ (smooth: starts
+// H = round(hold · fps) (fps the exact rational, e.g. 30000/1001), ease(x) = x (linear) or 3x² − 2x³ (smooth: starts
 // and stops at rest). The motion therefore lasts exactly N/fps = T seconds of
 // video and the clip has N + 2H frames. s_k depends on k alone, so any subset
 // of frames (`--frames A:B`) shows the same poses as the full clip.
@@ -64,13 +64,13 @@ class FrameClock {
   [[nodiscard]] StoryPlace place(long long frame) const;
   [[nodiscard]] long long motionFrames() const { return motionFrames_; }
   [[nodiscard]] long long holdFrames() const { return holdFrames_; }
-  [[nodiscard]] long long fps() const { return fps_; }
+  [[nodiscard]] const scene::FrameRate& fps() const { return fps_; }
   // Arc length shown by frame k (0 ≤ k < frameCount), non-decreasing in k.
   [[nodiscard]] double arcLength(long long frame) const;
 
  private:
   double length_;
-  long long fps_;
+  scene::FrameRate fps_;
   long long motionFrames_;
   long long holdFrames_;
   scene::Easing easing_;

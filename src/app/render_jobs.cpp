@@ -135,7 +135,7 @@ std::filesystem::path renderStill(const StillOptions& o) {
   }
   FrameOrientations frame = solveFrame(spec, model, s);
   frame.story = storyPlaceAt(model, s);
-  const SceneDrawer drawer(spec, model, texture);
+  const SceneDrawer drawer(spec, model, texture, makeSceneFacts(spec, model));
   const render::DrawList list = drawer.draw(frame);
 
   const auto context = render::createOsMesaContext();

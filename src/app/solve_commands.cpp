@@ -102,7 +102,7 @@ int runScenePrint(const SolveOptions& o) {
     // What each segment will do: where on the path, for how long.
     const FrameClock clock(model.segments, spec);
     const std::vector<double> seconds = FrameClock::segmentSeconds(model.segments, spec);
-    const double fps = double(spec.animation.fps);
+    const double fps = spec.animation.fps.value();
     for (std::size_t k = 0; k < spec.segments.size(); ++k) {
       const SegmentSpan& span = model.segments[k];
       notes[scene::SceneSpec::segmentKey(k)] =

@@ -79,6 +79,7 @@ class Reader {
   PathKind readPath(const toml::table* path, const std::string& prefix, PathSpec& target);
   void readRender();
   void readAnimation();
+  void readLabels();
   void forbid(const toml::table* t, const std::string& section, const std::string& key, const std::string& why);
 
   [[noreturn]] void fail(const std::string& key, const SourceLoc& loc, const std::string& expected,
@@ -335,14 +336,62 @@ void Reader::readRender() {
     r.format = *f == "mp4" ? VideoFormat::Mp4 : VideoFormat::Png;
 }
 
+// [labels] — which facts of the scene are printed (after [surface] and
+// [path]: a fact must apply to their kinds).
+void Reader::readLabels() {
+  const toml::table* labels = section("labels", {"facts"});
+  const toml::node* node = get(labels, "labels", "facts");
+  if (node == nullptr) return;
+  const std::string key = "labels.facts";
+  std::string names;
+  for (const auto& n : kFactNames) names += (names.empty() ? "" : ", ") + ("\"" + n + "\"");
+  const std::string expected = "\"auto\", \"none\" or a list of facts from " + names;
+  if (const auto* word = node->as_string()) {
+    if (word->get() == "auto") return;
+    if (word->get() == "none") {
+      spec_.labels.facts = std::vector<Fact>{};
+      return;
+    }
+    fail(key, locOf(key, *node), expected, describeNode(*node));
+  }
+  const toml::array* list = node->as_array();
+  if (list == nullptr) fail(key, locOf(key, *node), expected, describeNode(*node));
+  std::vector<Fact> facts;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const toml::node& e = *list->get(i);
+    const auto it = e.is_string() ? std::find(kFactNames.begin(), kFactNames.end(), e.as_string()->get()) : kFactNames.end();
+    if (it == kFactNames.end()) fail(key, locOf(key, *node), expected, "element " + std::to_string(i) + " = " + describeNode(e));
+    const Fact f = static_cast<Fact>(it - kFactNames.begin());
+    if (std::find(facts.begin(), facts.end(), f) != facts.end())
+      failAt(key, fmt::format("\"{}\" is listed twice", *it));
+    const KeyRule rule = factRule(f, spec_);
+    if (!rule.applies) failAt(key, fmt::format("\"{}\" applies to {} only", *it, rule.kinds));
+    facts.push_back(f);
+  }
+  spec_.labels.facts = facts;
+}
+
 // [animation] — frame time → arc length, and the H.264 settings (video issue).
 void Reader::readAnimation() {
   const toml::table* animation =
       section("animation", {"fps", "duration", "speed", "easing", "hold", "crf", "preset"});
   AnimationSpec& a = spec_.animation;
-  if (auto n = integer(animation, "animation", "fps")) {
-    if (*n < 1 || *n > 240) failAt("animation.fps", fmt::format("expected frames per second in [1, 240], got {}", *n));
-    a.fps = *n;
+  if (const toml::node* node = get(animation, "animation", "fps")) {
+    const std::string expected =
+        "frames per second in [1, 240]: an integer, an NTSC rate 23.976 | 29.97 | 59.94 (exactly 24000/1001 …), a "
+        "decimal with at most 3 places, or a string \"num/den\" such as \"30000/1001\"";
+    std::optional<FrameRate> rate;
+    if (node->is_integer()) {
+      const long long n = node->as_integer()->get();
+      if (n >= 1 && n <= 240) rate = FrameRate{n, 1};
+    } else if (node->is_floating_point()) {
+      rate = frameRateFromDecimal(node->as_floating_point()->get());
+    } else if (node->is_string()) {
+      rate = frameRateFromText(node->as_string()->get());
+    }
+    if (!rate || !(rate->value() >= 1.0 && rate->value() <= 240.0))
+      fail("animation.fps", locOf("animation.fps", *node), expected, describeNode(*node));
+    a.fps = *rate;
   }
   if (auto d = number(animation, "animation", "duration")) {
     if (!(*d > 0.0 && *d <= 36000.0))
@@ -581,8 +630,8 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
 
 SceneSpec Reader::read() {
   spec_.sourceFile = file_;
-  static const std::set<std::string> kSections{"ball",     "surface", "path",   "plate",    "solver",
-                                               "timeline", "render",  "animation", "segment"};
+  static const std::set<std::string> kSections{"ball",     "surface", "path",   "plate",     "solver",
+                                               "timeline", "render",  "labels", "animation", "segment"};
   for (auto&& [k, v] : root_) {
     const std::string key(k.str());
     if (!kSections.contains(key)) {
@@ -746,6 +795,7 @@ SceneSpec Reader::read() {
   }
 
   readRender();
+  readLabels();
   readAnimation();
   return spec_;
 }

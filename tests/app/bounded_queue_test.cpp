@@ -56,5 +56,24 @@ TEST(BoundedQueue, CloseDrainsAndAbortDropsAndUnblocks) {
   EXPECT_EQ(aborted.pop(), std::nullopt) << "abort drops what was queued";
 }
 
+TEST(BoundedQueue, CountsTheTimeEachSideWasBlocked) {
+  BoundedQueue<int> q(1);
+  EXPECT_EQ(q.producerWaitSeconds(), 0.0);
+  std::thread consumer([&] {
+    EXPECT_EQ(q.pop(), 1);  // waits for the producer's sleep
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(60));
+  ASSERT_TRUE(q.push(1));
+  consumer.join();
+  EXPECT_GE(q.consumerWaitSeconds(), 0.05);
+  EXPECT_EQ(q.producerWaitSeconds(), 0.0) << "a push into a queue with room does not wait";
+  ASSERT_TRUE(q.push(2));
+  std::thread producer([&] { EXPECT_TRUE(q.push(3)); });  // full: waits for the pop below
+  std::this_thread::sleep_for(std::chrono::milliseconds(60));
+  EXPECT_EQ(q.pop(), 2);
+  producer.join();
+  EXPECT_GE(q.producerWaitSeconds(), 0.05);
+}
+
 }  // namespace
 }  // namespace rollspin::app

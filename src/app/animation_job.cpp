@@ -173,7 +173,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   }
 
   const auto texture = spec.render.layout == scene::RenderLayout::Twin ? nullptr : loadBallTexture(spec);
-  const SceneDrawer drawer(spec, model, texture);
+  const SceneDrawer drawer(spec, model, texture, makeSceneFacts(spec, model));
   const auto context = render::createOsMesaContext();
   const render::ShaderLibrary shaders(o.shaderDir);
   render::Renderer renderer(*context, shaders);

@@ -10,6 +10,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "app/draw_facts.hpp"
 #include "render/mesh_builders.hpp"
 #include "render/procedural_textures.hpp"
 #include "spin/field.hpp"
@@ -93,8 +94,9 @@ FrameSampling frameSampling(const scene::SceneSpec& spec, const RollingModel& mo
 }
 
 SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model,
-                         std::shared_ptr<const render::TextureImage> ballTexture)
-    : spec_(spec), model_(model), ballTexture_(std::move(ballTexture)) {
+                         std::shared_ptr<const render::TextureImage> ballTexture,
+                         std::shared_ptr<const SceneFacts> facts)
+    : spec_(spec), model_(model), ballTexture_(std::move(ballTexture)), facts_(std::move(facts)) {
   const double R = model.ballRadius;
   const double length = model.path->length();
   const geometry::DarbouxSample start = model.path->at(0.0);
@@ -119,6 +121,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
   if (layoutShowsTwin) {
     StageLog::instance().record("twin-geometry");
     blochSphereMesh_ = render::uvSphere(64, 32);
+    if (facts_ && facts_->phaseSplit) fieldConeMesh_ = coneMesh(facts_->phaseSplit->fieldLoop);
   }
   const bool layoutShowsBall = spec.render.layout != scene::RenderLayout::Twin;
   if (!layoutShowsBall) return;  // the twin needs none of the surface geometry
@@ -539,7 +542,7 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
     const double thickness = 0.08 * R;
     // The plate point above the circle's far side traces the circle of
     // radius R1 = ratio · r about the contact circle's centre.
-    const Vec3 plateCentre = plateCircleCentre_ + ratio * (f.point - plateCircleCentre_) + 2.0 * R * f.normal;
+    const Vec3 plateCentre = platePoint(s, 0.0);
     const double contactRadius = (f.point - plateCircleCentre_).norm();
     const double discRadius = (ratio - 1.0) * contactRadius + 1.5 * R;
     const glm::vec3 n = toGlm(f.normal);
@@ -580,12 +583,11 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
     plateTrail.view = view;
     for (std::size_t i = 0; i < pathS_.size(); ++i) {
       if (pathS_[i] > s) break;
-      const Vec3 p = plateCircleCentre_ + ratio * (pathPoints_[i] - plateCircleCentre_) +
-                     (2.0 * R + thickness * 1.05) * model_.path->normal(pathS_[i]);
-      plateTrail.points.push_back(toGlm(p));
+      plateTrail.points.push_back(toGlm(platePoint(pathS_[i], thickness * 1.05)));
     }
     list.polylines.push_back(plateTrail);
   }
+  if (facts_ && facts_->marks) addMarks(list, s, view);
 
   if (spec_.render.labels) {
     const float margin = text * 0.8f;
@@ -612,6 +614,77 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
       l.color = kTextColor;
       list.labels.push_back(l);
     }
+    if (facts_) addFactLabels(list, frame, view, margin + text * 2.0f);
+  }
+}
+
+Vec3 SceneDrawer::platePoint(double s, double lift) const {
+  const geometry::DarbouxSample f = model_.path->at(s);
+  return plateCircleCentre_ + model_.plate->contactSpeedRatio * (f.point - plateCircleCentre_) +
+         (2.0 * model_.ballRadius + lift) * f.normal;
+}
+
+// The marks every β of path angle: dots on the contact path (dark once
+// passed) and, with Brockett's plate, on the plate's trail; numbered.
+void SceneDrawer::addMarks(render::DrawList& list, double s, int view) const {
+  const double R = model_.ballRadius;
+  const float text = std::max(11.0f, float(list.height) / 42.0f);
+  const MarksFact& m = *facts_->marks;
+  const int passed = facts_->marksPassed(s);
+  for (std::size_t k = 0; k < m.s.size(); ++k) {
+    const bool done = int(k) < passed;
+    render::Material dot;
+    dot.color = done ? glm::vec3(0.05f, 0.05f, 0.08f) : glm::vec3(0.45f, 0.45f, 0.5f);
+    dot.castsShadow = false;
+    const geometry::DarbouxSample f = model_.path->at(m.s[k]);
+    const Vec3 onPath = f.point + 0.02 * R * f.normal;
+    list.meshes.push_back({dotMesh_,
+                           glm::translate(glm::mat4(1.0f), toGlm(onPath)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.06 * R))),
+                           dot, view});
+    if (model_.plate && done) {
+      const Vec3 onPlate = platePoint(m.s[k], 0.06 * R);
+      list.meshes.push_back({dotMesh_,
+                             glm::translate(glm::mat4(1.0f), toGlm(onPlate)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.05 * R))),
+                             dot, view});
+    }
+    if (!spec_.render.labels) continue;
+    render::LabelItem number;
+    number.view = view;
+    number.text = fmt::format("{}", k);
+    // Outward from the circle's centre, so the number sits beside the path.
+    // Outward: u = n × t points to the centre where κ_g > 0.
+    number.anchor = toGlm(onPath - std::copysign(0.4 * R, f.geodesicCurvature) * f.tangentNormal);
+    number.worldAnchored = true;
+    number.align = render::Align::Center;
+    number.sizePx = text * 0.9f;
+    number.bold = true;
+    number.color = done ? kTextColor : glm::vec4(0.25f, 0.26f, 0.30f, 1.0f);
+    list.labels.push_back(number);
+  }
+}
+
+// The scene's facts (draw_facts formats them) under the view's heading.
+void SceneDrawer::addFactLabels(render::DrawList& list, const FrameOrientations& frame, int view, float top) const {
+  const float text = std::max(11.0f, float(list.height) / 42.0f);
+  const float margin = text * 0.8f;
+  const std::vector<std::string> lines = factLines(*facts_, frame, model_.path->length());
+  // Small images: shrink the lines until the longest fits the view (DejaVu
+  // Sans averages under 0.6 em per character), rather than clip them.
+  std::size_t longest = 1;
+  for (const auto& line : lines)
+    longest = std::max<std::size_t>(longest, std::count_if(line.begin(), line.end(), [](char c) {
+                                      return (static_cast<unsigned char>(c) & 0xC0) != 0x80;  // UTF-8 lead bytes
+                                    }));
+  const float width = float(list.views[static_cast<std::size_t>(view)].width) - 2.0f * margin;
+  const float size = std::max(7.0f, std::min(text * 0.9f, width / (0.6f * float(longest))));
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    render::LabelItem l;
+    l.view = view;
+    l.text = lines[i];
+    l.anchor = glm::vec3(margin, top + float(i) * size * 1.45f, 0.0f);
+    l.sizePx = size;
+    l.color = kTextColor;
+    list.labels.push_back(l);
   }
 }
 
@@ -691,6 +764,16 @@ void SceneDrawer::addTwinView(render::DrawList& list, const FrameOrientations& f
   }
   list.polylines.push_back(fieldTrail);
   list.polylines.push_back(blochTrail);
+  if (fieldConeMesh_) {
+    // The cone B̂ sweeps over the whole circuit: its solid angle is Berry's phase.
+    render::Material cone;
+    cone.color = kFieldColor;
+    cone.opacity = 0.18f;
+    cone.lit = false;
+    cone.castsShadow = false;
+    cone.cull = render::Cull::None;
+    list.meshes.push_back({fieldConeMesh_, glm::mat4(1.0f), cone, view});
+  }
 
   const Vec3 x = frame.current.q.rotate(markerBody_);
   list.arrows.push_back({glm::vec3(0.0f), toGlm(x), arrowRadius, kMarkerColor, view});

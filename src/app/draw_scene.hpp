@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "app/scene_facts.hpp"
 #include "app/scene_model.hpp"
 #include "render/draw_list.hpp"
 #include "scene/scene_spec.hpp"
@@ -56,9 +57,11 @@ struct FrameSampling {
 class SceneDrawer {
  public:
   // `ballTexture` null: the built-in tennis ball. Meshes are built once here
-  // and shared by every frame.
+  // and shared by every frame. `facts` (makeSceneFacts): the scene's fact
+  // labels, the tennis ball's marks and the twin's cone of B; null for none.
   SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model,
-              std::shared_ptr<const render::TextureImage> ballTexture);
+              std::shared_ptr<const render::TextureImage> ballTexture,
+              std::shared_ptr<const SceneFacts> facts = nullptr);
 
   [[nodiscard]] render::DrawList draw(const FrameOrientations& frame) const;
 
@@ -69,6 +72,11 @@ class SceneDrawer {
   void addBallView(render::DrawList& list, const FrameOrientations& frame, int view) const;
   void addTwinView(render::DrawList& list, const FrameOrientations& frame, int view) const;
   render::View ballCamera(int x, int y, int w, int h, double s) const;
+  void addMarks(render::DrawList& list, double s, int view) const;
+  void addFactLabels(render::DrawList& list, const FrameOrientations& frame, int view, float top) const;
+  // Brockett's plate: the point of the plate above the contact point P(s),
+  // lifted by `lift` above the ball's top.
+  geometry::Vec3 platePoint(double s, double lift) const;
 
   const scene::SceneSpec& spec_;
   const RollingModel& model_;
@@ -79,6 +87,8 @@ class SceneDrawer {
   double frameRadius_ = 1.0;                             // bounding radius of all that moves
   std::vector<geometry::Vec3> framePoints_;  // the default camera keeps these (padded by R) in view
   std::shared_ptr<const render::TextureImage> ballTexture_;
+  std::shared_ptr<const SceneFacts> facts_;
+  std::shared_ptr<render::MeshData> fieldConeMesh_;  // phase-split: the cone of B̂ in the twin
   std::shared_ptr<render::MeshData> sphereMesh_, dotMesh_, surfaceMesh_, blochSphereMesh_, discMesh_;
   render::Material surfaceMaterial_;
   glm::mat4 surfaceFromModel_{1.0f};

@@ -122,7 +122,7 @@ std::filesystem::path renderStill(const StillOptions& o) {
     out = std::filesystem::path("output") / (spec.name + ".png");
   }
   const FrameOrientations frame = solveFrame(spec, model, s);
-  const SceneDrawer drawer(spec, model, texture);
+  const SceneDrawer drawer(spec, model, texture, makeSceneFacts(spec, model));
   const render::DrawList list = drawer.draw(frame);
 
   const auto context = render::createOsMesaContext();

@@ -68,6 +68,7 @@ class Reader {
   std::optional<std::string> anyText(const toml::table* t, const std::string& section, const std::string& key);
   void readRender();
   void readAnimation();
+  void readLabels();
   void forbid(const toml::table* t, const std::string& section, const std::string& key, const std::string& why);
 
   [[noreturn]] void fail(const std::string& key, const SourceLoc& loc, const std::string& expected,
@@ -231,6 +232,41 @@ void Reader::readRender() {
     r.format = *f == "mp4" ? VideoFormat::Mp4 : VideoFormat::Png;
 }
 
+// [labels] — which facts of the scene are printed (after [surface] and
+// [path]: a fact must apply to their kinds).
+void Reader::readLabels() {
+  const toml::table* labels = section("labels", {"facts"});
+  const toml::node* node = get(labels, "labels", "facts");
+  if (node == nullptr) return;
+  const std::string key = "labels.facts";
+  std::string names;
+  for (const auto& n : kFactNames) names += (names.empty() ? "" : ", ") + ("\"" + n + "\"");
+  const std::string expected = "\"auto\", \"none\" or a list of facts from " + names;
+  if (const auto* word = node->as_string()) {
+    if (word->get() == "auto") return;
+    if (word->get() == "none") {
+      spec_.labels.facts = std::vector<Fact>{};
+      return;
+    }
+    fail(key, locOf(key, *node), expected, describeNode(*node));
+  }
+  const toml::array* list = node->as_array();
+  if (list == nullptr) fail(key, locOf(key, *node), expected, describeNode(*node));
+  std::vector<Fact> facts;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const toml::node& e = *list->get(i);
+    const auto it = e.is_string() ? std::find(kFactNames.begin(), kFactNames.end(), e.as_string()->get()) : kFactNames.end();
+    if (it == kFactNames.end()) fail(key, locOf(key, *node), expected, "element " + std::to_string(i) + " = " + describeNode(e));
+    const Fact f = static_cast<Fact>(it - kFactNames.begin());
+    if (std::find(facts.begin(), facts.end(), f) != facts.end())
+      failAt(key, fmt::format("\"{}\" is listed twice", *it));
+    const KeyRule rule = factRule(f, spec_);
+    if (!rule.applies) failAt(key, fmt::format("\"{}\" applies to {} only", *it, rule.kinds));
+    facts.push_back(f);
+  }
+  spec_.labels.facts = facts;
+}
+
 // [animation] — frame time → arc length, and the H.264 settings (video issue).
 void Reader::readAnimation() {
   const toml::table* animation =
@@ -339,7 +375,7 @@ double norm3(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] 
 
 SceneSpec Reader::read() {
   spec_.sourceFile = file_;
-  static const std::set<std::string> kSections{"ball", "surface", "path", "plate", "solver", "timeline", "render", "animation"};
+  static const std::set<std::string> kSections{"ball", "surface", "path", "plate", "solver", "timeline", "render", "labels", "animation"};
   for (auto&& [k, v] : root_) {
     const std::string key(k.str());
     if (!kSections.contains(key)) {
@@ -642,6 +678,7 @@ SceneSpec Reader::read() {
   }
 
   readRender();
+  readLabels();
   readAnimation();
   return spec_;
 }

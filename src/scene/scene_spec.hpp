@@ -112,6 +112,19 @@ struct RenderSpec {
   std::optional<VideoFormat> format;  // animations; default: from the output's extension, else mp4
 };
 
+// [labels]: facts of the scene, computed from the solver (app/scene_facts)
+// and printed next to the paper's closed form. Each applies to some kinds
+// only (factRule).
+enum class Fact {
+  Delta,       // rotation in the rolling frame after the circuit vs δ (circle, parallel)
+  Marks,       // marks every path angle β that turns the ball by π (circle on a plane)
+  Turns,       // turns in the lab and relative to the radius line (parallel at the equator)
+  PhaseSplit,  // spinor phase = dynamic + geometric, and the cone of B (closed circle or parallel)
+};
+struct LabelsSpec {
+  std::optional<std::vector<Fact>> facts;  // nullopt: "auto" (resolveFacts); empty: "none"
+};
+
 enum class Easing { Linear, Smooth };
 
 // [animation]: how frame time maps to arc length, and the encoder's settings.
@@ -136,6 +149,7 @@ struct SceneSpec {
   SolverSpec solver;
   TimelineSpec timeline;
   RenderSpec render;
+  LabelsSpec labels;
   AnimationSpec animation;
 
   // Where a dotted key ("ball.radius") was set; the file (no line) when the
@@ -164,5 +178,15 @@ inline const std::vector<std::string> kPathKeys{
 [[nodiscard]] std::string toString(SurfaceKind k);
 [[nodiscard]] std::string toString(PathKind k);
 [[nodiscard]] std::string toString(RenderLayout l);
+
+inline const std::vector<std::string> kFactNames{"delta", "marks", "turns", "phase-split"};
+[[nodiscard]] std::string toString(Fact f);
+// Whether fact f has a meaning (and a closed form) for the scene's kinds.
+[[nodiscard]] KeyRule factRule(Fact f, const SceneSpec& spec);
+// The facts a scene shows: labels.facts as given, or for "auto" its kind's:
+// Brockett's plate → marks; another circle on a plane → delta; a parallel on
+// a sphere → turns at the equator, phase-split for a small ball (R ≤ r/10,
+// whole circuits), delta otherwise; any other path → none.
+[[nodiscard]] std::vector<Fact> resolveFacts(const SceneSpec& spec);
 
 }  // namespace rollspin::scene

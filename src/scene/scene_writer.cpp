@@ -172,6 +172,17 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   if (r.format) w.key("format", quoted(*r.format == VideoFormat::Mp4 ? "mp4" : "png"));
   else w.computed("format", "from the output's extension, else mp4");
 
+  w.section("labels");
+  if (spec.labels.facts) {
+    std::string list;
+    for (const Fact f : *spec.labels.facts) list += (list.empty() ? "" : ", ") + quoted(toString(f));
+    w.key("facts", spec.labels.facts->empty() ? quoted("none") : "[" + list + "]");
+  } else {
+    std::string chosen;
+    for (const Fact f : resolveFacts(spec)) chosen += (chosen.empty() ? "" : ", ") + toString(f);
+    w.key("facts", quoted("auto") + "  # for this scene: " + (chosen.empty() ? "none" : chosen));
+  }
+
   const AnimationSpec& a = spec.animation;
   w.section("animation");
   w.key("fps", a.fps.den == 1 ? a.fps.text() : quoted(a.fps.text()));

@@ -57,22 +57,33 @@ TEST(BoundedQueue, CloseDrainsAndAbortDropsAndUnblocks) {
 }
 
 TEST(BoundedQueue, CountsTheTimeEachSideWasBlocked) {
+  // Each blocked side is given 200 ms to be blocked before it is released
+  // (it signals first, so a slow thread start on a loaded machine does not
+  // shorten the wait), and must count at least half of it.
   BoundedQueue<int> q(1);
-  EXPECT_EQ(q.producerWaitSeconds(), 0.0);
+  std::atomic<bool> popping{false};
   std::thread consumer([&] {
-    EXPECT_EQ(q.pop(), 1);  // waits for the producer's sleep
+    popping = true;
+    EXPECT_EQ(q.pop(), 1);
   });
-  std::this_thread::sleep_for(std::chrono::milliseconds(60));
+  while (!popping) std::this_thread::yield();
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
   ASSERT_TRUE(q.push(1));
   consumer.join();
-  EXPECT_GE(q.consumerWaitSeconds(), 0.05);
+  EXPECT_GE(q.consumerWaitSeconds(), 0.1);
   EXPECT_EQ(q.producerWaitSeconds(), 0.0) << "a push into a queue with room does not wait";
+
   ASSERT_TRUE(q.push(2));
-  std::thread producer([&] { EXPECT_TRUE(q.push(3)); });  // full: waits for the pop below
-  std::this_thread::sleep_for(std::chrono::milliseconds(60));
+  std::atomic<bool> pushing{false};
+  std::thread producer([&] {
+    pushing = true;
+    EXPECT_TRUE(q.push(3));  // full: waits for the pop below
+  });
+  while (!pushing) std::this_thread::yield();
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
   EXPECT_EQ(q.pop(), 2);
   producer.join();
-  EXPECT_GE(q.producerWaitSeconds(), 0.05);
+  EXPECT_GE(q.producerWaitSeconds(), 0.1);
 }
 
 }  // namespace

@@ -188,3 +188,16 @@ TEST(SceneFacts, BerrySplitSumsToTheTotalPhase) {
   EXPECT_LT(smallerGap, 0.3 * adiabaticGap);
   EXPECT_LT(std::abs(g.phaseSplit->residual), 1e-9);
 }
+
+TEST(SceneFacts, PrintShowsWhatAutoChoseAndReadsBack) {
+  const std::string berry = (test::sourceDir() / "scenes" / "berry.toml").string();
+  const auto printed = test::runRollspin({"scene", berry, "--print"});
+  ASSERT_EQ(printed.exitCode, 0) << printed.err;
+  EXPECT_NE(printed.out.find("[labels]\nfacts = \"auto\"  # for this scene: phase-split\n"), std::string::npos)
+      << printed.out;
+  const auto none = test::runRollspin({"scene", berry, "--print", "--set", "labels.facts=none"});
+  EXPECT_NE(none.out.find("facts = \"none\"\n"), std::string::npos) << none.out;
+  const auto bad = test::runRollspin({"scene", berry, "--print", "--set", R"(labels.facts=["marks"])"});
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("labels.facts: \"marks\" applies to a circle on a plane only"), std::string::npos) << bad.err;
+}

@@ -1,6 +1,7 @@
 #include "app/animation_job.hpp"
 
 #include <fmt/format.h>
+#include <pthread.h>
 
 #include <array>
 #include <cctype>
@@ -183,6 +184,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   ProgressMeter progress(range.count(), o.quiet);
   std::exception_ptr encodeError;
   std::thread encoder([&] {
+    pthread_setname_np(pthread_self(), "rollspin-encode");  // tells the stages apart in perf and top -H
     try {
       while (const auto frame = queue.pop()) {
         sink->write((*frame)->view());
@@ -195,6 +197,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   });
 
   const auto pool = std::make_shared<ImagePool>();
+  double poseWait = 0.0;
   try {
     // All poses from one forward march, a frame or two ahead of us.
     FramePoseStream poses(spec, model, clock, range);
@@ -224,6 +227,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
       if (!queue.push(previous)) break;  // the encoder failed
     }
     queue.close();
+    poseWait = poses.waitSeconds();
   } catch (...) {
     queue.abort();
     encoder.join();
@@ -233,6 +237,11 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   encoder.join();
   progress.clear();
   if (encodeError) std::rethrow_exception(encodeError);
+  if (StageLog::instance().echo())  // which stage sets the pace
+    std::fprintf(stderr,
+                 "rollspin: pipeline: %.2f s in all; the renderer waited %.2f s for poses and %.2f s on a full "
+                 "encoder queue; the encoder waited %.2f s for frames\n",
+                 progress.elapsedSeconds(), poseWait, queue.producerWaitSeconds(), queue.consumerWaitSeconds());
 
   AnimationResult result;
   result.framesRequested = range.count();

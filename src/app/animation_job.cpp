@@ -1,6 +1,7 @@
 #include "app/animation_job.hpp"
 
 #include <fmt/format.h>
+#include <pthread.h>
 
 #include <array>
 #include <cctype>
@@ -124,7 +125,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   // estimate (three queued RGBA frames, the yuv420p copy, x264's look-ahead).
   checkFrameMemory(spec, 256);
   const RollingModel model = buildSceneModel(spec);
-  const FrameClock clock(model.path->length(), spec);
+  const FrameClock clock = clipClock(spec, model);
   const FrameRange range = o.frames ? parseFrameRange(*o.frames, clock.frameCount())
                                     : FrameRange{0, clock.frameCount() - 1};
   const scene::VideoFormat format = chooseFormat(spec, o.output);
@@ -183,6 +184,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   ProgressMeter progress(range.count(), o.quiet);
   std::exception_ptr encodeError;
   std::thread encoder([&] {
+    pthread_setname_np(pthread_self(), "rollspin-encode");  // tells the stages apart in perf and top -H
     try {
       while (const auto frame = queue.pop()) {
         sink->write((*frame)->view());
@@ -195,26 +197,37 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   });
 
   const auto pool = std::make_shared<ImagePool>();
+  double poseWait = 0.0;
   try {
     // All poses from one forward march, a frame or two ahead of us.
     FramePoseStream poses(spec, model, clock, range);
     Frame previous;
     double previousS = std::nan("");
+    std::size_t previousSegment = 0;
+    std::optional<FrameOrientations> pose;
     for (long long k = range.first; k <= range.last; ++k) {
       if (InterruptGuard::received() != 0) break;
       const double s = clock.arcLength(k);
-      // Held frames show the same pose: the same pixels, rendered once.
-      if (!previous || s != previousS) {
-        const std::optional<FrameOrientations> pose = poses.next();
-        if (!pose || pose->current.s != s) throw std::logic_error("frame pose stream out of step with the clock");
+      const StoryPlace story = clock.place(k);
+      // Held frames show the same pose: the same pixels, rendered once —
+      // unless a storyboard's caption or camera changes meanwhile.
+      const bool cameraMoving = story.segment > 0 && story.seconds < std::min(SceneDrawer::kCameraMove, story.duration);
+      if (!previous || s != previousS || story.segment != previousSegment || cameraMoving) {
+        if (!pose || s != previousS) {  // the stream has one pose per distinct arc length
+          pose = poses.next();
+          if (!pose || pose->current.s != s) throw std::logic_error("frame pose stream out of step with the clock");
+        }
+        pose->story = story;
         const std::shared_ptr<media::Image> image = pool->acquire();
         renderer.render(drawer.draw(*pose), *image);
         previous = image;
         previousS = s;
+        previousSegment = story.segment;
       }
       if (!queue.push(previous)) break;  // the encoder failed
     }
     queue.close();
+    poseWait = poses.waitSeconds();
   } catch (...) {
     queue.abort();
     encoder.join();
@@ -224,6 +237,11 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   encoder.join();
   progress.clear();
   if (encodeError) std::rethrow_exception(encodeError);
+  if (StageLog::instance().echo())  // which stage sets the pace
+    std::fprintf(stderr,
+                 "rollspin: pipeline: %.2f s in all; the renderer waited %.2f s for poses and %.2f s on a full "
+                 "encoder queue; the encoder waited %.2f s for frames\n",
+                 progress.elapsedSeconds(), poseWait, queue.producerWaitSeconds(), queue.consumerWaitSeconds());
 
   AnimationResult result;
   result.framesRequested = range.count();

@@ -116,6 +116,29 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
     lo = lo.cwiseMin(c - Vec3::Constant(R));
     hi = hi.cwiseMax(c + Vec3::Constant(R));
   }
+  // Cameras: [render]'s (with the defaults orbitAngles derives), then each
+  // segment's keys laid over the previous segment's camera.
+  const OrbitAngles base = orbitAngles(spec, model);
+  Shot shot{base.azimuth, base.elevation, spec.render.fovDeg, std::nullopt, spec.render.distance, spec.render.follow};
+  if (spec.render.target) shot.target = Vec3((*spec.render.target)[0], (*spec.render.target)[1], (*spec.render.target)[2]);
+  titleBand_ = !spec.render.title.empty();
+  for (const scene::SegmentSpec& seg : spec.segments) {
+    const scene::CameraSpec& c = seg.camera;
+    if (c.azimuthDeg) shot.azimuth = *c.azimuthDeg * kDeg;
+    if (c.elevationDeg) shot.elevation = *c.elevationDeg * kDeg;
+    if (c.fovDeg) shot.fovDeg = *c.fovDeg;
+    if (c.distance) shot.distance = *c.distance;
+    if (c.follow) shot.follow = *c.follow;
+    if (c.follow && *c.follow) shot.target.reset();
+    if (c.target) {
+      shot.target = Vec3((*c.target)[0], (*c.target)[1], (*c.target)[2]);
+      shot.follow = false;
+    }
+    shots_.push_back(shot);
+    if (seg.title && !seg.title->empty()) titleBand_ = true;
+  }
+  if (shots_.empty()) shots_.push_back(shot);
+
   dotMesh_ = render::uvSphere(24, 12);  // small dots need few triangles
   const bool layoutShowsTwin = spec.render.layout != scene::RenderLayout::Ball;
   if (layoutShowsTwin) {
@@ -256,6 +279,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
   }
   frameCentre_ = 0.5 * (lo + hi);
   frameRadius_ = 0.5 * (hi - lo).norm();
+
 }
 
 namespace {
@@ -364,18 +388,41 @@ OrbitAngles orbitAngles(const scene::SceneSpec& spec, const RollingModel& model)
 
 }  // namespace
 
-render::View SceneDrawer::ballCamera(int x, int y, int w, int h, double s) const {
-  const OrbitAngles a = orbitAngles(spec_, model_);
+SceneDrawer::Aim SceneDrawer::aimOf(const Shot& shot, int w, int h, double s) const {
+  const OrbitAngles a{shot.azimuth, shot.elevation};
   const double R = model_.ballRadius;
   const double aspect = double(w) / double(std::max(h, 1));
-  auto [target, distance] = fitPoints(framePoints_, R, a, spec_.render.fovDeg, aspect);
-  if (spec_.render.follow) {
+  auto [target, distance] = fitPoints(framePoints_, R, a, shot.fovDeg, aspect);
+  if (shot.follow) {
     target = model_.path->at(s).centre(R);
-    distance = fitDistance(4.0 * R, spec_.render.fovDeg, aspect);
+    distance = fitDistance(4.0 * R, shot.fovDeg, aspect);
   }
-  if (spec_.render.target) target = Vec3((*spec_.render.target)[0], (*spec_.render.target)[1], (*spec_.render.target)[2]);
-  if (spec_.render.distance) distance = *spec_.render.distance;
-  render::View v = orbitView(x, y, w, h, toGlm(target), distance, a, spec_.render.fovDeg, frameRadius_ + 3.0 * R);
+  if (shot.target) target = *shot.target;
+  if (shot.distance) distance = *shot.distance;
+  return {target, distance, shot.azimuth, shot.elevation, shot.fovDeg};
+}
+
+SceneDrawer::Aim SceneDrawer::aimAt(const StoryPlace& story, int w, int h, double s) const {
+  const std::size_t k = std::min(story.segment, shots_.size() - 1);
+  const Aim to = aimOf(shots_[k], w, h, s);
+  const double move = std::min(kCameraMove, story.duration);
+  if (k == 0 || !(story.seconds < move)) return to;
+  // On the way from the previous segment's camera: eased, the azimuth the
+  // short way round. Equal cameras blend to themselves exactly.
+  const Aim from = aimOf(shots_[k - 1], w, h, s);
+  const double x = ease(scene::Easing::Smooth, story.seconds / move);
+  auto mix = [x](double a, double b) { return a + (b - a) * x; };
+  const double turn = std::remainder(to.azimuth - from.azimuth, 2.0 * std::numbers::pi);
+  return {from.target + (to.target - from.target) * x, mix(from.distance, to.distance), from.azimuth + turn * x,
+          mix(from.elevation, to.elevation), mix(from.fovDeg, to.fovDeg)};
+}
+
+render::View SceneDrawer::ballCamera(int x, int y, int w, int h, double s, const StoryPlace& story) const {
+  const Aim aim = aimAt(story, w, h, s);
+  const OrbitAngles a{aim.azimuth, aim.elevation};
+  const double R = model_.ballRadius;
+  const Vec3 target = aim.target;
+  render::View v = orbitView(x, y, w, h, toGlm(target), aim.distance, a, aim.fovDeg, frameRadius_ + 3.0 * R);
   glm::vec3 up(0, 0, 1);
   if (const auto* plane = dynamic_cast<const geometry::Plane*>(model_.surface.get())) up = toGlm(plane->normal());
   const glm::vec3 eyeDir = glm::normalize(v.camera.position - toGlm(target));
@@ -401,7 +448,12 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
   const float text = std::max(11.0f, float(H) / 42.0f);
 
   int top = 0;
-  if (!rs.title.empty()) {
+  // A segment's title replaces render.title while it plays; the band stays
+  // for the whole clip when any title is set, so the views never jump.
+  const scene::SegmentSpec* segment =
+      spec_.segments.empty() ? nullptr : &spec_.segments[std::min(frame.story.segment, spec_.segments.size() - 1)];
+  const std::string& titleText = segment && segment->title ? *segment->title : rs.title;
+  if (titleBand_) {
     top = static_cast<int>(std::lround(text * 2.4f));
     render::View band;
     band.width = W;
@@ -410,20 +462,21 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
     band.light.shadow = false;
     list.views.push_back(band);
     render::LabelItem title;
-    title.text = rs.title;
+    title.text = titleText;
     title.anchor = glm::vec3(0.5f * W, 0.5f * top, 0.0f);
     title.align = render::Align::Center;
     title.sizePx = text * 1.35f;
     title.bold = true;
     title.color = kTextColor;
-    list.labels.push_back(title);
+    if (!titleText.empty()) list.labels.push_back(title);
   }
   const int bodyHeight = H - top;
   switch (rs.layout) {
     case scene::RenderLayout::SideBySide: {
       const int ballWidth = static_cast<int>(std::lround(W * 0.6));
-      list.views.push_back(ballCamera(0, top, ballWidth, bodyHeight, frame.current.s));
+      list.views.push_back(ballCamera(0, top, ballWidth, bodyHeight, frame.current.s, frame.story));
       addBallView(list, frame, int(list.views.size()) - 1);
+      addCaption(list, frame, int(list.views.size()) - 1);
       render::View twin;
       twin.x = ballWidth;
       twin.y = top;
@@ -434,8 +487,9 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
       break;
     }
     case scene::RenderLayout::Inset: {
-      list.views.push_back(ballCamera(0, top, W, bodyHeight, frame.current.s));
+      list.views.push_back(ballCamera(0, top, W, bodyHeight, frame.current.s, frame.story));
       addBallView(list, frame, int(list.views.size()) - 1);
+      addCaption(list, frame, int(list.views.size()) - 1);
       const int margin = static_cast<int>(std::lround(H * 0.025));
       const int side = static_cast<int>(std::lround(std::min(W, bodyHeight) * 0.42));
       render::View twin;
@@ -449,8 +503,9 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
       break;
     }
     case scene::RenderLayout::Ball:
-      list.views.push_back(ballCamera(0, top, W, bodyHeight, frame.current.s));
+      list.views.push_back(ballCamera(0, top, W, bodyHeight, frame.current.s, frame.story));
       addBallView(list, frame, int(list.views.size()) - 1);
+      addCaption(list, frame, int(list.views.size()) - 1);
       break;
     case scene::RenderLayout::Twin: {
       render::View twin;
@@ -459,10 +514,30 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
       twin.height = bodyHeight;
       list.views.push_back(twin);
       addTwinView(list, frame, int(list.views.size()) - 1);
+      addCaption(list, frame, int(list.views.size()) - 1);
       break;
     }
   }
   return list;
+}
+
+// A storyboard segment's caption, centred under the view's heading row. It
+// is the lecturer's own text, so it shows even with render.labels = false.
+void SceneDrawer::addCaption(render::DrawList& list, const FrameOrientations& frame, int view) const {
+  if (spec_.segments.empty()) return;
+  const std::string& caption = spec_.segments[std::min(frame.story.segment, spec_.segments.size() - 1)].caption;
+  if (caption.empty()) return;
+  const render::View& v = list.views[static_cast<std::size_t>(view)];
+  const float text = std::max(11.0f, float(list.height) / 42.0f);
+  render::LabelItem label;
+  label.view = view;
+  label.text = caption;
+  label.anchor = glm::vec3(0.5f * float(v.width), text * 0.8f + text * 2.1f, 0.0f);
+  label.align = render::Align::Center;
+  label.sizePx = text * 1.2f;
+  label.bold = true;
+  label.color = glm::vec4(0.55f, 0.12f, 0.02f, 1.0f);
+  list.labels.push_back(label);
 }
 
 void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& frame, int view) const {
@@ -705,12 +780,12 @@ void SceneDrawer::addTwinView(render::DrawList& list, const FrameOrientations& f
   const float text = std::max(11.0f, float(list.height) / 42.0f);
   // Same viewing direction as the ball's camera, so the marker on the ball
   // and the Bloch arrow point the same way on screen.
-  const OrbitAngles a = orbitAngles(spec_, model_);
+  const Aim aim = aimAt(frame.story, v.width, v.height, frame.current.s);
+  const OrbitAngles a{aim.azimuth, aim.elevation};
   const double aspect = double(v.width) / double(std::max(v.height, 1));
   const double sceneRadius = 1.42;
   render::View oriented = orbitView(v.x, v.y, v.width, v.height, glm::vec3(0.0f, 0.0f, -0.04f),
-                                    fitDistance(sceneRadius, spec_.render.fovDeg, aspect), a, spec_.render.fovDeg,
-                                    sceneRadius);
+                                    fitDistance(sceneRadius, aim.fovDeg, aspect), a, aim.fovDeg, sceneRadius);
   v.camera = oriented.camera;
   v.light = keyLight(glm::vec3(0, 0, 1), glm::normalize(v.camera.position), glm::vec3(0.0f), 1.5f);
   v.light.shadow = false;

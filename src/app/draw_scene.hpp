@@ -8,8 +8,10 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "app/frame_clock.hpp"
 #include "app/scene_facts.hpp"
 #include "app/scene_model.hpp"
 #include "render/draw_list.hpp"
@@ -26,6 +28,7 @@ struct OrientedSample {
 // Everything time-dependent one image needs.
 struct FrameOrientations {
   OrientedSample current;              // the ball (and the twin's arrows) at s
+  StoryPlace story;                    // a storyboard's segment (caption, title, camera) and its time
   std::vector<OrientedSample> trail;   // U on [0, s], increasing s, for the Bloch trail
   std::vector<OrientedSample> strobe;  // render.strobe > 1: the extra ball positions
 };
@@ -56,6 +59,10 @@ struct FrameSampling {
 
 class SceneDrawer {
  public:
+  // A camera change between segments moves smoothly (3x² − 2x³) over this
+  // many seconds (or the whole segment, when it is shorter).
+  static constexpr double kCameraMove = 1.0;
+
   // `ballTexture` null: the built-in tennis ball. Meshes are built once here
   // and shared by every frame. `facts` (makeSceneFacts): the scene's fact
   // labels, the tennis ball's marks and the twin's cone of B; null for none.
@@ -71,6 +78,24 @@ class SceneDrawer {
  private:
   void addBallView(render::DrawList& list, const FrameOrientations& frame, int view) const;
   void addTwinView(render::DrawList& list, const FrameOrientations& frame, int view) const;
+  // The camera of a frame: its segment's, or on the way there from the
+  // previous segment's during the first kCameraMove seconds.
+  struct Shot {
+    double azimuth = 0.0, elevation = 0.0, fovDeg = 32.0;  // radians, radians, degrees
+    std::optional<geometry::Vec3> target;
+    std::optional<double> distance;
+    bool follow = false;
+  };
+  struct Aim {
+    geometry::Vec3 target;
+    double distance, azimuth, elevation, fovDeg;
+  };
+  [[nodiscard]] Aim aimOf(const Shot& shot, int w, int h, double s) const;
+  [[nodiscard]] Aim aimAt(const StoryPlace& story, int w, int h, double s) const;
+  render::View ballCamera(int x, int y, int w, int h, double s, const StoryPlace& story) const;
+  void addCaption(render::DrawList& list, const FrameOrientations& frame, int view) const;
+  std::vector<Shot> shots_;  // one per storyboard segment (one for a scene without segments)
+  bool titleBand_ = false;   // render.title or any segment's title: the band is kept for the whole clip
   render::View ballCamera(int x, int y, int w, int h, double s) const;
   void addMarks(render::DrawList& list, double s, bool plateShown, int view) const;
   void addFactLabels(render::DrawList& list, const FrameOrientations& frame, int view, float top) const;

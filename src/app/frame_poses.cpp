@@ -1,5 +1,7 @@
 #include "app/frame_poses.hpp"
 
+#include <pthread.h>
+
 #include "app/solve_job.hpp"
 #include "core/error.hpp"
 #include "core/stage_log.hpp"
@@ -85,6 +87,7 @@ FramePoseStream::FramePoseStream(const scene::SceneSpec& spec, const RollingMode
   std::vector<double> strobeS = strobeArcLengths(spec, model);  // records "strobe"
   (void)chooseSolver(spec, model);  // bad input surfaces here, on the caller's thread
   thread_ = std::thread([this, strobeS = std::move(strobeS)] {
+    pthread_setname_np(pthread_self(), "rollspin-poses");
     try {
       std::vector<OrientedSample> strobe(strobeS.size());
       if (!strobeS.empty())

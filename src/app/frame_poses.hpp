@@ -45,6 +45,8 @@ class FramePoseStream {
   // The pose for the next distinct arc length (its current.s is that s);
   // nullopt after the last. Rethrows the march's error.
   [[nodiscard]] std::optional<FrameOrientations> next();
+  // Seconds next() spent waiting for the march.
+  [[nodiscard]] double waitSeconds() const { return queue_.consumerWaitSeconds(); }
 
  private:
   void march(const std::vector<OrientedSample>& strobe);

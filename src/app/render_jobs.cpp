@@ -65,6 +65,18 @@ FrameOrientations solveFrame(const scene::SceneSpec& spec, const RollingModel& m
   return frame;
 }
 
+FrameClock clipClock(const scene::SceneSpec& spec, const RollingModel& model) {
+  if (!spec.isStoryboard()) return FrameClock(model.path->length(), spec);
+  return FrameClock(model.segments, spec);
+}
+
+StoryPlace storyPlaceAt(const RollingModel& model, double s) {
+  StoryPlace place;
+  for (std::size_t k = 0; k < model.segments.size(); ++k)
+    if (model.segments[k].end > model.segments[k].start && model.segments[k].start <= s) place.segment = k;
+  return place;
+}
+
 std::shared_ptr<const render::TextureImage> loadBallTexture(const scene::SceneSpec& spec) {
   if (spec.ball.texture.empty()) return nullptr;
   StageLog::instance().record("ball-texture");
@@ -121,7 +133,8 @@ std::filesystem::path renderStill(const StillOptions& o) {
     std::filesystem::create_directories("output");
     out = std::filesystem::path("output") / (spec.name + ".png");
   }
-  const FrameOrientations frame = solveFrame(spec, model, s);
+  FrameOrientations frame = solveFrame(spec, model, s);
+  frame.story = storyPlaceAt(model, s);
   const SceneDrawer drawer(spec, model, texture, makeSceneFacts(spec, model));
   const render::DrawList list = drawer.draw(frame);
 

@@ -105,6 +105,8 @@ bool onEquator(const SceneSpec& s) { return std::abs(s.path.colatitudeDeg - 90.0
 }  // namespace
 
 KeyRule factRule(Fact f, const SceneSpec& spec) {
+  // A storyboard's facts are its captions: the closed forms are about one path.
+  if (spec.isStoryboard()) return {false, "a scene with one [path] (a storyboard's segments have captions)"};
   switch (f) {
     case Fact::Delta: return {planeCircle(spec) || sphereParallel(spec), "a circle on a plane or a parallel on a sphere"};
     case Fact::Marks: return {planeCircle(spec), "a circle on a plane"};
@@ -118,6 +120,7 @@ KeyRule factRule(Fact f, const SceneSpec& spec) {
 
 std::vector<Fact> resolveFacts(const SceneSpec& spec) {
   if (spec.labels.facts) return *spec.labels.facts;
+  if (spec.isStoryboard()) return {};
   if (spec.plate) return {Fact::Marks};
   if (planeCircle(spec)) return {Fact::Delta};
   if (sphereParallel(spec)) {

@@ -139,6 +139,28 @@ struct AnimationSpec {
   std::string preset = "medium"; // x264 preset
 };
 
+// A camera change: render's camera keys, each optional (absent = unchanged).
+struct CameraSpec {
+  std::optional<double> azimuthDeg, elevationDeg, distance, fovDeg;
+  std::optional<Vec3> target;
+  std::optional<bool> follow;
+};
+inline const std::vector<std::string> kCameraKeys{"azimuth_deg", "elevation_deg", "distance", "target", "follow",
+                                                  "fov_deg"};
+
+// [[segment]]: one step of a storyboard (README "Storyboards"): a motion
+// along its own path, or a hold; with its caption, title and camera.
+struct SegmentSpec {
+  std::optional<PathSpec> path;    // a motion; absent: a hold
+  double hold = 0.0;               // a hold: seconds the ball rests
+  std::optional<double> duration;  // a motion: seconds
+  std::optional<double> speed;     // a motion: arc length per second (instead of duration)
+  std::string caption;             // shown while the segment plays ("" = none)
+  std::optional<std::string> title;  // replaces render.title while the segment plays
+  CameraSpec camera;               // laid over the previous segment's camera (the first: over [render])
+};
+inline constexpr std::size_t kMaxSegments = 1000;
+
 struct SceneSpec {
   std::string sourceFile;  // the scene file ("" when built in code)
   std::string name;        // file stem, e.g. "lollipop"
@@ -151,8 +173,13 @@ struct SceneSpec {
   RenderSpec render;
   LabelsSpec labels;
   AnimationSpec animation;
+  std::vector<SegmentSpec> segments;  // a storyboard: non-empty, and `path` is unused
 
-  // Where a dotted key ("ball.radius") was set; the file (no line) when the
+  [[nodiscard]] bool isStoryboard() const { return !segments.empty(); }
+  // "segment[k]" (k counts from 1), the prefix of segment k's keys.
+  [[nodiscard]] static std::string segmentKey(std::size_t index) { return "segment[" + std::to_string(index + 1) + "]"; }
+
+  // Where a dotted key ("ball.radius", "segment[2].path.radius") was set; the file (no line) when the
   // key took its default.
   [[nodiscard]] SourceLoc where(const std::string& key) const;
   std::map<std::string, SourceLoc> locations;

@@ -154,6 +154,18 @@ TEST(VideoCli, ARerenderIntoAFrameFolderLeavesNoStaleFramesAndNoForeignFileIsTou
   EXPECT_EQ(filesIn(dir), std::vector<std::string>{"f"}) << "no staging folder left";
 }
 
+TEST(VideoCli, VerboseSaysWhichStageSetsThePace) {
+  const fs::path dir = test::freshTempDir("video_verbose");
+  const auto r = test::runRollspin(small({"render", lollipop(), "--verbose", "--set", "animation.duration=0.5", "--set",
+                                          "animation.hold=0", "-o", (dir / "v.mp4").string()}));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("rollspin: pipeline: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the encoder waited"), std::string::npos) << r.err;
+  const auto quiet = test::runRollspin(small({"render", lollipop(), "--set", "animation.duration=0.5", "--set",
+                                              "animation.hold=0", "-o", (dir / "q.mp4").string()}));
+  EXPECT_EQ(quiet.err.find("pipeline"), std::string::npos) << "only with --verbose: " << quiet.err;
+}
+
 // Starts rollspin without waiting for it.
 pid_t spawnRollspin(const std::vector<std::string>& args, const fs::path& errFile) {
   posix_spawn_file_actions_t actions;

@@ -86,6 +86,9 @@ float shadowFactor(vec3 n, vec3 l) {
 }
 #endif
 
+// Alpha is coverage over the transparent scene (see composite.frag): an
+// opaque material writes 1 even where its texture has alpha, as it is drawn
+// without blending.
 void main() {
   vec3 albedo = color;
   float alpha = opacity;
@@ -118,8 +121,8 @@ void main() {
   vec3 c = albedo * (ambient * hemisphere + (1.0 - ambient) * lightColor * ndl * shadow) + spec * shadow * lightColor;
   // Translucent surfaces (glass, the Bloch sphere) thicken at grazing angles.
   if (opacity < 1.0) alpha = clamp(alpha * (1.0 + 2.0 * pow(1.0 - abs(dot(n, v)), 3.0)), 0.0, 1.0);
-  fragColor = vec4(encodeSrgb(c), alpha);
+  fragColor = vec4(encodeSrgb(c), opacity < 1.0 ? alpha : 1.0);
 #else
-  fragColor = vec4(encodeSrgb(albedo), alpha);
+  fragColor = vec4(encodeSrgb(albedo), opacity < 1.0 ? alpha : 1.0);
 #endif
 }

@@ -70,12 +70,14 @@
   X(glPolygonOffset) \
   X(glReadBuffer) \
   X(glReadPixels) \
+  X(glRenderbufferStorage) \
   X(glRenderbufferStorageMultisample) \
   X(glScissor) \
   X(glShaderSource) \
   X(glTexImage2D) \
   X(glTexParameteri) \
   X(glTexStorage2D) \
+  X(glTexStorage2DMultisample) \
   X(glTexSubImage2D) \
   X(glUniform1f) \
   X(glUniform1i) \
@@ -149,12 +151,14 @@ ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DECLARE)
 #define glPolygonOffset ::rollspin::render::gl_api::glPolygonOffset
 #define glReadBuffer ::rollspin::render::gl_api::glReadBuffer
 #define glReadPixels ::rollspin::render::gl_api::glReadPixels
+#define glRenderbufferStorage ::rollspin::render::gl_api::glRenderbufferStorage
 #define glRenderbufferStorageMultisample ::rollspin::render::gl_api::glRenderbufferStorageMultisample
 #define glScissor ::rollspin::render::gl_api::glScissor
 #define glShaderSource ::rollspin::render::gl_api::glShaderSource
 #define glTexImage2D ::rollspin::render::gl_api::glTexImage2D
 #define glTexParameteri ::rollspin::render::gl_api::glTexParameteri
 #define glTexStorage2D ::rollspin::render::gl_api::glTexStorage2D
+#define glTexStorage2DMultisample ::rollspin::render::gl_api::glTexStorage2DMultisample
 #define glTexSubImage2D ::rollspin::render::gl_api::glTexSubImage2D
 #define glUniform1f ::rollspin::render::gl_api::glUniform1f
 #define glUniform1i ::rollspin::render::gl_api::glUniform1i

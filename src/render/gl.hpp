@@ -79,8 +79,10 @@
   X(glTexStorage2D) \
   X(glTexStorage2DMultisample) \
   X(glTexSubImage2D) \
+  X(glTextureView) \
   X(glUniform1f) \
   X(glUniform1i) \
+  X(glUniform1ui) \
   X(glUniform2fv) \
   X(glUniform3fv) \
   X(glUniform4fv) \
@@ -160,8 +162,10 @@ ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DECLARE)
 #define glTexStorage2D ::rollspin::render::gl_api::glTexStorage2D
 #define glTexStorage2DMultisample ::rollspin::render::gl_api::glTexStorage2DMultisample
 #define glTexSubImage2D ::rollspin::render::gl_api::glTexSubImage2D
+#define glTextureView ::rollspin::render::gl_api::glTextureView
 #define glUniform1f ::rollspin::render::gl_api::glUniform1f
 #define glUniform1i ::rollspin::render::gl_api::glUniform1i
+#define glUniform1ui ::rollspin::render::gl_api::glUniform1ui
 #define glUniform2fv ::rollspin::render::gl_api::glUniform2fv
 #define glUniform3fv ::rollspin::render::gl_api::glUniform3fv
 #define glUniform4fv ::rollspin::render::gl_api::glUniform4fv

@@ -5,6 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <map>
 #include <string>
@@ -86,6 +87,7 @@ class Program {
   void set(const char* n, const glm::vec2& v) { glUniform2fv(at(n), 1, glm::value_ptr(v)); }
   void set(const char* n, float v) { glUniform1f(at(n), v); }
   void set(const char* n, int v) { glUniform1i(at(n), v); }
+  void set(const char* n, unsigned v) { glUniform1ui(at(n), v); }
   void release() {
     if (id_ != 0) glDeleteProgram(id_);
     id_ = 0;
@@ -189,6 +191,7 @@ struct Renderer::Impl {
   // msaa = 1, over transparent black) and composited into outputFbo: samples
   // averaged, the backdrop put behind, rows flipped to top-down (see composite).
   GLuint sceneFbo = 0, sceneColor = 0, sceneDepth = 0;
+  GLuint scenePacked = 0;  // sceneColor viewed as R32UI: one packed RGBA8 word per sample
   GLuint outputFbo = 0, outputColor = 0;
   int fbWidth = 0, fbHeight = 0, fbSamples = 0;
 
@@ -258,8 +261,9 @@ struct Renderer::Impl {
     GLuint rbs[] = {sceneDepth, outputColor};
     glDeleteFramebuffers(2, fbos);
     glDeleteRenderbuffers(2, rbs);
-    glDeleteTextures(1, &sceneColor);
-    sceneFbo = outputFbo = sceneDepth = outputColor = sceneColor = 0;
+    GLuint textures[] = {scenePacked, sceneColor};
+    glDeleteTextures(2, textures);
+    sceneFbo = outputFbo = sceneDepth = outputColor = sceneColor = scenePacked = 0;
   }
 
   void ensureFramebuffers(int w, int h, int samples) {
@@ -281,6 +285,8 @@ struct Renderer::Impl {
       glTexParameteri(colorTarget, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
       glTexParameteri(colorTarget, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
+    glGenTextures(1, &scenePacked);
+    glTextureView(scenePacked, colorTarget, sceneColor, GL_R32UI, 0, 1, 0, 1);
     glGenRenderbuffers(1, &sceneDepth);
     glBindRenderbuffer(GL_RENDERBUFFER, sceneDepth);
     glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? samples : 0, GL_DEPTH_COMPONENT24, w, h);
@@ -291,7 +297,7 @@ struct Renderer::Impl {
     checkComplete();
     glGenRenderbuffers(1, &outputColor);
     glBindRenderbuffer(GL_RENDERBUFFER, outputColor);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_R32UI, w, h);  // packed RGBA8, as the composite writes it
     glGenFramebuffers(1, &outputFbo);
     glBindFramebuffer(GL_FRAMEBUFFER, outputFbo);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, outputColor);
@@ -732,12 +738,12 @@ struct Renderer::Impl {
     glDisable(GL_CULL_FACE);
     glEnable(GL_SCISSOR_TEST);
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(fbSamples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, sceneColor);
+    glBindTexture(fbSamples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, scenePacked);
     Program& p = compositeProgram(fbSamples);
     p.use();
     p.set("scene", 0);
     p.set("sourceTopRow", list.height - 1);
-    p.set("opaqueOutput", list.transparent ? 0.0f : 1.0f);
+    p.set("opaqueAlpha", list.transparent ? 0u : 255u);
     glBindVertexArray(emptyVao);
     auto pass = [&](int x, int y, int w, int h, const View* v) {
       // Output rows are image rows (top-down), so the rectangle is not flipped.
@@ -803,7 +809,9 @@ struct Renderer::Impl {
     image.height = list.height;
     image.rgba.resize(static_cast<std::size_t>(list.width) * list.height * 4);  // reused across frames
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, list.width, list.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    // One uint per pixel whose bytes in memory are R, G, B, A (see composite.frag).
+    static_assert(std::endian::native == std::endian::little, "the packed RGBA8 words assume little endian");
+    glReadPixels(0, 0, list.width, list.height, GL_RED_INTEGER, GL_UNSIGNED_INT, image.rgba.data());
     if (const GLenum err = glGetError(); err != GL_NO_ERROR)
       throw runtimeError({}, "OpenGL error 0x{:x} while rendering a {}x{} image", err, list.width, list.height);
 

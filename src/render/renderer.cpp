@@ -524,6 +524,7 @@ struct Renderer::Impl {
     mesh.set("shadowFilterRadius", u.shadowFilterRadius);
     mesh.set("cutPlane", m.cutPlane);
     mesh.set("twoSided", m.cull == Cull::None ? 1 : 0);
+    mesh.set("backFacesShown", m.cull == Cull::Front ? 1 : 0);
     mesh.set("worldFromModel", d.worldFromModel);
     mesh.set("normalWorldFromModel", glm::inverseTranspose(glm::mat3(d.worldFromModel)));
     mesh.set("color", m.color);

@@ -76,6 +76,17 @@ read -r b_wall b_rss b_cpu < <(measure ffmpeg -v error -y -f rawvideo -pix_fmt r
 rm -f "$work/frames.rgba"
 echo "(b) ffmpeg tool, raw RGBA → MP4:            ${b_wall} s  (CPU ${b_cpu} s, peak RSS $((b_rss / 1024)) MiB)"
 
+# Fairness: libx264 writes its full settings into the stream (an SEI); (a),
+# (b) and (c) must have encoded with the same ones (threads included).
+x264_options() { strings "$1" | grep -m1 -o 'options: .*' | tr ' ' '\n'; }
+if ! diff <(x264_options "$work/a.mp4") <(x264_options "$work/b.mp4") >/dev/null ||
+   ! diff <(x264_options "$work/a.mp4") <(x264_options "$work/c.mp4") >/dev/null; then
+  echo "bench_video: the x264 settings differ between (a), (b) and (c):" >&2
+  diff <(x264_options "$work/a.mp4") <(x264_options "$work/b.mp4") >&2 || true
+  exit 1
+fi
+echo "    x264 settings identical in (a), (b), (c): $(x264_options "$work/a.mp4" | grep -E '^(threads|lookahead_threads|crf|subme|ref)=' | tr '\n' ' ')"
+
 # Peak RSS of a clip 4× longer.
 read -r l_wall l_rss _ < <(measure "$bin" render "$scene" "${common[@]}" --set animation.duration="$long" \
                                  -o "$work/long.mp4")

@@ -1,6 +1,7 @@
 #include "app/animation_job.hpp"
 
 #include <fmt/format.h>
+#include <pthread.h>
 
 #include <array>
 #include <cctype>
@@ -8,10 +9,12 @@
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 
 #include "app/bounded_queue.hpp"
 #include "app/frame_clock.hpp"
+#include "app/frame_poses.hpp"
 #include "app/interrupt_guard.hpp"
 #include "app/progress_meter.hpp"
 #include "app/render_jobs.hpp"
@@ -122,7 +125,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   // estimate (three queued RGBA frames, the yuv420p copy, x264's look-ahead).
   checkFrameMemory(spec, 256);
   const RollingModel model = buildSceneModel(spec);
-  const FrameClock clock(model.path->length(), spec);
+  const FrameClock clock = clipClock(spec, model);
   const FrameRange range = o.frames ? parseFrameRange(*o.frames, clock.frameCount())
                                     : FrameRange{0, clock.frameCount() - 1};
   const scene::VideoFormat format = chooseFormat(spec, o.output);
@@ -130,9 +133,11 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
 
   fs::path out = o.output;
   if (out.empty()) {
-    // A part of a clip must not take the whole clip's name.
-    const std::string part = o.frames ? fmt::format(".frames_{}-{}", range.first, range.last) : "";
-    out = fs::path("output") / (spec.name + part + (format == scene::VideoFormat::Mp4 ? ".mp4" : ""));
+    // A part of a clip must not take the whole clip's name; PNG frames keep
+    // their clip index, so parts share the clip's folder.
+    const bool mp4 = format == scene::VideoFormat::Mp4;
+    const std::string part = o.frames && mp4 ? fmt::format(".frames_{}-{}", range.first, range.last) : "";
+    out = fs::path("output") / (spec.name + part + (mp4 ? ".mp4" : ""));
     std::error_code ec;
     fs::create_directories("output", ec);
   }
@@ -153,19 +158,22 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     media::Mp4Settings settings;
     settings.width = width;
     settings.height = height;
-    settings.fps = static_cast<int>(clock.fps());
+    settings.fpsNum = static_cast<int>(clock.fps().num);  // < 2³¹: checked by the scene loader
+    settings.fpsDen = static_cast<int>(clock.fps().den);
     settings.crf = spec.animation.crf;
     settings.preset = spec.animation.preset;
     StageLog::instance().record("encoder");
     sink = std::make_unique<media::Mp4Writer>(out, settings);
   } else {
     StageLog::instance().record("png-frames");
+    const bool wholeClip = range.first == 0 && range.last == clock.frameCount() - 1;
     sink = std::make_unique<media::PngSequenceWriter>(
-        out, range.first, spec.render.transparent ? media::PngChannels::Rgba : media::PngChannels::Rgb);
+        out, range.first, spec.render.transparent ? media::PngChannels::Rgba : media::PngChannels::Rgb,
+        wholeClip ? media::PngSequenceScope::WholeClip : media::PngSequenceScope::Part);
   }
 
   const auto texture = spec.render.layout == scene::RenderLayout::Twin ? nullptr : loadBallTexture(spec);
-  const SceneDrawer drawer(spec, model, texture);
+  const SceneDrawer drawer(spec, model, texture, makeSceneFacts(spec, model));
   const auto context = render::createOsMesaContext();
   const render::ShaderLibrary shaders(o.shaderDir);
   render::Renderer renderer(*context, shaders);
@@ -176,6 +184,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   ProgressMeter progress(range.count(), o.quiet);
   std::exception_ptr encodeError;
   std::thread encoder([&] {
+    pthread_setname_np(pthread_self(), "rollspin-encode");  // tells the stages apart in perf and top -H
     try {
       while (const auto frame = queue.pop()) {
         sink->write((*frame)->view());
@@ -188,22 +197,37 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   });
 
   const auto pool = std::make_shared<ImagePool>();
+  double poseWait = 0.0;
   try {
+    // All poses from one forward march, a frame or two ahead of us.
+    FramePoseStream poses(spec, model, clock, range);
     Frame previous;
     double previousS = std::nan("");
+    std::size_t previousSegment = 0;
+    std::optional<FrameOrientations> pose;
     for (long long k = range.first; k <= range.last; ++k) {
       if (InterruptGuard::received() != 0) break;
       const double s = clock.arcLength(k);
-      // Held frames show the same pose: the same pixels, rendered once.
-      if (!previous || s != previousS) {
+      const StoryPlace story = clock.place(k);
+      // Held frames show the same pose: the same pixels, rendered once —
+      // unless a storyboard's caption or camera changes meanwhile.
+      const bool cameraMoving = story.segment > 0 && story.seconds < std::min(SceneDrawer::kCameraMove, story.duration);
+      if (!previous || s != previousS || story.segment != previousSegment || cameraMoving) {
+        if (!pose || s != previousS) {  // the stream has one pose per distinct arc length
+          pose = poses.next();
+          if (!pose || pose->current.s != s) throw std::logic_error("frame pose stream out of step with the clock");
+        }
+        pose->story = story;
         const std::shared_ptr<media::Image> image = pool->acquire();
-        renderer.render(drawer.draw(solveFrame(spec, model, s)), *image);
+        renderer.render(drawer.draw(*pose), *image);
         previous = image;
         previousS = s;
+        previousSegment = story.segment;
       }
       if (!queue.push(previous)) break;  // the encoder failed
     }
     queue.close();
+    poseWait = poses.waitSeconds();
   } catch (...) {
     queue.abort();
     encoder.join();
@@ -213,6 +237,11 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   encoder.join();
   progress.clear();
   if (encodeError) std::rethrow_exception(encodeError);
+  if (StageLog::instance().echo())  // which stage sets the pace
+    std::fprintf(stderr,
+                 "rollspin: pipeline: %.2f s in all; the renderer waited %.2f s for poses and %.2f s on a full "
+                 "encoder queue; the encoder waited %.2f s for frames\n",
+                 progress.elapsedSeconds(), poseWait, queue.producerWaitSeconds(), queue.consumerWaitSeconds());
 
   AnimationResult result;
   result.framesRequested = range.count();
@@ -227,18 +256,22 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     else if (format == scene::VideoFormat::Mp4)
       std::fprintf(stderr, "rollspin: interrupted (%s) after %lld of %lld frames: wrote a shorter, playable video %s\n",
                    name, result.framesWritten, result.framesRequested, result.written.string().c_str());
-    else
-      std::fprintf(stderr, "rollspin: interrupted (%s) after %lld of %lld frames: %s holds complete frames %05lld to %05lld only\n",
+    else {
+      std::error_code ec;
+      const std::string untouched = fs::exists(out, ec) ? fmt::format("; {} is unchanged", out.string()) : "";
+      std::fprintf(stderr, "rollspin: interrupted (%s) after %lld of %lld frames: %s holds complete frames %05lld to "
+                           "%05lld only%s\n",
                    name, result.framesWritten, result.framesRequested, result.written.string().c_str(), range.first,
-                   range.first + result.framesWritten - 1);
+                   range.first + result.framesWritten - 1, untouched.c_str());
+    }
     return result;
   }
   result.interruptedBy = 0;  // a signal after the last frame changes nothing
   result.written = sink->finish();
   if (!o.quiet)
-    std::fprintf(stderr, "rollspin: wrote %s: %lld frames, %dx%d @ %lld fps (%.2f s of video) in %.1f s (%.1f frames/s)\n",
-                 result.written.string().c_str(), result.framesWritten, width, height, clock.fps(),
-                 double(result.framesWritten) / double(clock.fps()), seconds,
+    std::fprintf(stderr, "rollspin: wrote %s: %lld frames, %dx%d @ %s fps (%.2f s of video) in %.1f s (%.1f frames/s)\n",
+                 result.written.string().c_str(), result.framesWritten, width, height, clock.fps().describe().c_str(),
+                 double(result.framesWritten) / clock.fps().value(), seconds,
                  seconds > 0.0 ? double(result.framesWritten) / seconds : 0.0);
   return result;
 }

@@ -2,8 +2,11 @@
 // consumer thread. The producer blocks while the queue is full, so memory
 // stays bounded however long the stream; close() ends the stream (the
 // consumer drains what is left), abort() ends it and drops what is left.
+// It keeps the time each side spent blocked, so a pipeline can say which of
+// its stages sets the pace (`--verbose`).
 #pragma once
 
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
@@ -20,7 +23,12 @@ class BoundedQueue {
   // Blocks while full; false when the queue was closed (the item is dropped).
   bool push(T item) {
     std::unique_lock lock(mutex_);
-    notFull_.wait(lock, [&] { return closed_ || items_.size() < capacity_; });
+    const auto ready = [&] { return closed_ || items_.size() < capacity_; };
+    if (!ready()) {
+      const auto start = Clock::now();
+      notFull_.wait(lock, ready);
+      pushWait_ += Clock::now() - start;
+    }
     if (closed_) return false;
     items_.push_back(std::move(item));
     notEmpty_.notify_one();
@@ -30,7 +38,12 @@ class BoundedQueue {
   // Blocks while empty and open; nullopt once closed and drained.
   std::optional<T> pop() {
     std::unique_lock lock(mutex_);
-    notEmpty_.wait(lock, [&] { return closed_ || !items_.empty(); });
+    const auto ready = [&] { return closed_ || !items_.empty(); };
+    if (!ready()) {
+      const auto start = Clock::now();
+      notEmpty_.wait(lock, ready);
+      popWait_ += Clock::now() - start;
+    }
     if (items_.empty()) return std::nullopt;
     T item = std::move(items_.front());
     items_.pop_front();
@@ -45,6 +58,17 @@ class BoundedQueue {
     notFull_.notify_all();
   }
 
+  // Seconds the producer spent blocked on a full queue, and the consumer on
+  // an empty one.
+  [[nodiscard]] double producerWaitSeconds() const {
+    std::lock_guard lock(mutex_);
+    return std::chrono::duration<double>(pushWait_).count();
+  }
+  [[nodiscard]] double consumerWaitSeconds() const {
+    std::lock_guard lock(mutex_);
+    return std::chrono::duration<double>(popWait_).count();
+  }
+
   void abort() {
     std::lock_guard lock(mutex_);
     closed_ = true;
@@ -54,11 +78,13 @@ class BoundedQueue {
   }
 
  private:
-  std::mutex mutex_;
+  using Clock = std::chrono::steady_clock;
+  mutable std::mutex mutex_;
   std::condition_variable notFull_, notEmpty_;
   std::deque<T> items_;
   std::size_t capacity_;
   bool closed_ = false;
+  Clock::duration pushWait_{}, popWait_{};
 };
 
 }  // namespace rollspin::app

@@ -10,6 +10,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "app/draw_facts.hpp"
 #include "render/mesh_builders.hpp"
 #include "render/procedural_textures.hpp"
 #include "spin/field.hpp"
@@ -53,34 +54,49 @@ Vec3 towardEye(const OrbitAngles& a) {
 
 }  // namespace
 
+TrailGrid trailGrid(const scene::SceneSpec& spec, const RollingModel& model) {
+  TrailGrid grid;
+  grid.length = model.path->length();
+  if (!spec.render.trails) return grid;
+  // Fine enough that the Bloch trail is a smooth curve: ≥ 240 points over the
+  // whole path, 120 per turn of the path or of the ball.
+  const double ballTurns = spin::integratedFieldStrength(*model.path, model.ballRadius) / (2.0 * std::numbers::pi);
+  const double points = std::max(240.0, 120.0 * std::max(ballTurns, model.path->turns()));
+  grid.count = static_cast<std::size_t>(std::clamp(std::ceil(points), 1.0, 20000.0)) + 1;
+  return grid;
+}
+
+std::vector<double> strobeArcLengths(const scene::SceneSpec& spec, const RollingModel& model) {
+  std::vector<double> out;
+  const long long n = spec.render.strobe;
+  if (n <= 1) return out;
+  StageLog::instance().record("strobe");
+  const double length = model.path->length();
+  // A closed circuit would repeat its start at s = L: spread N over [0, L).
+  const double denominator = isCircuit(model) && std::abs(model.path->turns() - std::round(model.path->turns())) < 1e-9
+                                 ? double(n)
+                                 : double(n - 1);
+  for (long long j = 0; j < n; ++j) out.push_back(std::min(length, length * double(j) / denominator));
+  return out;
+}
+
 FrameSampling frameSampling(const scene::SceneSpec& spec, const RollingModel& model, double s) {
   FrameSampling out;
-  const double length = model.path->length();
-  // Trail: fine enough that the Bloch trail is a smooth curve (≥ 240 points
-  // over the whole path, ≥ 2 over [0, s]).
-  const double ballTurns = spin::integratedFieldStrength(*model.path, model.ballRadius) / (2.0 * std::numbers::pi);
-  const double perUnit = std::max(240.0, 120.0 * std::max(ballTurns, model.path->turns())) / length;
-  const auto count = static_cast<std::size_t>(std::clamp(std::ceil(perUnit * s), 1.0, 20000.0)) + 1;
-  if (spec.render.trails) {
+  const TrailGrid grid = trailGrid(spec, model);
+  if (grid.count > 0) {
     StageLog::instance().record("trails");
-    for (std::size_t i = 0; i < count; ++i) out.trail.push_back(s * double(i) / double(count - 1));
-    out.trail.back() = s;
+    out.trail.push_back(grid.at(0));
+    for (std::size_t i = 1; i < grid.count && grid.at(i) < s; ++i) out.trail.push_back(grid.at(i));
+    out.trail.push_back(s);
   }
-  const long long n = spec.render.strobe;
-  if (n > 1) {
-    StageLog::instance().record("strobe");
-    // A closed circuit would repeat its start at s = L: spread N over [0, L).
-    const double denominator = isCircuit(model) && std::abs(model.path->turns() - std::round(model.path->turns())) < 1e-9
-                                   ? double(n)
-                                   : double(n - 1);
-    for (long long j = 0; j < n; ++j) out.strobe.push_back(std::min(length, length * double(j) / denominator));
-  }
+  out.strobe = strobeArcLengths(spec, model);
   return out;
 }
 
 SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model,
-                         std::shared_ptr<const render::TextureImage> ballTexture)
-    : spec_(spec), model_(model), ballTexture_(std::move(ballTexture)) {
+                         std::shared_ptr<const render::TextureImage> ballTexture,
+                         std::shared_ptr<const SceneFacts> facts)
+    : spec_(spec), model_(model), ballTexture_(std::move(ballTexture)), facts_(std::move(facts)) {
   const double R = model.ballRadius;
   const double length = model.path->length();
   const geometry::DarbouxSample start = model.path->at(0.0);
@@ -100,11 +116,35 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
     lo = lo.cwiseMin(c - Vec3::Constant(R));
     hi = hi.cwiseMax(c + Vec3::Constant(R));
   }
+  // Cameras: [render]'s (with the defaults orbitAngles derives), then each
+  // segment's keys laid over the previous segment's camera.
+  const OrbitAngles base = orbitAngles(spec, model);
+  Shot shot{base.azimuth, base.elevation, spec.render.fovDeg, std::nullopt, spec.render.distance, spec.render.follow};
+  if (spec.render.target) shot.target = Vec3((*spec.render.target)[0], (*spec.render.target)[1], (*spec.render.target)[2]);
+  titleBand_ = !spec.render.title.empty();
+  for (const scene::SegmentSpec& seg : spec.segments) {
+    const scene::CameraSpec& c = seg.camera;
+    if (c.azimuthDeg) shot.azimuth = *c.azimuthDeg * kDeg;
+    if (c.elevationDeg) shot.elevation = *c.elevationDeg * kDeg;
+    if (c.fovDeg) shot.fovDeg = *c.fovDeg;
+    if (c.distance) shot.distance = *c.distance;
+    if (c.follow) shot.follow = *c.follow;
+    if (c.follow && *c.follow) shot.target.reset();
+    if (c.target) {
+      shot.target = Vec3((*c.target)[0], (*c.target)[1], (*c.target)[2]);
+      shot.follow = false;
+    }
+    shots_.push_back(shot);
+    if (seg.title && !seg.title->empty()) titleBand_ = true;
+  }
+  if (shots_.empty()) shots_.push_back(shot);
+
   dotMesh_ = render::uvSphere(24, 12);  // small dots need few triangles
   const bool layoutShowsTwin = spec.render.layout != scene::RenderLayout::Ball;
   if (layoutShowsTwin) {
     StageLog::instance().record("twin-geometry");
     blochSphereMesh_ = render::uvSphere(64, 32);
+    if (facts_ && facts_->phaseSplit) fieldConeMesh_ = coneMesh(facts_->phaseSplit->fieldLoop);
   }
   const bool layoutShowsBall = spec.render.layout != scene::RenderLayout::Twin;
   if (!layoutShowsBall) return;  // the twin needs none of the surface geometry
@@ -241,6 +281,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
   }
   frameCentre_ = 0.5 * (lo + hi);
   frameRadius_ = 0.5 * (hi - lo).norm();
+
 }
 
 namespace {
@@ -349,18 +390,41 @@ OrbitAngles orbitAngles(const scene::SceneSpec& spec, const RollingModel& model)
 
 }  // namespace
 
-render::View SceneDrawer::ballCamera(int x, int y, int w, int h, double s) const {
-  const OrbitAngles a = orbitAngles(spec_, model_);
+SceneDrawer::Aim SceneDrawer::aimOf(const Shot& shot, int w, int h, double s) const {
+  const OrbitAngles a{shot.azimuth, shot.elevation};
   const double R = model_.ballRadius;
   const double aspect = double(w) / double(std::max(h, 1));
-  auto [target, distance] = fitPoints(framePoints_, R, a, spec_.render.fovDeg, aspect);
-  if (spec_.render.follow) {
+  auto [target, distance] = fitPoints(framePoints_, R, a, shot.fovDeg, aspect);
+  if (shot.follow) {
     target = model_.path->at(s).centre(R);
-    distance = fitDistance(4.0 * R, spec_.render.fovDeg, aspect);
+    distance = fitDistance(4.0 * R, shot.fovDeg, aspect);
   }
-  if (spec_.render.target) target = Vec3((*spec_.render.target)[0], (*spec_.render.target)[1], (*spec_.render.target)[2]);
-  if (spec_.render.distance) distance = *spec_.render.distance;
-  render::View v = orbitView(x, y, w, h, toGlm(target), distance, a, spec_.render.fovDeg, frameRadius_ + 3.0 * R);
+  if (shot.target) target = *shot.target;
+  if (shot.distance) distance = *shot.distance;
+  return {target, distance, shot.azimuth, shot.elevation, shot.fovDeg};
+}
+
+SceneDrawer::Aim SceneDrawer::aimAt(const StoryPlace& story, int w, int h, double s) const {
+  const std::size_t k = std::min(story.segment, shots_.size() - 1);
+  const Aim to = aimOf(shots_[k], w, h, s);
+  const double move = std::min(kCameraMove, story.duration);
+  if (k == 0 || !(story.seconds < move)) return to;
+  // On the way from the previous segment's camera: eased, the azimuth the
+  // short way round. Equal cameras blend to themselves exactly.
+  const Aim from = aimOf(shots_[k - 1], w, h, s);
+  const double x = ease(scene::Easing::Smooth, story.seconds / move);
+  auto mix = [x](double a, double b) { return a + (b - a) * x; };
+  const double turn = std::remainder(to.azimuth - from.azimuth, 2.0 * std::numbers::pi);
+  return {from.target + (to.target - from.target) * x, mix(from.distance, to.distance), from.azimuth + turn * x,
+          mix(from.elevation, to.elevation), mix(from.fovDeg, to.fovDeg)};
+}
+
+render::View SceneDrawer::ballCamera(int x, int y, int w, int h, double s, const StoryPlace& story) const {
+  const Aim aim = aimAt(story, w, h, s);
+  const OrbitAngles a{aim.azimuth, aim.elevation};
+  const double R = model_.ballRadius;
+  const Vec3 target = aim.target;
+  render::View v = orbitView(x, y, w, h, toGlm(target), aim.distance, a, aim.fovDeg, frameRadius_ + 3.0 * R);
   glm::vec3 up(0, 0, 1);
   if (const auto* plane = dynamic_cast<const geometry::Plane*>(model_.surface.get())) up = toGlm(plane->normal());
   const glm::vec3 eyeDir = glm::normalize(v.camera.position - toGlm(target));
@@ -386,7 +450,12 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
   const float text = std::max(11.0f, float(H) / 42.0f);
 
   int top = 0;
-  if (!rs.title.empty()) {
+  // A segment's title replaces render.title while it plays; the band stays
+  // for the whole clip when any title is set, so the views never jump.
+  const scene::SegmentSpec* segment =
+      spec_.segments.empty() ? nullptr : &spec_.segments[std::min(frame.story.segment, spec_.segments.size() - 1)];
+  const std::string& titleText = segment && segment->title ? *segment->title : rs.title;
+  if (titleBand_) {
     top = static_cast<int>(std::lround(text * 2.4f));
     render::View band;
     band.width = W;
@@ -395,20 +464,21 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
     band.light.shadow = false;
     list.views.push_back(band);
     render::LabelItem title;
-    title.text = rs.title;
+    title.text = titleText;
     title.anchor = glm::vec3(0.5f * W, 0.5f * top, 0.0f);
     title.align = render::Align::Center;
     title.sizePx = text * 1.35f;
     title.bold = true;
     title.color = kTextColor;
-    list.labels.push_back(title);
+    if (!titleText.empty()) list.labels.push_back(title);
   }
   const int bodyHeight = H - top;
   switch (rs.layout) {
     case scene::RenderLayout::SideBySide: {
       const int ballWidth = static_cast<int>(std::lround(W * 0.6));
-      list.views.push_back(ballCamera(0, top, ballWidth, bodyHeight, frame.current.s));
+      list.views.push_back(ballCamera(0, top, ballWidth, bodyHeight, frame.current.s, frame.story));
       addBallView(list, frame, int(list.views.size()) - 1);
+      addCaption(list, frame, int(list.views.size()) - 1);
       render::View twin;
       twin.x = ballWidth;
       twin.y = top;
@@ -419,8 +489,9 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
       break;
     }
     case scene::RenderLayout::Inset: {
-      list.views.push_back(ballCamera(0, top, W, bodyHeight, frame.current.s));
+      list.views.push_back(ballCamera(0, top, W, bodyHeight, frame.current.s, frame.story));
       addBallView(list, frame, int(list.views.size()) - 1);
+      addCaption(list, frame, int(list.views.size()) - 1);
       const int margin = static_cast<int>(std::lround(H * 0.025));
       const int side = static_cast<int>(std::lround(std::min(W, bodyHeight) * 0.42));
       render::View twin;
@@ -434,8 +505,9 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
       break;
     }
     case scene::RenderLayout::Ball:
-      list.views.push_back(ballCamera(0, top, W, bodyHeight, frame.current.s));
+      list.views.push_back(ballCamera(0, top, W, bodyHeight, frame.current.s, frame.story));
       addBallView(list, frame, int(list.views.size()) - 1);
+      addCaption(list, frame, int(list.views.size()) - 1);
       break;
     case scene::RenderLayout::Twin: {
       render::View twin;
@@ -444,10 +516,30 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
       twin.height = bodyHeight;
       list.views.push_back(twin);
       addTwinView(list, frame, int(list.views.size()) - 1);
+      addCaption(list, frame, int(list.views.size()) - 1);
       break;
     }
   }
   return list;
+}
+
+// A storyboard segment's caption, centred under the view's heading row. It
+// is the lecturer's own text, so it shows even with render.labels = false.
+void SceneDrawer::addCaption(render::DrawList& list, const FrameOrientations& frame, int view) const {
+  if (spec_.segments.empty()) return;
+  const std::string& caption = spec_.segments[std::min(frame.story.segment, spec_.segments.size() - 1)].caption;
+  if (caption.empty()) return;
+  const render::View& v = list.views[static_cast<std::size_t>(view)];
+  const float text = std::max(11.0f, float(list.height) / 42.0f);
+  render::LabelItem label;
+  label.view = view;
+  label.text = caption;
+  label.anchor = glm::vec3(0.5f * float(v.width), text * 0.8f + text * 2.1f, 0.0f);
+  label.align = render::Align::Center;
+  label.sizePx = text * 1.2f;
+  label.bold = true;
+  label.color = glm::vec4(0.55f, 0.12f, 0.02f, 1.0f);
+  list.labels.push_back(label);
 }
 
 void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& frame, int view) const {
@@ -527,7 +619,7 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
     const double thickness = 0.08 * R;
     // The plate point above the circle's far side traces the circle of
     // radius R1 = ratio · r about the contact circle's centre.
-    const Vec3 plateCentre = plateCircleCentre_ + ratio * (f.point - plateCircleCentre_) + 2.0 * R * f.normal;
+    const Vec3 plateCentre = platePoint(s, 0.0);
     const double contactRadius = (f.point - plateCircleCentre_).norm();
     const double discRadius = (ratio - 1.0) * contactRadius + 1.5 * R;
     const glm::vec3 n = toGlm(f.normal);
@@ -568,12 +660,11 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
     plateTrail.view = view;
     for (std::size_t i = 0; i < pathS_.size(); ++i) {
       if (pathS_[i] > s) break;
-      const Vec3 p = plateCircleCentre_ + ratio * (pathPoints_[i] - plateCircleCentre_) +
-                     (2.0 * R + thickness * 1.05) * model_.path->normal(pathS_[i]);
-      plateTrail.points.push_back(toGlm(p));
+      plateTrail.points.push_back(toGlm(platePoint(pathS_[i], thickness * 1.05)));
     }
     list.polylines.push_back(plateTrail);
   }
+  if (facts_ && facts_->marks) addMarks(list, s, view);
 
   if (spec_.render.labels) {
     const float margin = text * 0.8f;
@@ -600,6 +691,77 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
       l.color = kTextColor;
       list.labels.push_back(l);
     }
+    if (facts_) addFactLabels(list, frame, view, margin + text * 2.0f);
+  }
+}
+
+Vec3 SceneDrawer::platePoint(double s, double lift) const {
+  const geometry::DarbouxSample f = model_.path->at(s);
+  return plateCircleCentre_ + model_.plate->contactSpeedRatio * (f.point - plateCircleCentre_) +
+         (2.0 * model_.ballRadius + lift) * f.normal;
+}
+
+// The marks every β of path angle: dots on the contact path (dark once
+// passed) and, with Brockett's plate, on the plate's trail; numbered.
+void SceneDrawer::addMarks(render::DrawList& list, double s, int view) const {
+  const double R = model_.ballRadius;
+  const float text = std::max(11.0f, float(list.height) / 42.0f);
+  const MarksFact& m = *facts_->marks;
+  const int passed = facts_->marksPassed(s);
+  for (std::size_t k = 0; k < m.s.size(); ++k) {
+    const bool done = int(k) < passed;
+    render::Material dot;
+    dot.color = done ? glm::vec3(0.05f, 0.05f, 0.08f) : glm::vec3(0.45f, 0.45f, 0.5f);
+    dot.castsShadow = false;
+    const geometry::DarbouxSample f = model_.path->at(m.s[k]);
+    const Vec3 onPath = f.point + 0.02 * R * f.normal;
+    list.meshes.push_back({dotMesh_,
+                           glm::translate(glm::mat4(1.0f), toGlm(onPath)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.06 * R))),
+                           dot, view});
+    if (model_.plate && done) {
+      const Vec3 onPlate = platePoint(m.s[k], 0.06 * R);
+      list.meshes.push_back({dotMesh_,
+                             glm::translate(glm::mat4(1.0f), toGlm(onPlate)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.05 * R))),
+                             dot, view});
+    }
+    if (!spec_.render.labels) continue;
+    render::LabelItem number;
+    number.view = view;
+    number.text = fmt::format("{}", k);
+    // Outward from the circle's centre, so the number sits beside the path.
+    // Outward: u = n × t points to the centre where κ_g > 0.
+    number.anchor = toGlm(onPath - std::copysign(0.4 * R, f.geodesicCurvature) * f.tangentNormal);
+    number.worldAnchored = true;
+    number.align = render::Align::Center;
+    number.sizePx = text * 0.9f;
+    number.bold = true;
+    number.color = done ? kTextColor : glm::vec4(0.25f, 0.26f, 0.30f, 1.0f);
+    list.labels.push_back(number);
+  }
+}
+
+// The scene's facts (draw_facts formats them) under the view's heading.
+void SceneDrawer::addFactLabels(render::DrawList& list, const FrameOrientations& frame, int view, float top) const {
+  const float text = std::max(11.0f, float(list.height) / 42.0f);
+  const float margin = text * 0.8f;
+  const std::vector<std::string> lines = factLines(*facts_, frame, model_.path->length());
+  // Small images: shrink the lines until the longest fits the view (DejaVu
+  // Sans averages under 0.6 em per character), rather than clip them.
+  std::size_t longest = 1;
+  for (const auto& line : lines)
+    longest = std::max<std::size_t>(longest, std::count_if(line.begin(), line.end(), [](char c) {
+                                      return (static_cast<unsigned char>(c) & 0xC0) != 0x80;  // UTF-8 lead bytes
+                                    }));
+  const float width = float(list.views[static_cast<std::size_t>(view)].width) - 2.0f * margin;
+  const float size = std::max(7.0f, std::min(text * 0.9f, width / (0.6f * float(longest))));
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    render::LabelItem l;
+    l.view = view;
+    l.text = lines[i];
+    l.anchor = glm::vec3(margin, top + float(i) * size * 1.45f, 0.0f);
+    l.sizePx = size;
+    l.color = kTextColor;
+    list.labels.push_back(l);
   }
 }
 
@@ -608,12 +770,12 @@ void SceneDrawer::addTwinView(render::DrawList& list, const FrameOrientations& f
   const float text = std::max(11.0f, float(list.height) / 42.0f);
   // Same viewing direction as the ball's camera, so the marker on the ball
   // and the Bloch arrow point the same way on screen.
-  const OrbitAngles a = orbitAngles(spec_, model_);
+  const Aim aim = aimAt(frame.story, v.width, v.height, frame.current.s);
+  const OrbitAngles a{aim.azimuth, aim.elevation};
   const double aspect = double(v.width) / double(std::max(v.height, 1));
   const double sceneRadius = 1.42;
   render::View oriented = orbitView(v.x, v.y, v.width, v.height, glm::vec3(0.0f, 0.0f, -0.04f),
-                                    fitDistance(sceneRadius, spec_.render.fovDeg, aspect), a, spec_.render.fovDeg,
-                                    sceneRadius);
+                                    fitDistance(sceneRadius, aim.fovDeg, aspect), a, aim.fovDeg, sceneRadius);
   v.camera = oriented.camera;
   v.light = keyLight(glm::vec3(0, 0, 1), glm::normalize(v.camera.position), glm::vec3(0.0f), 1.5f);
   v.light.shadow = false;
@@ -679,6 +841,16 @@ void SceneDrawer::addTwinView(render::DrawList& list, const FrameOrientations& f
   }
   list.polylines.push_back(fieldTrail);
   list.polylines.push_back(blochTrail);
+  if (fieldConeMesh_) {
+    // The cone B̂ sweeps over the whole circuit: its solid angle is Berry's phase.
+    render::Material cone;
+    cone.color = kFieldColor;
+    cone.opacity = 0.18f;
+    cone.lit = false;
+    cone.castsShadow = false;
+    cone.cull = render::Cull::None;
+    list.meshes.push_back({fieldConeMesh_, glm::mat4(1.0f), cone, view});
+  }
 
   const Vec3 x = frame.current.q.rotate(markerBody_);
   list.arrows.push_back({glm::vec3(0.0f), toGlm(x), arrowRadius, kMarkerColor, view});

@@ -16,20 +16,103 @@ FrameClock::FrameClock(double pathLength, const scene::SceneSpec& spec)
   const scene::AnimationSpec& a = spec.animation;
   const std::string timeKey = a.speed ? "animation.speed" : "animation.duration";
   const double seconds = a.speed ? pathLength / *a.speed : a.duration;
-  const double motion = std::round(seconds * double(fps_));
-  const double hold = std::round(a.hold * double(fps_));
+  // Frames = seconds · num / den, rounded: 10 s at 30000/1001 is 300 frames
+  // (299.7 rounded), lasting 10.01 s.
+  const double rate = double(fps_.num) / double(fps_.den);
+  const double motion = std::round(seconds * rate);
+  const double hold = std::round(a.hold * rate);
   if (!(motion >= 2.0))
     throw badInput(spec.where(timeKey), "{}: {:.6g} s at {} fps is {} frame(s); an animation needs at least 2",
-                   timeKey, seconds, fps_, motion);
+                   timeKey, seconds, fps_.describe(), motion);
   if (motion + 2.0 * hold > double(kMaxFrames))
     throw badInput(spec.where(motion > double(kMaxFrames) / 2 ? timeKey : "animation.hold"),
                    "the clip would have {:.0f} frames ({:.6g} s of motion, {:.6g} s holds at {} fps); the limit is {}",
-                   motion + 2.0 * hold, seconds, a.hold, fps_, kMaxFrames);
+                   motion + 2.0 * hold, seconds, a.hold, fps_.describe(), kMaxFrames);
   motionFrames_ = static_cast<long long>(motion);
   holdFrames_ = static_cast<long long>(hold);
+  frameCount_ = motionFrames_ + 2 * holdFrames_;
+}
+
+std::vector<double> FrameClock::segmentSeconds(std::span<const SegmentSpan> spans, const scene::SceneSpec& spec) {
+  const double total = spans.empty() ? 0.0 : spans.back().end;
+  std::vector<double> seconds;
+  for (std::size_t k = 0; k < spec.segments.size(); ++k) {
+    const scene::SegmentSpec& seg = spec.segments[k];
+    const double L = spans[k].end - spans[k].start;
+    if (!seg.path) seconds.push_back(0.0);
+    else if (seg.duration) seconds.push_back(*seg.duration);
+    else if (seg.speed) seconds.push_back(L / *seg.speed);
+    else if (spec.animation.speed) seconds.push_back(L / *spec.animation.speed);
+    else seconds.push_back(spec.animation.duration * L / total);
+  }
+  return seconds;
+}
+
+FrameClock::FrameClock(std::span<const SegmentSpan> spans, const scene::SceneSpec& spec)
+    : length_(0.0), fps_(spec.animation.fps), motionFrames_(0), holdFrames_(0), easing_(spec.animation.easing) {
+  const double fps = fps_.value();
+  const double hold = std::round(spec.animation.hold * fps);
+  const std::vector<double> seconds = segmentSeconds(spans, spec);
+  double frames = std::max(hold, 1.0);
+  long long lastFirst = 0;
+  std::vector<Stage> stages{{0, static_cast<long long>(frames), 0, 0, 0.0, 0.0, false}};
+  for (std::size_t k = 0; k < spec.segments.size(); ++k) {
+    const scene::SegmentSpec& seg = spec.segments[k];
+    const std::string key = scene::SceneSpec::segmentKey(k);
+    const double n = std::round((seg.path ? seconds[k] : seg.hold) * fps);
+    if (seg.path && !(n >= 1.0)) {
+      const std::string timeKey = seg.duration ? key + ".duration"
+                                  : seg.speed  ? key + ".speed"
+                                               : (spec.animation.speed ? "animation.speed" : "animation.duration");
+      throw badInput(spec.where(timeKey), "{}: the motion of {} lasts {:.6g} s, less than one frame at {} fps", timeKey,
+                     key, seconds[k], fps_.describe());
+    }
+    if (frames + n + hold > double(kMaxFrames))
+      throw badInput(spec.where(key), "{}: the storyboard would have more than {} frames at {} fps", key, kMaxFrames,
+                     fps_.describe());
+    const auto first = static_cast<long long>(frames);
+    // Segment 1's time runs from the clip's first frame (the opening hold shows it).
+    const long long segmentFirst = k == 0 ? 0 : first;
+    if (n >= 1.0)
+      stages.push_back({first, static_cast<long long>(n), k, segmentFirst, spans[k].start, spans[k].end,
+                        seg.path.has_value()});
+    if (k + 1 == spec.segments.size()) lastFirst = segmentFirst;
+    frames += n;
+    if (seg.path) motionFrames_ += static_cast<long long>(n);
+  }
+  const double s = spans.empty() ? 0.0 : spans.back().end;
+  length_ = s;
+  holdFrames_ = static_cast<long long>(hold);
+  // The closing hold belongs to the last segment: its time keeps running.
+  stages.push_back({static_cast<long long>(frames), holdFrames_, spec.segments.size() - 1, lastFirst, s, s, false});
+  frameCount_ = static_cast<long long>(frames) + holdFrames_;
+  stages_ = std::move(stages);
+}
+
+const FrameClock::Stage& FrameClock::stageAt(long long frame) const {
+  // The last stage whose first frame is ≤ frame (empty stages never win: a
+  // later stage with the same first frame follows them).
+  const auto it = std::upper_bound(stages_.begin(), stages_.end(), frame,
+                                   [](long long f, const Stage& st) { return f < st.first; });
+  return *(it == stages_.begin() ? it : it - 1);
+}
+
+StoryPlace FrameClock::place(long long frame) const {
+  // Frame k starts k · den / num seconds into the clip (exact rationals).
+  auto seconds = [this](long long frames) { return double(frames) * double(fps_.den) / double(fps_.num); };
+  if (stages_.empty()) return {0, seconds(frame), seconds(frameCount_)};
+  const Stage& st = stageAt(frame);
+  return {st.segment, std::max(0.0, seconds(frame - st.segmentFirst)), seconds(st.frames)};
 }
 
 double FrameClock::arcLength(long long frame) const {
+  if (!stages_.empty()) {
+    const Stage& st = stageAt(frame);
+    if (!st.motion) return st.s0;
+    const long long j = frame - st.first + 1;  // 1 … N
+    if (j >= st.frames) return st.s1;          // exactly the segment's end
+    return std::min(st.s1, st.s0 + (st.s1 - st.s0) * ease(easing_, double(j) / double(st.frames)));
+  }
   const long long j = frame - holdFrames_;
   if (j <= 0) return 0.0;
   if (j >= motionFrames_ - 1) return length_;

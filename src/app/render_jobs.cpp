@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/solve_job.hpp"
+#include "app/frame_poses.hpp"
 #include "media/image_io.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
@@ -53,12 +53,7 @@ FrameOrientations solveFrame(const scene::SceneSpec& spec, const RollingModel& m
   std::sort(all.begin(), all.end());
   all.erase(std::unique(all.begin(), all.end()), all.end());
   std::vector<spin::Su2> orientation(all.size());
-  const SolverChoice choice = chooseSolver(spec, model);
-  const spin::Propagator propagator(*model.path, model.ballRadius, choice.method, choice.steps);
-  const spin::SolveStats stats =
-      propagator.run(all, [&](std::size_t i, double, const spin::Su2& q) { orientation[i] = q; });
-  if (stats.status != spin::SolveStatus::Ok)
-    throw runtimeError(spec.where("solver.method"), "solver failed: {}", spin::statusMessage(stats.status));
+  marchScene(spec, model, all, [&](std::size_t i, double, const spin::Su2& q) { orientation[i] = q; });
   auto lookup = [&](double x) {
     const auto it = std::lower_bound(all.begin(), all.end(), x);
     return OrientedSample{x, orientation[static_cast<std::size_t>(it - all.begin())]};
@@ -68,6 +63,18 @@ FrameOrientations solveFrame(const scene::SceneSpec& spec, const RollingModel& m
   for (double x : sampling.trail) frame.trail.push_back(lookup(x));
   for (double x : sampling.strobe) frame.strobe.push_back(lookup(x));
   return frame;
+}
+
+FrameClock clipClock(const scene::SceneSpec& spec, const RollingModel& model) {
+  if (!spec.isStoryboard()) return FrameClock(model.path->length(), spec);
+  return FrameClock(model.segments, spec);
+}
+
+StoryPlace storyPlaceAt(const RollingModel& model, double s) {
+  StoryPlace place;
+  for (std::size_t k = 0; k < model.segments.size(); ++k)
+    if (model.segments[k].end > model.segments[k].start && model.segments[k].start <= s) place.segment = k;
+  return place;
 }
 
 std::shared_ptr<const render::TextureImage> loadBallTexture(const scene::SceneSpec& spec) {
@@ -126,8 +133,9 @@ std::filesystem::path renderStill(const StillOptions& o) {
     std::filesystem::create_directories("output");
     out = std::filesystem::path("output") / (spec.name + ".png");
   }
-  const FrameOrientations frame = solveFrame(spec, model, s);
-  const SceneDrawer drawer(spec, model, texture);
+  FrameOrientations frame = solveFrame(spec, model, s);
+  frame.story = storyPlaceAt(model, s);
+  const SceneDrawer drawer(spec, model, texture, makeSceneFacts(spec, model));
   const render::DrawList list = drawer.draw(frame);
 
   const auto context = render::createOsMesaContext();

@@ -31,6 +31,12 @@ struct ArcPosition {
 // Runs the propagator once for the frame's arc lengths (trail, strobe, s).
 [[nodiscard]] FrameOrientations solveFrame(const scene::SceneSpec& spec, const RollingModel& model, double s);
 
+// The animation's clock: the scene's path, or its storyboard's segments.
+[[nodiscard]] FrameClock clipClock(const scene::SceneSpec& spec, const RollingModel& model);
+// Which storyboard segment a still at s shows: the motion that starts last
+// at or before s (a join shows the segment starting there).
+[[nodiscard]] StoryPlace storyPlaceAt(const RollingModel& model, double s);
+
 // The ball texture named by ball.texture (resolved against the scene file's
 // folder, or the working directory for --set), or null for the built-in one.
 // A missing or corrupt file is BadInput at ball.texture.

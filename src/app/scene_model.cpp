@@ -8,6 +8,7 @@
 #include "app/surface_model.hpp"
 #include "geometry/analytic_paths.hpp"
 #include "geometry/clothoid_path.hpp"
+#include "geometry/joined_path.hpp"
 #include "spin/field.hpp"
 
 namespace rollspin::app {
@@ -16,7 +17,17 @@ namespace {
 geometry::Vec3 toVec(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
 }  // namespace
 
-RollingModel buildModel(const scene::SceneSpec& spec) {
+namespace {
+
+// Where a plane path starts: the origin along its own direction (a scene's
+// [path], a storyboard's first segment), or a point and a heading (the
+// previous segment's end).
+struct Placement {
+  geometry::Vec3 start = geometry::Vec3::Zero();
+  std::optional<geometry::Vec3> heading;
+};
+
+RollingModel buildPathModel(const scene::SceneSpec& spec, const Placement& place) {
   if (!isAnalyticScene(spec)) return buildSurfaceModel(spec);  // curved surfaces, any curve (surface_model.cpp)
   RollingModel model;
   model.ballRadius = spec.ball.radius;
@@ -25,16 +36,16 @@ RollingModel buildModel(const scene::SceneSpec& spec) {
   if (spec.surface.kind == scene::SurfaceKind::Plane) {
     auto plane = std::make_shared<const geometry::Plane>(toVec(spec.surface.normal));
     model.surface = plane;
-    const geometry::Vec3 e1 = spec.path.directionVector ? toVec(*spec.path.directionVector)
-                                                        : geometry::defaultTangentFor(plane->normal());
+    const geometry::Vec3 e1 = place.heading                ? *place.heading
+                              : spec.path.directionVector ? toVec(*spec.path.directionVector)
+                                                          : geometry::defaultTangentFor(plane->normal());
     switch (spec.path.kind) {
       case scene::PathKind::Line:
-        model.path = std::make_unique<geometry::PlaneLinePath>(plane, geometry::Vec3::Zero(), e1, spec.path.length);
+        model.path = std::make_unique<geometry::PlaneLinePath>(plane, place.start, e1, spec.path.length);
         break;
       case scene::PathKind::Clothoid:
-        model.path = std::make_unique<geometry::PlaneClothoidPath>(plane, geometry::Vec3::Zero(), e1,
-                                                                   spec.path.curvatureStart, spec.path.curvatureRate,
-                                                                   spec.path.length);
+        model.path = std::make_unique<geometry::PlaneClothoidPath>(plane, place.start, e1, spec.path.curvatureStart,
+                                                                   spec.path.curvatureRate, spec.path.length);
         break;
       case scene::PathKind::Circle: {
         double radius = spec.path.radius;
@@ -53,6 +64,15 @@ RollingModel buildModel(const scene::SceneSpec& spec) {
           radius = plate.radius / plate.contactSpeedRatio;
           model.plate = plate;
         }
+        if (place.heading) {
+          // Start at the given point moving along the heading h: the circle
+          // starts at centre + r e1 moving along σ n × e1, so e1 = σ h × n.
+          const double sense = spec.path.counterClockwise ? 1.0 : -1.0;
+          const geometry::Vec3 radial = sense * place.heading->cross(plane->normal());
+          model.path = std::make_unique<geometry::PlaneCirclePath>(plane, place.start - radius * radial, radial,
+                                                                   radius, spec.path.turns, spec.path.counterClockwise);
+          break;
+        }
         model.path = std::make_unique<geometry::PlaneCirclePath>(plane, geometry::Vec3::Zero(), e1, radius,
                                                                  spec.path.turns, spec.path.counterClockwise);
         if (model.plate) model.plate->initialTopPoint = model.path->point(0.0) + 2.0 * R * plane->normal();
@@ -69,6 +89,92 @@ RollingModel buildModel(const scene::SceneSpec& spec) {
         sphere, spec.path.colatitudeDeg * std::numbers::pi / 180.0, spec.path.turns, spec.path.counterClockwise);
   }
   return model;
+}
+
+// Segment `index` as a scene of its own: its path in place of [path], and
+// its keys' locations under the names the path builders use ("path.…").
+scene::SceneSpec segmentScene(const scene::SceneSpec& spec, std::size_t index) {
+  scene::SceneSpec sub = spec;
+  sub.segments.clear();
+  sub.path = *spec.segments[index].path;
+  const std::string prefix = scene::SceneSpec::segmentKey(index) + ".path";
+  for (auto it = sub.locations.begin(); it != sub.locations.end();)
+    it = it->first.rfind("path", 0) == 0 ? sub.locations.erase(it) : std::next(it);
+  for (const auto& [key, loc] : spec.locations)
+    if (key.rfind(prefix, 0) == 0) sub.locations["path" + key.substr(prefix.size())] = loc;
+  return sub;
+}
+
+// Errors from a segment's path name the segment's own key.
+Error forSegment(const Error& e, std::size_t index) {
+  const std::string prefix = scene::SceneSpec::segmentKey(index);
+  const std::string& m = e.message();
+  return Error(e.kind(), e.where(), m.rfind("path", 0) == 0 ? prefix + "." + m : prefix + ": " + m);
+}
+
+RollingModel buildStoryboardModel(const scene::SceneSpec& spec) {
+  RollingModel model;
+  model.ballRadius = spec.ball.radius;
+  std::vector<std::unique_ptr<geometry::ContactPath>> pieces;
+  std::optional<geometry::DarbouxSample> end;  // where the previous motion ended
+  std::size_t endSegment = 0;
+  double s = 0.0;
+  for (std::size_t i = 0; i < spec.segments.size(); ++i) {
+    if (!spec.segments[i].path) {
+      model.segments.push_back({s, s});
+      continue;
+    }
+    scene::SceneSpec sub = segmentScene(spec, i);
+    const scene::PathKind kind = sub.path.kind;
+    const bool onPlane = spec.surface.kind == scene::SurfaceKind::Plane;
+    const bool continues = onPlane && (kind == scene::PathKind::Line || kind == scene::PathKind::Circle ||
+                                       kind == scene::PathKind::Clothoid);
+    Placement place;
+    if (end && continues) place = {end->point, end->tangent};
+    if (end && kind == scene::PathKind::Geodesic) {
+      if (!sub.path.startPoint) sub.path.startPoint = scene::Vec3{end->point.x(), end->point.y(), end->point.z()};
+      if (!sub.path.directionVector)
+        sub.path.directionVector = scene::Vec3{end->tangent.x(), end->tangent.y(), end->tangent.z()};
+    }
+    RollingModel part;
+    try {
+      part = buildPathModel(sub, place);
+    } catch (const Error& e) {
+      throw forSegment(e, i);
+    }
+    if (end) {
+      const geometry::Vec3 start = part.path->point(0.0);
+      const double gap = (start - end->point).norm();
+      if (!(gap <= kJoinTolerance * model.ballRadius)) {
+        const std::string key = scene::SceneSpec::segmentKey(i) + ".path";
+        throw badInput(spec.where(key),
+                       "{}: starts at ({:.9g}, {:.9g}, {:.9g}), {:.3g} away from where {} ended ({:.9g}, {:.9g}, "
+                       "{:.9g}); a {} path on a {} is placed by its own keys, so it must start where the previous "
+                       "segment ended (within {:g} R)",
+                       key, start.x(), start.y(), start.z(), gap, scene::SceneSpec::segmentKey(endSegment),
+                       end->point.x(), end->point.y(), end->point.z(), scene::toString(kind),
+                       scene::toString(spec.surface.kind), kJoinTolerance);
+      }
+    }
+    const double length = part.path->length();
+    end = part.path->at(length);
+    endSegment = i;
+    if (!model.surface) model.surface = part.surface;
+    model.segments.push_back({s, s + length});
+    s += length;
+    pieces.push_back(std::move(part.path));
+  }
+  if (pieces.empty())
+    throw badInput(spec.where("segment"), "segment: a storyboard needs at least one segment with a path (a motion); "
+                                          "all {} are holds", spec.segments.size());
+  model.path = std::make_unique<geometry::JoinedPath>(std::move(pieces));
+  return model;
+}
+
+}  // namespace
+
+RollingModel buildModel(const scene::SceneSpec& spec) {
+  return spec.isStoryboard() ? buildStoryboardModel(spec) : buildPathModel(spec, {});
 }
 
 scene::SceneSpec loadScene(const std::string& file, const std::vector<std::string>& overrides) {

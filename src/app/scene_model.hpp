@@ -19,12 +19,27 @@ struct PlateModel {
   geometry::Vec3 initialTopPoint = geometry::Vec3::Zero();  // plate touches the ball here at s = 0
 };
 
+// Where a storyboard segment lies on the whole path: [start, end] in arc
+// length (a hold: start = end, the point where the ball rests).
+struct SegmentSpan {
+  double start = 0.0, end = 0.0;
+};
+
 struct RollingModel {
   double ballRadius = 1.0;
   std::shared_ptr<const geometry::Surface> surface;
-  std::unique_ptr<geometry::ContactPath> path;
+  std::unique_ptr<geometry::ContactPath> path;  // a storyboard: a geometry::JoinedPath of its motions
   std::optional<PlateModel> plate;
+  std::vector<SegmentSpan> segments;  // one per scene segment; empty unless a storyboard
 };
+
+// A storyboard's paths are placed one after another: on a plane a line,
+// circle or clothoid after the first starts at the previous end point along
+// the previous end heading; any other path is placed by its own keys and
+// must start where the previous one ended (within kJoinTolerance · R), else
+// BadInput at that segment's path. A geodesic after the first starts by
+// default at the previous end point, along the previous end heading.
+inline constexpr double kJoinTolerance = 1e-6;
 
 [[nodiscard]] RollingModel buildModel(const scene::SceneSpec& spec);
 

@@ -11,6 +11,7 @@ namespace rollspin::app {
 namespace {
 // The key a user would change to shorten the path: the first one given.
 std::pair<std::string, SourceLoc> pathSizeKey(const scene::SceneSpec& spec) {
+  if (spec.isStoryboard()) return {"segment", spec.where("segment")};
   for (const char* key : {"path.turns", "path.length", "path.radius", "path.colatitude_deg", "plate.radius"})
     if (spec.locations.contains(key)) return {key, spec.where(key)};
   return {"path", spec.where("path")};
@@ -20,7 +21,13 @@ std::pair<std::string, SourceLoc> pathSizeKey(const scene::SceneSpec& spec) {
 SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& model) {
   SolverChoice choice;
   choice.method = *spin::parseMethod(spec.solver.method);  // validated by the loader
-  if (choice.method == spin::Method::Exact && !model.path->hasConstantCurvatures()) {
+  // A storyboard is solved piece by piece: exact needs each piece constant.
+  const auto pieces = model.path->pieces();
+  const bool constant = pieces.empty() ? model.path->hasConstantCurvatures()
+                                       : std::all_of(pieces.begin(), pieces.end(), [](const geometry::PathPiece& p) {
+                                           return p.path->hasConstantCurvatures();
+                                         });
+  if (choice.method == spin::Method::Exact && !constant) {
     throw badInput(spec.where("solver.method"),
                    "solver.method: \"exact\" needs a path with constant curvatures, but this path is a {}; "
                    "use \"magnus4\"",

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "spin/field.hpp"
@@ -12,8 +15,13 @@ spin::SolveStats writeTimelineCsv(const std::filesystem::path& out, const Rollin
                                   const SolverChoice& choice, const spin::SampleArcLengths& sampleS) {
   AtomicFile file(out);
   fmt::memory_buffer buffer;
-  fmt::format_to(std::back_inserter(buffer),
-                 "s,px,py,pz,nx,ny,nz,cx,cy,cz,qw,qx,qy,qz,Bx,By,Bz,tx,ty,tz,kappa_n,kappa_g,tau_g\n");
+  // A storyboard adds the number of the segment each row is in (from 1).
+  std::vector<std::pair<double, std::size_t>> motions;  // (start s, segment index) of each motion
+  for (std::size_t k = 0; k < model.segments.size(); ++k)
+    if (model.segments[k].end > model.segments[k].start) motions.emplace_back(model.segments[k].start, k + 1);
+  fmt::format_to(std::back_inserter(buffer), "s,px,py,pz,nx,ny,nz,cx,cy,cz,qw,qx,qy,qz,Bx,By,Bz,tx,ty,tz,kappa_n,kappa_g,"
+                                             "tau_g{}\n",
+                 motions.empty() ? "" : ",segment");
   const double R = model.ballRadius;
   // Rows are formatted into a buffer and handed to the file in ~1 MiB chunks.
   auto sink = [&](std::size_t, double s, const spin::Su2& q) {
@@ -22,10 +30,17 @@ spin::SolveStats writeTimelineCsv(const std::filesystem::path& out, const Rollin
     fmt::format_to(std::back_inserter(buffer),
                    "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
                    "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
-                   "{:.17g},{:.17g},{:.17g}\n",
+                   "{:.17g},{:.17g},{:.17g}",
                    s, f.point.x(), f.point.y(), f.point.z(), f.normal.x(), f.normal.y(), f.normal.z(), c.x(), c.y(),
                    c.z(), q.w, q.x, q.y, q.z, b.x(), b.y(), b.z(), f.tangent.x(), f.tangent.y(), f.tangent.z(),
                    f.normalCurvature, f.geodesicCurvature, f.geodesicTorsion);
+    if (!motions.empty()) {
+      // The motion that starts last at or before s: a join's row belongs to the segment starting there.
+      const auto it = std::upper_bound(motions.begin(), motions.end(), s,
+                                       [](double x, const auto& m) { return x < m.first; });
+      fmt::format_to(std::back_inserter(buffer), ",{}", (it == motions.begin() ? motions.front() : *(it - 1)).second);
+    }
+    buffer.push_back('\n');
     if (buffer.size() > (1u << 20)) {
       file.write({buffer.data(), buffer.size()});
       buffer.clear();

@@ -5,7 +5,8 @@
 // Columns: s, px,py,pz (contact point P), nx,ny,nz (normal n), cx,cy,cz
 // (centre C = P + R n), qw,qx,qy,qz (U = qw − i q·σ, worldFromBody, not
 // sign-normalised), Bx,By,Bz (field B = −ω), tx,ty,tz (tangent t),
-// kappa_n, kappa_g, tau_g.
+// kappa_n, kappa_g, tau_g; a storyboard adds `segment`, the number (from 1)
+// of the segment whose motion the row is in.
 #pragma once
 
 #include <filesystem>

@@ -18,6 +18,7 @@ class StageLog {
   // listed once) and, when echoing, prints "rollspin: stage: NAME".
   void record(std::string_view stage);
   void setEcho(bool echo) { echo_ = echo; }
+  [[nodiscard]] bool echo() const { return echo_; }  // --verbose
   [[nodiscard]] const std::vector<std::string>& stages() const { return stages_; }
   void clear() { stages_.clear(); }
 

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,15 @@ struct DarbouxSample {
   [[nodiscard]] Vec3 centre(double ballRadius) const { return point + ballRadius * normal; }
 };
 
+class ContactPath;
+
+// One piece of a joined path (joined_path.hpp): the piece and the arc length
+// at which it starts in the whole path.
+struct PathPiece {
+  const ContactPath* path = nullptr;
+  double start = 0.0;
+};
+
 class ContactPath {
  public:
   virtual ~ContactPath() = default;
@@ -49,6 +59,10 @@ class ContactPath {
   // Number of closed circuits (0 for an open path); sets default sampling.
   [[nodiscard]] virtual double turns() const { return 0.0; }
   [[nodiscard]] virtual std::string describe() const = 0;
+  // Paths made of pieces (a storyboard): each piece with its start. Empty
+  // for a path of one piece. The propagator solves piece by piece and
+  // composes, U(s) = U_k(s − s_k) U_{k−1}(L_{k−1}) ⋯ U_1(L_1).
+  [[nodiscard]] virtual std::span<const PathPiece> pieces() const { return {}; }
 };
 
 // The Darboux vector d with dX/ds = d × X for X ∈ {t, u, n}:

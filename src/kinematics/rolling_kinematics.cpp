@@ -72,6 +72,10 @@ Vec3 RollingKinematics::centreVelocity(double s) const {
   // except the end point).
   std::size_t seg = 0;
   while (seg + 2 < cuts_.size() && s >= cuts_[seg + 1]) ++seg;
+  return centreVelocity(s, seg);
+}
+
+Vec3 RollingKinematics::centreVelocity(double s, std::size_t seg) const {
   const double a = cuts_[seg], b = cuts_[seg + 1], h = settings_.fdStep;
   // 9 nodes, centred when possible, shifted to stay inside [a, b]: 8th order.
   double first = s - 4.0 * h;
@@ -87,8 +91,12 @@ Vec3 RollingKinematics::centreVelocity(double s) const {
 
 Vec3 RollingKinematics::omega(double s) const { return path_.normal(s).cross(centreVelocity(s)) / ballRadius_; }
 
-Mat3 RollingKinematics::rk4Step(const Mat3& q, double s, double h) const {
-  const Mat3 wa = skew(omega(s)), wb = skew(omega(s + 0.5 * h)), wc = skew(omega(s + h));
+Vec3 RollingKinematics::omega(double s, std::size_t seg) const {
+  return path_.normal(s).cross(centreVelocity(s, seg)) / ballRadius_;
+}
+
+Mat3 RollingKinematics::rk4Step(const Mat3& q, double s, double h, std::size_t seg) const {
+  const Mat3 wa = skew(omega(s, seg)), wb = skew(omega(s + 0.5 * h, seg)), wc = skew(omega(s + h, seg));
   const Mat3 k1 = wa * q;
   const Mat3 k2 = wb * (q + 0.5 * h * k1);
   const Mat3 k3 = wb * (q + 0.5 * h * k2);
@@ -112,10 +120,10 @@ std::vector<Mat3> RollingKinematics::orientations(std::span<const double> sample
       const double sNext = (k + 1 == n) ? b : s + h;
       while (next < sampleS.size() && sampleS[next] < sNext) {
         const double dh = std::max(0.0, sampleS[next] - s);
-        out.push_back(dh == 0.0 ? q : rk4Step(q, s, dh));
+        out.push_back(dh == 0.0 ? q : rk4Step(q, s, dh, seg));
         ++next;
       }
-      q = rk4Step(q, s, sNext - s);
+      q = rk4Step(q, s, sNext - s, seg);
     }
   }
   while (next < sampleS.size()) {

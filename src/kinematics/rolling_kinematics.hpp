@@ -40,7 +40,11 @@ class RollingKinematics {
   [[nodiscard]] Mat3 finalOrientation() const;
 
  private:
-  [[nodiscard]] Mat3 rk4Step(const Mat3& q, double s, double h) const;
+  // One RK4 step inside segment `seg` (its end node, on the cut, is
+  // differentiated from this segment's side: at a corner dC/ds jumps).
+  [[nodiscard]] Mat3 rk4Step(const Mat3& q, double s, double h, std::size_t seg) const;
+  [[nodiscard]] Vec3 centreVelocity(double s, std::size_t seg) const;
+  [[nodiscard]] Vec3 omega(double s, std::size_t seg) const;
   const geometry::ContactPath& path_;
   double ballRadius_;
   KinematicSettings settings_;

@@ -119,7 +119,8 @@ Mp4Writer::Mp4Writer(fs::path finalPath, const Mp4Settings& settings) : impl_(st
   if (settings.width <= 0 || settings.height <= 0 || settings.width % 2 != 0 || settings.height % 2 != 0)
     throw badInput(where, "H.264 in yuv420p needs an even, non-zero width and height; got {}x{}", settings.width,
                    settings.height);
-  if (settings.fps <= 0) throw badInput(where, "expected frames per second > 0, got {}", settings.fps);
+  if (settings.fpsNum <= 0 || settings.fpsDen <= 0)
+    throw badInput(where, "expected frames per second > 0, got {}/{}", settings.fpsNum, settings.fpsDen);
   av_log_set_level(AV_LOG_ERROR);  // x264's statistics are not for lecturers
 
   const AVCodec* encoder = avcodec_find_encoder_by_name(settings.encoder.c_str());
@@ -147,8 +148,9 @@ Mp4Writer::Mp4Writer(fs::path finalPath, const Mp4Settings& settings) : impl_(st
   AVCodecContext* c = m.codec;
   c->width = settings.width;
   c->height = settings.height;
-  c->time_base = AVRational{1, settings.fps};
-  c->framerate = AVRational{settings.fps, 1};
+  // One tick per frame: frame k's pts is k, at exactly k·den/num seconds.
+  c->time_base = AVRational{settings.fpsDen, settings.fpsNum};
+  c->framerate = AVRational{settings.fpsNum, settings.fpsDen};
   c->sample_aspect_ratio = AVRational{1, 1};
   c->pix_fmt = AV_PIX_FMT_YUV420P;
   // BT.709 everywhere: the matrix swscale applies below, and the tags.
@@ -160,8 +162,8 @@ Mp4Writer::Mp4Writer(fs::path finalPath, const Mp4Settings& settings) : impl_(st
   av_opt_set(c->priv_data, "preset", settings.preset.c_str(), 0);
   av_opt_set_double(c->priv_data, "crf", settings.crf, 0);
   if (const int ret = avcodec_open2(c, encoder, nullptr); ret < 0)
-    m.fail(fmt::format("{} refuses {}x{} at {} fps (preset {}, crf {})", settings.encoder, settings.width,
-                       settings.height, settings.fps, settings.preset, settings.crf),
+    m.fail(fmt::format("{} refuses {}x{} at {}/{} fps (preset {}, crf {})", settings.encoder, settings.width,
+                       settings.height, settings.fpsNum, settings.fpsDen, settings.preset, settings.crf),
            ret);
   m.check(avcodec_parameters_from_context(m.stream->codecpar, c), "configuring the stream");
   m.stream->time_base = c->time_base;

@@ -1,7 +1,7 @@
 // Mp4Writer — H.264 in an MP4 file through the FFmpeg libraries, in-process
 // (libavformat + libavcodec/libx264 + libswscale), following FFmpeg's
 // doc/examples/mux.c: send_frame / receive_packet, packet timestamps
-// rescaled from the codec's 1/fps to the stream's time base, a flushed
+// rescaled from the codec's den/num (one tick per frame) to the stream's time base, a flushed
 // encoder (null frame) and the trailer. RGBA is converted to yuv420p with the
 // BT.709 matrix (full-range RGB → limited-range YUV) and tagged BT.709
 // (colour space, primaries, transfer) and limited range, so browsers and
@@ -21,7 +21,7 @@ namespace rollspin::media {
 
 struct Mp4Settings {
   int width = 0, height = 0;  // both even (yuv420p halves the chroma planes)
-  int fps = 30;
+  int fpsNum = 30, fpsDen = 1;  // frames per second as a rational (30000/1001 for NTSC 29.97)
   double crf = 18.0;           // constant rate factor, 0 … 51
   std::string preset = "medium";
   std::string encoder = "libx264";

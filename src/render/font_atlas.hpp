@@ -31,6 +31,8 @@ class FontAtlas {
   // Quads for a UTF-8 string starting at the pen (x, baseline y); returns the
   // advance width. Unknown code points render as '?'.
   float layout(std::string_view utf8, float x, float y, std::vector<GlyphQuad>* quads) const;
+  // Whether the atlas has the code point (else it renders as '?').
+  [[nodiscard]] bool hasGlyph(char32_t codePoint) const { return glyphs_.contains(codePoint); }
 
  private:
   struct Glyph {

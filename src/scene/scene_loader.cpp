@@ -34,6 +34,12 @@ std::string joinKeys(const std::set<std::string>& keys) {
   return out;
 }
 
+std::set<std::string> pathTableKeys() {
+  std::set<std::string> keys(kPathKeys.begin(), kPathKeys.end());
+  keys.insert("kind");
+  return keys;
+}
+
 // Reads one document into a SceneSpec, remembering where every key came from.
 class Reader {
  public:
@@ -55,6 +61,10 @@ class Reader {
 
   // Section [name]: returns nullptr when absent; checks its keys.
   const toml::table* section(const std::string& name, const std::set<std::string>& allowed);
+  const toml::table* subTable(const toml::table& parent, const std::string& name, const std::string& full,
+                              const std::set<std::string>& allowed);
+  CameraSpec readCamera(const toml::table* t, const std::string& section);
+  void readSegments();
   const toml::node* get(const toml::table* t, const std::string& section, const std::string& key);
   std::optional<double> number(const toml::table* t, const std::string& section, const std::string& key);
   std::optional<long long> integer(const toml::table* t, const std::string& section, const std::string& key);
@@ -66,8 +76,10 @@ class Reader {
                                                             const std::string& key);
   std::optional<bool> boolean(const toml::table* t, const std::string& section, const std::string& key);
   std::optional<std::string> anyText(const toml::table* t, const std::string& section, const std::string& key);
+  PathKind readPath(const toml::table* path, const std::string& prefix, PathSpec& target);
   void readRender();
   void readAnimation();
+  void readLabels();
   void forbid(const toml::table* t, const std::string& section, const std::string& key, const std::string& why);
 
   [[noreturn]] void fail(const std::string& key, const SourceLoc& loc, const std::string& expected,
@@ -89,15 +101,23 @@ class Reader {
 };
 
 const toml::table* Reader::section(const std::string& name, const std::set<std::string>& allowed) {
-  const toml::node* node = root_.get(name);
+  return subTable(root_, name, name, allowed);
+}
+
+// `parent`'s key `name` as a table whose keys are all in `allowed`; `full`
+// names it in messages and locations ("render", "segment[2].camera").
+const toml::table* Reader::subTable(const toml::table& parent, const std::string& name, const std::string& full,
+                                   const std::set<std::string>& allowed) {
+  const toml::node* node = parent.get(name);
   if (node == nullptr) return nullptr;
   const toml::table* t = node->as_table();
-  if (t == nullptr) fail(name, locOf(name, *node), "a table [" + name + "]", describeNode(*node));
-  spec_.locations[name] = locOf(name, *node);
+  const std::string what = full == name ? "[" + name + "]" : full;
+  if (t == nullptr) fail(full, locOf(full, *node), "a table " + what, describeNode(*node));
+  spec_.locations[full] = locOf(full, *node);
   for (auto&& [k, v] : *t) {
-    const std::string key = name + "." + std::string(k.str());
+    const std::string key = full + "." + std::string(k.str());
     if (!allowed.contains(std::string(k.str()))) {
-      throw badInput(locOf(key, v), "{}: unknown key; [{}] accepts: {}", key, name, joinKeys(allowed));
+      throw badInput(locOf(key, v), "{}: unknown key; {} accepts: {}", key, what, joinKeys(allowed));
     }
   }
   return t;
@@ -175,6 +195,101 @@ std::optional<std::string> Reader::anyText(const toml::table* t, const std::stri
   return node->as_string()->get();
 }
 
+// The camera keys of [render] or of a segment's camera table.
+CameraSpec Reader::readCamera(const toml::table* t, const std::string& section) {
+  CameraSpec c;
+  c.azimuthDeg = number(t, section, "azimuth_deg");
+  if ((c.elevationDeg = number(t, section, "elevation_deg")) && !(*c.elevationDeg > -90.0 && *c.elevationDeg < 90.0))
+    failAt(section + ".elevation_deg",
+           fmt::format("expected an elevation in (-90, 90) degrees, got {}", *c.elevationDeg));
+  if ((c.distance = number(t, section, "distance")) && *c.distance <= 0.0)
+    failAt(section + ".distance", fmt::format("expected a camera distance > 0, got {}", *c.distance));
+  c.target = vector(t, section, "target");
+  c.follow = boolean(t, section, "follow");
+  if ((c.fovDeg = number(t, section, "fov_deg")) && !(*c.fovDeg >= 5.0 && *c.fovDeg <= 120.0))
+    failAt(section + ".fov_deg",
+           fmt::format("expected a vertical field of view in [5, 120] degrees, got {}", *c.fovDeg));
+  return c;
+}
+
+// [[segment]] — a storyboard (README "Storyboards"). Each entry moves along
+// its own path (the [path] keys, validated the same way) or holds; timing,
+// caption, title and camera are per segment. Keys are named segment[k].…
+// with k counted from 1.
+void Reader::readSegments() {
+  const toml::node* node = root_.get("segment");
+  if (node == nullptr) return;
+  const toml::array* entries = node->as_array();
+  if (entries == nullptr || entries->empty() || !entries->is_array_of_tables())
+    fail("segment", locOf("segment", *node), "[[segment]] tables (an array of tables)", describeNode(*node));
+  spec_.locations["segment"] = locOf("segment", *node);
+  if (spec_.plate)
+    failAt("plate", "a storyboard's segments have their own paths; [plate] drives one circle, so it cannot be "
+                    "combined with [[segment]]");
+  if (entries->size() > kMaxSegments)
+    throw badInput(where("segment"), "segment: expected at most {} segments, got {}", kMaxSegments, entries->size());
+  const bool onPlane = spec_.surface.kind == SurfaceKind::Plane;
+  for (std::size_t i = 0; i < entries->size(); ++i) {
+    const std::string prefix = SceneSpec::segmentKey(i);
+    const toml::node& entry = *entries->get(i);
+    spec_.locations[prefix] = locOf(prefix, entry);
+    const toml::table& table = *entry.as_table();
+    for (auto&& [k, v] : table) {
+      static const std::set<std::string> kSegmentKeys{"path", "hold", "duration", "speed", "caption", "title", "camera"};
+      if (!kSegmentKeys.contains(std::string(k.str())))
+        throw badInput(locOf(prefix + "." + std::string(k.str()), v), "{}.{}: unknown key; a segment accepts: {}",
+                       prefix, k.str(), joinKeys(kSegmentKeys));
+    }
+    SegmentSpec seg;
+    const toml::table* path = subTable(table, "path", prefix + ".path", pathTableKeys());
+    const std::optional<double> hold = number(&table, prefix, "hold");
+    if (path == nullptr && !hold)
+      throw badInput(where(prefix), "{}: expected path = {{ kind = ..., ... }} (a motion) or hold = SECONDS (a rest)",
+                     prefix);
+    if (path != nullptr && hold)
+      failAt(prefix + ".hold", "a segment either moves (path) or holds (hold), not both; split it into two segments");
+    if (path != nullptr) {
+      seg.path = PathSpec{};
+      const PathKind pk = readPath(path, prefix + ".path", *seg.path);
+      // On a plane, segments after the first continue from the previous end
+      // point along its end heading (tangent-continuous).
+      const bool placedByPrevious = pk == PathKind::Line || pk == PathKind::Circle || pk == PathKind::Clothoid;
+      if (i > 0 && onPlane && placedByPrevious && seg.path->directionVector)
+        failAt(prefix + ".path.direction_vector",
+               "a segment after the first starts where the previous one ended, along its end heading "
+               "(tangent-continuous); remove direction_vector");
+    } else {
+      if (!(*hold > 0.0 && *hold <= 3600.0))
+        failAt(prefix + ".hold", fmt::format("expected a hold in (0, 3600] seconds, got {}", *hold));
+      seg.hold = *hold;
+    }
+    if ((seg.duration = number(&table, prefix, "duration"))) {
+      if (!path) failAt(prefix + ".duration", "applies to a motion (a segment with a path); a hold's length is hold");
+      if (!(*seg.duration > 0.0 && *seg.duration <= 36000.0))
+        failAt(prefix + ".duration", fmt::format("expected a duration in (0, 36000] seconds, got {}", *seg.duration));
+    }
+    if ((seg.speed = number(&table, prefix, "speed"))) {
+      if (!path) failAt(prefix + ".speed", "applies to a motion (a segment with a path); a hold's length is hold");
+      if (!(*seg.speed > 0.0)) failAt(prefix + ".speed", fmt::format("expected an arc length per second > 0, got {}", *seg.speed));
+      if (seg.duration)
+        failAt(prefix + ".speed", fmt::format("conflicts with {}.duration: give the duration or the speed, not both", prefix));
+    }
+    if (auto c = anyText(&table, prefix, "caption")) seg.caption = *c;
+    seg.title = anyText(&table, prefix, "title");
+    const std::set<std::string> cameraKeys(kCameraKeys.begin(), kCameraKeys.end());
+    seg.camera = readCamera(subTable(table, "camera", prefix + ".camera", cameraKeys), prefix + ".camera");
+    spec_.segments.push_back(std::move(seg));
+  }
+  // A segment's camera target stops a follow, and follow = true drops a
+  // target (README "Storyboards"); one table giving both is contradictory.
+  for (std::size_t i = 0; i < spec_.segments.size(); ++i) {
+    const CameraSpec& c = spec_.segments[i].camera;
+    if (c.target && c.follow && *c.follow)
+      failAt(SceneSpec::segmentKey(i) + ".camera.target",
+             "conflicts with follow = true in the same camera (the camera then targets the ball)");
+  }
+}
+
 // [render] — image size, layout, strobe, text, camera (render issue).
 void Reader::readRender() {
   const toml::table* render = section(
@@ -206,29 +321,54 @@ void Reader::readRender() {
     if (*n != 1 && *n != 2 && *n != 4) failAt("render.msaa", fmt::format("expected 1, 2 or 4 samples, got {}", *n));
     r.msaa = *n;
   }
-  if (auto a = number(render, "render", "azimuth_deg")) r.azimuthDeg = *a;
-  if (auto e = number(render, "render", "elevation_deg")) {
-    if (!(*e > -90.0 && *e < 90.0))
-      failAt("render.elevation_deg", fmt::format("expected an elevation in (-90, 90) degrees, got {}", *e));
-    r.elevationDeg = *e;
-  }
-  if (auto d = number(render, "render", "distance")) {
-    if (*d <= 0.0) failAt("render.distance", fmt::format("expected a camera distance > 0, got {}", *d));
-    r.distance = *d;
-  }
-  if (auto t = vector(render, "render", "target")) r.target = *t;
-  if (auto f = boolean(render, "render", "follow")) r.follow = *f;
+  const CameraSpec camera = readCamera(render, "render");
+  if (camera.azimuthDeg) r.azimuthDeg = *camera.azimuthDeg;
+  if (camera.elevationDeg) r.elevationDeg = *camera.elevationDeg;
+  if (camera.distance) r.distance = *camera.distance;
+  if (camera.target) r.target = *camera.target;
+  if (camera.follow) r.follow = *camera.follow;
+  if (camera.fovDeg) r.fovDeg = *camera.fovDeg;
   if (auto t = boolean(render, "render", "trails")) r.trails = *t;
   if (auto sh = boolean(render, "render", "shadow")) r.shadow = *sh;
-  if (auto f = number(render, "render", "fov_deg")) {
-    if (!(*f >= 5.0 && *f <= 120.0))
-      failAt("render.fov_deg", fmt::format("expected a vertical field of view in [5, 120] degrees, got {}", *f));
-    r.fovDeg = *f;
-  }
   if (r.follow && spec_.locations.contains("render.target"))
     failAt("render.target", "conflicts with render.follow = true (the camera then targets the ball)");
   if (auto f = text(render, "render", "format", {"mp4", "png"}))
     r.format = *f == "mp4" ? VideoFormat::Mp4 : VideoFormat::Png;
+}
+
+// [labels] — which facts of the scene are printed (after [surface] and
+// [path]: a fact must apply to their kinds).
+void Reader::readLabels() {
+  const toml::table* labels = section("labels", {"facts"});
+  const toml::node* node = get(labels, "labels", "facts");
+  if (node == nullptr) return;
+  const std::string key = "labels.facts";
+  std::string names;
+  for (const auto& n : kFactNames) names += (names.empty() ? "" : ", ") + ("\"" + n + "\"");
+  const std::string expected = "\"auto\", \"none\" or a list of facts from " + names;
+  if (const auto* word = node->as_string()) {
+    if (word->get() == "auto") return;
+    if (word->get() == "none") {
+      spec_.labels.facts = std::vector<Fact>{};
+      return;
+    }
+    fail(key, locOf(key, *node), expected, describeNode(*node));
+  }
+  const toml::array* list = node->as_array();
+  if (list == nullptr) fail(key, locOf(key, *node), expected, describeNode(*node));
+  std::vector<Fact> facts;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const toml::node& e = *list->get(i);
+    const auto it = e.is_string() ? std::find(kFactNames.begin(), kFactNames.end(), e.as_string()->get()) : kFactNames.end();
+    if (it == kFactNames.end()) fail(key, locOf(key, *node), expected, "element " + std::to_string(i) + " = " + describeNode(e));
+    const Fact f = static_cast<Fact>(it - kFactNames.begin());
+    if (std::find(facts.begin(), facts.end(), f) != facts.end())
+      failAt(key, fmt::format("\"{}\" is listed twice", *it));
+    const KeyRule rule = factRule(f, spec_);
+    if (!rule.applies) failAt(key, fmt::format("\"{}\" applies to {} only", *it, rule.kinds));
+    facts.push_back(f);
+  }
+  spec_.labels.facts = facts;
 }
 
 // [animation] — frame time → arc length, and the H.264 settings (video issue).
@@ -236,9 +376,22 @@ void Reader::readAnimation() {
   const toml::table* animation =
       section("animation", {"fps", "duration", "speed", "easing", "hold", "crf", "preset"});
   AnimationSpec& a = spec_.animation;
-  if (auto n = integer(animation, "animation", "fps")) {
-    if (*n < 1 || *n > 240) failAt("animation.fps", fmt::format("expected frames per second in [1, 240], got {}", *n));
-    a.fps = *n;
+  if (const toml::node* node = get(animation, "animation", "fps")) {
+    const std::string expected =
+        "frames per second in [1, 240]: an integer, an NTSC rate 23.976 | 29.97 | 59.94 (exactly 24000/1001 …), a "
+        "decimal with at most 3 places, or a string \"num/den\" such as \"30000/1001\"";
+    std::optional<FrameRate> rate;
+    if (node->is_integer()) {
+      const long long n = node->as_integer()->get();
+      if (n >= 1 && n <= 240) rate = FrameRate{n, 1};
+    } else if (node->is_floating_point()) {
+      rate = frameRateFromDecimal(node->as_floating_point()->get());
+    } else if (node->is_string()) {
+      rate = frameRateFromText(node->as_string()->get());
+    }
+    if (!rate || !(rate->value() >= 1.0 && rate->value() <= 240.0))
+      fail("animation.fps", locOf("animation.fps", *node), expected, describeNode(*node));
+    a.fps = *rate;
   }
   if (auto d = number(animation, "animation", "duration")) {
     if (!(*d > 0.0 && *d <= 36000.0))
@@ -324,9 +477,161 @@ Vec3 unitVector(const Vec3& v, double len) {
 
 double norm3(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
+// The keys of a path table ([path], or a segment's path): kind and the
+// kind-specific keys, validated against the surface. `prefix` names the
+// table in messages and locations ("path", "segment[2].path").
+PathKind Reader::readPath(const toml::table* path, const std::string& prefix, PathSpec& target) {
+  const SurfaceKind sk = spec_.surface.kind;
+  const std::string skName = toString(sk);
+  const bool pathKindGiven = path != nullptr && path->get("kind") != nullptr;
+  static const std::map<std::string, PathKind> kPathKinds{
+      {"line", PathKind::Line},           {"circle", PathKind::Circle},       {"parallel", PathKind::Parallel},
+      {"meridian", PathKind::Meridian},   {"helix", PathKind::Helix},         {"loxodrome", PathKind::Loxodrome},
+      {"geodesic", PathKind::Geodesic},   {"uv", PathKind::Uv},               {"points", PathKind::Points},
+      {"clothoid", PathKind::Clothoid}};
+  if (auto kind = text(path, prefix, "kind",
+                       {"line", "circle", "parallel", "meridian", "helix", "loxodrome", "geodesic", "uv", "points",
+                        "clothoid"})) {
+    target.kind = kPathKinds.at(*kind);
+  } else if (sk == SurfaceKind::Sphere || sk == SurfaceKind::Cylinder || sk == SurfaceKind::Torus ||
+             sk == SurfaceKind::Paraboloid) {
+    target.kind = PathKind::Parallel;  // the natural closed path of a surface of revolution
+  } else if (sk == SurfaceKind::Saddle || sk == SurfaceKind::Height) {
+    target.kind = PathKind::Meridian;
+  }
+  const PathKind pk = target.kind;
+  const std::string pkName = toString(pk);
+  // Which surfaces each path kind lies on.
+  const bool revolution = sk == SurfaceKind::Sphere || sk == SurfaceKind::Cylinder || sk == SurfaceKind::Torus ||
+                          sk == SurfaceKind::Paraboloid;
+  std::string needs;
+  bool lies = true;
+  switch (pk) {
+    case PathKind::Line:
+    case PathKind::Circle:
+    case PathKind::Clothoid: lies = sk == SurfaceKind::Plane; needs = "plane"; break;
+    case PathKind::Parallel: lies = revolution; needs = "sphere, cylinder, torus or paraboloid"; break;
+    case PathKind::Meridian: lies = sk != SurfaceKind::Plane; needs = "curved surface"; break;
+    case PathKind::Helix: lies = sk == SurfaceKind::Cylinder; needs = "cylinder"; break;
+    case PathKind::Loxodrome: lies = sk == SurfaceKind::Sphere; needs = "sphere"; break;
+    case PathKind::Geodesic:
+    case PathKind::Uv:
+    case PathKind::Points: break;
+  }
+  if (!lies) {
+    const std::string key = pathKindGiven ? (prefix + ".kind") : "surface.kind";
+    failAt(key, fmt::format("a {} path lies on a {}, but surface.kind is \"{}\" (the path would leave the surface)",
+                            pkName, needs, skName));
+  }
+  auto only = [&](const std::string& key, bool applies, const std::string& kinds) {
+    if (!applies) forbid(path, prefix, key, "applies to path kind " + kinds + " only; this path is a " + pkName +
+                                                " on a " + skName);
+  };
+  for (const auto& key : kPathKeys) {
+    const KeyRule rule = pathKeyRule(key, pk, sk);
+    only(key, rule.applies, rule.kinds);
+  }
+  const bool onSphere = sk == SurfaceKind::Sphere;
+  const bool meridian = pk == PathKind::Meridian;
+
+  if (auto t = number(path, prefix, "turns")) {
+    if (*t <= 0.0) failAt(prefix + ".turns", fmt::format("expected a number of turns > 0, got {}", *t));
+    target.turns = *t;
+  }
+  if (auto d = text(path, prefix, "direction", {"ccw", "cw"})) target.counterClockwise = *d == "ccw";
+  if (pk == PathKind::Geodesic && !spec_.locations.contains(prefix + ".length")) target.length = 6.0;
+  if (auto len = number(path, prefix, "length")) {
+    if (*len <= 0.0) failAt(prefix + ".length", fmt::format("expected a length > 0, got {}", *len));
+    target.length = *len;
+  }
+  if (auto dv = vector(path, prefix, "direction_vector")) {
+    const double len = norm3(*dv);
+    if (len < 1e-12) failAt(prefix + ".direction_vector", "expected a non-zero vector, got [0, 0, 0]");
+    const Vec3 d = unitVector(*dv, len);
+    const Vec3& n = spec_.surface.normal;
+    const double along = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+    if (sk == SurfaceKind::Plane && std::abs(along) > 1e-9) {
+      failAt(prefix + ".direction_vector",
+             fmt::format("the {} leaves the surface: its direction has a component {:.6g} along the plane "
+                         "normal [{}, {}, {}]; expected a vector in the plane",
+                         pkName, along, n[0], n[1], n[2]));
+    }
+    target.directionVector = d;
+  }
+  if (auto r = number(path, prefix, "radius")) {
+    if (*r <= 0.0) failAt(prefix + ".radius", fmt::format("expected a radius > 0, got {}", *r));
+    target.radius = *r;
+  }
+  if (pk == PathKind::Parallel && sk == SurfaceKind::Paraboloid) {
+    if (spec_.surface.a != spec_.surface.b)
+      failAt(pathKindGiven ? (prefix + ".kind") : "surface.a",
+             fmt::format("a parallel needs a surface of revolution; this paraboloid has a = {} != b = {}",
+                         spec_.surface.a, spec_.surface.b));
+    if (!spec_.locations.contains(prefix + ".radius")) target.radius = 2.0;
+  }
+  auto colatitude = [&](const std::string& key, double& out) {
+    if (auto th = number(path, prefix, key)) {
+      if (!(*th > 0.0 && *th < 180.0))
+        failAt(prefix + "." + key, fmt::format("expected a colatitude in (0, 180) degrees, got {}", *th));
+      out = *th;
+    }
+  };
+  colatitude("colatitude_deg", target.colatitudeDeg);
+  colatitude("colatitude_start_deg", target.colatitudeStartDeg);
+  colatitude("colatitude_end_deg", target.colatitudeEndDeg);
+  if ((meridian && onSphere) || pk == PathKind::Loxodrome) {
+    if (target.colatitudeStartDeg == target.colatitudeEndDeg)
+      failAt(prefix + ".colatitude_end_deg", "expected colatitude_end_deg != colatitude_start_deg (an empty path)");
+  }
+  if (auto v = number(path, prefix, "tube_angle_deg")) target.tubeAngleDeg = *v;
+  if (auto v = number(path, prefix, "height")) target.height = *v;
+  if (auto v = number(path, prefix, "azimuth_deg")) target.azimuthDeg = *v;
+  if (auto v = number(path, prefix, "pitch_angle_deg")) {
+    if (!(std::abs(*v) < 90.0))
+      failAt(prefix + ".pitch_angle_deg", fmt::format("expected a pitch angle in (-90, 90) degrees, got {}", *v));
+    target.pitchAngleDeg = *v;
+  }
+  if (auto v = number(path, prefix, "heading_deg")) {
+    if (!(std::abs(*v) < 90.0))
+      failAt(prefix + ".heading_deg", fmt::format("expected a heading in (-90, 90) degrees from the meridians "
+                                             "(90 is a parallel: use kind = \"parallel\"), got {}", *v));
+    target.headingDeg = *v;
+  }
+  if (auto p = vector(path, prefix, "start_point")) target.startPoint = *p;
+  if (auto e = expression(path, prefix, "u")) target.u = *e;
+  if (auto e = expression(path, prefix, "v")) target.v = *e;
+  if (auto v = number(path, prefix, "t_start")) target.tStart = *v;
+  if (auto v = number(path, prefix, "t_end")) target.tEnd = *v;
+  if (pk == PathKind::Uv && !(target.tEnd > target.tStart))
+    failAt(spec_.locations.contains(prefix + ".t_end") ? (prefix + ".t_end") : (prefix + ".t_start"),
+           fmt::format("expected t_end > t_start, got [{}, {}]", target.tStart, target.tEnd));
+  if (auto pts = pointList(path, prefix, "points")) target.points = *pts;
+  if (auto c = boolean(path, prefix, "closed")) target.closed = *c;
+  if (auto i = text(path, prefix, "interpolation", {"spline", "polyline"})) target.interpolation = *i;
+  if (auto r = number(path, prefix, "corner_radius")) {
+    if (*r < 0.0) failAt(prefix + ".corner_radius", fmt::format("expected a radius >= 0, got {}", *r));
+    target.cornerRadius = *r;
+  }
+  for (const char* key : {"curvature_start", "curvature_rate"}) {
+    if (auto v = number(path, prefix, key)) {
+      if (std::abs(*v) > 1e6) failAt(prefix + "." + key, fmt::format("expected |value| <= 1e6, got {}", *v));
+      (std::string(key) == "curvature_start" ? target.curvatureStart : target.curvatureRate) = *v;
+    }
+  }
+  if (pk == PathKind::Points) {
+    const std::size_t need = target.closed ? 3 : 2;
+    if (target.points.size() < need)
+      throw badInput(spec_.locations.contains(prefix + ".points") ? where(prefix + ".points") : where(prefix),
+                     "{}.points: expected at least {} points for {} path, got {}", prefix, need,
+                     target.closed ? "a closed" : "an open", target.points.size());
+  }
+  return pk;
+}
+
 SceneSpec Reader::read() {
   spec_.sourceFile = file_;
-  static const std::set<std::string> kSections{"ball", "surface", "path", "plate", "solver", "timeline", "render", "animation"};
+  static const std::set<std::string> kSections{"ball",     "surface", "path",   "plate",     "solver",
+                                               "timeline", "render",  "labels", "animation", "segment"};
   for (auto&& [k, v] : root_) {
     const std::string key(k.str());
     if (!kSections.contains(key)) {
@@ -436,153 +741,12 @@ SceneSpec Reader::read() {
   }
 
   // [path]
-  const toml::table* path = section(
-      "path", {"kind", "turns", "direction", "length", "direction_vector", "radius", "colatitude_deg",
-               "tube_angle_deg", "height", "azimuth_deg", "colatitude_start_deg", "colatitude_end_deg",
-               "pitch_angle_deg", "heading_deg", "start_point", "u", "v", "t_start", "t_end", "points", "closed",
-               "interpolation", "corner_radius", "curvature_start", "curvature_rate"});
+  const toml::table* path = section("path", pathTableKeys());
+  if (path != nullptr && root_.get("segment") != nullptr)
+    throw badInput(where("path"), "path: a scene has either one [path] or a storyboard of [[segment]] entries, "
+                                  "not both; move the [path] keys into a segment's path = {{ ... }}");
+  const PathKind pk = readPath(path, "path", spec_.path);
   const bool pathKindGiven = path != nullptr && path->get("kind") != nullptr;
-  static const std::map<std::string, PathKind> kPathKinds{
-      {"line", PathKind::Line},           {"circle", PathKind::Circle},       {"parallel", PathKind::Parallel},
-      {"meridian", PathKind::Meridian},   {"helix", PathKind::Helix},         {"loxodrome", PathKind::Loxodrome},
-      {"geodesic", PathKind::Geodesic},   {"uv", PathKind::Uv},               {"points", PathKind::Points},
-      {"clothoid", PathKind::Clothoid}};
-  if (auto kind = text(path, "path", "kind",
-                       {"line", "circle", "parallel", "meridian", "helix", "loxodrome", "geodesic", "uv", "points",
-                        "clothoid"})) {
-    spec_.path.kind = kPathKinds.at(*kind);
-  } else if (sk == SurfaceKind::Sphere || sk == SurfaceKind::Cylinder || sk == SurfaceKind::Torus ||
-             sk == SurfaceKind::Paraboloid) {
-    spec_.path.kind = PathKind::Parallel;  // the natural closed path of a surface of revolution
-  } else if (sk == SurfaceKind::Saddle || sk == SurfaceKind::Height) {
-    spec_.path.kind = PathKind::Meridian;
-  }
-  const PathKind pk = spec_.path.kind;
-  const std::string pkName = toString(pk);
-  // Which surfaces each path kind lies on.
-  const bool revolution = sk == SurfaceKind::Sphere || sk == SurfaceKind::Cylinder || sk == SurfaceKind::Torus ||
-                          sk == SurfaceKind::Paraboloid;
-  std::string needs;
-  bool lies = true;
-  switch (pk) {
-    case PathKind::Line:
-    case PathKind::Circle:
-    case PathKind::Clothoid: lies = sk == SurfaceKind::Plane; needs = "plane"; break;
-    case PathKind::Parallel: lies = revolution; needs = "sphere, cylinder, torus or paraboloid"; break;
-    case PathKind::Meridian: lies = sk != SurfaceKind::Plane; needs = "curved surface"; break;
-    case PathKind::Helix: lies = sk == SurfaceKind::Cylinder; needs = "cylinder"; break;
-    case PathKind::Loxodrome: lies = sk == SurfaceKind::Sphere; needs = "sphere"; break;
-    case PathKind::Geodesic:
-    case PathKind::Uv:
-    case PathKind::Points: break;
-  }
-  if (!lies) {
-    const std::string key = pathKindGiven ? "path.kind" : "surface.kind";
-    failAt(key, fmt::format("a {} path lies on a {}, but surface.kind is \"{}\" (the path would leave the surface)",
-                            pkName, needs, skName));
-  }
-  auto only = [&](const std::string& key, bool applies, const std::string& kinds) {
-    if (!applies) forbid(path, "path", key, "applies to path kind " + kinds + " only; this path is a " + pkName +
-                                                " on a " + skName);
-  };
-  for (const auto& key : kPathKeys) {
-    const KeyRule rule = pathKeyRule(key, pk, sk);
-    only(key, rule.applies, rule.kinds);
-  }
-  const bool onSphere = sk == SurfaceKind::Sphere;
-  const bool meridian = pk == PathKind::Meridian;
-
-  if (auto t = number(path, "path", "turns")) {
-    if (*t <= 0.0) failAt("path.turns", fmt::format("expected a number of turns > 0, got {}", *t));
-    spec_.path.turns = *t;
-  }
-  if (auto d = text(path, "path", "direction", {"ccw", "cw"})) spec_.path.counterClockwise = *d == "ccw";
-  if (pk == PathKind::Geodesic && !spec_.locations.contains("path.length")) spec_.path.length = 6.0;
-  if (auto len = number(path, "path", "length")) {
-    if (*len <= 0.0) failAt("path.length", fmt::format("expected a length > 0, got {}", *len));
-    spec_.path.length = *len;
-  }
-  if (auto dv = vector(path, "path", "direction_vector")) {
-    const double len = norm3(*dv);
-    if (len < 1e-12) failAt("path.direction_vector", "expected a non-zero vector, got [0, 0, 0]");
-    const Vec3 d = unitVector(*dv, len);
-    const Vec3& n = spec_.surface.normal;
-    const double along = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
-    if (sk == SurfaceKind::Plane && std::abs(along) > 1e-9) {
-      failAt("path.direction_vector",
-             fmt::format("the {} leaves the surface: its direction has a component {:.6g} along the plane "
-                         "normal [{}, {}, {}]; expected a vector in the plane",
-                         pkName, along, n[0], n[1], n[2]));
-    }
-    spec_.path.directionVector = d;
-  }
-  if (auto r = number(path, "path", "radius")) {
-    if (*r <= 0.0) failAt("path.radius", fmt::format("expected a radius > 0, got {}", *r));
-    spec_.path.radius = *r;
-  }
-  if (pk == PathKind::Parallel && sk == SurfaceKind::Paraboloid) {
-    if (spec_.surface.a != spec_.surface.b)
-      failAt(pathKindGiven ? "path.kind" : "surface.a",
-             fmt::format("a parallel needs a surface of revolution; this paraboloid has a = {} != b = {}",
-                         spec_.surface.a, spec_.surface.b));
-    if (!spec_.locations.contains("path.radius")) spec_.path.radius = 2.0;
-  }
-  auto colatitude = [&](const std::string& key, double& target) {
-    if (auto th = number(path, "path", key)) {
-      if (!(*th > 0.0 && *th < 180.0))
-        failAt("path." + key, fmt::format("expected a colatitude in (0, 180) degrees, got {}", *th));
-      target = *th;
-    }
-  };
-  colatitude("colatitude_deg", spec_.path.colatitudeDeg);
-  colatitude("colatitude_start_deg", spec_.path.colatitudeStartDeg);
-  colatitude("colatitude_end_deg", spec_.path.colatitudeEndDeg);
-  if ((meridian && onSphere) || pk == PathKind::Loxodrome) {
-    if (spec_.path.colatitudeStartDeg == spec_.path.colatitudeEndDeg)
-      failAt("path.colatitude_end_deg", "expected colatitude_end_deg != colatitude_start_deg (an empty path)");
-  }
-  if (auto v = number(path, "path", "tube_angle_deg")) spec_.path.tubeAngleDeg = *v;
-  if (auto v = number(path, "path", "height")) spec_.path.height = *v;
-  if (auto v = number(path, "path", "azimuth_deg")) spec_.path.azimuthDeg = *v;
-  if (auto v = number(path, "path", "pitch_angle_deg")) {
-    if (!(std::abs(*v) < 90.0))
-      failAt("path.pitch_angle_deg", fmt::format("expected a pitch angle in (-90, 90) degrees, got {}", *v));
-    spec_.path.pitchAngleDeg = *v;
-  }
-  if (auto v = number(path, "path", "heading_deg")) {
-    if (!(std::abs(*v) < 90.0))
-      failAt("path.heading_deg", fmt::format("expected a heading in (-90, 90) degrees from the meridians "
-                                             "(90 is a parallel: use kind = \"parallel\"), got {}", *v));
-    spec_.path.headingDeg = *v;
-  }
-  if (auto p = vector(path, "path", "start_point")) spec_.path.startPoint = *p;
-  if (auto e = expression(path, "path", "u")) spec_.path.u = *e;
-  if (auto e = expression(path, "path", "v")) spec_.path.v = *e;
-  if (auto v = number(path, "path", "t_start")) spec_.path.tStart = *v;
-  if (auto v = number(path, "path", "t_end")) spec_.path.tEnd = *v;
-  if (pk == PathKind::Uv && !(spec_.path.tEnd > spec_.path.tStart))
-    failAt(spec_.locations.contains("path.t_end") ? "path.t_end" : "path.t_start",
-           fmt::format("expected t_end > t_start, got [{}, {}]", spec_.path.tStart, spec_.path.tEnd));
-  if (auto pts = pointList(path, "path", "points")) spec_.path.points = *pts;
-  if (auto c = boolean(path, "path", "closed")) spec_.path.closed = *c;
-  if (auto i = text(path, "path", "interpolation", {"spline", "polyline"})) spec_.path.interpolation = *i;
-  if (auto r = number(path, "path", "corner_radius")) {
-    if (*r < 0.0) failAt("path.corner_radius", fmt::format("expected a radius >= 0, got {}", *r));
-    spec_.path.cornerRadius = *r;
-  }
-  for (const char* key : {"curvature_start", "curvature_rate"}) {
-    if (auto v = number(path, "path", key)) {
-      if (std::abs(*v) > 1e6) failAt(std::string("path.") + key, fmt::format("expected |value| <= 1e6, got {}", *v));
-      (std::string(key) == "curvature_start" ? spec_.path.curvatureStart : spec_.path.curvatureRate) = *v;
-    }
-  }
-  if (pk == PathKind::Points) {
-    const std::size_t need = spec_.path.closed ? 3 : 2;
-    if (spec_.path.points.size() < need)
-      throw badInput(spec_.locations.contains("path.points") ? where("path.points") : where("path"),
-                     "path.points: expected at least {} points for {} path, got {}", need,
-                     spec_.path.closed ? "a closed" : "an open", spec_.path.points.size());
-  }
   if (spec_.plate) {
     if (pk != PathKind::Circle)
       failAt(pathKindGiven ? "path.kind" : "surface.kind",
@@ -591,6 +755,8 @@ SceneSpec Reader::read() {
       failAt("path.radius", "conflicts with [plate]: the contact circle's radius follows from plate.radius "
                             "(R1/2); remove path.radius");
   }
+
+  readSegments();
 
   // [solver]
   const toml::table* solver = section("solver", {"method", "steps", "tolerance"});
@@ -629,6 +795,7 @@ SceneSpec Reader::read() {
   }
 
   readRender();
+  readLabels();
   readAnimation();
   return spec_;
 }
@@ -724,6 +891,17 @@ void collectLocations(const toml::table& t, const std::string& prefix, const std
                     ? SourceLoc{file}
                     : SourceLoc{file, static_cast<int>(src.begin.line), static_cast<int>(src.begin.column)};
     if (const toml::table* sub = node.as_table()) collectLocations(*sub, path, file, out);
+    // [[segment]] entries: segment[1], segment[2], … (counted from 1).
+    if (const toml::array* entries = node.as_array()) {
+      for (std::size_t i = 0; i < entries->size(); ++i) {
+        const toml::node& entry = *entries->get(i);
+        const std::string item = path + "[" + std::to_string(i + 1) + "]";
+        const auto& at = entry.source();
+        if (at.begin.line != 0)
+          out[item] = SourceLoc{file, static_cast<int>(at.begin.line), static_cast<int>(at.begin.column)};
+        if (const toml::table* sub = entry.as_table()) collectLocations(*sub, item, file, out);
+      }
+    }
   }
 }
 
@@ -759,6 +937,11 @@ toml::table resolveExtends(toml::table root, const std::filesystem::path& file,
   chain.pop_back();
   root.erase("extends");
   collectLocations(root, "", file.string(), locations);
+  // A storyboard replaces the scene's motion as a whole: a child's
+  // [[segment]] array replaces the parent's (arrays are not merged) and any
+  // [path] it had, and a child's [path] replaces the parent's segments.
+  if (root.contains("segment")) merged.erase("path");
+  if (root.contains("path")) merged.erase("segment");
   mergeInto(merged, root);
   return merged;
 }

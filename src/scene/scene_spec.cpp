@@ -1,5 +1,7 @@
 #include "scene/scene_spec.hpp"
 
+#include <cmath>
+
 namespace rollspin::scene {
 
 KeyRule surfaceKeyRule(const std::string& key, SurfaceKind sk) {
@@ -89,6 +91,44 @@ std::string toString(RenderLayout l) {
     case RenderLayout::Twin: return "twin";
   }
   return "?";
+}
+
+std::string toString(Fact f) { return kFactNames[static_cast<std::size_t>(f)]; }
+
+namespace {
+bool wholeTurns(double turns) { return std::abs(turns - std::round(turns)) < 1e-9; }
+bool planeCircle(const SceneSpec& s) { return s.surface.kind == SurfaceKind::Plane && s.path.kind == PathKind::Circle; }
+bool sphereParallel(const SceneSpec& s) {
+  return s.surface.kind == SurfaceKind::Sphere && s.path.kind == PathKind::Parallel;
+}
+bool onEquator(const SceneSpec& s) { return std::abs(s.path.colatitudeDeg - 90.0) < 1e-9; }
+}  // namespace
+
+KeyRule factRule(Fact f, const SceneSpec& spec) {
+  // A storyboard's facts are its captions: the closed forms are about one path.
+  if (spec.isStoryboard()) return {false, "a scene with one [path] (a storyboard's segments have captions)"};
+  switch (f) {
+    case Fact::Delta: return {planeCircle(spec) || sphereParallel(spec), "a circle on a plane or a parallel on a sphere"};
+    case Fact::Marks: return {planeCircle(spec), "a circle on a plane"};
+    case Fact::Turns: return {sphereParallel(spec) && onEquator(spec), "a parallel on a sphere at colatitude_deg = 90"};
+    case Fact::PhaseSplit:
+      return {(planeCircle(spec) || sphereParallel(spec)) && wholeTurns(spec.path.turns),
+              "a circle on a plane or a parallel on a sphere, with whole path.turns (B's loop must close)"};
+  }
+  return {false, ""};
+}
+
+std::vector<Fact> resolveFacts(const SceneSpec& spec) {
+  if (spec.labels.facts) return *spec.labels.facts;
+  if (spec.isStoryboard()) return {};
+  if (spec.plate) return {Fact::Marks};
+  if (planeCircle(spec)) return {Fact::Delta};
+  if (sphereParallel(spec)) {
+    if (onEquator(spec)) return {Fact::Turns};
+    if (spec.ball.radius <= 0.1 * spec.surface.radius && wholeTurns(spec.path.turns)) return {Fact::PhaseSplit};
+    return {Fact::Delta};
+  }
+  return {};
 }
 
 }  // namespace rollspin::scene

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "scene/frame_rate.hpp"
 
 namespace rollspin::scene {
 
@@ -111,12 +112,25 @@ struct RenderSpec {
   std::optional<VideoFormat> format;  // animations; default: from the output's extension, else mp4
 };
 
+// [labels]: facts of the scene, computed from the solver (app/scene_facts)
+// and printed next to the paper's closed form. Each applies to some kinds
+// only (factRule).
+enum class Fact {
+  Delta,       // rotation in the rolling frame after the circuit vs δ (circle, parallel)
+  Marks,       // marks every path angle β that turns the ball by π (circle on a plane)
+  Turns,       // turns in the lab and relative to the radius line (parallel at the equator)
+  PhaseSplit,  // spinor phase = dynamic + geometric, and the cone of B (closed circle or parallel)
+};
+struct LabelsSpec {
+  std::optional<std::vector<Fact>> facts;  // nullopt: "auto" (resolveFacts); empty: "none"
+};
+
 enum class Easing { Linear, Smooth };
 
 // [animation]: how frame time maps to arc length, and the encoder's settings.
 // The motion lasts `duration` seconds, or L/speed when `speed` is given.
 struct AnimationSpec {
-  long long fps = 30;
+  FrameRate fps;                 // 30/1; exact rationals for NTSC (30000/1001)
   double duration = 10.0;        // seconds for the whole path
   std::optional<double> speed;   // arc length per second (instead of duration)
   Easing easing = Easing::Smooth;
@@ -124,6 +138,28 @@ struct AnimationSpec {
   double crf = 18.0;             // H.264 constant rate factor (0 lossless … 51)
   std::string preset = "medium"; // x264 preset
 };
+
+// A camera change: render's camera keys, each optional (absent = unchanged).
+struct CameraSpec {
+  std::optional<double> azimuthDeg, elevationDeg, distance, fovDeg;
+  std::optional<Vec3> target;
+  std::optional<bool> follow;
+};
+inline const std::vector<std::string> kCameraKeys{"azimuth_deg", "elevation_deg", "distance", "target", "follow",
+                                                  "fov_deg"};
+
+// [[segment]]: one step of a storyboard (README "Storyboards"): a motion
+// along its own path, or a hold; with its caption, title and camera.
+struct SegmentSpec {
+  std::optional<PathSpec> path;    // a motion; absent: a hold
+  double hold = 0.0;               // a hold: seconds the ball rests
+  std::optional<double> duration;  // a motion: seconds
+  std::optional<double> speed;     // a motion: arc length per second (instead of duration)
+  std::string caption;             // shown while the segment plays ("" = none)
+  std::optional<std::string> title;  // replaces render.title while the segment plays
+  CameraSpec camera;               // laid over the previous segment's camera (the first: over [render])
+};
+inline constexpr std::size_t kMaxSegments = 1000;
 
 struct SceneSpec {
   std::string sourceFile;  // the scene file ("" when built in code)
@@ -135,9 +171,15 @@ struct SceneSpec {
   SolverSpec solver;
   TimelineSpec timeline;
   RenderSpec render;
+  LabelsSpec labels;
   AnimationSpec animation;
+  std::vector<SegmentSpec> segments;  // a storyboard: non-empty, and `path` is unused
 
-  // Where a dotted key ("ball.radius") was set; the file (no line) when the
+  [[nodiscard]] bool isStoryboard() const { return !segments.empty(); }
+  // "segment[k]" (k counts from 1), the prefix of segment k's keys.
+  [[nodiscard]] static std::string segmentKey(std::size_t index) { return "segment[" + std::to_string(index + 1) + "]"; }
+
+  // Where a dotted key ("ball.radius", "segment[2].path.radius") was set; the file (no line) when the
   // key took its default.
   [[nodiscard]] SourceLoc where(const std::string& key) const;
   std::map<std::string, SourceLoc> locations;
@@ -163,5 +205,15 @@ inline const std::vector<std::string> kPathKeys{
 [[nodiscard]] std::string toString(SurfaceKind k);
 [[nodiscard]] std::string toString(PathKind k);
 [[nodiscard]] std::string toString(RenderLayout l);
+
+inline const std::vector<std::string> kFactNames{"delta", "marks", "turns", "phase-split"};
+[[nodiscard]] std::string toString(Fact f);
+// Whether fact f has a meaning (and a closed form) for the scene's kinds.
+[[nodiscard]] KeyRule factRule(Fact f, const SceneSpec& spec);
+// The facts a scene shows: labels.facts as given, or for "auto" its kind's:
+// Brockett's plate → marks; another circle on a plane → delta; a parallel on
+// a sphere → turns at the equator, phase-split for a small ball (R ≤ r/10,
+// whole circuits), delta otherwise; any other path → none.
+[[nodiscard]] std::vector<Fact> resolveFacts(const SceneSpec& spec);
 
 }  // namespace rollspin::scene

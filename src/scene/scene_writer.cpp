@@ -28,12 +28,15 @@ class Writer {
  public:
   explicit Writer(const std::map<std::string, std::string>& notes) : notes_(notes) {}
 
-  void section(const std::string& name) {
-    section_ = name;
+  void section(const std::string& name) { header("[" + name + "]", name); }
+  // A header line ("[segment.path]", "[[segment]]") whose keys' notes are
+  // looked up under `noteKey` ("segment[2].path"); a note on noteKey itself
+  // becomes a comment above the header.
+  void header(const std::string& line, const std::string& noteKey) {
+    section_ = noteKey;
     if (!out_.empty()) out_ += '\n';
-    out_ += '[';
-    out_ += name;
-    out_ += "]\n";
+    if (auto it = notes_.find(noteKey); it != notes_.end()) out_ += "# " + it->second + "\n";
+    out_ += line + "\n";
   }
   void key(const std::string& key, const std::string& value) {
     const std::string full = section_ + "." + key;
@@ -57,12 +60,96 @@ class Writer {
 
 std::string pathKindName(PathKind k) { return toString(k); }
 
+// How a path's unset placement keys are resolved: by the surface (a scene's
+// [path], a storyboard's first segment) or by the previous segment's end.
+enum class PathDefaults { Own, FromPrevious };
+
+void writePath(Writer& w, const PathSpec& p, SurfaceKind sk, bool plate, PathDefaults defaults) {
+  const PathKind pk = p.kind;
+  w.key("kind", quoted(pathKindName(pk)));
+  for (const auto& key : kPathKeys) {
+    if (!pathKeyRule(key, pk, sk).applies) continue;
+    // With [plate] the circle's radius is derived, and setting it is an error.
+    if (key == "radius" && plate) continue;
+    if (key == "turns") w.key(key, number(p.turns));
+    else if (key == "direction") w.key(key, quoted(p.counterClockwise ? "ccw" : "cw"));
+    else if (key == "length") w.key(key, number(p.length));
+    else if (key == "direction_vector") {
+      if (p.directionVector) w.key(key, vec(*p.directionVector));
+      else if (defaults == PathDefaults::Own) w.computed(key, "the default direction on this surface");
+      else if (sk == SurfaceKind::Plane && pk != PathKind::Geodesic) continue;  // setting it is an error here
+      else w.computed(key, "the previous segment's end heading");
+    } else if (key == "radius") w.key(key, number(p.radius));
+    else if (key == "colatitude_deg") w.key(key, number(p.colatitudeDeg));
+    else if (key == "tube_angle_deg") w.key(key, number(p.tubeAngleDeg));
+    else if (key == "height") w.key(key, number(p.height));
+    else if (key == "azimuth_deg") w.key(key, number(p.azimuthDeg));
+    else if (key == "colatitude_start_deg") w.key(key, number(p.colatitudeStartDeg));
+    else if (key == "colatitude_end_deg") w.key(key, number(p.colatitudeEndDeg));
+    else if (key == "pitch_angle_deg") w.key(key, number(p.pitchAngleDeg));
+    else if (key == "heading_deg") w.key(key, number(p.headingDeg));
+    else if (key == "start_point") {
+      if (p.startPoint) w.key(key, vec(*p.startPoint));
+      else w.computed(key, defaults == PathDefaults::Own ? "the default start on this surface"
+                                                         : "the previous segment's end point");
+    } else if (key == "u") w.key(key, quoted(p.u));
+    else if (key == "v") w.key(key, quoted(p.v));
+    else if (key == "t_start") w.key(key, number(p.tStart));
+    else if (key == "t_end") w.key(key, number(p.tEnd));
+    else if (key == "points") {
+      std::string list = "[";
+      for (std::size_t i = 0; i < p.points.size(); ++i) {
+        list += i ? ", [" : "[";
+        for (std::size_t j = 0; j < p.points[i].size(); ++j) list += (j ? ", " : "") + number(p.points[i][j]);
+        list += "]";
+      }
+      w.key(key, list + "]");
+    } else if (key == "closed") w.key(key, boolean(p.closed));
+    else if (key == "interpolation") w.key(key, quoted(p.interpolation));
+    else if (key == "corner_radius") w.key(key, number(p.cornerRadius));
+    else if (key == "curvature_start") w.key(key, number(p.curvatureStart));
+    else if (key == "curvature_rate") w.key(key, number(p.curvatureRate));
+  }
+}
+
+void writeSegments(Writer& w, const SceneSpec& spec) {
+  for (std::size_t i = 0; i < spec.segments.size(); ++i) {
+    const SegmentSpec& seg = spec.segments[i];
+    const std::string prefix = SceneSpec::segmentKey(i);
+    w.header("[[segment]]", prefix);
+    if (!seg.caption.empty()) w.key("caption", quoted(seg.caption));
+    if (seg.title) w.key("title", quoted(*seg.title));
+    if (!seg.path) {
+      w.key("hold", number(seg.hold));
+    } else if (seg.duration) {
+      w.key("duration", number(*seg.duration));
+    } else if (seg.speed) {
+      w.key("speed", number(*seg.speed));
+    } else {
+      w.computed("duration", "its length at the storyboard's speed (see [animation])");
+    }
+    if (seg.path) {
+      w.header("[segment.path]", prefix + ".path");
+      writePath(w, *seg.path, spec.surface.kind, false, i == 0 ? PathDefaults::Own : PathDefaults::FromPrevious);
+    }
+    const CameraSpec& c = seg.camera;
+    if (c.azimuthDeg || c.elevationDeg || c.distance || c.target || c.follow || c.fovDeg) {
+      w.header("[segment.camera]", prefix + ".camera");
+      if (c.azimuthDeg) w.key("azimuth_deg", number(*c.azimuthDeg));
+      if (c.elevationDeg) w.key("elevation_deg", number(*c.elevationDeg));
+      if (c.distance) w.key("distance", number(*c.distance));
+      if (c.target) w.key("target", vec(*c.target));
+      if (c.follow) w.key("follow", boolean(*c.follow));
+      if (c.fovDeg) w.key("fov_deg", number(*c.fovDeg));
+    }
+  }
+}
+
 }  // namespace
 
 std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::string>& notes) {
   Writer w(notes);
   const SurfaceKind sk = spec.surface.kind;
-  const PathKind pk = spec.path.kind;
 
   w.section("ball");
   w.key("radius", number(spec.ball.radius));
@@ -95,48 +182,9 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
     w.key("radius", number(spec.plate->radius));
   }
 
-  w.section("path");
-  w.key("kind", quoted(pathKindName(pk)));
-  for (const auto& key : kPathKeys) {
-    if (!pathKeyRule(key, pk, sk).applies) continue;
-    const PathSpec& p = spec.path;
-    // With [plate] the circle's radius is derived, and setting it is an error.
-    if (key == "radius" && spec.plate) continue;
-    if (key == "turns") w.key(key, number(p.turns));
-    else if (key == "direction") w.key(key, quoted(p.counterClockwise ? "ccw" : "cw"));
-    else if (key == "length") w.key(key, number(p.length));
-    else if (key == "direction_vector") {
-      if (p.directionVector) w.key(key, vec(*p.directionVector));
-      else w.computed(key, "the default direction on this surface");
-    } else if (key == "radius") w.key(key, number(p.radius));
-    else if (key == "colatitude_deg") w.key(key, number(p.colatitudeDeg));
-    else if (key == "tube_angle_deg") w.key(key, number(p.tubeAngleDeg));
-    else if (key == "height") w.key(key, number(p.height));
-    else if (key == "azimuth_deg") w.key(key, number(p.azimuthDeg));
-    else if (key == "colatitude_start_deg") w.key(key, number(p.colatitudeStartDeg));
-    else if (key == "colatitude_end_deg") w.key(key, number(p.colatitudeEndDeg));
-    else if (key == "pitch_angle_deg") w.key(key, number(p.pitchAngleDeg));
-    else if (key == "heading_deg") w.key(key, number(p.headingDeg));
-    else if (key == "start_point") {
-      if (p.startPoint) w.key(key, vec(*p.startPoint));
-      else w.computed(key, "the default start on this surface");
-    } else if (key == "u") w.key(key, quoted(p.u));
-    else if (key == "v") w.key(key, quoted(p.v));
-    else if (key == "t_start") w.key(key, number(p.tStart));
-    else if (key == "t_end") w.key(key, number(p.tEnd));
-    else if (key == "points") {
-      std::string list = "[";
-      for (std::size_t i = 0; i < p.points.size(); ++i) {
-        list += i ? ", [" : "[";
-        for (std::size_t j = 0; j < p.points[i].size(); ++j) list += (j ? ", " : "") + number(p.points[i][j]);
-        list += "]";
-      }
-      w.key(key, list + "]");
-    } else if (key == "closed") w.key(key, boolean(p.closed));
-    else if (key == "interpolation") w.key(key, quoted(p.interpolation));
-    else if (key == "corner_radius") w.key(key, number(p.cornerRadius));
-    else if (key == "curvature_start") w.key(key, number(p.curvatureStart));
-    else if (key == "curvature_rate") w.key(key, number(p.curvatureRate));
+  if (!spec.isStoryboard()) {
+    w.section("path");
+    writePath(w, spec.path, sk, spec.plate.has_value(), PathDefaults::Own);
   }
 
   w.section("solver");
@@ -172,15 +220,27 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   if (r.format) w.key("format", quoted(*r.format == VideoFormat::Mp4 ? "mp4" : "png"));
   else w.computed("format", "from the output's extension, else mp4");
 
+  w.section("labels");
+  if (spec.labels.facts) {
+    std::string list;
+    for (const Fact f : *spec.labels.facts) list += (list.empty() ? "" : ", ") + quoted(toString(f));
+    w.key("facts", spec.labels.facts->empty() ? quoted("none") : "[" + list + "]");
+  } else {
+    std::string chosen;
+    for (const Fact f : resolveFacts(spec)) chosen += (chosen.empty() ? "" : ", ") + toString(f);
+    w.key("facts", quoted("auto") + "  # for this scene: " + (chosen.empty() ? "none" : chosen));
+  }
+
   const AnimationSpec& a = spec.animation;
   w.section("animation");
-  w.key("fps", std::to_string(a.fps));
+  w.key("fps", a.fps.den == 1 ? a.fps.text() : quoted(a.fps.text()));
   if (a.speed) w.key("speed", number(*a.speed));
   else w.key("duration", number(a.duration));
   w.key("easing", quoted(a.easing == Easing::Linear ? "linear" : "smooth"));
   w.key("hold", number(a.hold));
   w.key("crf", number(a.crf));
   w.key("preset", quoted(a.preset));
+  writeSegments(w, spec);
   return w.text();
 }
 

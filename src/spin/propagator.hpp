@@ -25,6 +25,10 @@
 //            any h), error by step doubling, controlled per unit length so the
 //            sum over the path stays ≤ tolerance (adaptive_march.hpp).
 // In su(2) ≅ (R³, ×): A(ω) = −(i/2) ω·σ and [A(a), A(b)] = A(a × b).
+// A joined path (a storyboard, ContactPath::pieces) is solved piece by piece
+// and composed: U(s) = U_k(s − s_k) U_{k−1}(L_{k−1}) ⋯ U_1(L_1), each piece
+// by the same method (so a corner between pieces costs nothing and exact
+// applies when every piece has constant curvatures).
 // A sample s between grid nodes is reached by one partial step from the
 // preceding node, so samples never perturb the main march. The march
 // multiplies blocks of 64 step elements pairwise before applying them, so
@@ -32,6 +36,7 @@
 // The numeric core returns a status; it never prints or throws.
 #pragma once
 
+#include <algorithm>
 #include <functional>
 #include <optional>
 #include <span>
@@ -77,8 +82,9 @@ struct SolveStats {
 };
 
 // The arc lengths at which a run reports U: an explicit non-decreasing list,
-// or a uniform grid s_j = j L/(count − 1) generated on the fly, so a
-// timeline of 1e8 rows needs no 800 MB array.
+// a uniform grid s_j = j L/(count − 1) generated on the fly, so a
+// timeline of 1e8 rows needs no 800 MB array, or any non-decreasing sequence
+// generated on demand (an animation's frames merged with its trail grid).
 class SampleArcLengths {
  public:
   SampleArcLengths() = default;
@@ -86,19 +92,49 @@ class SampleArcLengths {
   SampleArcLengths(const std::vector<double>& explicitS) : SampleArcLengths(std::span<const double>(explicitS)) {}
   // count ≥ 2 points from 0 to length inclusive (the last is exactly length).
   [[nodiscard]] static SampleArcLengths uniform(double length, std::size_t count);
+  // count points, s_j = at(j). A run asks for j in non-decreasing order (it
+  // may ask for the same j again), so `at` may be a forward-only cursor.
+  [[nodiscard]] static SampleArcLengths generated(std::size_t count, std::function<double(std::size_t)> at);
 
   [[nodiscard]] std::size_t size() const { return count_; }
   [[nodiscard]] bool empty() const { return count_ == 0; }
   [[nodiscard]] double operator[](std::size_t j) const {
-    if (!uniform_) return explicit_[j];
-    return j + 1 == count_ ? length_ : length_ * static_cast<double>(j) / static_cast<double>(count_ - 1);
+    if (!sliced_) return raw(j);
+    const double s = raw(first_ + j);
+    return s >= limit_ ? upper_ : std::clamp(s - offset_, 0.0, upper_);
   }
+  // Samples first … first + count − 1 shifted by −offset into [0, upper]: a
+  // piece's samples in its own arc length (joined paths). Samples at or
+  // beyond `limit` (the next piece's start) map to exactly `upper`.
+  [[nodiscard]] SampleArcLengths slice(std::size_t first, std::size_t count, double offset, double upper,
+                                       double limit) const {
+    SampleArcLengths out = *this;
+    out.sliced_ = true;
+    out.first_ = first_ + first;
+    out.count_ = count;
+    out.offset_ = offset;
+    out.upper_ = upper;
+    out.limit_ = limit;
+    return out;
+  }
+  // A generated sequence may only be read forwards (see generated()).
+  [[nodiscard]] bool forwardOnly() const { return static_cast<bool>(generator_); }
 
  private:
+  [[nodiscard]] double raw(std::size_t j) const {
+    if (generator_) return generator_(j);
+    if (!uniform_) return explicit_[j];
+    return j + 1 == total_ ? length_ : length_ * static_cast<double>(j) / static_cast<double>(total_ - 1);
+  }
   std::span<const double> explicit_;
+  std::function<double(std::size_t)> generator_;
   std::size_t count_ = 0;
+  std::size_t total_ = 0;  // uniform grid: its full count
   bool uniform_ = false;
   double length_ = 0.0;
+  bool sliced_ = false;
+  std::size_t first_ = 0;
+  double offset_ = 0.0, upper_ = 0.0, limit_ = 0.0;
 };
 
 // Called once per requested sample, in order: (sample index, s, U(s)).
@@ -134,6 +170,10 @@ class Propagator {
   long long steps_;
   double tolerance_;
   long long stepLimit_ = 2'000'000'000;
+  // A joined path (ContactPath::pieces): one propagator per piece, the steps
+  // shared by each piece's ∫(|ω| + |d|) ds, the tolerance by its length.
+  [[nodiscard]] SolveStats runPieces(const SampleArcLengths& sampleS, const SampleSink& sink) const;
+  std::vector<long long> pieceSteps_;
   Vec3 d0_ = Vec3::Zero(), e0_ = Vec3::Zero();  // exact method's two rates
 };
 

@@ -56,5 +56,35 @@ TEST(BoundedQueue, CloseDrainsAndAbortDropsAndUnblocks) {
   EXPECT_EQ(aborted.pop(), std::nullopt) << "abort drops what was queued";
 }
 
+TEST(BoundedQueue, CountsTheTimeEachSideWasBlocked) {
+  // Each blocked side is given 200 ms to be blocked before it is released
+  // (it signals first, so a slow thread start on a loaded machine does not
+  // shorten the wait), and must count at least half of it.
+  BoundedQueue<int> q(1);
+  std::atomic<bool> popping{false};
+  std::thread consumer([&] {
+    popping = true;
+    EXPECT_EQ(q.pop(), 1);
+  });
+  while (!popping) std::this_thread::yield();
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  ASSERT_TRUE(q.push(1));
+  consumer.join();
+  EXPECT_GE(q.consumerWaitSeconds(), 0.1);
+  EXPECT_EQ(q.producerWaitSeconds(), 0.0) << "a push into a queue with room does not wait";
+
+  ASSERT_TRUE(q.push(2));
+  std::atomic<bool> pushing{false};
+  std::thread producer([&] {
+    pushing = true;
+    EXPECT_TRUE(q.push(3));  // full: waits for the pop below
+  });
+  while (!pushing) std::this_thread::yield();
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  EXPECT_EQ(q.pop(), 2);
+  producer.join();
+  EXPECT_GE(q.producerWaitSeconds(), 0.1);
+}
+
 }  // namespace
 }  // namespace rollspin::app

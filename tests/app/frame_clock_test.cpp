@@ -11,7 +11,7 @@ namespace {
 scene::SceneSpec animation(double duration, long long fps, double hold, scene::Easing easing) {
   scene::SceneSpec spec;
   spec.animation.duration = duration;
-  spec.animation.fps = fps;
+  spec.animation.fps = {fps, 1};
   spec.animation.hold = hold;
   spec.animation.easing = easing;
   return spec;
@@ -46,6 +46,16 @@ TEST(FrameClock, LinearIsUniformAndSmoothStartsAndStopsAtRest) {
   EXPECT_LT(smooth.arcLength(1), 0.5 * linear.arcLength(1));
   EXPECT_NEAR(smooth.arcLength(5), 5.0, 1e-12);
   EXPECT_NEAR(smooth.arcLength(10) - smooth.arcLength(9), smooth.arcLength(1), 1e-12) << "symmetric";
+}
+
+TEST(FrameClock, NtscCountsUseTheExactRational) {
+  scene::SceneSpec spec = animation(10.0, 30, 0.5, scene::Easing::Linear);
+  spec.animation.fps = {30000, 1001};
+  const FrameClock clock(5.0, spec);
+  EXPECT_EQ(clock.motionFrames(), 300) << "round(10 · 29.97002997) = round(299.7)";
+  EXPECT_EQ(clock.holdFrames(), 15) << "round(0.5 · 29.97) = round(14.985)";
+  spec.animation.duration = 100.0;
+  EXPECT_EQ(FrameClock(5.0, spec).motionFrames(), 2997) << "not 3000: the rate is below 30";
 }
 
 TEST(FrameClock, SpeedGivesTheDuration) {

@@ -11,6 +11,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <fstream>
 #include <sstream>
@@ -124,6 +126,46 @@ TEST(VideoCli, FramesRangeIsByteIdenticalToTheSameFramesOfAFullRender) {
   }
 }
 
+TEST(VideoCli, ARerenderIntoAFrameFolderLeavesNoStaleFramesAndNoForeignFileIsTouched) {
+  const fs::path dir = test::freshTempDir("video_rerender");
+  auto render = [&](const char* duration, std::vector<std::string> more = {}) {
+    auto args = small({"render", lollipop(), "--set", std::string("animation.duration=") + duration, "--set",
+                       "animation.hold=0", "-o", (dir / "f").string()});
+    args.insert(args.end(), more.begin(), more.end());
+    const auto r = test::runRollspin(args);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+  };
+  render("2.4");
+  ASSERT_EQ(filesIn(dir / "f").size(), 24u);
+  std::ofstream(dir / "f" / "notes.txt") << "mine";
+  render("1.2");  // 12 frames: frames 12 … 23 of the first render must go
+  std::vector<std::string> expected{"notes.txt"};
+  for (int k = 0; k < 12; ++k) expected.push_back(fmt::format("frame_{:05d}.png", k));
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(filesIn(dir / "f"), expected);
+  // A part (--frames) replaces its own frames and keeps the others.
+  const std::string before = slurp(dir / "f" / "frame_00003.png");
+  render("2.4", {"--frames", "20:21"});
+  expected.push_back("frame_00020.png");
+  expected.push_back("frame_00021.png");
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(filesIn(dir / "f"), expected);
+  EXPECT_EQ(slurp(dir / "f" / "frame_00003.png"), before);
+  EXPECT_EQ(filesIn(dir), std::vector<std::string>{"f"}) << "no staging folder left";
+}
+
+TEST(VideoCli, VerboseSaysWhichStageSetsThePace) {
+  const fs::path dir = test::freshTempDir("video_verbose");
+  const auto r = test::runRollspin(small({"render", lollipop(), "--verbose", "--set", "animation.duration=0.5", "--set",
+                                          "animation.hold=0", "-o", (dir / "v.mp4").string()}));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("rollspin: pipeline: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the encoder waited"), std::string::npos) << r.err;
+  const auto quiet = test::runRollspin(small({"render", lollipop(), "--set", "animation.duration=0.5", "--set",
+                                              "animation.hold=0", "-o", (dir / "q.mp4").string()}));
+  EXPECT_EQ(quiet.err.find("pipeline"), std::string::npos) << "only with --verbose: " << quiet.err;
+}
+
 // Starts rollspin without waiting for it.
 pid_t spawnRollspin(const std::vector<std::string>& args, const fs::path& errFile) {
   posix_spawn_file_actions_t actions;
@@ -217,6 +259,35 @@ TEST(VideoCli, SigtermDuringSetUpLeavesAPartialVideoOrNothing) {
   }
 }
 
+// NTSC rates are exact rationals: 29.97 means 30000/1001, in the stream's
+// frame rate, in every timestamp (frame k at exactly k·1001/30000 s) and in
+// the frame count (2 s → round(2 · 30000/1001) = round(59.94) = 60 frames).
+TEST(VideoCli, NtscFrameRatesAreExactRationals) {
+  const fs::path dir = test::freshTempDir("video_ntsc");
+  for (const char* fps : {"29.97", "30000/1001"}) {
+    const fs::path out = dir / (std::string(fps[2] == '.' ? "decimal" : "rational") + ".mp4");
+    const auto r = test::runRollspin({"render", lollipop(), "--set", "render.width=64", "--set", "render.height=48",
+                                      "--set", std::string("animation.fps=") + fps, "--set", "animation.duration=2",
+                                      "--set", "animation.hold=0.1", "-o", out.string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("30000/1001"), std::string::npos) << r.err;
+    const test::VideoProbe probe = test::probeVideo(out);
+    EXPECT_EQ(probe.frameRateNum, 30000) << fps;
+    EXPECT_EQ(probe.frameRateDen, 1001) << fps;
+    // 60 motion frames + 2 holds of round(0.1 · 29.97) = 3.
+    ASSERT_EQ(probe.ptsTicks.size(), 66u) << fps;
+    ASSERT_GT(probe.timeBaseDen, 0);
+    for (std::size_t k = 0; k < probe.ptsTicks.size(); ++k) {
+      // pts · tb = k · 1001/30000 exactly: pts · num_tb · 30000 = k · 1001 · den_tb.
+      EXPECT_EQ(probe.ptsTicks[k] * probe.timeBaseNum * 30000, (long long)k * 1001 * probe.timeBaseDen)
+          << fps << " frame " << k;
+      if (k > 0) {
+        EXPECT_GT(probe.ptsTicks[k], probe.ptsTicks[k - 1]);
+      }
+    }
+  }
+}
+
 TEST(VideoCli, QualityPresetSetsSizeAndFrameRateAndDefaultOutputIsTheSceneName) {
   const fs::path dir = test::freshTempDir("video_default");
   const auto r = test::runRollspin({"render", lollipop(), "--quality", "low", "--quiet", "--set",
@@ -247,6 +318,11 @@ TEST(VideoCli, BadInputAndUnwritableOutputsFailClearlyAndLeaveNothing) {
       {{"--set", "animation.duration=0.05", "-o", out}, 2, "animation.duration"},
       {{"--set", "animation.speed=2", "--set", "animation.duration=3", "-o", out}, 2, "animation.speed"},
       {{"--set", "animation.fps=0", "-o", out}, 2, "animation.fps"},
+      {{"--set", "animation.fps=-30", "-o", out}, 2, "animation.fps"},
+      {{"--set", "animation.fps=241", "-o", out}, 2, "animation.fps"},
+      {{"--set", "animation.fps=12.3456", "-o", out}, 2, "at most 3 places"},
+      {{"--set", "animation.fps=30000/0", "-o", out}, 2, "30000/1001"},
+      {{"--set", "animation.fps=30/1001/2", "-o", out}, 2, "animation.fps"},
       {{"--set", "animation.easing=bouncy", "-o", out}, 2, "animation.easing"},
       {{"--set", "animation.preset=fastest", "-o", out}, 2, "animation.preset"},
       {{"--set", "animation.crf=60", "-o", out}, 2, "animation.crf"},

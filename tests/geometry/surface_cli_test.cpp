@@ -18,15 +18,7 @@ using rollspin::test::sourceDir;
 
 namespace {
 
-struct BadCase {
-  const char* name;
-  const char* toml;
-  const char* key;    // named in the message
-  const char* where;  // ":line:col:" (or ":line:")
-  const char* hint;   // part of the explanation
-};
-
-const BadCase kCases[] = {
+const rollspin::test::BadScene kCases[] = {
     {"height expression does not parse", "[surface]\nkind = \"height\"\nz = \"0.3*sin(x)**cos(y)\"\n", "surface.z",
      ":3:17:", "at character 12"},
     {"unknown variable in a height", "[surface]\nkind = \"height\"\nz = \"x + w\"\n", "surface.z", ":3:10:",
@@ -68,19 +60,7 @@ const BadCase kCases[] = {
 };
 
 TEST(SurfaceCli, BadCurvedScenesExitTwoAndWriteNothing) {
-  for (const BadCase& c : kCases) {
-    const auto dir = freshTempDir("surface_bad_input");
-    const auto scene = dir / "scene.toml";
-    std::ofstream(scene) << c.toml;
-    const auto out = dir / "timeline.csv";
-    const auto r = runRollspin({"timeline", scene.string(), "-o", out.string()});
-    EXPECT_EQ(r.exitCode, 2) << c.name << "\n" << r.err;
-    EXPECT_NE(r.err.find(c.key), std::string::npos) << c.name << ": key missing in\n" << r.err;
-    EXPECT_NE(r.err.find(scene.string() + c.where), std::string::npos) << c.name << ": location missing in\n" << r.err;
-    EXPECT_NE(r.err.find(c.hint), std::string::npos) << c.name << ": explanation missing in\n" << r.err;
-    EXPECT_FALSE(std::filesystem::exists(out)) << c.name;
-    std::filesystem::remove_all(dir);
-  }
+  for (const auto& c : kCases) rollspin::test::expectBadScene(c);
 }
 
 TEST(SurfaceCli, CurvedScenesSolve) {

@@ -66,6 +66,10 @@ VideoProbe probeVideo(const std::filesystem::path& file, const std::set<long lon
   probe.width = par->width;
   probe.height = par->height;
   probe.frameRate = av_q2d(stream->avg_frame_rate);
+  probe.frameRateNum = stream->avg_frame_rate.num;
+  probe.frameRateDen = stream->avg_frame_rate.den;
+  probe.timeBaseNum = stream->time_base.num;
+  probe.timeBaseDen = stream->time_base.den;
   probe.indexBeforeData = moovBeforeMdat(file);
 
   const AVCodec* decoder = avcodec_find_decoder(par->codec_id);
@@ -84,6 +88,7 @@ VideoProbe probeVideo(const std::filesystem::path& file, const std::set<long lon
   auto drain = [&] {
     while (avcodec_receive_frame(codec, frame) == 0) {
       probe.ptsSeconds.push_back(double(frame->best_effort_timestamp) * av_q2d(stream->time_base));
+      probe.ptsTicks.push_back(frame->best_effort_timestamp);
       if (keepFrames.contains(decoded)) {
         if (sws == nullptr) {
           sws = sws_getContext(frame->width, frame->height, static_cast<AVPixelFormat>(frame->format), frame->width,

@@ -22,7 +22,10 @@ struct VideoProbe {
   std::string colorSpace, colorPrimaries, colorTransfer, colorRange;  // "bt709", …, "tv"
   int width = 0, height = 0;
   double frameRate = 0.0;    // average, from the stream
+  int frameRateNum = 0, frameRateDen = 0;  // the same, exactly (30000/1001)
+  int timeBaseNum = 0, timeBaseDen = 0;    // the stream's time base
   std::vector<double> ptsSeconds;   // decoded frames, in presentation order
+  std::vector<long long> ptsTicks;  // the same in time-base units, exactly
   std::vector<media::Image> kept;   // the frames asked for, in index order
   bool indexBeforeData = false;     // 'moov' before 'mdat' (+faststart)
 };

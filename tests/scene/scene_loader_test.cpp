@@ -10,6 +10,7 @@
 #include "app/scene_model.hpp"
 #include "app/solve_job.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/scene_writer.hpp"
 #include "spin/field.hpp"
 #include "spin/propagator.hpp"
 
@@ -157,4 +158,47 @@ TEST(Extends, CyclesMissingFilesAndBadValuesAreErrors) {
   EXPECT_NE(message(number).find("expected the path"), std::string::npos);
   EXPECT_NE(message(badBase).find("base.toml:2:10: ball.radius"), std::string::npos) << message(badBase);
   std::filesystem::remove_all(dir);
+}
+
+TEST(SceneLoader, FrameRatesAreExactRationals) {
+  auto rate = [](const std::string& value) {
+    return scene::loadSceneText("[animation]\nfps = " + value + "\n", "s.toml").animation.fps;
+  };
+  using scene::FrameRate;
+  EXPECT_EQ(rate("24"), (FrameRate{24, 1}));
+  EXPECT_EQ(rate("25.0"), (FrameRate{25, 1}));
+  EXPECT_EQ(rate("23.976"), (FrameRate{24000, 1001}));
+  EXPECT_EQ(rate("23.98"), (FrameRate{24000, 1001}));
+  EXPECT_EQ(rate("29.97"), (FrameRate{30000, 1001}));
+  EXPECT_EQ(rate("59.94"), (FrameRate{60000, 1001}));
+  EXPECT_EQ(rate("119.88"), (FrameRate{120000, 1001}));
+  EXPECT_EQ(rate("12.5"), (FrameRate{25, 2}));
+  EXPECT_EQ(rate("\"30000/1001\""), (FrameRate{30000, 1001}));
+  EXPECT_EQ(rate("\"60/2\""), (FrameRate{30, 1})) << "reduced";
+  EXPECT_EQ(rate("\"29.97\""), (FrameRate{30000, 1001}));
+  EXPECT_EQ(scene::loadSceneText("", "s.toml").animation.fps, (FrameRate{30, 1}));
+  const std::vector<std::string> ntscFilm{"animation.fps=24000/1001"};
+  EXPECT_EQ(scene::loadSceneText("", "s.toml", ntscFilm).animation.fps, (FrameRate{24000, 1001}));
+
+  for (const std::string bad : {"0", "-30", "0.5", "241", "240.5", "12.3456", "\"abc\"", "\"30000/0\"", "\"0/1\"",
+                                "\"-30/1\"", "\"30/1001/2\"", "\"99999999999/1\"", "\"1/99999999999\"", "true", "inf"}) {
+    try {
+      (void)rate(bad);
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const Error& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(e.exitCode(), 2) << bad;
+      EXPECT_NE(what.find("s.toml:2:7: animation.fps: expected frames per second in [1, 240]"), std::string::npos)
+          << bad << ": " << what;
+      EXPECT_NE(what.find("\"30000/1001\""), std::string::npos) << what;
+    }
+  }
+}
+
+TEST(SceneLoader, FrameRatePrintsBackAsItsRational) {
+  for (const std::string value : {"29.97", "24", "\"25/2\""}) {
+    const scene::SceneSpec spec = scene::loadSceneText("[animation]\nfps = " + value + "\n", "s.toml");
+    const scene::SceneSpec again = scene::loadSceneText(scene::writeScene(spec), "printed.toml");
+    EXPECT_EQ(again.animation.fps, spec.animation.fps) << value << "\n" << scene::writeScene(spec);
+  }
 }

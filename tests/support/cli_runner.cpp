@@ -1,5 +1,7 @@
 #include "support/cli_runner.hpp"
 
+#include <gtest/gtest.h>
+
 #include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -13,14 +15,28 @@ extern char** environ;
 
 namespace rollspin::test {
 
-namespace {
-std::string slurp(const std::filesystem::path& p) {
+std::string readFile(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
 }
-}  // namespace
+
+void expectBadScene(const BadScene& c) {
+  const auto dir = freshTempDir("bad_scene");
+  const auto scene = dir / "scene.toml";
+  std::ofstream(scene) << c.toml;
+  const auto out = dir / "timeline.csv";
+  const auto r = runRollspin({"timeline", scene.string(), "-o", out.string()});
+  EXPECT_EQ(r.exitCode, 2) << c.name << "\n" << r.err;
+  EXPECT_NE(r.err.find(c.key), std::string::npos) << c.name << ": key missing in\n" << r.err;
+  EXPECT_NE(r.err.find(scene.string() + c.where), std::string::npos) << c.name << ": file:line:col missing in\n" << r.err;
+  EXPECT_NE(r.err.find(c.hint), std::string::npos) << c.name << ": expectation missing in\n" << r.err;
+  std::size_t files = 0;  // nothing written, no temporary left behind
+  for (const auto& e : std::filesystem::directory_iterator(dir)) files += e.path() != scene;
+  EXPECT_EQ(files, 0u) << c.name;
+  std::filesystem::remove_all(dir);
+}
 
 std::filesystem::path sourceDir() { return ROLLSPIN_SOURCE_DIR; }
 std::filesystem::path binaryPath() { return ROLLSPIN_BINARY; }
@@ -67,8 +83,8 @@ CliResult runRollspin(const std::vector<std::string>& args, const std::filesyste
   waitpid(pid, &status, 0);
   CliResult result;
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  result.out = slurp(outPath);
-  result.err = slurp(errPath);
+  result.out = readFile(outPath);
+  result.err = readFile(errPath);
   std::filesystem::remove_all(dir);
   return result;
 }

@@ -26,6 +26,20 @@ CliResult runRollspin(const std::vector<std::string>& args, const std::filesyste
 std::filesystem::path freshTempDir(const std::string& name);
 
 std::filesystem::path sourceDir();
+// A file's bytes ("" when it cannot be read).
+std::string readFile(const std::filesystem::path& p);
+
+// A malformed scene file: `timeline` on it must exit 2, name `key`, the
+// file followed by `where` (":line:col:" or ":line:") and `hint`, and leave
+// nothing behind. One GoogleTest expectation per check, labelled by name.
+struct BadScene {
+  const char* name;
+  const char* toml;
+  const char* key;
+  const char* where;
+  const char* hint;
+};
+void expectBadScene(const BadScene& c);
 std::filesystem::path binaryPath();
 
 }  // namespace rollspin::test

@@ -1,0 +1,106 @@
+#include "app/draw_facts.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace rollspin::app {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDeg = kPi / 180.0;
+
+// "× 2" after a per-circuit formula when the path goes round more than once.
+std::string timesTurns(double turns) {
+  return std::abs(turns - 1.0) < 1e-12 ? std::string() : fmt::format(" × {:g}", turns);
+}
+
+// Lines stay under ~42 characters: a 480-pixel thumbnail's ball view holds
+// that at a readable size.
+void deltaLines(const DeltaFact& d, const LiveAngles& live, bool atEnd, bool strobe, double turns,
+                std::vector<std::string>& out) {
+  if (d.onSphere) {
+    out.push_back(fmt::format("δ = 2π√(ρ²/R² + cos²θ){}", timesTurns(turns)));
+    out.push_back(fmt::format("  = {:.6f} rad (ρ = r sin θ)", d.closedForm));
+  } else {
+    out.push_back(fmt::format("δ = 2π√(1 + (r/R)²){} = {:.6f} rad", timesTurns(turns), d.closedForm));
+  }
+  out.push_back(fmt::format("solver: {:.6f} rad in the rolling frame", d.measured));
+  if (!atEnd && !strobe) out.push_back(fmt::format("  so far: {:.4f} rad", live.rolling));
+  out.push_back(fmt::format("lab rotation {:.4f}° = |δ mod 2π| {:.4f}°", d.labAngle / kDeg, d.closedFormMod / kDeg));
+}
+
+void marksLines(const SceneFacts& facts, const FrameOrientations& frame, bool strobe, std::vector<std::string>& out) {
+  const MarksFact& m = *facts.marks;
+  out.push_back(fmt::format("a mark every β = π/√(1 + (r/R)²) = {:.2f}°", m.beta / kDeg));
+  const int passed = strobe ? int(m.s.size()) : facts.marksPassed(frame.current.s);
+  out.push_back(fmt::format("of path angle; marks passed: {} of {}", passed, m.s.size()));
+  // The latest completed interval, else the turn since mark 0 so far.
+  if (passed >= 2) {
+    const std::size_t k = std::size_t(passed) - 2;
+    out.push_back(fmt::format("turn from mark {} to {}: {:.6f}°", k, k + 1, m.turn[k] / kDeg));
+    out.push_back(fmt::format("  = {:.9f}π, axis {:.2f}° from n", m.turn[k] / kPi, m.axisFromNormal[k] / kDeg));
+  } else {
+    const spin::Su2 v = facts.rollingFrame(frame.current.s, frame.current.q);
+    const double since = spin::rotationAngleAxis(v * m.rolling.front().conjugate()).angle;
+    out.push_back(fmt::format("turn since mark 0: {:.2f}°", since / kDeg));
+  }
+  out.push_back("(in the frame turning with the path)");
+}
+
+void turnsLines(const TurnsFact& t, const LiveAngles& live, bool strobe, std::vector<std::string>& out) {
+  const double lab = strobe ? t.lab : live.lab, relative = strobe ? t.lab - t.frame : live.lab - live.frame;
+  out.push_back(fmt::format("turns in the lab: {:.2f} (end {:.6f})", std::abs(lab) / (2 * kPi),
+                            std::abs(t.lab) / (2 * kPi)));
+  out.push_back(fmt::format("  {} the revolution", t.lab * t.frame < 0.0 ? "against" : "with"));
+  out.push_back("turns relative to the radius line:");
+  out.push_back(fmt::format("  {:.2f} (end {:.6f}; the paper says 1)", std::abs(relative) / (2 * kPi),
+                            std::abs(t.lab - t.frame) / (2 * kPi)));
+}
+
+void phaseLines(const PhaseSplitFact& p, std::vector<std::string>& out) {
+  out.push_back(fmt::format("cyclic spin X of U(L), {:.2f}° from B:", p.spinFromField / kDeg));
+  out.push_back(fmt::format("dynamic (1/2)∫B·X ds = {:.6f}", p.dynamic));
+  out.push_back(fmt::format("geometric −(1/2)Ω(X) = {:.6f}", p.geometric));
+  out.push_back(fmt::format("sum ≡ total phase {:.6f} (mod 2π)", p.total));
+  out.push_back(fmt::format("  off by {:.1e} rad", std::abs(p.residual)));
+  out.push_back(fmt::format("Berry: (1/2)∫|B| ds = {:.4f}", p.adiabaticDynamic));
+  out.push_back(fmt::format("−(1/2)Ω(B) = {:.6f} (the blue cone)", p.berryGeometric));
+  out.push_back(fmt::format("|Ω(B)| = 2π(1 − cos {:.1f}°) = {:.6f}", p.coneAngle / kDeg, 2.0 * std::abs(p.berryClosedForm)));
+}
+
+}  // namespace
+
+std::vector<std::string> factLines(const SceneFacts& facts, const FrameOrientations& frame, double pathLength) {
+  std::vector<std::string> out;
+  const bool strobe = !frame.strobe.empty();
+  const bool atEnd = frame.current.s >= pathLength * (1.0 - 1e-12);
+  const LiveAngles live = facts.at(frame.current.s, frame.current.q);
+  for (const scene::Fact f : facts.facts()) {
+    switch (f) {
+      case scene::Fact::Delta: deltaLines(*facts.delta, live, atEnd, strobe, facts.pathTurns(), out); break;
+      case scene::Fact::Marks: marksLines(facts, frame, strobe, out); break;
+      case scene::Fact::Turns: turnsLines(*facts.turns, live, strobe, out); break;
+      case scene::Fact::PhaseSplit: phaseLines(*facts.phaseSplit, out); break;
+    }
+  }
+  return out;
+}
+
+std::shared_ptr<render::MeshData> coneMesh(const std::vector<geometry::Vec3>& loop) {
+  auto mesh = std::make_shared<render::MeshData>();
+  render::Vertex apex;  // the origin; normals are left to the unlit material
+  mesh->vertices.push_back(apex);
+  for (const auto& p : loop) {
+    render::Vertex v;
+    v.position = glm::vec3(float(p.x()), float(p.y()), float(p.z()));
+    v.normal = glm::normalize(v.position);
+    mesh->vertices.push_back(v);
+  }
+  for (std::uint32_t i = 1; i + 1 < mesh->vertices.size(); ++i) mesh->indices.insert(mesh->indices.end(), {0, i, i + 1});
+  return mesh;
+}
+
+}  // namespace rollspin::app

@@ -1,0 +1,26 @@
+// Fact labels for SceneDrawer: SceneFacts (numbers, app/scene_facts) turned
+// into the text lines the ball view prints at arc length s — each measured
+// value beside its closed form — and the twin's cone of B̂ as a mesh.
+// Formatting only: every number comes from SceneFacts or the frame's U(s).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/draw_scene.hpp"
+#include "app/scene_facts.hpp"
+#include "render/draw_list.hpp"
+
+namespace rollspin::app {
+
+// The lines for the facts the scene shows, at the frame's s (live values
+// use frame.current.q). A strobe shows the circuit's values only.
+[[nodiscard]] std::vector<std::string> factLines(const SceneFacts& facts, const FrameOrientations& frame,
+                                                 double pathLength);
+
+// A fan of triangles from the origin through the closed loop of B̂ (unit
+// vectors): the cone whose solid angle is Berry's phase.
+[[nodiscard]] std::shared_ptr<render::MeshData> coneMesh(const std::vector<geometry::Vec3>& loop);
+
+}  // namespace rollspin::app

@@ -151,7 +151,9 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
   StageLog::instance().record("surface-mesh");
   if (!ballTexture_) ballTexture_ = render::tennisBallTexture();
 
-  sphereMesh_ = render::uvSphere(96, 48);
+  // Small triangles are costly on llvmpipe (each shades whole 4×4 blocks):
+  // 64 segments keep the silhouette within 0.2 px of a circle up to 1440p.
+  sphereMesh_ = spec.render.height > 1440 ? render::uvSphere(96, 48) : render::uvSphere(64, 32);
   // Surfaces receive the ball's shadow but cast none: a surface shadowing
   // itself only adds acne, and where the ball's shadow would pass through a
   // surface to its far side, that side faces away from the light anyway.
@@ -175,7 +177,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
           p = toGlm(centre + (2.0 * a - 1.0) * half * e1 + (2.0 * b - 1.0) * half * e2);
           nn = toGlm(n);
         },
-        48, 48);
+        1, 1);  // flat: two triangles (large ones let llvmpipe shade whole tiles)
     for (auto& v : surfaceMesh_->vertices) {
       const Vec3 p(v.position.x, v.position.y, v.position.z);
       v.uv = glm::vec2(float(p.dot(e1) / R), float(p.dot(e2) / R));  // cells of size R, a corner at the origin

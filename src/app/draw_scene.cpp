@@ -40,6 +40,18 @@ const glm::vec4 kPathColor{0.10f, 0.16f, 0.32f, 0.55f};
 const glm::vec4 kTravelledColor{0.95f, 0.33f, 0.02f, 1.0f};
 const glm::vec4 kTextColor{0.04f, 0.05f, 0.07f, 1.0f};
 
+// The text size, at most `preferred`, at which the longest line fits in
+// `widthPx`: small images shrink their text rather than clip it. DejaVu Sans
+// averages under 0.6 em per character (bold 0.66).
+float sizeToFit(const std::vector<std::string>& lines, float widthPx, float preferred, bool bold) {
+  std::size_t longest = 1;
+  for (const auto& line : lines)
+    longest = std::max<std::size_t>(longest, std::count_if(line.begin(), line.end(), [](char c) {
+                                      return (static_cast<unsigned char>(c) & 0xC0) != 0x80;  // UTF-8 lead bytes
+                                    }));
+  return std::max(7.0f, std::min(preferred, widthPx / ((bold ? 0.66f : 0.6f) * float(longest))));
+}
+
 struct OrbitAngles {
   double azimuth = 0.0, elevation = 0.0;  // radians
 };
@@ -536,7 +548,7 @@ void SceneDrawer::addCaption(render::DrawList& list, const FrameOrientations& fr
   label.text = caption;
   label.anchor = glm::vec3(0.5f * float(v.width), text * 0.8f + text * 2.1f, 0.0f);
   label.align = render::Align::Center;
-  label.sizePx = text * 1.2f;
+  label.sizePx = sizeToFit({caption}, float(v.width) - 1.6f * text, text * 1.2f, true);
   label.bold = true;
   label.color = glm::vec4(0.55f, 0.12f, 0.02f, 1.0f);
   list.labels.push_back(label);
@@ -757,15 +769,8 @@ void SceneDrawer::addFactLabels(render::DrawList& list, const FrameOrientations&
   const float text = std::max(11.0f, float(list.height) / 42.0f);
   const float margin = text * 0.8f;
   const std::vector<std::string> lines = factLines(*facts_, frame, model_.path->length());
-  // Small images: shrink the lines until the longest fits the view (DejaVu
-  // Sans averages under 0.6 em per character), rather than clip them.
-  std::size_t longest = 1;
-  for (const auto& line : lines)
-    longest = std::max<std::size_t>(longest, std::count_if(line.begin(), line.end(), [](char c) {
-                                      return (static_cast<unsigned char>(c) & 0xC0) != 0x80;  // UTF-8 lead bytes
-                                    }));
-  const float width = float(list.views[static_cast<std::size_t>(view)].width) - 2.0f * margin;
-  const float size = std::max(7.0f, std::min(text * 0.9f, width / (0.6f * float(longest))));
+  const float size =
+      sizeToFit(lines, float(list.views[static_cast<std::size_t>(view)].width) - 2.0f * margin, text * 0.9f, false);
   for (std::size_t i = 0; i < lines.size(); ++i) {
     render::LabelItem l;
     l.view = view;

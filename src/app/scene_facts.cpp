@@ -193,7 +193,11 @@ SceneFacts::SceneFacts(const scene::SceneSpec& spec, const RollingModel& model, 
       meanX += weights[i] * xs[i];
       meanB += weights[i] * bs[i];
     }
-    const Vec3 cx = meanX.normalized(), cb = meanB.normalized();
+    // Both loops are cones about the frame's turning axis (X(s) = W(s) X₀:
+    // V(s) turns about X₀'s own axis): measure each about that axis, on the
+    // loop's side (either side for a great circle, where the mean vanishes).
+    auto coneAxis = [&](const Vec3& mean) { return mean.dot(revolutionAxis_) < 0.0 ? Vec3(-revolutionAxis_) : revolutionAxis_; };
+    const Vec3 cx = coneAxis(meanX), cb = coneAxis(meanB);
     double omegaX = 0.0, omegaB = 0.0;
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       omegaX += weights[i] * solidAngleTerm(xs[i], dxs[i], cx);

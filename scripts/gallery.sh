@@ -6,8 +6,8 @@
 #   bash scripts/gallery.sh --thumbnails    docs/gallery/NAME.png, 480x270 (committed, README "Gallery")
 #
 # Options: --quality low|medium|high|4k (videos; default: the scene's own
-# size and frame rate), --no-video (stills only). Builds rollspin first when
-# build/rollspin is missing (after scripts/install-deps.sh on a fresh machine).
+# size and frame rate), --no-video (stills only). When build/rollspin is
+# missing (a fresh clone) it runs scripts/install-deps.sh and builds first.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -33,7 +33,7 @@ for name in "${names[@]}"; do
 done
 
 if [ ! -x build/rollspin ]; then
-  command -v cmake >/dev/null || bash scripts/install-deps.sh
+  bash scripts/install-deps.sh  # only installs what is missing
   bash scripts/build.sh
 fi
 

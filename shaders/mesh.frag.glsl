@@ -9,7 +9,7 @@
 //   PATTERN  0 plain, 1 checker, 2 texture
 //   SHADOWED 1: sample the shadow map
 //   LIT      0: flat colour (no lighting)
-//   SPECULAR 0: no highlight (matte surfaces skip its normalize and pow)
+//   SPECULAR 0: no highlight, and lit per vertex (see mesh.vert)
 #ifndef PATTERN
 #define PATTERN 0
 #endif
@@ -42,6 +42,11 @@ uniform vec3 lightColor;
 uniform float ambient;
 uniform vec3 cameraPosition;
 uniform bool twoSided;  // light the side that faces the camera
+#if LIT && !SPECULAR
+in vec3 vAmbient;
+in float vNdl;
+in float vGrazing;
+#endif
 
 out vec4 fragColor;
 
@@ -74,9 +79,9 @@ const vec2 kPoisson[16] = vec2[](
     vec2(-0.24188840, 0.99706507), vec2(-0.81409955, 0.91437590), vec2(0.19984126, 0.78641367),
     vec2(0.14383161, -0.14100790));
 
-float shadowFactor(vec3 n, vec3 l) {
+float shadowFactor(float ndl) {
   vec3 p = vLightClip.xyz / vLightClip.w * 0.5 + 0.5;
-  float bias = 0.0015 + 0.004 * (1.0 - max(dot(n, l), 0.0));
+  float bias = 0.0015 + 0.004 * (1.0 - ndl);
   float angle = 6.2831853 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
   mat2 turn = mat2(cos(angle), sin(angle), -sin(angle), cos(angle)) * shadowFilterRadius;
   float lit = 0.0;
@@ -86,6 +91,9 @@ float shadowFactor(vec3 n, vec3 l) {
 }
 #endif
 
+// Alpha is coverage over the transparent scene (see composite.frag): an
+// opaque material writes 1 even where its texture has alpha, as it is drawn
+// without blending.
 void main() {
   vec3 albedo = color;
   float alpha = opacity;
@@ -96,14 +104,23 @@ void main() {
   albedo = t.rgb * color;
   alpha *= t.a;
 #endif
-#if LIT
+#if LIT && !SPECULAR
+#if SHADOWED
+  float shadow = shadowFactor(vNdl);
+#else
+  float shadow = 1.0;
+#endif
+  vec3 c = albedo * (vAmbient + (1.0 - ambient) * lightColor * vNdl * shadow);
+  if (opacity < 1.0) alpha = clamp(alpha * vGrazing, 0.0, 1.0);
+  fragColor = vec4(encodeSrgb(c), opacity < 1.0 ? alpha : 1.0);
+#elif LIT
   vec3 v = normalize(cameraPosition - vWorldPosition);
   vec3 n = normalize(vNormal);
   n = twoSided ? faceforward(n, -v, n) : (gl_FrontFacing ? n : -n);
-  vec3 l = normalize(towardLight);
+  vec3 l = towardLight;  // unit (the renderer normalises it)
   float ndl = max(dot(n, l), 0.0);
 #if SHADOWED
-  float shadow = shadowFactor(n, l);
+  float shadow = shadowFactor(ndl);
 #else
   float shadow = 1.0;
 #endif
@@ -118,8 +135,8 @@ void main() {
   vec3 c = albedo * (ambient * hemisphere + (1.0 - ambient) * lightColor * ndl * shadow) + spec * shadow * lightColor;
   // Translucent surfaces (glass, the Bloch sphere) thicken at grazing angles.
   if (opacity < 1.0) alpha = clamp(alpha * (1.0 + 2.0 * pow(1.0 - abs(dot(n, v)), 3.0)), 0.0, 1.0);
-  fragColor = vec4(encodeSrgb(c), alpha);
+  fragColor = vec4(encodeSrgb(c), opacity < 1.0 ? alpha : 1.0);
 #else
-  fragColor = vec4(encodeSrgb(albedo), alpha);
+  fragColor = vec4(encodeSrgb(albedo), opacity < 1.0 ? alpha : 1.0);
 #endif
 }

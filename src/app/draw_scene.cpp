@@ -40,6 +40,18 @@ const glm::vec4 kPathColor{0.10f, 0.16f, 0.32f, 0.55f};
 const glm::vec4 kTravelledColor{0.95f, 0.33f, 0.02f, 1.0f};
 const glm::vec4 kTextColor{0.04f, 0.05f, 0.07f, 1.0f};
 
+// The text size, at most `preferred`, at which the longest line fits in
+// `widthPx`: small images shrink their text rather than clip it. DejaVu Sans
+// averages under 0.6 em per character (bold 0.66).
+float sizeToFit(const std::vector<std::string>& lines, float widthPx, float preferred, bool bold) {
+  std::size_t longest = 1;
+  for (const auto& line : lines)
+    longest = std::max<std::size_t>(longest, std::count_if(line.begin(), line.end(), [](char c) {
+                                      return (static_cast<unsigned char>(c) & 0xC0) != 0x80;  // UTF-8 lead bytes
+                                    }));
+  return std::max(7.0f, std::min(preferred, widthPx / ((bold ? 0.66f : 0.6f) * float(longest))));
+}
+
 struct OrbitAngles {
   double azimuth = 0.0, elevation = 0.0;  // radians
 };
@@ -151,7 +163,9 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
   StageLog::instance().record("surface-mesh");
   if (!ballTexture_) ballTexture_ = render::tennisBallTexture();
 
-  sphereMesh_ = render::uvSphere(96, 48);
+  // Small triangles are costly on llvmpipe (each shades whole 4×4 blocks):
+  // 64 segments keep the silhouette within 0.2 px of a circle up to 1440p.
+  sphereMesh_ = spec.render.height > 1440 ? render::uvSphere(96, 48) : render::uvSphere(64, 32);
   // Surfaces receive the ball's shadow but cast none: a surface shadowing
   // itself only adds acne, and where the ball's shadow would pass through a
   // surface to its far side, that side faces away from the light anyway.
@@ -175,7 +189,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
           p = toGlm(centre + (2.0 * a - 1.0) * half * e1 + (2.0 * b - 1.0) * half * e2);
           nn = toGlm(n);
         },
-        48, 48);
+        1, 1);  // flat: two triangles (large ones let llvmpipe shade whole tiles)
     for (auto& v : surfaceMesh_->vertices) {
       const Vec3 p(v.position.x, v.position.y, v.position.z);
       v.uv = glm::vec2(float(p.dot(e1) / R), float(p.dot(e2) / R));  // cells of size R, a corner at the origin
@@ -534,7 +548,7 @@ void SceneDrawer::addCaption(render::DrawList& list, const FrameOrientations& fr
   label.text = caption;
   label.anchor = glm::vec3(0.5f * float(v.width), text * 0.8f + text * 2.1f, 0.0f);
   label.align = render::Align::Center;
-  label.sizePx = text * 1.2f;
+  label.sizePx = sizeToFit({caption}, float(v.width) - 1.6f * text, text * 1.2f, true);
   label.bold = true;
   label.color = glm::vec4(0.55f, 0.12f, 0.02f, 1.0f);
   list.labels.push_back(label);
@@ -662,7 +676,7 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
     }
     list.polylines.push_back(plateTrail);
   }
-  if (facts_ && facts_->marks) addMarks(list, s, view);
+  if (facts_ && facts_->marks) addMarks(list, s, frame.strobe.empty(), view);
 
   if (spec_.render.labels) {
     const float margin = text * 0.8f;
@@ -700,12 +714,24 @@ Vec3 SceneDrawer::platePoint(double s, double lift) const {
 }
 
 // The marks every β of path angle: dots on the contact path (dark once
-// passed) and, with Brockett's plate, on the plate's trail; numbered.
-void SceneDrawer::addMarks(render::DrawList& list, double s, int view) const {
+// passed) and, where the plate is drawn (not in a strobe), on its trail;
+// numbered.
+void SceneDrawer::addMarks(render::DrawList& list, double s, bool plateShown, int view) const {
   const double R = model_.ballRadius;
   const float text = std::max(11.0f, float(list.height) / 42.0f);
   const MarksFact& m = *facts_->marks;
   const int passed = facts_->marksPassed(s);
+  // Labels are drawn over everything: leave out a number the ball hides
+  // (its segment from the eye to the mark passes through the ball).
+  const Vec3 eye(list.views[static_cast<std::size_t>(view)].camera.position.x,
+                 list.views[static_cast<std::size_t>(view)].camera.position.y,
+                 list.views[static_cast<std::size_t>(view)].camera.position.z);
+  const Vec3 ball = model_.path->at(s).centre(R);
+  auto hiddenByBall = [&](const Vec3& p) {
+    const Vec3 d = p - eye;
+    const double t = std::clamp((ball - eye).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    return (eye + t * d - ball).norm() < R && t < 1.0;
+  };
   for (std::size_t k = 0; k < m.s.size(); ++k) {
     const bool done = int(k) < passed;
     render::Material dot;
@@ -716,13 +742,13 @@ void SceneDrawer::addMarks(render::DrawList& list, double s, int view) const {
     list.meshes.push_back({dotMesh_,
                            glm::translate(glm::mat4(1.0f), toGlm(onPath)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.06 * R))),
                            dot, view});
-    if (model_.plate && done) {
+    if (model_.plate && plateShown && done) {
       const Vec3 onPlate = platePoint(m.s[k], 0.06 * R);
       list.meshes.push_back({dotMesh_,
                              glm::translate(glm::mat4(1.0f), toGlm(onPlate)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.05 * R))),
                              dot, view});
     }
-    if (!spec_.render.labels) continue;
+    if (!spec_.render.labels || (plateShown && hiddenByBall(onPath))) continue;
     render::LabelItem number;
     number.view = view;
     number.text = fmt::format("{}", k);
@@ -733,7 +759,7 @@ void SceneDrawer::addMarks(render::DrawList& list, double s, int view) const {
     number.align = render::Align::Center;
     number.sizePx = text * 0.9f;
     number.bold = true;
-    number.color = done ? kTextColor : glm::vec4(0.25f, 0.26f, 0.30f, 1.0f);
+    number.color = done ? kTextColor : glm::vec4(0.12f, 0.13f, 0.16f, 1.0f);
     list.labels.push_back(number);
   }
 }
@@ -743,15 +769,8 @@ void SceneDrawer::addFactLabels(render::DrawList& list, const FrameOrientations&
   const float text = std::max(11.0f, float(list.height) / 42.0f);
   const float margin = text * 0.8f;
   const std::vector<std::string> lines = factLines(*facts_, frame, model_.path->length());
-  // Small images: shrink the lines until the longest fits the view (DejaVu
-  // Sans averages under 0.6 em per character), rather than clip them.
-  std::size_t longest = 1;
-  for (const auto& line : lines)
-    longest = std::max<std::size_t>(longest, std::count_if(line.begin(), line.end(), [](char c) {
-                                      return (static_cast<unsigned char>(c) & 0xC0) != 0x80;  // UTF-8 lead bytes
-                                    }));
-  const float width = float(list.views[static_cast<std::size_t>(view)].width) - 2.0f * margin;
-  const float size = std::max(7.0f, std::min(text * 0.9f, width / (0.6f * float(longest))));
+  const float size =
+      sizeToFit(lines, float(list.views[static_cast<std::size_t>(view)].width) - 2.0f * margin, text * 0.9f, false);
   for (std::size_t i = 0; i < lines.size(); ++i) {
     render::LabelItem l;
     l.view = view;

@@ -97,7 +97,7 @@ class SceneDrawer {
   std::vector<Shot> shots_;  // one per storyboard segment (one for a scene without segments)
   bool titleBand_ = false;   // render.title or any segment's title: the band is kept for the whole clip
   render::View ballCamera(int x, int y, int w, int h, double s) const;
-  void addMarks(render::DrawList& list, double s, int view) const;
+  void addMarks(render::DrawList& list, double s, bool plateShown, int view) const;
   void addFactLabels(render::DrawList& list, const FrameOrientations& frame, int view, float top) const;
   // Brockett's plate: the point of the plate above the contact point P(s),
   // lifted by `lift` above the ball's top.

@@ -193,7 +193,11 @@ SceneFacts::SceneFacts(const scene::SceneSpec& spec, const RollingModel& model, 
       meanX += weights[i] * xs[i];
       meanB += weights[i] * bs[i];
     }
-    const Vec3 cx = meanX.normalized(), cb = meanB.normalized();
+    // Both loops are cones about the frame's turning axis (X(s) = W(s) X₀:
+    // V(s) turns about X₀'s own axis): measure each about that axis, on the
+    // loop's side (either side for a great circle, where the mean vanishes).
+    auto coneAxis = [&](const Vec3& mean) { return mean.dot(revolutionAxis_) < 0.0 ? Vec3(-revolutionAxis_) : revolutionAxis_; };
+    const Vec3 cx = coneAxis(meanX), cb = coneAxis(meanB);
     double omegaX = 0.0, omegaB = 0.0;
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       omegaX += weights[i] * solidAngleTerm(xs[i], dxs[i], cx);
@@ -245,7 +249,14 @@ int SceneFacts::marksPassed(double s) const {
 }
 
 std::shared_ptr<const SceneFacts> makeSceneFacts(const scene::SceneSpec& spec, const RollingModel& model) {
+  // Only what the image shows: the lines need labels and the ball view; the
+  // marks are drawn on the path, the cone of B in the twin, labels or not.
+  const bool ballView = spec.render.layout != scene::RenderLayout::Twin;
+  const bool twinView = spec.render.layout != scene::RenderLayout::Ball;
   std::vector<Fact> facts = scene::resolveFacts(spec);
+  std::erase_if(facts, [&](Fact f) {
+    return !((spec.render.labels && ballView) || (f == Fact::Marks && ballView) || (f == Fact::PhaseSplit && twinView));
+  });
   if (facts.empty()) return nullptr;
   StageLog::instance().record("facts");
   return std::make_shared<const SceneFacts>(spec, model, std::move(facts));

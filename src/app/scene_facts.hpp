@@ -102,8 +102,9 @@ class SceneFacts {
   std::vector<geometry::Vec3> labSum_, frameSum_, rollingSum_;
 };
 
-// The facts the scene shows (resolveFacts), computed; null when none. Records
-// the "facts" stage.
+// The facts the image shows (resolveFacts, less the lines when labels are off
+// or the layout has no ball view; marks need the ball view, the cone of B the
+// twin), computed; null when none. Records the "facts" stage.
 [[nodiscard]] std::shared_ptr<const SceneFacts> makeSceneFacts(const scene::SceneSpec& spec,
                                                                const RollingModel& model);
 

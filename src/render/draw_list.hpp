@@ -106,8 +106,8 @@ struct Camera {
 };
 
 // One directional key light with an optional shadow map that covers the
-// sphere (shadowCenter, shadowRadius) — keep it tight around the casters: it
-// sets the shadow's resolution, and receivers outside it skip the filter —
+// sphere (shadowCenter, shadowRadius) — the renderer narrows it across the
+// light to the casters' bounds, and receivers outside it skip the filter —
 // plus hemispheric ambient fill.
 struct Light {
   glm::vec3 towardLight = glm::normalize(glm::vec3(0.4f, -0.3f, 1.0f));

@@ -70,15 +70,19 @@
   X(glPolygonOffset) \
   X(glReadBuffer) \
   X(glReadPixels) \
+  X(glRenderbufferStorage) \
   X(glRenderbufferStorageMultisample) \
   X(glScissor) \
   X(glShaderSource) \
   X(glTexImage2D) \
   X(glTexParameteri) \
   X(glTexStorage2D) \
+  X(glTexStorage2DMultisample) \
   X(glTexSubImage2D) \
+  X(glTextureView) \
   X(glUniform1f) \
   X(glUniform1i) \
+  X(glUniform1ui) \
   X(glUniform2fv) \
   X(glUniform3fv) \
   X(glUniform4fv) \
@@ -149,15 +153,19 @@ ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DECLARE)
 #define glPolygonOffset ::rollspin::render::gl_api::glPolygonOffset
 #define glReadBuffer ::rollspin::render::gl_api::glReadBuffer
 #define glReadPixels ::rollspin::render::gl_api::glReadPixels
+#define glRenderbufferStorage ::rollspin::render::gl_api::glRenderbufferStorage
 #define glRenderbufferStorageMultisample ::rollspin::render::gl_api::glRenderbufferStorageMultisample
 #define glScissor ::rollspin::render::gl_api::glScissor
 #define glShaderSource ::rollspin::render::gl_api::glShaderSource
 #define glTexImage2D ::rollspin::render::gl_api::glTexImage2D
 #define glTexParameteri ::rollspin::render::gl_api::glTexParameteri
 #define glTexStorage2D ::rollspin::render::gl_api::glTexStorage2D
+#define glTexStorage2DMultisample ::rollspin::render::gl_api::glTexStorage2DMultisample
 #define glTexSubImage2D ::rollspin::render::gl_api::glTexSubImage2D
+#define glTextureView ::rollspin::render::gl_api::glTextureView
 #define glUniform1f ::rollspin::render::gl_api::glUniform1f
 #define glUniform1i ::rollspin::render::gl_api::glUniform1i
+#define glUniform1ui ::rollspin::render::gl_api::glUniform1ui
 #define glUniform2fv ::rollspin::render::gl_api::glUniform2fv
 #define glUniform3fv ::rollspin::render::gl_api::glUniform3fv
 #define glUniform4fv ::rollspin::render::gl_api::glUniform4fv

@@ -5,6 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <map>
 #include <string>
@@ -21,7 +22,10 @@ namespace rollspin::render {
 
 namespace {
 
-constexpr int kShadowMapSize = 1024;
+// The shadow box is fitted to the casters (see shadowPass), so a small map
+// resolves a ball's shadow finely: at 256 texels a ball spans about 200 and
+// the soft-shadow filter about 13 in radius.
+constexpr int kShadowMapSize = 256;
 
 GLuint compileShader(GLenum type, const std::string& source, const std::string& name) {
   const GLuint shader = glCreateShader(type);
@@ -83,6 +87,7 @@ class Program {
   void set(const char* n, const glm::vec2& v) { glUniform2fv(at(n), 1, glm::value_ptr(v)); }
   void set(const char* n, float v) { glUniform1f(at(n), v); }
   void set(const char* n, int v) { glUniform1i(at(n), v); }
+  void set(const char* n, unsigned v) { glUniform1ui(at(n), v); }
   void release() {
     if (id_ != 0) glDeleteProgram(id_);
     id_ = 0;
@@ -96,6 +101,7 @@ class Program {
 struct GpuMesh {
   GLuint vao = 0, vbo = 0, ebo = 0;
   GLsizei indexCount = 0;
+  glm::vec4 bound{0.0f};  // a bounding sphere in model coordinates: centre, radius
 };
 
 GpuMesh upload(const MeshData& m) {
@@ -118,6 +124,17 @@ GpuMesh upload(const MeshData& m) {
   glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, uv)));
   glBindVertexArray(0);
   g.indexCount = static_cast<GLsizei>(m.indices.size());
+  if (!m.vertices.empty()) {
+    glm::vec3 lo(m.vertices[0].position), hi(lo);
+    for (const Vertex& v : m.vertices) {
+      lo = glm::min(lo, v.position);
+      hi = glm::max(hi, v.position);
+    }
+    const glm::vec3 centre = 0.5f * (lo + hi);
+    float radius = 0.0f;
+    for (const Vertex& v : m.vertices) radius = std::max(radius, glm::length(v.position - centre));
+    g.bound = glm::vec4(centre, radius);
+  }
   return g;
 }
 
@@ -161,15 +178,22 @@ struct Renderer::Impl {
   ShaderLibrary library;  // a copy: mesh variants compile lazily
   std::map<int, Program> meshPrograms;  // by variant: pattern * 8 + shadowed * 4 + lit * 2 + specular
   MeshViewUniforms viewUniforms;
-  Program shadow, line, text, background;
+  Program shadow, line, text;
+  std::map<int, Program> compositePrograms;  // by sample count
   GLuint emptyVao = 0;
   GLuint streamVao = 0, streamVbo = 0;  // polylines (vec3)
   GLuint textVao = 0, textVbo = 0;      // glyph quads (vec2 pixel, vec2 uv)
-  GLuint shadowFbo = 0, shadowTexture = 0;
-  GLuint msaaFbo = 0, msaaColor = 0, msaaDepth = 0;
-  GLuint resolveFbo = 0, resolveColor = 0, resolveDepth = 0;
+  struct ShadowMap {
+    GLuint fbo = 0, texture = 0;
+  };
+  std::vector<ShadowMap> shadowMaps;  // one per view that has a shadow (usually one)
+  // The scene is drawn into sceneFbo (a colour texture, multisampled unless
+  // msaa = 1, over transparent black) and composited into outputFbo: samples
+  // averaged, the backdrop put behind, rows flipped to top-down (see composite).
+  GLuint sceneFbo = 0, sceneColor = 0, sceneDepth = 0;
+  GLuint scenePacked = 0;  // sceneColor viewed as R32UI: one packed RGBA8 word per sample
+  GLuint outputFbo = 0, outputColor = 0;
   int fbWidth = 0, fbHeight = 0, fbSamples = 0;
-  std::vector<std::uint8_t> readback;  // bottom-up rows from glReadPixels
 
   struct CachedMesh {
     std::shared_ptr<const MeshData> keepAlive;
@@ -193,8 +217,7 @@ struct Renderer::Impl {
       : library(lib),
         shadow(lib, "shadow.vert", "shadow.frag"),
         line(lib, "line.vert", "line.frag", "line.geom"),
-        text(lib, "text.vert", "text.frag"),
-        background(lib, "background.vert", "background.frag") {
+        text(lib, "text.vert", "text.frag") {
     glGenVertexArrays(1, &emptyVao);
     glGenVertexArrays(1, &streamVao);
     glGenBuffers(1, &streamVbo);
@@ -212,22 +235,6 @@ struct Renderer::Impl {
     glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 4 * sizeof(float), reinterpret_cast<void*>(2 * sizeof(float)));
     glBindVertexArray(0);
 
-    // Depth texture with hardware comparison: sampler2DShadow does the test.
-    glGenTextures(1, &shadowTexture);
-    glBindTexture(GL_TEXTURE_2D, shadowTexture);
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH_COMPONENT24, kShadowMapSize, kShadowMapSize);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    glGenFramebuffers(1, &shadowFbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, shadowFbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, shadowTexture, 0);
-    glDrawBuffer(GL_NONE);
-    glReadBuffer(GL_NONE);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 
   ~Impl() {
@@ -235,44 +242,66 @@ struct Renderer::Impl {
     for (auto& [k, t] : textures) glDeleteTextures(1, &t.id);
     for (auto& [k, f] : fonts) glDeleteTextures(1, &f.id);
     releaseFramebuffers();
-    glDeleteFramebuffers(1, &shadowFbo);
-    glDeleteTextures(1, &shadowTexture);
+    for (ShadowMap& m : shadowMaps) {
+      glDeleteFramebuffers(1, &m.fbo);
+      glDeleteTextures(1, &m.texture);
+    }
     glDeleteBuffers(1, &streamVbo);
     glDeleteBuffers(1, &textVbo);
     glDeleteVertexArrays(1, &streamVao);
     glDeleteVertexArrays(1, &textVao);
     glDeleteVertexArrays(1, &emptyVao);
     for (auto& [key, p] : meshPrograms) p.release();
-    for (Program* p : {&shadow, &line, &text, &background}) p->release();
+    for (auto& [key, p] : compositePrograms) p.release();
+    for (Program* p : {&shadow, &line, &text}) p->release();
   }
 
   void releaseFramebuffers() {
-    GLuint fbos[] = {msaaFbo, resolveFbo};
-    GLuint rbs[] = {msaaColor, msaaDepth, resolveColor, resolveDepth};
+    GLuint fbos[] = {sceneFbo, outputFbo};
+    GLuint rbs[] = {sceneDepth, outputColor};
     glDeleteFramebuffers(2, fbos);
-    glDeleteRenderbuffers(4, rbs);
-    msaaFbo = resolveFbo = msaaColor = msaaDepth = resolveColor = resolveDepth = 0;
+    glDeleteRenderbuffers(2, rbs);
+    GLuint textures[] = {scenePacked, sceneColor};
+    glDeleteTextures(2, textures);
+    sceneFbo = outputFbo = sceneDepth = outputColor = sceneColor = scenePacked = 0;
   }
 
   void ensureFramebuffers(int w, int h, int samples) {
     if (w == fbWidth && h == fbHeight && samples == fbSamples) return;
     releaseFramebuffers();
-    auto makeTarget = [&](GLuint& fbo, GLuint& color, GLuint& depth, int s) {
-      glGenFramebuffers(1, &fbo);
-      glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-      glGenRenderbuffers(1, &color);
-      glBindRenderbuffer(GL_RENDERBUFFER, color);
-      glRenderbufferStorageMultisample(GL_RENDERBUFFER, s, GL_RGBA8, w, h);
-      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
-      glGenRenderbuffers(1, &depth);
-      glBindRenderbuffer(GL_RENDERBUFFER, depth);
-      glRenderbufferStorageMultisample(GL_RENDERBUFFER, s, GL_DEPTH_COMPONENT24, w, h);
-      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    auto checkComplete = [&] {
       if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw runtimeError({}, "OpenGL could not create a {}x{} framebuffer with {} samples (out of memory?)", w, h, s);
+        throw runtimeError({}, "OpenGL could not create a {}x{} framebuffer with {} samples (out of memory?)", w, h,
+                           samples);
     };
-    if (samples > 1) makeTarget(msaaFbo, msaaColor, msaaDepth, samples);
-    makeTarget(resolveFbo, resolveColor, resolveDepth, 0);
+    // The colour is a texture so that the composite pass can read its samples.
+    const GLenum colorTarget = samples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
+    glGenTextures(1, &sceneColor);
+    glBindTexture(colorTarget, sceneColor);
+    if (samples > 1) {
+      glTexStorage2DMultisample(colorTarget, samples, GL_RGBA8, w, h, GL_TRUE);
+    } else {
+      glTexStorage2D(colorTarget, 1, GL_RGBA8, w, h);
+      glTexParameteri(colorTarget, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(colorTarget, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    glGenTextures(1, &scenePacked);
+    glTextureView(scenePacked, colorTarget, sceneColor, GL_R32UI, 0, 1, 0, 1);
+    glGenRenderbuffers(1, &sceneDepth);
+    glBindRenderbuffer(GL_RENDERBUFFER, sceneDepth);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? samples : 0, GL_DEPTH_COMPONENT24, w, h);
+    glGenFramebuffers(1, &sceneFbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, sceneFbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, colorTarget, sceneColor, 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, sceneDepth);
+    checkComplete();
+    glGenRenderbuffers(1, &outputColor);
+    glBindRenderbuffer(GL_RENDERBUFFER, outputColor);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_R32UI, w, h);  // packed RGBA8, as the composite writes it
+    glGenFramebuffers(1, &outputFbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, outputFbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, outputColor);
+    checkComplete();
     fbWidth = w;
     fbHeight = h;
     fbSamples = samples;
@@ -352,46 +381,99 @@ struct Renderer::Impl {
     return out;
   }
 
-  glm::mat4 shadowPass(const View& v, const std::vector<Drawable>& items) {
+  // The n-th shadow map, made on first use.
+  const ShadowMap& shadowMap(std::size_t n) {
+    while (shadowMaps.size() <= n) {
+      ShadowMap m;
+      // Depth texture with hardware comparison: sampler2DShadow does the test.
+      glGenTextures(1, &m.texture);
+      glBindTexture(GL_TEXTURE_2D, m.texture);
+      glTexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH_COMPONENT24, kShadowMapSize, kShadowMapSize);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+      glGenFramebuffers(1, &m.fbo);
+      glBindFramebuffer(GL_FRAMEBUFFER, m.fbo);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, m.texture, 0);
+      glDrawBuffer(GL_NONE);
+      glReadBuffer(GL_NONE);
+      shadowMaps.push_back(m);
+    }
+    return shadowMaps[n];
+  }
+
+  struct ShadowSetup {
+    glm::mat4 lightClipFromWorld{1.0f};
+    float filterRadius = 0.0f;  // PCF radius in map uv
+  };
+
+  // Renders the view's shadow map. The light's box (shadowCenter,
+  // shadowRadius) fixes the depth range; across the light it is narrowed to
+  // the casters' bounding spheres plus the filter radius, because every
+  // pixel of a receiver inside the box pays for the filter, and a tighter
+  // box is a finer map.
+  ShadowSetup shadowPass(const View& v, const std::vector<Drawable>& items, const ShadowMap& map) {
     const Light& l = v.light;
     const glm::vec3 toward = glm::normalize(l.towardLight);
     const glm::vec3 up = std::abs(toward.z) < 0.95f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
     const float r = l.shadowRadius;
     const glm::mat4 lightViewFromWorld = glm::lookAt(l.shadowCenter + toward * (2.0f * r), l.shadowCenter, up);
-    const glm::mat4 lightClipFromWorld = glm::ortho(-r, r, -r, r, 0.01f * r, 4.0f * r) * lightViewFromWorld;
-    glBindFramebuffer(GL_FRAMEBUFFER, shadowFbo);
+    glm::vec2 lo(r), hi(-r);
+    for (const Drawable& d : items) {
+      if (!d.material->castsShadow || d.material->opacity < 0.5f) continue;
+      const glm::vec4 b = gpuMesh(d.mesh).bound;
+      const glm::mat3 linear(d.worldFromModel);
+      const float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+      const glm::vec3 c(lightViewFromWorld * d.worldFromModel * glm::vec4(glm::vec3(b), 1.0f));
+      lo = glm::min(lo, glm::vec2(c) - b.w * scale);
+      hi = glm::max(hi, glm::vec2(c) + b.w * scale);
+    }
+    glm::vec2 centre(0.0f);
+    float half = r;
+    if (lo.x <= hi.x) {  // some caster: a square around them, inside the light's box
+      lo = glm::max(lo, glm::vec2(-r));
+      hi = glm::min(hi, glm::vec2(r));
+      centre = 0.5f * (lo + hi);
+      half = std::min(r, 0.5f * std::max(hi.x - lo.x, hi.y - lo.y) + l.shadowSoftness * 1.1f);
+    }
+    ShadowSetup setup;
+    const glm::mat4 lightClipFromWorld =
+        glm::ortho(centre.x - half, centre.x + half, centre.y - half, centre.y + half, 0.01f * r, 4.0f * r) *
+        lightViewFromWorld;
+    setup.lightClipFromWorld = lightClipFromWorld;
+    // The filter radius in map uv: the light's softness (world units), and
+    // at least 1.5 texels so that the edge is always filtered.
+    setup.filterRadius = std::max(l.shadowSoftness / (2.0f * half), 1.5f / float(kShadowMapSize));
+    glBindFramebuffer(GL_FRAMEBUFFER, map.fbo);
     glDisable(GL_SCISSOR_TEST);
     glViewport(0, 0, kShadowMapSize, kShadowMapSize);
     glClear(GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.5f, 2.0f);
     shadow.use();
     for (const Drawable& d : items) {
       if (!d.material->castsShadow || d.material->opacity < 0.5f) continue;
+      // Closed casters draw only the faces towards the light: casters take
+      // no shadow, so their far sides' depths are never needed.
+      if (d.material->cull == Cull::Back) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+      } else {
+        glDisable(GL_CULL_FACE);
+      }
       shadow.set("lightClipFromModel", lightClipFromWorld * d.worldFromModel);
       const GpuMesh& g = gpuMesh(d.mesh);
       glBindVertexArray(g.vao);
       glDrawElements(GL_TRIANGLES, g.indexCount, GL_UNSIGNED_INT, nullptr);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
-    return lightClipFromWorld;
-  }
-
-  // Shadow receivers (the surfaces) pay for the shadow filter only inside
-  // the shadow box: llvmpipe runs both sides of every branch, even on
-  // uniforms, so the split is made with two draws instead. Pass 1: the whole
-  // mesh without the filter. Pass 2: the mesh clipped to the box, with the
-  // filter, pulled forward by a polygon offset so it replaces pass 1 there.
-  void drawReceiver(const Drawable& d) {
-    drawMesh(d, false, d.material->cull, false);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(-1.0f, -4.0f);
-    drawMesh(d, true, d.material->cull, true);
-    glDisable(GL_POLYGON_OFFSET_FILL);
+    return setup;
   }
 
   Program& meshProgram(int pattern, bool shadowed, bool lit, bool specular) {
@@ -404,6 +486,20 @@ struct Renderer::Impl {
       it = meshPrograms.emplace(key, Program(library, "mesh.vert", "mesh.frag", {}, defines)).first;
     }
     return it->second;
+  }
+
+  // Shadow receivers (the surfaces) pay for the shadow filter only inside
+  // the shadow box: llvmpipe runs both sides of every branch, even on
+  // uniforms, so the split is made with two draws instead. Pass 1: the mesh
+  // clipped to the box, with the filter, pulled forward by a polygon offset.
+  // Pass 2: the whole mesh without the filter, which fails the depth test
+  // wherever pass 1 drew.
+  void drawReceiver(const Drawable& d) {
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(-1.0f, -4.0f);
+    drawMesh(d, true, d.material->cull, true);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    drawMesh(d, false, d.material->cull, false);
   }
 
   void drawMesh(const Drawable& d, bool shadowOn, Cull cull, bool clipToShadowBox = false) {
@@ -426,9 +522,9 @@ struct Renderer::Impl {
     mesh.set("albedoTexture", 0);
     mesh.set("shadowMap", 1);
     mesh.set("shadowFilterRadius", u.shadowFilterRadius);
-    mesh.set("clipToShadowBox", clipToShadowBox ? 1 : 0);
     mesh.set("cutPlane", m.cutPlane);
     mesh.set("twoSided", m.cull == Cull::None ? 1 : 0);
+    mesh.set("backFacesShown", m.cull == Cull::Front ? 1 : 0);
     mesh.set("worldFromModel", d.worldFromModel);
     mesh.set("normalWorldFromModel", glm::inverseTranspose(glm::mat3(d.worldFromModel)));
     mesh.set("color", m.color);
@@ -437,6 +533,7 @@ struct Renderer::Impl {
     mesh.set("specular", m.specular);
     mesh.set("shininess", m.shininess);
     mesh.set("patternScale", m.patternScale);
+    mesh.set("clipToShadowBox", clipToShadowBox ? 1 : 0);
     if (cull == Cull::None) {
       glDisable(GL_CULL_FACE);
     } else {
@@ -506,29 +603,34 @@ struct Renderer::Impl {
     drawQuads(quads, viewportSize, label.color, f.id, false);
   }
 
-  void drawView(const DrawList& list, int index) {
+  // What one view draws, gathered before anything is drawn so that the
+  // shadow maps can be rendered first (see render()).
+  struct ViewItems {
+    std::vector<Material> arrowMaterials;  // the arrows' Drawables point here
+    std::vector<Drawable> items;
+    const ShadowMap* shadowMap = nullptr;  // null: no shadow
+    ShadowSetup shadow;
+  };
+
+  // overlapsEarlier: an inset over a view drawn before; it clears its own
+  // rectangle (the frame-wide clear covered the rest).
+  void drawView(const DrawList& list, int index, const ViewItems& viewItems, bool overlapsEarlier) {
     const View& v = list.views[static_cast<std::size_t>(index)];
-    std::vector<Material> arrowMaterials;
-    arrowMaterials.reserve(list.arrows.size());
-    const std::vector<Drawable> items = drawablesOf(list, index, arrowMaterials);
+    const std::vector<Drawable>& items = viewItems.items;
+    const bool shadowOn = viewItems.shadowMap != nullptr;
+    const glm::mat4& lightClipFromWorld = viewItems.shadow.lightClipFromWorld;
 
-    bool shadowOn = v.light.shadow;
-    glm::mat4 lightClipFromWorld(1.0f);
-    if (shadowOn) {
-      StageLog::instance().record("shadow-map");
-      lightClipFromWorld = shadowPass(v, items);
-    }
-
-    const GLuint target = fbSamples > 1 ? msaaFbo : resolveFbo;
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glBindFramebuffer(GL_FRAMEBUFFER, sceneFbo);
     const int glY = list.height - v.y - v.height;  // GL counts rows from the bottom
     glViewport(v.x, glY, v.width, v.height);
     glEnable(GL_SCISSOR_TEST);
     glScissor(v.x, glY, v.width, v.height);
-    glClearColor(0.0f, 0.0f, 0.0f, list.transparent ? 0.0f : 1.0f);
-    // With a backdrop every pixel is written anyway (geometry or backdrop):
-    // only depth needs clearing, which saves a pass over 4 samples a pixel.
-    glClear(v.background && !list.transparent ? GL_DEPTH_BUFFER_BIT : GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
+    if (overlapsEarlier) {
+      // A scissored clear is a full-screen quad on llvmpipe, per sample:
+      // only an inset pays for it.
+      glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+      glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
+    }
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
@@ -542,38 +644,20 @@ struct Renderer::Impl {
     viewUniforms.lightColor = v.light.color;
     viewUniforms.ambient = v.light.ambient;
     viewUniforms.cameraPosition = v.camera.position;
-    // At least 1.5 texels, so even a wide shadow box filters its edges.
-    viewUniforms.shadowFilterRadius =
-        std::max(v.light.shadowSoftness / (2.0f * v.light.shadowRadius), 1.5f / float(kShadowMapSize));
+    viewUniforms.shadowFilterRadius = viewItems.shadow.filterRadius;
     glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, shadowTexture);
+    glBindTexture(GL_TEXTURE_2D, shadowOn ? viewItems.shadowMap->texture : 0);
 
     std::vector<const Drawable*> translucent;
     glDisable(GL_BLEND);
     for (GLenum plane = 0; plane < 5; ++plane) glEnable(GL_CLIP_DISTANCE0 + plane);
     for (const Drawable& d : items) {
-      if (d.material->opacity < 1.0f) {
-        translucent.push_back(&d);
-        continue;
-      }
-      if (shadowOn && d.material->receivesShadow) drawReceiver(d);
+      if (d.material->opacity < 1.0f) translucent.push_back(&d);
+      else if (shadowOn && d.material->receivesShadow) drawReceiver(d);
       else drawMesh(d, false, d.material->cull);
     }
     for (GLenum plane = 0; plane < 5; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);  // lines write none
     glDisable(GL_CULL_FACE);
-    // The backdrop goes in after the opaque meshes, at the far plane and
-    // depth-tested, so pixels already covered are rejected before shading.
-    if (v.background && !list.transparent) {
-      glEnable(GL_DEPTH_TEST);
-      glDepthFunc(GL_LEQUAL);  // the backdrop sits exactly at the cleared depth 1
-      glDisable(GL_BLEND);
-      glDepthMask(GL_FALSE);
-      background.use();
-      background.set("topColor", v.backgroundTop);
-      background.set("bottomColor", v.backgroundBottom);
-      glBindVertexArray(emptyVao);
-      glDrawArrays(GL_TRIANGLES, 0, 3);
-    }
 
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
@@ -606,37 +690,111 @@ struct Renderer::Impl {
     glDepthMask(GL_TRUE);
   }
 
-  // True when the views are disjoint and cover the image: each clears its own
-  // rectangle, so a whole-image clear would be wasted work.
+  static bool overlap(const View& a, const View& b) {
+    return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+  }
+
+  // True when the views are disjoint and cover the image: compositing them
+  // one by one then writes every output pixel.
   static bool viewsTileImage(const DrawList& list) {
     long long area = 0;
     for (std::size_t i = 0; i < list.views.size(); ++i) {
-      const View& a = list.views[i];
-      area += static_cast<long long>(a.width) * a.height;
-      for (std::size_t j = i + 1; j < list.views.size(); ++j) {
-        const View& b = list.views[j];
-        if (a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height) return false;
-      }
+      area += static_cast<long long>(list.views[i].width) * list.views[i].height;
+      for (std::size_t j = i + 1; j < list.views.size(); ++j)
+        if (overlap(list.views[i], list.views[j])) return false;
     }
     return area == static_cast<long long>(list.width) * list.height;
+  }
+
+  Program& compositeProgram(int samples) {
+    auto it = compositePrograms.find(samples);
+    if (it == compositePrograms.end())
+      it = compositePrograms
+               .emplace(samples, Program(library, "composite.vert", "composite.frag", {},
+                                         fmt::format("#define SAMPLES {}\n", samples)))
+               .first;
+    return it->second;
+  }
+
+  // sRGB encoding of a backdrop colour (the composite pass works on encoded
+  // values, as the scene's blending does).
+  static glm::vec3 encodeSrgb(const glm::vec3& linear) {
+    glm::vec3 out;
+    for (int k = 0; k < 3; ++k) {
+      const float c = std::clamp(linear[k], 0.0f, 1.0f);
+      out[k] = c < 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+    }
+    return out;
+  }
+
+  // One pass over the output instead of a backdrop draw, an MSAA resolve and
+  // a CPU row flip: each output pixel averages its scene samples
+  // (premultiplied colour over transparent black), puts the view's backdrop
+  // gradient behind them, and lands on the row where it belongs top-down, so
+  // glReadPixels delivers the image in reading order.
+  void composite(const DrawList& list) {
+    glBindFramebuffer(GL_FRAMEBUFFER, outputFbo);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_SCISSOR_TEST);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(fbSamples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, scenePacked);
+    Program& p = compositeProgram(fbSamples);
+    p.use();
+    p.set("scene", 0);
+    p.set("sourceTopRow", list.height - 1);
+    p.set("opaqueAlpha", list.transparent ? 0u : 255u);
+    glBindVertexArray(emptyVao);
+    auto pass = [&](int x, int y, int w, int h, const View* v) {
+      // Output rows are image rows (top-down), so the rectangle is not flipped.
+      glViewport(x, y, w, h);
+      glScissor(x, y, w, h);
+      const bool backdrop = v != nullptr && v->background && !list.transparent;
+      p.set("backdropWeight", backdrop ? 1.0f : 0.0f);
+      p.set("topColor", backdrop ? encodeSrgb(v->backgroundTop) : glm::vec3(0.0f));
+      p.set("bottomColor", backdrop ? encodeSrgb(v->backgroundBottom) : glm::vec3(0.0f));
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    };
+    if (!viewsTileImage(list)) pass(0, 0, list.width, list.height, nullptr);  // gaps between views: no backdrop
+    for (const View& v : list.views) pass(v.x, v.y, v.width, v.height, &v);
   }
 
   void render(const DrawList& list, media::Image& image) {
     if (list.width <= 0 || list.height <= 0)
       throw badInput({}, "image size {}x{}: expected positive width and height", list.width, list.height);
     ensureFramebuffers(list.width, list.height, std::max(1, list.msaaSamples));
-    const GLuint target = fbSamples > 1 ? msaaFbo : resolveFbo;
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    // Shadow maps first: binding another framebuffer makes llvmpipe run the
+    // scene binned so far, so a shadow pass between the scene's clear and its
+    // draws would make the clear a separate trip through all the samples in
+    // memory instead of a per-tile fill just before the tile is drawn.
+    std::vector<ViewItems> perView(list.views.size());
+    std::size_t shadowMapsUsed = 0;
+    for (std::size_t i = 0; i < list.views.size(); ++i) {
+      ViewItems& vi = perView[i];
+      vi.arrowMaterials.reserve(list.arrows.size());
+      vi.items = drawablesOf(list, static_cast<int>(i), vi.arrowMaterials);
+      if (!list.views[i].light.shadow) continue;
+      StageLog::instance().record("shadow-map");
+      vi.shadowMap = &shadowMap(shadowMapsUsed++);
+      vi.shadow = shadowPass(list.views[i], vi.items, *vi.shadowMap);
+    }
+    // One unscissored clear of the whole scene: llvmpipe does it per tile as
+    // the tile is first rasterized; a scissored clear would be a quad draw.
+    glBindFramebuffer(GL_FRAMEBUFFER, sceneFbo);
     glDisable(GL_SCISSOR_TEST);
     glViewport(0, 0, list.width, list.height);
-    // Opaque output: alpha starts at 1 and every blend keeps it there, so
-    // the read-back needs no alpha pass.
-    glClearColor(0.0f, 0.0f, 0.0f, list.transparent ? 0.0f : 1.0f);
-    if (!viewsTileImage(list)) glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    for (int i = 0; i < static_cast<int>(list.views.size()); ++i) drawView(list, i);
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glDepthMask(GL_TRUE);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    for (std::size_t i = 0; i < list.views.size(); ++i) {
+      bool overlapsEarlier = false;
+      for (std::size_t j = 0; j < i; ++j) overlapsEarlier = overlapsEarlier || overlap(list.views[i], list.views[j]);
+      drawView(list, static_cast<int>(i), perView[i], overlapsEarlier);
+    }
 
     // Image-level labels (titles) over everything.
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glBindFramebuffer(GL_FRAMEBUFFER, sceneFbo);
     glDisable(GL_SCISSOR_TEST);
     glViewport(0, 0, list.width, list.height);
     glDisable(GL_DEPTH_TEST);
@@ -645,16 +803,16 @@ struct Renderer::Impl {
     for (const LabelItem& l : list.labels)
       if (l.view < 0) drawLabel(l, glm::vec2(list.width, list.height), nullptr);
 
-    if (fbSamples > 1) {
-      glBindFramebuffer(GL_READ_FRAMEBUFFER, msaaFbo);
-      glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolveFbo);
-      glBlitFramebuffer(0, 0, list.width, list.height, 0, 0, list.width, list.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    }
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, resolveFbo);
+    composite(list);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, outputFbo);
     glFinish();
-    readback.resize(static_cast<std::size_t>(list.width) * list.height * 4);  // reused: no page faults per frame
+    image.width = list.width;
+    image.height = list.height;
+    image.rgba.resize(static_cast<std::size_t>(list.width) * list.height * 4);  // reused across frames
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, list.width, list.height, GL_RGBA, GL_UNSIGNED_BYTE, readback.data());
+    // One uint per pixel whose bytes in memory are R, G, B, A (see composite.frag).
+    static_assert(std::endian::native == std::endian::little, "the packed RGBA8 words assume little endian");
+    glReadPixels(0, 0, list.width, list.height, GL_RED_INTEGER, GL_UNSIGNED_INT, image.rgba.data());
     if (const GLenum err = glGetError(); err != GL_NO_ERROR)
       throw runtimeError({}, "OpenGL error 0x{:x} while rendering a {}x{} image", err, list.width, list.height);
 
@@ -670,13 +828,6 @@ struct Renderer::Impl {
       }
     }
 
-    // GL rows are bottom-up: flip exactly once, here.
-    const std::size_t rowBytes = static_cast<std::size_t>(list.width) * 4;
-    image.width = list.width;
-    image.height = list.height;
-    image.rgba.resize(rowBytes * list.height);
-    for (int y = 0; y < list.height; ++y)
-      std::memcpy(image.rgba.data() + rowBytes * y, readback.data() + rowBytes * (list.height - 1 - y), rowBytes);
     if (list.transparent) {
       for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
         std::uint8_t* p = &image.rgba[i];

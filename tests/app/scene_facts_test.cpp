@@ -189,6 +189,19 @@ TEST(SceneFacts, BerrySplitSumsToTheTotalPhase) {
   EXPECT_LT(std::abs(g.phaseSplit->residual), 1e-9);
 }
 
+TEST(SceneFacts, PhaseSplitOnTheLollipopWhereBSweepsAGreatCircle) {
+  // On a plane B = −u/R lies in the floor: its loop is the equator (Ω = 2π,
+  // Berry's −Ω/2 = −π mod 2π), and the mean direction of the loop vanishes.
+  const Loaded l = load("lollipop", {R"(labels.facts=["phase-split"])"});
+  const SceneFacts f(l.spec, l.model, scene::resolveFacts(l.spec));
+  const auto& p = *f.phaseSplit;
+  EXPECT_NEAR(p.coneAngle, kPi / 2, 1e-12);
+  EXPECT_NEAR(std::abs(std::remainder(p.berryGeometric, 2 * kPi)), kPi, 1e-10);
+  EXPECT_NEAR(p.berryGeometric, p.berryClosedForm, 1e-10);
+  EXPECT_LT(std::abs(p.residual), 1e-9);
+  EXPECT_TRUE(std::isfinite(p.geometric) && std::isfinite(p.dynamic));
+}
+
 TEST(SceneFacts, PrintShowsWhatAutoChoseAndReadsBack) {
   const std::string berry = (test::sourceDir() / "scenes" / "berry.toml").string();
   const auto printed = test::runRollspin({"scene", berry, "--print"});

@@ -50,6 +50,25 @@ TEST(Gallery, EverySceneRendersAStill) {
   }
 }
 
+TEST(Gallery, FactsAreComputedOnlyWhenTheImageShowsThem) {
+  const fs::path dir = test::freshTempDir("gallery_facts");
+  auto factsRan = [&](const std::string& name, const std::vector<std::string>& sets) {
+    std::vector<std::string> args{"render", (test::sourceDir() / "scenes" / (name + ".toml")).string(), "--still",
+                                  "--width", "96", "--height", "54", "--verbose", "-o", (dir / "a.png").string()};
+    for (const auto& s : sets) args.insert(args.end(), {"--set", s});
+    const auto r = test::runRollspin(args);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return r.err.find("rollspin: stage: facts") != std::string::npos;
+  };
+  EXPECT_TRUE(factsRan("lollipop", {}));
+  EXPECT_FALSE(factsRan("lollipop", {"render.labels=false"}));       // delta is text only
+  EXPECT_FALSE(factsRan("lollipop", {"render.layout=twin"}));        // its lines belong to the ball view
+  EXPECT_TRUE(factsRan("tennis-ball", {"render.labels=false"}));     // the marks are drawn
+  EXPECT_FALSE(factsRan("tennis-ball", {"render.layout=twin"}));
+  EXPECT_TRUE(factsRan("berry", {"render.labels=false"}));           // the cone of B in the twin
+  EXPECT_FALSE(factsRan("berry", {"render.labels=false", "render.layout=ball"}));
+}
+
 TEST(Gallery, FactLabelsUseOnlyGlyphsTheAtlasHas) {
   const render::FontAtlas atlas(render::defaultFontFile(false), 16.0f);
   int scenesWithFacts = 0;

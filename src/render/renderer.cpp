@@ -439,9 +439,12 @@ struct Renderer::Impl {
       centre = 0.5f * (lo + hi);
       half = std::min(r, 0.5f * std::max(hi.x - lo.x, hi.y - lo.y) + l.shadowSoftness * 1.1f);
     }
+    // Depth: from 2r in front of the centre to 6r behind it. A receiver past
+    // the far plane is lit, and on a wall lit from above the shadow lands
+    // well behind the ball along the light (the floor: about R behind).
     ShadowSetup setup;
     const glm::mat4 lightClipFromWorld =
-        glm::ortho(centre.x - half, centre.x + half, centre.y - half, centre.y + half, 0.01f * r, 4.0f * r) *
+        glm::ortho(centre.x - half, centre.x + half, centre.y - half, centre.y + half, 0.01f * r, 8.0f * r) *
         lightViewFromWorld;
     setup.lightClipFromWorld = lightClipFromWorld;
     // The filter radius in map uv: the light's softness (world units), and

@@ -8,6 +8,7 @@
 #include "render/gl_context.hpp"
 #include "render/mesh_builders.hpp"
 #include "render/renderer.hpp"
+#include "support/cli_runner.hpp"
 
 namespace rollspin::render {
 namespace {
@@ -166,6 +167,8 @@ TEST_F(RendererTest, SameDrawListTwiceGivesIdenticalPixels) {
 TEST(ShaderLibrary, ShadersAreEmbeddedAndOverridable) {
   EXPECT_NE(ShaderLibrary{}.source("mesh.frag").find("#version 450 core"), std::string::npos);
   EXPECT_THROW((void)ShaderLibrary{"/nonexistent-shader-dir"}.source("mesh.frag"), Error);
+  // The repository's shaders/ folder is a valid override (--shader-dir shaders).
+  EXPECT_EQ(ShaderLibrary{test::sourceDir() / "shaders"}.source("mesh.frag"), ShaderLibrary{}.source("mesh.frag"));
 }
 
 }  // namespace

@@ -287,6 +287,13 @@ struct Renderer::Impl {
     }
     glGenTextures(1, &scenePacked);
     glTextureView(scenePacked, colorTarget, sceneColor, GL_R32UI, 0, 1, 0, 1);
+    if (samples == 1) {
+      // An integer texture with the default LINEAR filter is incomplete and
+      // texelFetch returns 0 (multisample textures have no filter state).
+      glBindTexture(GL_TEXTURE_2D, scenePacked);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
     glGenRenderbuffers(1, &sceneDepth);
     glBindRenderbuffer(GL_RENDERBUFFER, sceneDepth);
     glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? samples : 0, GL_DEPTH_COMPONENT24, w, h);

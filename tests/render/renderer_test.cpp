@@ -96,6 +96,7 @@ TEST_F(RendererTest, SphereIsLitAntialiasedAndCentred) {
   EXPECT_GT(partial, 20);
   list.msaaSamples = 1;
   const media::Image aliased = renderer_->render(list);
+  EXPECT_EQ(aliased.pixel(32, 32)[0], 255);  // the disc is there, not just a blank image
   for (int y = 0; y < 64; ++y)
     for (int x = 0; x < 64; ++x) {
       const int r = aliased.pixel(x, y)[0];

@@ -29,7 +29,8 @@ void deltaLines(const DeltaFact& d, const LiveAngles& live, bool atEnd, bool str
   }
   out.push_back(fmt::format("solver: {:.6f} rad in the rolling frame", d.measured));
   if (!atEnd && !strobe) out.push_back(fmt::format("  so far: {:.4f} rad", live.rolling));
-  out.push_back(fmt::format("lab rotation {:.4f}° = |δ mod 2π| {:.4f}°", d.labAngle / kDeg, d.closedFormMod / kDeg));
+  if (d.wholeCircuits)
+    out.push_back(fmt::format("lab rotation {:.4f}° = |δ mod 2π| {:.4f}°", d.labAngle / kDeg, d.closedFormMod / kDeg));
 }
 
 void marksLines(const SceneFacts& facts, const FrameOrientations& frame, bool strobe, std::vector<std::string>& out) {
@@ -56,8 +57,8 @@ void turnsLines(const TurnsFact& t, const LiveAngles& live, bool strobe, std::ve
                             std::abs(t.lab) / (2 * kPi)));
   out.push_back(fmt::format("  {} the revolution", t.lab * t.frame < 0.0 ? "against" : "with"));
   out.push_back("turns relative to the radius line:");
-  out.push_back(fmt::format("  {:.2f} (end {:.6f}; the paper says 1)", std::abs(relative) / (2 * kPi),
-                            std::abs(t.lab - t.frame) / (2 * kPi)));
+  out.push_back(fmt::format("  {:.2f} (end {:.6f}{})", std::abs(relative) / (2 * kPi),
+                            std::abs(t.lab - t.frame) / (2 * kPi), t.paperPenny ? "; the paper says 1" : ""));
 }
 
 void phaseLines(const PhaseSplitFact& p, std::vector<std::string>& out) {

@@ -290,6 +290,22 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
     hi = hi.cwiseMax(model.plate->initialTopPoint + 0.2 * R * start.normal.cwiseAbs());
     const std::size_t pathFramePoints = framePoints_.size();
     for (std::size_t i = 0; i < pathFramePoints; ++i) framePoints_.push_back(framePoints_[i] + 1.2 * R * start.normal);
+    // The glass disc reaches beyond the path (the plate's marked point
+    // circles at R1 = 2r): its rim, wherever the plate moves, must stay in
+    // frame and inside the far plane.
+    for (int i = 0; i < 24; ++i) {
+      const double s = length * i / 24.0;
+      const geometry::DarbouxSample f = model.path->at(s);
+      const Vec3 e1 = geometry::defaultTangentFor(f.normal), e2 = f.normal.cross(e1);
+      const auto [centre, radius] = plateDisc(s);
+      for (int k = 0; k < 16; ++k) {
+        const double phi = 2.0 * std::numbers::pi * k / 16.0;
+        const Vec3 p = centre + radius * (std::cos(phi) * e1 + std::sin(phi) * e2) + 0.1 * R * f.normal;
+        framePoints_.push_back(p);
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+      }
+    }
   }
   frameCentre_ = 0.5 * (lo + hi);
   frameRadius_ = 0.5 * (hi - lo).norm();
@@ -392,7 +408,10 @@ OrbitAngles orbitAngles(const scene::SceneSpec& spec, const RollingModel& model)
       if (!azimuthGiven) a.azimuth = std::atan2(n.y(), n.x()) - 25.0 * kDeg;
       if (!elevationGiven) a.elevation = 14.0 * kDeg;
     } else if (spec.render.strobe > 1 && !elevationGiven) {
-      a.elevation = 40.0 * kDeg;  // a strobe reads better from higher up
+      // From high up: seen at 40° the positions on the far and near sides of
+      // a circle overlap (eight around the lollipop circle are 2.4R apart,
+      // foreshortened to 1.5R); at 70° they stand apart.
+      a.elevation = 70.0 * kDeg;
     } else if (n.z() < 0.0 && !elevationGiven) {
       a.elevation = -a.elevation;  // a ceiling: look from below
     }
@@ -438,7 +457,13 @@ render::View SceneDrawer::ballCamera(int x, int y, int w, int h, double s, const
   const Vec3 target = aim.target;
   render::View v = orbitView(x, y, w, h, toGlm(target), aim.distance, a, aim.fovDeg, frameRadius_ + 3.0 * R);
   glm::vec3 up(0, 0, 1);
-  if (const auto* plane = dynamic_cast<const geometry::Plane*>(model_.surface.get())) up = toGlm(plane->normal());
+  if (const auto* plane = dynamic_cast<const geometry::Plane*>(model_.surface.get())) {
+    up = toGlm(plane->normal());
+    // A wall: light from the ceiling as well as from in front, so that the
+    // ball's shadow falls below it on the wall, where it reads as a shadow,
+    // not straight behind it as a dark rim around the ball.
+    if (std::abs(up.z) < 0.7f) up = glm::normalize(up + glm::vec3(0.0f, 0.0f, 1.5f));
+  }
   const glm::vec3 eyeDir = glm::normalize(v.camera.position - toGlm(target));
   // The shadow box hugs the ball (a strobe: all of them), see render::Light.
   if (spec_.render.strobe > 1) {
@@ -627,20 +652,18 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
 
   if (model_.plate && frame.strobe.empty()) {
     const geometry::DarbouxSample f = model_.path->at(s);
-    const double ratio = model_.plate->contactSpeedRatio;
     const double thickness = 0.08 * R;
     // The plate point above the circle's far side traces the circle of
     // radius R1 = ratio · r about the contact circle's centre.
     const Vec3 plateCentre = platePoint(s, 0.0);
-    const double contactRadius = (f.point - plateCircleCentre_).norm();
-    const double discRadius = (ratio - 1.0) * contactRadius + 1.5 * R;
+    const auto [discCentre, discRadius] = plateDisc(s);
     const glm::vec3 n = toGlm(f.normal);
     const glm::vec3 e1 = toGlm(geometry::defaultTangentFor(f.normal)), e2 = glm::cross(n, e1);
     glm::mat4 disc(1.0f);
     disc[0] = glm::vec4(e1 * float(discRadius), 0.0f);
     disc[1] = glm::vec4(e2 * float(discRadius), 0.0f);
     disc[2] = glm::vec4(n * float(thickness), 0.0f);
-    disc[3] = glm::vec4(toGlm(plateCentre), 1.0f);
+    disc[3] = glm::vec4(toGlm(discCentre), 1.0f);
     render::Material glass;
     glass.color = {0.55f, 0.80f, 0.95f};
     glass.opacity = 0.14f;
@@ -711,6 +734,16 @@ Vec3 SceneDrawer::platePoint(double s, double lift) const {
   const geometry::DarbouxSample f = model_.path->at(s);
   return plateCircleCentre_ + model_.plate->contactSpeedRatio * (f.point - plateCircleCentre_) +
          (2.0 * model_.ballRadius + lift) * f.normal;
+}
+
+// Centred between the marked point and the ball's top (the plate is an
+// unbounded plane; a disc around both keeps the picture, and its framing,
+// as small as they can be), with a margin of 0.8 R.
+std::pair<Vec3, double> SceneDrawer::plateDisc(double s) const {
+  const geometry::DarbouxSample f = model_.path->at(s);
+  const Vec3 marked = platePoint(s, 0.0);
+  const Vec3 top = f.point + 2.0 * model_.ballRadius * f.normal;
+  return {0.5 * (marked + top), 0.5 * (marked - top).norm() + 0.8 * model_.ballRadius};
 }
 
 // The marks every β of path angle: dots on the contact path (dark once

@@ -102,6 +102,9 @@ class SceneDrawer {
   // Brockett's plate: the point of the plate above the contact point P(s),
   // lifted by `lift` above the ball's top.
   geometry::Vec3 platePoint(double s, double lift) const;
+  // The glass disc drawn for the plate at s (centre, radius): the window of
+  // the plate that holds its marked point and the ball's top.
+  std::pair<geometry::Vec3, double> plateDisc(double s) const;
 
   const scene::SceneSpec& spec_;
   const RollingModel& model_;

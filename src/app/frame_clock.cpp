@@ -54,8 +54,8 @@ FrameClock::FrameClock(std::span<const SegmentSpan> spans, const scene::SceneSpe
   const double hold = std::round(spec.animation.hold * fps);
   const std::vector<double> seconds = segmentSeconds(spans, spec);
   double frames = std::max(hold, 1.0);
-  long long lastFirst = 0;
-  std::vector<Stage> stages{{0, static_cast<long long>(frames), 0, 0, 0.0, 0.0, false}};
+  long long lastFirst = 0, lastFrames = 0;
+  std::vector<Stage> stages{{0, static_cast<long long>(frames), 0, 0, 0, 0.0, 0.0, false}};
   for (std::size_t k = 0; k < spec.segments.size(); ++k) {
     const scene::SegmentSpec& seg = spec.segments[k];
     const std::string key = scene::SceneSpec::segmentKey(k);
@@ -74,9 +74,12 @@ FrameClock::FrameClock(std::span<const SegmentSpan> spans, const scene::SceneSpe
     // Segment 1's time runs from the clip's first frame (the opening hold shows it).
     const long long segmentFirst = k == 0 ? 0 : first;
     if (n >= 1.0)
-      stages.push_back({first, static_cast<long long>(n), k, segmentFirst, spans[k].start, spans[k].end,
-                        seg.path.has_value()});
-    if (k + 1 == spec.segments.size()) lastFirst = segmentFirst;
+      stages.push_back({first, static_cast<long long>(n), k, segmentFirst, static_cast<long long>(n), spans[k].start,
+                        spans[k].end, seg.path.has_value()});
+    if (k + 1 == spec.segments.size()) {
+      lastFirst = segmentFirst;
+      lastFrames = static_cast<long long>(n);
+    }
     frames += n;
     if (seg.path) motionFrames_ += static_cast<long long>(n);
   }
@@ -84,7 +87,8 @@ FrameClock::FrameClock(std::span<const SegmentSpan> spans, const scene::SceneSpe
   length_ = s;
   holdFrames_ = static_cast<long long>(hold);
   // The closing hold belongs to the last segment: its time keeps running.
-  stages.push_back({static_cast<long long>(frames), holdFrames_, spec.segments.size() - 1, lastFirst, s, s, false});
+  stages.push_back(
+      {static_cast<long long>(frames), holdFrames_, spec.segments.size() - 1, lastFirst, lastFrames, s, s, false});
   frameCount_ = static_cast<long long>(frames) + holdFrames_;
   stages_ = std::move(stages);
 }
@@ -102,7 +106,7 @@ StoryPlace FrameClock::place(long long frame) const {
   auto seconds = [this](long long frames) { return double(frames) * double(fps_.den) / double(fps_.num); };
   if (stages_.empty()) return {0, seconds(frame), seconds(frameCount_)};
   const Stage& st = stageAt(frame);
-  return {st.segment, std::max(0.0, seconds(frame - st.segmentFirst)), seconds(st.frames)};
+  return {st.segment, std::max(0.0, seconds(frame - st.segmentFirst)), seconds(st.segmentFrames)};
 }
 
 double FrameClock::arcLength(long long frame) const {

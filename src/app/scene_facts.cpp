@@ -135,9 +135,14 @@ SceneFacts::SceneFacts(const scene::SceneSpec& spec, const RollingModel& model, 
     }
     d.labAngle = spin::rotationAngleAxis(gridU_.back()).angle;
     d.closedFormMod = std::abs(wrapAngle(d.closedForm));
+    d.wholeCircuits = std::abs(turnsOfPath - std::round(turnsOfPath)) < 1e-9;
     delta = d;
   }
-  if (shows(Fact::Turns)) turns = TurnsFact{labSum_.back().dot(revolutionAxis_), frameSum_.back().dot(revolutionAxis_)};
+  if (shows(Fact::Turns)) {
+    turns = TurnsFact{labSum_.back().dot(revolutionAxis_), frameSum_.back().dot(revolutionAxis_)};
+    turns->paperPenny = spec.surface.side == scene::SurfaceSide::Inside &&
+                        std::abs(spec.surface.radius - 3.0 * R) <= 1e-9 * R && std::abs(turnsOfPath - 1.0) < 1e-12;
+  }
   if (shows(Fact::Marks)) {
     MarksFact m;
     m.circleRadius = planeCircleRadius(model);

@@ -29,7 +29,8 @@ struct DeltaFact {
   double closedForm = 0.0;    // rad
   bool onSphere = false;      // which closed form (the derived one on a sphere, README "Notes on the paper")
   double labAngle = 0.0;      // the lab rotation angle of U(L) in [0, π]
-  double closedFormMod = 0.0; // |remainder(closedForm, 2π)|: what labAngle must be
+  double closedFormMod = 0.0; // |remainder(closedForm, 2π)|: what labAngle must be after whole circuits
+  bool wholeCircuits = true;  // else the frame's own turn is in U(L) too, and labAngle ≠ closedFormMod
 };
 
 struct MarksFact {
@@ -44,6 +45,7 @@ struct MarksFact {
 struct TurnsFact {
   double lab = 0.0;    // signed lab angle about the revolution axis after the path (rad)
   double frame = 0.0;  // the radius line's turn (rad, > 0)
+  bool paperPenny = false;  // inside, r = 3R: the paper's penny, which it counts as 1 turn
 };
 
 struct PhaseSplitFact {

@@ -22,10 +22,15 @@ namespace {
 struct Range {
   char32_t first, last;
 };
-// ASCII, Latin-1 signs (° · ²), Greek, mathematical operators (− √ ≈ ∫ …),
-// ⟨ ⟩, subscripts and ●.
-constexpr Range kRanges[] = {{0x20, 0x7E},     {0xB0, 0xB7},     {0xD7, 0xD7},     {0x391, 0x3C9},
-                             {0x2080, 0x2089}, {0x2200, 0x22FF}, {0x25CF, 0x25CF}, {0x27E8, 0x27E9}};
+// What labels and titles use: ASCII; Latin-1 (° ± ² ³ ¹ · × ÷ and accented
+// letters such as ê); Greek with its variant forms (ϑ ϕ ϖ ϵ); general
+// punctuation (‐ – — ‘ ’ “ ” • … ′ ″); superscripts and subscripts
+// (⁰ ⁱ ⁴…⁹ ⁺ ⁻ ⁼ ⁽ ⁾ ⁿ, ₀…₉ ₊ ₋); ℏ; arrows (→ ↦ ⇒); mathematical operators
+// (− √ ≈ ∫ ∮ ∞ …); ● and ⟨ ⟩. A code point outside them renders as '?'.
+constexpr Range kRanges[] = {{0x20, 0x7E},     {0xA0, 0xFF},     {0x391, 0x3C9},   {0x3D1, 0x3D1},
+                             {0x3D5, 0x3D6},   {0x3F5, 0x3F5},   {0x2010, 0x2027}, {0x2030, 0x2033},
+                             {0x2070, 0x208E}, {0x210F, 0x210F}, {0x2190, 0x21FF}, {0x2200, 0x22FF},
+                             {0x25CF, 0x25CF}, {0x27E8, 0x27E9}};
 }  // namespace
 
 std::u32string decodeUtf8(std::string_view s) {

@@ -287,6 +287,13 @@ struct Renderer::Impl {
     }
     glGenTextures(1, &scenePacked);
     glTextureView(scenePacked, colorTarget, sceneColor, GL_R32UI, 0, 1, 0, 1);
+    if (samples == 1) {
+      // An integer texture with the default LINEAR filter is incomplete and
+      // texelFetch returns 0 (multisample textures have no filter state).
+      glBindTexture(GL_TEXTURE_2D, scenePacked);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
     glGenRenderbuffers(1, &sceneDepth);
     glBindRenderbuffer(GL_RENDERBUFFER, sceneDepth);
     glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? samples : 0, GL_DEPTH_COMPONENT24, w, h);
@@ -439,9 +446,12 @@ struct Renderer::Impl {
       centre = 0.5f * (lo + hi);
       half = std::min(r, 0.5f * std::max(hi.x - lo.x, hi.y - lo.y) + l.shadowSoftness * 1.1f);
     }
+    // Depth: from 2r in front of the centre to 6r behind it. A receiver past
+    // the far plane is lit, and on a wall lit from above the shadow lands
+    // well behind the ball along the light (the floor: about R behind).
     ShadowSetup setup;
     const glm::mat4 lightClipFromWorld =
-        glm::ortho(centre.x - half, centre.x + half, centre.y - half, centre.y + half, 0.01f * r, 4.0f * r) *
+        glm::ortho(centre.x - half, centre.x + half, centre.y - half, centre.y + half, 0.01f * r, 8.0f * r) *
         lightViewFromWorld;
     setup.lightClipFromWorld = lightClipFromWorld;
     // The filter radius in map uv: the light's softness (world units), and
@@ -779,6 +789,12 @@ struct Renderer::Impl {
       vi.shadowMap = &shadowMap(shadowMapsUsed++);
       vi.shadow = shadowPass(list.views[i], vi.items, *vi.shadowMap);
     }
+    // Wait for the shadow maps to be drawn: a texture that a scene still in
+    // flight renders into counts as busy, and binding it for sampling would
+    // make llvmpipe flush the scene being binned in the middle of the frame
+    // (measured: 10 ms of a 1080p frame, the main scene's tiles making two
+    // trips through memory).
+    if (shadowMapsUsed > 0) glFinish();
     // One unscissored clear of the whole scene: llvmpipe does it per tile as
     // the tile is first rasterized; a scissored clear would be a quad draw.
     glBindFramebuffer(GL_FRAMEBUFFER, sceneFbo);

@@ -14,7 +14,9 @@ std::string_view embeddedShader(std::string_view name);
 
 std::string ShaderLibrary::source(const std::string& name) const {
   if (!overrideDir_.empty()) {
-    const auto file = overrideDir_ / name;
+    // Named as in shaders/ ("mesh.frag" is mesh.frag.glsl), so that
+    // --shader-dir shaders reads the working copy.
+    const auto file = overrideDir_ / (name + ".glsl");
     std::ifstream in(file, std::ios::binary);
     if (!in) throw badInput({"--shader-dir " + overrideDir_.string()}, "cannot read shader '{}'", file.string());
     std::stringstream ss;

@@ -1,7 +1,7 @@
 // Shader sources by file name ("mesh.vert"). The GLSL files in shaders/ are
 // embedded into the binary at build time (embed_shaders.cmake), so rollspin
 // runs from any directory; a non-empty override directory (--shader-dir)
-// reads them from disk instead, for shader development.
+// reads them from disk instead (DIR/mesh.vert.glsl), for shader development.
 #pragma once
 
 #include <filesystem>

@@ -815,11 +815,24 @@ void applyOverride(toml::table& root, const std::string& arg, std::map<std::stri
     if (dot == std::string::npos) break;
     start = dot + 1;
   }
-  for (const auto& p : parts) {
+  // A part may name an entry of an array of tables, counted from 1:
+  // segment[2].path.radius (README "Storyboards").
+  std::vector<std::size_t> index(parts.size(), 0);  // 0: not an array entry
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    std::string& p = parts[i];
+    const auto open = p.find('[');
+    if (open != std::string::npos && i + 1 < parts.size() && p.back() == ']' && open + 2 < p.size()) {
+      const std::string digits = p.substr(open + 1, p.size() - open - 2);
+      if (digits.size() <= 6 && std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+        index[i] = std::stoul(digits);
+        if (index[i] == 0) throw badInput(loc, "'{}': entries are counted from 1", p);
+        p.resize(open);
+      }
+    }
     const bool bare = !p.empty() && std::all_of(p.begin(), p.end(), [](char c) {
       return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
     });
-    if (!bare) throw badInput(loc, "'{}' is not a key path like section.key", key);
+    if (!bare) throw badInput(loc, "'{}' is not a key path like section.key (or segment[k].key)", key);
   }
   toml::table parsed;
   try {
@@ -831,7 +844,14 @@ void applyOverride(toml::table& root, const std::string& arg, std::map<std::stri
   toml::table* t = &root;
   for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
     toml::node* child = t->get(parts[i]);
-    if (child == nullptr) {
+    if (index[i] > 0) {
+      toml::array* entries = child != nullptr ? child->as_array() : nullptr;
+      const std::size_t count = entries != nullptr ? entries->size() : 0;
+      if (index[i] > count)
+        throw badInput(loc, "'{}[{}]': the scene has {} {} entr{}", parts[i], index[i], count, parts[i],
+                       count == 1 ? "y" : "ies");
+      child = entries->get(index[i] - 1);
+    } else if (child == nullptr) {
       t->insert(parts[i], toml::table{});
       child = t->get(parts[i]);
     }

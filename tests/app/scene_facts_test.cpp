@@ -111,6 +111,7 @@ TEST(SceneFacts, PennyTurnsTwiceInTheLabAndThreeTimesAgainstTheRadiusLine) {
   const Loaded l = load("penny");
   const SceneFacts f(l.spec, l.model, scene::resolveFacts(l.spec));
   ASSERT_TRUE(f.turns);
+  EXPECT_TRUE(f.turns->paperPenny);
   EXPECT_NEAR(f.turns->lab / (2 * kPi), -2.0, 1e-9);  // against the revolution
   EXPECT_NEAR(f.turns->frame / (2 * kPi), 1.0, 1e-9);
   EXPECT_NEAR((f.turns->lab - f.turns->frame) / (2 * kPi), -3.0, 1e-9);
@@ -213,4 +214,40 @@ TEST(SceneFacts, PrintShowsWhatAutoChoseAndReadsBack) {
   const auto bad = test::runRollspin({"scene", berry, "--print", "--set", R"(labels.facts=["marks"])"});
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_NE(bad.err.find("labels.facts: \"marks\" applies to a circle on a plane only"), std::string::npos) << bad.err;
+}
+
+TEST(SceneFacts, OneNumberChangedStillMatches) {
+  // A lecturer changes one number: direction, turns, radii.
+  {
+    const Loaded l = load("lollipop", {"path.direction=cw", "path.turns=2.5"});
+    const SceneFacts f(l.spec, l.model, {Fact::Delta});
+    EXPECT_NEAR(f.delta->measured, 2.5 * 2 * kPi * std::sqrt(10.0), 1e-9);
+    EXPECT_NEAR(f.delta->closedForm, f.delta->measured, 1e-9);
+    EXPECT_FALSE(f.delta->wholeCircuits);  // U(L) also holds the frame's half turn: no mod-2π check
+  }
+  {
+    const Loaded l = load("lollipop", {"path.direction=cw", "path.turns=3"});
+    const SceneFacts f(l.spec, l.model, {Fact::Delta});
+    EXPECT_NEAR(f.delta->measured, 3 * 2 * kPi * std::sqrt(10.0), 1e-9);
+    EXPECT_NEAR(f.delta->labAngle, f.delta->closedFormMod, 1e-9);
+  }
+  {
+    const Loaded l = load("tennis-ball", {"path.direction=cw"});
+    const SceneFacts f(l.spec, l.model, {Fact::Marks});
+    for (double t : f.marks->turn) EXPECT_NEAR(t, kPi, 1e-9);
+  }
+  {
+    const Loaded l = load("penny", {"path.direction=cw", "path.turns=2"});
+    const SceneFacts f(l.spec, l.model, {Fact::Turns});
+    EXPECT_NEAR(std::abs(f.turns->lab) / (2 * kPi), 4.0, 1e-9);
+    EXPECT_NEAR(std::abs(f.turns->lab - f.turns->frame) / (2 * kPi), 6.0, 1e-9);
+    EXPECT_LT(f.turns->lab * f.turns->frame, 0.0);  // still against the revolution
+    EXPECT_FALSE(f.turns->paperPenny);  // two circuits: not the paper's statement
+  }
+  {
+    // Outside, at the equator: the lab turns with the revolution, 1 + r/R... (ω = (1/R)(1 + R/r) u).
+    const Loaded l = load("penny", {"surface.side=outside"});
+    const SceneFacts f(l.spec, l.model, {Fact::Turns});
+    EXPECT_NEAR(std::abs(f.turns->lab) / (2 * kPi), (1.0 + 1.0 / 3.0) * 3.0, 1e-9);  // ∫|ω| ds / 2π = (4/3)(6π)/2π
+  }
 }

@@ -81,7 +81,9 @@ TEST(StoryboardClock, FrameCountIsTheSegmentsFramesPlusTheHolds) {
   EXPECT_NEAR(clock.place(135).duration, 7.0, 1e-12);
   EXPECT_EQ(clock.place(315).segment, 2u);
   EXPECT_EQ(clock.place(390).segment, 3u);
-  EXPECT_EQ(clock.place(464).segment, 3u);  // the closing hold belongs to the last segment
+  EXPECT_EQ(clock.place(464).segment, 3u);  // the closing hold belongs to the last segment,
+  EXPECT_NEAR(clock.place(464).seconds, 74.0 / 30.0, 1e-12);  // whose time runs on
+  EXPECT_NEAR(clock.place(464).duration, 2.0, 1e-12);         // (a camera move ended with it)
 }
 
 TEST(StoryboardClock, NoHoldStillOpensOnTheStartAndTooShortAMotionIsBadInput) {

@@ -8,6 +8,7 @@
 #include "render/gl_context.hpp"
 #include "render/mesh_builders.hpp"
 #include "render/renderer.hpp"
+#include "support/cli_runner.hpp"
 
 namespace rollspin::render {
 namespace {
@@ -95,6 +96,7 @@ TEST_F(RendererTest, SphereIsLitAntialiasedAndCentred) {
   EXPECT_GT(partial, 20);
   list.msaaSamples = 1;
   const media::Image aliased = renderer_->render(list);
+  EXPECT_EQ(aliased.pixel(32, 32)[0], 255);  // the disc is there, not just a blank image
   for (int y = 0; y < 64; ++y)
     for (int x = 0; x < 64; ++x) {
       const int r = aliased.pixel(x, y)[0];
@@ -166,6 +168,8 @@ TEST_F(RendererTest, SameDrawListTwiceGivesIdenticalPixels) {
 TEST(ShaderLibrary, ShadersAreEmbeddedAndOverridable) {
   EXPECT_NE(ShaderLibrary{}.source("mesh.frag").find("#version 450 core"), std::string::npos);
   EXPECT_THROW((void)ShaderLibrary{"/nonexistent-shader-dir"}.source("mesh.frag"), Error);
+  // The repository's shaders/ folder is a valid override (--shader-dir shaders).
+  EXPECT_EQ(ShaderLibrary{test::sourceDir() / "shaders"}.source("mesh.frag"), ShaderLibrary{}.source("mesh.frag"));
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 // extends replaces a parent's path or segments as a whole.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <fstream>
 #include <numbers>
 #include <sstream>
@@ -146,4 +148,27 @@ TEST(StoryboardCli, ExtendsReplacesThePathOrTheSegmentsAsAWhole) {
   EXPECT_EQ(d.exitCode, 2);
   EXPECT_NE(d.err.find("bad_parent.toml:4:"), std::string::npos) << d.err;
   EXPECT_NE(d.err.find("segment[2].path.length"), std::string::npos) << d.err;
+}
+
+// --set reaches into a segment by its number: "change one number, get a new video".
+TEST(StoryboardCli, SetReachesIntoASegment) {
+  const auto r = runRollspin({"solve", storyboard(), "--json", "--set", "segment[2].path.radius=4"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const double length = 7.0 + 8.0 * std::numbers::pi;  // line 4, circle r = 4, line 3
+  EXPECT_NE(r.out.find(fmt::format("\"length\": {:.17g}", length)), std::string::npos) << r.out;
+  const auto printed = runRollspin({"scene", storyboard(), "--print", "--set", "segment[3].hold=1"});
+  EXPECT_NE(printed.out.find("hold = 1\n"), std::string::npos) << printed.out;
+  struct Bad {
+    const char* arg;
+    const char* message;
+  };
+  for (const Bad& b : {Bad{"segment[2].path.radius=-4", "segment[2].path.radius: expected a radius > 0"},
+                       Bad{"segment[7].caption=x", "the scene has 4 segment entries"},
+                       Bad{"segment[0].caption=x", "counted from 1"},
+                       Bad{"segment[2].path.wobble=1", "segment[2].path.wobble: unknown key"}}) {
+    const auto bad = runRollspin({"solve", storyboard(), "--set", b.arg});
+    EXPECT_EQ(bad.exitCode, 2) << b.arg;
+    EXPECT_NE(bad.err.find(std::string("--set ") + b.arg), std::string::npos) << bad.err;
+    EXPECT_NE(bad.err.find(b.message), std::string::npos) << bad.err;
+  }
 }

@@ -1,0 +1,117 @@
+// What the ball view shows, checked on the DrawList (no GL): Brockett's
+// glass plate stays in frame wherever it moves, the positions of a strobe
+// figure stand apart on screen, and a wall is lit from above so that the
+// ball's shadow falls below the ball instead of straight behind it.
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "app/draw_scene.hpp"
+#include "app/render_jobs.hpp"
+#include "app/scene_model.hpp"
+#include "support/cli_runner.hpp"
+
+namespace rollspin::app {
+namespace {
+
+struct Loaded {
+  scene::SceneSpec spec;
+  RollingModel model;
+};
+
+Loaded load(const std::string& relative, const std::vector<std::string>& overrides = {}) {
+  Loaded l{loadScene((test::sourceDir() / relative).string(), overrides), {}};
+  l.model = buildSceneModel(l.spec);
+  return l;
+}
+
+glm::vec3 ndc(const render::View& v, const glm::vec3& world) {
+  const glm::vec4 c = v.camera.clipFromView * v.camera.viewFromWorld * glm::vec4(world, 1.0f);
+  return glm::vec3(c) / c.w;
+}
+
+// The plate's glass disc is the ball view's only translucent mesh.
+void expectPlateInFrame(const std::string& scene) {
+  const Loaded l = load(scene);
+  const SceneDrawer drawer(l.spec, l.model, nullptr);
+  const double length = l.model.path->length();
+  int discs = 0;
+  for (int i = 0; i <= 12; ++i) {
+    const double s = length * i / 12.0;
+    const render::DrawList list = drawer.draw(solveFrame(l.spec, l.model, s));
+    const render::View& v = list.views.at(0);
+    for (const render::MeshItem& m : list.meshes) {
+      if (m.view != 0 || m.material.opacity >= 1.0f) continue;
+      ++discs;
+      for (int k = 0; k < 32; ++k) {
+        const float phi = 2.0f * 3.14159265f * float(k) / 32.0f;
+        for (float z : {0.0f, 1.0f}) {  // both faces of the unit cylinder
+          const glm::vec3 p = ndc(v, glm::vec3(m.worldFromModel * glm::vec4(std::cos(phi), std::sin(phi), z, 1.0f)));
+          EXPECT_LE(std::abs(p.x), 1.0f) << scene << " s = " << s;
+          EXPECT_LE(std::abs(p.y), 1.0f) << scene << " s = " << s;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(discs, 13) << scene;
+}
+
+TEST(BallView, BrockettPlateStaysInFrameAllAlongThePath) {
+  expectPlateInFrame("scenes/tennis-ball.toml");
+  expectPlateInFrame("tests/render/scenes/brockett_plate.toml");
+}
+
+TEST(BallView, StrobePositionsStandApartOnScreen) {
+  const Loaded l = load("scenes/lollipop.toml", {"render.strobe=8", "render.layout=ball"});
+  const SceneDrawer drawer(l.spec, l.model, nullptr);
+  const render::DrawList list = drawer.draw(solveFrame(l.spec, l.model, 0.0));
+  const render::View& v = list.views.at(0);
+  struct Disc {
+    glm::vec2 centre;
+    float radius;
+  };
+  std::vector<Disc> balls;
+  const glm::vec3 right = glm::transpose(glm::mat3(v.camera.viewFromWorld))[0];
+  for (const render::MeshItem& m : list.meshes) {
+    if (m.view != 0 || m.material.pattern != render::Pattern::Texture) continue;
+    const glm::vec3 c(m.worldFromModel[3]);
+    const float radius = glm::length(glm::vec3(m.worldFromModel[0]));
+    const glm::vec3 p = ndc(v, c), q = ndc(v, c + radius * right);
+    const glm::vec2 scale(0.5f * float(v.width), 0.5f * float(v.height));  // NDC → pixels
+    balls.push_back({glm::vec2(p) * scale, glm::length((glm::vec2(q) - glm::vec2(p)) * scale)});
+  }
+  ASSERT_EQ(balls.size(), 8u);
+  // Neighbours may touch, not cover each other: seen from 40° up, as before,
+  // the closest pair overlapped by a quarter of their radii.
+  for (std::size_t i = 0; i < balls.size(); ++i)
+    for (std::size_t j = i + 1; j < balls.size(); ++j)
+      EXPECT_GE(glm::length(balls[i].centre - balls[j].centre), 0.95f * (balls[i].radius + balls[j].radius))
+          << "balls " << i << " and " << j;
+}
+
+TEST(BallView, OnAWallTheShadowFallsBelowTheBall) {
+  const Loaded l = load("scenes/wall.toml");
+  const SceneDrawer drawer(l.spec, l.model, nullptr);
+  const double R = l.model.ballRadius;
+  const double s = 0.3 * l.model.path->length();
+  const render::DrawList list = drawer.draw(solveFrame(l.spec, l.model, s));
+  const render::Light& light = list.views.at(0).light;
+  const glm::vec3 n(0.0f, -1.0f, 0.0f);  // the wall's normal (scenes/wall.toml)
+  const glm::vec3 toward = glm::normalize(light.towardLight);
+  EXPECT_GT(glm::dot(toward, n), 0.2f) << "the wall must be lit from its front";
+  // Where the light ray through the ball's centre meets the wall: the
+  // middle of the shadow, which should lie well below the centre.
+  const geometry::DarbouxSample f = l.model.path->at(s);
+  const glm::vec3 centre(float(f.centre(R).x()), float(f.centre(R).y()), float(f.centre(R).z()));
+  const glm::vec3 onWall(float(f.point.x()), float(f.point.y()), float(f.point.z()));
+  const float t = glm::dot(centre - onWall, n) / glm::dot(toward, n);
+  const glm::vec3 shadowMiddle = centre - t * toward;
+  EXPECT_LT(shadowMiddle.z, centre.z - 0.8f * float(R));
+}
+
+}  // namespace
+}  // namespace rollspin::app

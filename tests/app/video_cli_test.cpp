@@ -15,7 +15,6 @@
 
 #include <chrono>
 #include <fstream>
-#include <sstream>
 #include <thread>
 
 #include "media/image_compare.hpp"
@@ -31,13 +30,6 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string lollipop() { return (test::sourceDir() / "scenes/lollipop.toml").string(); }
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 std::vector<std::string> small(std::vector<std::string> args) {
   for (const char* s : {"render.width=96", "render.height=64", "animation.fps=10"}) {
@@ -120,7 +112,7 @@ TEST(VideoCli, FramesRangeIsByteIdenticalToTheSameFramesOfAFullRender) {
   ASSERT_EQ(filesIn(dir / "part").size(), 10u);
   for (int k = 10; k <= 19; ++k) {
     const std::string name = "frame_000" + std::to_string(k) + ".png";
-    const std::string a = slurp(dir / "full" / name), b = slurp(dir / "part" / name);
+    const std::string a = test::readFile(dir / "full" / name), b = test::readFile(dir / "part" / name);
     EXPECT_FALSE(a.empty()) << name;
     EXPECT_TRUE(a == b) << name << " differs between the full and the partial render";
   }
@@ -144,13 +136,13 @@ TEST(VideoCli, ARerenderIntoAFrameFolderLeavesNoStaleFramesAndNoForeignFileIsTou
   std::sort(expected.begin(), expected.end());
   EXPECT_EQ(filesIn(dir / "f"), expected);
   // A part (--frames) replaces its own frames and keeps the others.
-  const std::string before = slurp(dir / "f" / "frame_00003.png");
+  const std::string before = test::readFile(dir / "f" / "frame_00003.png");
   render("2.4", {"--frames", "20:21"});
   expected.push_back("frame_00020.png");
   expected.push_back("frame_00021.png");
   std::sort(expected.begin(), expected.end());
   EXPECT_EQ(filesIn(dir / "f"), expected);
-  EXPECT_EQ(slurp(dir / "f" / "frame_00003.png"), before);
+  EXPECT_EQ(test::readFile(dir / "f" / "frame_00003.png"), before);
   EXPECT_EQ(filesIn(dir), std::vector<std::string>{"f"}) << "no staging folder left";
 }
 
@@ -208,12 +200,12 @@ TEST(VideoCli, SigintLeavesAShorterPlayableVideoNamedSoAndNothingAtTheFinalName)
     for (const auto& e : fs::directory_iterator(dir))
       if (e.path().filename().string().starts_with(".clip.mp4.") && e.file_size() > 4096) encoding = true;
   }
-  ASSERT_TRUE(encoding) << "no encoded data appeared: " << slurp(dir / "stderr");
+  ASSERT_TRUE(encoding) << "no encoded data appeared: " << test::readFile(dir / "stderr");
   ASSERT_EQ(kill(pid, SIGINT), 0);
   int status = 0;
   ASSERT_EQ(waitpid(pid, &status, 0), pid);
   child.reaped = true;
-  const std::string err = slurp(dir / "stderr");
+  const std::string err = test::readFile(dir / "stderr");
   ASSERT_TRUE(WIFEXITED(status)) << "killed by the signal instead of stopping cleanly: " << err;
   EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT) << err;
   EXPECT_NE(err.find("interrupted"), std::string::npos) << err;
@@ -246,7 +238,7 @@ TEST(VideoCli, SigtermDuringSetUpLeavesAPartialVideoOrNothing) {
   int status = 0;
   ASSERT_EQ(waitpid(pid, &status, 0), pid);
   ASSERT_TRUE(opened);
-  const std::string err = slurp(dir / "stderr");
+  const std::string err = test::readFile(dir / "stderr");
   ASSERT_TRUE(WIFEXITED(status)) << err;
   EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM) << err;
   EXPECT_FALSE(fs::exists(out));

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <sstream>
 
 #include "media/png_sequence.hpp"
 #include "support/cli_runner.hpp"
@@ -21,13 +20,6 @@ std::vector<std::string> filesIn(const fs::path& dir) {
   for (const auto& e : fs::directory_iterator(dir)) out.push_back(e.path().filename().string());
   std::sort(out.begin(), out.end());
   return out;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 // An earlier render of 8 frames plus files that are not ours.
@@ -67,12 +59,12 @@ TEST(PngSequence, AWholeClipReplacesTheFramesAndRemovesOnlyOurStaleOnes) {
   {
     PngSequenceWriter w(dir / "frames", 0, PngChannels::Rgb, PngSequenceScope::WholeClip);
     writeFrames(w, 5);
-    EXPECT_EQ(slurp(dir / "frames/frame_00000.png"), "old") << "nothing moves before the render completes";
+    EXPECT_EQ(test::readFile(dir / "frames/frame_00000.png"), "old") << "nothing moves before the render completes";
     EXPECT_EQ(w.finish(), dir / "frames");
   }
   EXPECT_EQ(filesIn(dir / "frames"), withForeign({"frame_00000.png", "frame_00001.png", "frame_00002.png",
                                                   "frame_00003.png", "frame_00004.png"}));
-  EXPECT_NE(slurp(dir / "frames/frame_00004.png"), "old");
+  EXPECT_NE(test::readFile(dir / "frames/frame_00004.png"), "old");
   EXPECT_EQ(filesIn(dir), std::vector<std::string>{"frames"}) << "no staging folder left";
 }
 
@@ -87,7 +79,7 @@ TEST(PngSequence, APartReplacesItsFramesOnlyAndKeepsTheOthers) {
   for (int k = 0; k < 8; ++k) all.push_back(PngSequenceWriter::framePath("", k).string());
   EXPECT_EQ(filesIn(dir / "frames"), withForeign(all));
   for (int k = 0; k < 8; ++k)
-    EXPECT_EQ(slurp(PngSequenceWriter::framePath(dir / "frames", k)) == "old", k < 3 || k > 4) << k;
+    EXPECT_EQ(test::readFile(PngSequenceWriter::framePath(dir / "frames", k)) == "old", k < 3 || k > 4) << k;
   EXPECT_EQ(filesIn(dir), std::vector<std::string>{"frames"});
 }
 
@@ -104,7 +96,7 @@ TEST(PngSequence, AnInterruptedRenderGoesToPartialAndLeavesTheFolderAlone) {
   std::vector<std::string> old;
   for (int k = 0; k < 8; ++k) old.push_back(PngSequenceWriter::framePath("", k).string());
   EXPECT_EQ(filesIn(dir / "frames"), withForeign(old));
-  for (int k = 0; k < 8; ++k) EXPECT_EQ(slurp(PngSequenceWriter::framePath(dir / "frames", k)), "old");
+  for (int k = 0; k < 8; ++k) EXPECT_EQ(test::readFile(PngSequenceWriter::framePath(dir / "frames", k)), "old");
   EXPECT_EQ(filesIn(dir / "frames.partial"), (std::vector<std::string>{"frame_00000.png", "frame_00001.png", "readme"}));
   EXPECT_EQ(filesIn(dir), (std::vector<std::string>{"frames", "frames.partial"}));
 }
@@ -124,7 +116,7 @@ TEST(PngSequence, NoFramesOrAnErrorLeaveNothingNew) {
     writeFrames(w, 1);
   }
   EXPECT_EQ(filesIn(dir), std::vector<std::string>{"frames"});
-  for (int k = 0; k < 8; ++k) EXPECT_EQ(slurp(PngSequenceWriter::framePath(dir / "frames", k)), "old");
+  for (int k = 0; k < 8; ++k) EXPECT_EQ(test::readFile(PngSequenceWriter::framePath(dir / "frames", k)), "old");
 }
 
 }  // namespace

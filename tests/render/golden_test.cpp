@@ -102,12 +102,8 @@ TEST(Golden, TransparentStill) { checkGolden("transparent", {"--at", "fraction=0
 
 // The same scene rendered twice in one run gives byte-identical PNGs.
 TEST(Determinism, SameSceneTwiceIsByteIdentical) {
-  auto slurp = [](const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  };
-  const std::string first = slurp(renderScene("lollipop_side_by_side", {"--at", "s=4"}));
-  const std::string second = slurp(renderScene("lollipop_side_by_side", {"--at", "s=4"}));
+  const std::string first = test::readFile(renderScene("lollipop_side_by_side", {"--at", "s=4"}));
+  const std::string second = test::readFile(renderScene("lollipop_side_by_side", {"--at", "s=4"}));
   ASSERT_FALSE(first.empty());
   EXPECT_TRUE(first == second) << "two renders of the same scene differ";
 }

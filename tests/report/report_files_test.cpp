@@ -6,20 +6,14 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "geometry/analytic_paths.hpp"
 #include "report/report.hpp"
+#include "support/cli_runner.hpp"
 
 using namespace rollspin;
 
 namespace {
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 std::filesystem::path freshDir(const std::string& name) {
   const std::filesystem::path dir = std::filesystem::path(ROLLSPIN_TEST_TMP) / name;
   std::filesystem::remove_all(dir);
@@ -36,8 +30,8 @@ TEST(ReportFiles, ErrorsReportOnOneSceneWritesCsvMarkdownAndPlot) {
   report::ReportOptions options;
   options.outDir = freshDir("report_errors");
   const report::ReportOutcome out = report::errorsReport({scene}, options);
-  const std::string csv = slurp(options.outDir / "errors.csv");
-  const std::string md = slurp(options.outDir / "errors.md");
+  const std::string csv = test::readFile(options.outDir / "errors.csv");
+  const std::string md = test::readFile(options.outDir / "errors.md");
   for (const char* method : {"exact", "magnus2", "magnus4", "rk4", "frame4", "cf4", "magnus6", "rk45", "frame6a"})
     EXPECT_NE(csv.find(std::string("lollipop,") + method + ","), std::string::npos) << method;
   EXPECT_EQ(csv.find("nan"), std::string::npos);
@@ -55,7 +49,7 @@ TEST(ReportFiles, PaperReportVerdicts) {
   report::ReportOptions options;
   options.outDir = freshDir("report_paper");
   (void)report::paperReport(options);
-  const std::string csv = slurp(options.outDir / "paper.csv");
+  const std::string csv = test::readFile(options.outDir / "paper.csv");
   auto verdict = [&](const std::string& claim) {
     const auto at = csv.find("\n" + claim + ",");
     if (at == std::string::npos) return std::string("missing");

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "app/draw_scene.hpp"
+#include "draw/scene_drawer.hpp"
 #include "app/render_jobs.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
@@ -26,9 +26,9 @@ void BM_RenderFrame1080p(benchmark::State& state) {
   // ROLLSPIN_BENCH_SET=key=value: one extra scene override, for experiments.
   if (const char* extra = std::getenv("ROLLSPIN_BENCH_SET")) overrides.emplace_back(extra);
   const scene::SceneSpec spec = scene::loadSceneFile(ROLLSPIN_SOURCE_DIR "/scenes/lollipop.toml", overrides);
-  const app::RollingModel model = app::buildModel(spec);
-  const app::FrameOrientations frame = app::solveFrame(spec, model, 0.3 * model.path->length());
-  const app::SceneDrawer drawer(spec, model, nullptr);
+  const model::RollingModel model = model::buildModel(spec);
+  const motion::FrameOrientations frame = motion::solveFrame(spec, model, 0.3 * model.path->length());
+  const draw::SceneDrawer drawer(spec, model, nullptr);
   const auto context = render::createOsMesaContext();
   // ROLLSPIN_SHADER_DIR: time edited shaders without rebuilding (development).
   const char* shaderDir = std::getenv("ROLLSPIN_SHADER_DIR");
@@ -62,9 +62,9 @@ void BM_DrawList1080p(benchmark::State& state) {
   using namespace rollspin;
   const std::vector<std::string> overrides{"render.width=1920", "render.height=1080"};
   const scene::SceneSpec spec = scene::loadSceneFile(ROLLSPIN_SOURCE_DIR "/scenes/lollipop.toml", overrides);
-  const app::RollingModel model = app::buildModel(spec);
-  const app::FrameOrientations frame = app::solveFrame(spec, model, 0.3 * model.path->length());
-  const app::SceneDrawer drawer(spec, model, nullptr);
+  const model::RollingModel model = model::buildModel(spec);
+  const motion::FrameOrientations frame = motion::solveFrame(spec, model, 0.3 * model.path->length());
+  const draw::SceneDrawer drawer(spec, model, nullptr);
   for (auto _ : state) {
     render::DrawList list = drawer.draw(frame);
     benchmark::DoNotOptimize(list.meshes.data());

@@ -12,9 +12,9 @@
 #include <stdexcept>
 #include <thread>
 
-#include "app/bounded_queue.hpp"
-#include "app/frame_clock.hpp"
-#include "app/frame_poses.hpp"
+#include "core/bounded_queue.hpp"
+#include "motion/frame_clock.hpp"
+#include "motion/frame_poses.hpp"
 #include "app/interrupt_guard.hpp"
 #include "app/progress_meter.hpp"
 #include "app/render_jobs.hpp"
@@ -26,6 +26,10 @@
 #include "scene/scene_loader.hpp"
 
 namespace rollspin::app {
+
+using namespace rollspin::model;
+using namespace rollspin::motion;
+using namespace rollspin::draw;
 
 namespace fs = std::filesystem;
 

@@ -12,6 +12,10 @@
 
 namespace rollspin::app {
 
+using namespace rollspin::model;
+using namespace rollspin::motion;
+using namespace rollspin::draw;
+
 namespace {
 
 struct RenderCliOptions {

@@ -8,13 +8,17 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/frame_poses.hpp"
+#include "motion/frame_poses.hpp"
 #include "media/image_io.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace rollspin::app {
+
+using namespace rollspin::model;
+using namespace rollspin::motion;
+using namespace rollspin::draw;
 
 ArcPosition parseArcPosition(const std::string& text) {
   const SourceLoc loc{"--at " + text};
@@ -42,39 +46,6 @@ double resolveArcPosition(const ArcPosition& at, double length, const std::strin
   if (at.value < 0.0 || at.value > length * (1.0 + 1e-12))
     throw badInput(loc, "s: expected an arc length in [0, {}] (the path's length), got {}", length, at.value);
   return std::min(at.value, length);
-}
-
-FrameOrientations solveFrame(const scene::SceneSpec& spec, const RollingModel& model, double s) {
-  StageLog::instance().record("solver");
-  const FrameSampling sampling = frameSampling(spec, model, s);
-  std::vector<double> all = sampling.trail;
-  all.insert(all.end(), sampling.strobe.begin(), sampling.strobe.end());
-  all.push_back(s);
-  std::sort(all.begin(), all.end());
-  all.erase(std::unique(all.begin(), all.end()), all.end());
-  std::vector<spin::Su2> orientation(all.size());
-  marchScene(spec, model, all, [&](std::size_t i, double, const spin::Su2& q) { orientation[i] = q; });
-  auto lookup = [&](double x) {
-    const auto it = std::lower_bound(all.begin(), all.end(), x);
-    return OrientedSample{x, orientation[static_cast<std::size_t>(it - all.begin())]};
-  };
-  FrameOrientations frame;
-  frame.current = lookup(s);
-  for (double x : sampling.trail) frame.trail.push_back(lookup(x));
-  for (double x : sampling.strobe) frame.strobe.push_back(lookup(x));
-  return frame;
-}
-
-FrameClock clipClock(const scene::SceneSpec& spec, const RollingModel& model) {
-  if (!spec.isStoryboard()) return FrameClock(model.path->length(), spec);
-  return FrameClock(model.segments, spec);
-}
-
-StoryPlace storyPlaceAt(const RollingModel& model, double s) {
-  StoryPlace place;
-  for (std::size_t k = 0; k < model.segments.size(); ++k)
-    if (model.segments[k].end > model.segments[k].start && model.segments[k].start <= s) place.segment = k;
-  return place;
 }
 
 std::shared_ptr<const render::TextureImage> loadBallTexture(const scene::SceneSpec& spec) {

@@ -10,13 +10,15 @@
 #include <string>
 #include <vector>
 
-#include "app/draw_scene.hpp"
-#include "app/scene_model.hpp"
+#include "draw/scene_drawer.hpp"
+#include "model/rolling_model.hpp"
 #include "media/image_view.hpp"
 #include "render/draw_list.hpp"
 #include "scene/scene_spec.hpp"
 
 namespace rollspin::app {
+
+using model::RollingModel;
 
 // Where along the path: `--at s=VALUE` or `--at fraction=F`.
 struct ArcPosition {
@@ -27,15 +29,6 @@ struct ArcPosition {
 [[nodiscard]] ArcPosition parseArcPosition(const std::string& text);
 // The arc length in [0, L]; throws BadInput when outside.
 [[nodiscard]] double resolveArcPosition(const ArcPosition& at, double length, const std::string& argument);
-
-// Runs the propagator once for the frame's arc lengths (trail, strobe, s).
-[[nodiscard]] FrameOrientations solveFrame(const scene::SceneSpec& spec, const RollingModel& model, double s);
-
-// The animation's clock: the scene's path, or its storyboard's segments.
-[[nodiscard]] FrameClock clipClock(const scene::SceneSpec& spec, const RollingModel& model);
-// Which storyboard segment a still at s shows: the motion that starts last
-// at or before s (a join shows the segment starting there).
-[[nodiscard]] StoryPlace storyPlaceAt(const RollingModel& model, double s);
 
 // The ball texture named by ball.texture (resolved against the scene file's
 // folder, or the working directory for --set), or null for the built-in one.

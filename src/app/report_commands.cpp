@@ -11,12 +11,14 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "app/scene_model.hpp"
+#include "model/rolling_model.hpp"
 #include "core/error.hpp"
 #include "report/report.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace rollspin::app {
+
+using namespace rollspin::model;
 
 namespace {
 

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "app/frame_clock.hpp"
-#include "app/scene_model.hpp"
-#include "app/solve_job.hpp"
+#include "motion/frame_clock.hpp"
+#include "model/rolling_model.hpp"
+#include "motion/solve_job.hpp"
 #include "app/timeline_csv.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/scene_writer.hpp"
@@ -19,6 +19,9 @@
 #include "spin/su2.hpp"
 
 namespace rollspin::app {
+
+using namespace rollspin::model;
+using namespace rollspin::motion;
 
 namespace {
 

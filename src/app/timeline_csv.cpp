@@ -11,6 +11,9 @@
 
 namespace rollspin::app {
 
+using namespace rollspin::model;
+using namespace rollspin::motion;
+
 spin::SolveStats writeTimelineCsv(const std::filesystem::path& out, const RollingModel& model,
                                   const SolverChoice& choice, const spin::SampleArcLengths& sampleS) {
   AtomicFile file(out);

@@ -12,11 +12,14 @@
 #include <filesystem>
 #include <span>
 
-#include "app/scene_model.hpp"
-#include "app/solve_job.hpp"
+#include "model/rolling_model.hpp"
+#include "motion/solve_job.hpp"
 #include "spin/propagator.hpp"
 
 namespace rollspin::app {
+
+using model::RollingModel;
+using motion::SolverChoice;
 
 [[nodiscard]] spin::SolveStats writeTimelineCsv(const std::filesystem::path& out, const RollingModel& model,
                                                 const SolverChoice& choice, const spin::SampleArcLengths& sampleS);

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "app/scene_model.hpp"
-#include "app/solve_job.hpp"
+#include "model/rolling_model.hpp"
+#include "motion/solve_job.hpp"
 #include "core/error.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -25,9 +25,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::vector<std::string> overrides(parts.begin() + 1, parts.end());
   try {
     const rollspin::scene::SceneSpec spec = rollspin::scene::loadSceneText(parts[0], "<fuzz>", overrides);
-    const rollspin::app::RollingModel model = rollspin::app::buildModel(spec);
-    (void)rollspin::app::chooseSolver(spec, model);
-    (void)rollspin::app::timelineArcLengths(spec, model).size();
+    const rollspin::model::RollingModel model = rollspin::model::buildModel(spec);
+    (void)rollspin::motion::chooseSolver(spec, model);
+    (void)rollspin::motion::timelineArcLengths(spec, model).size();
   } catch (const rollspin::Error&) {
     // bad input, reported properly
   }

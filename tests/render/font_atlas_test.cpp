@@ -42,7 +42,7 @@ TEST(FontAtlas, EveryTitleAndCaptionInScenesHasItsGlyphs) {
   int texts = 0;
   for (const auto& entry : fs::directory_iterator(test::sourceDir() / "scenes")) {
     if (entry.path().extension() != ".toml") continue;
-    const scene::SceneSpec spec = app::loadScene(entry.path().string(), {});
+    const scene::SceneSpec spec = model::loadScene(entry.path().string(), {});
     std::vector<std::string> lines{spec.render.title};
     for (const auto& segment : spec.segments) {
       lines.push_back(segment.caption);

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "app/draw_facts.hpp"
+#include "draw/draw_facts.hpp"
 #include "app/render_jobs.hpp"
 #include "media/image_io.hpp"
 #include "render/font_atlas.hpp"
@@ -45,7 +45,7 @@ TEST(Gallery, EverySceneRendersAStill) {
     std::sort(values.begin(), values.end());
     EXPECT_GT(std::unique(values.begin(), values.end()) - values.begin(), 200) << name;
     // The facts stage runs exactly when the scene has facts to show.
-    const bool hasFacts = !scene::resolveFacts(app::loadScene(file.string(), {})).empty();
+    const bool hasFacts = !scene::resolveFacts(model::loadScene(file.string(), {})).empty();
     EXPECT_EQ(r.err.find("rollspin: stage: facts") != std::string::npos, hasFacts) << name;
   }
 }
@@ -73,14 +73,14 @@ TEST(Gallery, FactLabelsUseOnlyGlyphsTheAtlasHas) {
   const render::FontAtlas atlas(render::defaultFontFile(false), 16.0f);
   int scenesWithFacts = 0;
   for (const fs::path& file : galleryScenes()) {
-    const scene::SceneSpec spec = app::loadScene(file.string(), {});
-    const app::RollingModel model = app::buildSceneModel(spec);
-    const auto facts = app::makeSceneFacts(spec, model);
+    const scene::SceneSpec spec = model::loadScene(file.string(), {});
+    const model::RollingModel model = model::buildSceneModel(spec);
+    const auto facts = motion::makeSceneFacts(spec, model);
     if (!facts) continue;
     ++scenesWithFacts;
     const double L = model.path->length();
     for (double s : {0.0, 0.3 * L, L}) {
-      for (const std::string& line : app::factLines(*facts, app::solveFrame(spec, model, s), L)) {
+      for (const std::string& line : draw::factLines(*facts, motion::solveFrame(spec, model, s), L)) {
         for (char32_t c : render::decodeUtf8(line))
           EXPECT_TRUE(atlas.hasGlyph(c)) << file.stem() << ": U+" << std::hex << std::uint32_t(c) << " in: " << line;
       }

@@ -7,8 +7,8 @@
 
 #include <unistd.h>
 
-#include "app/scene_model.hpp"
-#include "app/solve_job.hpp"
+#include "model/rolling_model.hpp"
+#include "motion/solve_job.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/scene_writer.hpp"
 #include "spin/field.hpp"
@@ -50,7 +50,7 @@ TEST(SceneLoader, OverridesReplaceAndCreateKeys) {
 
 TEST(SceneLoader, PlaneNormalIsNormalisedAndLineDefaultsToAHorizontalDirection) {
   const scene::SceneSpec spec = scene::loadSceneText("[surface]\nnormal = [0, -2, 0]\n[path]\nkind = \"line\"\n", "w");
-  const app::RollingModel model = app::buildModel(spec);
+  const model::RollingModel model = model::buildModel(spec);
   const geometry::DarbouxSample f = model.path->at(0.0);
   EXPECT_NEAR(f.normal.y(), -1.0, 1e-15);
   EXPECT_NEAR(f.tangent.z(), 0.0, 1e-15);  // horizontal
@@ -59,7 +59,7 @@ TEST(SceneLoader, PlaneNormalIsNormalisedAndLineDefaultsToAHorizontalDirection) 
 
 TEST(BrockettPlate, ContactCircleIsHalfThePlateCircleAndTheTopMovesWithThePlate) {
   const scene::SceneSpec spec = scene::loadSceneText("[ball]\nradius = 1\n[plate]\nradius = 4\n", "brockett");
-  const app::RollingModel model = app::buildModel(spec);
+  const model::RollingModel model = model::buildModel(spec);
   ASSERT_TRUE(model.plate.has_value());
   EXPECT_NEAR(model.plate->contactSpeedRatio, 2.0, 1e-15);
   EXPECT_NEAR(model.path->length(), 2 * std::numbers::pi * 2.0, 1e-12);  // r = R1/2 = 2
@@ -86,18 +86,18 @@ TEST(BrockettPlate, ContactCircleIsHalfThePlateCircleAndTheTopMovesWithThePlate)
 
 TEST(SolveJob, AutomaticStepsReachRoundOffOnTheLollipop) {
   const scene::SceneSpec spec = scene::loadSceneText("", "lollipop");
-  const app::RollingModel model = app::buildModel(spec);
-  const app::SolverChoice choice = app::chooseSolver(spec, model);
+  const model::RollingModel model = model::buildModel(spec);
+  const motion::SolverChoice choice = motion::chooseSolver(spec, model);
   EXPECT_TRUE(choice.automaticSteps);
   const spin::Su2 exact = spin::Propagator(*model.path, 1.0, spin::Method::Exact, 0).solveFinal().final;
-  const spin::Su2 got = app::solveScene(spec, model, choice).final;
+  const spin::Su2 got = motion::solveScene(spec, model, choice).final;
   EXPECT_LT(spin::spinorDistance(got, exact), 1e-12);
 }
 
 TEST(SolveJob, DefaultSamplesAreSixtyPerTurn) {
   const scene::SceneSpec spec = scene::loadSceneText("[path]\nturns = 2\n[ball]\nradius = 100\n", "slow");
-  const app::RollingModel model = app::buildModel(spec);
-  EXPECT_EQ(app::defaultSampleCount(model), 121);  // the path turns more than the ball
+  const model::RollingModel model = model::buildModel(spec);
+  EXPECT_EQ(motion::defaultSampleCount(model), 121);  // the path turns more than the ball
 }
 
 // ---- extends -------------------------------------------------------------

@@ -3,8 +3,8 @@
 // the wrong kind of method are bad input naming the key.
 #include <gtest/gtest.h>
 
-#include "app/scene_model.hpp"
-#include "app/solve_job.hpp"
+#include "model/rolling_model.hpp"
+#include "motion/solve_job.hpp"
 #include "core/error.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/test_paths.hpp"
@@ -29,19 +29,19 @@ std::string badInputMessage(const std::vector<std::string>& sets) {
 TEST(SolverTolerance, AToleranceAloneSelectsFrame6a) {
   const scene::SceneSpec spec = load({"solver.tolerance=1e-9"});
   EXPECT_EQ(spec.solver.method, "frame6a");
-  const app::RollingModel model = app::buildModel(spec);
-  const app::SolverChoice choice = app::chooseSolver(spec, model);
+  const model::RollingModel model = model::buildModel(spec);
+  const motion::SolverChoice choice = motion::chooseSolver(spec, model);
   EXPECT_EQ(choice.method, spin::Method::Frame6a);
   EXPECT_DOUBLE_EQ(choice.tolerance, 1e-9);
-  const spin::SolveStats st = app::solveScene(spec, model, choice);
+  const spin::SolveStats st = motion::solveScene(spec, model, choice);
   EXPECT_GT(st.steps, 0);
 }
 
 TEST(SolverTolerance, EveryMethodNameLoads) {
   for (const char* m : {"cf4", "magnus6", "rk45", "frame6a", "frame4"}) {
     const scene::SceneSpec spec = load({std::string("solver.method=") + m});
-    const app::RollingModel model = app::buildModel(spec);
-    const app::SolverChoice choice = app::chooseSolver(spec, model);
+    const model::RollingModel model = model::buildModel(spec);
+    const motion::SolverChoice choice = motion::chooseSolver(spec, model);
     EXPECT_EQ(spin::methodName(choice.method), m);
     if (spin::isAdaptive(choice.method)) {
       EXPECT_DOUBLE_EQ(choice.tolerance, scene::SolverSpec::kDefaultTolerance);

@@ -1,11 +1,14 @@
-#include "app/draw_facts.hpp"
+#include "draw/draw_facts.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <numbers>
 
-namespace rollspin::app {
+namespace rollspin::draw {
+
+// The drawing reads the solving side's poses and facts.
+using namespace rollspin::motion;
 
 namespace {
 
@@ -104,4 +107,4 @@ std::shared_ptr<render::MeshData> coneMesh(const std::vector<geometry::Vec3>& lo
   return mesh;
 }
 
-}  // namespace rollspin::app
+}  // namespace rollspin::draw

@@ -1,4 +1,4 @@
-#include "app/draw_scene.hpp"
+#include "draw/scene_drawer.hpp"
 
 #include "core/stage_log.hpp"
 
@@ -10,12 +10,15 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "app/draw_facts.hpp"
+#include "draw/draw_facts.hpp"
 #include "render/mesh_builders.hpp"
 #include "render/procedural_textures.hpp"
 #include "spin/field.hpp"
 
-namespace rollspin::app {
+namespace rollspin::draw {
+
+// The drawing reads the solving side's poses and facts.
+using namespace rollspin::motion;
 
 namespace {
 
@@ -65,45 +68,6 @@ Vec3 towardEye(const OrbitAngles& a) {
 }
 
 }  // namespace
-
-TrailGrid trailGrid(const scene::SceneSpec& spec, const RollingModel& model) {
-  TrailGrid grid;
-  grid.length = model.path->length();
-  if (!spec.render.trails) return grid;
-  // Fine enough that the Bloch trail is a smooth curve: ≥ 240 points over the
-  // whole path, 120 per turn of the path or of the ball.
-  const double ballTurns = spin::integratedFieldStrength(*model.path, model.ballRadius) / (2.0 * std::numbers::pi);
-  const double points = std::max(240.0, 120.0 * std::max(ballTurns, model.path->turns()));
-  grid.count = static_cast<std::size_t>(std::clamp(std::ceil(points), 1.0, 20000.0)) + 1;
-  return grid;
-}
-
-std::vector<double> strobeArcLengths(const scene::SceneSpec& spec, const RollingModel& model) {
-  std::vector<double> out;
-  const long long n = spec.render.strobe;
-  if (n <= 1) return out;
-  StageLog::instance().record("strobe");
-  const double length = model.path->length();
-  // A closed circuit would repeat its start at s = L: spread N over [0, L).
-  const double denominator = isCircuit(model) && std::abs(model.path->turns() - std::round(model.path->turns())) < 1e-9
-                                 ? double(n)
-                                 : double(n - 1);
-  for (long long j = 0; j < n; ++j) out.push_back(std::min(length, length * double(j) / denominator));
-  return out;
-}
-
-FrameSampling frameSampling(const scene::SceneSpec& spec, const RollingModel& model, double s) {
-  FrameSampling out;
-  const TrailGrid grid = trailGrid(spec, model);
-  if (grid.count > 0) {
-    StageLog::instance().record("trails");
-    out.trail.push_back(grid.at(0));
-    for (std::size_t i = 1; i < grid.count && grid.at(i) < s; ++i) out.trail.push_back(grid.at(i));
-    out.trail.push_back(s);
-  }
-  out.strobe = strobeArcLengths(spec, model);
-  return out;
-}
 
 SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model,
                          std::shared_ptr<const render::TextureImage> ballTexture,
@@ -951,4 +915,4 @@ void SceneDrawer::addTwinView(render::DrawList& list, const FrameOrientations& f
   }
 }
 
-}  // namespace rollspin::app
+}  // namespace rollspin::draw

@@ -4,11 +4,14 @@
 
 #include <vector>
 
-#include "app/scene_model.hpp"
+#include "model/rolling_model.hpp"
 #include "scene/scene_spec.hpp"
 #include "spin/propagator.hpp"
 
-namespace rollspin::app {
+namespace rollspin::motion {
+
+using model::RollingModel;
+using model::SegmentSpan;
 
 struct SolverChoice {
   spin::Method method = spin::Method::Magnus4;
@@ -37,4 +40,4 @@ struct SolverChoice {
 [[nodiscard]] spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model,
                                           const SolverChoice& choice);
 
-}  // namespace rollspin::app
+}  // namespace rollspin::motion

@@ -6,10 +6,10 @@
 // a ball that does not fit) become BadInput at the scene key responsible.
 #pragma once
 
-#include "app/scene_model.hpp"
+#include "model/rolling_model.hpp"
 #include "scene/scene_spec.hpp"
 
-namespace rollspin::app {
+namespace rollspin::model {
 
 // True when the foundation's analytic paths handle this scene.
 [[nodiscard]] bool isAnalyticScene(const scene::SceneSpec& spec);
@@ -17,4 +17,4 @@ namespace rollspin::app {
 // Surface, path and validity check for the other scenes.
 [[nodiscard]] RollingModel buildSurfaceModel(const scene::SceneSpec& spec);
 
-}  // namespace rollspin::app
+}  // namespace rollspin::model

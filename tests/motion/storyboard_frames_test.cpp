@@ -8,14 +8,16 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app/draw_scene.hpp"
-#include "app/frame_clock.hpp"
-#include "app/scene_model.hpp"
+#include "draw/scene_drawer.hpp"
+#include "motion/frame_clock.hpp"
+#include "model/rolling_model.hpp"
 #include "core/error.hpp"
 #include "scene/scene_loader.hpp"
 
-namespace rollspin::app {
+namespace rollspin::motion {
 namespace {
+using namespace rollspin::model;
+using namespace rollspin::draw;
 
 constexpr const char* kStory = R"(
 [render]
@@ -157,4 +159,4 @@ TEST(StoryboardFrames, EachSegmentShowsItsCaptionTitleAndCamera) {
 }
 
 }  // namespace
-}  // namespace rollspin::app
+}  // namespace rollspin::motion

@@ -5,9 +5,9 @@
 #include <atomic>
 #include <thread>
 
-#include "app/bounded_queue.hpp"
+#include "core/bounded_queue.hpp"
 
-namespace rollspin::app {
+namespace rollspin::motion {
 namespace {
 
 TEST(BoundedQueue, KeepsOrderAndNeverHoldsMoreThanItsCapacity) {
@@ -87,4 +87,4 @@ TEST(BoundedQueue, CountsTheTimeEachSideWasBlocked) {
 }
 
 }  // namespace
-}  // namespace rollspin::app
+}  // namespace rollspin::motion

@@ -8,12 +8,13 @@
 
 #include <cmath>
 
-#include "app/frame_poses.hpp"
+#include "motion/frame_poses.hpp"
 #include "app/render_jobs.hpp"
 #include "support/cli_runner.hpp"
 
-namespace rollspin::app {
+namespace rollspin::motion {
 namespace {
+using namespace rollspin::model;
 
 double distance(const spin::Su2& a, const spin::Su2& b) {
   return std::max({std::abs(a.w - b.w), std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z)});
@@ -97,4 +98,4 @@ TEST(FramePoseStream, OneMarchGivesThePerFrameSolvesPoses) {
 }
 
 }  // namespace
-}  // namespace rollspin::app
+}  // namespace rollspin::motion

@@ -2,11 +2,12 @@
 // the --frames range parser.
 #include <gtest/gtest.h>
 
-#include "app/frame_clock.hpp"
+#include "motion/frame_clock.hpp"
 #include "core/error.hpp"
 
-namespace rollspin::app {
+namespace rollspin::motion {
 namespace {
+using namespace rollspin::model;
 
 scene::SceneSpec animation(double duration, long long fps, double hold, scene::Easing easing) {
   scene::SceneSpec spec;
@@ -80,4 +81,4 @@ TEST(FrameRange, ParsesInclusiveRangesInsideTheClip) {
 }
 
 }  // namespace
-}  // namespace rollspin::app
+}  // namespace rollspin::motion

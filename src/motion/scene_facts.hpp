@@ -18,11 +18,14 @@
 #include <optional>
 #include <vector>
 
-#include "app/scene_model.hpp"
+#include "model/rolling_model.hpp"
 #include "scene/scene_spec.hpp"
 #include "spin/su2.hpp"
 
-namespace rollspin::app {
+namespace rollspin::motion {
+
+using model::RollingModel;
+using model::SegmentSpan;
 
 struct DeltaFact {
   double measured = 0.0;      // rad, unwrapped rotation relative to the rolling frame after the path
@@ -114,4 +117,4 @@ class SceneFacts {
 // unwrap increments.
 [[nodiscard]] geometry::Vec3 incrementRotation(const spin::Su2& q);
 
-}  // namespace rollspin::app
+}  // namespace rollspin::motion

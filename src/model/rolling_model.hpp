@@ -11,7 +11,7 @@
 #include "geometry/surface.hpp"
 #include "scene/scene_spec.hpp"
 
-namespace rollspin::app {
+namespace rollspin::model {
 
 struct PlateModel {
   double radius = 0.0;                    // R1, the circle each plate point describes
@@ -48,4 +48,4 @@ inline constexpr double kJoinTolerance = 1e-6;
 [[nodiscard]] scene::SceneSpec loadScene(const std::string& file, const std::vector<std::string>& overrides);
 [[nodiscard]] RollingModel buildSceneModel(const scene::SceneSpec& spec);
 
-}  // namespace rollspin::app
+}  // namespace rollspin::model

@@ -28,10 +28,13 @@
 #include <string>
 #include <vector>
 
-#include "app/scene_model.hpp"
+#include "model/rolling_model.hpp"
 #include "scene/scene_spec.hpp"
 
-namespace rollspin::app {
+namespace rollspin::motion {
+
+using model::RollingModel;
+using model::SegmentSpan;
 
 [[nodiscard]] double ease(scene::Easing easing, double x);
 
@@ -97,4 +100,4 @@ struct FrameRange {
 };
 [[nodiscard]] FrameRange parseFrameRange(const std::string& text, long long frameCount);
 
-}  // namespace rollspin::app
+}  // namespace rollspin::motion

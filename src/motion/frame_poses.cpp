@@ -1,12 +1,12 @@
-#include "app/frame_poses.hpp"
+#include "motion/frame_poses.hpp"
 
 #include <pthread.h>
 
-#include "app/solve_job.hpp"
+#include "motion/solve_job.hpp"
 #include "core/error.hpp"
 #include "core/stage_log.hpp"
 
-namespace rollspin::app {
+namespace rollspin::motion {
 
 namespace {
 
@@ -141,4 +141,4 @@ std::optional<FrameOrientations> FramePoseStream::next() {
   return frame;
 }
 
-}  // namespace rollspin::app
+}  // namespace rollspin::motion

@@ -19,14 +19,14 @@
 #include <thread>
 #include <vector>
 
-#include "app/bounded_queue.hpp"
-#include "app/draw_scene.hpp"
-#include "app/frame_clock.hpp"
-#include "app/scene_model.hpp"
+#include "core/bounded_queue.hpp"
+#include "motion/frame_sampling.hpp"
+#include "motion/frame_clock.hpp"
+#include "model/rolling_model.hpp"
 #include "scene/scene_spec.hpp"
 #include "spin/propagator.hpp"
 
-namespace rollspin::app {
+namespace rollspin::motion {
 
 // Runs the scene's solver (method, steps, tolerance) once over `samples`;
 // throws Runtime (at solver.method) when it fails.
@@ -61,4 +61,4 @@ class FramePoseStream {
   std::thread thread_;
 };
 
-}  // namespace rollspin::app
+}  // namespace rollspin::motion

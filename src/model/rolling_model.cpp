@@ -1,17 +1,17 @@
-#include "app/scene_model.hpp"
+#include "model/rolling_model.hpp"
 
 #include "core/stage_log.hpp"
 #include "scene/scene_loader.hpp"
 
 #include <numbers>
 
-#include "app/surface_model.hpp"
+#include "model/surface_model.hpp"
 #include "geometry/analytic_paths.hpp"
 #include "geometry/clothoid_path.hpp"
 #include "geometry/joined_path.hpp"
 #include "spin/field.hpp"
 
-namespace rollspin::app {
+namespace rollspin::model {
 
 namespace {
 geometry::Vec3 toVec(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
@@ -187,4 +187,4 @@ RollingModel buildSceneModel(const scene::SceneSpec& spec) {
   return buildModel(spec);
 }
 
-}  // namespace rollspin::app
+}  // namespace rollspin::model

@@ -13,7 +13,7 @@
 #include <mutex>
 #include <optional>
 
-namespace rollspin::app {
+namespace rollspin {
 
 template <typename T>
 class BoundedQueue {
@@ -87,4 +87,4 @@ class BoundedQueue {
   Clock::duration pushWait_{}, popWait_{};
 };
 
-}  // namespace rollspin::app
+}  // namespace rollspin

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "app/scene_facts.hpp"
-#include "app/solve_job.hpp"
+#include "motion/scene_facts.hpp"
+#include "motion/solve_job.hpp"
 #include "core/error.hpp"
 #include "kinematics/rolling_kinematics.hpp"
 #include "spin/field.hpp"
@@ -16,7 +16,7 @@
 #include "support/cli_runner.hpp"
 
 using namespace rollspin;
-using app::SceneFacts;
+using motion::SceneFacts;
 using scene::Fact;
 constexpr double kPi = std::numbers::pi;
 
@@ -24,19 +24,19 @@ namespace {
 
 struct Loaded {
   scene::SceneSpec spec;
-  app::RollingModel model;
+  model::RollingModel model;
 };
 
 Loaded load(const std::string& name, const std::vector<std::string>& overrides = {}) {
   Loaded l;
-  l.spec = app::loadScene((test::sourceDir() / "scenes" / (name + ".toml")).string(), overrides);
-  l.model = app::buildSceneModel(l.spec);
+  l.spec = model::loadScene((test::sourceDir() / "scenes" / (name + ".toml")).string(), overrides);
+  l.model = model::buildSceneModel(l.spec);
   return l;
 }
 
 // U(s) from the scene's own solver at one arc length.
 spin::Su2 solverAt(const Loaded& l, double s) {
-  const app::SolverChoice c = app::chooseSolver(l.spec, l.model);
+  const motion::SolverChoice c = motion::chooseSolver(l.spec, l.model);
   spin::Su2 out;
   const std::vector<double> at{s};
   (void)spin::Propagator(*l.model.path, l.model.ballRadius, c.method, c.steps, c.tolerance)
@@ -124,7 +124,7 @@ TEST(SceneFacts, PennyTurnsTwiceInTheLabAndThreeTimesAgainstTheRadiusLine) {
   EXPECT_NEAR(f.turns->lab, oracleLab, 1e-9);
   // Live counts part-way: ω is constant, so a third of the way is a third of each count.
   const double third = L / 3;
-  const app::LiveAngles a = f.at(third, solverAt(l, third));
+  const motion::LiveAngles a = f.at(third, solverAt(l, third));
   EXPECT_NEAR(a.lab / (2 * kPi), -2.0 / 3, 1e-9);
   EXPECT_NEAR((a.lab - a.frame) / (2 * kPi), -1.0, 1e-9);
 }

@@ -1,10 +1,10 @@
-#include "app/surface_model.hpp"
+#include "model/surface_model.hpp"
 
 #include <numbers>
 
 #include "geometry/surface_paths.hpp"
 
-namespace rollspin::app {
+namespace rollspin::model {
 
 namespace {
 
@@ -173,4 +173,4 @@ RollingModel buildSurfaceModel(const scene::SceneSpec& spec) {
   return model;
 }
 
-}  // namespace rollspin::app
+}  // namespace rollspin::model

@@ -1,10 +1,10 @@
-#include "app/frame_clock.hpp"
+#include "motion/frame_clock.hpp"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 
-namespace rollspin::app {
+namespace rollspin::motion {
 
 double ease(scene::Easing easing, double x) {
   x = std::clamp(x, 0.0, 1.0);
@@ -139,4 +139,4 @@ FrameRange parseFrameRange(const std::string& text, long long frameCount) {
   return r;
 }
 
-}  // namespace rollspin::app
+}  // namespace rollspin::motion

@@ -11,51 +11,20 @@
 #include <optional>
 #include <vector>
 
-#include "app/frame_clock.hpp"
-#include "app/scene_facts.hpp"
-#include "app/scene_model.hpp"
+#include "motion/frame_sampling.hpp"
+#include "motion/scene_facts.hpp"
+#include "model/rolling_model.hpp"
 #include "render/draw_list.hpp"
 #include "scene/scene_spec.hpp"
 #include "spin/su2.hpp"
 
-namespace rollspin::app {
+namespace rollspin::draw {
 
-struct OrientedSample {
-  double s = 0.0;
-  spin::Su2 q;  // U(s): worldFromBody
-};
-
-// Everything time-dependent one image needs.
-struct FrameOrientations {
-  OrientedSample current;              // the ball (and the twin's arrows) at s
-  StoryPlace story;                    // a storyboard's segment (caption, title, camera) and its time
-  std::vector<OrientedSample> trail;   // U on [0, s], increasing s, for the Bloch trail
-  std::vector<OrientedSample> strobe;  // render.strobe > 1: the extra ball positions
-};
-
-// The trail's fixed grid g_i = L·i/(count − 1), i = 0 … count − 1 (g_last =
-// L exactly): ≥ 240 points over the path, 120 per turn, at most 20001. The
-// trail of the frame at s is {g_i < s} ∪ {s} (plus g_0 when s = 0), so every
-// frame's trail is a prefix of one sequence: one march serves a whole clip,
-// and a trail's vertices stay put from frame to frame instead of sliding.
-struct TrailGrid {
-  double length = 0.0;
-  std::size_t count = 0;  // 0 when render.trails = false
-  [[nodiscard]] double at(std::size_t i) const {
-    return i + 1 == count ? length : length * double(i) / double(count - 1);
-  }
-};
-[[nodiscard]] TrailGrid trailGrid(const scene::SceneSpec& spec, const RollingModel& model);
-
-// Arc lengths the solver must report for a still at `s`: the trail samples
-// (above) and the strobe positions (sorted, inside [0, L]).
-struct FrameSampling {
-  std::vector<double> trail;
-  std::vector<double> strobe;
-};
-[[nodiscard]] FrameSampling frameSampling(const scene::SceneSpec& spec, const RollingModel& model, double s);
-// The strobe positions alone (empty unless render.strobe > 1).
-[[nodiscard]] std::vector<double> strobeArcLengths(const scene::SceneSpec& spec, const RollingModel& model);
+using model::RollingModel;
+using motion::FrameOrientations;
+using motion::OrientedSample;
+using motion::SceneFacts;
+using motion::StoryPlace;
 
 class SceneDrawer {
  public:
@@ -124,4 +93,4 @@ class SceneDrawer {
   std::vector<geometry::Vec3> cutRim_;  // inside a sphere: the edge of the cut-away
 };
 
-}  // namespace rollspin::app
+}  // namespace rollspin::draw

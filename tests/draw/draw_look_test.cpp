@@ -10,13 +10,15 @@
 #include <string>
 #include <vector>
 
-#include "app/draw_scene.hpp"
+#include "draw/scene_drawer.hpp"
 #include "app/render_jobs.hpp"
-#include "app/scene_model.hpp"
+#include "model/rolling_model.hpp"
 #include "support/cli_runner.hpp"
 
-namespace rollspin::app {
+namespace rollspin::draw {
 namespace {
+using namespace rollspin::model;
+using namespace rollspin::motion;
 
 struct Loaded {
   scene::SceneSpec spec;
@@ -114,4 +116,4 @@ TEST(BallView, OnAWallTheShadowFallsBelowTheBall) {
 }
 
 }  // namespace
-}  // namespace rollspin::app
+}  // namespace rollspin::draw

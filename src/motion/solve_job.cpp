@@ -1,4 +1,4 @@
-#include "app/solve_job.hpp"
+#include "motion/solve_job.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "spin/field.hpp"
 
-namespace rollspin::app {
+namespace rollspin::motion {
 
 namespace {
 // The key a user would change to shorten the path: the first one given.
@@ -98,4 +98,4 @@ spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& mo
   return stats;
 }
 
-}  // namespace rollspin::app
+}  // namespace rollspin::motion

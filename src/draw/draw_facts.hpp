@@ -8,11 +8,17 @@
 #include <string>
 #include <vector>
 
-#include "app/draw_scene.hpp"
-#include "app/scene_facts.hpp"
+#include "draw/scene_drawer.hpp"
+#include "motion/scene_facts.hpp"
 #include "render/draw_list.hpp"
 
-namespace rollspin::app {
+namespace rollspin::draw {
+
+using model::RollingModel;
+using motion::FrameOrientations;
+using motion::OrientedSample;
+using motion::SceneFacts;
+using motion::StoryPlace;
 
 // The lines for the facts the scene shows, at the frame's s (live values
 // use frame.current.q). A strobe shows the circuit's values only.
@@ -23,4 +29,4 @@ namespace rollspin::app {
 // vectors): the cone whose solid angle is Berry's phase.
 [[nodiscard]] std::shared_ptr<render::MeshData> coneMesh(const std::vector<geometry::Vec3>& loop);
 
-}  // namespace rollspin::app
+}  // namespace rollspin::draw

@@ -1,4 +1,4 @@
-#include "app/scene_facts.hpp"
+#include "motion/scene_facts.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,13 +6,13 @@
 
 #include <Eigen/Geometry>
 
-#include "app/solve_job.hpp"
+#include "motion/solve_job.hpp"
 #include "core/error.hpp"
 #include "core/stage_log.hpp"
 #include "spin/field.hpp"
 #include "spin/propagator.hpp"
 
-namespace rollspin::app {
+namespace rollspin::motion {
 
 namespace {
 
@@ -267,4 +267,4 @@ std::shared_ptr<const SceneFacts> makeSceneFacts(const scene::SceneSpec& spec, c
   return std::make_shared<const SceneFacts>(spec, model, std::move(facts));
 }
 
-}  // namespace rollspin::app
+}  // namespace rollspin::motion

@@ -5,6 +5,7 @@
 
 #include <numbers>
 
+#include "model/surface_kinds.hpp"
 #include "model/surface_model.hpp"
 #include "geometry/analytic_paths.hpp"
 #include "geometry/clothoid_path.hpp"
@@ -34,7 +35,8 @@ RollingModel buildPathModel(const scene::SceneSpec& spec, const Placement& place
   const double R = model.ballRadius;
 
   if (spec.surface.kind == scene::SurfaceKind::Plane) {
-    auto plane = std::make_shared<const geometry::Plane>(toVec(spec.surface.normal));
+    // The analytic paths need the concrete surface: the kind says which it is.
+    auto plane = std::static_pointer_cast<const geometry::Plane>(buildSurface(spec));
     model.surface = plane;
     const geometry::Vec3 e1 = place.heading                ? *place.heading
                               : spec.path.directionVector ? toVec(*spec.path.directionVector)
@@ -81,9 +83,7 @@ RollingModel buildPathModel(const scene::SceneSpec& spec, const Placement& place
       default: break;  // not on a plane: isAnalyticScene sent it to buildSurfaceModel
     }
   } else {
-    auto sphere = std::make_shared<const geometry::Sphere>(
-        spec.surface.radius,
-        spec.surface.side == scene::SurfaceSide::Outside ? geometry::Side::Outside : geometry::Side::Inside);
+    auto sphere = std::static_pointer_cast<const geometry::Sphere>(buildSurface(spec));
     model.surface = sphere;
     model.path = std::make_unique<geometry::SphereParallelPath>(
         sphere, spec.path.colatitudeDeg * std::numbers::pi / 180.0, spec.path.turns, spec.path.counterClockwise);

@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "geometry/surface_paths.hpp"
+#include "model/surface_kinds.hpp"
 
 namespace rollspin::model {
 
@@ -14,51 +15,6 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 
 Vec3 toVec(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
 
-geometry::Side sideOf(const scene::SurfaceSpec& s) {
-  return s.side == scene::SurfaceSide::Outside ? geometry::Side::Outside : geometry::Side::Inside;
-}
-
-// Parses an expression; a parse error points into the TOML string itself
-// (column of the opening quote + 1 + position) when the key came from a file.
-std::shared_ptr<const geometry::Expression> compile(const scene::SceneSpec& spec, const std::string& key,
-                                                    const std::string& text, std::vector<std::string> variables) {
-  try {
-    return std::make_shared<const geometry::Expression>(text, std::move(variables));
-  } catch (const geometry::ExpressionError& e) {
-    SourceLoc loc = spec.where(key);
-    if (loc.line > 0) loc.column += 1 + e.position();
-    throw badInput(loc, "{}: cannot parse \"{}\" at character {}: {}", key, text, e.position() + 1, e.what());
-  }
-}
-
-std::shared_ptr<const geometry::Surface> buildSurface(const scene::SceneSpec& spec) {
-  const scene::SurfaceSpec& s = spec.surface;
-  const bool above = s.side == scene::SurfaceSide::Outside;
-  switch (s.kind) {
-    case scene::SurfaceKind::Plane: return std::make_shared<const geometry::Plane>(toVec(s.normal));
-    case scene::SurfaceKind::Sphere: return std::make_shared<const geometry::Sphere>(s.radius, sideOf(s));
-    case scene::SurfaceKind::Cylinder:
-      return std::make_shared<const geometry::Cylinder>(s.radius, toVec(s.axis), sideOf(s));
-    case scene::SurfaceKind::Torus:
-      return std::make_shared<const geometry::Torus>(s.majorRadius, s.minorRadius, sideOf(s));
-    case scene::SurfaceKind::Paraboloid: return geometry::HeightField::quadric(s.a, s.b, false, above);
-    case scene::SurfaceKind::Saddle: return geometry::HeightField::quadric(s.a, s.b, true, above);
-    case scene::SurfaceKind::Height:
-      return geometry::HeightField::fromExpression(compile(spec, "surface.z", s.z, {"x", "y"}), above);
-  }
-  return nullptr;
-}
-
-// A point on the surface to start a geodesic from when the scene gives none.
-Vec3 defaultStart(const scene::SceneSpec& spec, const geometry::Surface& surface) {
-  const scene::SurfaceSpec& s = spec.surface;
-  switch (s.kind) {
-    case scene::SurfaceKind::Sphere: return s.radius * Vec3(std::sin(60 * kDeg), 0.0, std::cos(60 * kDeg));
-    case scene::SurfaceKind::Cylinder: return surface.position(Vec2(0.0, 0.0));
-    case scene::SurfaceKind::Torus: return {s.majorRadius + s.minorRadius, 0.0, 0.0};
-    default: return surface.position(Vec2(0.0, 0.0));
-  }
-}
 
 Vec2 parametersOf(const scene::SceneSpec& spec, const geometry::Surface& surface, const Vec3& point,
                   const std::string& key) {
@@ -104,7 +60,7 @@ std::unique_ptr<geometry::SurfaceCurvePath> buildPath(const scene::SceneSpec& sp
                                          p.colatitudeStartDeg * kDeg, p.colatitudeEndDeg * kDeg);
       break;
     case PathKind::Geodesic: {
-      const Vec3 start = p.startPoint ? toVec(*p.startPoint) : defaultStart(spec, *surface);
+      const Vec3 start = p.startPoint ? toVec(*p.startPoint) : defaultGeodesicStart(spec, *surface);
       const Vec2 uv = parametersOf(spec, *surface, start, "path.start_point");
       Vec3 direction = p.directionVector ? toVec(*p.directionVector) : Vec3(0.0, 1.0, 0.0);
       const Vec3 n = surface->normal(uv);
@@ -116,8 +72,8 @@ std::unique_ptr<geometry::SurfaceCurvePath> buildPath(const scene::SceneSpec& sp
       return geometry::geodesicPath(surface, uv, direction, p.length);
     }
     case PathKind::Uv:
-      return geometry::uvExpressionPath(surface, compile(spec, "path.u", p.u, {"t"}),
-                                        compile(spec, "path.v", p.v, {"t"}), p.tStart, p.tEnd);
+      return geometry::uvExpressionPath(surface, compileExpression(spec, "path.u", p.u, {"t"}),
+                                        compileExpression(spec, "path.v", p.v, {"t"}), p.tStart, p.tEnd);
     case PathKind::Points: {
       std::vector<Vec2> uv;
       for (const auto& q : p.points)
@@ -159,7 +115,7 @@ bool isAnalyticScene(const scene::SceneSpec& spec) {
 RollingModel buildSurfaceModel(const scene::SceneSpec& spec) {
   RollingModel model;
   model.ballRadius = spec.ball.radius;
-  model.surface = buildSurface(spec);
+  model.surface = buildSurface(spec);  // surface_kinds.cpp
   std::unique_ptr<geometry::SurfaceCurvePath> path;
   try {
     path = buildPath(spec, model.surface);

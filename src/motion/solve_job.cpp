@@ -20,7 +20,10 @@ std::pair<std::string, SourceLoc> pathSizeKey(const scene::SceneSpec& spec) {
 
 SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& model) {
   SolverChoice choice;
-  choice.method = *spin::parseMethod(spec.solver.method);  // validated by the loader
+  const std::optional<spin::Method> method = spin::parseMethod(spec.solver.method);
+  if (!method)  // a SceneSpec built in code, not by the loader
+    throw badInput(spec.where("solver.method"), "solver.method: unknown method \"{}\"", spec.solver.method);
+  choice.method = *method;
   // A storyboard is solved piece by piece: exact needs each piece constant.
   const auto pieces = model.path->pieces();
   const bool constant = pieces.empty() ? model.path->hasConstantCurvatures()

@@ -2,6 +2,8 @@
 
 #include <toml++/toml.h>
 
+#include "spin/propagator.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -34,8 +36,16 @@ std::string joinKeys(const std::set<std::string>& keys) {
   return out;
 }
 
+// "\"frame6a\", \"rk45\"": the adaptive methods of spin's table, for messages.
+std::string adaptiveNames() {
+  std::set<std::string> names;
+  for (spin::Method m : spin::allMethods())
+    if (spin::isAdaptive(m)) names.emplace("\"" + std::string(spin::methodName(m)) + "\"");
+  return joinKeys(names);
+}
+
 std::set<std::string> pathTableKeys() {
-  std::set<std::string> keys(kPathKeys.begin(), kPathKeys.end());
+  std::set<std::string> keys(allPathKeys().begin(), allPathKeys().end());
   keys.insert("kind");
   return keys;
 }
@@ -484,40 +494,18 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
   const SurfaceKind sk = spec_.surface.kind;
   const std::string skName = toString(sk);
   const bool pathKindGiven = path != nullptr && path->get("kind") != nullptr;
-  static const std::map<std::string, PathKind> kPathKinds{
-      {"line", PathKind::Line},           {"circle", PathKind::Circle},       {"parallel", PathKind::Parallel},
-      {"meridian", PathKind::Meridian},   {"helix", PathKind::Helix},         {"loxodrome", PathKind::Loxodrome},
-      {"geodesic", PathKind::Geodesic},   {"uv", PathKind::Uv},               {"points", PathKind::Points},
-      {"clothoid", PathKind::Clothoid}};
-  if (auto kind = text(path, prefix, "kind",
-                       {"line", "circle", "parallel", "meridian", "helix", "loxodrome", "geodesic", "uv", "points",
-                        "clothoid"})) {
-    target.kind = kPathKinds.at(*kind);
-  } else if (sk == SurfaceKind::Sphere || sk == SurfaceKind::Cylinder || sk == SurfaceKind::Torus ||
-             sk == SurfaceKind::Paraboloid) {
-    target.kind = PathKind::Parallel;  // the natural closed path of a surface of revolution
-  } else if (sk == SurfaceKind::Saddle || sk == SurfaceKind::Height) {
-    target.kind = PathKind::Meridian;
+  std::set<std::string> pathNames;
+  for (const auto& row : pathKinds()) pathNames.emplace(row.name);
+  if (auto kind = text(path, prefix, "kind", pathNames)) {
+    for (const auto& row : pathKinds())
+      if (row.name == *kind) target.kind = row.kind;
+  } else if (sk != SurfaceKind::Plane) {
+    target.kind = surfaceKindRow(sk).defaultPath;  // a curved surface's natural path (e.g. a parallel)
   }
   const PathKind pk = target.kind;
   const std::string pkName = toString(pk);
-  // Which surfaces each path kind lies on.
-  const bool revolution = sk == SurfaceKind::Sphere || sk == SurfaceKind::Cylinder || sk == SurfaceKind::Torus ||
-                          sk == SurfaceKind::Paraboloid;
-  std::string needs;
-  bool lies = true;
-  switch (pk) {
-    case PathKind::Line:
-    case PathKind::Circle:
-    case PathKind::Clothoid: lies = sk == SurfaceKind::Plane; needs = "plane"; break;
-    case PathKind::Parallel: lies = revolution; needs = "sphere, cylinder, torus or paraboloid"; break;
-    case PathKind::Meridian: lies = sk != SurfaceKind::Plane; needs = "curved surface"; break;
-    case PathKind::Helix: lies = sk == SurfaceKind::Cylinder; needs = "cylinder"; break;
-    case PathKind::Loxodrome: lies = sk == SurfaceKind::Sphere; needs = "sphere"; break;
-    case PathKind::Geodesic:
-    case PathKind::Uv:
-    case PathKind::Points: break;
-  }
+  const bool lies = liesOn(pk, sk);
+  const std::string needs = describe(pathKindRow(pk).liesOn);
   if (!lies) {
     const std::string key = pathKindGiven ? (prefix + ".kind") : "surface.kind";
     failAt(key, fmt::format("a {} path lies on a {}, but surface.kind is \"{}\" (the path would leave the surface)",
@@ -527,7 +515,7 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
     if (!applies) forbid(path, prefix, key, "applies to path kind " + kinds + " only; this path is a " + pkName +
                                                 " on a " + skName);
   };
-  for (const auto& key : kPathKeys) {
+  for (const auto& key : allPathKeys()) {
     const KeyRule rule = pathKeyRule(key, pk, sk);
     only(key, rule.applies, rule.kinds);
   }
@@ -657,22 +645,21 @@ SceneSpec Reader::read() {
   const double R = spec_.ball.radius;
 
   // [surface]
-  const toml::table* surface = section(
-      "surface", {"kind", "normal", "radius", "side", "axis", "major_radius", "minor_radius", "a", "b", "z"});
-  static const std::map<std::string, SurfaceKind> kSurfaceKinds{
-      {"plane", SurfaceKind::Plane},       {"sphere", SurfaceKind::Sphere}, {"cylinder", SurfaceKind::Cylinder},
-      {"torus", SurfaceKind::Torus},       {"paraboloid", SurfaceKind::Paraboloid},
-      {"saddle", SurfaceKind::Saddle},     {"height", SurfaceKind::Height}};
-  if (auto kind = text(surface, "surface", "kind",
-                       {"plane", "sphere", "cylinder", "torus", "paraboloid", "saddle", "height"}))
-    spec_.surface.kind = kSurfaceKinds.at(*kind);
+  std::set<std::string> surfaceKeys(allSurfaceKeys().begin(), allSurfaceKeys().end());
+  surfaceKeys.insert("kind");
+  const toml::table* surface = section("surface", surfaceKeys);
+  std::set<std::string> surfaceNames;
+  for (const auto& row : surfaceKinds()) surfaceNames.emplace(row.name);
+  if (auto kind = text(surface, "surface", "kind", surfaceNames))
+    for (const auto& row : surfaceKinds())
+      if (row.name == *kind) spec_.surface.kind = row.kind;
   const SurfaceKind sk = spec_.surface.kind;
   const std::string skName = toString(sk);
-  const bool heightField = sk == SurfaceKind::Paraboloid || sk == SurfaceKind::Saddle || sk == SurfaceKind::Height;
+  const bool heightField = surfaceKindRow(sk).heightField;
   auto surfaceOnly = [&](const std::string& key, bool applies, const std::string& kinds) {
     if (!applies) forbid(surface, "surface", key, "applies to kind = " + kinds + " only; this surface is a " + skName);
   };
-  for (const auto& key : kSurfaceKeys) {
+  for (const auto& key : allSurfaceKeys()) {
     const KeyRule rule = surfaceKeyRule(key, sk);
     surfaceOnly(key, rule.applies, rule.kinds);
   }
@@ -760,9 +747,10 @@ SceneSpec Reader::read() {
 
   // [solver]
   const toml::table* solver = section("solver", {"method", "steps", "tolerance"});
-  if (auto m = text(solver, "solver", "method",
-                    {"exact", "magnus2", "magnus4", "rk4", "frame4", "cf4", "magnus6", "rk45", "frame6a"}))
-    spec_.solver.method = *m;
+  // The method names are spin's (one table there); the scene keeps the text.
+  std::set<std::string> methodNames;
+  for (spin::Method m : spin::allMethods()) methodNames.emplace(spin::methodName(m));
+  if (auto m = text(solver, "solver", "method", methodNames)) spec_.solver.method = *m;
   if (auto n = integer(solver, "solver", "steps")) {
     if (*n < 1 || *n > kMaxSolverSteps)
       failAt("solver.steps", fmt::format("expected an integer in [1, 1e11], got {}", *n));
@@ -776,12 +764,13 @@ SceneSpec Reader::read() {
   // A tolerance and no step count: the adaptive geometric method by default.
   // Steps and tolerance each belong to one kind of method.
   const bool methodGiven = spec_.locations.contains("solver.method");
-  const bool adaptive = spec_.solver.method == "rk45" || spec_.solver.method == "frame6a";
-  if (!methodGiven && spec_.solver.tolerance && !spec_.solver.steps) spec_.solver.method = "frame6a";
+  const bool adaptive = spin::isAdaptive(*spin::parseMethod(spec_.solver.method));  // a name from the table
+  if (!methodGiven && spec_.solver.tolerance && !spec_.solver.steps)
+    spec_.solver.method = spin::methodName(spin::Method::Frame6a);
   else if (spec_.solver.tolerance && !adaptive)
-    failAt("solver.tolerance", fmt::format("applies to the adaptive methods (\"frame6a\", \"rk45\"), but "
+    failAt("solver.tolerance", fmt::format("applies to the adaptive methods ({}), but "
                                            "solver.method is \"{}\"; remove solver.tolerance or solver.steps",
-                                           spec_.solver.method));
+                                           adaptiveNames(), spec_.solver.method));
   if (adaptive && spec_.solver.steps)
     failAt("solver.steps", fmt::format("method \"{}\" chooses its own steps; set solver.tolerance instead",
                                        spec_.solver.method));

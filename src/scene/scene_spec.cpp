@@ -1,52 +1,51 @@
 #include "scene/scene_spec.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rollspin::scene {
 
+namespace {
+bool contains(const std::vector<std::string>& keys, const std::string& key) {
+  return std::find(keys.begin(), keys.end(), key) != keys.end();
+}
+std::string orList(const std::vector<std::string>& items) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == items.size() ? " or " : ", ") + items[i];
+  return out;
+}
+}  // namespace
+
 KeyRule surfaceKeyRule(const std::string& key, SurfaceKind sk) {
-  if (key == "normal") return {sk == SurfaceKind::Plane, "\"plane\""};
-  if (key == "radius") return {sk == SurfaceKind::Sphere || sk == SurfaceKind::Cylinder, "\"sphere\" or \"cylinder\""};
-  if (key == "side")
-    return {sk != SurfaceKind::Plane, "sphere, cylinder, torus (outside | inside) or a height field (above | below)"};
-  if (key == "axis") return {sk == SurfaceKind::Cylinder, "\"cylinder\""};
-  if (key == "major_radius" || key == "minor_radius") return {sk == SurfaceKind::Torus, "\"torus\""};
-  if (key == "a" || key == "b")
-    return {sk == SurfaceKind::Paraboloid || sk == SurfaceKind::Saddle, "\"paraboloid\" or \"saddle\""};
-  if (key == "z") return {sk == SurfaceKind::Height, "\"height\""};
-  return {true, ""};
+  if (!contains(allSurfaceKeys(), key)) return {true, ""};
+  std::vector<std::string> kinds;
+  for (const auto& row : surfaceKinds())
+    if (contains(row.keys, key)) kinds.push_back("\"" + std::string(row.name) + "\"");
+  return {contains(surfaceKindRow(sk).keys, key), orList(kinds)};
 }
 
 KeyRule pathKeyRule(const std::string& key, PathKind pk, SurfaceKind sk) {
-  const bool onSphere = sk == SurfaceKind::Sphere, onTorus = sk == SurfaceKind::Torus,
-             onCylinder = sk == SurfaceKind::Cylinder;
-  const bool meridian = pk == PathKind::Meridian, parallel = pk == PathKind::Parallel;
-  if (key == "turns" || key == "direction")
-    return {pk == PathKind::Circle || parallel || pk == PathKind::Helix || (meridian && onTorus),
-            "circle or parallel (or helix, or meridian on a torus)"};
-  const bool clothoid = pk == PathKind::Clothoid;
-  if (key == "length")
-    return {pk == PathKind::Line || pk == PathKind::Geodesic || clothoid || (meridian && !onSphere && !onTorus),
-            "line, clothoid, geodesic or meridian on a cylinder or height field"};
-  if (key == "direction_vector")
-    return {pk == PathKind::Line || pk == PathKind::Geodesic || clothoid, "line, clothoid or geodesic"};
-  if (key == "curvature_start" || key == "curvature_rate") return {clothoid, "clothoid"};
-  if (key == "radius")
-    return {pk == PathKind::Circle || (parallel && sk == SurfaceKind::Paraboloid), "circle or parallel on a paraboloid"};
-  if (key == "colatitude_deg") return {parallel && onSphere, "parallel on a sphere"};
-  if (key == "tube_angle_deg") return {(parallel || meridian) && onTorus, "parallel or meridian on a torus"};
-  if (key == "height")
-    return {(parallel || meridian || pk == PathKind::Helix) && onCylinder, "parallel, meridian or helix on a cylinder"};
-  if (key == "azimuth_deg") return {meridian || pk == PathKind::Loxodrome, "meridian or loxodrome"};
-  if (key == "colatitude_start_deg" || key == "colatitude_end_deg")
-    return {(meridian && onSphere) || pk == PathKind::Loxodrome, "meridian on a sphere or loxodrome"};
-  if (key == "pitch_angle_deg") return {pk == PathKind::Helix, "helix"};
-  if (key == "heading_deg") return {pk == PathKind::Loxodrome, "loxodrome"};
-  if (key == "start_point") return {pk == PathKind::Geodesic, "geodesic"};
-  if (key == "u" || key == "v" || key == "t_start" || key == "t_end") return {pk == PathKind::Uv, "uv"};
-  if (key == "points" || key == "closed" || key == "interpolation" || key == "corner_radius")
-    return {pk == PathKind::Points, "points"};
-  return {true, ""};
+  if (!contains(allPathKeys(), key)) return {true, ""};
+  bool applies = false;
+  // "circle or parallel (or helix, or meridian on a torus)": the kinds where
+  // the key always applies first, those where it applies on some surfaces after.
+  std::vector<std::string> everywhere, somewhere;
+  for (const auto& row : pathKinds()) {
+    for (const auto& k : row.keys) {
+      if (k.key != key) continue;
+      std::vector<std::string> on;
+      for (SurfaceKind s : k.on) on.emplace_back(surfaceKindRow(s).name);
+      (on.empty() ? everywhere : somewhere).push_back(std::string(row.name) + (on.empty() ? "" : " on a " + orList(on)));
+      if (row.kind == pk && (k.on.empty() || std::find(k.on.begin(), k.on.end(), sk) != k.on.end())) applies = true;
+    }
+  }
+  everywhere.insert(everywhere.end(), somewhere.begin(), somewhere.end());
+  std::string kinds;
+  for (std::size_t i = 0; i < everywhere.size(); ++i)
+    kinds += i == 0 ? everywhere[i] : i == 1 ? " or " + everywhere[i] : (i == 2 ? " (or " : ", or ") + everywhere[i];
+  if (everywhere.size() > 2) kinds += ")";
+  return {applies, kinds};
 }
 
 SourceLoc SceneSpec::where(const std::string& key) const {
@@ -54,34 +53,9 @@ SourceLoc SceneSpec::where(const std::string& key) const {
   return SourceLoc{sourceFile.empty() ? std::string("<scene>") : sourceFile};
 }
 
-std::string toString(SurfaceKind k) {
-  switch (k) {
-    case SurfaceKind::Plane: return "plane";
-    case SurfaceKind::Sphere: return "sphere";
-    case SurfaceKind::Cylinder: return "cylinder";
-    case SurfaceKind::Torus: return "torus";
-    case SurfaceKind::Paraboloid: return "paraboloid";
-    case SurfaceKind::Saddle: return "saddle";
-    case SurfaceKind::Height: return "height";
-  }
-  return "?";
-}
+std::string toString(SurfaceKind k) { return std::string(surfaceKindRow(k).name); }
 
-std::string toString(PathKind k) {
-  switch (k) {
-    case PathKind::Line: return "line";
-    case PathKind::Circle: return "circle";
-    case PathKind::Parallel: return "parallel";
-    case PathKind::Meridian: return "meridian";
-    case PathKind::Helix: return "helix";
-    case PathKind::Loxodrome: return "loxodrome";
-    case PathKind::Geodesic: return "geodesic";
-    case PathKind::Uv: return "uv";
-    case PathKind::Points: return "points";
-    case PathKind::Clothoid: return "clothoid";
-  }
-  return "?";
-}
+std::string toString(PathKind k) { return std::string(pathKindRow(k).name); }
 
 std::string toString(RenderLayout l) {
   switch (l) {

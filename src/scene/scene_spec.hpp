@@ -12,6 +12,8 @@
 
 #include "core/error.hpp"
 #include "scene/frame_rate.hpp"
+#include "scene/path_kinds.hpp"
+#include "scene/surface_kinds.hpp"
 
 namespace rollspin::scene {
 
@@ -23,7 +25,6 @@ struct BallSpec {
   std::optional<Vec3> marker;  // body point whose direction is the tracked Bloch vector; default: the top n(0)
 };
 
-enum class SurfaceKind { Plane, Sphere, Cylinder, Torus, Paraboloid, Saddle, Height };
 // Height fields (paraboloid, saddle, height) say "above" / "below": stored as Outside / Inside.
 enum class SurfaceSide { Outside, Inside };
 
@@ -38,8 +39,6 @@ struct SurfaceSpec {
   double a = 4.0, b = 4.0;      // paraboloid / saddle: z = (x²/a ± y²/b)/2
   std::string z = "0";          // height: z = f(x, y), a muparser expression
 };
-
-enum class PathKind { Line, Circle, Parallel, Meridian, Helix, Loxodrome, Geodesic, Uv, Points, Clothoid };
 
 struct PathSpec {
   PathKind kind = PathKind::Circle;
@@ -185,20 +184,13 @@ struct SceneSpec {
   std::map<std::string, SourceLoc> locations;
 };
 
-// Which kind-specific keys apply: the loader rejects the others, and the
-// scene printer prints exactly these. `kinds` says where a key applies, for
-// messages.
+// Which kind-specific keys apply (from the kind tables, surface_kinds.hpp
+// and path_kinds.hpp): the loader rejects the others, and the scene printer
+// prints exactly these. `kinds` says where a key applies, for messages.
 struct KeyRule {
   bool applies = true;
   std::string kinds;
 };
-inline const std::vector<std::string> kSurfaceKeys{"normal", "radius", "side", "axis", "major_radius",
-                                                   "minor_radius", "a", "b", "z"};
-inline const std::vector<std::string> kPathKeys{
-    "turns", "direction", "length", "direction_vector", "radius", "colatitude_deg", "tube_angle_deg", "height",
-    "azimuth_deg", "colatitude_start_deg", "colatitude_end_deg", "pitch_angle_deg", "heading_deg", "start_point",
-    "u", "v", "t_start", "t_end", "points", "closed", "interpolation", "corner_radius", "curvature_start",
-    "curvature_rate"};
 [[nodiscard]] KeyRule surfaceKeyRule(const std::string& key, SurfaceKind sk);
 [[nodiscard]] KeyRule pathKeyRule(const std::string& key, PathKind pk, SurfaceKind sk);
 

@@ -67,7 +67,7 @@ enum class PathDefaults { Own, FromPrevious };
 void writePath(Writer& w, const PathSpec& p, SurfaceKind sk, bool plate, PathDefaults defaults) {
   const PathKind pk = p.kind;
   w.key("kind", quoted(pathKindName(pk)));
-  for (const auto& key : kPathKeys) {
+  for (const auto& key : allPathKeys()) {
     if (!pathKeyRule(key, pk, sk).applies) continue;
     // With [plate] the circle's radius is derived, and setting it is an error.
     if (key == "radius" && plate) continue;
@@ -160,8 +160,8 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
 
   w.section("surface");
   w.key("kind", quoted(toString(sk)));
-  const bool heightField = sk == SurfaceKind::Paraboloid || sk == SurfaceKind::Saddle || sk == SurfaceKind::Height;
-  for (const auto& key : kSurfaceKeys) {
+  const bool heightField = surfaceKindRow(sk).heightField;
+  for (const auto& key : allSurfaceKeys()) {
     if (!surfaceKeyRule(key, sk).applies) continue;
     const SurfaceSpec& s = spec.surface;
     if (key == "normal") w.key(key, vec(s.normal));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <chrono>
 #include <cmath>
 
@@ -15,8 +16,37 @@
 namespace rollspin::spin {
 
 namespace {
-constexpr std::array kMethods{Method::Exact, Method::Magnus2, Method::Magnus4, Method::Rk4,     Method::Frame4,
-                              Method::Cf4,   Method::Magnus6, Method::Rk45,    Method::Frame6a};
+// The methods: one row each (name, order, adaptive, geometric). A new method
+// is its enum value, its row here and its step (stepNodes / stepElement).
+struct MethodRow {
+  Method method;
+  std::string_view name;
+  int order;        // of accuracy (0: exact)
+  bool adaptive;    // chooses its own steps from a tolerance
+  bool geometric;   // multiplies exact SU(2) elements (unitary to round-off)
+};
+constexpr std::array<MethodRow, 9> kMethodTable{{
+    {Method::Exact, "exact", 0, false, true},
+    {Method::Magnus2, "magnus2", 2, false, true},
+    {Method::Magnus4, "magnus4", 4, false, true},
+    {Method::Rk4, "rk4", 4, false, false},
+    {Method::Frame4, "frame4", 4, false, true},
+    {Method::Cf4, "cf4", 4, false, true},
+    {Method::Magnus6, "magnus6", 6, false, true},
+    {Method::Rk45, "rk45", 5, true, false},
+    {Method::Frame6a, "frame6a", 6, true, true},
+}};
+constexpr auto kMethods = [] {
+  std::array<Method, kMethodTable.size()> out{};
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = kMethodTable[i].method;
+  return out;
+}();
+const MethodRow& rowOf(Method m) {
+  for (const auto& row : kMethodTable)
+    if (row.method == m) return row;
+  assert(false && "every Method has a row in kMethodTable");
+  return kMethodTable[0];
+}
 
 // dU/ds = ½ (0, ω) ⊗ U in quaternion form, for the raw-spinor RK4.
 Su2 derivative(const Vec3& w, const Su2& u) {
@@ -27,46 +57,18 @@ Su2 axpy(const Su2& u, double h, const Su2& k) { return {u.w + h * k.w, u.x + h 
 constexpr std::size_t kBlock = kernel::kBlockSteps;
 }  // namespace
 
-std::string_view methodName(Method m) {
-  switch (m) {
-    case Method::Exact: return "exact";
-    case Method::Magnus2: return "magnus2";
-    case Method::Magnus4: return "magnus4";
-    case Method::Rk4: return "rk4";
-    case Method::Frame4: return "frame4";
-    case Method::Cf4: return "cf4";
-    case Method::Magnus6: return "magnus6";
-    case Method::Rk45: return "rk45";
-    case Method::Frame6a: return "frame6a";
-  }
-  return "?";
-}
+std::string_view methodName(Method m) { return rowOf(m).name; }
 
 std::optional<Method> parseMethod(std::string_view name) {
-  for (Method m : kMethods)
-    if (methodName(m) == name) return m;
+  for (const auto& row : kMethodTable)
+    if (row.name == name) return row.method;
   return std::nullopt;
 }
 
 std::span<const Method> allMethods() { return kMethods; }
-
-int methodOrder(Method m) {
-  switch (m) {
-    case Method::Exact: return 0;
-    case Method::Magnus2: return 2;
-    case Method::Magnus4: return 4;
-    case Method::Rk4: return 4;
-    case Method::Frame4: return 4;
-    case Method::Cf4: return 4;
-    case Method::Magnus6: return 6;
-    case Method::Rk45: return 5;
-    case Method::Frame6a: return 6;
-  }
-  return 0;
-}
-
-bool isAdaptive(Method m) { return m == Method::Rk45 || m == Method::Frame6a; }
-bool isGeometric(Method m) { return m != Method::Rk4 && m != Method::Rk45; }
+int methodOrder(Method m) { return rowOf(m).order; }
+bool isAdaptive(Method m) { return rowOf(m).adaptive; }
+bool isGeometric(Method m) { return rowOf(m).geometric; }
 
 std::string_view statusMessage(SolveStatus s) {
   switch (s) {

@@ -1,0 +1,32 @@
+// Surface factories: one row per scene::SurfaceKind (the scene's table in
+// scene/surface_kinds.hpp holds the names and keys), each building the
+// geometry::Surface from [surface] and naming where a geodesic starts when the
+// scene gives no start point. A new kind: its geometry class, its row in the
+// scene's table and its row here.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geometry/expression.hpp"
+#include "geometry/surface.hpp"
+#include "scene/scene_spec.hpp"
+
+namespace rollspin::model {
+
+// [surface] → its geometry; throws BadInput (surface.z that does not parse).
+[[nodiscard]] std::shared_ptr<const geometry::Surface> buildSurface(const scene::SceneSpec& spec);
+
+// A point on the surface to start a geodesic from when the scene gives none.
+[[nodiscard]] geometry::Vec3 defaultGeodesicStart(const scene::SceneSpec& spec, const geometry::Surface& surface);
+
+// Parses an expression of `variables`; a parse error is BadInput at `key`,
+// pointing into the TOML string itself (column of the opening quote + 1 +
+// position) when the key came from a file.
+[[nodiscard]] std::shared_ptr<const geometry::Expression> compileExpression(const scene::SceneSpec& spec,
+                                                                            const std::string& key,
+                                                                            const std::string& text,
+                                                                            std::vector<std::string> variables);
+
+}  // namespace rollspin::model

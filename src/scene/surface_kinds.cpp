@@ -1,0 +1,45 @@
+#include "scene/surface_kinds.hpp"
+
+#include <algorithm>
+#include <cassert>
+
+#include "scene/path_kinds.hpp"
+
+namespace rollspin::scene {
+
+namespace {
+const std::vector<SurfaceKindRow>& table() {
+  static const std::vector<SurfaceKindRow> rows{
+      {SurfaceKind::Plane, "plane", {"normal"}, false, false, PathKind::Circle},
+      {SurfaceKind::Sphere, "sphere", {"radius", "side"}, true, false, PathKind::Parallel},
+      {SurfaceKind::Cylinder, "cylinder", {"radius", "side", "axis"}, true, false, PathKind::Parallel},
+      {SurfaceKind::Torus, "torus", {"side", "major_radius", "minor_radius"}, true, false, PathKind::Parallel},
+      {SurfaceKind::Paraboloid, "paraboloid", {"side", "a", "b"}, true, true, PathKind::Parallel},
+      {SurfaceKind::Saddle, "saddle", {"side", "a", "b"}, false, true, PathKind::Meridian},
+      {SurfaceKind::Height, "height", {"side", "z"}, false, true, PathKind::Meridian},
+  };
+  return rows;
+}
+}  // namespace
+
+std::span<const SurfaceKindRow> surfaceKinds() { return table(); }
+
+const SurfaceKindRow& surfaceKindRow(SurfaceKind kind) {
+  for (const auto& row : table())
+    if (row.kind == kind) return row;
+  assert(false && "every SurfaceKind has a row");
+  return table().front();
+}
+
+const std::vector<std::string>& allSurfaceKeys() {
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> out;
+    for (const auto& row : table())
+      for (const auto& key : row.keys)
+        if (std::find(out.begin(), out.end(), key) == out.end()) out.push_back(key);
+    return out;
+  }();
+  return keys;
+}
+
+}  // namespace rollspin::scene

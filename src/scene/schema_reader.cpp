@@ -1,0 +1,510 @@
+#include "scene/schema_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "spin/propagator.hpp"
+
+namespace rollspin::scene::schema {
+
+std::string describeNode(const toml::node& node) {
+  std::ostringstream os;
+  switch (node.type()) {
+    case toml::node_type::string: os << "string \"" << node.as_string()->get() << "\""; break;
+    case toml::node_type::integer: os << "integer " << node.as_integer()->get(); break;
+    case toml::node_type::floating_point: os << "number " << node.as_floating_point()->get(); break;
+    case toml::node_type::boolean: os << "boolean " << (node.as_boolean()->get() ? "true" : "false"); break;
+    case toml::node_type::array: os << "an array"; break;
+    case toml::node_type::table: os << "a table"; break;
+    default: os << "a date/time"; break;
+  }
+  return os.str();
+}
+
+std::string joinKeys(const std::set<std::string>& keys) {
+  std::string out;
+  for (const auto& k : keys) out += (out.empty() ? "" : ", ") + k;
+  return out;
+}
+
+std::set<std::string> pathTableKeys() {
+  std::set<std::string> keys(allPathKeys().begin(), allPathKeys().end());
+  keys.insert("kind");
+  return keys;
+}
+
+namespace {
+
+// "\"frame6a\", \"rk45\"": the adaptive methods of spin's table, for messages.
+std::string adaptiveNames() {
+  std::set<std::string> names;
+  for (spin::Method m : spin::allMethods())
+    if (spin::isAdaptive(m)) names.emplace("\"" + std::string(spin::methodName(m)) + "\"");
+  return joinKeys(names);
+}
+
+
+
+}  // namespace
+
+const toml::table* Reader::section(const std::string& name, const std::set<std::string>& allowed) {
+  return subTable(root_, name, name, allowed);
+}
+
+// `parent`'s key `name` as a table whose keys are all in `allowed`; `full`
+// names it in messages and locations ("render", "segment[2].camera").
+const toml::table* Reader::subTable(const toml::table& parent, const std::string& name, const std::string& full,
+                                   const std::set<std::string>& allowed) {
+  const toml::node* node = parent.get(name);
+  if (node == nullptr) return nullptr;
+  const toml::table* t = node->as_table();
+  const std::string what = full == name ? "[" + name + "]" : full;
+  if (t == nullptr) fail(full, locOf(full, *node), "a table " + what, describeNode(*node));
+  spec_.locations[full] = locOf(full, *node);
+  for (auto&& [k, v] : *t) {
+    const std::string key = full + "." + std::string(k.str());
+    if (!allowed.contains(std::string(k.str()))) {
+      throw badInput(locOf(key, v), "{}: unknown key; {} accepts: {}", key, what, joinKeys(allowed));
+    }
+  }
+  return t;
+}
+
+const toml::node* Reader::get(const toml::table* t, const std::string& section, const std::string& key) {
+  if (t == nullptr) return nullptr;
+  const toml::node* node = t->get(key);
+  if (node != nullptr) spec_.locations[section + "." + key] = locOf(section + "." + key, *node);
+  return node;
+}
+
+std::optional<double> Reader::number(const toml::table* t, const std::string& section, const std::string& key) {
+  const toml::node* node = get(t, section, key);
+  if (node == nullptr) return std::nullopt;
+  const std::string full = section + "." + key;
+  if (!node->is_number()) fail(full, locOf(full, *node), "a number", describeNode(*node));
+  const double v = node->value<double>().value();
+  if (!std::isfinite(v)) fail(full, locOf(full, *node), "a finite number", describeNode(*node));
+  return v;
+}
+
+std::optional<long long> Reader::integer(const toml::table* t, const std::string& section, const std::string& key) {
+  const toml::node* node = get(t, section, key);
+  if (node == nullptr) return std::nullopt;
+  const std::string full = section + "." + key;
+  if (!node->is_integer()) fail(full, locOf(full, *node), "an integer", describeNode(*node));
+  return node->as_integer()->get();
+}
+
+std::optional<std::string> Reader::text(const toml::table* t, const std::string& section, const std::string& key,
+                                        const std::set<std::string>& choices) {
+  const toml::node* node = get(t, section, key);
+  if (node == nullptr) return std::nullopt;
+  const std::string full = section + "." + key;
+  std::string quoted;
+  for (const auto& c : choices) quoted += (quoted.empty() ? "" : " | ") + ("\"" + c + "\"");
+  if (!node->is_string()) fail(full, locOf(full, *node), quoted, describeNode(*node));
+  std::string v = node->as_string()->get();
+  if (!choices.contains(v)) fail(full, locOf(full, *node), quoted, describeNode(*node));
+  return v;
+}
+
+std::optional<Vec3> Reader::vector(const toml::table* t, const std::string& section, const std::string& key) {
+  const toml::node* node = get(t, section, key);
+  if (node == nullptr) return std::nullopt;
+  const std::string full = section + "." + key;
+  const toml::array* a = node->as_array();
+  const std::string expected = "an array of 3 finite numbers [x, y, z]";
+  if (a == nullptr || a->size() != 3) fail(full, locOf(full, *node), expected, describeNode(*node));
+  Vec3 v{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const toml::node& e = *a->get(i);
+    if (!e.is_number() || !std::isfinite(e.value<double>().value())) {
+      fail(full, locOf(full, *node), expected, "element " + std::to_string(i) + " = " + describeNode(e));
+    }
+    v[i] = e.value<double>().value();
+  }
+  return v;
+}
+
+std::optional<bool> Reader::boolean(const toml::table* t, const std::string& section, const std::string& key) {
+  const toml::node* node = get(t, section, key);
+  if (node == nullptr) return std::nullopt;
+  const std::string full = section + "." + key;
+  if (!node->is_boolean()) fail(full, locOf(full, *node), "true or false", describeNode(*node));
+  return node->as_boolean()->get();
+}
+
+std::optional<std::string> Reader::anyText(const toml::table* t, const std::string& section, const std::string& key) {
+  const toml::node* node = get(t, section, key);
+  if (node == nullptr) return std::nullopt;
+  const std::string full = section + "." + key;
+  if (!node->is_string()) fail(full, locOf(full, *node), "a string", describeNode(*node));
+  return node->as_string()->get();
+}
+
+// The camera keys of [render] or of a segment's camera table.
+
+std::optional<std::string> Reader::expression(const toml::table* t, const std::string& section,
+                                              const std::string& key) {
+  const toml::node* node = get(t, section, key);
+  if (node == nullptr) return std::nullopt;
+  const std::string full = section + "." + key;
+  if (!node->is_string()) fail(full, locOf(full, *node), "an expression string such as \"0.3*sin(x)\"", describeNode(*node));
+  std::string v = node->as_string()->get();
+  if (v.find_first_not_of(" \t") == std::string::npos) fail(full, locOf(full, *node), "a non-empty expression", "\"\"");
+  return v;
+}
+
+std::optional<std::vector<std::vector<double>>> Reader::pointList(const toml::table* t, const std::string& section,
+                                                                  const std::string& key) {
+  const toml::node* node = get(t, section, key);
+  if (node == nullptr) return std::nullopt;
+  const std::string full = section + "." + key;
+  const std::string expected = "an array of points, each [u, v] (surface parameters) or [x, y, z]";
+  const toml::array* a = node->as_array();
+  if (a == nullptr) fail(full, locOf(full, *node), expected, describeNode(*node));
+  std::vector<std::vector<double>> points;
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const toml::array* p = a->get(i)->as_array();
+    if (p == nullptr || (p->size() != 2 && p->size() != 3))
+      fail(full, locOf(full, *node), expected, "point " + std::to_string(i + 1) + " = " + describeNode(*a->get(i)));
+    std::vector<double> xs;
+    for (std::size_t k = 0; k < p->size(); ++k) {
+      const toml::node& e = *p->get(k);
+      if (!e.is_number() || !std::isfinite(e.value<double>().value()))
+        fail(full, locOf(full, *node), expected, "point " + std::to_string(i + 1) + " has " + describeNode(e));
+      xs.push_back(e.value<double>().value());
+    }
+    if (!points.empty() && xs.size() != points.front().size())
+      fail(full, locOf(full, *node), "all points with the same number of coordinates",
+           "point " + std::to_string(i + 1) + " with " + std::to_string(xs.size()));
+    points.push_back(std::move(xs));
+  }
+  return points;
+}
+
+void Reader::forbid(const toml::table* t, const std::string& section, const std::string& key,
+                    const std::string& why) {
+  if (t == nullptr) return;
+  if (const toml::node* node = t->get(key)) {
+    const std::string full = section + "." + key;
+    throw badInput(locOf(full, *node), "{}: {}", full, why);
+  }
+}
+
+// v / len, except that a vector already unit to round-off is kept as given,
+// so that a printed (normalised) scene reads back bit for bit.
+Vec3 unitVector(const Vec3& v, double len) {
+  if (std::abs(len - 1.0) <= 1e-15) return v;
+  return {v[0] / len, v[1] / len, v[2] / len};
+}
+
+double norm3(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+// The keys of a path table ([path], or a segment's path): kind and the
+// kind-specific keys, validated against the surface. `prefix` names the
+// table in messages and locations ("path", "segment[2].path").
+PathKind Reader::readPath(const toml::table* path, const std::string& prefix, PathSpec& target) {
+  const SurfaceKind sk = spec_.surface.kind;
+  const std::string skName = toString(sk);
+  const bool pathKindGiven = path != nullptr && path->get("kind") != nullptr;
+  std::set<std::string> pathNames;
+  for (const auto& row : pathKinds()) pathNames.emplace(row.name);
+  if (auto kind = text(path, prefix, "kind", pathNames)) {
+    for (const auto& row : pathKinds())
+      if (row.name == *kind) target.kind = row.kind;
+  } else if (sk != SurfaceKind::Plane) {
+    target.kind = surfaceKindRow(sk).defaultPath;  // a curved surface's natural path (e.g. a parallel)
+  }
+  const PathKind pk = target.kind;
+  const std::string pkName = toString(pk);
+  const bool lies = liesOn(pk, sk);
+  const std::string needs = describe(pathKindRow(pk).liesOn);
+  if (!lies) {
+    const std::string key = pathKindGiven ? (prefix + ".kind") : "surface.kind";
+    failAt(key, fmt::format("a {} path lies on a {}, but surface.kind is \"{}\" (the path would leave the surface)",
+                            pkName, needs, skName));
+  }
+  auto only = [&](const std::string& key, bool applies, const std::string& kinds) {
+    if (!applies) forbid(path, prefix, key, "applies to path kind " + kinds + " only; this path is a " + pkName +
+                                                " on a " + skName);
+  };
+  for (const auto& key : allPathKeys()) {
+    const KeyRule rule = pathKeyRule(key, pk, sk);
+    only(key, rule.applies, rule.kinds);
+  }
+  const bool onSphere = sk == SurfaceKind::Sphere;
+  const bool meridian = pk == PathKind::Meridian;
+
+  if (auto t = number(path, prefix, "turns")) {
+    if (*t <= 0.0) failAt(prefix + ".turns", fmt::format("expected a number of turns > 0, got {}", *t));
+    target.turns = *t;
+  }
+  if (auto d = text(path, prefix, "direction", {"ccw", "cw"})) target.counterClockwise = *d == "ccw";
+  if (pk == PathKind::Geodesic && !spec_.locations.contains(prefix + ".length")) target.length = 6.0;
+  if (auto len = number(path, prefix, "length")) {
+    if (*len <= 0.0) failAt(prefix + ".length", fmt::format("expected a length > 0, got {}", *len));
+    target.length = *len;
+  }
+  if (auto dv = vector(path, prefix, "direction_vector")) {
+    const double len = norm3(*dv);
+    if (len < 1e-12) failAt(prefix + ".direction_vector", "expected a non-zero vector, got [0, 0, 0]");
+    const Vec3 d = unitVector(*dv, len);
+    const Vec3& n = spec_.surface.normal;
+    const double along = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+    if (sk == SurfaceKind::Plane && std::abs(along) > 1e-9) {
+      failAt(prefix + ".direction_vector",
+             fmt::format("the {} leaves the surface: its direction has a component {:.6g} along the plane "
+                         "normal [{}, {}, {}]; expected a vector in the plane",
+                         pkName, along, n[0], n[1], n[2]));
+    }
+    target.directionVector = d;
+  }
+  if (auto r = number(path, prefix, "radius")) {
+    if (*r <= 0.0) failAt(prefix + ".radius", fmt::format("expected a radius > 0, got {}", *r));
+    target.radius = *r;
+  }
+  if (pk == PathKind::Parallel && sk == SurfaceKind::Paraboloid) {
+    if (spec_.surface.a != spec_.surface.b)
+      failAt(pathKindGiven ? (prefix + ".kind") : "surface.a",
+             fmt::format("a parallel needs a surface of revolution; this paraboloid has a = {} != b = {}",
+                         spec_.surface.a, spec_.surface.b));
+    if (!spec_.locations.contains(prefix + ".radius")) target.radius = 2.0;
+  }
+  auto colatitude = [&](const std::string& key, double& out) {
+    if (auto th = number(path, prefix, key)) {
+      if (!(*th > 0.0 && *th < 180.0))
+        failAt(prefix + "." + key, fmt::format("expected a colatitude in (0, 180) degrees, got {}", *th));
+      out = *th;
+    }
+  };
+  colatitude("colatitude_deg", target.colatitudeDeg);
+  colatitude("colatitude_start_deg", target.colatitudeStartDeg);
+  colatitude("colatitude_end_deg", target.colatitudeEndDeg);
+  if ((meridian && onSphere) || pk == PathKind::Loxodrome) {
+    if (target.colatitudeStartDeg == target.colatitudeEndDeg)
+      failAt(prefix + ".colatitude_end_deg", "expected colatitude_end_deg != colatitude_start_deg (an empty path)");
+  }
+  if (auto v = number(path, prefix, "tube_angle_deg")) target.tubeAngleDeg = *v;
+  if (auto v = number(path, prefix, "height")) target.height = *v;
+  if (auto v = number(path, prefix, "azimuth_deg")) target.azimuthDeg = *v;
+  if (auto v = number(path, prefix, "pitch_angle_deg")) {
+    if (!(std::abs(*v) < 90.0))
+      failAt(prefix + ".pitch_angle_deg", fmt::format("expected a pitch angle in (-90, 90) degrees, got {}", *v));
+    target.pitchAngleDeg = *v;
+  }
+  if (auto v = number(path, prefix, "heading_deg")) {
+    if (!(std::abs(*v) < 90.0))
+      failAt(prefix + ".heading_deg", fmt::format("expected a heading in (-90, 90) degrees from the meridians "
+                                             "(90 is a parallel: use kind = \"parallel\"), got {}", *v));
+    target.headingDeg = *v;
+  }
+  if (auto p = vector(path, prefix, "start_point")) target.startPoint = *p;
+  if (auto e = expression(path, prefix, "u")) target.u = *e;
+  if (auto e = expression(path, prefix, "v")) target.v = *e;
+  if (auto v = number(path, prefix, "t_start")) target.tStart = *v;
+  if (auto v = number(path, prefix, "t_end")) target.tEnd = *v;
+  if (pk == PathKind::Uv && !(target.tEnd > target.tStart))
+    failAt(spec_.locations.contains(prefix + ".t_end") ? (prefix + ".t_end") : (prefix + ".t_start"),
+           fmt::format("expected t_end > t_start, got [{}, {}]", target.tStart, target.tEnd));
+  if (auto pts = pointList(path, prefix, "points")) target.points = *pts;
+  if (auto c = boolean(path, prefix, "closed")) target.closed = *c;
+  if (auto i = text(path, prefix, "interpolation", {"spline", "polyline"})) target.interpolation = *i;
+  if (auto r = number(path, prefix, "corner_radius")) {
+    if (*r < 0.0) failAt(prefix + ".corner_radius", fmt::format("expected a radius >= 0, got {}", *r));
+    target.cornerRadius = *r;
+  }
+  for (const char* key : {"curvature_start", "curvature_rate"}) {
+    if (auto v = number(path, prefix, key)) {
+      if (std::abs(*v) > 1e6) failAt(prefix + "." + key, fmt::format("expected |value| <= 1e6, got {}", *v));
+      (std::string(key) == "curvature_start" ? target.curvatureStart : target.curvatureRate) = *v;
+    }
+  }
+  if (pk == PathKind::Points) {
+    const std::size_t need = target.closed ? 3 : 2;
+    if (target.points.size() < need)
+      throw badInput(spec_.locations.contains(prefix + ".points") ? where(prefix + ".points") : where(prefix),
+                     "{}.points: expected at least {} points for {} path, got {}", prefix, need,
+                     target.closed ? "a closed" : "an open", target.points.size());
+  }
+  return pk;
+}
+
+SceneSpec Reader::read() {
+  spec_.sourceFile = file_;
+  static const std::set<std::string> kSections{"ball",     "surface", "path",   "plate",     "solver",
+                                               "timeline", "render",  "labels", "animation", "segment"};
+  for (auto&& [k, v] : root_) {
+    const std::string key(k.str());
+    if (!kSections.contains(key)) {
+      throw badInput(locOf(key, v), "{}: unknown key; a scene has the tables: {}", key, joinKeys(kSections));
+    }
+  }
+
+  // [ball]
+  const toml::table* ball = section("ball", {"radius", "texture", "marker"});
+  if (auto r = number(ball, "ball", "radius")) {
+    if (*r <= 0.0) failAt("ball.radius", fmt::format("expected a radius > 0, got {}", *r));
+    spec_.ball.radius = *r;
+  }
+  if (auto t = anyText(ball, "ball", "texture")) {
+    if (t->empty()) failAt("ball.texture", "expected a PNG or JPG file name, got an empty string");
+    spec_.ball.texture = *t;
+  }
+  if (auto m = vector(ball, "ball", "marker")) {
+    const double len = norm3(*m);
+    if (len < 1e-12) failAt("ball.marker", "expected a non-zero vector (a direction in the ball), got [0, 0, 0]");
+    spec_.ball.marker = unitVector(*m, len);
+  }
+  const double R = spec_.ball.radius;
+
+  // [surface]
+  std::set<std::string> surfaceKeys(allSurfaceKeys().begin(), allSurfaceKeys().end());
+  surfaceKeys.insert("kind");
+  const toml::table* surface = section("surface", surfaceKeys);
+  std::set<std::string> surfaceNames;
+  for (const auto& row : surfaceKinds()) surfaceNames.emplace(row.name);
+  if (auto kind = text(surface, "surface", "kind", surfaceNames))
+    for (const auto& row : surfaceKinds())
+      if (row.name == *kind) spec_.surface.kind = row.kind;
+  const SurfaceKind sk = spec_.surface.kind;
+  const std::string skName = toString(sk);
+  const bool heightField = surfaceKindRow(sk).heightField;
+  auto surfaceOnly = [&](const std::string& key, bool applies, const std::string& kinds) {
+    if (!applies) forbid(surface, "surface", key, "applies to kind = " + kinds + " only; this surface is a " + skName);
+  };
+  for (const auto& key : allSurfaceKeys()) {
+    const KeyRule rule = surfaceKeyRule(key, sk);
+    surfaceOnly(key, rule.applies, rule.kinds);
+  }
+  auto positive = [&](const std::string& key, double& target) {
+    if (auto r = number(surface, "surface", key)) {
+      if (*r <= 0.0) failAt("surface." + key, fmt::format("expected a value > 0, got {}", *r));
+      target = *r;
+    }
+  };
+  if (auto n = vector(surface, "surface", "normal")) {
+    const double len = norm3(*n);
+    if (len < 1e-12) failAt("surface.normal", "expected a non-zero vector, got [0, 0, 0]");
+    spec_.surface.normal = unitVector(*n, len);
+  }
+  if (auto r = number(surface, "surface", "radius")) {
+    if (*r <= 0.0) failAt("surface.radius", fmt::format("expected a radius > 0, got {}", *r));
+    spec_.surface.radius = *r;
+  }
+  if (heightField) {
+    if (auto side = text(surface, "surface", "side", {"above", "below"}))
+      spec_.surface.side = *side == "above" ? SurfaceSide::Outside : SurfaceSide::Inside;
+  } else if (auto side = text(surface, "surface", "side", {"outside", "inside"})) {
+    spec_.surface.side = *side == "outside" ? SurfaceSide::Outside : SurfaceSide::Inside;
+  }
+  if (auto ax = vector(surface, "surface", "axis")) {
+    const double len = norm3(*ax);
+    if (len < 1e-12) failAt("surface.axis", "expected a non-zero vector, got [0, 0, 0]");
+    spec_.surface.axis = unitVector(*ax, len);
+  }
+  positive("major_radius", spec_.surface.majorRadius);
+  positive("minor_radius", spec_.surface.minorRadius);
+  positive("a", spec_.surface.a);
+  positive("b", spec_.surface.b);
+  if (auto z = expression(surface, "surface", "z")) spec_.surface.z = *z;
+
+  // Does the ball fit? (Along the path, app/ checks the curvature everywhere.)
+  const bool inside = spec_.surface.side == SurfaceSide::Inside;
+  auto mustFit = [&](double limit, const std::string& what, const std::string& surfaceKey) {
+    if (R < limit) return;
+    const std::string key = spec_.locations.contains("ball.radius") ? "ball.radius" : surfaceKey;
+    failAt(key, fmt::format("a ball of radius {} does not fit inside {} (needs ball.radius < {})", R, what, limit));
+  };
+  if (sk == SurfaceKind::Sphere && inside)
+    mustFit(spec_.surface.radius, fmt::format("a sphere of radius {}", spec_.surface.radius), "surface.radius");
+  if (sk == SurfaceKind::Cylinder && inside)
+    mustFit(spec_.surface.radius, fmt::format("a cylinder of radius {}", spec_.surface.radius), "surface.radius");
+  if (sk == SurfaceKind::Torus) {
+    if (!(spec_.surface.minorRadius < spec_.surface.majorRadius))
+      failAt(spec_.locations.contains("surface.minor_radius") ? "surface.minor_radius" : "surface.major_radius",
+             fmt::format("expected minor_radius < major_radius (a ring torus), got {} and {}",
+                         spec_.surface.minorRadius, spec_.surface.majorRadius));
+    if (inside)
+      mustFit(spec_.surface.minorRadius, fmt::format("a torus tube of radius {}", spec_.surface.minorRadius),
+              "surface.minor_radius");
+  }
+
+  // [plate] — Brockett's upper plate; the contact path is then derived.
+  const toml::table* plate = section("plate", {"radius"});
+  if (plate != nullptr) {
+    PlateSpec p;
+    auto r1 = number(plate, "plate", "radius");
+    if (!r1) throw badInput(where("plate"), "plate.radius: missing; [plate] needs the radius R1 of the circle each plate point describes");
+    if (*r1 <= 0.0) failAt("plate.radius", fmt::format("expected a radius > 0, got {}", *r1));
+    p.radius = *r1;
+    spec_.plate = p;
+  }
+
+  // [path]
+  const toml::table* path = section("path", pathTableKeys());
+  if (path != nullptr && root_.get("segment") != nullptr)
+    throw badInput(where("path"), "path: a scene has either one [path] or a storyboard of [[segment]] entries, "
+                                  "not both; move the [path] keys into a segment's path = {{ ... }}");
+  const PathKind pk = readPath(path, "path", spec_.path);
+  const bool pathKindGiven = path != nullptr && path->get("kind") != nullptr;
+  if (spec_.plate) {
+    if (pk != PathKind::Circle)
+      failAt(pathKindGiven ? "path.kind" : "surface.kind",
+             "with [plate] the contact path is the circle the plate drives; expected path.kind = \"circle\"");
+    if (spec_.locations.contains("path.radius"))
+      failAt("path.radius", "conflicts with [plate]: the contact circle's radius follows from plate.radius "
+                            "(R1/2); remove path.radius");
+  }
+
+  readSegments();
+
+  // [solver]
+  const toml::table* solver = section("solver", {"method", "steps", "tolerance"});
+  // The method names are spin's (one table there); the scene keeps the text.
+  std::set<std::string> methodNames;
+  for (spin::Method m : spin::allMethods()) methodNames.emplace(spin::methodName(m));
+  if (auto m = text(solver, "solver", "method", methodNames)) spec_.solver.method = *m;
+  if (auto n = integer(solver, "solver", "steps")) {
+    if (*n < 1 || *n > kMaxSolverSteps)
+      failAt("solver.steps", fmt::format("expected an integer in [1, 1e11], got {}", *n));
+    spec_.solver.steps = *n;
+  }
+  if (auto tol = number(solver, "solver", "tolerance")) {
+    if (!(*tol >= 1e-15 && *tol <= 1.0))
+      failAt("solver.tolerance", fmt::format("expected a tolerance in [1e-15, 1], got {}", *tol));
+    spec_.solver.tolerance = *tol;
+  }
+  // A tolerance and no step count: the adaptive geometric method by default.
+  // Steps and tolerance each belong to one kind of method.
+  const bool methodGiven = spec_.locations.contains("solver.method");
+  const bool adaptive = spin::isAdaptive(*spin::parseMethod(spec_.solver.method));  // a name from the table
+  if (!methodGiven && spec_.solver.tolerance && !spec_.solver.steps)
+    spec_.solver.method = spin::methodName(spin::Method::Frame6a);
+  else if (spec_.solver.tolerance && !adaptive)
+    failAt("solver.tolerance", fmt::format("applies to the adaptive methods ({}), but "
+                                           "solver.method is \"{}\"; remove solver.tolerance or solver.steps",
+                                           adaptiveNames(), spec_.solver.method));
+  if (adaptive && spec_.solver.steps)
+    failAt("solver.steps", fmt::format("method \"{}\" chooses its own steps; set solver.tolerance instead",
+                                       spec_.solver.method));
+
+  // [timeline]
+  const toml::table* timeline = section("timeline", {"samples"});
+  if (auto n = integer(timeline, "timeline", "samples")) {
+    if (*n < 2 || *n > kMaxTimelineSamples)
+      failAt("timeline.samples", fmt::format("expected an integer in [2, 1e8], got {}", *n));
+    spec_.timeline.samples = *n;
+  }
+
+  readRender();
+  readLabels();
+  readAnimation();
+  return spec_;
+}
+
+// "a.b=value" → (["a","b"], toml node). Bare strings need no quotes.
+
+}  // namespace rollspin::scene::schema

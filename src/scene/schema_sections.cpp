@@ -1,0 +1,235 @@
+// The presentation sections of a scene: [render], [labels], [animation],
+// the storyboard's [[segment]] entries and their cameras.
+#include "scene/schema_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rollspin::scene::schema {
+
+CameraSpec Reader::readCamera(const toml::table* t, const std::string& section) {
+  CameraSpec c;
+  c.azimuthDeg = number(t, section, "azimuth_deg");
+  if ((c.elevationDeg = number(t, section, "elevation_deg")) && !(*c.elevationDeg > -90.0 && *c.elevationDeg < 90.0))
+    failAt(section + ".elevation_deg",
+           fmt::format("expected an elevation in (-90, 90) degrees, got {}", *c.elevationDeg));
+  if ((c.distance = number(t, section, "distance")) && *c.distance <= 0.0)
+    failAt(section + ".distance", fmt::format("expected a camera distance > 0, got {}", *c.distance));
+  c.target = vector(t, section, "target");
+  c.follow = boolean(t, section, "follow");
+  if ((c.fovDeg = number(t, section, "fov_deg")) && !(*c.fovDeg >= 5.0 && *c.fovDeg <= 120.0))
+    failAt(section + ".fov_deg",
+           fmt::format("expected a vertical field of view in [5, 120] degrees, got {}", *c.fovDeg));
+  return c;
+}
+
+// [[segment]] — a storyboard (README "Storyboards"). Each entry moves along
+// its own path (the [path] keys, validated the same way) or holds; timing,
+// caption, title and camera are per segment. Keys are named segment[k].…
+// with k counted from 1.
+void Reader::readSegments() {
+  const toml::node* node = root_.get("segment");
+  if (node == nullptr) return;
+  const toml::array* entries = node->as_array();
+  if (entries == nullptr || entries->empty() || !entries->is_array_of_tables())
+    fail("segment", locOf("segment", *node), "[[segment]] tables (an array of tables)", describeNode(*node));
+  spec_.locations["segment"] = locOf("segment", *node);
+  if (spec_.plate)
+    failAt("plate", "a storyboard's segments have their own paths; [plate] drives one circle, so it cannot be "
+                    "combined with [[segment]]");
+  if (entries->size() > kMaxSegments)
+    throw badInput(where("segment"), "segment: expected at most {} segments, got {}", kMaxSegments, entries->size());
+  const bool onPlane = spec_.surface.kind == SurfaceKind::Plane;
+  for (std::size_t i = 0; i < entries->size(); ++i) {
+    const std::string prefix = SceneSpec::segmentKey(i);
+    const toml::node& entry = *entries->get(i);
+    spec_.locations[prefix] = locOf(prefix, entry);
+    const toml::table& table = *entry.as_table();
+    for (auto&& [k, v] : table) {
+      static const std::set<std::string> kSegmentKeys{"path", "hold", "duration", "speed", "caption", "title", "camera"};
+      if (!kSegmentKeys.contains(std::string(k.str())))
+        throw badInput(locOf(prefix + "." + std::string(k.str()), v), "{}.{}: unknown key; a segment accepts: {}",
+                       prefix, k.str(), joinKeys(kSegmentKeys));
+    }
+    SegmentSpec seg;
+    const toml::table* path = subTable(table, "path", prefix + ".path", pathTableKeys());
+    const std::optional<double> hold = number(&table, prefix, "hold");
+    if (path == nullptr && !hold)
+      throw badInput(where(prefix), "{}: expected path = {{ kind = ..., ... }} (a motion) or hold = SECONDS (a rest)",
+                     prefix);
+    if (path != nullptr && hold)
+      failAt(prefix + ".hold", "a segment either moves (path) or holds (hold), not both; split it into two segments");
+    if (path != nullptr) {
+      seg.path = PathSpec{};
+      const PathKind pk = readPath(path, prefix + ".path", *seg.path);
+      // On a plane, segments after the first continue from the previous end
+      // point along its end heading (tangent-continuous).
+      const bool placedByPrevious = pk == PathKind::Line || pk == PathKind::Circle || pk == PathKind::Clothoid;
+      if (i > 0 && onPlane && placedByPrevious && seg.path->directionVector)
+        failAt(prefix + ".path.direction_vector",
+               "a segment after the first starts where the previous one ended, along its end heading "
+               "(tangent-continuous); remove direction_vector");
+    } else {
+      if (!(*hold > 0.0 && *hold <= 3600.0))
+        failAt(prefix + ".hold", fmt::format("expected a hold in (0, 3600] seconds, got {}", *hold));
+      seg.hold = *hold;
+    }
+    if ((seg.duration = number(&table, prefix, "duration"))) {
+      if (!path) failAt(prefix + ".duration", "applies to a motion (a segment with a path); a hold's length is hold");
+      if (!(*seg.duration > 0.0 && *seg.duration <= 36000.0))
+        failAt(prefix + ".duration", fmt::format("expected a duration in (0, 36000] seconds, got {}", *seg.duration));
+    }
+    if ((seg.speed = number(&table, prefix, "speed"))) {
+      if (!path) failAt(prefix + ".speed", "applies to a motion (a segment with a path); a hold's length is hold");
+      if (!(*seg.speed > 0.0)) failAt(prefix + ".speed", fmt::format("expected an arc length per second > 0, got {}", *seg.speed));
+      if (seg.duration)
+        failAt(prefix + ".speed", fmt::format("conflicts with {}.duration: give the duration or the speed, not both", prefix));
+    }
+    if (auto c = anyText(&table, prefix, "caption")) seg.caption = *c;
+    seg.title = anyText(&table, prefix, "title");
+    const std::set<std::string> cameraKeys(kCameraKeys.begin(), kCameraKeys.end());
+    seg.camera = readCamera(subTable(table, "camera", prefix + ".camera", cameraKeys), prefix + ".camera");
+    spec_.segments.push_back(std::move(seg));
+  }
+  // A segment's camera target stops a follow, and follow = true drops a
+  // target (README "Storyboards"); one table giving both is contradictory.
+  for (std::size_t i = 0; i < spec_.segments.size(); ++i) {
+    const CameraSpec& c = spec_.segments[i].camera;
+    if (c.target && c.follow && *c.follow)
+      failAt(SceneSpec::segmentKey(i) + ".camera.target",
+             "conflicts with follow = true in the same camera (the camera then targets the ball)");
+  }
+}
+
+// [render] — image size, layout, strobe, text, camera (render issue).
+void Reader::readRender() {
+  const toml::table* render = section(
+      "render", {"width", "height", "layout", "strobe", "title", "labels", "transparent", "msaa", "azimuth_deg",
+                 "elevation_deg", "distance", "target", "follow", "fov_deg", "format", "trails", "shadow"});
+  RenderSpec& r = spec_.render;
+  constexpr long long kMaxSide = 8192;  // "8K": the renderer's size limit
+  for (const char* key : {"width", "height"}) {
+    if (auto n = integer(render, "render", key)) {
+      if (*n < 1 || *n > kMaxSide)
+        failAt(std::string("render.") + key, fmt::format("expected an image size in [1, {}] pixels, got {}", kMaxSide, *n));
+      (std::string(key) == "width" ? r.width : r.height) = *n;
+    }
+  }
+  if (auto l = text(render, "render", "layout", {"side-by-side", "inset", "ball", "twin"}))
+    r.layout = *l == "side-by-side" ? RenderLayout::SideBySide
+             : *l == "inset"        ? RenderLayout::Inset
+             : *l == "ball"         ? RenderLayout::Ball
+                                    : RenderLayout::Twin;
+  if (auto n = integer(render, "render", "strobe")) {
+    if (*n < 0 || *n == 1 || *n > 200)
+      failAt("render.strobe", fmt::format("expected 0 (off) or a number of positions in [2, 200], got {}", *n));
+    r.strobe = *n;
+  }
+  if (auto t = anyText(render, "render", "title")) r.title = *t;
+  if (auto b = boolean(render, "render", "labels")) r.labels = *b;
+  if (auto b = boolean(render, "render", "transparent")) r.transparent = *b;
+  if (auto n = integer(render, "render", "msaa")) {
+    if (*n != 1 && *n != 2 && *n != 4) failAt("render.msaa", fmt::format("expected 1, 2 or 4 samples, got {}", *n));
+    r.msaa = *n;
+  }
+  const CameraSpec camera = readCamera(render, "render");
+  if (camera.azimuthDeg) r.azimuthDeg = *camera.azimuthDeg;
+  if (camera.elevationDeg) r.elevationDeg = *camera.elevationDeg;
+  if (camera.distance) r.distance = *camera.distance;
+  if (camera.target) r.target = *camera.target;
+  if (camera.follow) r.follow = *camera.follow;
+  if (camera.fovDeg) r.fovDeg = *camera.fovDeg;
+  if (auto t = boolean(render, "render", "trails")) r.trails = *t;
+  if (auto sh = boolean(render, "render", "shadow")) r.shadow = *sh;
+  if (r.follow && spec_.locations.contains("render.target"))
+    failAt("render.target", "conflicts with render.follow = true (the camera then targets the ball)");
+  if (auto f = text(render, "render", "format", {"mp4", "png"}))
+    r.format = *f == "mp4" ? VideoFormat::Mp4 : VideoFormat::Png;
+}
+
+// [labels] — which facts of the scene are printed (after [surface] and
+// [path]: a fact must apply to their kinds).
+void Reader::readLabels() {
+  const toml::table* labels = section("labels", {"facts"});
+  const toml::node* node = get(labels, "labels", "facts");
+  if (node == nullptr) return;
+  const std::string key = "labels.facts";
+  std::string names;
+  for (const auto& n : kFactNames) names += (names.empty() ? "" : ", ") + ("\"" + n + "\"");
+  const std::string expected = "\"auto\", \"none\" or a list of facts from " + names;
+  if (const auto* word = node->as_string()) {
+    if (word->get() == "auto") return;
+    if (word->get() == "none") {
+      spec_.labels.facts = std::vector<Fact>{};
+      return;
+    }
+    fail(key, locOf(key, *node), expected, describeNode(*node));
+  }
+  const toml::array* list = node->as_array();
+  if (list == nullptr) fail(key, locOf(key, *node), expected, describeNode(*node));
+  std::vector<Fact> facts;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const toml::node& e = *list->get(i);
+    const auto it = e.is_string() ? std::find(kFactNames.begin(), kFactNames.end(), e.as_string()->get()) : kFactNames.end();
+    if (it == kFactNames.end()) fail(key, locOf(key, *node), expected, "element " + std::to_string(i) + " = " + describeNode(e));
+    const Fact f = static_cast<Fact>(it - kFactNames.begin());
+    if (std::find(facts.begin(), facts.end(), f) != facts.end())
+      failAt(key, fmt::format("\"{}\" is listed twice", *it));
+    const KeyRule rule = factRule(f, spec_);
+    if (!rule.applies) failAt(key, fmt::format("\"{}\" applies to {} only", *it, rule.kinds));
+    facts.push_back(f);
+  }
+  spec_.labels.facts = facts;
+}
+
+// [animation] — frame time → arc length, and the H.264 settings (video issue).
+void Reader::readAnimation() {
+  const toml::table* animation =
+      section("animation", {"fps", "duration", "speed", "easing", "hold", "crf", "preset"});
+  AnimationSpec& a = spec_.animation;
+  if (const toml::node* node = get(animation, "animation", "fps")) {
+    const std::string expected =
+        "frames per second in [1, 240]: an integer, an NTSC rate 23.976 | 29.97 | 59.94 (exactly 24000/1001 …), a "
+        "decimal with at most 3 places, or a string \"num/den\" such as \"30000/1001\"";
+    std::optional<FrameRate> rate;
+    if (node->is_integer()) {
+      const long long n = node->as_integer()->get();
+      if (n >= 1 && n <= 240) rate = FrameRate{n, 1};
+    } else if (node->is_floating_point()) {
+      rate = frameRateFromDecimal(node->as_floating_point()->get());
+    } else if (node->is_string()) {
+      rate = frameRateFromText(node->as_string()->get());
+    }
+    if (!rate || !(rate->value() >= 1.0 && rate->value() <= 240.0))
+      fail("animation.fps", locOf("animation.fps", *node), expected, describeNode(*node));
+    a.fps = *rate;
+  }
+  if (auto d = number(animation, "animation", "duration")) {
+    if (!(*d > 0.0 && *d <= 36000.0))
+      failAt("animation.duration", fmt::format("expected a duration in (0, 36000] seconds, got {}", *d));
+    a.duration = *d;
+  }
+  if (auto v = number(animation, "animation", "speed")) {
+    if (!(*v > 0.0)) failAt("animation.speed", fmt::format("expected an arc length per second > 0, got {}", *v));
+    if (spec_.locations.contains("animation.duration"))
+      failAt("animation.speed", "conflicts with animation.duration: give the duration or the speed, not both");
+    a.speed = *v;
+  }
+  if (auto e = text(animation, "animation", "easing", {"linear", "smooth"}))
+    a.easing = *e == "linear" ? Easing::Linear : Easing::Smooth;
+  if (auto h = number(animation, "animation", "hold")) {
+    if (!(*h >= 0.0 && *h <= 3600.0))
+      failAt("animation.hold", fmt::format("expected a hold in [0, 3600] seconds, got {}", *h));
+    a.hold = *h;
+  }
+  if (auto c = number(animation, "animation", "crf")) {
+    if (!(*c >= 0.0 && *c <= 51.0)) failAt("animation.crf", fmt::format("expected a CRF in [0, 51], got {}", *c));
+    a.crf = *c;
+  }
+  if (auto p = text(animation, "animation", "preset",
+                    {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}))
+    a.preset = *p;
+}
+
+
+}  // namespace rollspin::scene::schema

@@ -9,10 +9,13 @@
 #include "motion/solve_job.hpp"
 #include "core/error.hpp"
 #include "core/stage_log.hpp"
+#include "spin/closed_forms.hpp"
 #include "spin/field.hpp"
 #include "spin/propagator.hpp"
 
 namespace rollspin::motion {
+
+namespace closed_form = spin::closed_form;
 
 namespace {
 
@@ -126,13 +129,9 @@ SceneFacts::SceneFacts(const scene::SceneSpec& spec, const RollingModel& model, 
     DeltaFact d;
     d.measured = rollingSum_.back().norm();
     d.onSphere = onSphere;
-    if (onSphere) {
-      const double th = spec.path.colatitudeDeg * kPi / 180.0, rho = spec.surface.radius * std::sin(th);
-      d.closedForm = 2.0 * kPi * turnsOfPath * std::sqrt(rho * rho / (R * R) + std::cos(th) * std::cos(th));
-    } else {
-      const double r = planeCircleRadius(model);
-      d.closedForm = 2.0 * kPi * turnsOfPath * std::sqrt(1.0 + (r / R) * (r / R));
-    }
+    d.closedForm = turnsOfPath * (onSphere ? closed_form::sphereParallelDelta(spec.surface.radius,
+                                                                              spec.path.colatitudeDeg * kPi / 180.0, R)
+                                           : closed_form::planeCircleDelta(planeCircleRadius(model), R));
     d.labAngle = spin::rotationAngleAxis(gridU_.back()).angle;
     d.closedFormMod = std::abs(wrapAngle(d.closedForm));
     d.wholeCircuits = std::abs(turnsOfPath - std::round(turnsOfPath)) < 1e-9;
@@ -146,7 +145,7 @@ SceneFacts::SceneFacts(const scene::SceneSpec& spec, const RollingModel& model, 
   if (shows(Fact::Marks)) {
     MarksFact m;
     m.circleRadius = planeCircleRadius(model);
-    m.beta = kPi / std::sqrt(1.0 + (m.circleRadius / R) * (m.circleRadius / R));
+    m.beta = closed_form::tennisBallBeta(m.circleRadius, R);
     const double step = m.beta * m.circleRadius;
     for (int k = 0; k * step <= L * (1.0 + 1e-12); ++k) m.s.push_back(std::min(L, k * step));
     const std::vector<Su2> u = solveAt(spec, model, m.s);

@@ -18,11 +18,13 @@
 #include "kinematics/rolling_kinematics.hpp"
 #include "report/report.hpp"
 #include "report/report_support.hpp"
+#include "spin/closed_forms.hpp"
 #include "spin/field.hpp"
 
 namespace rollspin::report {
 
 namespace {
+namespace closed_form = spin::closed_form;
 constexpr double kPi = std::numbers::pi;
 constexpr double kAgree = 1e-8;  // rad: closed-form claims (the solver is ~1e-12, the oracle ~1e-10)
 using geometry::Vec3;
@@ -46,15 +48,6 @@ struct Claim {
   double kinematicCheck = -1.0;
   std::string checkedAt;
 };
-
-std::shared_ptr<const geometry::ContactPath> circle(double r, double turns = 1.0) {
-  auto plane = std::make_shared<const geometry::Plane>(Vec3::UnitZ());
-  return std::make_shared<geometry::PlaneCirclePath>(plane, Vec3::Zero(), Vec3::UnitX(), r, turns, true);
-}
-std::shared_ptr<const geometry::ContactPath> parallel(double r, bool outside, double theta) {
-  auto sphere = std::make_shared<const geometry::Sphere>(r, outside ? geometry::Side::Outside : geometry::Side::Inside);
-  return std::make_shared<geometry::SphereParallelPath>(sphere, theta, 1.0, true);
-}
 
 spin::Su2 solve(const geometry::ContactPath& path, double R) {
   return spin::Propagator(path, R, spin::Method::Frame6a, 0, 1e-12).solveFinal().final;
@@ -125,7 +118,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
       auto path = circle(r);
       const geometry::DarbouxSample f = path->at(0.0);
       const Vec3 stick = (r * f.tangentNormal - R * f.normal).normalized();
-      const double delta = 2 * kPi * std::sqrt(1 + (r / R) * (r / R));
+      const double delta = closed_form::planeCircleDelta(r, R);
       const spin::Su2 predicted = -spin::expRotation(delta * stick);
       c.rows.push_back(spinorRow(fmt::format("r/R = {:g}", r / R), path, R,
                                  [&](const spin::Su2& u) { return spin::spinorDistance(u, predicted); },
@@ -137,7 +130,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
     Claim c{"tennis-ball", "r = R: each path angle β = π/√2 (127°) turns the ball by π about the moving 45° axis",
             "U(s) at s = kRβ against exp(−(i/2) β n·σ) exp(−(i/2) kπ ê₄₅·σ), ê₄₅ ∝ u₀ − n"};
     for (int k = 1; k <= 6; ++k) {
-      const double beta = k * kPi / std::sqrt(2.0);
+      const double beta = k * closed_form::tennisBallBeta(R, R);
       auto path = circle(R, beta / (2 * kPi));
       const geometry::DarbouxSample f = path->at(0.0);
       const Vec3 axis45 = (f.tangentNormal - f.normal).normalized();
@@ -155,7 +148,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
             "max over 400 samples of |v_top − 2t|, v_top = dC/ds + R ω × n from the kinematic oracle (finite "
             "differences of C, no curvature); 2t is the plate velocity for a contact circle of radius R1/2"};
     for (double r1 : {0.5, 1.0, 2.0, 6.0}) {
-      auto path = circle(r1 / 2);
+      auto path = circle(closed_form::brockettContactRadius(r1));
       const kinematics::RollingKinematics kin(*path, R, {1000, 0.0});
       double worst = 0.0;
       for (int k = 0; k <= 400; ++k) {
@@ -184,7 +177,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
       for (double th : thetas) {
         if (th == 90) continue;  // tan θ: the formula's limit is the great circle
         const double t = th * kPi / 180;
-        const double delta = 2 * kPi * std::cos(t) * std::sqrt(1 + std::pow(r * std::tan(t) / R, 2));
+        const double delta = closed_form::paperOutsideDelta(r, t, R);
         c.rows.push_back(spinorRow(fmt::format("r/R = {:g}, θ = {:g}°", r / R, th), parallel(r, true, t), R,
                                    [&](const spin::Su2& u) { return angleDeviation(-u, delta); },
                                    fmt::format("δ₊ = {:.9f}", delta)));
@@ -212,9 +205,8 @@ ReportOutcome paperReport(const ReportOptions& options) {
     for (double r : {1.5, 2.0, 3.0, 5.0, 10.0})
       for (double th : thetas) {
         const double t = th * kPi / 180;
-        const double paper = 2 * kPi * std::sqrt(1 + std::pow(std::sin(t), 2) * (r - 3 * R) * (r - R) / (R * R));
-        const double rho = r * std::sin(t);
-        const double derived = 2 * kPi * std::sqrt(rho * rho / (R * R) + std::pow(std::cos(t), 2));
+        const double paper = closed_form::paperInsideDelta(r, t, R);
+        const double derived = closed_form::sphereParallelDelta(r, t, R);
         auto path = parallel(r, false, t);
         const std::string where = fmt::format("r/R = {:g}, θ = {:g}°", r / R, th);
         c.rows.push_back(spinorRow(where, path, R, [&](const spin::Su2& u) { return angleDeviation(-u, paper); },

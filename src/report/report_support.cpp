@@ -9,10 +9,22 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "geometry/analytic_paths.hpp"
 #include "kinematics/rolling_kinematics.hpp"
 #include "spin/field.hpp"
 
 namespace rollspin::report {
+
+std::shared_ptr<const geometry::ContactPath> circle(double r, double turns) {
+  auto plane = std::make_shared<const geometry::Plane>(geometry::Vec3::UnitZ());
+  return std::make_shared<geometry::PlaneCirclePath>(plane, geometry::Vec3::Zero(), geometry::Vec3::UnitX(), r, turns,
+                                                     true);
+}
+
+std::shared_ptr<const geometry::ContactPath> parallel(double r, bool outside, double theta) {
+  auto sphere = std::make_shared<const geometry::Sphere>(r, outside ? geometry::Side::Outside : geometry::Side::Inside);
+  return std::make_shared<geometry::SphereParallelPath>(sphere, theta, 1.0, true);
+}
 
 namespace {
 std::vector<spin::Su2> runAt(const geometry::ContactPath& path, double R, spin::Method m, long long steps,

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,12 @@
 namespace rollspin::report {
 
 inline constexpr double kEpsilon = 2.220446049250313e-16;  // 2⁻⁵²
+
+// The reports' test paths: a circle of radius r on the plane z = 0 (from
+// (r, 0, 0), counter-clockwise), and the parallel at colatitude theta on a
+// sphere of radius r, outside or inside, once round.
+[[nodiscard]] std::shared_ptr<const geometry::ContactPath> circle(double r, double turns = 1.0);
+[[nodiscard]] std::shared_ptr<const geometry::ContactPath> parallel(double r, bool outside, double theta);
 
 struct Reference {
   std::vector<double> sampleS;

@@ -22,15 +22,6 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 using geometry::Vec3;
 
-std::shared_ptr<const geometry::ContactPath> circle(double r, double turns = 1.0) {
-  auto plane = std::make_shared<const geometry::Plane>(Vec3::UnitZ());
-  return std::make_shared<geometry::PlaneCirclePath>(plane, Vec3::Zero(), Vec3::UnitX(), r, turns, true);
-}
-std::shared_ptr<const geometry::ContactPath> parallel(double r, bool outside, double theta) {
-  auto sphere = std::make_shared<const geometry::Sphere>(r, outside ? geometry::Side::Outside : geometry::Side::Inside);
-  return std::make_shared<geometry::SphereParallelPath>(sphere, theta, 1.0, true);
-}
-
 // Signed solid angle enclosed by the closed loop of B̂(s) = −ω̂(s), seen
 // from +z: ∮ (1 − cos ϑ) dφ, counter-clockwise positive (the loop must not
 // pass through the poles).

@@ -194,6 +194,8 @@ void expectContiguous(const std::vector<const Part*>& sorted) {
   for (std::size_t k = 1; k < sorted.size(); ++k) {
     const Part& prev = *sorted[k - 1];
     const Part& cur = *sorted[k];
+    std::error_code ec;
+    if (fs::equivalent(prev.path, cur.path, ec)) throw badInput(cur.loc(), "is given twice");
     if (cur.tags.firstFrame > prev.tags.lastFrame + 1)
       throw badInput(cur.loc(), "frames {}-{} are missing between {} ({}) and this part ({})",
                      prev.tags.lastFrame + 1, cur.tags.firstFrame - 1, prev.name, prev.range(), cur.range());

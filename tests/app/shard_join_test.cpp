@@ -226,38 +226,37 @@ TEST_F(ShardJoin, JoinedClipHasEveryFrameOnOneTimelineAndMatchesTheFullRender) {
   EXPECT_EQ(test::readFile(log), "") << "decoder messages";
 }
 
-TEST_F(ShardJoin, JoinRefusesPartsOfAnotherScene) {
+// One test for every refusal: each ctest process renders the fixture anew.
+TEST_F(ShardJoin, JoinRefusesPartsThatDoNotBelongTogether) {
+  SCOPED_TRACE("another scene");
   const fs::path other = test::freshTempDir("shard_join_scene") / "other.part-2-of-3.mp4";
   // The same size, timing and range, so only the scene differs.
   const auto r = test::runRollspin(tiny({"render", scene("wall.toml"), "--frames", "10:19", "-o", other.string()}));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   expectRefused({part(1), other, part(3)}, other, "different scene");
-}
 
-TEST_F(ShardJoin, JoinRefusesAMissingPart) {
+  SCOPED_TRACE("a missing part");
   expectRefused({part(1), part(3)}, part(3), "frames 10-19 are missing");
   expectRefused({part(2), part(3)}, part(2), "frames 0-9 of the 30-frame clip are missing");
   expectRefused({part(1), part(2)}, part(2), "frames 20-29 of the 30-frame clip are missing");
-}
 
-TEST_F(ShardJoin, JoinRefusesAnOverlap) {
+  SCOPED_TRACE("an overlap");
   const fs::path extra = test::freshTempDir("shard_join_overlap") / "clip.frames_5-14.mp4";
-  const auto r = test::runRollspin(tiny({"render", scene("lollipop.toml"), "--frames", "5:14", "-o", extra.string()}));
-  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto overlapping =
+      test::runRollspin(tiny({"render", scene("lollipop.toml"), "--frames", "5:14", "-o", extra.string()}));
+  ASSERT_EQ(overlapping.exitCode, 0) << overlapping.err;
   expectRefused({part(1), extra, part(2), part(3)}, extra, "overlaps");
   expectRefused({part(1), part(2), part(2), part(3)}, part(2), "is given twice");
-}
 
-TEST_F(ShardJoin, JoinRefusesADifferentSize) {
+  SCOPED_TRACE("another size");
   const fs::path big = test::freshTempDir("shard_join_size") / "clip.part-2-of-3.mp4";
-  const auto r =
+  const auto bigger =
       test::runRollspin(tiny({"render", scene("lollipop.toml"), "--shard", "2/3", "-o", big.parent_path() / "clip.mp4"},
                              "192x108"));
-  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_EQ(bigger.exitCode, 0) << bigger.err;
   expectRefused({part(1), big, part(3)}, big, "is 192x108, but");
-}
 
-TEST_F(ShardJoin, JoinRefusesAFileThatIsNotAPartAndAWrongContainer) {
+  SCOPED_TRACE("not a rollspin part; another container");
   const fs::path plain = test::freshTempDir("shard_join_plain") / "plain.mp4";
   const std::string make = "ffmpeg -nostdin -v error -f lavfi -i testsrc=size=160x90:rate=30:duration=1 -c:v libx264 " +
                            shellQuote(plain.string());

@@ -14,7 +14,7 @@ packages=(
   libmuparser-dev
   gnuplot-nox
   clang libclang-rt-14-dev time
-  parallel
+  parallel rsync jq
 )
 
 missing=()

@@ -5,7 +5,8 @@
 #   bash scripts/render_parallel.sh SCENE OUT.mp4 [options] [-- render options]
 #
 #   -n N           shards (default: this machine's cores; with --hosts, 2 per host line)
-#   -j J           shards at once on each machine (default: one per core)
+#   -j J           shards at once on each machine (default 50%: one per two cores, as one
+#                  render already keeps two busy: the renderer and the encoder)
 #   --hosts FILE   GNU parallel's --sshloginfile (one [user@]host per line, ":" = here):
 #                  the scene goes to each host resolved (`rollspin scene --print`, so
 #                  `extends` needs no other file) with --transferfile, each part comes
@@ -17,7 +18,7 @@
 # rollspin here: $ROLLSPIN, else this clone's build/rollspin, else `rollspin` in PATH.
 set -euo pipefail
 
-usage() { sed -n '2,17p' "$0"; }
+usage() { sed -n '2,18p' "$0"; }
 [ $# -ge 2 ] || { usage >&2; exit 2; }
 scene=$1 out=$2
 shift 2
@@ -46,8 +47,7 @@ if [ -z "$shards" ]; then
   if [ -n "$hosts" ]; then shards=$((2 * $(grep -cv '^[[:space:]]*\(#\|$\)' "$hosts"))); else shards=$(nproc); fi
 fi
 [[ "$shards" =~ ^[1-9][0-9]*$ ]] || { echo "render_parallel.sh: -n expects a positive count, got $shards" >&2; exit 2; }
-jobs_opt=()
-[ -z "$jobs" ] || jobs_opt=(-j "$jobs")
+jobs_opt=(-j "${jobs:-50%}")
 
 out_dir=$(dirname "$out")
 file=$(basename "$out")

@@ -84,7 +84,8 @@ Input openPart(const fs::path& path, const SourceLoc& loc) {
 std::map<std::string, std::string> metadataOf(const AVFormatContext& input) {
   std::map<std::string, std::string> out;
   const AVDictionaryEntry* e = nullptr;
-  while ((e = av_dict_get(input.metadata, "", e, AV_DICT_IGNORE_SUFFIX)) != nullptr) out[e->key] = e->value;
+  // Matroska (WebM) stores tag names in upper case.
+  while ((e = av_dict_get(input.metadata, "", e, AV_DICT_IGNORE_SUFFIX)) != nullptr) out[lowercase(e->key)] = e->value;
   return out;
 }
 
@@ -313,19 +314,24 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
   av_dict_free(&options);
   check(headerRet, "writing the header");
 
-  // Pass 2: copy the packets, each part shifted so its first frame lands at
-  // its index in the clip. Decoding timestamps keep the encoder's reorder
-  // delay, so they run on across the joins too (checked).
+  // Pass 2: copy the packets, each moved to its frame's index in the clip.
+  // Decoding timestamps move with their packet and keep the encoder's
+  // reorder delay, so they run on across the joins too (checked).
   const AVRational frameDuration = av_inv_q(ref.frameRate);
   std::int64_t lastDts = std::numeric_limits<std::int64_t>::min();
   const Packet packet(av_packet_alloc());
   if (!packet) throw std::bad_alloc();
   for (const Part* part : sorted) {
     const Input input = openPart(part->path, part->loc());
-    const std::int64_t shift = av_rescale_q(part->tags.firstFrame, frameDuration, ref.timeBase) - part->firstPts;
     int ret = 0;
     while ((ret = av_read_frame(input.get(), packet.get())) >= 0) {
-      packet->pts += shift;
+      // The packet's frame in the part, then in the clip, then its tick:
+      // exact where a frame is a whole number of ticks (MP4), and rounded
+      // as a single render rounds it where not (WebM's milliseconds).
+      const std::int64_t frameInPart = av_rescale_q(packet->pts - part->firstPts, ref.timeBase, frameDuration);
+      const std::int64_t pts = av_rescale_q(part->tags.firstFrame + frameInPart, frameDuration, ref.timeBase);
+      const std::int64_t shift = pts - packet->pts;
+      packet->pts = pts;
       if (packet->dts != AV_NOPTS_VALUE) {
         packet->dts += shift;
         if (packet->dts <= lastDts) {

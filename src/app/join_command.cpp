@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/interrupt_guard.hpp"
 #include "core/error.hpp"
 #include "media/join_parts.hpp"
 
@@ -24,7 +25,13 @@ struct JoinOptions {
 int runJoin(const JoinOptions& o) {
   if (o.output.empty()) throw badInput({"-o"}, "expected -o OUT, the joined clip's file name (e.g. -o output/clip.mp4)");
   const std::vector<std::filesystem::path> parts(o.parts.begin(), o.parts.end());
-  const media::JoinSummary s = media::joinParts(parts, o.output);
+  // A Ctrl-C stops between packets and leaves nothing (not even the temporary file).
+  const InterruptGuard interrupts;
+  const media::JoinSummary s = media::joinParts(parts, o.output, [] { return InterruptGuard::received() != 0; });
+  if (s.written.empty()) {
+    std::fprintf(stderr, "rollspin: join interrupted: nothing written\n");
+    return 128 + InterruptGuard::received();
+  }
   if (!o.quiet)
     std::fprintf(stderr, "rollspin: joined %zu parts into %s: %lld frames, %dx%d @ %d/%d fps (stream copy)\n",
                  parts.size(), s.written.string().c_str(), s.frames, s.width, s.height, s.fpsNum, s.fpsDen);

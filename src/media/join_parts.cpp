@@ -239,7 +239,8 @@ struct Output {
 
 }  // namespace
 
-JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output) {
+JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output, const std::function<bool()>& stop) {
+  auto stopped = [&] { return stop && stop(); };
   const SourceLoc outLoc{"-o " + output.string()};
   if (paths.empty()) throw badInput(outLoc, "no parts to join");
   av_log_set_level(AV_LOG_ERROR);
@@ -257,6 +258,7 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
     if (!output.empty() && fs::equivalent(p, output, ec))
       throw badInput(outLoc, "is one of the parts; join writes a new file");
     parts.push_back(inspectPart(p));
+    if (stopped()) return {};
   }
   const Part& ref = parts.front();
   for (const Part& p : parts) {
@@ -271,14 +273,14 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
   });
   expectContiguous(sorted);
 
-  if (lowercase(output.extension().string()) != ref.extension)
+  Output out;
+  out.direct = isDevice(output);  // e.g. /dev/null: written in place, in the parts' container
+  if (!out.direct && lowercase(output.extension().string()) != ref.extension)
     throw badInput(outLoc, "the parts are '{}' files, so the joined clip must be one too (streams are copied, not "
                    "re-encoded)", ref.extension);
-  const AVOutputFormat* container = av_guess_format(nullptr, output.filename().string().c_str(), nullptr);
+  const AVOutputFormat* container = av_guess_format(nullptr, ("clip" + ref.extension).c_str(), nullptr);
   if (container == nullptr) throw badInput(outLoc, "libavformat has no muxer for '{}'", ref.extension);
 
-  Output out;
-  out.direct = isDevice(output);
   out.writePath = output;
   if (!out.direct) out.writePath.replace_filename(fmt::format(".{}.{}.tmp", output.filename().string(), ::getpid()));
   const std::string url = "file:" + out.writePath.string();
@@ -325,6 +327,10 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
     const Input input = openPart(part->path, part->loc());
     int ret = 0;
     while ((ret = av_read_frame(input.get(), packet.get())) >= 0) {
+      if (stopped()) {
+        av_packet_unref(packet.get());
+        return {};  // ~Output removes the temporary file
+      }
       // The packet's frame in the part, then in the clip, then its tick:
       // exact where a frame is a whole number of ticks (MP4), and rounded
       // as a single render rounds it where not (WebM's milliseconds).

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <vector>
 
 namespace rollspin::media {
@@ -31,6 +32,9 @@ struct JoinSummary {
   int fpsNum = 0, fpsDen = 0;
 };
 
-JoinSummary joinParts(const std::vector<std::filesystem::path>& parts, const std::filesystem::path& output);
+// `stop` is polled between packets (a Ctrl-C): when it returns true the join
+// ends, removes its temporary file and returns a summary with no `written`.
+JoinSummary joinParts(const std::vector<std::filesystem::path>& parts, const std::filesystem::path& output,
+                      const std::function<bool()>& stop = {});
 
 }  // namespace rollspin::media

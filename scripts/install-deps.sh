@@ -14,6 +14,7 @@ packages=(
   libmuparser-dev
   gnuplot-nox
   clang libclang-rt-14-dev time
+  parallel rsync jq
 )
 
 missing=()

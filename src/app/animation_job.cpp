@@ -18,12 +18,14 @@
 #include "app/interrupt_guard.hpp"
 #include "app/progress_meter.hpp"
 #include "app/render_jobs.hpp"
+#include "app/shard_range.hpp"
 #include "core/stage_log.hpp"
 #include "media/mp4_writer.hpp"
 #include "media/png_sequence.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/scene_writer.hpp"
 
 namespace rollspin::app {
 
@@ -130,8 +132,11 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   checkFrameMemory(spec, 256);
   const RollingModel model = buildSceneModel(spec);
   const FrameClock clock = clipClock(spec, model);
-  const FrameRange range = o.frames ? parseFrameRange(*o.frames, clock.frameCount())
-                                    : FrameRange{0, clock.frameCount() - 1};
+  if (o.frames && o.shard) throw badInput({"--shard " + *o.shard}, "give --frames or --shard, not both");
+  const std::optional<Shard> shard = o.shard ? std::optional(parseShard(*o.shard)) : std::nullopt;
+  const FrameRange range = o.frames  ? parseFrameRange(*o.frames, clock.frameCount())
+                           : shard ? shardFrames(*shard, clock.frameCount())
+                                   : FrameRange{0, clock.frameCount() - 1};
   const scene::VideoFormat format = chooseFormat(spec, o.output);
   const int width = static_cast<int>(spec.render.width), height = static_cast<int>(spec.render.height);
 
@@ -145,6 +150,9 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     std::error_code ec;
     fs::create_directories("output", ec);
   }
+  // A shard of a video is a file of its own beside the clip's name, which
+  // `rollspin join` makes whole; PNG frames keep their index in one folder.
+  if (shard && format == scene::VideoFormat::Mp4) out = shardPath(out, *shard);
 
   // From here on a Ctrl-C only raises a flag: the loop below then finishes
   // what exists (nothing, if it comes during set-up) instead of leaving a
@@ -166,6 +174,12 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     settings.fpsDen = static_cast<int>(clock.fps().den);
     settings.crf = spec.animation.crf;
     settings.preset = spec.animation.preset;
+    // What `rollspin join` checks before it puts parts together.
+    settings.tags = media::ContainerTags{
+        media::sha256Hex(scene::writeScene(spec)), ROLLSPIN_VERSION,
+        fmt::format("{} preset={} crf={} yuv420p bt709 {}x{} {}/{} fps", settings.encoder, settings.preset,
+                    settings.crf, width, height, settings.fpsNum, settings.fpsDen),
+        range.first, range.last, clock.frameCount()};
     StageLog::instance().record("encoder");
     sink = std::make_unique<media::Mp4Writer>(out, settings);
   } else {

@@ -19,6 +19,7 @@ struct AnimationOptions {
   std::vector<std::string> overrides;          // --set
   std::filesystem::path output;                // "" → output/<scene>.mp4 or output/<scene>/
   std::optional<std::string> frames;           // "A:B", inclusive
+  std::optional<std::string> shard;            // "K/N": the K-th of N near-equal ranges (shard_range.hpp)
   std::optional<std::string> quality;          // low | medium | high | 4k
   std::optional<long long> width, height;
   bool transparent = false;

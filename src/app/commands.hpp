@@ -19,4 +19,7 @@ void registerRenderCommands(CLI::App& cli, CommandHandler& handler);
 // Adds `report` with errors | stress | paper; report_commands.cpp.
 void registerReportCommands(CLI::App& cli, CommandHandler& handler);
 
+// Adds `join` (the parts of a split render → one clip); join_command.cpp.
+void registerJoinCommand(CLI::App& cli, CommandHandler& handler);
+
 }  // namespace rollspin::app

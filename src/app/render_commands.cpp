@@ -23,7 +23,7 @@ struct RenderCliOptions {
   bool stillFlag = false;
   std::string at, output, shaderDir;
   long long width = 0, height = 0;
-  std::string frames, quality;
+  std::string frames, quality, shard;
   bool quiet = false;
 };
 
@@ -36,6 +36,7 @@ int runAnimation(const RenderCliOptions& o, const CLI::App& command) {
   a.overrides = o.still.overrides;
   a.output = o.output;
   if (command.count("--frames") > 0) a.frames = o.frames;
+  if (command.count("--shard") > 0) a.shard = o.shard;
   if (command.count("--quality") > 0) a.quality = o.quality;
   if (command.count("--width") > 0) a.width = o.width;
   if (command.count("--height") > 0) a.height = o.height;
@@ -48,7 +49,7 @@ int runAnimation(const RenderCliOptions& o, const CLI::App& command) {
 
 int runRender(RenderCliOptions& o, const CLI::App& command) {
   if (!o.stillFlag) return runAnimation(o, command);
-  for (const char* animationOnly : {"--frames", "--quality"})
+  for (const char* animationOnly : {"--frames", "--shard", "--quality"})
     if (command.count(animationOnly) > 0) throw badInput({animationOnly}, "applies to animations only (without --still)");
   if (command.count("--at") > 0) o.still.at = o.at;
   if (command.count("--width") > 0) o.still.width = o.width;
@@ -100,6 +101,9 @@ void registerRenderCommands(CLI::App& cli, CommandHandler& handler) {
                      "Output: FILE.mp4, or a folder for PNG frames; with --still a PNG "
                      "(default: output/<scene>.mp4, output/<scene>/ or output/<scene>.png)");
   render->add_option("--frames", options->frames, "Render only frames FIRST:LAST (0-based, inclusive) of the animation");
+  render->add_option("--shard", options->shard,
+                     "Render the K-th of N near-equal frame ranges (K/N, 1-based) to NAME.part-K-of-N.mp4 "
+                     "(PNG frames: into the clip's folder); `rollspin join` makes the parts whole");
   render->add_option("--quality", options->quality,
                      "Animation size and frame rate: low (854x480@15), medium (1280x720@30), high (1920x1080@60), "
                      "4k (3840x2160@60)");

@@ -192,6 +192,7 @@ Mp4Writer::Mp4Writer(fs::path finalPath, const Mp4Settings& settings) : impl_(st
   AVDictionary* options = nullptr;
   // faststart rewrites the file at the end: only for a regular file.
   av_dict_set(&options, "movflags", m.direct ? "+write_colr" : "+faststart+write_colr", 0);
+  if (settings.tags) applyContainerTags(m.format, *settings.tags, &options);
   const int ret = avformat_write_header(m.format, &options);
   av_dict_free(&options);
   m.check(ret, "writing the MP4 header");

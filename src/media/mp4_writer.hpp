@@ -13,8 +13,10 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
+#include "media/container_tags.hpp"
 #include "media/frame_sink.hpp"
 
 namespace rollspin::media {
@@ -25,6 +27,7 @@ struct Mp4Settings {
   double crf = 18.0;           // constant rate factor, 0 … 51
   std::string preset = "medium";
   std::string encoder = "libx264";
+  std::optional<ContainerTags> tags = std::nullopt;  // container metadata (a render's identity for `join`)
 };
 
 class Mp4Writer final : public FrameSink {

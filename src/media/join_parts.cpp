@@ -1,0 +1,379 @@
+#include "media/join_parts.hpp"
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libavutil/opt.h>
+}
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <memory>
+#include <string>
+#include <system_error>
+
+#include "core/error.hpp"
+#include "media/container_tags.hpp"
+
+namespace rollspin::media {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string avErrorText(int code) {
+  char text[AV_ERROR_MAX_STRING_SIZE] = {};
+  av_strerror(code, text, sizeof text);
+  return text;
+}
+
+std::string lowercase(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+struct InputCloser {
+  void operator()(AVFormatContext* c) const { avformat_close_input(&c); }
+};
+struct PacketFreer {
+  void operator()(AVPacket* p) const { av_packet_free(&p); }
+};
+struct ParametersFreer {
+  void operator()(AVCodecParameters* p) const { avcodec_parameters_free(&p); }
+};
+using Input = std::unique_ptr<AVFormatContext, InputCloser>;
+using Packet = std::unique_ptr<AVPacket, PacketFreer>;
+
+// What pass 1 learns about one part; pass 2 copies its packets.
+struct Part {
+  fs::path path;
+  std::string name;  // as given on the command line, for messages
+  std::string extension;
+  ContainerTags tags;
+  std::unique_ptr<AVCodecParameters, ParametersFreer> codec;
+  AVRational timeBase{0, 1}, frameRate{0, 1};
+  long long packets = 0;
+  std::int64_t firstPts = 0;  // the smallest presentation timestamp
+  bool startsWithKeyframe = false;
+
+  [[nodiscard]] SourceLoc loc() const { return SourceLoc{name}; }
+  [[nodiscard]] std::string range() const { return fmt::format("frames {}-{}", tags.firstFrame, tags.lastFrame); }
+};
+
+// Opens a part and checks it holds exactly one video stream.
+Input openPart(const fs::path& path, const SourceLoc& loc) {
+  AVFormatContext* raw = nullptr;
+  // "file:" keeps a colon in a file name from reading as a protocol.
+  const std::string url = "file:" + path.string();
+  if (const int ret = avformat_open_input(&raw, url.c_str(), nullptr, nullptr); ret < 0)
+    throw badInput(loc, "cannot open this part: {}", avErrorText(ret));
+  Input input(raw);
+  if (const int ret = avformat_find_stream_info(input.get(), nullptr); ret < 0)
+    throw badInput(loc, "cannot read this part's streams: {}", avErrorText(ret));
+  if (input->nb_streams != 1 || input->streams[0]->codecpar->codec_type != AVMEDIA_TYPE_VIDEO)
+    throw badInput(loc, "expected one video stream (a part rendered by rollspin), found {} stream(s)",
+                   input->nb_streams);
+  return input;
+}
+
+std::map<std::string, std::string> metadataOf(const AVFormatContext& input) {
+  std::map<std::string, std::string> out;
+  const AVDictionaryEntry* e = nullptr;
+  // Matroska (WebM) stores tag names in upper case.
+  while ((e = av_dict_get(input.metadata, "", e, AV_DICT_IGNORE_SUFFIX)) != nullptr) out[lowercase(e->key)] = e->value;
+  return out;
+}
+
+// Pass 1: the tags, the codec, and every packet's timestamp (no decoding).
+Part inspectPart(const fs::path& path) {
+  Part part;
+  part.path = path;
+  part.name = path.string();
+  part.extension = lowercase(path.extension().string());
+  const Input input = openPart(path, part.loc());
+  std::string why;
+  const auto tags = parseContainerTags(metadataOf(*input), &why);
+  if (!tags) throw badInput(part.loc(), "{}; render parts with `rollspin render --shard K/N` (or --frames A:B)", why);
+  part.tags = *tags;
+
+  const AVStream& stream = *input->streams[0];
+  part.codec.reset(avcodec_parameters_alloc());
+  if (!part.codec || avcodec_parameters_copy(part.codec.get(), stream.codecpar) < 0) throw std::bad_alloc();
+  part.timeBase = stream.time_base;
+  part.frameRate = stream.avg_frame_rate.num > 0 ? stream.avg_frame_rate : stream.r_frame_rate;
+  if (part.frameRate.num <= 0 || part.frameRate.den <= 0)
+    throw badInput(part.loc(), "its video stream states no frame rate");
+
+  std::vector<std::int64_t> pts;
+  const Packet packet(av_packet_alloc());
+  if (!packet) throw std::bad_alloc();
+  int ret = 0;
+  while ((ret = av_read_frame(input.get(), packet.get())) >= 0) {
+    if (pts.empty()) part.startsWithKeyframe = (packet->flags & AV_PKT_FLAG_KEY) != 0;
+    const std::int64_t t = packet->pts;
+    av_packet_unref(packet.get());
+    if (t == AV_NOPTS_VALUE) throw badInput(part.loc(), "packet {} has no presentation timestamp", pts.size());
+    pts.push_back(t);
+  }
+  if (ret != AVERROR_EOF) throw badInput(part.loc(), "cannot read this part to its end: {}", avErrorText(ret));
+  part.packets = static_cast<long long>(pts.size());
+  if (pts.empty()) throw badInput(part.loc(), "this part holds no frames");
+  // A whole render puts frame k at k frame durations: the part's frames must
+  // sit exactly so from its first one, or the joined timeline would not be.
+  std::sort(pts.begin(), pts.end());
+  part.firstPts = pts.front();
+  const AVRational frameDuration = av_inv_q(part.frameRate);
+  for (std::size_t k = 0; k < pts.size(); ++k)
+    if (pts[k] - pts.front() != av_rescale_q(static_cast<std::int64_t>(k), frameDuration, part.timeBase))
+      throw badInput(part.loc(), "its frame {} is at tick {} of {}/{} s, expected {} (one frame every {}/{} s)", k,
+                     pts[k] - pts.front(), part.timeBase.num, part.timeBase.den,
+                     av_rescale_q(static_cast<std::int64_t>(k), frameDuration, part.timeBase), frameDuration.num,
+                     frameDuration.den);
+  return part;
+}
+
+std::string hexPrefix(const std::string& hash) { return hash.substr(0, 12) + "…"; }
+
+// Everything that must be the same in every part, against the first one given.
+void expectSameRender(const Part& p, const Part& ref) {
+  const std::string& r = ref.name;
+  if (p.extension != ref.extension)
+    throw badInput(p.loc(), "is a '{}' file, but {} is '{}': join copies the streams into one container", p.extension,
+                   r, ref.extension);
+  if (p.tags.version != ref.tags.version)
+    throw badInput(p.loc(), "was rendered by rollspin {}, but {} by rollspin {}: render every part with one version",
+                   p.tags.version, r, ref.tags.version);
+  if (p.codec->width != ref.codec->width || p.codec->height != ref.codec->height)
+    throw badInput(p.loc(), "is {}x{}, but {} is {}x{}: every part of a clip has its size", p.codec->width,
+                   p.codec->height, r, ref.codec->width, ref.codec->height);
+  if (p.tags.encoderSettings != ref.tags.encoderSettings)
+    throw badInput(p.loc(), "was encoded with '{}', but {} with '{}'", p.tags.encoderSettings, r,
+                   ref.tags.encoderSettings);
+  if (p.tags.sceneSha256 != ref.tags.sceneSha256)
+    throw badInput(p.loc(),
+                   "comes from a different scene than {} (SHA-256 of the resolved scene {} vs {}): render every part "
+                   "from the same scene file and --set options (compare `rollspin scene SCENE --print`)",
+                   r, hexPrefix(p.tags.sceneSha256), hexPrefix(ref.tags.sceneSha256));
+  if (p.tags.clipFrames != ref.tags.clipFrames)
+    throw badInput(p.loc(), "is a part of a {}-frame clip, but {} of a {}-frame one", p.tags.clipFrames, r,
+                   ref.tags.clipFrames);
+  if (p.codec->codec_id != ref.codec->codec_id || p.codec->format != ref.codec->format)
+    throw badInput(p.loc(), "its codec ({}, {}) differs from {}'s ({}, {})", avcodec_get_name(p.codec->codec_id),
+                   p.codec->format, r, avcodec_get_name(ref.codec->codec_id), ref.codec->format);
+  if (p.codec->extradata_size != ref.codec->extradata_size ||
+      (p.codec->extradata_size > 0 &&
+       std::memcmp(p.codec->extradata, ref.codec->extradata, static_cast<std::size_t>(p.codec->extradata_size)) != 0))
+    throw badInput(p.loc(), "its codec extradata ({} bytes: the SPS/PPS) differ from {}'s ({} bytes): the parts were "
+                   "not encoded alike, and one decoder could not play them in one stream",
+                   p.codec->extradata_size, r, ref.codec->extradata_size);
+  if (av_cmp_q(p.timeBase, ref.timeBase) != 0 || av_cmp_q(p.frameRate, ref.frameRate) != 0)
+    throw badInput(p.loc(), "its time base {}/{} at {}/{} fps differs from {}'s {}/{} at {}/{} fps", p.timeBase.num,
+                   p.timeBase.den, p.frameRate.num, p.frameRate.den, r, ref.timeBase.num, ref.timeBase.den,
+                   ref.frameRate.num, ref.frameRate.den);
+}
+
+void expectWholePart(const Part& p) {
+  if (p.packets != p.tags.frameCount())
+    throw badInput(p.loc(), "holds {} frames, but its tags say {} ({} frames): an interrupted or damaged part",
+                   p.packets, p.range(), p.tags.frameCount());
+  if (!p.startsWithKeyframe)
+    throw badInput(p.loc(), "does not start with a keyframe: a decoder could not begin there");
+}
+
+// Sorted by first frame, the ranges must tile 0 … total − 1.
+void expectContiguous(const std::vector<const Part*>& sorted) {
+  const Part& first = *sorted.front();
+  const long long total = first.tags.clipFrames;
+  if (first.tags.firstFrame != 0)
+    throw badInput(first.loc(), "frames 0-{} of the {}-frame clip are missing: the earliest part given holds {}",
+                   first.tags.firstFrame - 1, total, first.range());
+  for (std::size_t k = 1; k < sorted.size(); ++k) {
+    const Part& prev = *sorted[k - 1];
+    const Part& cur = *sorted[k];
+    std::error_code ec;
+    if (fs::equivalent(prev.path, cur.path, ec)) throw badInput(cur.loc(), "is given twice");
+    if (cur.tags.firstFrame > prev.tags.lastFrame + 1)
+      throw badInput(cur.loc(), "frames {}-{} are missing between {} ({}) and this part ({})",
+                     prev.tags.lastFrame + 1, cur.tags.firstFrame - 1, prev.name, prev.range(), cur.range());
+    if (cur.tags.firstFrame <= prev.tags.lastFrame)
+      throw badInput(cur.loc(), "overlaps {} at frames {}-{} (this part: {}; that one: {})", prev.name,
+                     cur.tags.firstFrame, std::min(prev.tags.lastFrame, cur.tags.lastFrame), cur.range(),
+                     prev.range());
+  }
+  const Part& last = *sorted.back();
+  if (last.tags.lastFrame != total - 1)
+    throw badInput(last.loc(), "frames {}-{} of the {}-frame clip are missing: the latest part given holds {}",
+                   last.tags.lastFrame + 1, total - 1, total, last.range());
+}
+
+// A regular file (or a new name) gets temp + rename; an existing device or
+// pipe is written in place (as the video writer does).
+bool isDevice(const fs::path& p) {
+  std::error_code ec;
+  const auto status = fs::status(p, ec);
+  return !ec && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status);
+}
+
+// The output under construction: closed, freed and (unless committed)
+// removed on every way out.
+struct Output {
+  AVFormatContext* format = nullptr;
+  fs::path writePath;
+  bool direct = false, opened = false, committed = false;
+  ~Output() {
+    if (format != nullptr) {
+      if (format->pb != nullptr) avio_closep(&format->pb);
+      avformat_free_context(format);
+    }
+    if (opened && !committed && !direct) {
+      std::error_code ec;
+      fs::remove(writePath, ec);
+    }
+  }
+};
+
+}  // namespace
+
+JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output, const std::function<bool()>& stop) {
+  auto stopped = [&] { return stop && stop(); };
+  const SourceLoc outLoc{"-o " + output.string()};
+  if (paths.empty()) throw badInput(outLoc, "no parts to join");
+  av_log_set_level(AV_LOG_ERROR);
+
+  // Pass 1: read every part's tags and timestamps and check them all before
+  // anything is written.
+  std::vector<Part> parts;
+  parts.reserve(paths.size());
+  for (const fs::path& p : paths) {
+    std::error_code ec;
+    if (fs::is_directory(p, ec))
+      throw badInput(SourceLoc{p.string()},
+                     "is a folder: PNG frames of a split render already land side by side in one folder "
+                     "(frame_NNNNN.png keeps its index in the clip); join takes video parts");
+    if (!output.empty() && fs::equivalent(p, output, ec))
+      throw badInput(outLoc, "is one of the parts; join writes a new file");
+    parts.push_back(inspectPart(p));
+    if (stopped()) return {};
+  }
+  const Part& ref = parts.front();
+  for (const Part& p : parts) {
+    expectSameRender(p, ref);
+    expectWholePart(p);
+  }
+  std::vector<const Part*> sorted;
+  for (const Part& p : parts) sorted.push_back(&p);
+  std::stable_sort(sorted.begin(), sorted.end(), [](const Part* a, const Part* b) {
+    return a->tags.firstFrame != b->tags.firstFrame ? a->tags.firstFrame < b->tags.firstFrame
+                                                    : a->tags.lastFrame < b->tags.lastFrame;
+  });
+  expectContiguous(sorted);
+
+  Output out;
+  out.direct = isDevice(output);  // e.g. /dev/null: written in place, in the parts' container
+  if (!out.direct && lowercase(output.extension().string()) != ref.extension)
+    throw badInput(outLoc, "the parts are '{}' files, so the joined clip must be one too (streams are copied, not "
+                   "re-encoded)", ref.extension);
+  const AVOutputFormat* container = av_guess_format(nullptr, ("clip" + ref.extension).c_str(), nullptr);
+  if (container == nullptr) throw badInput(outLoc, "libavformat has no muxer for '{}'", ref.extension);
+
+  out.writePath = output;
+  if (!out.direct) out.writePath.replace_filename(fmt::format(".{}.{}.tmp", output.filename().string(), ::getpid()));
+  const std::string url = "file:" + out.writePath.string();
+  const SourceLoc where{output.string()};
+  auto check = [&](int ret, const std::string& what) {
+    if (ret < 0) throw runtimeError(where, "{}: {}", what, avErrorText(ret));
+    if (out.format != nullptr && out.format->pb != nullptr && out.format->pb->error < 0)
+      throw runtimeError(where, "{}: {}", what, avErrorText(out.format->pb->error));
+  };
+  check(avformat_alloc_output_context2(&out.format, container, nullptr, url.c_str()), "creating the muxer");
+  AVStream* stream = avformat_new_stream(out.format, nullptr);
+  if (stream == nullptr) throw std::bad_alloc();
+  check(avcodec_parameters_copy(stream->codecpar, ref.codec.get()), "configuring the stream");
+  stream->codecpar->codec_tag = 0;  // let the muxer choose the tag for its container
+  stream->time_base = ref.timeBase;
+  stream->avg_frame_rate = ref.frameRate;
+
+  // The joined clip is tagged as the whole render: frames 0 … total − 1.
+  ContainerTags whole = ref.tags;
+  whole.firstFrame = 0;
+  whole.lastFrame = whole.clipFrames - 1;
+  AVDictionary* options = nullptr;
+  if (av_opt_find(out.format->priv_data, "movflags", nullptr, 0, 0) != nullptr)
+    av_dict_set(&options, "movflags", out.direct ? "+write_colr" : "+faststart+write_colr", 0);
+  applyContainerTags(out.format, whole, &options);
+  if (const int ret = avio_open(&out.format->pb, url.c_str(), AVIO_FLAG_WRITE); ret < 0) {
+    av_dict_free(&options);
+    out.format->pb = nullptr;
+    throw runtimeError(where, "cannot create {}: {}", out.writePath.string(), avErrorText(ret));
+  }
+  out.opened = true;
+  const int headerRet = avformat_write_header(out.format, &options);
+  av_dict_free(&options);
+  check(headerRet, "writing the header");
+
+  // Pass 2: copy the packets, each moved to its frame's index in the clip.
+  // Decoding timestamps move with their packet and keep the encoder's
+  // reorder delay, so they run on across the joins too (checked).
+  const AVRational frameDuration = av_inv_q(ref.frameRate);
+  std::int64_t lastDts = std::numeric_limits<std::int64_t>::min();
+  const Packet packet(av_packet_alloc());
+  if (!packet) throw std::bad_alloc();
+  for (const Part* part : sorted) {
+    const Input input = openPart(part->path, part->loc());
+    int ret = 0;
+    while ((ret = av_read_frame(input.get(), packet.get())) >= 0) {
+      if (stopped()) {
+        av_packet_unref(packet.get());
+        return {};  // ~Output removes the temporary file
+      }
+      // The packet's frame in the part, then in the clip, then its tick:
+      // exact where a frame is a whole number of ticks (MP4), and rounded
+      // as a single render rounds it where not (WebM's milliseconds).
+      const std::int64_t frameInPart = av_rescale_q(packet->pts - part->firstPts, ref.timeBase, frameDuration);
+      const std::int64_t pts = av_rescale_q(part->tags.firstFrame + frameInPart, frameDuration, ref.timeBase);
+      const std::int64_t shift = pts - packet->pts;
+      packet->pts = pts;
+      if (packet->dts != AV_NOPTS_VALUE) {
+        packet->dts += shift;
+        if (packet->dts <= lastDts) {
+          av_packet_unref(packet.get());
+          throw badInput(part->loc(), "its decoding order runs back into the previous part's (a different B-frame "
+                                      "delay): the parts were not encoded alike");
+        }
+        lastDts = packet->dts;
+      }
+      packet->stream_index = stream->index;
+      packet->pos = -1;
+      av_packet_rescale_ts(packet.get(), ref.timeBase, stream->time_base);
+      ret = av_interleaved_write_frame(out.format, packet.get());  // takes the packet's reference
+      check(ret, "writing " + out.writePath.string());
+    }
+    if (ret != AVERROR_EOF) throw runtimeError(part->loc(), "cannot read this part again: {}", avErrorText(ret));
+  }
+  check(av_write_trailer(out.format), "finishing " + out.writePath.string());
+  avio_flush(out.format->pb);
+  check(0, "finishing " + out.writePath.string());
+  check(avio_closep(&out.format->pb), "closing " + out.writePath.string());
+  if (!out.direct) {
+    std::error_code ec;
+    fs::rename(out.writePath, output, ec);
+    if (ec) throw runtimeError(where, "cannot rename the joined video into place: {}", ec.message());
+  }
+  out.committed = true;
+
+  JoinSummary summary;
+  summary.written = output;
+  summary.frames = whole.clipFrames;
+  summary.width = ref.codec->width;
+  summary.height = ref.codec->height;
+  summary.fpsNum = ref.frameRate.num;
+  summary.fpsDen = ref.frameRate.den;
+  return summary;
+}
+
+}  // namespace rollspin::media

@@ -470,8 +470,6 @@ void writeFigure(const std::filesystem::path& out, FigureFormat format, const Dr
   const double heightPt = unit * list.height;
   const double kx = rasters.width > 0 ? double(rasters.width) / list.width : 1.0;
   const double ky = rasters.height > 0 ? double(rasters.height) / list.height : 1.0;
-  const double fontScale =
-      style.bodyTextPt ? (*style.bodyTextPt / unit) / std::max(1.0f, style.bodyTextPx) : 1.0;
 
   AtomicFile file(out);
   StreamSink sink{&file, nullptr};
@@ -492,6 +490,12 @@ void writeFigure(const std::filesystem::path& out, FigureFormat format, const Dr
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
 
   FigureFonts fonts(style.font);
+  // figure.font_size_pt is the body text's em size, as LaTeX's 10pt is; the
+  // labels' sizePx is their ascent + descent (the GL labels' pixel height).
+  const double fontScale =
+      style.bodyTextPt
+          ? (*style.bodyTextPt * fonts.face(false, false).heightPerEm / unit) / std::max(1.0f, style.bodyTextPx)
+          : 1.0;
   const DepthTest depth{&rasters.opaqueDepth, rasters.width, rasters.height, kx, ky};
   for (std::size_t i = 0; i < list.views.size(); ++i) {
     const View& v = list.views[i];

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/memory_budget.hpp"
 #include "core/stage_log.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
@@ -61,6 +62,16 @@ void checkFigureSpec(const scene::SceneSpec& spec) {
     throw badInput(spec.where(spec.locations.contains("render.dpi") ? "render.dpi" : "figure.width_mm"),
                    "render.dpi = {} over a {} mm wide figure makes a {}x{} raster; the renderer's limit is {} px",
                    spec.render.dpi, spec.figure.widthMm, width, height, kMaxRasterSide);
+  // The GL passes at the raster's size (as checkFrameMemory counts a
+  // still's: 8 bytes per sample, 16 per pixel, 96 MiB fixed) plus the two
+  // images and two depth buffers the figure keeps (16 bytes per pixel).
+  const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
+  const std::uint64_t needed = pixels * (8ULL * spec.render.msaa + 32ULL) + (96ULL << 20);
+  const auto available = availableMemoryBytes();
+  if (available && needed > *available)
+    throw badInput(spec.where(spec.locations.contains("render.dpi") ? "render.dpi" : "figure.width_mm"),
+                   "a {}x{} figure raster ({} dpi over {} mm) needs about {} MiB, but only {} MiB are available",
+                   width, height, spec.render.dpi, spec.figure.widthMm, needed >> 20, *available >> 20);
 }
 
 void writeFigureStill(const scene::SceneSpec& spec, const render::DrawList& list, const std::filesystem::path& out,

@@ -33,8 +33,9 @@ PixelRect scaledRect(const View& v, double kx, double ky) {
   return {x0, y0, std::max(1, x1 - x0), std::max(1, y1 - y0)};
 }
 
-bool inLayer(const Material& m, MeshLayer layer) {
-  return layer == MeshLayer::Opaque ? m.opacity >= 1.0f : m.opacity < 1.0f;
+bool inLayer(const MeshItem& m, MeshLayer layer) {
+  if (m.figureDisc && m.material.opacity >= 1.0f) return false;  // a vector disc (drawDisc)
+  return layer == MeshLayer::Opaque ? m.material.opacity >= 1.0f : m.material.opacity < 1.0f;
 }
 
 // Linear → sRGB, exactly (the shaders use a close fit of the same curve).
@@ -317,6 +318,25 @@ void drawArrow(cairo_t* cr, const ArrowItem& a, const ViewProjection& project) {
   }
 }
 
+// A mark (MeshItem::figureDisc, a unit sphere scaled and placed by
+// worldFromModel) as a flat disc of its projected radius, left out where
+// its point nearest the camera is behind an opaque mesh.
+void drawDisc(cairo_t* cr, const MeshItem& m, const View& v, const ViewProjection& project, const DepthTest& test) {
+  const glm::dmat4 worldFromModel(m.worldFromModel);
+  const glm::dvec3 centre(worldFromModel[3]);
+  const double radius = glm::length(glm::dvec3(worldFromModel[0]));
+  const glm::dvec3 toCamera = glm::normalize(glm::dvec3(v.camera.position) - centre);
+  const glm::dmat4 viewFromWorld(v.camera.viewFromWorld);
+  const glm::dvec3 cameraRight(viewFromWorld[0][0], viewFromWorld[1][0], viewFromWorld[2][0]);
+  const Projected c = project(centre), edge = project(centre + radius * cameraRight);
+  const Projected front = project(centre + radius * toCamera);
+  if (!c.valid || !edge.valid || !front.valid || !test.visible(front)) return;
+  setColor(cr, m.material.color, 1.0f);
+  cairo_new_sub_path(cr);
+  cairo_arc(cr, c.xy.x, c.xy.y, glm::length(edge.xy - c.xy), 0.0, 2.0 * M_PI);
+  cairo_fill(cr);
+}
+
 // The part of an RGBA image (straight alpha) inside `rect` that is not fully
 // transparent, placed at its figure position: the image's own alpha is the
 // silhouette, and what is empty is left out of the file.
@@ -418,7 +438,7 @@ cairo_status_t writeToSink(void* closure, const unsigned char* data, unsigned in
 
 bool hasMeshes(const DrawList& list, MeshLayer layer) {
   return std::any_of(list.meshes.begin(), list.meshes.end(),
-                     [&](const MeshItem& m) { return m.mesh && inLayer(m.material, layer); });
+                     [&](const MeshItem& m) { return m.mesh && inLayer(m, layer); });
 }
 
 DrawList meshLayerOf(const DrawList& list, MeshLayer layer, int width, int height) {
@@ -439,7 +459,7 @@ DrawList meshLayerOf(const DrawList& list, MeshLayer layer, int width, int heigh
     out.views.push_back(scaled);
   }
   for (const MeshItem& m : list.meshes) {
-    if (!m.mesh || !inLayer(m.material, layer)) continue;
+    if (!m.mesh || !inLayer(m, layer)) continue;
     out.meshes.push_back(m);
     if (layer == MeshLayer::TranslucentDepth) out.meshes.back().material.opacity = 1.0f;
   }
@@ -533,10 +553,14 @@ void writeFigure(const std::filesystem::path& out, FigureFormat format, const Dr
     project.size = glm::dvec2(v.width, v.height);
     const PixelRect rasterRect = scaledRect(v, kx, ky);
 
-    // The GL renderer's order: opaque meshes, depth-tested lines (cut where
-    // a mesh is in front), translucent meshes over them, then the lines that
-    // ignore depth, the labels and the frame.
+    // The GL renderer's order: opaque meshes (image, then the marks),
+    // depth-tested lines (cut where a mesh is in front), the arrows,
+    // translucent meshes over them, then the lines that ignore depth, the
+    // labels and the frame.
     paintRaster(cr, rasters.opaque, rasterRect, kx, ky);
+    // Marks are opaque meshes too: under the lines, as GL draws them.
+    for (const MeshItem& m : list.meshes)
+      if (m.view == index && m.mesh && m.figureDisc && m.material.opacity >= 1.0f) drawDisc(cr, m, v, project, depth);
     for (const PolylineItem& p : list.polylines) {
       if (p.view != index || !p.depthTested || p.points.size() < 2) continue;
       addVisiblePath(cr, p, project, depth);

@@ -250,7 +250,8 @@ TEST(FigureCli, BadFigureKeysExit2NamingTheKey) {
 
 // The depth test on its own: a line behind an opaque sphere is cut in two
 // where the GL depth buffer has the sphere in front; the same line in
-// front of it stays whole; and the depth read back is the sphere's.
+// front of it stays whole; a mark behind it is left out; and the depth
+// read back is the sphere's.
 TEST(FigureDepth, LinesBehindAnOpaqueMeshAreCutWhereTheDepthBufferSays) {
   using namespace render;
   DrawList list;
@@ -273,6 +274,15 @@ TEST(FigureDepth, LinesBehindAnOpaqueMeshAreCutWhereTheDepthBufferSays) {
   before.points = {{-3.0f, 0.5f, 1.5f}, {3.0f, 0.5f, 1.5f}};
   before.color = {0, 0, 1, 1};
   list.polylines = {behind, before};
+  // Two marks (vector discs): one in front of the sphere, one hidden behind it.
+  for (const float z : {1.5f, -1.6f}) {
+    MeshItem mark;
+    mark.mesh = uvSphere(12, 6);
+    mark.worldFromModel = glm::scale(glm::translate(glm::mat4(1.0f), {0.0f, -0.3f, z}), glm::vec3(0.1f));
+    mark.material.color = {0, 1, 0};
+    mark.figureDisc = true;
+    list.meshes.push_back(mark);
+  }
 
   const auto context = createOsMesaContext();
   Renderer renderer(*context, ShaderLibrary{});
@@ -300,6 +310,13 @@ TEST(FigureDepth, LinesBehindAnOpaqueMeshAreCutWhereTheDepthBufferSays) {
   };
   EXPECT_EQ(subpathsOf("stroke:rgb(100%,0%,0%)"), 2) << svg;  // behind: left and right of the sphere
   EXPECT_EQ(subpathsOf("stroke:rgb(0%,0%,100%)"), 1) << svg;  // in front: whole
+  int marks = 0;
+  for (std::size_t at = svg.find("fill:rgb(0%,100%,0%)"); at != std::string::npos;
+       at = svg.find("fill:rgb(0%,100%,0%)", at + 1))
+    ++marks;
+  EXPECT_EQ(marks, 1) << svg;  // the front mark only, and as a vector, not in the image
+  EXPECT_EQ(hasMeshes(meshLayerOf(list, MeshLayer::Opaque, 400, 200), MeshLayer::Opaque), true);
+  EXPECT_EQ(meshLayerOf(list, MeshLayer::Opaque, 400, 200).meshes.size(), 1u);  // the sphere alone
 }
 
 }  // namespace

@@ -381,14 +381,13 @@ void paintRaster(cairo_t* cr, const media::Image& image, const PixelRect& rect, 
 // A label placed as the GL renderer places it (drawLabel): anchor, offset,
 // alignment by the advance width, baseline 0.36 of the size below the anchor.
 void drawLabel(cairo_t* cr, FigureFonts& fonts, const LabelItem& label, const glm::dvec2& origin,
-               const glm::dvec2& size, const ViewProjection* project, double fontScale) {
+               const ViewProjection* project, double fontScale) {
   glm::dvec2 pen = origin + glm::dvec2(label.anchor.x, label.anchor.y);
   if (label.worldAnchored && project != nullptr) {
     const Projected q = (*project)(glm::dvec3(label.anchor));
     if (!q.valid) return;
     pen = q.xy;
   }
-  (void)size;
   pen += glm::dvec2(label.offsetPx);
   const double px = label.sizePx * fontScale;
   const std::vector<FigureFonts::Run> runs = fonts.runs(label.text, label.bold);
@@ -579,7 +578,7 @@ void writeFigure(const std::filesystem::path& out, FigureFormat format, const Dr
       cairo_stroke(cr);
     }
     for (const LabelItem& l : list.labels)
-      if (l.view == index) drawLabel(cr, fonts, l, project.origin, project.size, &project, fontScale);
+      if (l.view == index) drawLabel(cr, fonts, l, project.origin, &project, fontScale);
     if (v.frame) {
       const double t = std::max(1.0, v.height / 300.0);
       setColor(cr, glm::vec3(0.35f, 0.38f, 0.42f), 1.0f);
@@ -594,7 +593,7 @@ void writeFigure(const std::filesystem::path& out, FigureFormat format, const Dr
   // Image-level labels (the title) over everything.
   for (const LabelItem& l : list.labels)
     if (l.view < 0)
-      drawLabel(cr, fonts, l, glm::dvec2(0.0), glm::dvec2(list.width, list.height), nullptr, fontScale);
+      drawLabel(cr, fonts, l, glm::dvec2(0.0), nullptr, fontScale);
 
   cairo_destroy(cr);
   cairo_surface_finish(surface);

@@ -45,7 +45,7 @@ std::optional<render::FigureFormat> figureFormatFor(const scene::SceneSpec& spec
     return byExtension;
   const render::FigureFormat byKey =
       *spec.render.format == VideoFormat::Pdf ? render::FigureFormat::Pdf : render::FigureFormat::Svg;
-  if (!output.empty() && byExtension != byKey)
+  if (output.has_extension() && byExtension != byKey)  // -o /dev/stdout or a bare name: the key decides
     throw badInput(spec.where("render.format"), "render.format = \"{}\" writes a {} figure, but -o names {}",
                    byKey == render::FigureFormat::Pdf ? "pdf" : "svg", figureExtension(byKey), output.string());
   return byKey;

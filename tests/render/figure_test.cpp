@@ -241,7 +241,12 @@ TEST(FigureCli, BadFigureKeysExit2NamingTheKey) {
     EXPECT_NE(r.err.find(c.key), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / c.output)) << c.key;
   }
-  // render.format = "pdf" without -o names output/<scene>.pdf; an animation refuses it.
+  // A full disk is a runtime failure (exit 1); render.format decides for a name without extension.
+  const test::CliResult full =
+      test::runRollspin({"render", scene("lollipop").string(), "--still", "-o", "/dev/full", "--set", "render.format=pdf"});
+  EXPECT_EQ(full.exitCode, 1) << full.err;
+  EXPECT_NE(full.err.find("No space left"), std::string::npos) << full.err;
+  // An animation refuses a figure format.
   const test::CliResult video =
       test::runRollspin({"render", scene("lollipop").string(), "-o", (dir / "v.mp4").string(), "--set", "render.format=pdf"});
   EXPECT_EQ(video.exitCode, 2) << video.err;

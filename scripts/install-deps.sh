@@ -9,6 +9,7 @@ packages=(
   libtomlplusplus-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libosmesa6-dev libstb-dev fonts-dejavu-core
+  libcairo2-dev poppler-utils librsvg2-bin fonts-lmodern
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   ffmpeg
   libmuparser-dev

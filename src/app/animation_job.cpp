@@ -59,6 +59,9 @@ scene::VideoFormat chooseFormat(const scene::SceneSpec& spec, const fs::path& ou
   const bool folderLike = !output.empty() && (!output.has_extension() || isFolder);
   if (spec.render.format) {
     const scene::VideoFormat f = *spec.render.format;
+    if (f == scene::VideoFormat::Pdf || f == scene::VideoFormat::Svg)
+      throw badInput(spec.where("render.format"), "render.format = \"{}\" is a figure: render it with --still",
+                     f == scene::VideoFormat::Pdf ? "pdf" : "svg");
     if (f == scene::VideoFormat::Png && ext == ".mp4")
       throw badInput(spec.where("render.format"), "render.format = \"png\" writes a folder of frames, but -o names {}",
                      output.string());

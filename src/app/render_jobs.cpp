@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/figure_job.hpp"
 #include "motion/frame_poses.hpp"
 #include "media/image_io.hpp"
 #include "render/gl_context.hpp"
@@ -92,6 +93,8 @@ std::filesystem::path renderStill(const StillOptions& o) {
   if (o.height) overrides.push_back("render.height=" + std::to_string(*o.height));
   if (o.transparent) overrides.push_back("render.transparent=true");
   const scene::SceneSpec spec = loadScene(o.scenePath, overrides);
+  const auto figure = figureFormatFor(spec, o.output);  // PDF/SVG figure (figure_job.hpp), else PNG
+  if (figure) checkFigureSpec(spec);
   checkFrameMemory(spec);
   const RollingModel model = buildSceneModel(spec);
   const double length = model.path->length();
@@ -102,12 +105,16 @@ std::filesystem::path renderStill(const StillOptions& o) {
   std::filesystem::path out = o.output;
   if (out.empty()) {
     std::filesystem::create_directories("output");
-    out = std::filesystem::path("output") / (spec.name + ".png");
+    out = std::filesystem::path("output") / (spec.name + (figure ? figureExtension(*figure) : ".png"));
   }
   FrameOrientations frame = solveFrame(spec, model, s);
   frame.story = storyPlaceAt(model, s);
   const SceneDrawer drawer(spec, model, texture, makeSceneFacts(spec, model));
   const render::DrawList list = drawer.draw(frame);
+  if (figure) {
+    writeFigureStill(spec, list, out, *figure, o.shaderDir);
+    return out;
+  }
 
   const auto context = render::createOsMesaContext();
   const render::ShaderLibrary shaders(o.shaderDir);

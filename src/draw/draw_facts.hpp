@@ -1,4 +1,4 @@
-// Fact labels for SceneDrawer: SceneFacts (numbers, app/scene_facts) turned
+// Fact labels for SceneDrawer: SceneFacts (numbers, motion/scene_facts) turned
 // into the text lines the ball view prints at arc length s — each measured
 // value beside its closed form — and the twin's cone of B̂ as a mesh.
 // Formatting only: every number comes from SceneFacts or the frame's U(s).

@@ -739,11 +739,13 @@ void SceneDrawer::addMarks(render::DrawList& list, double s, bool plateShown, in
     list.meshes.push_back({dotMesh_,
                            glm::translate(glm::mat4(1.0f), toGlm(onPath)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.06 * R))),
                            dot, view});
+    list.meshes.back().figureDisc = true;  // a vector disc in PDF/SVG figures
     if (model_.plate && plateShown && done) {
       const Vec3 onPlate = platePoint(m.s[k], 0.06 * R);
       list.meshes.push_back({dotMesh_,
                              glm::translate(glm::mat4(1.0f), toGlm(onPlate)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.05 * R))),
                              dot, view});
+      list.meshes.back().figureDisc = true;
     }
     if (!spec_.render.labels || (plateShown && hiddenByBall(onPath))) continue;
     render::LabelItem number;

@@ -62,6 +62,9 @@ struct MeshItem {
   glm::mat4 worldFromModel{1.0f};
   Material material;
   int view = 0;
+  // A small opaque unit sphere (a mark) that a vector figure draws as a flat
+  // disc of its projected radius instead of as an image; GL ignores it.
+  bool figureDisc = false;
 };
 
 // A solid arrow (cylinder + cone) from origin to tip.

@@ -854,6 +854,37 @@ struct Renderer::Impl {
       }
     }
   }
+
+  // Vector figures: the scene's depth after render(). The multisampled depth
+  // renderbuffer cannot be read directly; a blit copies one sample per pixel
+  // into a single-sample buffer that glReadPixels can read.
+  void readDepth(std::vector<float>& depth) {
+    const int w = fbWidth, h = fbHeight;
+    GLuint rb = 0, fbo = 0;
+    glGenRenderbuffers(1, &rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, w, h);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
+    glFramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb);
+    glDrawBuffer(GL_NONE);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, sceneFbo);
+    glDisable(GL_SCISSOR_TEST);
+    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    glReadBuffer(GL_NONE);
+    std::vector<float> bottomUp(static_cast<std::size_t>(w) * h);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, bottomUp.data());
+    const GLenum err = glGetError();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteRenderbuffers(1, &rb);
+    if (err != GL_NO_ERROR) throw runtimeError({}, "OpenGL error 0x{:x} while reading back a {}x{} depth buffer", err, w, h);
+    depth.resize(bottomUp.size());
+    for (int y = 0; y < h; ++y)  // GL rows count from the bottom
+      std::copy_n(bottomUp.begin() + std::ptrdiff_t(h - 1 - y) * w, w, depth.begin() + std::ptrdiff_t(y) * w);
+  }
 };
 
 Renderer::Renderer(GlContext& /*context*/, const ShaderLibrary& shaders) : impl_(std::make_unique<Impl>(shaders)) {}
@@ -864,5 +895,9 @@ media::Image Renderer::render(const DrawList& list) {
   return image;
 }
 void Renderer::render(const DrawList& list, media::Image& image) { impl_->render(list, image); }
+void Renderer::renderWithDepth(const DrawList& list, media::Image& image, std::vector<float>& depth) {
+  impl_->render(list, image);
+  impl_->readDepth(depth);
+}
 
 }  // namespace rollspin::render

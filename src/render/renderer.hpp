@@ -7,6 +7,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "media/image_view.hpp"
 #include "render/draw_list.hpp"
@@ -28,6 +29,11 @@ class Renderer {
   [[nodiscard]] media::Image render(const DrawList& list);
   // Same, into `image`, reusing its storage (frame after frame of a video).
   void render(const DrawList& list, media::Image& image);
+  // Same, then reads back the depth buffer of what was drawn: window depth in
+  // [0, 1] (1 = nothing), top row first, width × height. Only meshes and
+  // arrows write depth (lines and translucent items do not), so this is what
+  // a depth-tested line is tested against. For vector figures.
+  void renderWithDepth(const DrawList& list, media::Image& image, std::vector<float>& depth);
 
  private:
   struct Impl;

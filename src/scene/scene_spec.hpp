@@ -87,7 +87,7 @@ struct TimelineSpec {
 };
 
 enum class RenderLayout { SideBySide, Inset, Ball, Twin };
-enum class VideoFormat { Mp4, Png };  // an animation's sink: one MP4, or a folder of PNG frames
+enum class VideoFormat { Mp4, Png, Pdf, Svg };  // an animation's sink: one MP4, or a folder of PNG frames; Pdf, Svg: a still figure (--still)
 
 // [render]: stills and frames. Camera: orbit about `target` (default: the
 // path's centre) at `distance` (default: frames the whole path), or `follow`.
@@ -109,9 +109,19 @@ struct RenderSpec {
   bool follow = false;
   double fovDeg = 32.0;
   std::optional<VideoFormat> format;  // animations; default: from the output's extension, else mp4
+  double dpi = 300.0;  // vector figures: resolution of their raster parts (the shaded ball and surfaces)
 };
 
-// [labels]: facts of the scene, computed from the solver (app/scene_facts)
+// [figure]: a still as a publication figure (PDF/SVG, README "Figures for
+// papers"): its physical width, the labels' font and size, the page.
+struct FigureSpec {
+  double widthMm = 120.0;                // figure.width_mm, or figure.width_in × 25.4
+  std::string font = "DejaVu Sans";      // a fontconfig family name
+  std::optional<double> fontSizePt;      // body text size; default: the still's proportions
+  bool transparent = true;               // false: the views' backdrop gradients, as in the PNG
+};
+
+// [labels]: facts of the scene, computed from the solver (motion/scene_facts)
 // and printed next to the paper's closed form. Each applies to some kinds
 // only (factRule).
 enum class Fact {
@@ -170,6 +180,7 @@ struct SceneSpec {
   SolverSpec solver;
   TimelineSpec timeline;
   RenderSpec render;
+  FigureSpec figure;
   LabelsSpec labels;
   AnimationSpec animation;
   std::vector<SegmentSpec> segments;  // a storyboard: non-empty, and `path` is unused

@@ -217,8 +217,20 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   else w.computed("target", "framed automatically");
   w.key("follow", boolean(r.follow));
   w.key("fov_deg", number(r.fovDeg));
-  if (r.format) w.key("format", quoted(*r.format == VideoFormat::Mp4 ? "mp4" : "png"));
-  else w.computed("format", "from the output's extension, else mp4");
+  if (r.format) {
+    const VideoFormat f = *r.format;
+    w.key("format", quoted(f == VideoFormat::Mp4 ? "mp4" : f == VideoFormat::Png ? "png" : f == VideoFormat::Pdf ? "pdf" : "svg"));
+  } else {
+    w.computed("format", "from the output's extension, else mp4");
+  }
+  w.key("dpi", number(r.dpi));
+
+  w.section("figure");
+  w.key("width_mm", number(spec.figure.widthMm));
+  w.key("font", quoted(spec.figure.font));
+  if (spec.figure.fontSizePt) w.key("font_size_pt", number(*spec.figure.fontSizePt));
+  else w.computed("font_size_pt", "the still's proportions");
+  w.key("transparent", boolean(spec.figure.transparent));
 
   w.section("labels");
   if (spec.labels.facts) {

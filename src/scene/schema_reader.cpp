@@ -335,7 +335,8 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
 SceneSpec Reader::read() {
   spec_.sourceFile = file_;
   static const std::set<std::string> kSections{"ball",     "surface", "path",   "plate",     "solver",
-                                               "timeline", "render",  "labels", "animation", "segment"};
+                                               "timeline", "render",  "labels", "animation", "segment",
+                                               "figure"};
   for (auto&& [k, v] : root_) {
     const std::string key(k.str());
     if (!kSections.contains(key)) {
@@ -500,6 +501,7 @@ SceneSpec Reader::read() {
   }
 
   readRender();
+  readFigure();
   readLabels();
   readAnimation();
   return spec_;

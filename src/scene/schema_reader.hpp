@@ -62,6 +62,7 @@ class Reader {
   void readRender();
   void readAnimation();
   void readLabels();
+  void readFigure();
   void forbid(const toml::table* t, const std::string& section, const std::string& key, const std::string& why);
 
   [[noreturn]] void fail(const std::string& key, const SourceLoc& loc, const std::string& expected,

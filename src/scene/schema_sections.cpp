@@ -105,7 +105,7 @@ void Reader::readSegments() {
 void Reader::readRender() {
   const toml::table* render = section(
       "render", {"width", "height", "layout", "strobe", "title", "labels", "transparent", "msaa", "azimuth_deg",
-                 "elevation_deg", "distance", "target", "follow", "fov_deg", "format", "trails", "shadow"});
+                 "elevation_deg", "distance", "target", "follow", "fov_deg", "format", "trails", "shadow", "dpi"});
   RenderSpec& r = spec_.render;
   constexpr long long kMaxSide = 8192;  // "8K": the renderer's size limit
   for (const char* key : {"width", "height"}) {
@@ -143,8 +143,37 @@ void Reader::readRender() {
   if (auto sh = boolean(render, "render", "shadow")) r.shadow = *sh;
   if (r.follow && spec_.locations.contains("render.target"))
     failAt("render.target", "conflicts with render.follow = true (the camera then targets the ball)");
-  if (auto f = text(render, "render", "format", {"mp4", "png"}))
-    r.format = *f == "mp4" ? VideoFormat::Mp4 : VideoFormat::Png;
+  if (auto f = text(render, "render", "format", {"mp4", "png", "pdf", "svg"}))
+    r.format = *f == "mp4" ? VideoFormat::Mp4 : *f == "png" ? VideoFormat::Png : *f == "pdf" ? VideoFormat::Pdf : VideoFormat::Svg;
+  if (auto d = number(render, "render", "dpi")) {
+    if (!(*d >= 30.0 && *d <= 2400.0)) failAt("render.dpi", fmt::format("expected a resolution in [30, 2400] dpi, got {}", *d));
+    r.dpi = *d;
+  }
+}
+
+// [figure] — a still as a PDF/SVG figure (README "Figures for papers").
+void Reader::readFigure() {
+  const toml::table* figure = section("figure", {"width_mm", "width_in", "font", "font_size_pt", "transparent"});
+  FigureSpec& f = spec_.figure;
+  const auto mm = number(figure, "figure", "width_mm");
+  const auto in = number(figure, "figure", "width_in");
+  if (mm && in) failAt("figure.width_in", "conflicts with figure.width_mm: give the width once");
+  if (mm || in) {
+    const double widthMm = mm ? *mm : *in * 25.4;
+    if (!(widthMm >= 10.0 && widthMm <= 2000.0))
+      failAt(mm ? "figure.width_mm" : "figure.width_in",
+             fmt::format("expected a figure width in [10, 2000] mm ([0.39, 78.7] in), got {} mm", widthMm));
+    f.widthMm = widthMm;
+  }
+  if (auto t = anyText(figure, "figure", "font")) {
+    if (t->empty()) failAt("figure.font", "expected a font family name (e.g. \"Latin Modern Roman\"), got an empty string");
+    f.font = *t;
+  }
+  if (auto pt = number(figure, "figure", "font_size_pt")) {
+    if (!(*pt >= 2.0 && *pt <= 72.0)) failAt("figure.font_size_pt", fmt::format("expected a size in [2, 72] pt, got {}", *pt));
+    f.fontSizePt = *pt;
+  }
+  if (auto b = boolean(figure, "figure", "transparent")) f.transparent = *b;
 }
 
 // [labels] — which facts of the scene are printed (after [surface] and

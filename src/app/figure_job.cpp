@@ -1,0 +1,113 @@
+#include "app/figure_job.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/memory_budget.hpp"
+#include "core/stage_log.hpp"
+#include "render/gl_context.hpp"
+#include "render/renderer.hpp"
+
+namespace rollspin::app {
+
+namespace {
+
+std::string lowercase(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+constexpr int kMaxRasterSide = 8192;  // the renderer's limit (render.width)
+
+// The figure's raster size: render.dpi over the physical width.
+std::pair<int, int> rasterSize(const scene::SceneSpec& spec) {
+  const double widthIn = spec.figure.widthMm / 25.4;
+  const int width = static_cast<int>(std::lround(widthIn * spec.render.dpi));
+  const int height = std::max(1, static_cast<int>(std::lround(double(width) * spec.render.height / spec.render.width)));
+  return {width, height};
+}
+
+}  // namespace
+
+std::optional<render::FigureFormat> figureFormatFor(const scene::SceneSpec& spec, const std::filesystem::path& output) {
+  using scene::VideoFormat;
+  const std::string ext = lowercase(output.extension().string());
+  const std::optional<render::FigureFormat> byExtension =
+      ext == ".pdf" ? std::optional(render::FigureFormat::Pdf)
+      : ext == ".svg" ? std::optional(render::FigureFormat::Svg)
+                      : std::nullopt;
+  // render.format "mp4" / "png" name an animation's sink: a still keeps
+  // following its -o (PNG unless .pdf / .svg).
+  if (!spec.render.format || (*spec.render.format != VideoFormat::Pdf && *spec.render.format != VideoFormat::Svg))
+    return byExtension;
+  const render::FigureFormat byKey =
+      *spec.render.format == VideoFormat::Pdf ? render::FigureFormat::Pdf : render::FigureFormat::Svg;
+  if (output.has_extension() && byExtension != byKey)  // -o /dev/stdout or a bare name: the key decides
+    throw badInput(spec.where("render.format"), "render.format = \"{}\" writes a {} figure, but -o names {}",
+                   byKey == render::FigureFormat::Pdf ? "pdf" : "svg", figureExtension(byKey), output.string());
+  return byKey;
+}
+
+const char* figureExtension(render::FigureFormat format) {
+  return format == render::FigureFormat::Pdf ? ".pdf" : ".svg";
+}
+
+void checkFigureSpec(const scene::SceneSpec& spec) {
+  render::checkFigureFont(spec.figure.font, spec.where("figure.font"));
+  const auto [width, height] = rasterSize(spec);
+  if (width > kMaxRasterSide || height > kMaxRasterSide)
+    throw badInput(spec.where(spec.locations.contains("render.dpi") ? "render.dpi" : "figure.width_mm"),
+                   "render.dpi = {} over a {} mm wide figure makes a {}x{} raster; the renderer's limit is {} px",
+                   spec.render.dpi, spec.figure.widthMm, width, height, kMaxRasterSide);
+  // The GL passes at the raster's size (as checkFrameMemory counts a
+  // still's: 8 bytes per sample, 16 per pixel, 96 MiB fixed) plus the two
+  // images and two depth buffers the figure keeps (16 bytes per pixel).
+  const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
+  const std::uint64_t needed = pixels * (8ULL * spec.render.msaa + 32ULL) + (96ULL << 20);
+  const auto available = availableMemoryBytes();
+  if (available && needed > *available)
+    throw badInput(spec.where(spec.locations.contains("render.dpi") ? "render.dpi" : "figure.width_mm"),
+                   "a {}x{} figure raster ({} dpi over {} mm) needs about {} MiB, but only {} MiB are available",
+                   width, height, spec.render.dpi, spec.figure.widthMm, needed >> 20, *available >> 20);
+}
+
+void writeFigureStill(const scene::SceneSpec& spec, const render::DrawList& list, const std::filesystem::path& out,
+                      render::FigureFormat format, const std::filesystem::path& shaderDir) {
+  using render::MeshLayer;
+  const auto [width, height] = rasterSize(spec);
+  render::FigureRasters rasters;
+  rasters.width = width;
+  rasters.height = height;
+  const bool opaque = render::hasMeshes(list, MeshLayer::Opaque);
+  const bool translucent = render::hasMeshes(list, MeshLayer::Translucent);
+  if (opaque || translucent) {  // GL only for the raster parts
+    const auto context = render::createOsMesaContext();
+    const render::ShaderLibrary shaders(shaderDir);
+    render::Renderer renderer(*context, shaders);
+    if (opaque)
+      renderer.renderWithDepth(render::meshLayerOf(list, MeshLayer::Opaque, width, height), rasters.opaque,
+                               rasters.opaqueDepth);
+    if (translucent) {
+      renderer.render(render::meshLayerOf(list, MeshLayer::Translucent, width, height), rasters.translucent);
+      media::Image unused;
+      std::vector<float> glassDepth;
+      renderer.renderWithDepth(render::meshLayerOf(list, MeshLayer::TranslucentDepth, width, height), unused,
+                               glassDepth);
+      render::hideBehindOpaque(rasters.translucent, glassDepth, rasters.opaqueDepth);
+    }
+  }
+  StageLog::instance().record("figure");
+  render::FigureStyle style;
+  style.widthPt = spec.figure.widthMm / 25.4 * 72.0;
+  style.font = spec.figure.font;
+  style.bodyTextPt = spec.figure.fontSizePt;
+  // The body text size of draw/scene_drawer (SceneDrawer::draw: max(11, H/42)).
+  style.bodyTextPx = std::max(11.0f, float(list.height) / 42.0f);
+  style.transparent = spec.figure.transparent;
+  render::writeFigure(out, format, list, rasters, style);
+}
+
+}  // namespace rollspin::app

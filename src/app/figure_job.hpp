@@ -1,0 +1,33 @@
+// Figure stills: `render --still -o fig.pdf | fig.svg` (or render.format =
+// "pdf" / "svg") writes the still's DrawList as a publication figure through
+// the vector backend (render/vector_figure). GL draws only the raster parts
+// (the shaded meshes), at render.dpi over figure.width_mm; no encoder.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+#include "render/draw_list.hpp"
+#include "render/vector_figure.hpp"
+#include "scene/scene_spec.hpp"
+
+namespace rollspin::app {
+
+// The one place that decides whether a still is a figure, and which: from
+// render.format ("pdf", "svg"), else from the output's extension (.pdf,
+// .svg); nullopt: a PNG still. render.format = "pdf" with -o x.svg (or .png)
+// is bad input. (A row of the output-format table when there is one.)
+[[nodiscard]] std::optional<render::FigureFormat> figureFormatFor(const scene::SceneSpec& spec,
+                                                                  const std::filesystem::path& output);
+[[nodiscard]] const char* figureExtension(render::FigureFormat format);
+
+// Checks the figure keys that need the machine (the font is installed, the
+// raster fits the renderer's limit) before anything is solved.
+void checkFigureSpec(const scene::SceneSpec& spec);
+
+// Renders the raster parts with GL (only when the list has meshes) and
+// writes the figure to `out`.
+void writeFigureStill(const scene::SceneSpec& spec, const render::DrawList& list, const std::filesystem::path& out,
+                      render::FigureFormat format, const std::filesystem::path& shaderDir);
+
+}  // namespace rollspin::app

@@ -1,0 +1,608 @@
+#include "render/vector_figure.hpp"
+
+#include <cairo-ft.h>
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
+#include <cairo.h>
+#include <fontconfig/fontconfig.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <exception>
+#include <map>
+#include <memory>
+
+#include "core/atomic_file.hpp"
+#include "render/font_atlas.hpp"
+
+namespace rollspin::render {
+
+namespace {
+
+// The renderer's views, scaled to the raster's size. Both the GL pass and
+// the placement of its image use this, so they agree to the pixel.
+struct PixelRect {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+PixelRect scaledRect(const View& v, double kx, double ky) {
+  const int x0 = static_cast<int>(std::lround(v.x * kx)), y0 = static_cast<int>(std::lround(v.y * ky));
+  const int x1 = static_cast<int>(std::lround((v.x + v.width) * kx));
+  const int y1 = static_cast<int>(std::lround((v.y + v.height) * ky));
+  return {x0, y0, std::max(1, x1 - x0), std::max(1, y1 - y0)};
+}
+
+bool inLayer(const MeshItem& m, MeshLayer layer) {
+  if (m.figureDisc && m.material.opacity >= 1.0f) return false;  // a vector disc (drawDisc)
+  return layer == MeshLayer::Opaque ? m.material.opacity >= 1.0f : m.material.opacity < 1.0f;
+}
+
+// Linear → sRGB, exactly (the shaders use a close fit of the same curve).
+double encodeSrgb(float linear) {
+  const double c = std::clamp(static_cast<double>(linear), 0.0, 1.0);
+  return c < 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+}
+void setColor(cairo_t* cr, const glm::vec3& rgb, float alpha) {
+  cairo_set_source_rgba(cr, encodeSrgb(rgb.r), encodeSrgb(rgb.g), encodeSrgb(rgb.b), alpha);
+}
+
+std::string encodeUtf8(const std::u32string& text) {
+  std::string out;
+  for (char32_t c : text) {
+    if (c < 0x80) {
+      out += static_cast<char>(c);
+    } else if (c < 0x800) {
+      out += static_cast<char>(0xC0 | (c >> 6));
+      out += static_cast<char>(0x80 | (c & 0x3F));
+    } else if (c < 0x10000) {
+      out += static_cast<char>(0xE0 | (c >> 12));
+      out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+      out += static_cast<char>(0x80 | (c & 0x3F));
+    } else {
+      out += static_cast<char>(0xF0 | (c >> 18));
+      out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+      out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+      out += static_cast<char>(0x80 | (c & 0x3F));
+    }
+  }
+  return out;
+}
+
+// fontconfig's best match for a family at a weight (the caller owns it).
+FcPattern* matchFont(const std::string& family, bool bold) {
+  FcPattern* pattern = FcPatternCreate();
+  FcPatternAddString(pattern, FC_FAMILY, reinterpret_cast<const FcChar8*>(family.c_str()));
+  FcPatternAddInteger(pattern, FC_WEIGHT, bold ? FC_WEIGHT_BOLD : FC_WEIGHT_REGULAR);
+  FcPatternAddInteger(pattern, FC_SLANT, FC_SLANT_ROMAN);
+  FcConfigSubstitute(nullptr, pattern, FcMatchPattern);
+  FcDefaultSubstitute(pattern);
+  FcResult result = FcResultNoMatch;
+  FcPattern* match = FcFontMatch(nullptr, pattern, &result);
+  FcPatternDestroy(pattern);
+  return match;
+}
+
+bool sameFamily(FcPattern* match, const std::string& family) {
+  auto lower = [](std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  };
+  FcChar8* name = nullptr;
+  for (int i = 0; FcPatternGetString(match, FC_FAMILY, i, &name) == FcResultMatch; ++i)
+    if (lower(reinterpret_cast<const char*>(name)) == lower(family)) return true;
+  return false;
+}
+
+// The labels' fonts through fontconfig and FreeType: the figure's family,
+// and DejaVu Sans for any character it lacks (Latin Modern has no ⟩), so
+// that a label never shows a missing-glyph box. Per weight.
+class FigureFonts {
+ public:
+  explicit FigureFonts(std::string family) : family_(std::move(family)) {}
+  ~FigureFonts() {
+    for (auto& [key, f] : faces_) {
+      cairo_font_face_destroy(f.face);
+      FcPatternDestroy(f.pattern);
+    }
+  }
+  FigureFonts(const FigureFonts&) = delete;
+  FigureFonts& operator=(const FigureFonts&) = delete;
+
+  struct Face {
+    FcPattern* pattern = nullptr;
+    cairo_font_face_t* face = nullptr;
+    FcCharSet* charset = nullptr;  // owned by pattern
+    double heightPerEm = 1.0;      // ascent + descent at size 1
+  };
+
+  const Face& face(bool bold, bool fallback) {
+    const auto key = std::make_pair(bold, fallback);
+    auto it = faces_.find(key);
+    if (it != faces_.end()) return it->second;
+    Face f;
+    f.pattern = matchFont(fallback ? "DejaVu Sans" : family_, bold);
+    if (f.pattern == nullptr) throw runtimeError({family_}, "fontconfig found no font for the figure's labels");
+    f.face = cairo_ft_font_face_create_for_pattern(f.pattern);
+    FcPatternGetCharSet(f.pattern, FC_CHARSET, 0, &f.charset);
+    // The GL labels size text by stb_truetype's "pixel height" (ascent −
+    // descent); the same metric here keeps the figure's text the same size.
+    cairo_surface_t* scratch = cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1);
+    cairo_t* cr = cairo_create(scratch);
+    cairo_font_options_t* unhinted = cairo_font_options_create();
+    cairo_font_options_set_hint_metrics(unhinted, CAIRO_HINT_METRICS_OFF);  // else rounded to whole units
+    cairo_set_font_options(cr, unhinted);
+    cairo_font_options_destroy(unhinted);
+    cairo_set_font_face(cr, f.face);
+    constexpr double kProbe = 1000.0;
+    cairo_set_font_size(cr, kProbe);
+    cairo_font_extents_t e;
+    cairo_font_extents(cr, &e);
+    if (e.ascent + e.descent > 0.0) f.heightPerEm = (e.ascent + e.descent) / kProbe;
+    cairo_destroy(cr);
+    cairo_surface_destroy(scratch);
+    return faces_.emplace(key, f).first->second;
+  }
+
+  // The text split into runs, each in the first face that has its characters.
+  struct Run {
+    const Face* face;
+    std::string utf8;
+  };
+  std::vector<Run> runs(const std::string& text, bool bold) {
+    const Face& primary = face(bold, false);
+    std::vector<Run> out;
+    std::u32string current;
+    const Face* currentFace = nullptr;
+    for (char32_t c : decodeUtf8(text)) {
+      const bool has = primary.charset == nullptr || FcCharSetHasChar(primary.charset, c) || c == U' ';
+      const Face* f = has ? &primary : &face(bold, true);
+      if (f != currentFace && !current.empty()) {
+        out.push_back({currentFace, encodeUtf8(current)});
+        current.clear();
+      }
+      currentFace = f;
+      current += c;
+    }
+    if (!current.empty()) out.push_back({currentFace, encodeUtf8(current)});
+    return out;
+  }
+
+ private:
+  std::string family_;
+  std::map<std::pair<bool, bool>, Face> faces_;
+};
+
+// A view's projection into figure units (= DrawList pixels), with the GL
+// window depth of the line shader (its depth bias included).
+struct Projected {
+  bool valid = false;
+  glm::dvec2 xy{0.0};
+  double depth = 1.0;
+};
+struct ViewProjection {
+  glm::dmat4 clipFromWorld{1.0};
+  glm::dvec2 origin{0.0}, size{1.0};
+  Projected operator()(const glm::dvec3& p, double depthBias = 0.0) const {
+    const glm::dvec4 c = clipFromWorld * glm::dvec4(p, 1.0);
+    Projected out;
+    if (c.w <= 1e-6) return out;  // behind the camera: GL skips the segment too
+    out.valid = true;
+    out.xy = origin + glm::dvec2((c.x / c.w * 0.5 + 0.5) * size.x, (0.5 - c.y / c.w * 0.5) * size.y);
+    out.depth = ((c.z - depthBias * c.w) / c.w) * 0.5 + 0.5;
+    return out;
+  }
+};
+
+// Depth-buffer look-ups in figure units.
+struct DepthTest {
+  const std::vector<float>* depth = nullptr;
+  int width = 0, height = 0;
+  double kx = 1.0, ky = 1.0;  // raster pixels per figure unit
+  [[nodiscard]] bool visible(const Projected& p) const {
+    if (depth == nullptr || depth->empty()) return true;
+    const int x = static_cast<int>(std::floor(p.xy.x * kx)), y = static_cast<int>(std::floor(p.xy.y * ky));
+    if (x < 0 || y < 0 || x >= width || y >= height) return true;  // outside: clipped by the view anyway
+    // GL_LEQUAL against a 24-bit buffer: half a step of slack.
+    return p.depth <= double((*depth)[static_cast<std::size_t>(y) * width + x]) + 0.5 / 16777216.0;
+  }
+};
+
+// A polyline's visible pieces as one path of sub-paths. A projected straight
+// segment stays straight, so only its ends and the points where it goes
+// behind or comes out from an opaque mesh are needed; those are found by
+// stepping about one raster pixel along it and bisecting the step.
+void addVisiblePath(cairo_t* cr, const PolylineItem& p, const ViewProjection& project, const DepthTest& test) {
+  const double bias = p.depthTested ? 0.0008 : 0.0;  // the line shader's bias (renderer drawPolyline)
+  bool open = false;
+  auto extend = [&](const glm::dvec2& q, bool newPiece) {
+    if (newPiece || !open) cairo_move_to(cr, q.x, q.y);
+    else cairo_line_to(cr, q.x, q.y);
+    open = true;
+  };
+  for (std::size_t i = 0; i + 1 < p.points.size(); ++i) {
+    const glm::dvec3 a(p.points[i]), b(p.points[i + 1]);
+    const Projected pa = project(a, bias), pb = project(b, bias);
+    if (!pa.valid || !pb.valid) {
+      open = false;
+      continue;
+    }
+    if (!p.depthTested) {
+      if (!open) extend(pa.xy, true);
+      extend(pb.xy, false);
+      continue;
+    }
+    auto at = [&](double t) { return project(glm::mix(a, b, t), bias); };
+    const double lengthPx = glm::length(glm::dvec2((pb.xy.x - pa.xy.x) * test.kx, (pb.xy.y - pa.xy.y) * test.ky));
+    const int steps = std::clamp(static_cast<int>(std::ceil(lengthPx)), 1, 4096);
+    bool wasVisible = test.visible(pa);
+    if (wasVisible && !open) extend(pa.xy, true);
+    for (int j = 1; j <= steps; ++j) {
+      const double t1 = double(j) / steps;
+      const bool isVisible = test.visible(at(t1));
+      if (isVisible != wasVisible) {
+        double lo = double(j - 1) / steps, hi = t1;  // lo has wasVisible, hi has isVisible
+        for (int k = 0; k < 8; ++k) {
+          const double mid = 0.5 * (lo + hi);
+          (test.visible(at(mid)) == wasVisible ? lo : hi) = mid;
+        }
+        const glm::dvec2 edge = at(0.5 * (lo + hi)).xy;
+        if (wasVisible) {
+          extend(edge, false);
+          open = false;
+        } else {
+          extend(edge, true);
+        }
+        wasVisible = isVisible;
+      }
+    }
+    if (wasVisible) extend(pb.xy, false);
+    else open = false;
+  }
+}
+
+// Convex hull (Andrew's monotone chain), counter-clockwise.
+std::vector<glm::dvec2> convexHull(std::vector<glm::dvec2> pts) {
+  std::sort(pts.begin(), pts.end(), [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  if (pts.size() < 3) return pts;
+  auto cross = [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+  };
+  std::vector<glm::dvec2> hull(2 * pts.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], pts[i]) <= 0) --k;
+    hull[k++] = pts[i];
+  }
+  for (std::size_t i = pts.size() - 1, t = k + 1; i-- > 0;) {
+    while (k >= t && cross(hull[k - 2], hull[k - 1], pts[i]) <= 0) --k;
+    hull[k++] = pts[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+// An arrow as the renderer builds it (cylinder to the neck, cone to the tip;
+// renderer drawablesOf), drawn as the outlines of its two solids: the convex
+// hull of each one's projected rims, right for any viewing direction.
+void drawArrow(cairo_t* cr, const ArrowItem& a, const ViewProjection& project) {
+  const glm::dvec3 origin(a.origin), tip(a.tip);
+  const double len = glm::length(tip - origin);
+  if (len <= 0.0) return;
+  const double r = a.shaftRadius;
+  const double headLength = std::min(len * 0.35, r * 6.0);
+  const glm::dvec3 dir = (tip - origin) / len;
+  const glm::dvec3 neck = tip - dir * headLength;
+  const glm::dvec3 helper = std::abs(dir.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+  const glm::dvec3 u = glm::normalize(glm::cross(helper, dir)), v = glm::cross(dir, u);
+  auto rim = [&](const glm::dvec3& centre, double radius, std::vector<glm::dvec2>& out) {
+    for (int k = 0; k < 32; ++k) {
+      const double phi = 2.0 * M_PI * k / 32.0;
+      const Projected q = project(centre + radius * (std::cos(phi) * u + std::sin(phi) * v));
+      if (!q.valid) return false;
+      out.push_back(q.xy);
+    }
+    return true;
+  };
+  std::vector<glm::dvec2> shaft, head;
+  const Projected apex = project(tip);
+  if (!rim(origin, r, shaft) || !rim(neck, r, shaft) || !rim(neck, r * 2.6, head) || !apex.valid) return;
+  head.push_back(apex.xy);
+  setColor(cr, a.color, 1.0f);
+  for (const auto* solid : {&shaft, &head}) {
+    const std::vector<glm::dvec2> hull = convexHull(*solid);
+    for (std::size_t k = 0; k < hull.size(); ++k)
+      (k == 0 ? cairo_move_to : cairo_line_to)(cr, hull[k].x, hull[k].y);
+    cairo_close_path(cr);
+    cairo_fill(cr);
+  }
+}
+
+// A mark (MeshItem::figureDisc, a unit sphere scaled and placed by
+// worldFromModel) as a flat disc of its projected radius, left out where
+// its point nearest the camera is behind an opaque mesh.
+void drawDisc(cairo_t* cr, const MeshItem& m, const View& v, const ViewProjection& project, const DepthTest& test) {
+  const glm::dmat4 worldFromModel(m.worldFromModel);
+  const glm::dvec3 centre(worldFromModel[3]);
+  const double radius = glm::length(glm::dvec3(worldFromModel[0]));
+  const glm::dvec3 toCamera = glm::normalize(glm::dvec3(v.camera.position) - centre);
+  const glm::dmat4 viewFromWorld(v.camera.viewFromWorld);
+  const glm::dvec3 cameraRight(viewFromWorld[0][0], viewFromWorld[1][0], viewFromWorld[2][0]);
+  const Projected c = project(centre), edge = project(centre + radius * cameraRight);
+  const Projected front = project(centre + radius * toCamera);
+  if (!c.valid || !edge.valid || !front.valid || !test.visible(front)) return;
+  setColor(cr, m.material.color, 1.0f);
+  cairo_new_sub_path(cr);
+  cairo_arc(cr, c.xy.x, c.xy.y, glm::length(edge.xy - c.xy), 0.0, 2.0 * M_PI);
+  cairo_fill(cr);
+}
+
+// The part of an RGBA image (straight alpha) inside `rect` that is not fully
+// transparent, placed at its figure position: the image's own alpha is the
+// silhouette, and what is empty is left out of the file.
+void paintRaster(cairo_t* cr, const media::Image& image, const PixelRect& rect, double kx, double ky) {
+  if (image.rgba.empty()) return;
+  const int x0 = std::clamp(rect.x, 0, image.width), y0 = std::clamp(rect.y, 0, image.height);
+  const int x1 = std::clamp(rect.x + rect.width, 0, image.width), y1 = std::clamp(rect.y + rect.height, 0, image.height);
+  int lx = x1, ly = y1, hx = x0 - 1, hy = y0 - 1;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x)
+      if (image.pixel(x, y)[3] != 0) {
+        lx = std::min(lx, x), hx = std::max(hx, x);
+        ly = std::min(ly, y), hy = std::max(hy, y);
+      }
+  if (hx < lx) return;
+  const int w = hx - lx + 1, h = hy - ly + 1;
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h);
+  cairo_surface_flush(surface);
+  unsigned char* data = cairo_image_surface_get_data(surface);
+  const int stride = cairo_image_surface_get_stride(surface);
+  for (int y = 0; y < h; ++y) {
+    auto* row = reinterpret_cast<std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
+    for (int x = 0; x < w; ++x) {
+      const std::uint8_t* p = image.pixel(lx + x, ly + y);
+      const std::uint32_t alpha = p[3];
+      auto premultiply = [&](std::uint8_t c) { return (std::uint32_t(c) * alpha + 127) / 255; };
+      row[x] = (alpha << 24) | (premultiply(p[0]) << 16) | (premultiply(p[1]) << 8) | premultiply(p[2]);
+    }
+  }
+  cairo_surface_mark_dirty(surface);
+  cairo_save(cr);
+  cairo_translate(cr, lx / kx, ly / ky);
+  cairo_scale(cr, 1.0 / kx, 1.0 / ky);
+  cairo_set_source_surface(cr, surface, 0.0, 0.0);
+  cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_GOOD);
+  cairo_rectangle(cr, 0, 0, w, h);
+  cairo_fill(cr);
+  cairo_restore(cr);
+  cairo_surface_destroy(surface);
+}
+
+// A label placed as the GL renderer places it (drawLabel): anchor, offset,
+// alignment by the advance width, baseline 0.36 of the size below the anchor.
+void drawLabel(cairo_t* cr, FigureFonts& fonts, const LabelItem& label, const glm::dvec2& origin,
+               const ViewProjection* project, double fontScale) {
+  glm::dvec2 pen = origin + glm::dvec2(label.anchor.x, label.anchor.y);
+  if (label.worldAnchored && project != nullptr) {
+    const Projected q = (*project)(glm::dvec3(label.anchor));
+    if (!q.valid) return;
+    pen = q.xy;
+  }
+  pen += glm::dvec2(label.offsetPx);
+  const double px = label.sizePx * fontScale;
+  const std::vector<FigureFonts::Run> runs = fonts.runs(label.text, label.bold);
+  const double em = px / fonts.face(label.bold, false).heightPerEm;
+  double width = 0.0;
+  for (const auto& run : runs) {
+    cairo_set_font_face(cr, run.face->face);
+    cairo_set_font_size(cr, em);
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, run.utf8.c_str(), &e);
+    width += e.x_advance;
+  }
+  if (label.align == Align::Center) pen.x -= 0.5 * width;
+  if (label.align == Align::Right) pen.x -= width;
+  setColor(cr, glm::vec3(label.color), label.color.a);
+  cairo_move_to(cr, pen.x, pen.y + 0.36 * px);
+  for (const auto& run : runs) {
+    cairo_set_font_face(cr, run.face->face);
+    cairo_set_font_size(cr, em);
+    cairo_show_text(cr, run.utf8.c_str());  // advances the current point
+  }
+  cairo_new_path(cr);
+}
+
+bool overlap(const View& a, const View& b) {
+  return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+}
+
+// cairo writes through this into the AtomicFile; an exception cannot cross
+// cairo's C frames, so it is kept and rethrown after.
+struct StreamSink {
+  AtomicFile* file = nullptr;
+  std::exception_ptr error;
+};
+cairo_status_t writeToSink(void* closure, const unsigned char* data, unsigned int length) {
+  auto* sink = static_cast<StreamSink*>(closure);
+  try {
+    sink->file->write(std::string_view(reinterpret_cast<const char*>(data), length));
+    return CAIRO_STATUS_SUCCESS;
+  } catch (...) {
+    sink->error = std::current_exception();
+    return CAIRO_STATUS_WRITE_ERROR;
+  }
+}
+
+}  // namespace
+
+bool hasMeshes(const DrawList& list, MeshLayer layer) {
+  return std::any_of(list.meshes.begin(), list.meshes.end(),
+                     [&](const MeshItem& m) { return m.mesh && inLayer(m, layer); });
+}
+
+DrawList meshLayerOf(const DrawList& list, MeshLayer layer, int width, int height) {
+  DrawList out;
+  out.width = width;
+  out.height = height;
+  out.transparent = true;
+  // A depth pass needs no anti-aliasing: one sample is the depth at the pixel.
+  out.msaaSamples = layer == MeshLayer::TranslucentDepth ? 1 : list.msaaSamples;
+  const double kx = double(width) / list.width, ky = double(height) / list.height;
+  for (const View& v : list.views) {
+    View scaled = v;
+    const PixelRect r = scaledRect(v, kx, ky);
+    scaled.x = r.x, scaled.y = r.y, scaled.width = r.width, scaled.height = r.height;
+    scaled.background = false;  // the page shows through
+    scaled.frame = false;       // drawn as a vector
+    if (layer != MeshLayer::Opaque) scaled.light.shadow = false;  // glass takes no shadow
+    out.views.push_back(scaled);
+  }
+  for (const MeshItem& m : list.meshes) {
+    if (!m.mesh || !inLayer(m, layer)) continue;
+    out.meshes.push_back(m);
+    if (layer == MeshLayer::TranslucentDepth) out.meshes.back().material.opacity = 1.0f;
+  }
+  return out;
+}
+
+void hideBehindOpaque(media::Image& translucent, const std::vector<float>& translucentDepth,
+                      const std::vector<float>& opaqueDepth) {
+  const std::size_t n = static_cast<std::size_t>(translucent.width) * translucent.height;
+  if (translucentDepth.size() != n || opaqueDepth.size() != n) return;
+  for (std::size_t i = 0; i < n; ++i)
+    if (opaqueDepth[i] < translucentDepth[i]) translucent.rgba[4 * i + 3] = 0;
+}
+
+void checkFigureFont(const std::string& family, const SourceLoc& where) {
+  FcPattern* match = matchFont(family, false);
+  const bool found = match != nullptr && sameFamily(match, family);
+  if (match != nullptr) FcPatternDestroy(match);
+  if (!found)
+    throw badInput(where, "figure.font: no font family '{}' is installed (`fc-list : family` lists them; "
+                          "Debian's fonts-lmodern gives \"Latin Modern Roman\")", family);
+}
+
+void writeFigure(const std::filesystem::path& out, FigureFormat format, const DrawList& list,
+                 const FigureRasters& rasters, const FigureStyle& style) {
+  // Figure units are the DrawList's pixels, scaled onto the physical page.
+  const double unit = style.widthPt / list.width;
+  const double heightPt = unit * list.height;
+  const double kx = rasters.width > 0 ? double(rasters.width) / list.width : 1.0;
+  const double ky = rasters.height > 0 ? double(rasters.height) / list.height : 1.0;
+
+  AtomicFile file(out);
+  StreamSink sink{&file, nullptr};
+  cairo_surface_t* surface =
+      format == FigureFormat::Pdf ? cairo_pdf_surface_create_for_stream(writeToSink, &sink, style.widthPt, heightPt)
+                                  : cairo_svg_surface_create_for_stream(writeToSink, &sink, style.widthPt, heightPt);
+  if (format == FigureFormat::Pdf) cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "rollspin");
+  if (format == FigureFormat::Svg) cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PT);
+  cairo_t* cr = cairo_create(surface);
+  cairo_scale(cr, unit, unit);
+  // Outlines, not hinted glyph positions: the text scales with the figure.
+  cairo_font_options_t* options = cairo_font_options_create();
+  cairo_font_options_set_hint_style(options, CAIRO_HINT_STYLE_NONE);
+  cairo_font_options_set_hint_metrics(options, CAIRO_HINT_METRICS_OFF);
+  cairo_set_font_options(cr, options);
+  cairo_font_options_destroy(options);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+
+  FigureFonts fonts(style.font);
+  // figure.font_size_pt is the body text's em size, as LaTeX's 10pt is; the
+  // labels' sizePx is their ascent + descent (the GL labels' pixel height).
+  const double fontScale =
+      style.bodyTextPt
+          ? (*style.bodyTextPt * fonts.face(false, false).heightPerEm / unit) / std::max(1.0f, style.bodyTextPx)
+          : 1.0;
+  const DepthTest depth{&rasters.opaqueDepth, rasters.width, rasters.height, kx, ky};
+  for (std::size_t i = 0; i < list.views.size(); ++i) {
+    const View& v = list.views[i];
+    const int index = static_cast<int>(i);
+    cairo_save(cr);
+    // The view's rectangle, less any later view drawn over it (an inset
+    // clears its rectangle in the GL image too).
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+    cairo_rectangle(cr, v.x, v.y, v.width, v.height);
+    for (std::size_t j = i + 1; j < list.views.size(); ++j) {
+      const View& w = list.views[j];
+      if (!overlap(v, w)) continue;
+      const int x0 = std::max(v.x, w.x), y0 = std::max(v.y, w.y);
+      const int x1 = std::min(v.x + v.width, w.x + w.width), y1 = std::min(v.y + v.height, w.y + w.height);
+      cairo_rectangle(cr, x0, y0, x1 - x0, y1 - y0);
+    }
+    cairo_clip(cr);
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+
+    if (!style.transparent && v.background) {
+      // The composite pass's gradient, interpolated between sRGB-encoded ends.
+      cairo_pattern_t* g = cairo_pattern_create_linear(0.0, v.y, 0.0, v.y + v.height);
+      cairo_pattern_add_color_stop_rgb(g, 0.0, encodeSrgb(v.backgroundTop.r), encodeSrgb(v.backgroundTop.g),
+                                       encodeSrgb(v.backgroundTop.b));
+      cairo_pattern_add_color_stop_rgb(g, 1.0, encodeSrgb(v.backgroundBottom.r), encodeSrgb(v.backgroundBottom.g),
+                                       encodeSrgb(v.backgroundBottom.b));
+      cairo_set_source(cr, g);
+      cairo_paint(cr);
+      cairo_pattern_destroy(g);
+    }
+
+    ViewProjection project;
+    project.clipFromWorld = glm::dmat4(v.camera.clipFromView * v.camera.viewFromWorld);
+    project.origin = glm::dvec2(v.x, v.y);
+    project.size = glm::dvec2(v.width, v.height);
+    const PixelRect rasterRect = scaledRect(v, kx, ky);
+
+    // The GL renderer's order: opaque meshes (image, then the marks),
+    // depth-tested lines (cut where a mesh is in front), the arrows,
+    // translucent meshes over them, then the lines that ignore depth, the
+    // labels and the frame.
+    paintRaster(cr, rasters.opaque, rasterRect, kx, ky);
+    // Marks are opaque meshes too: under the lines, as GL draws them.
+    for (const MeshItem& m : list.meshes)
+      if (m.view == index && m.mesh && m.figureDisc && m.material.opacity >= 1.0f) drawDisc(cr, m, v, project, depth);
+    for (const PolylineItem& p : list.polylines) {
+      if (p.view != index || !p.depthTested || p.points.size() < 2) continue;
+      addVisiblePath(cr, p, project, depth);
+      setColor(cr, glm::vec3(p.color), p.color.a);
+      cairo_set_line_width(cr, p.widthPx);
+      cairo_stroke(cr);
+    }
+    for (const ArrowItem& a : list.arrows)
+      if (a.view == index) drawArrow(cr, a, project);
+    paintRaster(cr, rasters.translucent, rasterRect, kx, ky);
+    for (const PolylineItem& p : list.polylines) {
+      if (p.view != index || p.depthTested || p.points.size() < 2) continue;
+      addVisiblePath(cr, p, project, depth);
+      setColor(cr, glm::vec3(p.color), p.color.a);
+      cairo_set_line_width(cr, p.widthPx);
+      cairo_stroke(cr);
+    }
+    for (const LabelItem& l : list.labels)
+      if (l.view == index) drawLabel(cr, fonts, l, project.origin, &project, fontScale);
+    if (v.frame) {
+      const double t = std::max(1.0, v.height / 300.0);
+      setColor(cr, glm::vec3(0.35f, 0.38f, 0.42f), 1.0f);
+      cairo_set_line_width(cr, t);
+      cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
+      cairo_rectangle(cr, v.x + 0.5 * t, v.y + 0.5 * t, v.width - t, v.height - t);
+      cairo_stroke(cr);
+      cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    }
+    cairo_restore(cr);
+  }
+  // Image-level labels (the title) over everything.
+  for (const LabelItem& l : list.labels)
+    if (l.view < 0)
+      drawLabel(cr, fonts, l, glm::dvec2(0.0), nullptr, fontScale);
+
+  cairo_destroy(cr);
+  cairo_surface_finish(surface);
+  const cairo_status_t status = cairo_surface_status(surface);
+  cairo_surface_destroy(surface);
+  if (sink.error) std::rethrow_exception(sink.error);
+  if (status != CAIRO_STATUS_SUCCESS)
+    throw runtimeError({out.string()}, "cairo could not write the figure: {}", cairo_status_to_string(status));
+  file.commit();
+}
+
+}  // namespace rollspin::render

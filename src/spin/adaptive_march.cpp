@@ -228,7 +228,7 @@ SolveStats adaptiveRun(const geometry::ContactPath& path, double ballRadius, Met
       }
       // Samples inside [here, here + step): a partial step from this node.
       const double end = last ? b : here + step;
-      while (next < sampleS.size() && sampleS[next] < end) {
+      while (next < sampleS.size() && !sampleS.beyondSlice(next) && sampleS[next] < end) {
         const double dh = (sampleS[next] - s.hi) - s.lo;
         const Su2 uj = dh <= 0.0 ? u : adaptiveStep(path, ballRadius, method, u, here, dh);
         if (!track(uj)) return stop(SolveStatus::NonFinite, uj);
@@ -249,9 +249,10 @@ SolveStats adaptiveRun(const geometry::ContactPath& path, double ballRadius, Met
       h = (last ? std::max(h, step) : step) * factor;
     }
   }
-  for (; next < sampleS.size(); ++next)
+  for (; next < sampleS.size() && !sampleS.beyondSlice(next); ++next)
     if (sink) sink(next, sampleS[next], u);
   stats.final = u;
+  stats.samplesReported = next;
   stats.status = SolveStatus::Ok;
   return stats;
 }

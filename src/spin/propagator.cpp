@@ -194,14 +194,6 @@ Su2 orderedProduct(Su2* e, std::size_t m) {
 }
 }  // namespace
 
-namespace {
-// Thrown by a piece's sink at the first sample that belongs to a later piece
-// (forward-only samples, where the pieces' shares cannot be counted first).
-struct PieceDone {
-  Su2 final;  // that sample's U: the piece's U(L_k), it being clamped to L_k
-  std::size_t sample;
-};
-}  // namespace
 
 SolveStats Propagator::runPieces(const SampleArcLengths& sampleS, const SampleSink& sink) const {
   using Clock = std::chrono::steady_clock;
@@ -222,7 +214,7 @@ SolveStats Propagator::runPieces(const SampleArcLengths& sampleS, const SampleSi
     // This piece's samples: those before the next piece's start (the last
     // piece takes the rest). A random-access list is bisected (it is
     // non-decreasing); a forward-only one is handed over whole, and the
-    // sink stops the piece at the first sample beyond it.
+    // run stops at the first sample beyond the piece (beyondSlice).
     std::size_t end = sampleS.size();
     const bool bisect = !last && !sampleS.forwardOnly();
     if (bisect) {
@@ -240,33 +232,21 @@ SolveStats Propagator::runPieces(const SampleArcLengths& sampleS, const SampleSi
     const double tolerance = tolerance_ * pieceLength / std::max(path_.length(), 1e-300);
     Propagator sub(piece, ballRadius_, method_, steps, tolerance);
     sub.setStepLimit(stepLimit_);
-    const std::size_t base = next;
-    const bool watch = !last && !bisect;
-    try {
-      const SolveStats part = sub.run(mine, [&](std::size_t j, double, const Su2& u) {
-        // sampleS[base + j] is the sample the run has just read: a
-        // forward-only cursor is never asked for an earlier one.
-        const double s = sampleS[base + j];
-        if (watch && s >= pieces[k + 1].start) throw PieceDone{u, base + j};
-        if (sink) sink(base + j, s, u * before);
-      });
-      stats.steps += part.steps;
-      stats.rejectedSteps += part.rejectedSteps;
-      stats.unitarityError = std::max(stats.unitarityError, part.unitarityError);
-      if (part.status != SolveStatus::Ok) {
-        stats.status = part.status;
-        break;
-      }
-      before = part.final * before;
-      next = end;
-    } catch (const PieceDone& done) {
-      // The run reached L_k: a sample beyond the piece reads as exactly L_k
-      // (slice) and is reported after the last step with U(L_k), bit for bit
-      // the run's final value. Its step count is lost with it.
-      stats.unitarityError = std::max(stats.unitarityError, std::abs(done.final.norm() - 1.0));
-      before = done.final * before;
-      next = done.sample;
+    // A forward-only slice ends at the first sample of a later piece: the
+    // run stops there (its U is this piece's U(L_k), that sample reading as
+    // L_k) and the next piece starts from it.
+    const SolveStats part = sub.run(mine, [&](std::size_t j, double, const Su2& u) {
+      if (sink) sink(next + j, sampleS[next + j], u * before);
+    });
+    stats.steps += part.steps;
+    stats.rejectedSteps += part.rejectedSteps;
+    stats.unitarityError = std::max(stats.unitarityError, part.unitarityError);
+    if (part.status != SolveStatus::Ok) {
+      stats.status = part.status;
+      break;
     }
+    before = part.final * before;
+    next += part.samplesReported;
   }
   stats.final = before;
   stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -292,7 +272,7 @@ SolveStats Propagator::run(const SampleArcLengths& sampleS, const SampleSink& si
 
   if (method_ == Method::Exact) {
     if (!path_.hasConstantCurvatures()) return finish(SolveStatus::ExactNeedsConstantCurvature);
-    for (std::size_t j = 0; j < sampleS.size(); ++j) {
+    for (std::size_t j = 0; j < sampleS.size() && !sampleS.beyondSlice(j); ++j, ++stats.samplesReported) {
       const Su2 u = closedForm(sampleS[j]);
       if (!track(u)) return finish(SolveStatus::NonFinite);
       if (sink) sink(j, sampleS[j], u);
@@ -352,7 +332,7 @@ SolveStats Propagator::run(const SampleArcLengths& sampleS, const SampleSink& si
       const double sBlock = a + static_cast<double>(k0) * h;
       const double sBlockEnd = (k0 + static_cast<long long>(m) == n) ? b : sBlock + static_cast<double>(m) * h;
       const bool lastBlock = seg + 2 == cuts.size() && k0 + static_cast<long long>(m) == n;
-      const bool samplesHere = next < sampleS.size() && sampleS[next] < sBlockEnd;
+      const bool samplesHere = next < sampleS.size() && !sampleS.beyondSlice(next) && sampleS[next] < sBlockEnd;
       const bool useKernel = vectorKernel && m == kBlock;
 
       // ω at the nodes of the block's first step: on a rigid field, the
@@ -397,7 +377,7 @@ SolveStats Propagator::run(const SampleArcLengths& sampleS, const SampleSink& si
       if (samplesHere) {
         Su2 prefix = u;
         std::size_t node = 0;
-        while (next < sampleS.size() && sampleS[next] < sBlockEnd) {
+        while (next < sampleS.size() && !sampleS.beyondSlice(next) && sampleS[next] < sBlockEnd) {
           const double sj = std::max(sampleS[next], sBlock);
           const std::size_t target =
               std::min<std::size_t>(m - 1, static_cast<std::size_t>(std::max(0.0, (sj - sBlock) / h)));
@@ -425,13 +405,14 @@ SolveStats Propagator::run(const SampleArcLengths& sampleS, const SampleSink& si
       stats.steps += static_cast<long long>(m);
       if (!track(u)) return finish(SolveStatus::NonFinite);
       if (lastBlock) {
-        for (; next < sampleS.size(); ++next) {
+        for (; next < sampleS.size() && !sampleS.beyondSlice(next); ++next) {
           if (sink) sink(next, sampleS[next], u);
         }
       }
     }
   }
   stats.final = u;
+  stats.samplesReported = next;
   return finish(SolveStatus::Ok);
 }
 

@@ -79,6 +79,9 @@ struct SolveStats {
   double unitarityError = 0.0;  // max |‖U‖ − 1| over grid nodes and samples
   double seconds = 0.0;         // wall time of the march alone
   Su2 final;                    // U(L)
+  // Samples handed to the sink: all of them, except that a run over a
+  // forward-only slice stops at the first sample of a later piece.
+  std::size_t samplesReported = 0;
 };
 
 // The arc lengths at which a run reports U: an explicit non-decreasing list,
@@ -117,6 +120,9 @@ class SampleArcLengths {
     out.limit_ = limit;
     return out;
   }
+  // Whether sample j of a slice lies at or beyond `limit` (a later piece's
+  // samples, in a forward-only slice whose count could not be known).
+  [[nodiscard]] bool beyondSlice(std::size_t j) const { return sliced_ && raw(first_ + j) >= limit_; }
   // A generated sequence may only be read forwards (see generated()).
   [[nodiscard]] bool forwardOnly() const { return static_cast<bool>(generator_); }
 

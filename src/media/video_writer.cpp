@@ -186,6 +186,11 @@ VideoWriter::VideoWriter(fs::path finalPath, const VideoSettings& settings) : im
   m.frame->format = c->pix_fmt;
   m.frame->width = c->width;
   m.frame->height = c->height;
+  // Some encoders (prores_ks) write the frame's tags, not the context's.
+  m.frame->color_range = c->color_range;
+  m.frame->color_primaries = c->color_primaries;
+  m.frame->color_trc = c->color_trc;
+  m.frame->colorspace = c->colorspace;
   m.check(av_frame_get_buffer(m.frame, 0), "allocating a frame");
 
   if (m.pixelFormat != AV_PIX_FMT_PAL8) {  // a palette comes from a filter graph (gif_writer), not swscale

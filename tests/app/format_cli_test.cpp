@@ -7,11 +7,21 @@
 
 #include <fmt/format.h>
 
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 #include "media/image_io.hpp"
 #include "media/video_probe.hpp"
 #include "support/cli_runner.hpp"
+
+extern char** environ;
 
 namespace rollspin {
 namespace {
@@ -206,6 +216,56 @@ TEST(FormatCli, GifDefaultsToA480PixelWide25FpsLoopAndFramesWork) {
                                            (dir / fmt::format("part.{}", ext)).string()}));
     ASSERT_EQ(p.exitCode, 0) << p.err;
     EXPECT_EQ(test::probeVideo(dir / fmt::format("part.{}", ext)).ptsSeconds.size(), 6u) << ext;
+  }
+}
+
+// Starts rollspin without waiting for it (stderr to a file).
+pid_t spawnRollspin(const std::vector<std::string>& args, const fs::path& errFile) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 2, errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::vector<std::string> store{test::binaryPath().string()};
+  store.insert(store.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : store) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  return pid;
+}
+
+// SIGINT once frames reach the file: a shorter, playable NAME.partial.EXT
+// and nothing else. The GIF is interrupted after its palette pass.
+TEST(FormatCli, SigintLeavesAPlayablePartialFileForEveryVideoFormat) {
+  for (const char* ext : {"webm", "gif", "mov"}) {
+    SCOPED_TRACE(ext);
+    const fs::path dir = test::freshTempDir(fmt::format("format_sigint_{}", ext));
+    const std::string name = fmt::format("clip.{}", ext);
+    const pid_t pid = spawnRollspin({"render", lollipop(), "--set", "render.width=64", "--set", "render.height=48",
+                                     "--set", "animation.duration=100", "-o", (dir / name).string()},
+                                    dir / "stderr");
+    ASSERT_GT(pid, 0);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    bool encoding = false;
+    while (!encoding && std::chrono::steady_clock::now() < deadline) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      for (const auto& e : fs::directory_iterator(dir))
+        if (e.path().filename().string().starts_with("." + name + ".") && e.file_size() > 16384) encoding = true;
+    }
+    kill(pid, SIGINT);
+    int status = 0;
+    ASSERT_EQ(waitpid(pid, &status, 0), pid);
+    const std::string err = test::readFile(dir / "stderr");
+    ASSERT_TRUE(encoding) << "no encoded data appeared: " << err;
+    ASSERT_TRUE(WIFEXITED(status)) << err;
+    EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT) << err;
+    const std::string partial = fmt::format("clip.partial.{}", ext);
+    EXPECT_NE(err.find(partial), std::string::npos) << err;
+    EXPECT_EQ(filesIn(dir), (std::vector<std::string>{partial, "stderr"})) << "nothing else left";
+    const test::VideoProbe probe = test::probeVideo(dir / partial);
+    EXPECT_GT(probe.ptsSeconds.size(), 0u);
+    EXPECT_LT(probe.ptsSeconds.size(), 3000u);
   }
 }
 

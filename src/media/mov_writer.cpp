@@ -19,7 +19,9 @@ std::unique_ptr<FrameSink> openMovSink(const SinkOptions& o) {
   v.pixelFormat = o.alpha ? "yuva444p10le" : "yuv422p10le";
   // "apl0": the vendor Apple's own encoder writes; Final Cut and some
   // players check it.
-  v.codecOptions = {{"profile", o.alpha ? "4444" : "hq"}, {"vendor", "apl0"}};
+  // threads 0: slice threads on every core, as the ffmpeg tool does
+  // (libavcodec's default is one thread).
+  v.codecOptions = {{"profile", o.alpha ? "4444" : "hq"}, {"vendor", "apl0"}, {"threads", "0"}};
   if (o.alpha) v.codecOptions.emplace_back("alpha_bits", "16");
   v.muxerOptions = {{"movflags", "+faststart+write_colr"}};
   v.containerMetadata = o.containerMetadata;

@@ -43,7 +43,8 @@ std::unique_ptr<FrameSink> openWebmSink(const SinkOptions& o) {
                     {"crf", fmt::format("{}", crf)},
                     {"deadline", "good"},
                     {"cpu-used", std::to_string(cpuUsed(o.preset))},
-                    {"row-mt", "1"}};
+                    {"row-mt", "1"},
+                    {"threads", "0"}};  // automatic, as the ffmpeg tool does (libavcodec's default is 1)
   if (o.alpha) v.streamMetadata = {{"alpha_mode", "1"}};
   v.containerMetadata = o.containerMetadata;
   v.describe = fmt::format("VP9 crf {}, cpu-used {}{}", crf, cpuUsed(o.preset), o.alpha ? ", alpha" : "");

@@ -62,9 +62,15 @@ v.addEventListener('seeked', () => {
 EOF
 
 echo "== Chromium $(chromium --version 2>/dev/null | awk '{print $2}') decoded:"
-chromium --headless --no-sandbox --disable-gpu --mute-audio --autoplay-policy=no-user-gesture-required \
-  --allow-file-access-from-files --virtual-time-budget=15000 --dump-dom "file://$work/page.html" 2>/dev/null \
-  > "$work/dom.html"
+# Headless Chromium runs the page on virtual time; decoding is real work, so
+# on a busy machine the page may still be pending when the budget ends: try
+# again with a larger budget.
+for budget in 15000 40000 90000; do
+  chromium --headless --no-sandbox --disable-gpu --mute-audio --autoplay-policy=no-user-gesture-required \
+    --allow-file-access-from-files --virtual-time-budget=$budget --dump-dom "file://$work/page.html" 2>/dev/null \
+    > "$work/dom.html" || true
+  grep -q '<pre id="out">pending</pre>' "$work/dom.html" || break
+done
 python3 - "$work/dom.html" <<'EOF'
 import html, re, sys
 found = re.search(r'<pre id="out">(.*?)</pre>', open(sys.argv[1]).read(), re.S)

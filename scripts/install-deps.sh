@@ -10,7 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libosmesa6-dev libstb-dev fonts-dejavu-core
   libcairo2-dev poppler-utils librsvg2-bin fonts-lmodern
-  libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
+  libavcodec-dev libavformat-dev libavfilter-dev libswscale-dev libavutil-dev
   ffmpeg
   libmuparser-dev
   gnuplot-nox

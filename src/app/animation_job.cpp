@@ -4,7 +4,6 @@
 #include <pthread.h>
 
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <exception>
 #include <memory>
@@ -20,8 +19,8 @@
 #include "app/render_jobs.hpp"
 #include "app/shard_range.hpp"
 #include "core/stage_log.hpp"
-#include "media/mp4_writer.hpp"
-#include "media/png_sequence.hpp"
+#include "media/container_tags.hpp"
+#include "media/sink_factory.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"
@@ -43,38 +42,6 @@ constexpr std::array<QualityPreset, 4> kQualityPresets{{
     {"high", 1920, 1080, 60},
     {"4k", 3840, 2160, 60},
 }};
-
-std::string lowercase(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
-
-// render.format wins; otherwise the output's extension; otherwise MP4.
-// An explicit format that contradicts the extension is an error.
-scene::VideoFormat chooseFormat(const scene::SceneSpec& spec, const fs::path& output) {
-  const std::string ext = lowercase(output.extension().string());
-  const SourceLoc outputLoc{"-o " + output.string()};
-  std::error_code ec;  // a path through a file is simply not a folder
-  const bool isFolder = fs::is_directory(output, ec);
-  const bool folderLike = !output.empty() && (!output.has_extension() || isFolder);
-  if (spec.render.format) {
-    const scene::VideoFormat f = *spec.render.format;
-    if (f == scene::VideoFormat::Pdf || f == scene::VideoFormat::Svg)
-      throw badInput(spec.where("render.format"), "render.format = \"{}\" is a figure: render it with --still",
-                     f == scene::VideoFormat::Pdf ? "pdf" : "svg");
-    if (f == scene::VideoFormat::Png && ext == ".mp4")
-      throw badInput(spec.where("render.format"), "render.format = \"png\" writes a folder of frames, but -o names {}",
-                     output.string());
-    if (f == scene::VideoFormat::Mp4 && isFolder)
-      throw badInput(outputLoc, "render.format = \"mp4\" needs a file name, but {} is a folder", output.string());
-    return f;
-  }
-  if (output.empty() || ext == ".mp4") return scene::VideoFormat::Mp4;
-  if (folderLike) return scene::VideoFormat::Png;
-  if (ext == ".png")
-    throw badInput(outputLoc, "an animation's PNG frames go to a folder (e.g. -o output/frames/); for one image pass --still");
-  throw badInput(outputLoc, "unknown video format '{}': expected a .mp4 file, or a folder for PNG frames", ext);
-}
 
 // Frames travel to the encoder thread and come back here for reuse: a few
 // buffers for the whole clip instead of a fresh allocation (and its page
@@ -129,7 +96,17 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   if (o.width) overrides.push_back("render.width=" + std::to_string(*o.width));
   if (o.height) overrides.push_back("render.height=" + std::to_string(*o.height));
   if (o.transparent) overrides.push_back("render.transparent=true");
-  const scene::SceneSpec spec = loadScene(o.scenePath, overrides);
+  scene::SceneSpec spec = loadScene(o.scenePath, overrides);
+  const media::OutputFormat& format = chooseOutputFormat(spec, o.output, media::OutputUse::Animation);
+  // What the format's row asks of the clip. A GIF: its own default size
+  // when neither the scene nor a flag gives one (height by the aspect
+  // ratio), and a frame rate capped so frames last whole 1/100 s.
+  if (format.defaultWidth > 0 && !spec.locations.contains("render.width") && !spec.locations.contains("render.height")) {
+    const long long w = spec.render.width, h = spec.render.height;
+    spec.render.width = format.defaultWidth;
+    spec.render.height = std::max<long long>(1, std::llround(double(format.defaultWidth) * double(h) / double(w)));
+  }
+  if (format.fpsCap > 0 && spec.animation.fps.value() > format.fpsCap) spec.animation.fps = scene::FrameRate{format.fpsCap, 1};
   // Measured: a 1080p MP4 render peaks ~230 bytes per pixel above the still's
   // estimate (three queued RGBA frames, the yuv420p copy, x264's look-ahead).
   checkFrameMemory(spec, 256);
@@ -140,58 +117,40 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   const FrameRange range = o.frames  ? parseFrameRange(*o.frames, clock.frameCount())
                            : shard ? shardFrames(*shard, clock.frameCount())
                                    : FrameRange{0, clock.frameCount() - 1};
-  const scene::VideoFormat format = chooseFormat(spec, o.output);
   const int width = static_cast<int>(spec.render.width), height = static_cast<int>(spec.render.height);
+  const bool folder = format.isFolder();
 
   fs::path out = o.output;
   if (out.empty()) {
     // A part of a clip must not take the whole clip's name; PNG frames keep
     // their clip index, so parts share the clip's folder.
-    const bool mp4 = format == scene::VideoFormat::Mp4;
-    const std::string part = o.frames && mp4 ? fmt::format(".frames_{}-{}", range.first, range.last) : "";
-    out = fs::path("output") / (spec.name + part + (mp4 ? ".mp4" : ""));
+    const std::string part = o.frames && !folder ? fmt::format(".frames_{}-{}", range.first, range.last) : "";
+    out = fs::path("output") / (spec.name + part + format.defaultExtension());
     std::error_code ec;
     fs::create_directories("output", ec);
   }
   // A shard of a video is a file of its own beside the clip's name, which
   // `rollspin join` makes whole; PNG frames keep their index in one folder.
-  if (shard && format == scene::VideoFormat::Mp4) out = shardPath(out, *shard);
+  if (shard && !folder) out = shardPath(out, *shard);
 
   // From here on a Ctrl-C only raises a flag: the loop below then finishes
   // what exists (nothing, if it comes during set-up) instead of leaving a
   // temporary file behind.
   InterruptGuard interrupts;
-  std::unique_ptr<media::FrameSink> sink;
-  if (format == scene::VideoFormat::Mp4) {
-    if (spec.render.transparent)
-      throw badInput(spec.where("render.transparent"),
-                     "H.264 video has no alpha channel; use render.format = \"png\" for transparent frames");
-    for (const auto& [key, value] : {std::pair{"render.width", width}, std::pair{"render.height", height}})
-      if (value % 2 != 0)
-        throw badInput(spec.where(key), "{}: H.264 in yuv420p needs an even size, got {} (use {} or {})", key, value,
-                       value - 1, value + 1);
-    media::Mp4Settings settings;
-    settings.width = width;
-    settings.height = height;
-    settings.fpsNum = static_cast<int>(clock.fps().num);  // < 2³¹: checked by the scene loader
-    settings.fpsDen = static_cast<int>(clock.fps().den);
-    settings.crf = spec.animation.crf;
-    settings.preset = spec.animation.preset;
-    // What `rollspin join` checks before it puts parts together.
-    settings.tags = media::ContainerTags{
-        media::sha256Hex(scene::writeScene(spec)), ROLLSPIN_VERSION,
-        fmt::format("{} preset={} crf={} yuv420p bt709 {}x{} {}/{} fps", settings.encoder, settings.preset,
-                    settings.crf, width, height, settings.fpsNum, settings.fpsDen),
-        range.first, range.last, clock.frameCount()};
-    StageLog::instance().record("encoder");
-    sink = std::make_unique<media::Mp4Writer>(out, settings);
-  } else {
-    StageLog::instance().record("png-frames");
-    const bool wholeClip = range.first == 0 && range.last == clock.frameCount() - 1;
-    sink = std::make_unique<media::PngSequenceWriter>(
-        out, range.first, spec.render.transparent ? media::PngChannels::Rgba : media::PngChannels::Rgb,
-        wholeClip ? media::PngSequenceScope::WholeClip : media::PngSequenceScope::Part);
-  }
+  media::SinkOptions sinkOpts = sinkOptions(spec, out);
+  sinkOpts.fpsNum = static_cast<int>(clock.fps().num);  // < 2³¹: checked by the scene loader
+  sinkOpts.fpsDen = static_cast<int>(clock.fps().den);
+  sinkOpts.firstIndex = range.first;
+  sinkOpts.wholeClip = range.first == 0 && range.last == clock.frameCount() - 1;
+  // What `rollspin join` checks before it puts parts together.
+  sinkOpts.containerMetadata = media::containerMetadata(media::ContainerTags{
+      media::sha256Hex(scene::writeScene(spec)), ROLLSPIN_VERSION,
+      fmt::format("{} preset={} crf={} {}{}x{} {}/{} fps", format.name, sinkOpts.preset,
+                  sinkOpts.crf ? fmt::format("{}", *sinkOpts.crf) : std::string("default"),
+                  sinkOpts.alpha ? "alpha " : "", width, height, sinkOpts.fpsNum, sinkOpts.fpsDen),
+      range.first, range.last, clock.frameCount()});
+  StageLog::instance().record(folder ? "png-frames" : "encoder");
+  const std::unique_ptr<media::FrameSink> sink = media::openSink(format, sinkOpts);
 
   const auto texture = spec.render.layout == scene::RenderLayout::Twin ? nullptr : loadBallTexture(spec);
   const SceneDrawer drawer(spec, model, texture, makeSceneFacts(spec, model));
@@ -201,8 +160,61 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
 
   // Render here (the context is current on this thread), encode there.
   using Frame = std::shared_ptr<const media::Image>;
+  const auto pool = std::make_shared<ImagePool>();
+  double poseWait = 0.0;
+  // One pass over the range: poses from one forward march; frame k is
+  // rendered and delivered when wanted(k). Held frames show the same pose:
+  // the same pixels, rendered once — unless a storyboard's caption or camera
+  // changes meanwhile. Stops early when deliver refuses or on a signal.
+  const auto renderPass = [&](const auto& wanted, const auto& deliver) {
+    FramePoseStream poses(spec, model, clock, range);
+    Frame previous;
+    double previousS = std::nan(""), poseS = std::nan("");
+    std::size_t previousSegment = 0;
+    std::optional<FrameOrientations> pose;
+    for (long long k = range.first; k <= range.last; ++k) {
+      if (InterruptGuard::received() != 0) break;
+      const double s = clock.arcLength(k);
+      const StoryPlace story = clock.place(k);
+      if (!pose || s != poseS) {  // the stream has one pose per distinct arc length
+        pose = poses.next();
+        if (!pose || pose->current.s != s) throw std::logic_error("frame pose stream out of step with the clock");
+        poseS = s;
+      }
+      if (!wanted(k)) {
+        previous.reset();
+        continue;
+      }
+      const bool cameraMoving = story.segment > 0 && story.seconds < std::min(SceneDrawer::kCameraMove, story.duration);
+      if (!previous || s != previousS || story.segment != previousSegment || cameraMoving) {
+        pose->story = story;
+        const std::shared_ptr<media::Image> image = pool->acquire();
+        renderer.render(drawer.draw(*pose), *image);
+        previous = image;
+        previousS = s;
+        previousSegment = story.segment;
+      }
+      if (!deliver(previous)) break;
+    }
+    poseWait += poses.waitSeconds();
+  };
+
+  // A sink that needs to see the clip first (a GIF's palette) gets its
+  // frames in a first pass, here on this thread.
+  const std::vector<long long> previewFrames = sink->previewFrames(range.count());
+  ProgressMeter progress(range.count() + static_cast<long long>(previewFrames.size()), o.quiet);
+  if (!previewFrames.empty()) {
+    std::size_t next = 0;
+    renderPass([&](long long k) { return next < previewFrames.size() && k - range.first == previewFrames[next]; },
+               [&](const Frame& frame) {
+                 sink->preview(frame->view());
+                 progress.frameDone();
+                 ++next;
+                 return true;
+               });
+  }
+
   BoundedQueue<Frame> queue(3);
-  ProgressMeter progress(range.count(), o.quiet);
   std::exception_ptr encodeError;
   std::thread encoder([&] {
     pthread_setname_np(pthread_self(), "rollspin-encode");  // tells the stages apart in perf and top -H
@@ -217,38 +229,9 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     }
   });
 
-  const auto pool = std::make_shared<ImagePool>();
-  double poseWait = 0.0;
   try {
-    // All poses from one forward march, a frame or two ahead of us.
-    FramePoseStream poses(spec, model, clock, range);
-    Frame previous;
-    double previousS = std::nan("");
-    std::size_t previousSegment = 0;
-    std::optional<FrameOrientations> pose;
-    for (long long k = range.first; k <= range.last; ++k) {
-      if (InterruptGuard::received() != 0) break;
-      const double s = clock.arcLength(k);
-      const StoryPlace story = clock.place(k);
-      // Held frames show the same pose: the same pixels, rendered once —
-      // unless a storyboard's caption or camera changes meanwhile.
-      const bool cameraMoving = story.segment > 0 && story.seconds < std::min(SceneDrawer::kCameraMove, story.duration);
-      if (!previous || s != previousS || story.segment != previousSegment || cameraMoving) {
-        if (!pose || s != previousS) {  // the stream has one pose per distinct arc length
-          pose = poses.next();
-          if (!pose || pose->current.s != s) throw std::logic_error("frame pose stream out of step with the clock");
-        }
-        pose->story = story;
-        const std::shared_ptr<media::Image> image = pool->acquire();
-        renderer.render(drawer.draw(*pose), *image);
-        previous = image;
-        previousS = s;
-        previousSegment = story.segment;
-      }
-      if (!queue.push(previous)) break;  // the encoder failed
-    }
+    renderPass([](long long) { return true; }, [&](const Frame& frame) { return queue.push(frame); });
     queue.close();
-    poseWait = poses.waitSeconds();
   } catch (...) {
     queue.abort();
     encoder.join();
@@ -274,7 +257,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     const char* name = result.interruptedBy == SIGINT ? "SIGINT" : "SIGTERM";
     if (result.written.empty())
       std::fprintf(stderr, "rollspin: interrupted (%s) before the first frame: nothing written\n", name);
-    else if (format == scene::VideoFormat::Mp4)
+    else if (!folder)
       std::fprintf(stderr, "rollspin: interrupted (%s) after %lld of %lld frames: wrote a shorter, playable video %s\n",
                    name, result.framesWritten, result.framesRequested, result.written.string().c_str());
     else {

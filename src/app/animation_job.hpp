@@ -1,5 +1,8 @@
 // Animation job: scene file → frames at the exact arc lengths s(t_k) of the
-// FrameClock → an MP4 (H.264) or a folder of PNG frames. Streaming: the
+// FrameClock → a video (MP4, WebM, GIF, MOV) or a folder of PNG frames,
+// opened through media's output-format table (sink_factory.hpp). A sink that
+// needs the clip first (a GIF's palette) gets a first pass over the frames
+// it names. Streaming: the
 // main thread solves and renders frame after frame (the GL context lives on
 // it) while a second thread converts and encodes, with a small bounded queue
 // between them, so both cores work and memory does not grow with the clip.
@@ -17,7 +20,7 @@ namespace rollspin::app {
 struct AnimationOptions {
   std::string scenePath;
   std::vector<std::string> overrides;          // --set
-  std::filesystem::path output;                // "" → output/<scene>.mp4 or output/<scene>/
+  std::filesystem::path output;                // "" → output/<scene>.EXT or output/<scene>/
   std::optional<std::string> frames;           // "A:B", inclusive
   std::optional<std::string> shard;            // "K/N": the K-th of N near-equal ranges (shard_range.hpp)
   std::optional<std::string> quality;          // low | medium | high | 4k

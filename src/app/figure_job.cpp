@@ -32,27 +32,9 @@ std::pair<int, int> rasterSize(const scene::SceneSpec& spec) {
 
 }  // namespace
 
-std::optional<render::FigureFormat> figureFormatFor(const scene::SceneSpec& spec, const std::filesystem::path& output) {
-  using scene::VideoFormat;
-  const std::string ext = lowercase(output.extension().string());
-  const std::optional<render::FigureFormat> byExtension =
-      ext == ".pdf" ? std::optional(render::FigureFormat::Pdf)
-      : ext == ".svg" ? std::optional(render::FigureFormat::Svg)
-                      : std::nullopt;
-  // render.format "mp4" / "png" name an animation's sink: a still keeps
-  // following its -o (PNG unless .pdf / .svg).
-  if (!spec.render.format || (*spec.render.format != VideoFormat::Pdf && *spec.render.format != VideoFormat::Svg))
-    return byExtension;
-  const render::FigureFormat byKey =
-      *spec.render.format == VideoFormat::Pdf ? render::FigureFormat::Pdf : render::FigureFormat::Svg;
-  if (output.has_extension() && byExtension != byKey)  // -o /dev/stdout or a bare name: the key decides
-    throw badInput(spec.where("render.format"), "render.format = \"{}\" writes a {} figure, but -o names {}",
-                   byKey == render::FigureFormat::Pdf ? "pdf" : "svg", figureExtension(byKey), output.string());
-  return byKey;
-}
-
-const char* figureExtension(render::FigureFormat format) {
-  return format == render::FigureFormat::Pdf ? ".pdf" : ".svg";
+std::optional<render::FigureFormat> figureFormatOf(const media::OutputFormat& format) {
+  if (format.kind != media::OutputKind::Figure) return std::nullopt;
+  return format.name == "pdf" ? render::FigureFormat::Pdf : render::FigureFormat::Svg;
 }
 
 void checkFigureSpec(const scene::SceneSpec& spec) {

@@ -7,19 +7,16 @@
 #include <filesystem>
 #include <optional>
 
+#include "media/output_format.hpp"
 #include "render/draw_list.hpp"
 #include "render/vector_figure.hpp"
 #include "scene/scene_spec.hpp"
 
 namespace rollspin::app {
 
-// The one place that decides whether a still is a figure, and which: from
-// render.format ("pdf", "svg"), else from the output's extension (.pdf,
-// .svg); nullopt: a PNG still. render.format = "pdf" with -o x.svg (or .png)
-// is bad input. (A row of the output-format table when there is one.)
-[[nodiscard]] std::optional<render::FigureFormat> figureFormatFor(const scene::SceneSpec& spec,
-                                                                  const std::filesystem::path& output);
-[[nodiscard]] const char* figureExtension(render::FigureFormat format);
+// The figure a still's output-format row asks for (rows of kind Figure:
+// "pdf", "svg"); nullopt for a raster still.
+[[nodiscard]] std::optional<render::FigureFormat> figureFormatOf(const media::OutputFormat& format);
 
 // Checks the figure keys that need the machine (the font is installed, the
 // raster fits the renderer's limit) before anything is solved.

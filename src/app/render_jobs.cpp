@@ -3,6 +3,8 @@
 #include "core/memory_budget.hpp"
 #include "core/stage_log.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -11,6 +13,7 @@
 #include "app/figure_job.hpp"
 #include "motion/frame_poses.hpp"
 #include "media/image_io.hpp"
+#include "media/sink_factory.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"
@@ -83,6 +86,39 @@ void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerP
   }
 }
 
+const media::OutputFormat& chooseOutputFormat(const scene::SceneSpec& spec, const std::filesystem::path& output,
+                                              media::OutputUse use) {
+  const media::OutputFormat& format = media::chooseFormat(spec.render.format, spec.where("render.format"), output, use);
+  if (spec.render.transparent && format.alpha == media::AlphaSupport::None) {
+    std::string withAlpha;
+    for (const media::OutputFormat& f : media::kOutputFormats)
+      if (f.use() == use && f.alpha != media::AlphaSupport::None)
+        withAlpha += fmt::format("{}{}", withAlpha.empty() ? "" : ", ", f.name);
+    throw badInput(spec.where("render.transparent"), "render.transparent: \"{}\" has no alpha channel ({}); for "
+                                                     "transparency use {}",
+                   format.name, format.name == "jpg" ? "JPEG has none" : "its codec has none", withAlpha);
+  }
+  if (format.evenSize)
+    for (const auto& [key, value] : {std::pair{"render.width", spec.render.width}, std::pair{"render.height", spec.render.height}})
+      if (value % 2 != 0)
+        throw badInput(spec.where(key), "{}: \"{}\" needs an even size (its chroma is subsampled), got {} (use {} or {})",
+                       key, format.name, value, value - 1, value + 1);
+  return format;
+}
+
+media::SinkOptions sinkOptions(const scene::SceneSpec& spec, const std::filesystem::path& path) {
+  media::SinkOptions o;
+  o.path = path;
+  o.width = static_cast<int>(spec.render.width);
+  o.height = static_cast<int>(spec.render.height);
+  o.alpha = spec.render.transparent;
+  o.crf = spec.animation.crf;
+  o.preset = spec.animation.preset;
+  o.loop = spec.animation.loop;
+  o.jpegQuality = static_cast<int>(spec.render.jpegQuality);
+  return o;
+}
+
 std::filesystem::path renderStill(const StillOptions& o) {
   for (const auto& [flag, value] : {std::pair{"--width", o.width}, std::pair{"--height", o.height}})
     if (value && (*value < 1 || *value > 8192))
@@ -93,7 +129,8 @@ std::filesystem::path renderStill(const StillOptions& o) {
   if (o.height) overrides.push_back("render.height=" + std::to_string(*o.height));
   if (o.transparent) overrides.push_back("render.transparent=true");
   const scene::SceneSpec spec = loadScene(o.scenePath, overrides);
-  const auto figure = figureFormatFor(spec, o.output);  // PDF/SVG figure (figure_job.hpp), else PNG
+  const media::OutputFormat& format = chooseOutputFormat(spec, o.output, media::OutputUse::Still);
+  const auto figure = figureFormatOf(format);  // PDF/SVG: drawn by the vector backend (figure_job.hpp)
   if (figure) checkFigureSpec(spec);
   checkFrameMemory(spec);
   const RollingModel model = buildSceneModel(spec);
@@ -105,7 +142,7 @@ std::filesystem::path renderStill(const StillOptions& o) {
   std::filesystem::path out = o.output;
   if (out.empty()) {
     std::filesystem::create_directories("output");
-    out = std::filesystem::path("output") / (spec.name + (figure ? figureExtension(*figure) : ".png"));
+    out = std::filesystem::path("output") / (spec.name + format.defaultExtension());
   }
   FrameOrientations frame = solveFrame(spec, model, s);
   frame.story = storyPlaceAt(model, s);
@@ -120,9 +157,10 @@ std::filesystem::path renderStill(const StillOptions& o) {
   const render::ShaderLibrary shaders(o.shaderDir);
   render::Renderer renderer(*context, shaders);
   const media::Image image = renderer.render(list);
-  StageLog::instance().record("png");
-  media::writePng(out, image.view(), list.transparent ? media::PngChannels::Rgba : media::PngChannels::Rgb);
-  return out;
+  StageLog::instance().record(std::string(format.name));
+  const auto sink = media::openSink(format, sinkOptions(spec, out));
+  sink->write(image.view());
+  return sink->finish();
 }
 
 }  // namespace rollspin::app

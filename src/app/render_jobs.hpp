@@ -1,5 +1,5 @@
 // Render jobs: a still image of a scene at one arc length, from scene file to
-// PNG. Kept apart from the CLI so tests and benchmarks can call it; the GL
+// PNG or JPEG (media/output_format.hpp). Kept apart from the CLI so tests and benchmarks can call it; the GL
 // context is created here and nowhere on the solve/timeline path.
 #pragma once
 
@@ -13,6 +13,7 @@
 #include "draw/scene_drawer.hpp"
 #include "model/rolling_model.hpp"
 #include "media/image_view.hpp"
+#include "media/sink_factory.hpp"
 #include "render/draw_list.hpp"
 #include "scene/scene_spec.hpp"
 
@@ -51,6 +52,17 @@ struct StillOptions {
 // extraBytesPerPixel: what a job adds per pixel beyond the renderer (an
 // animation's frame queue, colour conversion and x264's look-ahead).
 void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerPixel = 0);
+
+// The job's output format (media/output_format.hpp: render.format, the -o
+// extension), after the checks the format imposes on the scene: alpha it
+// cannot hold (render.transparent) and odd sizes where chroma is subsampled
+// are BadInput naming the key.
+[[nodiscard]] const media::OutputFormat& chooseOutputFormat(const scene::SceneSpec& spec,
+                                                            const std::filesystem::path& output, media::OutputUse use);
+
+// The options every sink reads from the scene (size, alpha, crf, preset,
+// loop, JPEG quality); the job adds the frame rate and the clip range.
+[[nodiscard]] media::SinkOptions sinkOptions(const scene::SceneSpec& spec, const std::filesystem::path& path);
 
 std::filesystem::path renderStill(const StillOptions& options);
 

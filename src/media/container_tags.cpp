@@ -62,6 +62,10 @@ std::optional<ContainerTags> parseContainerTags(const std::map<std::string, std:
 
 void applyContainerTags(AVFormatContext* format, const ContainerTags& tags, AVDictionary** muxerOptions) {
   for (const auto& [key, value] : containerMetadata(tags)) av_dict_set(&format->metadata, key.c_str(), value.c_str(), 0);
+  allowCustomContainerKeys(format, muxerOptions);
+}
+
+void allowCustomContainerKeys(AVFormatContext* format, AVDictionary** muxerOptions) {
   // The MP4/MOV muxer writes arbitrary keys only as QuickTime 'mdta' keys
   // (read back by libavformat and ffprobe); Matroska writes any tag anyway.
   if (format->priv_data != nullptr && av_opt_find(format->priv_data, "movflags", nullptr, 0, 0) != nullptr)

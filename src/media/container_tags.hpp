@@ -43,6 +43,8 @@ struct ContainerTags {
 // and adds +use_metadata_tags to `muxerOptions`' movflags when the muxer has
 // that option (MP4 and MOV keep only a few iTunes keys otherwise).
 void applyContainerTags(AVFormatContext* format, const ContainerTags& tags, AVDictionary** muxerOptions);
+// Only the movflags part: lets MP4/MOV keep custom keys already set on `format`.
+void allowCustomContainerKeys(AVFormatContext* format, AVDictionary** muxerOptions);
 
 // Lower-case hex SHA-256 of `text` (libavutil's implementation).
 [[nodiscard]] std::string sha256Hex(const std::string& text);

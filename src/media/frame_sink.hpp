@@ -1,12 +1,15 @@
 // FrameSink — where an animation's frames go: one ImageView at a time, in
-// order, never knowing where the pixels came from. Implementations: an MP4
-// file (mp4_writer.hpp) and a folder of PNG frames (png_sequence.hpp).
+// order, never knowing where the pixels came from. Implementations: a video
+// file (video_writer.hpp: MP4, WebM, MOV; gif_writer.hpp), a folder of PNG
+// frames (png_sequence.hpp) and a still image (still_image_sink.hpp); one
+// factory opens them all (sink_factory.hpp).
 // A sink is either finished (the output is complete at its final name),
 // finished early (what was written so far, as a valid output under a name
 // that says so), or destroyed unfinished (it removes what it started).
 #pragma once
 
 #include <filesystem>
+#include <vector>
 
 #include "media/image_view.hpp"
 
@@ -24,6 +27,13 @@ class FrameSink {
   // (and leaves nothing) when no frame was written.
   virtual std::filesystem::path finishPartial() = 0;
   [[nodiscard]] virtual long long framesWritten() const = 0;
+
+  // A sink that must see the clip before writing it (a GIF's palette) names
+  // the frames it wants first: indices in [0, count) of the `count` frames it
+  // will be given, in increasing order; the caller passes them to preview()
+  // and then every frame to write(). Empty (the default): no first pass.
+  [[nodiscard]] virtual std::vector<long long> previewFrames(long long /*count*/) const { return {}; }
+  virtual void preview(const ImageView& /*frame*/) {}
 };
 
 }  // namespace rollspin::media

@@ -17,11 +17,10 @@ void appendBytes(void* context, void* data, int size) {
   auto* out = static_cast<std::string*>(context);
   out->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
 }
-}  // namespace
 
-void writePng(const std::filesystem::path& file, const ImageView& image, PngChannels channels) {
-  // stb wants tightly packed top-down rows of 3 or 4 channels: repack once.
-  const int comp = channels == PngChannels::Rgba ? 4 : 3;
+
+// stb wants tightly packed top-down rows of 3 or 4 channels: repack once.
+std::vector<std::uint8_t> packRows(const ImageView& image, int comp) {
   std::vector<std::uint8_t> packed(static_cast<std::size_t>(image.width) * image.height * comp);
   for (int y = 0; y < image.height; ++y) {
     const std::uint8_t* src = image.rowFromTop(y);
@@ -29,11 +28,28 @@ void writePng(const std::filesystem::path& file, const ImageView& image, PngChan
     for (int x = 0; x < image.width; ++x)
       for (int c = 0; c < comp; ++c) dst[x * comp + c] = src[x * 4 + c];
   }
+  return packed;
+}
+}  // namespace
+
+void writePng(const std::filesystem::path& file, const ImageView& image, PngChannels channels) {
+  const int comp = channels == PngChannels::Rgba ? 4 : 3;
+  const std::vector<std::uint8_t> packed = packRows(image, comp);
   std::string bytes;
   if (stbi_write_png_to_func(appendBytes, &bytes, image.width, image.height, comp, packed.data(),
                              image.width * comp) == 0) {
     throw runtimeError({file.string()}, "PNG encoding failed ({}x{})", image.width, image.height);
   }
+  AtomicFile out(file);
+  out.write(bytes);
+  out.commit();
+}
+
+void writeJpeg(const std::filesystem::path& file, const ImageView& image, int quality) {
+  const std::vector<std::uint8_t> packed = packRows(image, 3);
+  std::string bytes;
+  if (stbi_write_jpg_to_func(appendBytes, &bytes, image.width, image.height, 3, packed.data(), quality) == 0)
+    throw runtimeError({file.string()}, "JPEG encoding failed ({}x{})", image.width, image.height);
   AtomicFile out(file);
   out.write(bytes);
   out.commit();

@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "core/error.hpp"
+#include "media/sink_factory.hpp"
 
 namespace rollspin::media {
 
@@ -111,6 +112,11 @@ fs::path PngSequenceWriter::finishPartial() {
   // An older interrupted render's frames would mix with these: all ours go.
   moveFramesInto(partial, [](long long) { return true; });
   return partial;
+}
+
+std::unique_ptr<FrameSink> openPngFolderSink(const SinkOptions& o) {
+  return std::make_unique<PngSequenceWriter>(o.path, o.firstIndex, o.alpha ? PngChannels::Rgba : PngChannels::Rgb,
+                                             o.wholeClip ? PngSequenceScope::WholeClip : PngSequenceScope::Part);
 }
 
 }  // namespace rollspin::media

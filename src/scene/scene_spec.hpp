@@ -87,7 +87,6 @@ struct TimelineSpec {
 };
 
 enum class RenderLayout { SideBySide, Inset, Ball, Twin };
-enum class VideoFormat { Mp4, Png, Pdf, Svg };  // an animation's sink: one MP4, or a folder of PNG frames; Pdf, Svg: a still figure (--still)
 
 // [render]: stills and frames. Camera: orbit about `target` (default: the
 // path's centre) at `distance` (default: frames the whole path), or `follow`.
@@ -108,7 +107,10 @@ struct RenderSpec {
   std::optional<Vec3> target;
   bool follow = false;
   double fovDeg = 32.0;
-  std::optional<VideoFormat> format;  // animations; default: from the output's extension, else mp4
+  // A row name of media's output-format table (media/output_formats.def);
+  // default: from the output's extension, else mp4 (a clip) or png (a still).
+  std::optional<std::string> format;
+  long long jpegQuality = 92;  // JPEG stills, 1 … 100
   double dpi = 300.0;  // vector figures: resolution of their raster parts (the shaded ball and surfaces)
 };
 
@@ -144,8 +146,9 @@ struct AnimationSpec {
   std::optional<double> speed;   // arc length per second (instead of duration)
   Easing easing = Easing::Smooth;
   double hold = 0.5;             // seconds the first and the last frame are held
-  double crf = 18.0;             // H.264 constant rate factor (0 lossless … 51)
-  std::string preset = "medium"; // x264 preset
+  std::optional<double> crf;     // constant rate factor, 0 … 51; default: the format's (18 H.264, 31 VP9)
+  std::string preset = "medium"; // x264 preset (WebM maps it to libvpx's cpu-used)
+  bool loop = true;              // a GIF loops forever (false: plays once)
 };
 
 // A camera change: render's camera keys, each optional (absent = unchanged).

@@ -217,12 +217,9 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   else w.computed("target", "framed automatically");
   w.key("follow", boolean(r.follow));
   w.key("fov_deg", number(r.fovDeg));
-  if (r.format) {
-    const VideoFormat f = *r.format;
-    w.key("format", quoted(f == VideoFormat::Mp4 ? "mp4" : f == VideoFormat::Png ? "png" : f == VideoFormat::Pdf ? "pdf" : "svg"));
-  } else {
-    w.computed("format", "from the output's extension, else mp4");
-  }
+  if (r.format) w.key("format", quoted(*r.format));
+  else w.computed("format", "from the output's extension, else mp4 (a still: png)");
+  w.key("jpeg_quality", std::to_string(r.jpegQuality));
   w.key("dpi", number(r.dpi));
 
   w.section("figure");
@@ -250,8 +247,10 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   else w.key("duration", number(a.duration));
   w.key("easing", quoted(a.easing == Easing::Linear ? "linear" : "smooth"));
   w.key("hold", number(a.hold));
-  w.key("crf", number(a.crf));
+  if (a.crf) w.key("crf", number(*a.crf));
+  else w.computed("crf", "the format's: 18 for mp4 (H.264), 31 for webm (VP9)");
   w.key("preset", quoted(a.preset));
+  w.key("loop", boolean(a.loop));
   writeSegments(w, spec);
   return w.text();
 }

@@ -2,6 +2,8 @@
 // the storyboard's [[segment]] entries and their cameras.
 #include "scene/schema_reader.hpp"
 
+#include "media/output_format.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -105,7 +107,8 @@ void Reader::readSegments() {
 void Reader::readRender() {
   const toml::table* render = section(
       "render", {"width", "height", "layout", "strobe", "title", "labels", "transparent", "msaa", "azimuth_deg",
-                 "elevation_deg", "distance", "target", "follow", "fov_deg", "format", "trails", "shadow", "dpi"});
+                 "elevation_deg", "distance", "target", "follow", "fov_deg", "format", "trails", "shadow", "dpi",
+                 "jpeg_quality"});
   RenderSpec& r = spec_.render;
   constexpr long long kMaxSide = 8192;  // "8K": the renderer's size limit
   for (const char* key : {"width", "height"}) {
@@ -143,8 +146,14 @@ void Reader::readRender() {
   if (auto sh = boolean(render, "render", "shadow")) r.shadow = *sh;
   if (r.follow && spec_.locations.contains("render.target"))
     failAt("render.target", "conflicts with render.follow = true (the camera then targets the ball)");
-  if (auto f = text(render, "render", "format", {"mp4", "png", "pdf", "svg"}))
-    r.format = *f == "mp4" ? VideoFormat::Mp4 : *f == "png" ? VideoFormat::Png : *f == "pdf" ? VideoFormat::Pdf : VideoFormat::Svg;
+  // The names are media's output-format table's (output_formats.def).
+  std::set<std::string> formats;
+  for (const media::OutputFormat& f : media::kOutputFormats) formats.emplace(f.name);
+  if (auto f = text(render, "render", "format", formats)) r.format = *f;
+  if (auto q = integer(render, "render", "jpeg_quality")) {
+    if (*q < 1 || *q > 100) failAt("render.jpeg_quality", fmt::format("expected a JPEG quality in [1, 100], got {}", *q));
+    r.jpegQuality = *q;
+  }
   if (auto d = number(render, "render", "dpi")) {
     if (!(*d >= 30.0 && *d <= 2400.0)) failAt("render.dpi", fmt::format("expected a resolution in [30, 2400] dpi, got {}", *d));
     r.dpi = *d;
@@ -214,7 +223,7 @@ void Reader::readLabels() {
 // [animation] — frame time → arc length, and the H.264 settings (video issue).
 void Reader::readAnimation() {
   const toml::table* animation =
-      section("animation", {"fps", "duration", "speed", "easing", "hold", "crf", "preset"});
+      section("animation", {"fps", "duration", "speed", "easing", "hold", "crf", "preset", "loop"});
   AnimationSpec& a = spec_.animation;
   if (const toml::node* node = get(animation, "animation", "fps")) {
     const std::string expected =
@@ -258,6 +267,7 @@ void Reader::readAnimation() {
   if (auto p = text(animation, "animation", "preset",
                     {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}))
     a.preset = *p;
+  if (auto l = boolean(animation, "animation", "loop")) a.loop = *l;
 }
 
 

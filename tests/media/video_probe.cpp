@@ -72,7 +72,11 @@ VideoProbe probeVideo(const std::filesystem::path& file, const std::set<long lon
   probe.timeBaseDen = stream->time_base.den;
   probe.indexBeforeData = moovBeforeMdat(file);
 
-  const AVCodec* decoder = avcodec_find_decoder(par->codec_id);
+  if (const AVDictionaryEntry* tag = av_dict_get(stream->metadata, "alpha_mode", nullptr, 0)) probe.alphaMode = tag->value;
+  if (const char* name = avcodec_profile_name(par->codec_id, par->profile)) probe.profile = name;
+  const AVCodec* decoder = par->codec_id == AV_CODEC_ID_VP9 && probe.alphaMode == "1"
+                               ? avcodec_find_decoder_by_name("libvpx-vp9")
+                               : avcodec_find_decoder(par->codec_id);
   if (decoder == nullptr) throw std::runtime_error("no decoder for " + probe.codec);
   AVCodecContext* codec = avcodec_alloc_context3(decoder);
   std::unique_ptr<AVCodecContext, void (*)(AVCodecContext*)> codecGuard(
@@ -89,6 +93,8 @@ VideoProbe probeVideo(const std::filesystem::path& file, const std::set<long lon
     while (avcodec_receive_frame(codec, frame) == 0) {
       probe.ptsSeconds.push_back(double(frame->best_effort_timestamp) * av_q2d(stream->time_base));
       probe.ptsTicks.push_back(frame->best_effort_timestamp);
+      if (probe.decodedPixelFormat.empty())
+        probe.decodedPixelFormat = orEmpty(av_get_pix_fmt_name(static_cast<AVPixelFormat>(frame->format)));
       if (keepFrames.contains(decoded)) {
         if (sws == nullptr) {
           sws = sws_getContext(frame->width, frame->height, static_cast<AVPixelFormat>(frame->format), frame->width,

@@ -18,7 +18,10 @@ namespace rollspin::test {
 struct VideoProbe {
   std::string container;     // "mov,mp4,m4a,3gp,3g2,mj2"
   std::string codec;         // "h264"
-  std::string pixelFormat;   // "yuv420p"
+  std::string pixelFormat;   // "yuv420p" (the stream's, as the container declares it)
+  std::string decodedPixelFormat;  // what the decoder produced ("yuva420p" for VP9 with alpha)
+  std::string profile;       // "4444", "HQ" (ProRes); "" when the codec has none
+  std::string alphaMode;     // the stream's ALPHA_MODE tag (WebM with alpha: "1")
   std::string colorSpace, colorPrimaries, colorTransfer, colorRange;  // "bt709", …, "tv"
   int width = 0, height = 0;
   double frameRate = 0.0;    // average, from the stream
@@ -30,7 +33,9 @@ struct VideoProbe {
   bool indexBeforeData = false;     // 'moov' before 'mdat' (+faststart)
 };
 
-// Throws std::runtime_error when the file cannot be opened or decoded.
+// VP9 with an ALPHA_MODE tag is decoded with libvpx (FFmpeg's own VP9
+// decoder ignores the alpha stream), so `kept` frames carry the alpha that
+// a browser shows. Throws std::runtime_error when the file cannot be opened or decoded.
 VideoProbe probeVideo(const std::filesystem::path& file, const std::set<long long>& keepFrames = {});
 
 }  // namespace rollspin::test

@@ -2,6 +2,8 @@
 // (including Brockett's plate, whose contact circle is derived).
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <fstream>
 #include <numbers>
 
@@ -9,6 +11,7 @@
 
 #include "model/rolling_model.hpp"
 #include "motion/solve_job.hpp"
+#include "media/output_format.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/scene_writer.hpp"
 #include "spin/field.hpp"
@@ -192,6 +195,29 @@ TEST(SceneLoader, FrameRatesAreExactRationals) {
           << bad << ": " << what;
       EXPECT_NE(what.find("\"30000/1001\""), std::string::npos) << what;
     }
+  }
+}
+
+// render.format takes exactly the names of media's output-format table:
+// each loads, prints back and loads again to the same name; the output keys
+// (jpeg_quality, crf left to the format, loop) round-trip too.
+TEST(SceneLoader, EveryOutputFormatNameLoadsAndPrintsBack) {
+  for (const media::OutputFormat& f : media::kOutputFormats) {
+    const std::string text = fmt::format("[render]\nformat = \"{}\"\njpeg_quality = 70\n[animation]\nloop = false\n", f.name);
+    const scene::SceneSpec spec = scene::loadSceneText(text, "s.toml");
+    ASSERT_TRUE(spec.render.format.has_value());
+    EXPECT_EQ(*spec.render.format, f.name);
+    const scene::SceneSpec again = scene::loadSceneText(scene::writeScene(spec), "printed.toml");
+    EXPECT_EQ(again.render.format, spec.render.format) << scene::writeScene(spec);
+    EXPECT_EQ(again.render.jpegQuality, 70);
+    EXPECT_FALSE(again.animation.loop);
+    EXPECT_FALSE(again.animation.crf.has_value()) << "crf stays the format's default";
+  }
+  try {
+    (void)scene::loadSceneText("[render]\nformat = \"mkv\"\n", "s.toml");
+    ADD_FAILURE() << "mkv accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("s.toml:2:10: render.format"), std::string::npos) << e.what();
   }
 }
 

@@ -1,0 +1,286 @@
+#include "media/video_writer.hpp"
+
+#include "media/container_tags.hpp"
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libavutil/opt.h>
+#include <libavutil/pixdesc.h>
+#include <libswscale/swscale.h>
+}
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <system_error>
+
+#include "core/error.hpp"
+
+namespace rollspin::media {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string avErrorText(int code) {
+  char text[AV_ERROR_MAX_STRING_SIZE] = {};
+  av_strerror(code, text, sizeof text);
+  return text;
+}
+
+// A regular file (or a new name) gets temp + rename; anything else that
+// already exists (a device such as /dev/full, a pipe) is written in place.
+bool isDevice(const fs::path& p) {
+  std::error_code ec;
+  const auto status = fs::status(p, ec);
+  return !ec && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status);
+}
+
+}  // namespace
+
+fs::path partialName(const fs::path& finalPath) {
+  fs::path out = finalPath;
+  out.replace_filename(fmt::format("{}.partial{}", finalPath.stem().string(), finalPath.extension().string()));
+  return out;
+}
+
+struct VideoWriter::Impl {
+  fs::path finalPath, writePath;
+  bool direct = false;
+  VideoSettings settings;
+  AVPixelFormat pixelFormat = AV_PIX_FMT_NONE;
+  AVFormatContext* format = nullptr;
+  AVCodecContext* codec = nullptr;
+  AVStream* stream = nullptr;
+  AVFrame* frame = nullptr;
+  AVPacket* packet = nullptr;
+  SwsContext* sws = nullptr;
+  long long framesWritten = 0;
+  bool fileOpen = false, done = false;
+
+  ~Impl() {
+    release();
+    if (!done && fileOpen && !direct) {
+      std::error_code ec;
+      fs::remove(writePath, ec);
+    }
+  }
+
+  void release() {
+    sws_freeContext(sws);
+    sws = nullptr;
+    av_frame_free(&frame);
+    av_packet_free(&packet);
+    avcodec_free_context(&codec);
+    if (format != nullptr) {
+      if (format->pb != nullptr) avio_closep(&format->pb);
+      avformat_free_context(format);
+      format = nullptr;
+    }
+  }
+
+  [[noreturn]] void fail(const std::string& what, int code) const {
+    throw runtimeError(SourceLoc{finalPath.string()}, "{}: {}", what, avErrorText(code));
+  }
+  void check(int code, const std::string& what) const {
+    if (code < 0) fail(what, code);
+  }
+  // Write errors (a full disk) surface in the I/O context, sometimes only here.
+  void checkIo(const std::string& what) const {
+    if (format->pb != nullptr && format->pb->error < 0) fail(what, format->pb->error);
+  }
+
+  // mux.c's encode loop: one frame in (null = flush), every packet out.
+  void encode(const AVFrame* input) {
+    check(avcodec_send_frame(codec, input), "encoding a frame");
+    while (true) {
+      const int ret = avcodec_receive_packet(codec, packet);
+      if (ret == AVERROR(EAGAIN) || ret == AVERROR_EOF) break;
+      check(ret, "encoding a frame");
+      av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
+      packet->stream_index = stream->index;
+      check(av_interleaved_write_frame(format, packet), "writing " + writePath.string());
+    }
+    checkIo("writing " + writePath.string());
+  }
+
+  void close() {
+    encode(nullptr);
+    check(av_write_trailer(format), "finishing " + writePath.string());
+    avio_flush(format->pb);
+    checkIo("finishing " + writePath.string());
+    check(avio_closep(&format->pb), "closing " + writePath.string());
+    release();
+  }
+};
+
+VideoWriter::VideoWriter(fs::path finalPath, const VideoSettings& settings) : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.finalPath = std::move(finalPath);
+  m.settings = settings;
+  const SourceLoc where{m.finalPath.string()};
+  if (settings.width <= 0 || settings.height <= 0 ||
+      (settings.evenSize && (settings.width % 2 != 0 || settings.height % 2 != 0)))
+    throw badInput(where, "{} in {} needs an even, non-zero width and height; got {}x{}", settings.encoder,
+                   settings.pixelFormat, settings.width, settings.height);
+  if (settings.fpsNum <= 0 || settings.fpsDen <= 0)
+    throw badInput(where, "expected frames per second > 0, got {}/{}", settings.fpsNum, settings.fpsDen);
+  av_log_set_level(AV_LOG_ERROR);  // the encoders' statistics are not for lecturers
+
+  const AVCodec* encoder = avcodec_find_encoder_by_name(settings.encoder.c_str());
+  if (encoder == nullptr)
+    throw runtimeError(where, "this FFmpeg build has no '{}' encoder (Debian: libavcodec59 has libx264, libvpx-vp9, "
+                              "prores_ks and gif)",
+                       settings.encoder);
+  m.pixelFormat = av_get_pix_fmt(settings.pixelFormat.c_str());
+  if (m.pixelFormat == AV_PIX_FMT_NONE) throw runtimeError(where, "libavutil has no pixel format '{}'", settings.pixelFormat);
+
+  m.direct = isDevice(m.finalPath);
+  m.writePath = m.finalPath;
+  if (!m.direct)
+    m.writePath.replace_filename(fmt::format(".{}.{}.tmp", m.finalPath.filename().string(), ::getpid()));
+
+  // The container is named, so the temporary name's extension does not matter.
+  // "file:" keeps a colon in a file name from reading as a protocol.
+  const std::string url = "file:" + m.writePath.string();
+  if (avformat_alloc_output_context2(&m.format, nullptr, settings.container.c_str(), url.c_str()) < 0 ||
+      m.format == nullptr)
+    throw runtimeError(where, "libavformat has no '{}' muxer", settings.container);
+  m.codec = avcodec_alloc_context3(encoder);
+  m.frame = av_frame_alloc();
+  m.packet = av_packet_alloc();
+  if (m.codec == nullptr || m.frame == nullptr || m.packet == nullptr) throw runtimeError(where, "out of memory");
+  m.stream = avformat_new_stream(m.format, nullptr);
+  if (m.stream == nullptr) throw runtimeError(where, "out of memory");
+
+  AVCodecContext* c = m.codec;
+  c->width = settings.width;
+  c->height = settings.height;
+  // One tick per frame: frame k's pts is k, at exactly k·den/num seconds.
+  c->time_base = AVRational{settings.fpsDen, settings.fpsNum};
+  c->framerate = AVRational{settings.fpsNum, settings.fpsDen};
+  c->sample_aspect_ratio = AVRational{1, 1};
+  c->pix_fmt = m.pixelFormat;
+  if (settings.yuvBt709) {
+    // BT.709 everywhere: the matrix swscale applies below, and the tags.
+    c->color_range = AVCOL_RANGE_MPEG;
+    c->color_primaries = AVCOL_PRI_BT709;
+    c->color_trc = AVCOL_TRC_BT709;
+    c->colorspace = AVCOL_SPC_BT709;
+  }
+  if ((m.format->oformat->flags & AVFMT_GLOBALHEADER) != 0) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+  for (const auto& [key, value] : settings.codecOptions)
+    if (const int ret = av_opt_set(c, key.c_str(), value.c_str(), AV_OPT_SEARCH_CHILDREN); ret < 0)
+      m.fail(fmt::format("{} has no option {} = {}", settings.encoder, key, value), ret);
+  if (const int ret = avcodec_open2(c, encoder, nullptr); ret < 0)
+    m.fail(fmt::format("{} refuses {}x{} at {}/{} fps ({})", settings.encoder, settings.width, settings.height,
+                       settings.fpsNum, settings.fpsDen, settings.describe),
+           ret);
+  m.check(avcodec_parameters_from_context(m.stream->codecpar, c), "configuring the stream");
+  m.stream->time_base = c->time_base;
+  m.stream->avg_frame_rate = c->framerate;
+  for (const auto& [key, value] : settings.streamMetadata) av_dict_set(&m.stream->metadata, key.c_str(), value.c_str(), 0);
+  // File-level metadata: the one place it is set (see VideoSettings).
+  for (const auto& [key, value] : settings.containerMetadata)
+    av_dict_set(&m.format->metadata, key.c_str(), value.c_str(), 0);
+
+  m.frame->format = c->pix_fmt;
+  m.frame->width = c->width;
+  m.frame->height = c->height;
+  // Some encoders (prores_ks) write the frame's tags, not the context's.
+  m.frame->color_range = c->color_range;
+  m.frame->color_primaries = c->color_primaries;
+  m.frame->color_trc = c->color_trc;
+  m.frame->colorspace = c->colorspace;
+  m.check(av_frame_get_buffer(m.frame, 0), "allocating a frame");
+
+  if (m.pixelFormat != AV_PIX_FMT_PAL8) {  // a palette comes from a filter graph (gif_writer), not swscale
+    m.sws = sws_getContext(c->width, c->height, AV_PIX_FMT_RGBA, c->width, c->height, m.pixelFormat, SWS_BILINEAR,
+                           nullptr, nullptr, nullptr);
+    if (m.sws == nullptr)
+      throw runtimeError(where, "libswscale cannot convert RGBA to {} at this size", settings.pixelFormat);
+    const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
+    // Source: full-range RGB (its table is unused); destination: limited range.
+    if (settings.yuvBt709) sws_setColorspaceDetails(m.sws, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
+  }
+
+  if (const int ret = avio_open(&m.format->pb, url.c_str(), AVIO_FLAG_WRITE); ret < 0) {
+    m.format->pb = nullptr;
+    m.fail(m.direct ? "cannot open for writing" : "cannot create " + m.writePath.string(), ret);
+  }
+  m.fileOpen = true;
+  // Each packet goes to the file as it is muxed: the file grows with the
+  // render (visible progress) and the muxer buffers at most one packet.
+  m.format->flush_packets = 1;
+  AVDictionary* options = nullptr;
+  for (const auto& [key, value] : settings.muxerOptions) {
+    // faststart rewrites the file at the end: only for a regular file.
+    const std::string v = m.direct && key == "movflags" ? "+write_colr" : value;
+    av_dict_set(&options, key.c_str(), v.c_str(), 0);
+  }
+  if (!settings.containerMetadata.empty()) allowCustomContainerKeys(m.format, &options);
+  const int ret = avformat_write_header(m.format, &options);
+  av_dict_free(&options);
+  m.check(ret, "writing the " + settings.container + " header");
+  m.checkIo("writing the " + settings.container + " header");
+}
+
+VideoWriter::~VideoWriter() = default;
+
+void VideoWriter::write(const ImageView& image) {
+  Impl& m = *impl_;
+  if (image.width != m.settings.width || image.height != m.settings.height)
+    throw runtimeError(SourceLoc{m.finalPath.string()}, "frame of {}x{} for a {}x{} video", image.width, image.height,
+                       m.settings.width, m.settings.height);
+  // The encoder may still hold the previous frame's buffer (lookahead).
+  m.check(av_frame_make_writable(m.frame), "allocating a frame");
+  // Rows from the top whatever the storage order: a negative stride flips.
+  const std::uint8_t* top = image.rowFromTop(0);
+  const int stride = static_cast<int>(image.rows == RowOrder::TopDown ? image.stride : -image.stride);
+  const std::uint8_t* const source[1] = {top};
+  const int sourceStride[1] = {stride};
+  sws_scale(m.sws, source, sourceStride, 0, image.height, m.frame->data, m.frame->linesize);
+  writeConverted(m.frame);
+}
+
+void VideoWriter::writeConverted(AVFrame* frame) {
+  Impl& m = *impl_;
+  frame->pts = m.framesWritten;
+  m.encode(frame);
+  ++m.framesWritten;
+}
+
+const fs::path& VideoWriter::finalPath() const { return impl_->finalPath; }
+
+fs::path VideoWriter::finish() {
+  Impl& m = *impl_;
+  m.close();
+  if (!m.direct) {
+    std::error_code ec;
+    fs::rename(m.writePath, m.finalPath, ec);
+    if (ec) throw runtimeError(SourceLoc{m.finalPath.string()}, "cannot rename the finished video into place: {}", ec.message());
+  }
+  m.done = true;
+  return m.finalPath;
+}
+
+fs::path VideoWriter::finishPartial() {
+  Impl& m = *impl_;
+  if (m.framesWritten == 0) return {};  // the destructor removes the empty file
+  m.close();
+  if (m.direct) {
+    m.done = true;
+    return m.finalPath;
+  }
+  const fs::path partial = partialName(m.finalPath);
+  std::error_code ec;
+  fs::rename(m.writePath, partial, ec);
+  if (ec) throw runtimeError(SourceLoc{partial.string()}, "cannot rename the partial video into place: {}", ec.message());
+  m.done = true;
+  return partial;
+}
+
+long long VideoWriter::framesWritten() const { return impl_->framesWritten; }
+
+}  // namespace rollspin::media

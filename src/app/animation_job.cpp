@@ -18,6 +18,7 @@
 #include "app/interrupt_guard.hpp"
 #include "app/progress_meter.hpp"
 #include "app/render_jobs.hpp"
+#include "core/output_path.hpp"
 #include "core/stage_log.hpp"
 #include "media/mp4_writer.hpp"
 #include "media/png_sequence.hpp"
@@ -129,6 +130,11 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   const FrameRange range = o.frames ? parseFrameRange(*o.frames, clock.frameCount())
                                     : FrameRange{0, clock.frameCount() - 1};
   const scene::VideoFormat format = chooseFormat(spec, o.output);
+  if (!o.output.empty()) {  // before any frame is rendered
+    const SourceLoc where{"-o " + o.output.string()};
+    if (format == scene::VideoFormat::Mp4) checkOutputFile(o.output, where);
+    else checkOutputFolder(o.output, where);
+  }
   const int width = static_cast<int>(spec.render.width), height = static_cast<int>(spec.render.height);
 
   fs::path out = o.output;

@@ -10,6 +10,7 @@
 #include "app/commands.hpp"
 #include "core/error.hpp"
 #include "core/stage_log.hpp"
+#include "core/temp_files.hpp"
 
 int main(int argc, char** argv) {
   CLI::App cli{"rollspin: the rolling sphere and the quantum spin"};
@@ -47,6 +48,8 @@ int main(int argc, char** argv) {
   }
 
   rollspin::StageLog::instance().setEcho(verbose);
+  // Ctrl-C or SIGTERM: remove unfinished outputs, say so, exit 128 + signal.
+  rollspin::installInterruptCleanup();
   try {
     return handler ? handler() : 2;
   } catch (const rollspin::Error& e) {

@@ -1,9 +1,11 @@
 #include "app/render_jobs.hpp"
 
 #include "core/memory_budget.hpp"
+#include "core/output_path.hpp"
 #include "core/stage_log.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -112,6 +114,17 @@ void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerP
 }
 
 std::filesystem::path renderStill(const StillOptions& o) {
+  if (!o.output.empty()) {
+    // A still is a PNG: a name that promises another format is refused, not
+    // silently filled with PNG bytes.
+    const SourceLoc where{"-o " + o.output.string()};
+    std::string ext = o.output.extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (!ext.empty() && ext != ".png")
+      throw badInput(where, "a still is written as PNG, but the name ends in '{}'; give a .png name",
+                     o.output.extension().string());
+    checkOutputFile(o.output, where);
+  }
   for (const auto& [flag, value] : {std::pair{"--width", o.width}, std::pair{"--height", o.height}})
     if (value && (*value < 1 || *value > 8192))
       throw badInput({flag}, "expected an image size in [1, 8192] pixels, got {}", *value);

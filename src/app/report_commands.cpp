@@ -13,6 +13,7 @@
 #include "app/commands.hpp"
 #include "app/scene_model.hpp"
 #include "core/error.hpp"
+#include "core/output_path.hpp"
 #include "report/report.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -30,6 +31,7 @@ report::ReportOptions optionsFrom(const ReportArgs& a) {
   report::ReportOptions o;
   o.outDir = a.outDir;
   // Fail before the work, not after it, when the folder cannot be made.
+  checkOutputFolder(o.outDir, SourceLoc{"--output-dir " + a.outDir});
   std::error_code ec;
   std::filesystem::create_directories(o.outDir, ec);
   if (ec) throw runtimeError(SourceLoc{"--output-dir " + a.outDir}, "cannot create {}: {}", a.outDir, ec.message());

@@ -15,6 +15,7 @@
 #include "app/timeline_csv.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/scene_writer.hpp"
+#include "core/output_path.hpp"
 #include "core/stage_log.hpp"
 #include "spin/su2.hpp"
 
@@ -76,6 +77,7 @@ int runSolve(const SolveOptions& o) {
 }
 
 int runTimeline(const SolveOptions& o) {
+  if (!o.output.empty()) checkOutputFile(o.output, {"-o " + o.output});  // before the solve, not after
   const scene::SceneSpec spec = loadScene(o.scenePath, o.overrides);
   const RollingModel model = buildSceneModel(spec);
   const SolverChoice choice = chooseSolver(spec, model);

@@ -13,6 +13,7 @@ extern "C" {
 #include <system_error>
 
 #include "core/error.hpp"
+#include "core/temp_files.hpp"
 
 namespace rollspin::media {
 
@@ -61,6 +62,7 @@ struct Mp4Writer::Impl {
       std::error_code ec;
       fs::remove(writePath, ec);
     }
+    if (!direct) unregisterTemporary(writePath);
   }
 
   void release() {
@@ -130,8 +132,12 @@ Mp4Writer::Mp4Writer(fs::path finalPath, const Mp4Settings& settings) : impl_(st
 
   m.direct = isDevice(m.finalPath);
   m.writePath = m.finalPath;
-  if (!m.direct)
-    m.writePath.replace_filename(fmt::format(".{}.{}.tmp", m.finalPath.filename().string(), ::getpid()));
+  if (!m.direct) {
+    // A temporary left by a run that died hard goes; ours goes on SIGINT/SIGTERM.
+    removeStaleTemporaries(m.finalPath);
+    m.writePath = temporaryPathFor(m.finalPath);
+    registerTemporary(m.writePath, m.finalPath);
+  }
 
   // The container is named, so the temporary name's extension does not matter.
   // "file:" keeps a colon in a file name from reading as a protocol.

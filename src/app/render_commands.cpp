@@ -7,6 +7,7 @@
 #include "app/animation_job.hpp"
 #include "app/commands.hpp"
 #include "app/render_jobs.hpp"
+#include "core/output_path.hpp"
 #include "media/image_compare.hpp"
 #include "media/image_io.hpp"
 
@@ -65,6 +66,8 @@ int runCompare(const CompareOptions& o) {
   for (const auto& [flag, value] : {std::pair{"--max-delta", o.maxDelta}, std::pair{"--mean-delta", o.meanDelta}})
     if (!(value >= 0.0 && value <= 255.0))
       throw badInput({flag}, "expected a tolerance in [0, 255], got {}", value);
+  // An unwritable --diff is the caller's mistake (exit 2), never "differ" (1).
+  if (!o.diff.empty()) checkOutputFile(o.diff, SourceLoc{"--diff " + o.diff});
   const media::Image a = media::loadImage(o.a, SourceLoc{o.a});
   const media::Image b = media::loadImage(o.b, SourceLoc{o.b});
   if (a.width != b.width || a.height != b.height) {

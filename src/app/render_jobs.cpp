@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/flag_overrides.hpp"
 #include "app/frame_poses.hpp"
 #include "media/image_io.hpp"
 #include "render/gl_context.hpp"
@@ -129,11 +130,13 @@ std::filesystem::path renderStill(const StillOptions& o) {
     if (value && (*value < 1 || *value > 8192))
       throw badInput({flag}, "expected an image size in [1, 8192] pixels, got {}", *value);
   std::vector<std::string> overrides = o.overrides;
-  // Command-line sizes go through the scene validation like --set does.
-  if (o.width) overrides.push_back("render.width=" + std::to_string(*o.width));
-  if (o.height) overrides.push_back("render.height=" + std::to_string(*o.height));
-  if (o.transparent) overrides.push_back("render.transparent=true");
-  const scene::SceneSpec spec = loadScene(o.scenePath, overrides);
+  // Command-line sizes go through the scene validation like --set does, and
+  // errors name the flag.
+  std::vector<FlagOverride> flags;
+  if (o.width) flags.push_back({"--width " + std::to_string(*o.width), "render.width=" + std::to_string(*o.width)});
+  if (o.height) flags.push_back({"--height " + std::to_string(*o.height), "render.height=" + std::to_string(*o.height)});
+  if (o.transparent) flags.push_back({"--transparent", "render.transparent=true"});
+  const scene::SceneSpec spec = loadSceneWithFlags(o.scenePath, overrides, flags);
   checkFrameMemory(spec);
   const RollingModel model = buildSceneModel(spec);
   const double length = model.path->length();

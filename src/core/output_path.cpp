@@ -55,8 +55,7 @@ void checkOutputFile(const fs::path& file, const SourceLoc& where) {
   std::error_code ec;
   const fs::file_status status = fs::status(file, ec);
   if (fs::is_directory(status))
-    throw badInput(where, "'{}' is a folder; give a file name (e.g. {})", file.string(),
-                   (file / ("out" + file.extension().string())).string());
+    throw badInput(where, "'{}' is a directory; give a file name", file.string());
   if (fs::exists(status) && !fs::is_regular_file(status)) return;  // a device or pipe, written in place
   if (!file.has_filename() || file.filename() == "." || file.filename() == "..")
     throw badInput(where, "'{}' names a folder; give a file name", file.string());

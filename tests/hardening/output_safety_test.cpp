@@ -167,8 +167,8 @@ TEST(OutputPaths, RefusedWithExit2BeforeAnyWork) {
   fs::create_directories(dir / "adir.csv");
   std::ofstream(dir / "afile") << "x";
   const std::vector<OutputCase> cases = {
-      {"mp4 onto a folder", {"render", lollipop(), "-o", "{DIR}/adir.mp4"}, "'{DIR}/adir.mp4' is a folder"},
-      {"csv onto a folder", {"timeline", lollipop(), "-o", "{DIR}/adir.csv"}, "'{DIR}/adir.csv' is a folder"},
+      {"mp4 onto a folder", {"render", lollipop(), "-o", "{DIR}/adir.mp4"}, "'{DIR}/adir.mp4' is a directory"},
+      {"csv onto a folder", {"timeline", lollipop(), "-o", "{DIR}/adir.csv"}, "'{DIR}/adir.csv' is a directory"},
       {"still through a file", {"render", lollipop(), "--still", "-o", "{DIR}/afile/x.png"},
        "'{DIR}/afile' is a file, not a folder"},
       {"csv in a missing folder", {"timeline", lollipop(), "-o", "{DIR}/nope/x.csv"},
@@ -176,7 +176,7 @@ TEST(OutputPaths, RefusedWithExit2BeforeAnyWork) {
       {"mp4 in a folder that takes no files", {"render", lollipop(), "-o", "/proc/x.mp4"}, "cannot write in the folder '/proc'"},
       {"frames onto a file", {"render", lollipop(), "-o", "{DIR}/afile"}, "'{DIR}/afile' is a file; a folder is needed"},
       {"report into a file", {"report", "errors", lollipop(), "-o", "{DIR}/afile/r"}, "'{DIR}/afile' is a file"},
-      {"diff onto a folder", {"compare", "{GOLDEN}", "{GOLDEN}", "--diff", "{DIR}/adir.csv"}, "is a folder"},
+      {"diff onto a folder", {"compare", "{GOLDEN}", "{GOLDEN}", "--diff", "{DIR}/adir.csv"}, "is a directory"},
       {"still as JPEG", {"render", lollipop(), "--still", "-o", "{DIR}/out.jpg"}, "a still is written as PNG"},
       {"still as MP4", {"render", lollipop(), "--still", "-o", "{DIR}/out.mp4"}, "give a .png name"},
   };

@@ -6,7 +6,9 @@
 #include <cstdio>
 #include <exception>
 #include <string>
+#include <vector>
 
+#include "app/cli_messages.hpp"
 #include "app/commands.hpp"
 #include "core/error.hpp"
 #include "core/stage_log.hpp"
@@ -33,6 +35,10 @@ int main(int argc, char** argv) {
   }
   if (argc > 1 && argv[1][0] != '-' && !isKnown) {
     std::fprintf(stderr, "rollspin: error: unknown command '%s'; commands: %s\n", argv[1], known.c_str());
+    std::vector<std::string> names;
+    for (const CLI::App* sub : cli.get_subcommands({})) names.push_back(sub->get_name());
+    if (const std::string guess = rollspin::app::nearestName(argv[1], names); !guess.empty())
+      std::fprintf(stderr, "rollspin: did you mean '%s'?\n", guess.c_str());
     return 2;
   }
 
@@ -43,7 +49,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return cli.exit(e);
   } catch (const CLI::ParseError& e) {
-    cli.exit(e);
+    std::fputs(rollspin::app::describeParseError(cli, e, argc, argv).c_str(), stderr);
     return 2;
   }
 

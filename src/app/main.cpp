@@ -10,6 +10,7 @@
 
 #include "app/cli_messages.hpp"
 #include "app/commands.hpp"
+#include "app/version_info.hpp"
 #include "core/error.hpp"
 #include "core/stage_log.hpp"
 #include "core/temp_files.hpp"
@@ -21,10 +22,25 @@ int main(int argc, char** argv) {
   cli.fallthrough(true);
   bool verbose = false;
   cli.add_flag("-v,--verbose", verbose, "List the pipeline stages as they run");
+  cli.add_flag("--version", "Print the version and git describe (with --verbose, the GL backend) and exit");
   rollspin::app::CommandHandler handler;
   rollspin::app::registerSolveCommands(cli, handler);
   rollspin::app::registerRenderCommands(cli, handler);
   rollspin::app::registerReportCommands(cli, handler);
+
+  // --version needs no command: the release, the source's git describe, and
+  // with --verbose the GL backend a render would use.
+  bool version = false, verboseToo = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    version = version || arg == "--version";
+    verboseToo = verboseToo || arg == "--verbose" || arg == "-v";
+  }
+  if (version) {
+    std::printf("%s\n", rollspin::app::versionLine().c_str());
+    if (verboseToo) std::printf("GL backend: %s\n", rollspin::app::glBackendDescription().c_str());
+    return 0;
+  }
 
   // Name an unknown command instead of CLI11's generic "a subcommand is required".
   std::string known;

@@ -22,7 +22,8 @@ int main(int argc, char** argv) {
   cli.fallthrough(true);
   bool verbose = false;
   cli.add_flag("-v,--verbose", verbose, "List the pipeline stages as they run");
-  cli.add_flag("--version", std::string("Print the version and git describe (with --verbose, the GL backend) and exit"));
+  bool versionShown = false;  // handled before parsing (below); listed for --help
+  cli.add_flag("--version", versionShown, "Print the version and git describe (with --verbose, the GL backend) and exit");
   rollspin::app::CommandHandler handler;
   rollspin::app::registerSolveCommands(cli, handler);
   rollspin::app::registerRenderCommands(cli, handler);

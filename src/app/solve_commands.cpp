@@ -70,7 +70,7 @@ int runSolve(const SolveOptions& o) {
   fmt::print("rotation angle   {:.17g} rad ({:.12g} deg)\n", aa.angle, aa.angle * deg);
   fmt::print("rotation axis    [{:.17g}, {:.17g}, {:.17g}]\n", aa.axis.x(), aa.axis.y(), aa.axis.z());
   fmt::print("spinor angle     {:.17g} rad ({:.12g} deg; {} sheet)\n", psi, psi * deg,
-             q.w < 0.0 ? "negative (U ~ -1)" : "positive");
+             spin::onNegativeSheet(q) ? "negative (U ~ -1)" : "positive");
   fmt::print("unitarity error  {:.3g}\n", stats.unitarityError);
   fmt::print("solve time       {:.3g} s\n", stats.seconds);
   return 0;

@@ -90,3 +90,20 @@ TEST(Messages, VersionNamesTheReleaseAndWithVerboseTheBackend) {
 }
 
 }  // namespace
+
+namespace {
+
+// solve reports the same sheet for every method at an exact half turn.
+TEST(Messages, SpinorAngleAtAHalfTurnIsTheSameForEveryMethod) {
+  const std::string scene = (test::sourceDir() / "scenes" / "sphere-inside.toml").string();
+  for (const char* method : {"exact", "magnus4", "frame4", "magnus6", "rk4"}) {
+    const auto r = test::runRollspin({"solve", scene, "--set", "ball.radius=0.75", "--set",
+                                      std::string("solver.method=") + method, "--json"});
+    ASSERT_EQ(r.exitCode, 0) << method << r.err;
+    const auto at = r.out.find("\"spinor_angle\": ");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    EXPECT_NEAR(std::stod(r.out.substr(at + 16)), 3.141592653589793, 1e-9) << method << "\n" << r.out;
+  }
+}
+
+}  // namespace

@@ -59,7 +59,9 @@ int runErrors(const ReportArgs& a) {
                         model.ballRadius});
     }
   }
-  return finish(report::errorsReport(scenes, optionsFrom(a)));
+  report::ReportOptions options = optionsFrom(a);
+  options.lollipopSpeedRatio = a.scenes.empty();
+  return finish(report::errorsReport(scenes, options));
 }
 
 }  // namespace

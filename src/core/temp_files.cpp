@@ -11,6 +11,9 @@
 #include <climits>
 #include <cstdio>
 #include <cstring>
+#include <map>
+#include <mutex>
+#include <vector>
 
 namespace rollspin {
 
@@ -64,20 +67,41 @@ int removeStaleTemporaries(const fs::path& finalPath) {
   const std::string name = finalPath.filename().string();
   if (name.empty()) return 0;
   const fs::path dir = finalPath.has_parent_path() ? finalPath.parent_path() : fs::path(".");
-  std::error_code ec;
+  // Each folder is listed once per process: a render writes thousands of
+  // frames into one staging folder, and listing it per frame would be
+  // quadratic. What the listing found in the temporary pattern is kept.
+  static std::mutex mutex;
+  static std::map<std::string, std::vector<std::string>> candidatesByFolder;
+  const std::lock_guard lock(mutex);
+  const std::string key = fs::absolute(dir).lexically_normal().string();
+  auto found = candidatesByFolder.find(key);
+  if (found == candidatesByFolder.end()) {
+    std::vector<std::string> candidates;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+      const std::string entryName = entry.path().filename().string();
+      if (entryName.starts_with(".") && entryName.ends_with(".tmp")) candidates.push_back(entryName);
+    }
+    found = candidatesByFolder.emplace(key, std::move(candidates)).first;
+  }
   int removed = 0;
-  for (const auto& entry : fs::directory_iterator(dir, ec)) {
-    const long pid = temporaryOwner(entry.path().filename().string(), name);
-    if (pid <= 0 || pid == ::getpid()) continue;
+  std::vector<std::string>& candidates = found->second;
+  for (auto it = candidates.begin(); it != candidates.end();) {
+    const long pid = temporaryOwner(*it, name);
     // kill(pid, 0) fails with ESRCH only when no such process exists (EPERM: it runs as someone else).
-    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+    if (pid <= 0 || pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) {
+      ++it;
+      continue;
+    }
+    const fs::path stale = dir / *it;
     std::error_code removeError;
-    fs::remove_all(entry.path(), removeError);
+    fs::remove_all(stale, removeError);
     if (!removeError) {
       ++removed;
       std::fprintf(stderr, "rollspin: removed %s, left behind by process %ld, which is no longer running\n",
-                   entry.path().string().c_str(), pid);
+                   stale.string().c_str(), pid);
     }
+    it = candidates.erase(it);
   }
   return removed;
 }

@@ -115,6 +115,36 @@ TEST_P(Interrupted, PngFramesLeaveAPartialFolderNamedSo) {
   for (const std::string& name : entriesBesideStderr(dir)) EXPECT_TRUE(name.starts_with("frames.partial")) << name;
 }
 
+// A second Ctrl-C does not wait for the video to be finished: the shared
+// clean-up removes the temporary and the process exits 130 at once (it was
+// killed by the signal, leaving .clip.mp4.PID.tmp behind).
+TEST(SecondSignal, EndsAVideoAtOnceWithoutATemporary) {
+  const fs::path dir = test::freshTempDir("interrupt_twice");
+  test::SpawnedRollspin child({"render", lollipop(), "--set", "render.width=640", "--set", "render.height=480",
+                               "--set", "animation.duration=100", "-o", (dir / "clip.mp4").string()},
+                              dir / "stderr");
+  ASSERT_TRUE(child.waitUntil([&] {
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(dir, ec))
+      if (e.path().filename().string().starts_with(".clip.mp4.") && e.file_size() > 4096) return true;
+    return false;
+  })) << test::readFile(dir / "stderr");
+  ASSERT_EQ(kill(child.pid(), SIGINT), 0);
+  // Apart, or the kernel merges them into one pending signal; the encoder's
+  // flush after the first takes far longer than this.
+  test::sleepMilliseconds(5);
+  ASSERT_EQ(kill(child.pid(), SIGINT), 0);
+  bool signalled = false;
+  const int code = child.wait(&signalled);
+  const std::string err = test::readFile(dir / "stderr");
+  EXPECT_FALSE(signalled) << err;
+  EXPECT_EQ(code, 128 + SIGINT) << err;
+  EXPECT_NE(err.find("interrupted (SIGINT)"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(dir / "clip.mp4"));
+  for (const std::string& name : entriesBesideStderr(dir))
+    EXPECT_TRUE(name == "clip.partial.mp4") << "left behind: " << name;
+}
+
 INSTANTIATE_TEST_SUITE_P(Signals, Interrupted, ::testing::Values(SIGINT, SIGTERM),
                          [](const auto& info) { return std::string(signalName(info.param)); });
 

@@ -14,10 +14,12 @@
 #include "core/bounded_queue.hpp"
 #include "motion/frame_clock.hpp"
 #include "motion/frame_poses.hpp"
+#include "app/flag_overrides.hpp"
 #include "app/interrupt_guard.hpp"
 #include "app/progress_meter.hpp"
 #include "app/render_jobs.hpp"
 #include "app/shard_range.hpp"
+#include "core/output_path.hpp"
 #include "core/stage_log.hpp"
 #include "media/container_tags.hpp"
 #include "media/sink_factory.hpp"
@@ -81,22 +83,24 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   for (const auto& [flag, value] : {std::pair{"--width", o.width}, std::pair{"--height", o.height}})
     if (value && (*value < 1 || *value > 8192))
       throw badInput({flag}, "expected an image size in [1, 8192] pixels, got {}", *value);
-  // Later overrides win: --set, then --quality, then --width/--height; all of
-  // them validated by the scene loader like the file.
-  std::vector<std::string> overrides = o.overrides;
+  // Later overrides win: --set, then --quality (but not over a key given with
+  // --set), then --width/--height; all validated by the scene loader.
+  std::vector<FlagOverride> flags;
   if (o.quality) {
     const QualityPreset* preset = findQualityPreset(*o.quality);
     if (preset == nullptr)
       throw badInput({"--quality " + *o.quality}, "expected low (854x480@15), medium (1280x720@30), "
                                                   "high (1920x1080@60) or 4k (3840x2160@60)");
-    overrides.push_back(fmt::format("render.width={}", preset->width));
-    overrides.push_back(fmt::format("render.height={}", preset->height));
-    overrides.push_back(fmt::format("animation.fps={}", preset->fps));
+    const std::string flag = "--quality " + *o.quality;
+    flags.push_back({flag, fmt::format("render.width={}", preset->width)});
+    flags.push_back({flag, fmt::format("render.height={}", preset->height)});
+    flags.push_back({flag, fmt::format("animation.fps={}", preset->fps)});
   }
-  if (o.width) overrides.push_back("render.width=" + std::to_string(*o.width));
-  if (o.height) overrides.push_back("render.height=" + std::to_string(*o.height));
-  if (o.transparent) overrides.push_back("render.transparent=true");
-  scene::SceneSpec spec = loadScene(o.scenePath, overrides);
+  if (o.width) flags.push_back({"--width " + std::to_string(*o.width), "render.width=" + std::to_string(*o.width)});
+  if (o.height) flags.push_back({"--height " + std::to_string(*o.height), "render.height=" + std::to_string(*o.height)});
+  if (o.transparent) flags.push_back({"--transparent", "render.transparent=true"});
+  // An explicit --set wins over --quality (with a note); --width/--height over both.
+  scene::SceneSpec spec = loadSceneWithFlags(o.scenePath, o.overrides, flags);
   const media::OutputFormat& format = chooseOutputFormat(spec, o.output, media::OutputUse::Animation);
   // What the format's row asks of the clip. A GIF: its own default size
   // when neither the scene nor a flag gives one (height by the aspect
@@ -107,6 +111,11 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     spec.render.height = std::max<long long>(1, std::llround(double(format.defaultWidth) * double(h) / double(w)));
   }
   if (format.fpsCap > 0 && spec.animation.fps.value() > format.fpsCap) spec.animation.fps = scene::FrameRate{format.fpsCap, 1};
+  if (!o.output.empty()) {  // before any frame is rendered
+    const SourceLoc where{"-o " + o.output.string()};
+    if (format.isFolder()) checkOutputFolder(o.output, where);
+    else checkOutputFile(o.output, where);
+  }
   // Measured: a 1080p MP4 render peaks ~230 bytes per pixel above the still's
   // estimate (three queued RGBA frames, the yuv420p copy, x264's look-ahead).
   checkFrameMemory(spec, 256);

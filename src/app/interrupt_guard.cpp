@@ -2,6 +2,8 @@
 
 #include <atomic>
 
+#include "core/temp_files.hpp"
+
 namespace rollspin::app {
 
 namespace {
@@ -10,7 +12,11 @@ namespace {
 std::atomic<int> receivedSignal{0};
 static_assert(std::atomic<int>::is_always_lock_free);
 
-extern "C" void onInterrupt(int signal) { receivedSignal.store(signal); }
+// A second signal does not wait: the shared clean-up removes the temporary
+// files and ends the process.
+extern "C" void onInterrupt(int signal) {
+  if (receivedSignal.exchange(signal) != 0) interruptCleanupAndExit(signal);
+}
 
 }  // namespace
 
@@ -19,7 +25,7 @@ InterruptGuard::InterruptGuard() {
   struct sigaction action {};
   action.sa_handler = onInterrupt;
   sigemptyset(&action.sa_mask);
-  action.sa_flags = SA_RESETHAND | SA_RESTART;
+  action.sa_flags = SA_RESTART;
   sigaction(SIGINT, &action, &previousInt_);
   sigaction(SIGTERM, &action, &previousTerm_);
 }

@@ -1,8 +1,8 @@
 // InterruptGuard — while one is alive, SIGINT and SIGTERM only raise a flag,
 // so a long render can stop between frames and still finish its output
-// cleanly (flush the encoder, write the trailer). The handler resets itself:
-// a second Ctrl-C kills the process the usual way (only temporary files can
-// be left, never a corrupt file at a final name). The previous handlers are
+// cleanly (flush the encoder, write the trailer). A second Ctrl-C ends the
+// process through the shared clean-up (core/temp_files.hpp: temporaries
+// removed, never a corrupt file at a final name). The previous handlers are
 // restored when the guard goes.
 #pragma once
 

@@ -6,10 +6,14 @@
 #include <cstdio>
 #include <exception>
 #include <string>
+#include <vector>
 
+#include "app/cli_messages.hpp"
 #include "app/commands.hpp"
+#include "app/version_info.hpp"
 #include "core/error.hpp"
 #include "core/stage_log.hpp"
+#include "core/temp_files.hpp"
 
 int main(int argc, char** argv) {
   CLI::App cli{"rollspin: the rolling sphere and the quantum spin"};
@@ -18,11 +22,27 @@ int main(int argc, char** argv) {
   cli.fallthrough(true);
   bool verbose = false;
   cli.add_flag("-v,--verbose", verbose, "List the pipeline stages as they run");
+  bool versionShown = false;  // handled before parsing (below); listed for --help
+  cli.add_flag("--version", versionShown, "Print the version and git describe (with --verbose, the GL backend) and exit");
   rollspin::app::CommandHandler handler;
   rollspin::app::registerSolveCommands(cli, handler);
   rollspin::app::registerRenderCommands(cli, handler);
   rollspin::app::registerReportCommands(cli, handler);
   rollspin::app::registerJoinCommand(cli, handler);
+
+  // --version needs no command: the release, the source's git describe, and
+  // with --verbose the GL backend a render would use.
+  bool version = false, verboseToo = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    version = version || arg == "--version";
+    verboseToo = verboseToo || arg == "--verbose" || arg == "-v";
+  }
+  if (version) {
+    std::printf("%s\n", rollspin::app::versionLine().c_str());
+    if (verboseToo) std::printf("GL backend: %s\n", rollspin::app::glBackendDescription().c_str());
+    return 0;
+  }
 
   // Name an unknown command instead of CLI11's generic "a subcommand is required".
   std::string known;
@@ -33,6 +53,10 @@ int main(int argc, char** argv) {
   }
   if (argc > 1 && argv[1][0] != '-' && !isKnown) {
     std::fprintf(stderr, "rollspin: error: unknown command '%s'; commands: %s\n", argv[1], known.c_str());
+    std::vector<std::string> names;
+    for (const CLI::App* sub : cli.get_subcommands({})) names.push_back(sub->get_name());
+    if (const std::string guess = rollspin::app::nearestName(argv[1], names); !guess.empty())
+      std::fprintf(stderr, "rollspin: did you mean '%s'?\n", guess.c_str());
     return 2;
   }
 
@@ -43,11 +67,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return cli.exit(e);
   } catch (const CLI::ParseError& e) {
-    cli.exit(e);
+    std::fputs(rollspin::app::describeParseError(cli, e, argc, argv).c_str(), stderr);
     return 2;
   }
 
   rollspin::StageLog::instance().setEcho(verbose);
+  // Ctrl-C or SIGTERM: remove unfinished outputs, say so, exit 128 + signal.
+  rollspin::installInterruptCleanup();
   try {
     return handler ? handler() : 2;
   } catch (const rollspin::Error& e) {

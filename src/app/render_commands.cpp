@@ -1,12 +1,17 @@
 // `rollspin render SCENE --still ...` and `rollspin compare A.png B.png ...`.
 #include <fmt/format.h>
 
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "app/animation_job.hpp"
 #include "app/commands.hpp"
 #include "app/render_jobs.hpp"
+#include "core/output_path.hpp"
 #include "media/image_compare.hpp"
 #include "media/image_io.hpp"
 
@@ -62,30 +67,158 @@ int runRender(RenderCliOptions& o, const CLI::App& command) {
 }
 
 struct CompareOptions {
-  std::string a, b, diff;
-  double maxDelta = 0.0, meanDelta = 0.0;
+  std::string a, diff, maxPixels;
+  std::vector<std::string> references;
+  double maxDelta = 0.0;
+  std::optional<double> meanDelta, minSsim;
+  bool json = false;
 };
 
-int runCompare(const CompareOptions& o) {
-  for (const auto& [flag, value] : {std::pair{"--max-delta", o.maxDelta}, std::pair{"--mean-delta", o.meanDelta}})
-    if (!(value >= 0.0 && value <= 255.0))
-      throw badInput({flag}, "expected a tolerance in [0, 255], got {}", value);
-  const media::Image a = media::loadImage(o.a, SourceLoc{o.a});
-  const media::Image b = media::loadImage(o.b, SourceLoc{o.b});
-  if (a.width != b.width || a.height != b.height) {
-    fmt::print("size mismatch: {}x{} vs {}x{}\n", a.width, a.height, b.width, b.height);
-    return 1;
+// --max-pixels: a count ("120") or a share of the image ("0.5%").
+struct PixelAllowance {
+  double count = 0.0;
+  bool percent = false;
+  [[nodiscard]] double allowedOf(std::int64_t total) const { return percent ? count / 100.0 * double(total) : count; }
+};
+
+PixelAllowance parsePixelAllowance(const std::string& text) {
+  const SourceLoc loc{"--max-pixels " + text};
+  PixelAllowance allowance;
+  std::string number = text;
+  if (!number.empty() && number.back() == '%') {
+    allowance.percent = true;
+    number.pop_back();
   }
-  const media::ImageDifference d = media::compareImages(a.view(), b.view());
-  fmt::print("max delta       R {} G {} B {} A {}  (overall {})\n", d.maxDelta[0], d.maxDelta[1], d.maxDelta[2],
-             d.maxDelta[3], d.maxOverall());
-  fmt::print("mean delta      R {:.4f} G {:.4f} B {:.4f} A {:.4f}  (overall {:.4f})\n", d.meanDelta[0], d.meanDelta[1],
-             d.meanDelta[2], d.meanDelta[3], d.meanOverall());
-  fmt::print("differing px    {} of {}\n", d.differingPixels, std::int64_t{a.width} * a.height);
-  if (!o.diff.empty()) media::writePng(o.diff, media::differenceHeatMap(a.view(), b.view()).view());
-  const bool within = d.maxOverall() <= o.maxDelta && d.meanOverall() <= o.meanDelta;
-  fmt::print("{}\n", within ? "within tolerance" : "DIFFERENT");
-  return within ? 0 : 1;
+  const char* first = number.data();
+  const char* last = first + number.size();
+  const auto [ptr, ec] = std::from_chars(first, last, allowance.count);
+  const bool valid = !number.empty() && ec == std::errc() && ptr == last && allowance.count >= 0.0 &&
+                     (allowance.percent ? allowance.count <= 100.0 : allowance.count == std::floor(allowance.count));
+  if (!valid) throw badInput(loc, "expected a pixel count (e.g. 50) or a percentage of the image (e.g. 0.1%)");
+  return allowance;
+}
+
+struct ReferenceResult {
+  std::string path;
+  int width = 0, height = 0;
+  bool sizeMatches = false;
+  media::ImageDifference d;
+  std::int64_t overMaxDelta = 0;  // pixels whose largest channel difference exceeds --max-delta
+  double ssim = 0.0;
+  bool pass = false;
+};
+
+std::string jsonString(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') out += {'\\', c};
+    else if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04x}", int(c));
+    else out += c;
+  }
+  return out + "\"";
+}
+
+std::string jsonNumber(std::optional<double> v) { return v ? fmt::format("{:.17g}", *v) : "null"; }
+
+void printText(const CompareOptions& o, const std::vector<ReferenceResult>& results, const media::Image& a) {
+  const std::int64_t pixels = std::int64_t{a.width} * a.height;
+  for (const ReferenceResult& r : results) {
+    if (results.size() > 1) fmt::print("reference       {}\n", r.path);
+    if (!r.sizeMatches) {
+      fmt::print("size mismatch   {}x{} vs {}x{}\nDIFFERENT\n", a.width, a.height, r.width, r.height);
+      continue;
+    }
+    const media::ImageDifference& d = r.d;
+    fmt::print("max delta       R {} G {} B {} A {}  (overall {})\n", d.maxDelta[0], d.maxDelta[1], d.maxDelta[2],
+               d.maxDelta[3], d.maxOverall());
+    fmt::print("mean delta      R {:.4f} G {:.4f} B {:.4f} A {:.4f}  (overall {:.4f})\n", d.meanDelta[0],
+               d.meanDelta[1], d.meanDelta[2], d.meanDelta[3], d.meanOverall());
+    fmt::print("differing px    {} of {} ({} by more than {} levels)\n", d.differingPixels, pixels, r.overMaxDelta,
+               o.maxDelta);
+    fmt::print("ssim            {:.6f}\n", r.ssim);
+    fmt::print("{}\n", r.pass ? "within tolerance" : "DIFFERENT");
+  }
+}
+
+int runCompareChecked(const CompareOptions& o) {
+  for (const auto& [flag, value] : {std::pair{"--max-delta", std::optional<double>(o.maxDelta)},
+                                    std::pair{"--mean-delta", o.meanDelta}})
+    if (value && !(*value >= 0.0 && *value <= 255.0))
+      throw badInput({flag}, "expected a tolerance in [0, 255], got {}", *value);
+  if (o.minSsim && !(*o.minSsim >= -1.0 && *o.minSsim <= 1.0))
+    throw badInput({"--min-ssim"}, "expected an SSIM in [-1, 1] (1: identical), got {}", *o.minSsim);
+  const PixelAllowance allowance = o.maxPixels.empty() ? PixelAllowance{} : parsePixelAllowance(o.maxPixels);
+  // An unwritable --diff is the caller's mistake (exit 2), never "differ" (1).
+  if (!o.diff.empty()) checkOutputFile(o.diff, SourceLoc{"--diff " + o.diff});
+  const media::Image a = media::loadImage(o.a, SourceLoc{o.a});
+  const std::int64_t pixels = std::int64_t{a.width} * a.height;
+  std::vector<ReferenceResult> results;
+  std::vector<media::Image> images;
+  for (const std::string& path : o.references) {
+    images.push_back(media::loadImage(path, SourceLoc{path}));
+    const media::Image& b = images.back();
+    ReferenceResult r;
+    r.path = path;
+    r.width = b.width;
+    r.height = b.height;
+    r.sizeMatches = a.width == b.width && a.height == b.height;
+    if (!r.sizeMatches) {
+      std::fprintf(stderr, "rollspin: size mismatch: %s is %dx%d, %s is %dx%d\n", o.a.c_str(), a.width, a.height,
+                   path.c_str(), b.width, b.height);
+    } else {
+      r.d = media::compareImages(a.view(), b.view());
+      r.overMaxDelta = r.d.pixelsAbove(static_cast<int>(std::floor(o.maxDelta)));
+      r.ssim = media::structuralSimilarity(a.view(), b.view());
+      r.pass = double(r.overMaxDelta) <= allowance.allowedOf(pixels) &&
+               (!o.meanDelta || r.d.meanOverall() <= *o.meanDelta) && (!o.minSsim || r.ssim >= *o.minSsim);
+    }
+    results.push_back(r);
+  }
+  // The diff shows the reference that matched, else the closest same-size one, else the first.
+  std::size_t best = 0;
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const ReferenceResult &r = results[k], &b = results[best];
+    const bool better = (r.pass && !b.pass) ||
+                        (r.pass == b.pass && r.sizeMatches && (!b.sizeMatches || r.overMaxDelta < b.overMaxDelta));
+    if (better) best = k;
+  }
+  const bool pass = results[best].pass;
+  if (!o.diff.empty()) media::writePng(o.diff, media::differenceHeatMap(a.view(), images[best].view()).view());
+  if (o.json) {
+    std::string refs;
+    for (const ReferenceResult& r : results) {
+      const media::ImageDifference& d = r.d;
+      refs += fmt::format(
+          "{}    {{\"path\": {}, \"width\": {}, \"height\": {}, \"size_matches\": {}, \"max_delta\": [{}, {}, {}, {}], "
+          "\"mean_delta\": [{:.6g}, {:.6g}, {:.6g}, {:.6g}], \"differing_pixels\": {}, \"pixels_over_max_delta\": {}, "
+          "\"ssim\": {}, \"pass\": {}}}",
+          refs.empty() ? "" : ",\n", jsonString(r.path), r.width, r.height, r.sizeMatches, d.maxDelta[0], d.maxDelta[1],
+          d.maxDelta[2], d.maxDelta[3], d.meanDelta[0], d.meanDelta[1], d.meanDelta[2], d.meanDelta[3],
+          d.differingPixels, r.overMaxDelta, r.sizeMatches ? fmt::format("{:.9f}", r.ssim) : "null", r.pass);
+    }
+    fmt::print("{{\n  \"image\": {},\n  \"width\": {},\n  \"height\": {},\n  \"pass\": {},\n  \"matched\": {},\n"
+               "  \"thresholds\": {{\"max_delta\": {}, \"max_pixels\": {}, \"mean_delta\": {}, \"min_ssim\": {}}},\n"
+               "  \"diff\": {},\n  \"references\": [\n{}\n  ]\n}}\n",
+               jsonString(o.a), a.width, a.height, pass, pass ? jsonString(results[best].path) : "null",
+               jsonNumber(o.maxDelta),
+               o.maxPixels.empty() ? "0" : jsonString(o.maxPixels), jsonNumber(o.meanDelta), jsonNumber(o.minSsim),
+               o.diff.empty() ? "null" : jsonString(o.diff), refs);
+  } else {
+    printText(o, results, a);
+    if (results.size() > 1) fmt::print("{}\n", pass ? "matches " + results[best].path : "DIFFERENT from every reference");
+  }
+  return pass ? 0 : 1;
+}
+
+// Exit 1 means "the images differ" and nothing else: a CI script must not
+// read a broken environment as a golden mismatch, so any failure is 2.
+int runCompare(const CompareOptions& o) {
+  try {
+    return runCompareChecked(o);
+  } catch (const Error& e) {
+    if (e.kind() == ErrorKind::BadInput) throw;
+    throw Error(ErrorKind::BadInput, e.where(), e.message());
+  }
 }
 
 }  // namespace
@@ -118,15 +251,23 @@ void registerRenderCommands(CLI::App& cli, CommandHandler& handler) {
   });
 
   auto compare = std::make_shared<CompareOptions>();
-  CLI::App* cmp = cli.add_subcommand("compare", "Compare two images (exit 0 within tolerance, 1 not, 2 bad input)");
-  cmp->add_option("a", compare->a, "First image (PNG/JPG)")->required();
-  cmp->add_option("b", compare->b, "Second image (PNG/JPG)")->required();
-  // Negative or out-of-range tolerances are bad input (exit 2), not "different".
-  cmp->add_option("--max-delta", compare->maxDelta, "Largest allowed per-channel difference (0-255, default 0)")
-      ->check(CLI::Range(0.0, 255.0));
-  cmp->add_option("--mean-delta", compare->meanDelta, "Largest allowed mean per-channel difference (default 0)")
-      ->check(CLI::Range(0.0, 255.0));
-  cmp->add_option("--diff", compare->diff, "Write a heat map of the difference (PNG)");
+  CLI::App* cmp = cli.add_subcommand(
+      "compare", "Compare an image with one or more references (exit 0: matches one, 1: differs from all, 2: bad "
+                 "input or environment)");
+  cmp->add_option("a", compare->a, "The image to check (PNG/JPG)")->required();
+  cmp->add_option("references", compare->references, "Reference images: passes if any one matches")->required();
+  // Out-of-range tolerances are bad input (exit 2), not "different": checked in runCompare.
+  cmp->add_option("--max-delta", compare->maxDelta,
+                  "Largest per-pixel difference (any channel, 0-255 levels) not counted as differing (default 0)");
+  cmp->add_option("--max-pixels", compare->maxPixels,
+                  "How many pixels may differ by more than --max-delta: a count or a percentage (e.g. 0.1%; "
+                  "default 0)");
+  cmp->add_option("--mean-delta", compare->meanDelta, "Largest allowed mean per-channel difference (not checked "
+                                                      "by default)");
+  cmp->add_option("--min-ssim", compare->minSsim, "Smallest allowed SSIM of the luma (Gaussian 11x11 window; 1 is "
+                                                  "identical; not checked by default)");
+  cmp->add_option("--diff", compare->diff, "Write a heat map of the difference (PNG) against the best reference");
+  cmp->add_flag("--json", compare->json, "Print the measurements and the verdict as JSON");
   cmp->callback([compare, &handler] { handler = [compare] { return runCompare(*compare); }; });
 }
 

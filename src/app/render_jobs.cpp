@@ -1,6 +1,7 @@
 #include "app/render_jobs.hpp"
 
 #include "core/memory_budget.hpp"
+#include "core/output_path.hpp"
 #include "core/stage_log.hpp"
 
 #include <fmt/format.h>
@@ -11,6 +12,7 @@
 #include <cstdio>
 
 #include "app/figure_job.hpp"
+#include "app/flag_overrides.hpp"
 #include "motion/frame_poses.hpp"
 #include "media/image_io.hpp"
 #include "media/sink_factory.hpp"
@@ -120,15 +122,19 @@ media::SinkOptions sinkOptions(const scene::SceneSpec& spec, const std::filesyst
 }
 
 std::filesystem::path renderStill(const StillOptions& o) {
+  // Where it goes is checked before any work (the format, from the table, once the scene is read).
+  if (!o.output.empty()) checkOutputFile(o.output, SourceLoc{"-o " + o.output.string()});
   for (const auto& [flag, value] : {std::pair{"--width", o.width}, std::pair{"--height", o.height}})
     if (value && (*value < 1 || *value > 8192))
       throw badInput({flag}, "expected an image size in [1, 8192] pixels, got {}", *value);
   std::vector<std::string> overrides = o.overrides;
-  // Command-line sizes go through the scene validation like --set does.
-  if (o.width) overrides.push_back("render.width=" + std::to_string(*o.width));
-  if (o.height) overrides.push_back("render.height=" + std::to_string(*o.height));
-  if (o.transparent) overrides.push_back("render.transparent=true");
-  const scene::SceneSpec spec = loadScene(o.scenePath, overrides);
+  // Command-line sizes go through the scene validation like --set does, and
+  // errors name the flag.
+  std::vector<FlagOverride> flags;
+  if (o.width) flags.push_back({"--width " + std::to_string(*o.width), "render.width=" + std::to_string(*o.width)});
+  if (o.height) flags.push_back({"--height " + std::to_string(*o.height), "render.height=" + std::to_string(*o.height)});
+  if (o.transparent) flags.push_back({"--transparent", "render.transparent=true"});
+  const scene::SceneSpec spec = loadSceneWithFlags(o.scenePath, overrides, flags);
   const media::OutputFormat& format = chooseOutputFormat(spec, o.output, media::OutputUse::Still);
   const auto figure = figureFormatOf(format);  // PDF/SVG: drawn by the vector backend (figure_job.hpp)
   if (figure) checkFigureSpec(spec);

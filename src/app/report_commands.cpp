@@ -13,6 +13,7 @@
 #include "app/commands.hpp"
 #include "model/rolling_model.hpp"
 #include "core/error.hpp"
+#include "core/output_path.hpp"
 #include "report/report.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -32,6 +33,7 @@ report::ReportOptions optionsFrom(const ReportArgs& a) {
   report::ReportOptions o;
   o.outDir = a.outDir;
   // Fail before the work, not after it, when the folder cannot be made.
+  checkOutputFolder(o.outDir, SourceLoc{"--output-dir " + a.outDir});
   std::error_code ec;
   std::filesystem::create_directories(o.outDir, ec);
   if (ec) throw runtimeError(SourceLoc{"--output-dir " + a.outDir}, "cannot create {}: {}", a.outDir, ec.message());
@@ -59,7 +61,9 @@ int runErrors(const ReportArgs& a) {
                         model.ballRadius});
     }
   }
-  return finish(report::errorsReport(scenes, optionsFrom(a)));
+  report::ReportOptions options = optionsFrom(a);
+  options.lollipopSpeedRatio = a.scenes.empty();
+  return finish(report::errorsReport(scenes, options));
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "app/timeline_csv.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/scene_writer.hpp"
+#include "core/output_path.hpp"
 #include "core/stage_log.hpp"
 #include "spin/su2.hpp"
 
@@ -72,13 +73,14 @@ int runSolve(const SolveOptions& o) {
   fmt::print("rotation angle   {:.17g} rad ({:.12g} deg)\n", aa.angle, aa.angle * deg);
   fmt::print("rotation axis    [{:.17g}, {:.17g}, {:.17g}]\n", aa.axis.x(), aa.axis.y(), aa.axis.z());
   fmt::print("spinor angle     {:.17g} rad ({:.12g} deg; {} sheet)\n", psi, psi * deg,
-             q.w < 0.0 ? "negative (U ~ -1)" : "positive");
+             spin::onNegativeSheet(q) ? "negative (U ~ -1)" : "positive");
   fmt::print("unitarity error  {:.3g}\n", stats.unitarityError);
   fmt::print("solve time       {:.3g} s\n", stats.seconds);
   return 0;
 }
 
 int runTimeline(const SolveOptions& o) {
+  if (!o.output.empty()) checkOutputFile(o.output, {"-o " + o.output});  // before the solve, not after
   const scene::SceneSpec spec = loadScene(o.scenePath, o.overrides);
   const RollingModel model = buildSceneModel(spec);
   const SolverChoice choice = chooseSolver(spec, model);

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
+#include "core/temp_files.hpp"
 
 namespace rollspin {
 
@@ -23,12 +24,13 @@ AtomicFile::AtomicFile(std::filesystem::path finalPath) : finalPath_(std::move(f
   // half-written to hide there.
   const auto status = std::filesystem::status(finalPath_, ec);
   direct_ = std::filesystem::exists(status) && !std::filesystem::is_regular_file(status);
-  tempPath_ = direct_ ? finalPath_
-                      : dir / fmt::format(".{}.{}.tmp", finalPath_.filename().string(), ::getpid());
+  if (!direct_) removeStaleTemporaries(finalPath_);
+  tempPath_ = direct_ ? finalPath_ : temporaryPathFor(finalPath_);
   file_ = std::fopen(tempPath_.c_str(), "wb");
   if (file_ == nullptr) {
     throw runtimeError({finalPath_.string()}, "cannot write in '{}': {}", dir.string(), std::strerror(errno));
   }
+  if (!direct_) registerTemporary(tempPath_, finalPath_);
 }
 
 AtomicFile::~AtomicFile() {
@@ -43,6 +45,7 @@ void AtomicFile::discard() {
   if (!direct_) {
     std::error_code ec;
     std::filesystem::remove(tempPath_, ec);
+    unregisterTemporary(tempPath_);
   }
 }
 
@@ -74,6 +77,7 @@ void AtomicFile::commit() {
     discard();
     throw runtimeError({finalPath_.string()}, "cannot rename temporary file into place: {}", ec.message());
   }
+  unregisterTemporary(tempPath_);
   committed_ = true;
 }
 

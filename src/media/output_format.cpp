@@ -105,7 +105,9 @@ const OutputFormat& chooseFormat(const std::optional<std::string>& requested, co
     return nullptr;
   };
   if (output.empty()) return *findOutputFormat(animation ? "mp4" : "png", use);
-  if (animation && (ext.empty() || isDirectory)) return *findOutputFormat("png", use);
+  // A folder named like a video file (out.mp4/) is still meant as that file:
+  // the job's output check then refuses it before any work.
+  if (animation && (ext.empty() || (isDirectory && rowFor(use) == nullptr))) return *findOutputFormat("png", use);
   if (!animation && ext.empty()) return *findOutputFormat("png", use);
   if (const OutputFormat* f = rowFor(use)) return *f;
   if (const OutputFormat* other = rowFor(animation ? OutputUse::Still : OutputUse::Animation)) {

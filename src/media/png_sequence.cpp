@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "core/error.hpp"
+#include "core/temp_files.hpp"
 #include "media/sink_factory.hpp"
 
 namespace rollspin::media {
@@ -36,14 +37,17 @@ PngSequenceWriter::PngSequenceWriter(fs::path folder, long long firstIndex, PngC
   if (fs::exists(folder_, ec) && !fs::is_directory(folder_, ec))
     throw runtimeError(where, "a PNG sequence needs a folder, but this is a file");
   if (!folder_.has_filename()) throw runtimeError(where, "a PNG sequence needs a named folder, not the root");
-  staging_ = folder_.parent_path() / fmt::format(".{}.{}.tmp", folder_.filename().string(), ::getpid());
+  removeStaleTemporaries(folder_);  // frames of a run that died hard
+  staging_ = temporaryPathFor(folder_);
   fs::create_directories(staging_, ec);
+  registerTemporary(staging_, folder_, true);
   if (ec) throw runtimeError(where, "cannot create the frame folder: {}", ec.message());
 }
 
 PngSequenceWriter::~PngSequenceWriter() {
   std::error_code ec;
   if (!staging_.empty()) fs::remove_all(staging_, ec);  // ours alone: a unique hidden name
+  if (!staging_.empty()) unregisterTemporary(staging_);
 }
 
 fs::path PngSequenceWriter::framePath(const fs::path& folder, long long index) {
@@ -93,6 +97,7 @@ void PngSequenceWriter::moveFramesInto(const fs::path& target, Stale stale) {
                                ec.message());
   }
   fs::remove_all(staging_, ec);
+  unregisterTemporary(staging_);
   staging_.clear();
 }
 

@@ -1,5 +1,6 @@
 #include "media/video_writer.hpp"
 
+#include "core/temp_files.hpp"
 #include "media/container_tags.hpp"
 
 extern "C" {
@@ -65,6 +66,7 @@ struct VideoWriter::Impl {
       std::error_code ec;
       fs::remove(writePath, ec);
     }
+    if (!direct) unregisterTemporary(writePath);
   }
 
   void release() {
@@ -138,8 +140,12 @@ VideoWriter::VideoWriter(fs::path finalPath, const VideoSettings& settings) : im
 
   m.direct = isDevice(m.finalPath);
   m.writePath = m.finalPath;
-  if (!m.direct)
-    m.writePath.replace_filename(fmt::format(".{}.{}.tmp", m.finalPath.filename().string(), ::getpid()));
+  if (!m.direct) {
+    // A temporary left by a run that died hard goes; ours goes on SIGINT/SIGTERM.
+    removeStaleTemporaries(m.finalPath);
+    m.writePath = temporaryPathFor(m.finalPath);
+    registerTemporary(m.writePath, m.finalPath);
+  }
 
   // The container is named, so the temporary name's extension does not matter.
   // "file:" keeps a colon in a file name from reading as a protocol.

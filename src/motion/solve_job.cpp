@@ -16,6 +16,27 @@ std::pair<std::string, SourceLoc> pathSizeKey(const scene::SceneSpec& spec) {
     if (spec.locations.contains(key)) return {key, spec.where(key)};
   return {"path", spec.where("path")};
 }
+// The steps grow like 1/R as the ball shrinks: when a ball of the path's own
+// size would fit the limit, the radius is to blame. Name ball.radius where it
+// was set and the smallest radius that fits (a bisection on log R: the
+// budget falls monotonically as R grows).
+void throwIfTheBallIsTooSmall(const scene::SceneSpec& spec, const RollingModel& model, double needed) {
+  const double limit = static_cast<double>(scene::kMaxSolverSteps);
+  auto stepsFor = [&](double radius) { return 400.0 * spin::integratedStepBudget(*model.path, radius); };
+  const double length = model.path->length();
+  double fits = std::max(length, model.ballRadius);
+  if (!(stepsFor(fits) <= limit)) return;  // the path itself is too long or too curved
+  double tooSmall = model.ballRadius;
+  for (int i = 0; i < 200 && fits > tooSmall * (1.0 + 1e-3); ++i) {
+    const double mid = std::sqrt(fits) * std::sqrt(tooSmall);  // no overflow or underflow at the extremes
+    (stepsFor(mid) <= limit ? fits : tooSmall) = mid;
+  }
+  throw badInput(spec.where("ball.radius"),
+                 "ball.radius = {:g}: automatic stepping would need {:.3g} steps on this path (400 per radian the "
+                 "ball turns), above the limit of 1e11; ball.radius must be at least {:.3g} here, or set solver.steps",
+                 model.ballRadius, needed, fits);
+}
+
 }  // namespace
 
 SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& model) {
@@ -52,6 +73,7 @@ SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& mode
   } else if (choice.method != spin::Method::Exact) {
     const double needed = requiredAutomaticSteps(model);
     if (!(needed <= static_cast<double>(scene::kMaxSolverSteps))) {
+      throwIfTheBallIsTooSmall(spec, model, needed);
       const auto [key, loc] = pathSizeKey(spec);
       throw badInput(loc,
                      "{}: automatic stepping would need {:.3g} steps, above the limit of 1e11; shorten the "

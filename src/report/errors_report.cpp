@@ -120,6 +120,14 @@ std::string methodList() {
   for (spin::Method m : spin::allMethods()) s += (s.empty() ? "" : ", ") + std::string(spin::methodName(m));
   return s;
 }
+// The --set options that reproduce a run of the report from the command line.
+std::string commandLineSettings(const Point& p) {
+  const std::string method = fmt::format("--set solver.method={}", spin::methodName(p.method));
+  if (p.method == spin::Method::Exact) return method;
+  if (spin::isAdaptive(p.method)) return fmt::format("{} --set solver.tolerance={:.0e}", method, p.tolerance);
+  return fmt::format("{} --set solver.steps={}", method, p.steps);
+}
+
 }  // namespace
 
 std::vector<ReportScene> defaultErrorScenes() {
@@ -178,8 +186,11 @@ ReportOutcome errorsReport(const std::vector<ReportScene>& scenes, const ReportO
     say(fmt::format("errors: {} done ({:.1f} s so far)", sc.name,
                     std::chrono::duration<double>(Clock::now() - start).count()));
   }
-  say("errors: magnus4 against rk45 at 1e-11 on one lollipop revolution");
-  const SpeedRatio ratio = magnus4VersusRk45();
+  SpeedRatio ratio;
+  if (options.lollipopSpeedRatio) {
+    say("errors: magnus4 against rk45 at 1e-11 on one lollipop revolution");
+    ratio = magnus4VersusRk45();
+  }
 
   // ---- CSV ----
   std::string csv =
@@ -252,13 +263,15 @@ ReportOutcome errorsReport(const std::vector<ReportScene>& scenes, const ReportO
   md += "Error = spinor distance (rad, 4π-aware) to the reference, max over 65 timeline samples; time = the "
         "solver alone (`solveFinal`), median of repeats after a warm-up. Methods: " + methodList() + ".\n\n";
   md += "Plot: [errors.png](errors.png); data: [errors.csv](errors.csv).\n\n";
+  std::vector<std::string> tightest(scenes.size());  // per scene: the last (tightest) target with advice
   for (std::size_t si = 0; si < scenes.size(); ++si) {
     const ReportScene& sc = scenes[si];
     const Reference& ref = refs[si];
     md += fmt::format("## {}\n\n{}. Reference: {}", sc.name, sc.description, ref.source);
     if (ref.kinematicCheck >= 0) md += fmt::format("; independent kinematics agrees to {}", fmtNum(ref.kinematicCheck));
     md += fmt::format(". Round-off floor ε∫|B|ds = {}.\n\n", fmtNum(ref.floor));
-    md += "| target | fastest | time | error | settings | fastest stepping method | time |\n| --- | --- | --- | --- | --- | --- | --- |\n";
+    md += "| target | fastest | time | error | settings | fastest stepping method | time | to use it |\n"
+          "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (double target : kTargets) {
       const Point* best = nullptr;
       const Point* bestStepping = nullptr;
@@ -274,13 +287,18 @@ ReportOutcome errorsReport(const std::vector<ReportScene>& scenes, const ReportO
         if (spin::isAdaptive(p->method)) return fmt::format("tol {:.0e} ({} steps)", p->tolerance, p->run.steps);
         return fmt::format("{} steps", p->steps);
       };
-      md += fmt::format("| {:.0e} | {} | {} | {} | {} | {} | {} |\n", target,
+      // What to type for the fastest run.
+      const Point* advice = best;
+      const std::string line = advice ? commandLineSettings(*advice) : "";
+      if (advice) tightest[si] = fmt::format("{}: {:.0e} in {} with {}", sc.name, target, fmtSeconds(advice->run.seconds), line);
+      md += fmt::format("| {:.0e} | {} | {} | {} | {} | {} | {} | {} |\n", target,
                         best ? std::string(spin::methodName(best->method)) : "none reached it",
                         best ? fmtSeconds(best->run.seconds) : "—", best ? fmtNum(best->run.timelineError) : "—",
                         settings(best),
                         bestStepping ? fmt::format("{} ({})", spin::methodName(bestStepping->method), settings(bestStepping))
                                      : "none reached it",
-                        bestStepping ? fmtSeconds(bestStepping->run.seconds) : "—");
+                        bestStepping ? fmtSeconds(bestStepping->run.seconds) : "—",
+                        advice ? "`" + line + "`" : "—");
     }
     std::string failed;
     for (const Point& p : all)
@@ -292,7 +310,7 @@ ReportOutcome errorsReport(const std::vector<ReportScene>& scenes, const ReportO
     md += "\n";
   }
   const double speedup = ratio.rkSeconds / ratio.magnusSeconds;
-  md += fmt::format(
+  if (options.lollipopSpeedRatio) md += fmt::format(
       "## magnus4 against rk45 at 1e-11, one lollipop revolution (R = 1, r = 3)\n\n"
       "| method | settings | final error | time (median of 201) |\n| --- | --- | --- | --- |\n"
       "| magnus4 | {} steps (smallest multiple of 64 reaching 1e-11) | {} | {} |\n"
@@ -304,6 +322,13 @@ ReportOutcome errorsReport(const std::vector<ReportScene>& scenes, const ReportO
   md += fmt::format("\nReport run time: {:.1f} s.\n", total);
   writeFile(options.outDir / "errors.md", md);
   outcome.written.push_back(options.outDir / "errors.md");
+  if (!options.lollipopSpeedRatio) {
+    // The user's scenes: the fastest stepping settings for the tightest target each reached.
+    outcome.headline = "fastest stepping run for the tightest target reached (paste the --set options):";
+    for (const std::string& t : tightest) outcome.headline += "\n  " + (t.empty() ? std::string("(no method reached 1e-6)") : t);
+    outcome.headline += fmt::format("\nreport errors took {:.1f} s", total);
+    return outcome;
+  }
   outcome.headline = fmt::format(
       "magnus4 reaches 1e-11 on one lollipop revolution in {} ({} steps), rk45 in {} (tol {:.3g}): ratio {:.1f}\n"
       "report errors took {:.1f} s",

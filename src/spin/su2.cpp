@@ -39,13 +39,20 @@ AngleAxis rotationAngleAxis(const Su2& q) {
   const double vn = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
   AngleAxis aa;
   aa.angle = 2.0 * std::atan2(vn, std::abs(q.w));
-  if (vn > 0.0) aa.axis = (q.w < 0.0 ? -1.0 : 1.0) * q.vec() / vn;
+  if (vn > 0.0) aa.axis = (onNegativeSheet(q) ? -1.0 : 1.0) * q.vec() / vn;
   return aa;
+}
+
+bool onNegativeSheet(const Su2& q) {
+  // At a half turn qw is 0 up to round-off, and its sign differs between
+  // methods that agree to 1e-13: within kHalfTurnBand it counts as 0, on the
+  // positive sheet (ψ = π about the quaternion's own vector part).
+  return q.w < -kHalfTurnBand;
 }
 
 double spinorAngle(const Su2& q) {
   const double angle = rotationAngleAxis(q).angle;
-  return q.w < 0.0 ? angle + 2.0 * std::numbers::pi : angle;
+  return onNegativeSheet(q) ? angle + 2.0 * std::numbers::pi : angle;
 }
 
 double spinorDistance(const Su2& a, const Su2& b) {

@@ -69,8 +69,15 @@ struct AngleAxis {
 };
 [[nodiscard]] AngleAxis rotationAngleAxis(const Su2& q);
 
+// Which sheet q is on: w < −kHalfTurnBand. |w| ≤ kHalfTurnBand (a net angle
+// of π up to round-off) counts as w = 0 on the positive sheet, so every method
+// reports the same ψ = π and axis at an exact half turn (README Conventions).
+inline constexpr double kHalfTurnBand = 1e-12;
+[[nodiscard]] bool onNegativeSheet(const Su2& q);
+
 // Spinor angle ψ ∈ [0, 4π) with q = (cos ψ/2, sin ψ/2 · axis) for the axis of
-// rotationAngleAxis(q): ψ = angle when w ≥ 0, angle + 2π when w < 0.
+// rotationAngleAxis(q): ψ = angle on the positive sheet, angle + 2π on the
+// negative one (onNegativeSheet).
 [[nodiscard]] double spinorAngle(const Su2& q);
 
 // Geodesic distance between two spinors: the rotation angle of a⁻¹b in

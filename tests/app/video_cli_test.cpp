@@ -327,8 +327,8 @@ TEST(VideoCli, BadInputAndUnwritableOutputsFailClearlyAndLeaveNothing) {
       {{"--at", "s=1", "-o", out}, 2, "--still"},
       {{"-o", (dir / "clip.png").string()}, 2, "--still"},
       {{"-o", (dir / "clip.avi").string()}, 2, ".avi"},
-      {{"-o", (dir / "file" / "clip.mp4").string()}, 1, "cannot create"},
-      {{"-o", (dir / "file" / "frames").string()}, 1, "frame folder"},
+      {{"-o", (dir / "file" / "clip.mp4").string()}, 2, "is a file, not a folder"},
+      {{"-o", (dir / "file" / "frames").string()}, 2, "is a file, not a folder"},
       {{"-o", "/dev/full", "--set", "render.format=mp4"}, 1, "No space left on device"},
   };
   for (const auto& c : cases) {

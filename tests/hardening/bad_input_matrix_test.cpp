@@ -78,10 +78,10 @@ std::vector<Case> cases() {
       {"extends a missing file", {"solve", "{DIR}/s.toml"}, 2, "cannot read the scene file", nullptr,
        [](const fs::path& d) { writeScene(d, "extends = \"gone.toml\"\n"); }},
       // ---- outputs -------------------------------------------------------
-      {"timeline into a missing directory", {"timeline", "{SCENE}", "-o", "{DIR}/missing/t.csv"}, 1, "does not exist"},
-      {"timeline onto a directory", {"timeline", "{SCENE}", "-o", "{DIR}"}, 1, "is a directory"},
+      {"timeline into a missing directory", {"timeline", "{SCENE}", "-o", "{DIR}/missing/t.csv"}, 2, "does not exist"},
+      {"timeline onto a directory", {"timeline", "{SCENE}", "-o", "{DIR}"}, 2, "is a directory"},
       {"timeline to a full disk", {"timeline", "{SCENE}", "-o", "/dev/full"}, 1, "write failed"},
-      {"timeline into /proc", {"timeline", "{SCENE}", "-o", "/proc/rollspin.csv"}, 1, "cannot write"},
+      {"timeline into /proc", {"timeline", "{SCENE}", "-o", "/proc/rollspin.csv"}, 2, "cannot write"},
       // ---- render --------------------------------------------------------
       {"zero width", {"render", "{SCENE}", "--still", "--width", "0", "-o", out + ".png"}, 2, "--width", "out.png"},
       {"width above the limit", {"render", "{SCENE}", "--still", "--width", "9000", "-o", out + ".png"}, 2, "8192",
@@ -113,7 +113,7 @@ std::vector<Case> cases() {
        "render.strobe", "out.png"},
       {"missing shader dir", {"render", "{SCENE}", "--still", "--shader-dir", "{DIR}/none", "-o", out + ".png"}, 2,
        "shader", "out.png"},
-      {"still into a missing directory", {"render", "{SCENE}", "--still", "-o", "{DIR}/missing/x.png"}, 1,
+      {"still into a missing directory", {"render", "{SCENE}", "--still", "-o", "{DIR}/missing/x.png"}, 2,
        "does not exist"},
       {"still to a full disk", {"render", "{SCENE}", "--still", "--width", "64", "--height", "64", "-o", "/dev/full"}, 1,
        "write failed"},
@@ -150,7 +150,7 @@ std::vector<Case> cases() {
        {"render", "{SCENE}", "--set", "render.format=mp4", "--set", "animation.duration=0.2", "--width", "128",
         "--height", "72", "-o", "/dev/full"},
        1, "No space left"},
-      {"video into a missing directory", {"render", "{SCENE}", "-o", "{DIR}/missing/v.mp4"}, 1, "missing"},
+      {"video into a missing directory", {"render", "{SCENE}", "-o", "{DIR}/missing/v.mp4"}, 2, "missing"},
       // ---- compare -------------------------------------------------------
       {"compare missing file", {"compare", "{DIR}/a.png", "{DIR}/b.png"}, 2, "cannot read the image"},
       {"compare corrupt file", {"compare", "{DIR}/bad.png", "{DIR}/bad.png"}, 2, "not a readable PNG", nullptr,

@@ -1,6 +1,9 @@
 // media/: PNG round trips, row order, comparison metrics and the heat map.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include <fstream>
 
 #include "core/error.hpp"
@@ -91,6 +94,82 @@ TEST(ImageCompare, ReportsPerChannelMaxMeanAndCount) {
   // A differing pixel is brighter than an equal one.
   EXPECT_GT(int(heat.pixel(3, 4)[0]) + heat.pixel(3, 4)[1] + heat.pixel(3, 4)[2],
             int(heat.pixel(0, 0)[0]) + heat.pixel(0, 0)[1] + heat.pixel(0, 0)[2]);
+}
+
+// The heat map of two equal images is A itself at a quarter of its luma
+// (it was horizontal stripes of column 0's grey); a difference is coloured.
+TEST(ImageCompare, HeatMapIsAFaintCopyOfAUnderTheDifferences) {
+  Image a(6, 5);
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      std::uint8_t* p = a.pixel(x, y);
+      p[0] = static_cast<std::uint8_t>(40 * x);
+      p[1] = static_cast<std::uint8_t>(50 * y);
+      p[2] = static_cast<std::uint8_t>(200 - 30 * x);
+      p[3] = 255;
+    }
+  const Image same = differenceHeatMap(a.view(), a.view());
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      const std::uint8_t* p = a.pixel(x, y);
+      const int grey = static_cast<int>(std::lround((0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2]) / 4.0));
+      for (int c = 0; c < 3; ++c) ASSERT_EQ(same.pixel(x, y)[c], grey) << x << "," << y;
+    }
+  Image b = a;
+  b.pixel(2, 3)[0] = static_cast<std::uint8_t>(a.pixel(2, 3)[0] + 1);
+  const Image one = differenceHeatMap(a.view(), b.view());
+  EXPECT_GT(one.pixel(2, 3)[2], 200) << "a one-level difference is clearly blue";
+  EXPECT_EQ(one.pixel(1, 3)[0], same.pixel(1, 3)[0]);
+  // Different sizes: the union, magenta where only one image has pixels.
+  const Image wide(8, 4);
+  const Image both = differenceHeatMap(a.view(), wide.view());
+  EXPECT_EQ(both.width, 8);
+  EXPECT_EQ(both.height, 5);
+  EXPECT_EQ(both.pixel(7, 0)[0], 255);
+  EXPECT_EQ(both.pixel(7, 0)[1], 0);
+  EXPECT_EQ(both.pixel(0, 4)[2], 255);
+}
+
+TEST(ImageCompare, CountsPixelsAboveALevel) {
+  Image a = gradient(10, 10), b = a;
+  b.pixel(0, 0)[0] = static_cast<std::uint8_t>(a.pixel(0, 0)[0] ^ 3);   // 1..3 levels
+  b.pixel(5, 5)[1] = static_cast<std::uint8_t>(a.pixel(5, 5)[1] + 10);
+  const ImageDifference d = compareImages(a.view(), b.view());
+  EXPECT_EQ(d.pixelsAbove(0), 2);
+  EXPECT_EQ(d.pixelsAbove(3), 1);
+  EXPECT_EQ(d.pixelsAbove(10), 0);
+}
+
+// SSIM: 1 for equal images, symmetric, near 1 for faint noise, far lower for
+// a moved shape; checked against the closed form for constant images.
+TEST(ImageCompare, StructuralSimilarity) {
+  Image a(40, 30);
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 40; ++x) {
+      const bool square = x >= 10 && x < 20 && y >= 10 && y < 20;
+      for (int c = 0; c < 3; ++c) a.pixel(x, y)[c] = square ? 220 : 30;
+      a.pixel(x, y)[3] = 255;
+    }
+  EXPECT_NEAR(structuralSimilarity(a.view(), a.view()), 1.0, 1e-12);
+  Image noisy = a;
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 40; ++x)
+      for (int c = 0; c < 3; ++c) noisy.pixel(x, y)[c] = static_cast<std::uint8_t>(a.pixel(x, y)[c] + ((x * 7 + y * 3) % 3));
+  Image moved(40, 30);
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 40; ++x) std::copy_n(a.pixel((x + 8) % 40, y), 4, moved.pixel(x, y));
+  const double faint = structuralSimilarity(a.view(), noisy.view());
+  const double shifted = structuralSimilarity(a.view(), moved.view());
+  EXPECT_GT(faint, 0.95);
+  EXPECT_LT(faint, 1.0);
+  EXPECT_LT(shifted, 0.8);
+  EXPECT_NEAR(structuralSimilarity(moved.view(), a.view()), shifted, 1e-12);
+  // Constant images of luma μa, μb: SSIM = (2μaμb + C1)/(μa² + μb² + C1).
+  Image dark(16, 16), light(16, 16);
+  for (auto& v : dark.rgba) v = 50;
+  for (auto& v : light.rgba) v = 100;
+  const double c1 = 6.5025;
+  EXPECT_NEAR(structuralSimilarity(dark.view(), light.view()), (2 * 50.0 * 100 + c1) / (2500.0 + 10000 + c1), 1e-9);
 }
 
 }  // namespace

@@ -137,5 +137,66 @@ TEST(CompareCli, ExitCodesFollowTheTolerance) {
   EXPECT_EQ(test::runRollspin({"compare", pa, (dir / "missing.png").string()}).exitCode, 2);
 }
 
+// What a CI needs: exit 1 only for "differ", tolerances on the number of
+// differing pixels and on SSIM, JSON, and alternate references.
+TEST(CompareCli, ToleratesPixelsSsimAlternatesAndSpeaksJson) {
+  const fs::path dir = test::freshTempDir("cli_compare_ci");
+  media::Image a(20, 10);
+  for (int y = 0; y < 10; ++y)
+    for (int x = 0; x < 20; ++x) {
+      for (int c = 0; c < 3; ++c) a.pixel(x, y)[c] = static_cast<std::uint8_t>(10 * x + 5 * y);
+      a.pixel(x, y)[3] = 255;
+    }
+  media::Image b = a, far = a;
+  for (int x = 0; x < 3; ++x) b.pixel(x, 2)[0] = static_cast<std::uint8_t>(a.pixel(x, 2)[0] + 2);  // 3 px, 2 levels
+  for (auto& v : far.rgba) v = static_cast<std::uint8_t>(255 - v);
+  media::Image small(10, 10);
+  for (const auto& [name, img] : {std::pair{"a.png", &a}, {"b.png", &b}, {"far.png", &far}, {"small.png", &small}})
+    media::writePng(dir / name, img->view(), media::PngChannels::Rgba);
+  auto p = [&](const char* name) { return (dir / name).string(); };
+  auto run = [&](std::vector<std::string> args) {
+    args.insert(args.begin(), "compare");
+    return test::runRollspin(args);
+  };
+  EXPECT_EQ(run({p("a.png"), p("b.png")}).exitCode, 1);
+  EXPECT_EQ(run({p("a.png"), p("b.png"), "--max-pixels", "3"}).exitCode, 0);
+  EXPECT_EQ(run({p("a.png"), p("b.png"), "--max-pixels", "2"}).exitCode, 1);
+  EXPECT_EQ(run({p("a.png"), p("b.png"), "--max-pixels", "1.5%"}).exitCode, 0);  // 3 of 200
+  EXPECT_EQ(run({p("a.png"), p("b.png"), "--max-pixels", "1%"}).exitCode, 1);
+  EXPECT_EQ(run({p("a.png"), p("b.png"), "--max-delta", "2"}).exitCode, 0);
+  EXPECT_EQ(run({p("a.png"), p("b.png"), "--max-delta", "255", "--min-ssim", "0.99"}).exitCode, 0);
+  EXPECT_EQ(run({p("a.png"), p("far.png"), "--max-delta", "255", "--min-ssim", "0.99"}).exitCode, 1);
+  for (const char* bad : {"-3", "abc", "101%", "2.5"})
+    EXPECT_EQ(run({p("a.png"), p("b.png"), "--max-pixels", bad}).exitCode, 2) << bad;
+  EXPECT_EQ(run({p("a.png"), p("b.png"), "--min-ssim", "2"}).exitCode, 2);
+
+  // Alternate references: passes when any one matches; the diff is against that one.
+  const auto alt = run({p("a.png"), p("far.png"), p("small.png"), p("a.png"), "--diff", p("d.png")});
+  EXPECT_EQ(alt.exitCode, 0) << alt.out << alt.err;
+  EXPECT_NE(alt.out.find("matches " + p("a.png")), std::string::npos) << alt.out;
+  const media::Image d = media::loadImage(dir / "d.png", {});
+  EXPECT_EQ(d.width, 20) << "the diff of the match, not of the 10x10 reference";
+  EXPECT_EQ(run({p("a.png"), p("far.png"), p("b.png")}).exitCode, 1);
+
+  // Size mismatch: said on stderr with the prefix, a diff still written.
+  const auto sized = run({p("a.png"), p("small.png"), "--diff", p("sized.png")});
+  EXPECT_EQ(sized.exitCode, 1);
+  EXPECT_NE(sized.err.find("rollspin: size mismatch: " + p("a.png") + " is 20x10, " + p("small.png") + " is 10x10"),
+            std::string::npos) << sized.err;
+  EXPECT_EQ(media::loadImage(dir / "sized.png", {}).width, 20);
+
+  // An unwritable --diff is 2, never the "differ" code; nothing is compared.
+  const auto unwritable = run({p("a.png"), p("b.png"), "--diff", (dir / "no" / "d.png").string()});
+  EXPECT_EQ(unwritable.exitCode, 2) << unwritable.err;
+  EXPECT_EQ(unwritable.out, "");
+
+  const auto json = run({p("a.png"), p("b.png"), p("a.png"), "--json", "--max-pixels", "1"});
+  EXPECT_EQ(json.exitCode, 0);
+  for (const std::string& field :
+       {std::string("\"pass\": true"), "\"matched\": \"" + p("a.png") + "\"", std::string("\"pixels_over_max_delta\": 3"),
+        std::string("\"max_pixels\": \"1\""), std::string("\"ssim\": 1.000000000"), std::string("\"max_delta\": [2, 0, 0, 0]")})
+    EXPECT_NE(json.out.find(field), std::string::npos) << field << " in\n" << json.out;
+}
+
 }  // namespace
 }  // namespace rollspin

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "geometry/analytic_paths.hpp"
 #include "report/report.hpp"
@@ -63,4 +64,29 @@ TEST(ReportFiles, PaperReportVerdicts) {
   EXPECT_EQ(verdict("adiabatic-outside"), "agree (asymptotically)");
   for (const char* c : {"sphere-inside", "sphere-inside-r=3R", "adiabatic-inside", "penny"})
     EXPECT_EQ(verdict(c), "disagree") << c;
+}
+
+// On the user's own scene the report says how to use its finding — the exact
+// --set options, which `solve` accepts as printed — and leaves out the
+// README's lollipop magnus4-vs-rk45 section.
+TEST(ReportFiles, ErrorsReportOnAUserSceneGivesTheSettingsToUse) {
+  const std::filesystem::path dir = freshDir("report_user_scene");
+  const std::string scene = (test::sourceDir() / "scenes" / "cornu.toml").string();
+  const auto r = test::runRollspin({"report", "errors", scene, "-o", dir.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string md = test::readFile(dir / "errors.md");
+  EXPECT_EQ(md.find("lollipop"), std::string::npos) << md;
+  EXPECT_EQ(r.out.find("lollipop"), std::string::npos) << r.out;
+  EXPECT_EQ(r.err.find("lollipop"), std::string::npos) << r.err;
+  EXPECT_NE(md.find("| `--set solver.method="), std::string::npos) << md;
+  const auto at = r.out.find("with --set solver.method=");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const std::string line = r.out.substr(at + 5, r.out.find('\n', at) - at - 5);
+  EXPECT_TRUE(line.find("--set solver.steps=") != std::string::npos ||
+              line.find("--set solver.tolerance=") != std::string::npos) << line;
+  std::vector<std::string> args{"solve", scene};
+  std::istringstream words(line);
+  for (std::string w; words >> w;) args.push_back(w);
+  const auto solved = test::runRollspin(args);
+  EXPECT_EQ(solved.exitCode, 0) << line << "\n" << solved.err;
 }

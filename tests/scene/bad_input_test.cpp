@@ -105,10 +105,11 @@ TEST(BadInput, MissingSceneFileIsBadInput) {
   EXPECT_NE(r.err.find("/nonexistent/scene.toml"), std::string::npos);
 }
 
-TEST(BadInput, UnwritableOutputIsARuntimeFailureAndLeavesNothing) {
+// Refused before the solve: a path that cannot work is the caller's mistake.
+TEST(BadInput, OutputInAMissingFolderIsBadInputAndLeavesNothing) {
   const auto r = runRollspin({"timeline", (rollspin::test::sourceDir() / "scenes/lollipop.toml").string(), "-o",
                               "/nonexistent-dir/out.csv"});
-  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
 }
 

@@ -69,3 +69,21 @@ TEST(Su2, SpinorAngleDistinguishesTheTwoSheets) {
     EXPECT_LT(got, 4 * kPi);
   }
 }
+
+// At a net angle of exactly π, qw is 0 up to round-off and its sign differs
+// between methods (exact: +3e-16, magnus4: −1e-14 on sphere-inside with
+// R = 0.75): both must report ψ = π about the same axis, not π and 3π.
+TEST(Su2, HalfTurnSheetDoesNotDependOnTheSignOfRoundOff) {
+  const Vec3 n = Vec3(0.3711537444790452, 0.0, -0.92857142857142849).normalized();
+  for (const double w : {3.1e-16, -1.07e-14, -2.7e-15, 9e-13, -9e-13}) {
+    const double s = std::sqrt(1.0 - w * w);
+    const Su2 q{w, s * n.x(), s * n.y(), s * n.z()};
+    EXPECT_FALSE(onNegativeSheet(q)) << w;
+    EXPECT_NEAR(spinorAngle(q), kPi, 1e-11) << w;
+    EXPECT_LT((rotationAngleAxis(q).axis - n).norm(), 1e-12) << w;
+  }
+  // Outside the band the sign decides, as before.
+  const Su2 negative{-1e-6, n.x(), n.y(), n.z()};
+  EXPECT_TRUE(onNegativeSheet(negative));
+  EXPECT_NEAR(spinorAngle(negative), 3 * kPi, 1e-5);
+}

@@ -22,6 +22,30 @@ struct CliResult {
 CliResult runRollspin(const std::vector<std::string>& args, const std::filesystem::path& cwd = {},
                       std::uint64_t addressSpaceLimit = 0, const std::vector<std::string>& environment = {});
 
+// A rollspin started without waiting for it (stderr to `errFile`), for tests
+// that signal it mid-run. wait() reaps it: the exit code, or 128 + signal
+// with `signalled` set when a signal ended it. The destructor kills and
+// reaps a child the test left running.
+class SpawnedRollspin {
+ public:
+  SpawnedRollspin(const std::vector<std::string>& args, const std::filesystem::path& errFile);
+  ~SpawnedRollspin();
+  SpawnedRollspin(const SpawnedRollspin&) = delete;
+  SpawnedRollspin& operator=(const SpawnedRollspin&) = delete;
+  [[nodiscard]] int pid() const { return pid_; }
+  // Polls every 5 ms until `ready()` or `seconds` pass; false on time-out or
+  // when the child ended first.
+  template <typename Ready>
+  bool waitUntil(Ready ready, double seconds = 60.0);
+  int wait(bool* signalled = nullptr);
+
+ private:
+  bool running();
+  int pid_ = -1;
+  bool reaped_ = false;
+  int status_ = 0;
+};
+
 // A fresh empty directory under the build tree for one test.
 std::filesystem::path freshTempDir(const std::string& name);
 
@@ -41,5 +65,17 @@ struct BadScene {
 };
 void expectBadScene(const BadScene& c);
 std::filesystem::path binaryPath();
+
+void sleepMilliseconds(int ms);
+
+template <typename Ready>
+bool SpawnedRollspin::waitUntil(Ready ready, double seconds) {
+  for (double waited = 0.0; waited < seconds; waited += 0.005) {
+    if (ready()) return true;
+    if (!running()) return false;
+    sleepMilliseconds(5);
+  }
+  return false;
+}
 
 }  // namespace rollspin::test

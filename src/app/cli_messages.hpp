@@ -1,0 +1,25 @@
+// The option parser's own errors in rollspin's voice: "rollspin: error: "
+// first, CLI11's wording tidied ("Value abc not in range 0.000000 to …"
+// becomes "--max-delta: expected a number in [0, 255], got abc"), and the
+// nearest option or command suggested for a typo (--sett → --set).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+namespace rollspin::app {
+
+// Edit distance (insertions, deletions, substitutions, adjacent swaps).
+[[nodiscard]] std::size_t editDistance(const std::string& a, const std::string& b);
+
+// The candidate nearest to `typed` when it is close enough to be a typo
+// (at most a third of its length, and at least 1, edits away), else "".
+[[nodiscard]] std::string nearestName(const std::string& typed, const std::vector<std::string>& candidates);
+
+// Everything to print on stderr for a parse error of `argv` (lines ending in
+// '\n'), naming the command whose options were searched.
+[[nodiscard]] std::string describeParseError(const CLI::App& cli, const CLI::ParseError& error, int argc,
+                                             const char* const* argv);
+
+}  // namespace rollspin::app

@@ -1,0 +1,37 @@
+// Temporary output files: the one naming pattern (".NAME.PID.tmp" beside the
+// final NAME), a registry of the ones this process has open so a SIGINT or
+// SIGTERM can remove them before the process ends, and removal of stale ones
+// left by a process that died hard (kill -9, a second Ctrl-C).
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace rollspin {
+
+// "<dir>/.<name>.<pid>.tmp" for the final path "<dir>/<name>".
+[[nodiscard]] std::filesystem::path temporaryPathFor(const std::filesystem::path& finalPath);
+
+// Removes "<dir>/.<name>.<PID>.tmp" (files or folders) whose PID is not a
+// running process; only names in exactly this pattern are touched. Returns
+// how many were removed; each one is named on stderr.
+int removeStaleTemporaries(const std::filesystem::path& finalPath);
+
+// While registered, a SIGINT/SIGTERM that ends the process (see
+// installInterruptCleanup) removes `temporary` first. Registration is
+// lock-free and safe from any thread; paths longer than PATH_MAX are not
+// registered (the next run's stale clean-up still removes them).
+void registerTemporary(const std::filesystem::path& temporary, const std::filesystem::path& finalPath,
+                       bool isFolder = false);
+void unregisterTemporary(const std::filesystem::path& temporary);
+
+// Installs the process-wide SIGINT/SIGTERM handler used by every writing
+// command: remove the registered temporaries (a folder is emptied of files
+// only: its remains are stale next time), say on stderr what was removed and
+// that finished outputs are complete, and exit with 128 + signal. Commands
+// that can stop cleanly (an animation) install their own handler on top and
+// call interruptCleanupAndExit on a second signal.
+void installInterruptCleanup();
+[[noreturn]] void interruptCleanupAndExit(int signal);
+
+}  // namespace rollspin

@@ -55,13 +55,21 @@ struct Material {
   // Keep only the part with dot(cutPlane, (p, 1)) >= 0 (world p): a
   // cut-away, e.g. the near half of a sphere the ball rolls inside.
   glm::vec4 cutPlane{0.0f, 0.0f, 0.0f, 1.0f};
+  bool operator==(const Material&) const = default;
 };
 
+// `dynamic` (on every item kind): the item may change from frame to frame
+// (the ball, its trails, the live numbers). The renderer keeps everything
+// else of a view in a retained layer while it stays the same, and redraws
+// only the screen rectangles the dynamic items touch (see renderer.hpp).
+// Meshes compare by pointer: a MeshData is immutable once shared.
 struct MeshItem {
   std::shared_ptr<const MeshData> mesh;
   glm::mat4 worldFromModel{1.0f};
   Material material;
   int view = 0;
+  bool dynamic = false;
+  bool operator==(const MeshItem&) const = default;
 };
 
 // A solid arrow (cylinder + cone) from origin to tip.
@@ -71,6 +79,8 @@ struct ArrowItem {
   float shaftRadius = 0.02f;
   glm::vec3 color{0.8f, 0.1f, 0.1f};
   int view = 0;
+  bool dynamic = false;
+  bool operator==(const ArrowItem&) const = default;
 };
 
 // A polyline of constant width in pixels (drawn as screen-space quads).
@@ -80,6 +90,8 @@ struct PolylineItem {
   float widthPx = 2.0f;
   bool depthTested = true;
   int view = 0;
+  bool dynamic = false;
+  bool operator==(const PolylineItem&) const = default;
 };
 
 enum class Align { Left, Center, Right };
@@ -97,12 +109,15 @@ struct LabelItem {
   Align align = Align::Left;
   bool bold = false;
   int view = -1;
+  bool dynamic = false;
+  bool operator==(const LabelItem&) const = default;
 };
 
 struct Camera {
   glm::mat4 viewFromWorld{1.0f};
   glm::mat4 clipFromView{1.0f};
   glm::vec3 position{0.0f, 0.0f, 1.0f};
+  bool operator==(const Camera&) const = default;
 };
 
 // One directional key light with an optional shadow map that covers the
@@ -117,6 +132,7 @@ struct Light {
   glm::vec3 shadowCenter{0.0f};
   float shadowRadius = 10.0f;
   float shadowSoftness = 0.1f;  // PCF radius in world units: a soft key light
+  bool operator==(const Light&) const = default;
 };
 
 struct View {
@@ -127,6 +143,7 @@ struct View {
   glm::vec3 backgroundTop{0.30f, 0.38f, 0.50f};     // linear RGB: a soft slate-blue sky
   glm::vec3 backgroundBottom{0.82f, 0.84f, 0.87f};  // that lightens towards the horizon
   bool frame = false;  // thin border (an inset)
+  bool operator==(const View&) const = default;
 };
 
 struct DrawList {

@@ -103,6 +103,7 @@ struct GpuMesh {
   GLuint vao = 0, vbo = 0, ebo = 0;
   GLsizei indexCount = 0;
   glm::vec4 bound{0.0f};  // a bounding sphere in model coordinates: centre, radius
+  glm::vec3 lo{0.0f}, hi{0.0f};  // the bounding box in model coordinates
 };
 
 GpuMesh upload(const MeshData& m) {
@@ -131,6 +132,8 @@ GpuMesh upload(const MeshData& m) {
       lo = glm::min(lo, v.position);
       hi = glm::max(hi, v.position);
     }
+    g.lo = lo;
+    g.hi = hi;
     const glm::vec3 centre = 0.5f * (lo + hi);
     float radius = 0.0f;
     for (const Vertex& v : m.vertices) radius = std::max(radius, glm::length(v.position - centre));
@@ -959,15 +962,14 @@ struct Renderer::Impl {
                      whole);
   }
 
-  // A mesh's screen bounds: the corners of its bounding sphere's cube.
+  // A mesh's screen bounds: the corners of its model-space bounding box.
   PixelRect meshBounds(const View& v, const glm::mat4& clipFromWorld, const Drawable& d) {
-    const glm::vec4 b = gpuMesh(d.mesh).bound;
-    const glm::mat3 linear(d.worldFromModel);
-    const float r = b.w * std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
-    const glm::vec3 c(d.worldFromModel * glm::vec4(glm::vec3(b), 1.0f));
+    const GpuMesh& g = gpuMesh(d.mesh);
     glm::vec3 corners[8];
-    for (int k = 0; k < 8; ++k)
-      corners[k] = c + r * glm::vec3(k & 1 ? 1.0f : -1.0f, k & 2 ? 1.0f : -1.0f, k & 4 ? 1.0f : -1.0f);
+    for (int k = 0; k < 8; ++k) {
+      const glm::vec3 model(k & 1 ? g.hi.x : g.lo.x, k & 2 ? g.hi.y : g.lo.y, k & 4 ? g.hi.z : g.lo.z);
+      corners[k] = glm::vec3(d.worldFromModel * glm::vec4(model, 1.0f));
+    }
     return screenBounds(v, clipFromWorld, corners, 8, 2.0f);
   }
 
@@ -1010,14 +1012,19 @@ struct Renderer::Impl {
     return screenBounds(v, clipFromWorld, inside.data(), inside.size(), 3.0f);
   }
 
-  // The rectangles a frame must redraw over the retained layer: every
-  // dynamic item's screen bounds (lines in runs of a few points, so that a
-  // long trail adds thin boxes along itself, not its whole bounding box),
-  // and each receiver's shadow box; merged until none overlap.
+  // The pixels a frame must redraw over the retained layer, as disjoint
+  // rectangles of whole tiles: the tiles that any dynamic item (a line
+  // segment by segment, so that a long trail dirties a thin band along
+  // itself) or a receiver's shadow box can touch.
+  static constexpr int kTile = 32;
   std::vector<PixelRect> dirtyRects(const DrawList& list, const std::vector<ViewItems>& perView) {
-    std::vector<PixelRect> rects;
+    const int cols = (list.width + kTile - 1) / kTile, rows = (list.height + kTile - 1) / kTile;
+    std::vector<std::uint8_t> dirty(static_cast<std::size_t>(cols) * rows, 0);
     auto add = [&](const PixelRect& r) {
-      if (!r.empty()) rects.push_back(r);
+      if (r.empty()) return;
+      for (int ty = std::max(0, r.y0 / kTile); ty <= std::min(rows - 1, (r.y1 - 1) / kTile); ++ty)
+        for (int tx = std::max(0, r.x0 / kTile); tx <= std::min(cols - 1, (r.x1 - 1) / kTile); ++tx)
+          dirty[static_cast<std::size_t>(ty) * cols + tx] = 1;
     };
     for (std::size_t i = 0; i < list.views.size(); ++i) {
       const View& v = list.views[i];
@@ -1029,20 +1036,17 @@ struct Renderer::Impl {
           add(reshadeBounds(v, clipFromWorld, perView[i].shadow.lightClipFromWorld, d));
       }
       for (const PolylineItem& p : list.polylines) {
-        if (p.view != index || !p.dynamic || p.points.size() < 2) continue;
+        if (p.view != index || !p.dynamic) continue;
         // The geometry shader widens a segment by half a width to the side
-        // and at both ends: at most √2 · width / 2 from its end points.
+        // and at both ends: at most √2 · width / 2 from its end points. A
+        // segment with an end behind the eye is not drawn (line.geom).
         const float margin = 0.7072f * p.widthPx + 2.0f;
-        constexpr std::size_t kRun = 16;
-        for (std::size_t start = 0; start + 1 < p.points.size(); start += kRun) {
-          const std::size_t count = std::min(kRun + 1, p.points.size() - start);
-          std::vector<glm::vec3> run;
-          for (std::size_t k = 0; k < count; ++k) {
-            const glm::vec3& q = p.points[start + k];
-            // A segment with an end behind the eye is not drawn (line.geom).
-            if ((clipFromWorld * glm::vec4(q, 1.0f)).w > 1e-6f) run.push_back(q);
-          }
-          add(screenBounds(v, clipFromWorld, run.data(), run.size(), margin));
+        for (std::size_t k = 0; k + 1 < p.points.size(); ++k) {
+          const glm::vec3 ends[2] = {p.points[k], p.points[k + 1]};
+          if ((clipFromWorld * glm::vec4(ends[0], 1.0f)).w <= 1e-6f ||
+              (clipFromWorld * glm::vec4(ends[1], 1.0f)).w <= 1e-6f)
+            continue;
+          add(screenBounds(v, clipFromWorld, ends, 2, margin));
         }
       }
       for (const LabelItem& l : list.labels)
@@ -1050,21 +1054,33 @@ struct Renderer::Impl {
     }
     for (const LabelItem& l : list.labels)
       if (l.view < 0 && l.dynamic) add(labelBounds(l, list, nullptr, glm::mat4(1.0f)));
-    // Merge overlapping rectangles (and, past a few dozen, everything).
-    for (bool merged = true; merged;) {
-      merged = false;
-      for (std::size_t a = 0; a < rects.size() && !merged; ++a)
-        for (std::size_t b = a + 1; b < rects.size() && !merged; ++b)
-          if (overlaps(rects[a], rects[b])) {
-            rects[a] = unite(rects[a], rects[b]);
-            rects.erase(rects.begin() + static_cast<std::ptrdiff_t>(b));
-            merged = true;
-          }
-    }
-    if (rects.size() > 48) {
-      PixelRect all = rects[0];
-      for (const PixelRect& r : rects) all = unite(all, r);
-      rects = {all};
+    // Runs of dirty tiles per tile row; a run continues a rectangle from
+    // the row above when it spans the same columns.
+    std::vector<PixelRect> rects;
+    std::vector<std::size_t> open;  // rectangles that end at the current row
+    for (int ty = 0; ty < rows; ++ty) {
+      std::vector<std::size_t> nowOpen;
+      for (int tx = 0; tx < cols;) {
+        if (!dirty[static_cast<std::size_t>(ty) * cols + tx]) {
+          ++tx;
+          continue;
+        }
+        int end = tx;
+        while (end < cols && dirty[static_cast<std::size_t>(ty) * cols + end]) ++end;
+        const int x0 = tx * kTile, x1 = std::min(list.width, end * kTile);
+        const int y0 = ty * kTile, y1 = std::min(list.height, (ty + 1) * kTile);
+        auto same = std::find_if(open.begin(), open.end(),
+                                 [&](std::size_t r) { return rects[r].x0 == x0 && rects[r].x1 == x1; });
+        if (same != open.end()) {
+          rects[*same].y1 = y1;
+          nowOpen.push_back(*same);
+        } else {
+          rects.push_back({x0, y0, x1, y1});
+          nowOpen.push_back(rects.size() - 1);
+        }
+        tx = end;
+      }
+      open = std::move(nowOpen);
     }
     return rects;
   }
@@ -1180,26 +1196,38 @@ struct Renderer::Impl {
     if (rects.empty()) return;
     // The rectangles are disjoint: all copies first, then all draws, so the
     // binned scene is not flushed between them.
-    glEnable(GL_SCISSOR_TEST);
+    // Unscissored: a blit copies every sample of the rectangle's pixels.
+    glDisable(GL_SCISSOR_TEST);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, snapshotFbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, sceneFbo);
     for (const PixelRect& r : rects) {
       const int y0 = list.height - r.y1, y1 = list.height - r.y0;
-      glScissor(r.x0, y0, r.x1 - r.x0, y1 - y0);
       glBlitFramebuffer(r.x0, y0, r.x1, y1, r.x0, y0, r.x1, y1, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT,
                         GL_NEAREST);
     }
-    for (const PixelRect& r : rects) {
-      for (std::size_t i = 0; i < list.views.size(); ++i) {
-        const View& v = list.views[i];
-        const PixelRect clip = intersect(r, PixelRect{v.x, v.y, v.x + v.width, v.y + v.height});
-        if (clip.empty()) continue;
-        beginView(list, v, perView[i], &clip);
-        drawOpaque(perView[i], Items::DynamicOnly);
-        drawRest(list, static_cast<int>(i), perView[i], Items::All);
-      }
-      drawImageLabels(list, Items::All, r);
+    // Then each view drawn once, scissored to the bounds of its dirty
+    // rectangles: the pixels in between are drawn over stale samples, but
+    // they are neither composited nor read back. The scissor reaches a
+    // pixel beyond them (inside the view): llvmpipe tests the scissor per
+    // sample, and a multisampled pixel on the scissor's edge seems to lose
+    // samples that a whole frame draws (seen: glass drawn scissor by
+    // scissor differed from a whole frame along the row where two met).
+    PixelRect allBounds{list.width, list.height, 0, 0};
+    for (std::size_t i = 0; i < list.views.size(); ++i) {
+      const View& v = list.views[i];
+      const PixelRect area{v.x, v.y, v.x + v.width, v.y + v.height};
+      PixelRect bounds{list.width, list.height, 0, 0};
+      for (const PixelRect& r : rects)
+        if (const PixelRect c = intersect(r, area); !c.empty()) bounds = unite(bounds, c);
+      if (bounds.empty()) continue;
+      bounds = intersect(PixelRect{bounds.x0 - 1, bounds.y0 - 1, bounds.x1 + 1, bounds.y1 + 1}, area);
+      allBounds = unite(allBounds, bounds);
+      beginView(list, v, perView[i], &bounds);
+      drawOpaque(perView[i], Items::DynamicOnly);
+      drawRest(list, static_cast<int>(i), perView[i], Items::All);
     }
+    for (const PixelRect& r : rects) allBounds = unite(allBounds, r);
+    drawImageLabels(list, Items::All, allBounds);
     composite(list, &rects);
     glFinish();
     for (const PixelRect& r : rects) readBack(list, image, r);

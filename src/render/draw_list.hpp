@@ -146,6 +146,9 @@ struct View {
   bool operator==(const View&) const = default;
 };
 
+// A new item kind must also be known to the renderer's retained layers
+// (renderer.cpp: StaticKey, dirtyRects, and drawn in drawRest by `takes`),
+// or a change to it would not reach the frames drawn over a layer.
 struct DrawList {
   int width = 1280;
   int height = 720;

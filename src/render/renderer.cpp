@@ -582,6 +582,15 @@ struct Renderer::Impl {
     glDrawElements(GL_TRIANGLES, g.indexCount, GL_UNSIGNED_INT, nullptr);
   }
 
+  // Over a retained layer only the dirty rectangles are read back (see
+  // drawOverLayer), so a polyline draws only the runs of segments whose
+  // screen bounds reach one: the geometry shader pays per segment, and the
+  // static lines (the whole path, the Bloch grid) are long. Segments are
+  // independent quads, drawn in the same order either way: the bytes of the
+  // dirty pixels do not change.
+  const std::vector<PixelRect>* lineClips = nullptr;
+  static constexpr std::size_t kLineRun = 32;
+
   void drawPolyline(const PolylineItem& p, const glm::mat4& clipFromWorld, const View& v) {
     if (p.points.size() < 2) return;
     line.use();
@@ -594,7 +603,30 @@ struct Renderer::Impl {
     glBindBuffer(GL_ARRAY_BUFFER, streamVbo);
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(p.points.size() * sizeof(glm::vec3)), p.points.data(),
                  GL_STREAM_DRAW);
-    glDrawArrays(GL_LINE_STRIP, 0, static_cast<GLsizei>(p.points.size()));
+    if (lineClips == nullptr) {
+      glDrawArrays(GL_LINE_STRIP, 0, static_cast<GLsizei>(p.points.size()));
+      return;
+    }
+    // The geometry shader widens a segment by at most √2 · width / 2.
+    const float margin = 0.7072f * p.widthPx + 2.0f;
+    std::size_t runStart = 0, runEnd = 0;  // points [runStart, runEnd] pending as one strip
+    auto flush = [&] {
+      if (runEnd > runStart)
+        glDrawArrays(GL_LINE_STRIP, static_cast<GLint>(runStart), static_cast<GLsizei>(runEnd - runStart + 1));
+    };
+    for (std::size_t first = 0; first + 1 < p.points.size(); first += kLineRun) {
+      const std::size_t last = std::min(first + kLineRun, p.points.size() - 1);
+      const PixelRect bounds = screenBounds(v, clipFromWorld, &p.points[first], last - first + 1, margin);
+      bool reaches = false;
+      for (const PixelRect& r : *lineClips) reaches = reaches || overlaps(r, bounds);
+      if (!reaches) continue;
+      if (runEnd != first) {
+        flush();
+        runStart = first;
+      }
+      runEnd = last;
+    }
+    flush();
   }
 
   // Pixel-space quads (x0, y0, x1, y1, s0, t0, s1, t1) with the text program.
@@ -1224,7 +1256,9 @@ struct Renderer::Impl {
       allBounds = unite(allBounds, bounds);
       beginView(list, v, perView[i], &bounds);
       drawOpaque(perView[i], Items::DynamicOnly);
+      lineClips = &rects;
       drawRest(list, static_cast<int>(i), perView[i], Items::All);
+      lineClips = nullptr;
     }
     for (const PixelRect& r : rects) allBounds = unite(allBounds, r);
     drawImageLabels(list, Items::All, allBounds);

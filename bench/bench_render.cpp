@@ -33,6 +33,7 @@ void BM_RenderFrame1080p(benchmark::State& state) {
   // ROLLSPIN_SHADER_DIR: time edited shaders without rebuilding (development).
   const char* shaderDir = std::getenv("ROLLSPIN_SHADER_DIR");
   render::Renderer renderer(*context, render::ShaderLibrary{shaderDir != nullptr ? shaderDir : ""});
+  renderer.setRetainLayers(false);  // a still's cost: the frame drawn whole
   (void)renderer.render(drawer.draw(frame));  // warm-up: shader JIT, uploads
   // CPU time of the whole process (llvmpipe's worker threads included): on a
   // busy shared machine wall time mostly measures the neighbours, this does
@@ -54,8 +55,50 @@ void BM_RenderFrame1080p(benchmark::State& state) {
   state.SetLabel("1920x1080, " + std::to_string(state.range(0)) + "x MSAA, shadow, side-by-side");
 }
 // Arg = MSAA samples; 4 is the target configuration, 1 shows what MSAA costs
-// (llvmpipe runs 2 samples as 4: same cost).
+// (llvmpipe runs 2 samples as 4: same cost). Layers off: every frame is
+// drawn whole, as a still is.
 BENCHMARK(BM_RenderFrame1080p)->Arg(4)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Frames of a clip: the ball at 24 arc lengths in turn (s from 0.3 L on, a
+// in steps of L/300, as a 10 s clip at 30 fps), side by side,
+// 4× MSAA. Arg 0: the fixed default camera, so every frame after the first
+// two is drawn over the retained layer; arg 1: render.follow = true, the
+// camera moves every frame and every frame is drawn whole.
+void BM_ClipFrames1080p(benchmark::State& state) {
+  using namespace rollspin;
+  std::vector<std::string> overrides{"render.width=1920", "render.height=1080", "render.layout=side-by-side"};
+  if (state.range(0) == 1) overrides.emplace_back("render.follow=true");
+  if (const char* extra = std::getenv("ROLLSPIN_BENCH_SET")) overrides.emplace_back(extra);
+  const scene::SceneSpec spec = scene::loadSceneFile(ROLLSPIN_SOURCE_DIR "/scenes/lollipop.toml", overrides);
+  const app::RollingModel model = app::buildModel(spec);
+  std::vector<app::FrameOrientations> frames;
+  for (int k = 0; k < 24; ++k)
+    frames.push_back(app::solveFrame(spec, model, (0.3 + double(k) / 300.0) * model.path->length()));
+  const app::SceneDrawer drawer(spec, model, nullptr);
+  const auto context = render::createOsMesaContext();
+  const char* shaderDir = std::getenv("ROLLSPIN_SHADER_DIR");
+  render::Renderer renderer(*context, render::ShaderLibrary{shaderDir != nullptr ? shaderDir : ""});
+  media::Image image;
+  for (int k = 0; k < 3; ++k) renderer.render(drawer.draw(frames[std::size_t(k)]), image);  // warm-up
+  auto processCpuSeconds = [] {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+  };
+  const render::RenderStats before = renderer.stats();
+  const double cpuStart = processCpuSeconds();
+  std::size_t k = 3;
+  for (auto _ : state) {
+    renderer.render(drawer.draw(frames[k++ % frames.size()]), image);
+    benchmark::DoNotOptimize(image.rgba.data());
+  }
+  const double n = double(std::max<benchmark::IterationCount>(1, state.iterations()));
+  state.counters["process_cpu_ms_per_frame"] = 1e3 * (processCpuSeconds() - cpuStart) / n;
+  state.counters["retained_share"] = double(renderer.stats().retainedFrames - before.retainedFrames) / n;
+  state.SetLabel(state.range(0) == 1 ? "1920x1080, 4x MSAA, camera follows the ball"
+                                     : "1920x1080, 4x MSAA, fixed camera");
+}
+BENCHMARK(BM_ClipFrames1080p)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The CPU-side half alone: (scene, orientations) → DrawList.
 void BM_DrawList1080p(benchmark::State& state) {

@@ -255,6 +255,14 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
                  "rollspin: pipeline: %.2f s in all; the renderer waited %.2f s for poses and %.2f s on a full "
                  "encoder queue; the encoder waited %.2f s for frames\n",
                  progress.elapsedSeconds(), poseWait, queue.producerWaitSeconds(), queue.consumerWaitSeconds());
+  if (StageLog::instance().echo()) {  // how many frames the retained layers spared
+    const render::RenderStats& st = renderer.stats();
+    std::fprintf(stderr,
+                 "rollspin: renderer: %lld frames drawn whole, %lld over a retained layer (%lld layers built, "
+                 "%.1f %% of their pixels redrawn)\n",
+                 st.wholeFrames, st.retainedFrames, st.layerBuilds,
+                 st.retainedPixels > 0 ? 100.0 * double(st.redrawnPixels) / double(st.retainedPixels) : 0.0);
+  }
 
   AnimationResult result;
   result.framesRequested = range.count();

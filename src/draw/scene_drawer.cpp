@@ -566,6 +566,7 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
   travelled.color = kTravelledColor;
   travelled.widthPx = std::max(2.5f, float(list.height) / 200.0f);
   full.view = travelled.view = view;
+  travelled.dynamic = true;  // grows with s: redrawn per frame over the retained layer
   for (std::size_t i = 0; i < pathS_.size(); ++i) {
     const Vec3 p = pathPoints_[i] + 0.004 * R * model_.path->normal(pathS_[i]);
     full.points.push_back(toGlm(p));
@@ -592,10 +593,12 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
     list.meshes.push_back({sphereMesh_,
                            glm::translate(glm::mat4(1.0f), toGlm(c)) * worldFromBody * glm::scale(glm::mat4(1.0f), glm::vec3(float(R))),
                            ballMaterial, view});
+    list.meshes.back().dynamic = true;
     const Vec3 marker = c + 0.97 * R * pose.q.rotate(markerBody_);
     list.meshes.push_back({dotMesh_,
                            glm::translate(glm::mat4(1.0f), toGlm(marker)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.13 * R))),
                            markerMaterial, view});
+    list.meshes.back().dynamic = true;
   };
   if (frame.strobe.empty()) {
     addBall(frame.current);
@@ -609,6 +612,7 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
     markerTrail.color = glm::vec4(kMarkerColor, 0.55f);
     markerTrail.widthPx = std::max(1.2f, float(list.height) / 500.0f);
     markerTrail.view = view;
+    markerTrail.dynamic = true;
     for (const auto& t : frame.trail)
       markerTrail.points.push_back(toGlm(model_.path->at(t.s).centre(R) + R * t.q.rotate(markerBody_)));
     list.polylines.push_back(markerTrail);
@@ -635,10 +639,12 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
     glass.shininess = 120.0f;
     glass.castsShadow = false;
     list.meshes.push_back({discMesh_, disc, glass, view});
+    list.meshes.back().dynamic = true;  // the plate moves with the ball
     render::PolylineItem rim;  // the glass edge, so the plate reads as a sheet
     rim.color = glm::vec4(0.85f, 0.95f, 1.0f, 0.9f);
     rim.widthPx = std::max(1.2f, float(list.height) / 450.0f);
     rim.view = view;
+    rim.dynamic = true;
     for (int k = 0; k <= 128; ++k) {
       const float phi = 2.0f * std::numbers::pi_v<float> * float(k) / 128.0f;
       rim.points.push_back(glm::vec3(disc * glm::vec4(std::cos(phi), std::sin(phi), 1.0f, 1.0f)));
@@ -653,10 +659,12 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
     dotModel[2] = glm::vec4(n * float(0.02 * R), 0.0f);
     dotModel[3] = glm::vec4(toGlm(plateCentre + thickness * f.normal), 1.0f);
     list.meshes.push_back({discMesh_, dotModel, dot, view});
+    list.meshes.back().dynamic = true;
     render::PolylineItem plateTrail;
     plateTrail.color = glm::vec4(dot.color, 0.7f);
     plateTrail.widthPx = std::max(1.2f, float(list.height) / 450.0f);
     plateTrail.view = view;
+    plateTrail.dynamic = true;
     for (std::size_t i = 0; i < pathS_.size(); ++i) {
       if (pathS_[i] > s) break;
       plateTrail.points.push_back(toGlm(platePoint(pathS_[i], thickness * 1.05)));
@@ -684,6 +692,7 @@ void SceneDrawer::addBallView(render::DrawList& list, const FrameOrientations& f
     for (std::size_t i = 0; i < lines.size() && frame.strobe.empty(); ++i) {
       render::LabelItem l;
       l.view = view;
+      l.dynamic = true;  // s and the angles
       l.text = lines[i];
       l.anchor = glm::vec3(margin, float(v.height) - margin - float(lines.size() - 1 - i) * text * 1.35f - 0.4f * text, 0.0f);
       l.sizePx = text;
@@ -773,6 +782,7 @@ void SceneDrawer::addFactLabels(render::DrawList& list, const FrameOrientations&
   for (std::size_t i = 0; i < lines.size(); ++i) {
     render::LabelItem l;
     l.view = view;
+    l.dynamic = true;  // live values
     l.text = lines[i];
     l.anchor = glm::vec3(margin, top + float(i) * size * 1.45f, 0.0f);
     l.sizePx = size;
@@ -850,6 +860,7 @@ void SceneDrawer::addTwinView(render::DrawList& list, const FrameOrientations& f
   fieldTrail.color = glm::vec4(kFieldColor, 0.7f);
   blochTrail.widthPx = fieldTrail.widthPx = std::max(1.5f, float(list.height) / 360.0f);
   blochTrail.view = fieldTrail.view = view;
+  blochTrail.dynamic = fieldTrail.dynamic = true;
   for (const auto& t : frame.trail) {
     blochTrail.points.push_back(toGlm(t.q.rotate(markerBody_)));
     const Vec3 b = fieldDirection(t.s);
@@ -869,9 +880,9 @@ void SceneDrawer::addTwinView(render::DrawList& list, const FrameOrientations& f
   }
 
   const Vec3 x = frame.current.q.rotate(markerBody_);
-  list.arrows.push_back({glm::vec3(0.0f), toGlm(x), arrowRadius, kMarkerColor, view});
+  list.arrows.push_back({glm::vec3(0.0f), toGlm(x), arrowRadius, kMarkerColor, view, true});
   const Vec3 b = fieldDirection(frame.current.s);
-  if (b.norm() > 0.5) list.arrows.push_back({glm::vec3(0.0f), toGlm(b), arrowRadius * 0.8f, kFieldColor, view});
+  if (b.norm() > 0.5) list.arrows.push_back({glm::vec3(0.0f), toGlm(b), arrowRadius * 0.8f, kFieldColor, view, true});
   for (const auto& pose : frame.strobe)
     list.arrows.push_back({glm::vec3(0.0f), toGlm(pose.q.rotate(markerBody_)), arrowRadius * 0.55f,
                            glm::mix(kMarkerColor, glm::vec3(1.0f), 0.35f), view});

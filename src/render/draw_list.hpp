@@ -55,8 +55,14 @@ struct Material {
   // Keep only the part with dot(cutPlane, (p, 1)) >= 0 (world p): a
   // cut-away, e.g. the near half of a sphere the ball rolls inside.
   glm::vec4 cutPlane{0.0f, 0.0f, 0.0f, 1.0f};
+  bool operator==(const Material&) const = default;
 };
 
+// `dynamic` (on every item kind): the item may change from frame to frame
+// (the ball, its trails, the live numbers). The renderer keeps everything
+// else of a view in a retained layer while it stays the same, and redraws
+// only the screen rectangles the dynamic items touch (see renderer.hpp).
+// Meshes compare by pointer: a MeshData is immutable once shared.
 struct MeshItem {
   std::shared_ptr<const MeshData> mesh;
   glm::mat4 worldFromModel{1.0f};
@@ -65,6 +71,8 @@ struct MeshItem {
   // A small opaque unit sphere (a mark) that a vector figure draws as a flat
   // disc of its projected radius instead of as an image; GL ignores it.
   bool figureDisc = false;
+  bool dynamic = false;
+  bool operator==(const MeshItem&) const = default;
 };
 
 // A solid arrow (cylinder + cone) from origin to tip.
@@ -74,6 +82,8 @@ struct ArrowItem {
   float shaftRadius = 0.02f;
   glm::vec3 color{0.8f, 0.1f, 0.1f};
   int view = 0;
+  bool dynamic = false;
+  bool operator==(const ArrowItem&) const = default;
 };
 
 // A polyline of constant width in pixels (drawn as screen-space quads).
@@ -83,6 +93,8 @@ struct PolylineItem {
   float widthPx = 2.0f;
   bool depthTested = true;
   int view = 0;
+  bool dynamic = false;
+  bool operator==(const PolylineItem&) const = default;
 };
 
 enum class Align { Left, Center, Right };
@@ -100,12 +112,15 @@ struct LabelItem {
   Align align = Align::Left;
   bool bold = false;
   int view = -1;
+  bool dynamic = false;
+  bool operator==(const LabelItem&) const = default;
 };
 
 struct Camera {
   glm::mat4 viewFromWorld{1.0f};
   glm::mat4 clipFromView{1.0f};
   glm::vec3 position{0.0f, 0.0f, 1.0f};
+  bool operator==(const Camera&) const = default;
 };
 
 // One directional key light with an optional shadow map that covers the
@@ -120,6 +135,7 @@ struct Light {
   glm::vec3 shadowCenter{0.0f};
   float shadowRadius = 10.0f;
   float shadowSoftness = 0.1f;  // PCF radius in world units: a soft key light
+  bool operator==(const Light&) const = default;
 };
 
 struct View {
@@ -130,8 +146,12 @@ struct View {
   glm::vec3 backgroundTop{0.30f, 0.38f, 0.50f};     // linear RGB: a soft slate-blue sky
   glm::vec3 backgroundBottom{0.82f, 0.84f, 0.87f};  // that lightens towards the horizon
   bool frame = false;  // thin border (an inset)
+  bool operator==(const View&) const = default;
 };
 
+// A new item kind must also be known to the renderer's retained layers
+// (renderer.cpp: StaticKey, dirtyRects, and drawn in drawRest by `takes`),
+// or a change to it would not reach the frames drawn over a layer.
 struct DrawList {
   int width = 1280;
   int height = 720;

@@ -8,6 +8,7 @@
 #include <bit>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -102,6 +103,7 @@ struct GpuMesh {
   GLuint vao = 0, vbo = 0, ebo = 0;
   GLsizei indexCount = 0;
   glm::vec4 bound{0.0f};  // a bounding sphere in model coordinates: centre, radius
+  glm::vec3 lo{0.0f}, hi{0.0f};  // the bounding box in model coordinates
 };
 
 GpuMesh upload(const MeshData& m) {
@@ -130,6 +132,8 @@ GpuMesh upload(const MeshData& m) {
       lo = glm::min(lo, v.position);
       hi = glm::max(hi, v.position);
     }
+    g.lo = lo;
+    g.hi = hi;
     const glm::vec3 centre = 0.5f * (lo + hi);
     float radius = 0.0f;
     for (const Vertex& v : m.vertices) radius = std::max(radius, glm::length(v.position - centre));
@@ -161,6 +165,22 @@ glm::mat4 alongSegment(const glm::vec3& a, const glm::vec3& b, float radius) {
   return m;
 }
 
+// A rectangle of image pixels, top-left origin, half-open: [x0, x1) × [y0, y1).
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  [[nodiscard]] bool empty() const { return x1 <= x0 || y1 <= y0; }
+};
+
+PixelRect intersect(const PixelRect& a, const PixelRect& b) {
+  return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
+}
+
+PixelRect unite(const PixelRect& a, const PixelRect& b) {
+  return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+}
+
+bool overlaps(const PixelRect& a, const PixelRect& b) { return !intersect(a, b).empty(); }
+
 }  // namespace
 
 // Per-view state every mesh program needs.
@@ -176,6 +196,7 @@ struct MeshViewUniforms {
 
 struct Renderer::Impl {
   ShaderLibrary library;  // a copy: mesh variants compile lazily
+  bool retainLayers = true;
   std::map<int, Program> meshPrograms;  // by variant: pattern * 8 + shadowed * 4 + lit * 2 + specular
   MeshViewUniforms viewUniforms;
   Program shadow, line, text;
@@ -242,6 +263,7 @@ struct Renderer::Impl {
     for (auto& [k, t] : textures) glDeleteTextures(1, &t.id);
     for (auto& [k, f] : fonts) glDeleteTextures(1, &f.id);
     releaseFramebuffers();
+    releaseSnapshot();
     for (ShadowMap& m : shadowMaps) {
       glDeleteFramebuffers(1, &m.fbo);
       glDeleteTextures(1, &m.texture);
@@ -365,12 +387,13 @@ struct Renderer::Impl {
     std::shared_ptr<const MeshData> mesh;
     glm::mat4 worldFromModel;
     const Material* material;
+    bool dynamic = false;  // see MeshItem::dynamic
   };
 
   std::vector<Drawable> drawablesOf(const DrawList& list, int view, std::vector<Material>& arrowMaterials) {
     std::vector<Drawable> out;
     for (const MeshItem& m : list.meshes)
-      if (m.view == view && m.mesh) out.push_back({m.mesh, m.worldFromModel, &m.material});
+      if (m.view == view && m.mesh) out.push_back({m.mesh, m.worldFromModel, &m.material, m.dynamic});
     for (const ArrowItem& a : list.arrows) {
       if (a.view != view) continue;
       const float len = glm::length(a.tip - a.origin);
@@ -382,9 +405,12 @@ struct Renderer::Impl {
       mat.color = a.color;
       mat.specular = 0.35f;
       mat.shininess = 64.0f;
-      out.push_back({cylinder, alongSegment(a.origin, neck, a.shaftRadius), &mat});
-      out.push_back({cone, alongSegment(neck, a.tip, a.shaftRadius * 2.6f), &mat});
+      out.push_back({cylinder, alongSegment(a.origin, neck, a.shaftRadius), &mat, a.dynamic});
+      out.push_back({cone, alongSegment(neck, a.tip, a.shaftRadius * 2.6f), &mat, a.dynamic});
     }
+    // Every mesh the list names stays cached, also one a retained frame does
+    // not draw (evicting it would re-upload it at the next layer build).
+    for (const Drawable& d : out) gpuMesh(d.mesh);
     return out;
   }
 
@@ -500,16 +526,17 @@ struct Renderer::Impl {
 
   // Shadow receivers (the surfaces) pay for the shadow filter only inside
   // the shadow box: llvmpipe runs both sides of every branch, even on
-  // uniforms, so the split is made with two draws instead. Pass 1: the mesh
-  // clipped to the box, with the filter, pulled forward by a polygon offset.
-  // Pass 2: the whole mesh without the filter, which fails the depth test
-  // wherever pass 1 drew.
-  void drawReceiver(const Drawable& d) {
+  // uniforms, so the split is made with two draws instead. The whole mesh is
+  // drawn without the filter with the other opaque items; then, after every
+  // opaque item (the ball included), the re-shade: the mesh clipped to the
+  // box, with the filter, pulled forward by a polygon offset so that it
+  // passes the depth test over its own unfiltered pixels. A retained layer
+  // holds the unfiltered surface, and a frame re-shades only the box.
+  void drawReshade(const Drawable& d) {
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(-1.0f, -4.0f);
     drawMesh(d, true, d.material->cull, true);
     glDisable(GL_POLYGON_OFFSET_FILL);
-    drawMesh(d, false, d.material->cull, false);
   }
 
   void drawMesh(const Drawable& d, bool shadowOn, Cull cull, bool clipToShadowBox = false) {
@@ -555,6 +582,15 @@ struct Renderer::Impl {
     glDrawElements(GL_TRIANGLES, g.indexCount, GL_UNSIGNED_INT, nullptr);
   }
 
+  // Over a retained layer only the dirty rectangles are read back (see
+  // drawOverLayer), so a polyline draws only the runs of segments whose
+  // screen bounds reach one: the geometry shader pays per segment, and the
+  // static lines (the whole path, the Bloch grid) are long. Segments are
+  // independent quads, drawn in the same order either way: the bytes of the
+  // dirty pixels do not change.
+  const std::vector<PixelRect>* lineClips = nullptr;
+  static constexpr std::size_t kLineRun = 32;
+
   void drawPolyline(const PolylineItem& p, const glm::mat4& clipFromWorld, const View& v) {
     if (p.points.size() < 2) return;
     line.use();
@@ -567,7 +603,30 @@ struct Renderer::Impl {
     glBindBuffer(GL_ARRAY_BUFFER, streamVbo);
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(p.points.size() * sizeof(glm::vec3)), p.points.data(),
                  GL_STREAM_DRAW);
-    glDrawArrays(GL_LINE_STRIP, 0, static_cast<GLsizei>(p.points.size()));
+    if (lineClips == nullptr) {
+      glDrawArrays(GL_LINE_STRIP, 0, static_cast<GLsizei>(p.points.size()));
+      return;
+    }
+    // The geometry shader widens a segment by at most √2 · width / 2.
+    const float margin = 0.7072f * p.widthPx + 2.0f;
+    std::size_t runStart = 0, runEnd = 0;  // points [runStart, runEnd] pending as one strip
+    auto flush = [&] {
+      if (runEnd > runStart)
+        glDrawArrays(GL_LINE_STRIP, static_cast<GLint>(runStart), static_cast<GLsizei>(runEnd - runStart + 1));
+    };
+    for (std::size_t first = 0; first + 1 < p.points.size(); first += kLineRun) {
+      const std::size_t last = std::min(first + kLineRun, p.points.size() - 1);
+      const PixelRect bounds = screenBounds(v, clipFromWorld, &p.points[first], last - first + 1, margin);
+      bool reaches = false;
+      for (const PixelRect& r : *lineClips) reaches = reaches || overlaps(r, bounds);
+      if (!reaches) continue;
+      if (runEnd != first) {
+        flush();
+        runStart = first;
+      }
+      runEnd = last;
+    }
+    flush();
   }
 
   // Pixel-space quads (x0, y0, x1, y1, s0, t0, s1, t1) with the text program.
@@ -594,11 +653,14 @@ struct Renderer::Impl {
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(quads.size() * 6));
   }
 
-  void drawLabel(const LabelItem& label, glm::vec2 viewportSize, const glm::mat4* clipFromWorld) {
+  // The label's glyph quads in the viewport's pixels (top-left origin) and
+  // its font; null when a world anchor lies behind the camera.
+  CachedFont* labelQuads(const LabelItem& label, glm::vec2 viewportSize, const glm::mat4* clipFromWorld,
+                         std::vector<GlyphQuad>& quads) {
     glm::vec2 pen(label.anchor.x, label.anchor.y);
     if (label.worldAnchored && clipFromWorld != nullptr) {
       const glm::vec4 c = *clipFromWorld * glm::vec4(label.anchor, 1.0f);
-      if (c.w <= 0.0f) return;
+      if (c.w <= 0.0f) return nullptr;
       pen = glm::vec2((c.x / c.w * 0.5f + 0.5f) * viewportSize.x, (0.5f - c.y / c.w * 0.5f) * viewportSize.y);
     }
     pen += label.offsetPx;
@@ -608,9 +670,15 @@ struct Renderer::Impl {
     if (label.align == Align::Right) pen.x -= width;
     // Anchor = the middle of the capital height, which centres labels on points.
     const float baseline = pen.y + 0.36f * f.atlas->pixelHeight();
-    std::vector<GlyphQuad> quads;
+    quads.clear();
     f.atlas->layout(label.text, std::round(pen.x), std::round(baseline), &quads);
-    drawQuads(quads, viewportSize, label.color, f.id, false);
+    return &f;
+  }
+
+  void drawLabel(const LabelItem& label, glm::vec2 viewportSize, const glm::mat4* clipFromWorld) {
+    std::vector<GlyphQuad> quads;
+    if (CachedFont* f = labelQuads(label, viewportSize, clipFromWorld, quads))
+      drawQuads(quads, viewportSize, label.color, f->id, false);
   }
 
   // What one view draws, gathered before anything is drawn so that the
@@ -622,60 +690,74 @@ struct Renderer::Impl {
     ShadowSetup shadow;
   };
 
-  // overlapsEarlier: an inset over a view drawn before; it clears its own
-  // rectangle (the frame-wide clear covered the rest).
-  void drawView(const DrawList& list, int index, const ViewItems& viewItems, bool overlapsEarlier) {
-    const View& v = list.views[static_cast<std::size_t>(index)];
-    const std::vector<Drawable>& items = viewItems.items;
-    const bool shadowOn = viewItems.shadowMap != nullptr;
-    const glm::mat4& lightClipFromWorld = viewItems.shadow.lightClipFromWorld;
+  // Which items a drawing step takes: a retained layer is drawn from the
+  // static ones; a frame (whole, or a rectangle over a layer) from all.
+  enum class Items { StaticOnly, DynamicOnly, All };
+  static bool takes(Items which, bool dynamic) {
+    return which == Items::All || (which == Items::DynamicOnly) == dynamic;
+  }
 
+  // Binds the scene, the view's viewport and uniforms, scissored to `clip`
+  // (image pixels, top-left origin; the view's own rectangle if null).
+  void beginView(const DrawList& list, const View& v, const ViewItems& viewItems, const PixelRect* clip) {
     glBindFramebuffer(GL_FRAMEBUFFER, sceneFbo);
     const int glY = list.height - v.y - v.height;  // GL counts rows from the bottom
     glViewport(v.x, glY, v.width, v.height);
     glEnable(GL_SCISSOR_TEST);
-    glScissor(v.x, glY, v.width, v.height);
-    if (overlapsEarlier) {
-      // A scissored clear is a full-screen quad on llvmpipe, per sample:
-      // only an inset pays for it.
-      glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-      glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
-    }
-    glEnable(GL_BLEND);
+    const PixelRect r = clip != nullptr ? *clip : PixelRect{v.x, v.y, v.x + v.width, v.y + v.height};
+    glScissor(r.x0, list.height - r.y1, r.x1 - r.x0, r.y1 - r.y0);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-
-    const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_TRUE);
-    viewUniforms.clipFromWorld = clipFromWorld;
-    viewUniforms.lightClipFromWorld = lightClipFromWorld;
+    viewUniforms.clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+    viewUniforms.lightClipFromWorld = viewItems.shadow.lightClipFromWorld;
     viewUniforms.towardLight = glm::normalize(v.light.towardLight);
     viewUniforms.lightColor = v.light.color;
     viewUniforms.ambient = v.light.ambient;
     viewUniforms.cameraPosition = v.camera.position;
     viewUniforms.shadowFilterRadius = viewItems.shadow.filterRadius;
     glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, shadowOn ? viewItems.shadowMap->texture : 0);
+    glBindTexture(GL_TEXTURE_2D, viewItems.shadowMap != nullptr ? viewItems.shadowMap->texture : 0);
+  }
 
-    std::vector<const Drawable*> translucent;
+  // The opaque meshes; receivers without the shadow filter (see drawReshade).
+  void drawOpaque(const ViewItems& viewItems, Items which) {
     glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
     for (GLenum plane = 0; plane < 5; ++plane) glEnable(GL_CLIP_DISTANCE0 + plane);
-    for (const Drawable& d : items) {
-      if (d.material->opacity < 1.0f) translucent.push_back(&d);
-      else if (shadowOn && d.material->receivesShadow) drawReceiver(d);
-      else drawMesh(d, false, d.material->cull);
-    }
-    for (GLenum plane = 0; plane < 5; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);  // lines write none
+    for (const Drawable& d : viewItems.items)
+      if (d.material->opacity >= 1.0f && takes(which, d.dynamic)) drawMesh(d, false, d.material->cull);
+    for (GLenum plane = 0; plane < 5; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);
     glDisable(GL_CULL_FACE);
+  }
 
+  // Everything after the opaque meshes: the receivers' re-shade (not in a
+  // static layer: the shadow moves with the ball), depth-tested lines,
+  // translucent meshes far to near, then lines over everything, labels and
+  // the inset frame.
+  void drawRest(const DrawList& list, int index, const ViewItems& viewItems, Items which) {
+    const View& v = list.views[static_cast<std::size_t>(index)];
+    const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+    if (viewItems.shadowMap != nullptr && which != Items::StaticOnly) {
+      glDisable(GL_BLEND);
+      glDepthMask(GL_TRUE);
+      for (GLenum plane = 0; plane < 5; ++plane) glEnable(GL_CLIP_DISTANCE0 + plane);
+      for (const Drawable& d : viewItems.items)
+        if (d.material->opacity >= 1.0f && d.material->receivesShadow) drawReshade(d);
+      for (GLenum plane = 0; plane < 5; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);
+      glDisable(GL_CULL_FACE);
+    }
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     for (const PolylineItem& p : list.polylines)
-      if (p.view == index && p.depthTested) drawPolyline(p, clipFromWorld, v);
+      if (p.view == index && p.depthTested && takes(which, p.dynamic)) drawPolyline(p, clipFromWorld, v);
 
     // Far to near. A closed translucent mesh shows its front half only: its
     // back half would double the blending cost for little visual gain.
+    std::vector<const Drawable*> translucent;
+    for (const Drawable& d : viewItems.items)
+      if (d.material->opacity < 1.0f && takes(which, d.dynamic)) translucent.push_back(&d);
     auto depthOf = [&](const Drawable* d) { return (v.camera.viewFromWorld * d->worldFromModel[3]).z; };
     std::stable_sort(translucent.begin(), translucent.end(),
                      [&](const Drawable* a, const Drawable* b) { return depthOf(a) < depthOf(b); });
@@ -688,16 +770,29 @@ struct Renderer::Impl {
     glDisable(GL_CULL_FACE);
     glDisable(GL_DEPTH_TEST);
     for (const PolylineItem& p : list.polylines)
-      if (p.view == index && !p.depthTested) drawPolyline(p, clipFromWorld, v);
+      if (p.view == index && !p.depthTested && takes(which, p.dynamic)) drawPolyline(p, clipFromWorld, v);
     for (const LabelItem& l : list.labels)
-      if (l.view == index) drawLabel(l, glm::vec2(v.width, v.height), &clipFromWorld);
-    if (v.frame) {
+      if (l.view == index && takes(which, l.dynamic)) drawLabel(l, glm::vec2(v.width, v.height), &clipFromWorld);
+    if (v.frame && which != Items::DynamicOnly) {
       const float w = float(v.width), h = float(v.height), t = std::max(1.0f, h / 300.0f);
       const std::vector<GlyphQuad> border{{0, 0, w, t, 0, 0, 0, 0}, {0, h - t, w, h, 0, 0, 0, 0},
                                           {0, 0, t, h, 0, 0, 0, 0}, {w - t, 0, w, h, 0, 0, 0, 0}};
       drawQuads(border, glm::vec2(w, h), glm::vec4(0.35f, 0.38f, 0.42f, 1.0f), 0, true);
     }
     glDepthMask(GL_TRUE);
+  }
+
+  // Image-level labels (titles) over everything, scissored to `clip`.
+  void drawImageLabels(const DrawList& list, Items which, const PixelRect& clip) {
+    glBindFramebuffer(GL_FRAMEBUFFER, sceneFbo);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(clip.x0, list.height - clip.y1, clip.x1 - clip.x0, clip.y1 - clip.y0);
+    glViewport(0, 0, list.width, list.height);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    for (const LabelItem& l : list.labels)
+      if (l.view < 0 && takes(which, l.dynamic)) drawLabel(l, glm::vec2(list.width, list.height), nullptr);
   }
 
   static bool overlap(const View& a, const View& b) {
@@ -714,6 +809,13 @@ struct Renderer::Impl {
         if (overlap(list.views[i], list.views[j])) return false;
     }
     return area == static_cast<long long>(list.width) * list.height;
+  }
+
+  static bool viewsDisjoint(const DrawList& list) {
+    for (std::size_t i = 0; i < list.views.size(); ++i)
+      for (std::size_t j = i + 1; j < list.views.size(); ++j)
+        if (overlap(list.views[i], list.views[j])) return false;
+    return true;
   }
 
   Program& compositeProgram(int samples) {
@@ -741,8 +843,10 @@ struct Renderer::Impl {
   // a CPU row flip: each output pixel averages its scene samples
   // (premultiplied colour over transparent black), puts the view's backdrop
   // gradient behind them, and lands on the row where it belongs top-down, so
-  // glReadPixels delivers the image in reading order.
-  void composite(const DrawList& list) {
+  // glReadPixels delivers the image in reading order. `only`: just these
+  // pixels (a retained frame's rectangles), each computed exactly as in a
+  // whole-image pass.
+  void composite(const DrawList& list, const std::vector<PixelRect>* only = nullptr) {
     glBindFramebuffer(GL_FRAMEBUFFER, outputFbo);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
@@ -756,18 +860,414 @@ struct Renderer::Impl {
     p.set("sourceTopRow", list.height - 1);
     p.set("opaqueAlpha", list.transparent ? 0u : 255u);
     glBindVertexArray(emptyVao);
-    auto pass = [&](int x, int y, int w, int h, const View* v) {
+    const bool tiled = viewsTileImage(list);
+    auto pass = [&](int x, int y, int w, int h, const View* v, const PixelRect& clip) {
+      const PixelRect r = intersect(PixelRect{x, y, x + w, y + h}, clip);
+      if (r.empty()) return;
       // Output rows are image rows (top-down), so the rectangle is not flipped.
       glViewport(x, y, w, h);
-      glScissor(x, y, w, h);
+      glScissor(r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
       const bool backdrop = v != nullptr && v->background && !list.transparent;
       p.set("backdropWeight", backdrop ? 1.0f : 0.0f);
       p.set("topColor", backdrop ? encodeSrgb(v->backgroundTop) : glm::vec3(0.0f));
       p.set("bottomColor", backdrop ? encodeSrgb(v->backgroundBottom) : glm::vec3(0.0f));
       glDrawArrays(GL_TRIANGLES, 0, 3);
     };
-    if (!viewsTileImage(list)) pass(0, 0, list.width, list.height, nullptr);  // gaps between views: no backdrop
-    for (const View& v : list.views) pass(v.x, v.y, v.width, v.height, &v);
+    const std::vector<PixelRect> whole{PixelRect{0, 0, list.width, list.height}};
+    for (const PixelRect& clip : only != nullptr ? *only : whole) {
+      if (!tiled) pass(0, 0, list.width, list.height, nullptr, clip);  // gaps between views: no backdrop
+      for (const View& v : list.views) pass(v.x, v.y, v.width, v.height, &v, clip);
+    }
+  }
+
+  // ---- Retained layers ----------------------------------------------------
+  //
+  // A frame is drawn in this order, view by view: the static opaque meshes;
+  // the dynamic opaque meshes; the receivers' re-shade inside the shadow
+  // box; depth-tested lines; translucent meshes; overlays (see drawRest).
+  // When the static items and the views are the same as in the frame
+  // before, the renderer keeps (a) the scene's samples after the static
+  // opaque meshes (colour and depth, multisampled) and (b) the finished
+  // image of the static items alone. A frame then starts from (b) and
+  // redraws only the rectangles that its dynamic items (and the shadow box)
+  // can touch: (a) copied in, then every step after the static opaque
+  // meshes, scissored. Outside those rectangles a whole frame draws exactly
+  // what (b) holds, and inside them exactly the same steps run on the same
+  // samples, so both ways give the same bytes: a frame does not depend on
+  // the frames before it (tested), and the first frame of a span is simply
+  // drawn whole.
+  struct StaticKey {
+    int width = 0, height = 0, samples = 0;
+    bool transparent = false;
+    std::vector<View> views;
+    std::vector<MeshItem> meshes;
+    std::vector<ArrowItem> arrows;
+    std::vector<PolylineItem> polylines;
+    std::vector<LabelItem> labels;
+    bool operator==(const StaticKey&) const = default;
+  };
+
+  static StaticKey staticKeyOf(const DrawList& list) {
+    StaticKey k;
+    k.width = list.width;
+    k.height = list.height;
+    k.samples = std::max(1, list.msaaSamples);
+    k.transparent = list.transparent;
+    k.views = list.views;
+    // The shadow box (which follows the ball) shapes only the shadow map,
+    // which a layer does not use: the re-shade is redrawn per frame.
+    for (View& v : k.views) {
+      v.light.shadowCenter = glm::vec3(0.0f);
+      v.light.shadowRadius = 0.0f;
+      v.light.shadowSoftness = 0.0f;
+    }
+    for (const MeshItem& m : list.meshes)
+      if (!m.dynamic) k.meshes.push_back(m);
+    for (const ArrowItem& a : list.arrows)
+      if (!a.dynamic) k.arrows.push_back(a);
+    for (const PolylineItem& p : list.polylines)
+      if (!p.dynamic) k.polylines.push_back(p);
+    for (const LabelItem& l : list.labels)
+      if (!l.dynamic) k.labels.push_back(l);
+    return k;
+  }
+
+  // The retained layer: (a) in snapshotFbo, (b) in layerImage; valid while
+  // `layerKey` matches. `pendingKey`: the last frame drawn whole, so a layer
+  // is built only when a second frame shares it (a moving camera pays
+  // nothing for layers it would never reuse).
+  GLuint snapshotFbo = 0, snapshotColor = 0, snapshotDepth = 0;
+  int snapshotWidth = 0, snapshotHeight = 0, snapshotSamples = 0;
+  std::optional<StaticKey> layerKey, pendingKey;
+  media::Image layerImage;
+  RenderStats stats;
+
+  void releaseSnapshot() {
+    glDeleteFramebuffers(1, &snapshotFbo);
+    glDeleteTextures(1, &snapshotColor);
+    glDeleteRenderbuffers(1, &snapshotDepth);
+    snapshotFbo = snapshotColor = snapshotDepth = 0;
+    snapshotWidth = snapshotHeight = snapshotSamples = 0;
+  }
+
+  void ensureSnapshot() {
+    if (snapshotWidth == fbWidth && snapshotHeight == fbHeight && snapshotSamples == fbSamples) return;
+    releaseSnapshot();
+    const GLenum colorTarget = fbSamples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
+    glGenTextures(1, &snapshotColor);
+    glBindTexture(colorTarget, snapshotColor);
+    if (fbSamples > 1) glTexStorage2DMultisample(colorTarget, fbSamples, GL_RGBA8, fbWidth, fbHeight, GL_TRUE);
+    else glTexStorage2D(colorTarget, 1, GL_RGBA8, fbWidth, fbHeight);
+    glGenRenderbuffers(1, &snapshotDepth);
+    glBindRenderbuffer(GL_RENDERBUFFER, snapshotDepth);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, fbSamples > 1 ? fbSamples : 0, GL_DEPTH_COMPONENT24, fbWidth,
+                                     fbHeight);
+    glGenFramebuffers(1, &snapshotFbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, snapshotFbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, colorTarget, snapshotColor, 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, snapshotDepth);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw runtimeError({}, "OpenGL could not create a {}x{} retained layer with {} samples (out of memory?)",
+                         fbWidth, fbHeight, fbSamples);
+    snapshotWidth = fbWidth;
+    snapshotHeight = fbHeight;
+    snapshotSamples = fbSamples;
+  }
+
+  // The pixels (image coordinates) a set of world points can reach in view
+  // v, widened by `marginPx`; the whole view when one lies behind the eye.
+  static PixelRect screenBounds(const View& v, const glm::mat4& clipFromWorld, const glm::vec3* points,
+                                std::size_t count, float marginPx) {
+    const PixelRect whole{v.x, v.y, v.x + v.width, v.y + v.height};
+    float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
+    for (std::size_t i = 0; i < count; ++i) {
+      const glm::vec4 c = clipFromWorld * glm::vec4(points[i], 1.0f);
+      if (c.w <= 1e-6f) return whole;
+      const float x = (c.x / c.w * 0.5f + 0.5f) * float(v.width);
+      const float y = (0.5f - c.y / c.w * 0.5f) * float(v.height);
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+    if (count == 0) return {};
+    auto toInt = [](float f) { return static_cast<int>(std::clamp(f, -1e7f, 1e7f)); };
+    return intersect(PixelRect{v.x + toInt(std::floor(x0 - marginPx)), v.y + toInt(std::floor(y0 - marginPx)),
+                               v.x + toInt(std::ceil(x1 + marginPx)) + 1, v.y + toInt(std::ceil(y1 + marginPx)) + 1},
+                     whole);
+  }
+
+  // A mesh's screen bounds: the corners of its model-space bounding box.
+  PixelRect meshBounds(const View& v, const glm::mat4& clipFromWorld, const Drawable& d) {
+    const GpuMesh& g = gpuMesh(d.mesh);
+    glm::vec3 corners[8];
+    for (int k = 0; k < 8; ++k) {
+      const glm::vec3 model(k & 1 ? g.hi.x : g.lo.x, k & 2 ? g.hi.y : g.lo.y, k & 4 ? g.hi.z : g.lo.z);
+      corners[k] = glm::vec3(d.worldFromModel * glm::vec4(model, 1.0f));
+    }
+    return screenBounds(v, clipFromWorld, corners, 8, 2.0f);
+  }
+
+  // Where a receiver's re-shade can draw: its triangles clipped to the
+  // shadow box's prism across the light (|x|, |y| ≤ 1 in light clip space,
+  // affine: an orthographic light), projected.
+  PixelRect reshadeBounds(const View& v, const glm::mat4& clipFromWorld, const glm::mat4& lightClipFromWorld,
+                          const Drawable& d) {
+    const MeshData& m = *d.mesh;
+    struct P {
+      glm::vec3 world;
+      glm::vec2 light;
+    };
+    std::vector<P> verts(m.vertices.size());
+    for (std::size_t i = 0; i < verts.size(); ++i) {
+      const glm::vec3 w(d.worldFromModel * glm::vec4(m.vertices[i].position, 1.0f));
+      verts[i] = {w, glm::vec2(lightClipFromWorld * glm::vec4(w, 1.0f))};
+    }
+    std::vector<glm::vec3> inside;
+    std::vector<P> poly, next;
+    for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+      poly = {verts[m.indices[t]], verts[m.indices[t + 1]], verts[m.indices[t + 2]]};
+      for (int plane = 0; plane < 4 && !poly.empty(); ++plane) {
+        auto dist = [&](const P& p) { return 1.0f + (plane & 1 ? -1.0f : 1.0f) * p.light[plane / 2]; };
+        next.clear();
+        for (std::size_t i = 0; i < poly.size(); ++i) {
+          const P& a = poly[i];
+          const P& b = poly[(i + 1) % poly.size()];
+          const float da = dist(a), db = dist(b);
+          if (da >= 0.0f) next.push_back(a);
+          if ((da >= 0.0f) != (db >= 0.0f)) {
+            const float f = da / (da - db);
+            next.push_back({a.world + f * (b.world - a.world), a.light + f * (b.light - a.light)});
+          }
+        }
+        std::swap(poly, next);
+      }
+      for (const P& p : poly) inside.push_back(p.world);
+    }
+    return screenBounds(v, clipFromWorld, inside.data(), inside.size(), 3.0f);
+  }
+
+  // The pixels a frame must redraw over the retained layer, as disjoint
+  // rectangles of whole tiles: the tiles that any dynamic item (a line
+  // segment by segment, so that a long trail dirties a thin band along
+  // itself) or a receiver's shadow box can touch.
+  static constexpr int kTile = 32;
+  std::vector<PixelRect> dirtyRects(const DrawList& list, const std::vector<ViewItems>& perView) {
+    const int cols = (list.width + kTile - 1) / kTile, rows = (list.height + kTile - 1) / kTile;
+    std::vector<std::uint8_t> dirty(static_cast<std::size_t>(cols) * rows, 0);
+    auto add = [&](const PixelRect& r) {
+      if (r.empty()) return;
+      for (int ty = std::max(0, r.y0 / kTile); ty <= std::min(rows - 1, (r.y1 - 1) / kTile); ++ty)
+        for (int tx = std::max(0, r.x0 / kTile); tx <= std::min(cols - 1, (r.x1 - 1) / kTile); ++tx)
+          dirty[static_cast<std::size_t>(ty) * cols + tx] = 1;
+    };
+    for (std::size_t i = 0; i < list.views.size(); ++i) {
+      const View& v = list.views[i];
+      const int index = static_cast<int>(i);
+      const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+      for (const Drawable& d : perView[i].items) {
+        if (d.dynamic) add(meshBounds(v, clipFromWorld, d));
+        if (perView[i].shadowMap != nullptr && d.material->receivesShadow && d.material->opacity >= 1.0f)
+          add(reshadeBounds(v, clipFromWorld, perView[i].shadow.lightClipFromWorld, d));
+      }
+      for (const PolylineItem& p : list.polylines) {
+        if (p.view != index || !p.dynamic) continue;
+        // The geometry shader widens a segment by half a width to the side
+        // and at both ends: at most √2 · width / 2 from its end points. A
+        // segment with an end behind the eye is not drawn (line.geom).
+        const float margin = 0.7072f * p.widthPx + 2.0f;
+        for (std::size_t k = 0; k + 1 < p.points.size(); ++k) {
+          const glm::vec3 ends[2] = {p.points[k], p.points[k + 1]};
+          if ((clipFromWorld * glm::vec4(ends[0], 1.0f)).w <= 1e-6f ||
+              (clipFromWorld * glm::vec4(ends[1], 1.0f)).w <= 1e-6f)
+            continue;
+          add(screenBounds(v, clipFromWorld, ends, 2, margin));
+        }
+      }
+      for (const LabelItem& l : list.labels)
+        if (l.view == index && l.dynamic) add(labelBounds(l, list, &v, clipFromWorld));
+    }
+    for (const LabelItem& l : list.labels)
+      if (l.view < 0 && l.dynamic) add(labelBounds(l, list, nullptr, glm::mat4(1.0f)));
+    // Runs of dirty tiles per tile row; a run continues a rectangle from
+    // the row above when it spans the same columns.
+    std::vector<PixelRect> rects;
+    std::vector<std::size_t> open;  // rectangles that end at the current row
+    for (int ty = 0; ty < rows; ++ty) {
+      std::vector<std::size_t> nowOpen;
+      for (int tx = 0; tx < cols;) {
+        if (!dirty[static_cast<std::size_t>(ty) * cols + tx]) {
+          ++tx;
+          continue;
+        }
+        int end = tx;
+        while (end < cols && dirty[static_cast<std::size_t>(ty) * cols + end]) ++end;
+        const int x0 = tx * kTile, x1 = std::min(list.width, end * kTile);
+        const int y0 = ty * kTile, y1 = std::min(list.height, (ty + 1) * kTile);
+        auto same = std::find_if(open.begin(), open.end(),
+                                 [&](std::size_t r) { return rects[r].x0 == x0 && rects[r].x1 == x1; });
+        if (same != open.end()) {
+          rects[*same].y1 = y1;
+          nowOpen.push_back(*same);
+        } else {
+          rects.push_back({x0, y0, x1, y1});
+          nowOpen.push_back(rects.size() - 1);
+        }
+        tx = end;
+      }
+      open = std::move(nowOpen);
+    }
+    return rects;
+  }
+
+  PixelRect labelBounds(const LabelItem& l, const DrawList& list, const View* v, const glm::mat4& clipFromWorld) {
+    const glm::vec2 size = v != nullptr ? glm::vec2(v->width, v->height) : glm::vec2(list.width, list.height);
+    std::vector<GlyphQuad> quads;
+    if (labelQuads(l, size, v != nullptr ? &clipFromWorld : nullptr, quads) == nullptr || quads.empty()) return {};
+    float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
+    for (const GlyphQuad& q : quads) {
+      x0 = std::min({x0, q.x0, q.x1}), x1 = std::max({x1, q.x0, q.x1});
+      y0 = std::min({y0, q.y0, q.y1}), y1 = std::max({y1, q.y0, q.y1});
+    }
+    const int ox = v != nullptr ? v->x : 0, oy = v != nullptr ? v->y : 0;
+    const PixelRect area = v != nullptr ? PixelRect{v->x, v->y, v->x + v->width, v->y + v->height}
+                                        : PixelRect{0, 0, list.width, list.height};
+    auto toInt = [](float f) { return static_cast<int>(std::clamp(f, -1e7f, 1e7f)); };
+    return intersect(PixelRect{ox + toInt(std::floor(x0)) - 2, oy + toInt(std::floor(y0)) - 2,
+                               ox + toInt(std::ceil(x1)) + 3, oy + toInt(std::ceil(y1)) + 3},
+                     area);
+  }
+
+  // The whole frame, as the static items' layer and dynamic items would
+  // draw it, step for step (see "Retained layers").
+  void drawWhole(const DrawList& list, const std::vector<ViewItems>& perView) {
+    for (std::size_t i = 0; i < list.views.size(); ++i) {
+      const View& v = list.views[i];
+      bool overlapsEarlier = false;
+      for (std::size_t j = 0; j < i; ++j) overlapsEarlier = overlapsEarlier || overlap(list.views[i], list.views[j]);
+      beginView(list, v, perView[i], nullptr);
+      if (overlapsEarlier) {
+        // An inset over a view drawn before clears its own rectangle (a
+        // scissored clear is a full-screen quad on llvmpipe, per sample:
+        // only an inset pays for it).
+        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+        glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
+      }
+      drawOpaque(perView[i], Items::StaticOnly);
+      drawOpaque(perView[i], Items::DynamicOnly);
+      drawRest(list, static_cast<int>(i), perView[i], Items::All);
+    }
+    drawImageLabels(list, Items::All, PixelRect{0, 0, list.width, list.height});
+  }
+
+  // One unscissored clear of the whole scene: llvmpipe does it per tile as
+  // the tile is first rasterized; a scissored clear would be a quad draw.
+  void clearScene(const DrawList& list) {
+    glBindFramebuffer(GL_FRAMEBUFFER, sceneFbo);
+    glDisable(GL_SCISSOR_TEST);
+    glViewport(0, 0, list.width, list.height);
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glDepthMask(GL_TRUE);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  }
+
+  // Reads back `r` of the output (or all of it) into `image`.
+  void readBack(const DrawList& list, media::Image& image, const PixelRect& r) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, outputFbo);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glPixelStorei(GL_PACK_ROW_LENGTH, list.width);
+    // One uint per pixel whose bytes in memory are R, G, B, A (see composite.frag).
+    static_assert(std::endian::native == std::endian::little, "the packed RGBA8 words assume little endian");
+    glReadPixels(r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                 image.rgba.data() + (static_cast<std::size_t>(r.y0) * list.width + r.x0) * 4);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    if (list.transparent) {
+      for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x) {
+          std::uint8_t* p = &image.rgba[(static_cast<std::size_t>(y) * list.width + x) * 4];
+          if (p[3] != 0 && p[3] != 255) {
+            // Blending left premultiplied colour over the empty background.
+            for (int c = 0; c < 3; ++c)
+              p[c] = static_cast<std::uint8_t>(std::min(255, (p[c] * 255 + p[3] / 2) / p[3]));
+          }
+        }
+    }
+  }
+
+  // Draws the static items into the scene, keeping the samples after their
+  // opaque meshes, and reads their finished image into layerImage.
+  void buildLayer(const DrawList& list, const std::vector<ViewItems>& perView) {
+    ensureSnapshot();
+    clearScene(list);
+    for (std::size_t i = 0; i < list.views.size(); ++i) {
+      beginView(list, list.views[i], perView[i], nullptr);
+      drawOpaque(perView[i], Items::StaticOnly);
+    }
+    glDisable(GL_SCISSOR_TEST);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, sceneFbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, snapshotFbo);
+    glBlitFramebuffer(0, 0, list.width, list.height, 0, 0, list.width, list.height,
+                      GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    for (std::size_t i = 0; i < list.views.size(); ++i) {
+      beginView(list, list.views[i], perView[i], nullptr);
+      drawRest(list, static_cast<int>(i), perView[i], Items::StaticOnly);
+    }
+    drawImageLabels(list, Items::StaticOnly, PixelRect{0, 0, list.width, list.height});
+    composite(list);
+    glFinish();
+    layerImage.width = list.width;
+    layerImage.height = list.height;
+    layerImage.rgba.resize(static_cast<std::size_t>(list.width) * list.height * 4);
+    readBack(list, layerImage, PixelRect{0, 0, list.width, list.height});
+    ++stats.layerBuilds;
+  }
+
+  // A frame over the retained layer: its image, with the dirty rectangles
+  // redrawn from the snapshot on.
+  void drawOverLayer(const DrawList& list, const std::vector<ViewItems>& perView, media::Image& image) {
+    const std::vector<PixelRect> rects = dirtyRects(list, perView);
+    stats.retainedPixels += static_cast<long long>(list.width) * list.height;
+    image.rgba = layerImage.rgba;  // same size: copies into the existing storage
+    if (rects.empty()) return;
+    // The rectangles are disjoint: all copies first, then all draws, so the
+    // binned scene is not flushed between them.
+    // Unscissored: a blit copies every sample of the rectangle's pixels.
+    glDisable(GL_SCISSOR_TEST);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, snapshotFbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, sceneFbo);
+    for (const PixelRect& r : rects) {
+      const int y0 = list.height - r.y1, y1 = list.height - r.y0;
+      glBlitFramebuffer(r.x0, y0, r.x1, y1, r.x0, y0, r.x1, y1, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT,
+                        GL_NEAREST);
+    }
+    // Then each view drawn once, scissored to the bounds of its dirty
+    // rectangles: the pixels in between are drawn over stale samples, but
+    // they are neither composited nor read back. The scissor reaches a
+    // pixel beyond them (inside the view): llvmpipe tests the scissor per
+    // sample, and a multisampled pixel on the scissor's edge seems to lose
+    // samples that a whole frame draws (seen: glass drawn scissor by
+    // scissor differed from a whole frame along the row where two met).
+    PixelRect allBounds{list.width, list.height, 0, 0};
+    for (std::size_t i = 0; i < list.views.size(); ++i) {
+      const View& v = list.views[i];
+      const PixelRect area{v.x, v.y, v.x + v.width, v.y + v.height};
+      PixelRect bounds{list.width, list.height, 0, 0};
+      for (const PixelRect& r : rects)
+        if (const PixelRect c = intersect(r, area); !c.empty()) bounds = unite(bounds, c);
+      if (bounds.empty()) continue;
+      bounds = intersect(PixelRect{bounds.x0 - 1, bounds.y0 - 1, bounds.x1 + 1, bounds.y1 + 1}, area);
+      allBounds = unite(allBounds, bounds);
+      beginView(list, v, perView[i], &bounds);
+      drawOpaque(perView[i], Items::DynamicOnly);
+      lineClips = &rects;
+      drawRest(list, static_cast<int>(i), perView[i], Items::All);
+      lineClips = nullptr;
+    }
+    for (const PixelRect& r : rects) allBounds = unite(allBounds, r);
+    drawImageLabels(list, Items::All, allBounds);
+    composite(list, &rects);
+    glFinish();
+    for (const PixelRect& r : rects) readBack(list, image, r);
+    long long area = 0;
+    for (const PixelRect& r : rects) area += static_cast<long long>(r.x1 - r.x0) * (r.y1 - r.y0);
+    stats.redrawnPixels += area;
   }
 
   void render(const DrawList& list, media::Image& image) {
@@ -795,45 +1295,43 @@ struct Renderer::Impl {
     // (measured: 10 ms of a 1080p frame, the main scene's tiles making two
     // trips through memory).
     if (shadowMapsUsed > 0) glFinish();
-    // One unscissored clear of the whole scene: llvmpipe does it per tile as
-    // the tile is first rasterized; a scissored clear would be a quad draw.
-    glBindFramebuffer(GL_FRAMEBUFFER, sceneFbo);
-    glDisable(GL_SCISSOR_TEST);
-    glViewport(0, 0, list.width, list.height);
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glDepthMask(GL_TRUE);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    for (std::size_t i = 0; i < list.views.size(); ++i) {
-      bool overlapsEarlier = false;
-      for (std::size_t j = 0; j < i; ++j) overlapsEarlier = overlapsEarlier || overlap(list.views[i], list.views[j]);
-      drawView(list, static_cast<int>(i), perView[i], overlapsEarlier);
-    }
-
-    // Image-level labels (titles) over everything.
-    glBindFramebuffer(GL_FRAMEBUFFER, sceneFbo);
-    glDisable(GL_SCISSOR_TEST);
-    glViewport(0, 0, list.width, list.height);
-    glDisable(GL_DEPTH_TEST);
-    glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    for (const LabelItem& l : list.labels)
-      if (l.view < 0) drawLabel(l, glm::vec2(list.width, list.height), nullptr);
-
-    composite(list);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, outputFbo);
-    glFinish();
     image.width = list.width;
     image.height = list.height;
     image.rgba.resize(static_cast<std::size_t>(list.width) * list.height * 4);  // reused across frames
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    // One uint per pixel whose bytes in memory are R, G, B, A (see composite.frag).
-    static_assert(std::endian::native == std::endian::little, "the packed RGBA8 words assume little endian");
-    glReadPixels(0, 0, list.width, list.height, GL_RED_INTEGER, GL_UNSIGNED_INT, image.rgba.data());
+
+    // A layer needs disjoint views (an inset's clear would come between
+    // the views' steps) and pays off from the second frame that shares it.
+    bool overLayer = false;
+    if (retainLayers && viewsDisjoint(list)) {
+      StaticKey key = staticKeyOf(list);
+      if (layerKey && *layerKey == key) {
+        overLayer = true;
+      } else if (pendingKey && *pendingKey == key) {
+        buildLayer(list, perView);
+        layerKey = std::move(key);
+        pendingKey.reset();
+        overLayer = true;
+      } else {
+        pendingKey = std::move(key);
+      }
+    }
+    if (overLayer) {
+      drawOverLayer(list, perView, image);
+      ++stats.retainedFrames;
+    } else {
+      clearScene(list);
+      drawWhole(list, perView);
+      composite(list);
+      glFinish();
+      readBack(list, image, PixelRect{0, 0, list.width, list.height});
+      ++stats.wholeFrames;
+    }
     if (const GLenum err = glGetError(); err != GL_NO_ERROR)
       throw runtimeError({}, "OpenGL error 0x{:x} while rendering a {}x{} image", err, list.width, list.height);
 
     // Per-frame meshes (arrows' materials aside, e.g. a rebuilt surface)
-    // must not pile up across the frames of a video.
+    // must not pile up across the frames of a video; the retained layer's
+    // keep theirs alive through its key.
     for (auto it = meshes.begin(); it != meshes.end();) {
       if (!it->second.used && it->second.keepAlive != cylinder && it->second.keepAlive != cone) {
         release(it->second.gpu);
@@ -841,16 +1339,6 @@ struct Renderer::Impl {
       } else {
         it->second.used = false;
         ++it;
-      }
-    }
-
-    if (list.transparent) {
-      for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
-        std::uint8_t* p = &image.rgba[i];
-        if (p[3] != 0 && p[3] != 255) {
-          // Blending left premultiplied colour over the empty background.
-          for (int c = 0; c < 3; ++c) p[c] = static_cast<std::uint8_t>(std::min(255, (p[c] * 255 + p[3] / 2) / p[3]));
-        }
       }
     }
   }
@@ -896,8 +1384,18 @@ media::Image Renderer::render(const DrawList& list) {
 }
 void Renderer::render(const DrawList& list, media::Image& image) { impl_->render(list, image); }
 void Renderer::renderWithDepth(const DrawList& list, media::Image& image, std::vector<float>& depth) {
+  // The depth of this list alone, drawn whole: no retained layer in between.
+  const bool retain = impl_->retainLayers;
+  setRetainLayers(false);
   impl_->render(list, image);
   impl_->readDepth(depth);
+  setRetainLayers(retain);
 }
+
+void Renderer::setRetainLayers(bool on) {
+  impl_->retainLayers = on;
+  if (!on) impl_->layerKey.reset(), impl_->pendingKey.reset();
+}
+const RenderStats& Renderer::stats() const { return impl_->stats; }
 
 }  // namespace rollspin::render

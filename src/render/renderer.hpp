@@ -3,7 +3,10 @@
 // pixels back and flips the bottom-up GL rows exactly once into a top-down
 // Image. One key light with a shadow map per view, gamma-correct (sRGB)
 // output. GPU copies of meshes, textures and glyph atlases are cached across
-// frames, keyed by the shared data they came from.
+// frames, keyed by the shared data they came from. Retained layers: while
+// the views and the static (not `dynamic`) items stay the same from frame to
+// frame, their image is kept and a frame redraws only the rectangles its
+// dynamic items touch, with the same bytes as a frame drawn whole.
 #pragma once
 
 #include <memory>
@@ -15,6 +18,15 @@
 #include "render/shader_library.hpp"
 
 namespace rollspin::render {
+
+// What the renderer did so far (tests, benchmarks, --verbose).
+struct RenderStats {
+  long long wholeFrames = 0;     // drawn whole (a still, a camera move, a span's first frame)
+  long long layerBuilds = 0;     // retained layers built
+  long long retainedFrames = 0;  // drawn over a retained layer
+  long long redrawnPixels = 0;   // in those frames' rectangles, summed
+  long long retainedPixels = 0;  // those frames' pixels, summed
+};
 
 class Renderer {
  public:
@@ -34,6 +46,9 @@ class Renderer {
   // arrows write depth (lines and translucent items do not), so this is what
   // a depth-tested line is tested against. For vector figures.
   void renderWithDepth(const DrawList& list, media::Image& image, std::vector<float>& depth);
+  // On by default; off draws every frame whole (the same bytes, slower).
+  void setRetainLayers(bool on);
+  [[nodiscard]] const RenderStats& stats() const;
 
  private:
   struct Impl;

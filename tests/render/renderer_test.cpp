@@ -4,6 +4,12 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
 #include "core/error.hpp"
 #include "render/gl_context.hpp"
 #include "render/mesh_builders.hpp"
@@ -163,6 +169,129 @@ TEST_F(RendererTest, SameDrawListTwiceGivesIdenticalPixels) {
   const media::Image a = renderer_->render(list);
   const media::Image b = renderer_->render(list);
   EXPECT_EQ(a.rgba, b.rgba);
+}
+
+// A two-view frame whose static part (a shadowed checker floor, a glass
+// sphere, lines, labels) stays while a ball, its trail, an arrow and a live
+// label move: frame k of a short clip.
+DrawList clipFrame(int k) {
+  DrawList list;
+  list.width = 160;
+  list.height = 72;
+  View ballView = cameraView(96, 72);
+  ballView.camera.position = {0, -4, 3};
+  ballView.camera.viewFromWorld = glm::lookAt(ballView.camera.position, glm::vec3(0), glm::vec3(0, 0, 1));
+  ballView.camera.clipFromView = glm::perspective(glm::radians(45.0f), 96.0f / 72.0f, 0.1f, 20.0f);
+  ballView.light.shadow = true;
+  ballView.light.shadowRadius = 3.0f;
+  ballView.light.shadowCenter = {0.3f * float(k) - 0.8f, 0, 0};
+  ballView.light.shadowSoftness = 0.15f;
+  View twin = cameraView(64, 72);
+  twin.x = 96;
+  list.views = {ballView, twin};
+  // Meshes are shared across frames, as a SceneDrawer's are: the layer
+  // compares static meshes by pointer.
+  static const std::shared_ptr<MeshData> floorMesh = parametricPatch(
+      [](float a, float b, glm::vec3& p, glm::vec3& n) {
+        p = {4.0f * a - 2.0f, 4.0f * b - 2.0f, 0.0f};
+        n = {0, 0, 1};
+      },
+      2, 2, glm::vec2(8.0f));
+  static const std::shared_ptr<MeshData> sphere = uvSphere(32, 16);
+  MeshItem floor;
+  floor.mesh = floorMesh;
+  floor.material.pattern = Pattern::Checker;
+  floor.material.castsShadow = false;
+  floor.material.receivesShadow = true;
+  floor.material.specular = 0.0f;
+  list.meshes.push_back(floor);
+  MeshItem glass;
+  glass.mesh = sphere;
+  glass.material.opacity = 0.2f;
+  glass.view = 1;
+  list.meshes.push_back(glass);
+  MeshItem ball;
+  ball.mesh = sphere;
+  ball.worldFromModel = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.3f * float(k) - 0.8f, 0, 0.4f)),
+                                   glm::vec3(0.4f));
+  ball.material.color = {0.8f, 0.7f, 0.1f};
+  ball.dynamic = true;
+  list.meshes.push_back(ball);
+  PolylineItem path;
+  path.points = {{-2, 0.5f, 0}, {2, 0.5f, 0}};
+  list.polylines.push_back(path);
+  PolylineItem trail;
+  trail.dynamic = true;
+  trail.color = {1, 0.4f, 0, 1};
+  for (int j = 0; j <= k; ++j) trail.points.push_back({0.3f * float(j) - 0.8f, -0.5f, 0.0f});
+  list.polylines.push_back(trail);
+  list.arrows.push_back({glm::vec3(0), glm::vec3(std::cos(0.5f * float(k)), std::sin(0.5f * float(k)), 0.5f), 0.05f,
+                         glm::vec3(0.8f, 0.1f, 0.1f), 1, true});
+  LabelItem heading;
+  heading.text = "static";
+  heading.anchor = {4, 8, 0};
+  heading.sizePx = 10;
+  heading.view = 1;
+  list.labels.push_back(heading);
+  LabelItem live = heading;
+  live.text = "s = " + std::to_string(k);
+  live.anchor = {4, 60, 0};
+  live.view = 0;
+  live.dynamic = true;
+  list.labels.push_back(live);
+  return list;
+}
+
+// Equal images; otherwise says how many pixels differ, and where.
+::testing::AssertionResult sameBytes(const media::Image& a, const media::Image& b) {
+  if (a.width != b.width || a.height != b.height) return ::testing::AssertionFailure() << "sizes differ";
+  int count = 0, x0 = a.width, y0 = a.height, x1 = -1, y1 = -1;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x)
+      if (std::memcmp(a.pixel(x, y), b.pixel(x, y), 4) != 0) {
+        ++count;
+        x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+      }
+  if (count == 0) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << count << " pixels differ, in x " << x0 << "…" << x1 << ", y " << y0 << "…"
+                                       << y1;
+}
+
+// The retained layer must not leak state between frames: frames drawn in
+// order (most over the layer), out of order, and each drawn whole by a
+// renderer that keeps no layer all give the same bytes.
+TEST_F(RendererTest, RetainedLayerFramesMatchFramesDrawnWholeInAnyOrder) {
+  constexpr int kFrames = 6;
+  std::vector<media::Image> whole(kFrames);
+  {
+    Renderer plain(*context_, ShaderLibrary{});
+    plain.setRetainLayers(false);
+    for (int k = 0; k < kFrames; ++k) whole[k] = plain.render(clipFrame(k));
+    EXPECT_EQ(plain.stats().retainedFrames, 0);
+  }
+  // The frames differ (the test would prove nothing otherwise).
+  EXPECT_NE(whole[0].rgba, whole[1].rgba);
+  Renderer inOrder(*context_, ShaderLibrary{});
+  for (int k = 0; k < kFrames; ++k) EXPECT_TRUE(sameBytes(inOrder.render(clipFrame(k)), whole[k])) << "frame " << k;
+  EXPECT_EQ(inOrder.stats().layerBuilds, 1);
+  EXPECT_EQ(inOrder.stats().retainedFrames, kFrames - 1);
+  EXPECT_GT(inOrder.stats().redrawnPixels, 0);
+  EXPECT_LT(inOrder.stats().redrawnPixels, inOrder.stats().retainedPixels);
+  Renderer shuffled(*context_, ShaderLibrary{});
+  for (int k : {4, 1, 5, 0, 3, 2, 4, 4, 1})
+    EXPECT_TRUE(sameBytes(shuffled.render(clipFrame(k)), whole[k])) << "frame " << k;
+  EXPECT_GT(shuffled.stats().retainedFrames, 5);
+  // A static item that changes (here the floor's colour) makes a new layer.
+  DrawList changed = clipFrame(2);
+  changed.meshes[0].material.color = {0.2f, 0.5f, 0.3f};
+  Renderer plain(*context_, ShaderLibrary{});
+  plain.setRetainLayers(false);
+  const media::Image expected = plain.render(changed);
+  EXPECT_NE(expected.rgba, whole[2].rgba);
+  EXPECT_EQ(shuffled.render(changed).rgba, expected.rgba);
+  changed = clipFrame(3);
+  changed.meshes[0].material.color = {0.2f, 0.5f, 0.3f};
+  EXPECT_EQ(shuffled.render(changed).rgba, plain.render(changed).rgba);
 }
 
 TEST(ShaderLibrary, ShadersAreEmbeddedAndOverridable) {

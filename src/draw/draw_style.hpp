@@ -1,0 +1,50 @@
+// The drawing's shared look: the palette (linear RGB), the body text size,
+// the glass material, and the Eigen → glm conversions every view uses.
+#pragma once
+
+#include <algorithm>
+#include <numbers>
+
+#include <glm/glm.hpp>
+
+#include "geometry/surface.hpp"
+#include "render/draw_list.hpp"
+#include "spin/su2.hpp"
+
+namespace rollspin::draw {
+
+inline constexpr double kDeg = std::numbers::pi / 180.0;
+
+// The palette: muted surfaces, saturated actors (linear RGB).
+inline const glm::vec3 kMarkerColor{0.80f, 0.04f, 0.03f};
+inline const glm::vec3 kFieldColor{0.03f, 0.22f, 0.78f};
+inline const glm::vec4 kPathColor{0.10f, 0.16f, 0.32f, 0.55f};
+inline const glm::vec4 kTravelledColor{0.95f, 0.33f, 0.02f, 1.0f};
+inline const glm::vec4 kTextColor{0.04f, 0.05f, 0.07f, 1.0f};
+
+inline glm::vec3 toGlm(const geometry::Vec3& v) { return {float(v.x()), float(v.y()), float(v.z())}; }
+
+// worldFromBody as a glm matrix (the rotation of U).
+inline glm::mat4 rotationOf(const spin::Su2& q) {
+  const spin::Mat3 r = q.rotationMatrix();
+  glm::mat4 m(1.0f);
+  for (int c = 0; c < 3; ++c)
+    for (int row = 0; row < 3; ++row) m[c][row] = float(r(row, c));
+  return m;
+}
+
+// Body text height in pixels for an image `imageHeight` pixels high.
+inline float bodyTextPx(int imageHeight) { return std::max(11.0f, float(imageHeight) / 42.0f); }
+
+// A clear, shiny, shadowless sheet (Brockett's plate, the Bloch sphere).
+inline render::Material glassMaterial(const glm::vec3& tint, float opacity, float specular, float shininess) {
+  render::Material glass;
+  glass.color = tint;
+  glass.opacity = opacity;
+  glass.specular = specular;
+  glass.shininess = shininess;
+  glass.castsShadow = false;
+  return glass;
+}
+
+}  // namespace rollspin::draw

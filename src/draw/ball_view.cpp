@@ -12,6 +12,7 @@
 #include "draw/draw_facts.hpp"
 #include "draw/draw_style.hpp"
 #include "draw/text_blocks.hpp"
+#include "draw/clip_layout.hpp"
 #include "render/mesh_builders.hpp"
 #include "render/procedural_textures.hpp"
 
@@ -199,7 +200,6 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
 void BallView::add(render::DrawList& list, const FrameOrientations& frame, int view) const {
   const double R = model_.ballRadius;
   const double s = frame.current.s;
-  const float text = bodyTextPx(list.height);
 
   if (surfaceMesh_) list.meshes.push_back({surfaceMesh_, glm::mat4(1.0f), surfaceMaterial_, view});
   if (!cutRim_.empty()) {
@@ -311,20 +311,6 @@ void BallView::add(render::DrawList& list, const FrameOrientations& frame, int v
   }
   if (facts_ && facts_->marks) addMarks(list, s, frame.strobe.empty(), view);
 
-  if (spec_.render.labels) {
-    addHeading(list, frame.strobe.empty() ? "rolling ball" : fmt::format("rolling ball at {} positions", frame.strobe.size()),
-               view);
-    const spin::AngleAxis aa = spin::rotationAngleAxis(frame.current.q);
-    const double psi = spin::spinorAngle(frame.current.q);
-    if (frame.strobe.empty())
-      addCornerLines(list,
-                     {{fmt::format("s = {:.2f} of {:.2f}", s, model_.path->length()), kTextColor},
-                      {fmt::format("rotation angle = {:.1f}°", aa.angle / kDeg), kTextColor},
-                      {fmt::format("spinor angle ψ = {:.1f}°", psi / kDeg), kTextColor}},
-                     view);
-    // The scene's facts (draw_facts formats them) under the view's heading.
-    if (facts_) addFactBlock(list, factLines(*facts_, frame, model_.path->length()), view, text * 0.8f + text * 2.0f);
-  }
 }
 
 Vec3 BallView::platePoint(double s, double lift) const {
@@ -348,7 +334,7 @@ std::pair<Vec3, double> BallView::plateDisc(double s) const {
 // numbered.
 void BallView::addMarks(render::DrawList& list, double s, bool plateShown, int view) const {
   const double R = model_.ballRadius;
-  const float text = bodyTextPx(list.height);
+  const float text = bodyTextPx(list.height, spec_.render.fontScale);
   const MarksFact& m = *facts_->marks;
   const int passed = facts_->marksPassed(s);
   // Labels are drawn over everything: leave out a number the ball hides
@@ -393,4 +379,70 @@ void BallView::addMarks(render::DrawList& list, double s, bool plateShown, int v
     list.labels.push_back(number);
   }
 }
+std::vector<TextBlock> BallView::textBlocks(const FrameOrientations& frame, float text, float viewWidth) const {
+  std::vector<TextBlock> blocks(2);
+  if (!spec_.render.labels) return blocks;
+  // The heading and the scene's facts (draw_facts formats them), top left
+  // where there is room.
+  TextBlock& facts = blocks[0];
+  facts.slots = {Slot::TopLeft, Slot::TopRight};
+  facts.lines.push_back({frame.strobe.empty() ? "rolling ball" : fmt::format("rolling ball at {} positions", frame.strobe.size()),
+                         text * 1.1f, true, kTextColor});
+  if (facts_) {
+    const std::vector<std::string> lines = factLines(*facts_, frame, model_.path->length());
+    // Lines too long for the view shrink rather than leave it.
+    const float size = sizeToFit(lines, 0.92f * viewWidth, text, false);
+    for (const std::string& line : lines) facts.lines.push_back({line, size, false, kTextColor});
+  }
+  // The running values, bottom left.
+  if (frame.strobe.empty()) {
+    TextBlock& live = blocks[1];
+    live.slots = {Slot::BottomLeft, Slot::BottomRight};
+    const spin::AngleAxis aa = spin::rotationAngleAxis(frame.current.q);
+    const double psi = spin::spinorAngle(frame.current.q);
+    for (const std::string& line : {fmt::format("s = {:.2f} of {:.2f}", frame.current.s, model_.path->length()),
+                                    fmt::format("lab rotation angle = {:.1f}°", aa.angle / kDeg),
+                                    fmt::format("spinor angle ψ = {:.1f}°", psi / kDeg)})
+      live.lines.push_back({line, text, false, kTextColor});
+  }
+  return blocks;
+}
+
+void BallView::markImportant(Occupancy& occupancy, const render::View& v, double s, bool withPath) const {
+  const double R = model_.ballRadius;
+  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+  const float focalPx = 0.5f * float(v.height) * v.camera.clipFromView[1][1];
+  auto project = [&](const Vec3& p, float& depth) {
+    const glm::vec4 c = clipFromWorld * glm::vec4(toGlm(p), 1.0f);
+    depth = c.w;
+    return glm::vec2((c.x / c.w * 0.5f + 0.5f) * float(v.width), (0.5f - c.y / c.w * 0.5f) * float(v.height));
+  };
+  float depth = 0.0f;
+  const glm::vec2 ball = project(model_.path->at(s).centre(R), depth);
+  // A sphere's outline is a little wider than R f / depth; its shadow and
+  // the marker dot stay within 1.15 R of the centre.
+  if (depth > float(R)) occupancy.disc(ball, 1.15f * float(R) * focalPx / std::sqrt(depth * depth - float(R * R)) + 2.0f);
+  const float lineHalf = std::max(2.0f, float(v.height) / 250.0f);
+  auto markCurve = [&](auto pointAt, std::size_t count) {
+    glm::vec2 previous;
+    bool havePrevious = false;
+    for (std::size_t i = 0; i < count; ++i) {
+      const glm::vec2 p = project(pointAt(i), depth);
+      if (depth <= 0.0f) {
+        havePrevious = false;
+        continue;
+      }
+      if (havePrevious) occupancy.segment(previous, p, lineHalf);
+      previous = p;
+      havePrevious = true;
+    }
+  };
+  const std::size_t step = std::max<std::size_t>(1, pathPoints_.size() / 400);
+  if (withPath) markCurve([&](std::size_t i) { return pathPoints_[std::min(i * step, pathPoints_.size() - 1)]; },
+                          (pathPoints_.size() + step - 1) / step + 1);
+  if (model_.plate && spec_.render.strobe <= 1)
+    markCurve([&](std::size_t i) { return platePoint(std::min(pathS_[std::min(i * step, pathS_.size() - 1)], s), 0.0); },
+              (pathS_.size() + step - 1) / step + 1);
+}
+
 }  // namespace rollspin::draw

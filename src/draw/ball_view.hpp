@@ -30,6 +30,13 @@ class BallView {
   [[nodiscard]] const FrameExtent& extent() const { return extent_; }
 
   void add(render::DrawList& list, const motion::FrameOrientations& frame, int view) const;
+  // The view's text for this frame: {heading and facts, running values}
+  // (empty blocks when labels are off); `text` is the body size in pixels.
+  [[nodiscard]] std::vector<TextBlock> textBlocks(const motion::FrameOrientations& frame, float text,
+                                                  float viewWidth) const;
+  // Marks what the view shows at s that text must not cover: the ball and
+  // (withPath) the contact path; the plate's trail so far.
+  void markImportant(Occupancy& occupancy, const render::View& v, double s, bool withPath) const;
 
  private:
   void addMarks(render::DrawList& list, double s, bool plateShown, int view) const;

@@ -46,6 +46,21 @@ render::View orbitView(int x, int y, int w, int h, const glm::vec3& target, doub
   return v;
 }
 
+Lens windowLens(const NdcWindow& window, double fovDeg, double aspect) {
+  const double tanV = std::tan(0.5 * fovDeg * kDeg), tanH = tanV * aspect;
+  const double windowTanV = 0.5 * (window.y1 - window.y0) * tanV, windowTanH = 0.5 * (window.x1 - window.x0) * tanH;
+  return {2.0 * std::atan(windowTanV) / kDeg, windowTanH / windowTanV};
+}
+
+bool isWholeView(const NdcWindow& w) { return w.x0 == -1.0 && w.x1 == 1.0 && w.y0 == -1.0 && w.y1 == 1.0; }
+
+glm::mat4 offAxisProjection(const NdcWindow& window, double fovDeg, double aspect, float nearPlane, float farPlane) {
+  const double tanV = std::tan(0.5 * fovDeg * kDeg), tanH = tanV * aspect;
+  const double cx = 0.5 * (window.x0 + window.x1), cy = 0.5 * (window.y0 + window.y1);
+  return glm::frustum(float((-1.0 - cx) * tanH) * nearPlane, float((1.0 - cx) * tanH) * nearPlane,
+                      float((-1.0 - cy) * tanV) * nearPlane, float((1.0 - cy) * tanV) * nearPlane, nearPlane, farPlane);
+}
+
 // Distance at which a sphere of radius r fills the smaller field of view.
 double fitDistance(double radius, double fovDeg, double aspect) {
   const double halfV = 0.5 * fovDeg * kDeg;
@@ -140,14 +155,21 @@ CameraFraming::CameraFraming(const scene::SceneSpec& spec, const model::RollingM
   if (shots_.empty()) shots_.push_back(shot);
 }
 
+bool CameraFraming::fixedByScene() const {
+  return std::all_of(shots_.begin(), shots_.end(), [](const Shot& s) { return s.follow || (s.target && s.distance); });
+}
+
 CameraFraming::Aim CameraFraming::aimOf(const Shot& shot, int w, int h, double s) const {
   const OrbitAngles a{shot.azimuth, shot.elevation};
   const double R = model_.ballRadius;
-  const double aspect = double(w) / double(std::max(h, 1));
-  auto [target, distance] = fitPoints(extent_.points, R, a, shot.fovDeg, aspect);
+  // Fit into the window: a narrower field of view about its centre (the
+  // projection is shifted off axis to put that centre there, ballCamera).
+  const Lens lens = windowLens(window_, shot.fovDeg, double(w) / double(std::max(h, 1)));
+  const double fovDeg = lens.fovDeg, aspect = lens.aspect;
+  auto [target, distance] = fitPoints(extent_.points, R, a, fovDeg, aspect);
   if (shot.follow) {
     target = model_.path->at(s).centre(R);
-    distance = fitDistance(4.0 * R, shot.fovDeg, aspect);
+    distance = fitDistance(4.0 * R, fovDeg, aspect);
   }
   if (shot.target) target = *shot.target;
   if (shot.distance) distance = *shot.distance;
@@ -174,7 +196,16 @@ render::View CameraFraming::ballCamera(int x, int y, int w, int h, double s, con
   const OrbitAngles a{aim.azimuth, aim.elevation};
   const double R = model_.ballRadius;
   const Vec3 target = aim.target;
-  render::View v = orbitView(x, y, w, h, toGlm(target), aim.distance, a, aim.fovDeg, extent_.radius + 3.0 * R);
+  const double sceneRadius = extent_.radius + 3.0 * R;
+  render::View v = orbitView(x, y, w, h, toGlm(target), aim.distance, a, aim.fovDeg, sceneRadius);
+  if (!isWholeView(window_)) {
+    // Off axis: the view's axis (through the target) meets the image at the
+    // window's centre, not the view's.
+    const float nearPlane = float(std::max(0.02 * aim.distance, aim.distance - 2.5 * sceneRadius));
+    const float farPlane = float(aim.distance + 4.0 * sceneRadius);
+    v.camera.clipFromView =
+        offAxisProjection(window_, aim.fovDeg, double(w) / double(std::max(h, 1)), nearPlane, farPlane);
+  }
   glm::vec3 up(0, 0, 1);
   if (const auto* plane = dynamic_cast<const geometry::Plane*>(model_.surface.get())) {
     up = toGlm(plane->normal());

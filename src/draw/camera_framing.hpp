@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "draw/clip_layout.hpp"
 #include "geometry/surface.hpp"
 #include "model/rolling_model.hpp"
 #include "motion/frame_sampling.hpp"
@@ -37,6 +38,16 @@ render::Light keyLight(const glm::vec3& up, const glm::vec3& eyeDirection, const
 // along the orbit angles, z up; near/far planes enclose sceneRadius.
 render::View orbitView(int x, int y, int w, int h, const glm::vec3& target, double distance, const OrbitAngles& a,
                        double fovDeg, double sceneRadius);
+
+// The narrower lens that frames a subject into `window` of a view seen with
+// (fovDeg, aspect), and the off-axis projection that puts that lens's axis
+// at the window's centre.
+struct Lens {
+  double fovDeg, aspect;
+};
+Lens windowLens(const NdcWindow& window, double fovDeg, double aspect);
+bool isWholeView(const NdcWindow& window);
+glm::mat4 offAxisProjection(const NdcWindow& window, double fovDeg, double aspect, float nearPlane, float farPlane);
 
 // Distance at which a sphere of radius r fills the smaller field of view.
 double fitDistance(double radius, double fovDeg, double aspect);
@@ -75,6 +86,13 @@ class CameraFraming {
   // The ball view's camera and key light for the rectangle (x, y, w, h).
   [[nodiscard]] render::View ballCamera(int x, int y, int w, int h, double s, const motion::StoryPlace& story) const;
 
+  // Frame the subject into this part of the ball view (the rest is left to
+  // text); the full view by default. Explicit distance/target keys ignore it.
+  void setWindow(const NdcWindow& window) { window_ = window; }
+  // Whether the scene fixes the camera itself (target and distance, or
+  // follow), so that the framing cannot make room for text.
+  [[nodiscard]] bool fixedByScene() const;
+
  private:
   struct Shot {
     double azimuth = 0.0, elevation = 0.0, fovDeg = 32.0;  // radians, radians, degrees
@@ -87,6 +105,7 @@ class CameraFraming {
   const scene::SceneSpec& spec_;
   const model::RollingModel& model_;
   FrameExtent extent_;
+  NdcWindow window_;
   std::vector<Shot> shots_;  // one per storyboard segment (one for a scene without segments)
 };
 

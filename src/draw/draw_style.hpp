@@ -33,8 +33,13 @@ inline glm::mat4 rotationOf(const spin::Su2& q) {
   return m;
 }
 
-// Body text height in pixels for an image `imageHeight` pixels high.
-inline float bodyTextPx(int imageHeight) { return std::max(11.0f, float(imageHeight) / 42.0f); }
+// Body text size (em) in pixels for an image `imageHeight` pixels high:
+// with the 1.4 em line step a body line takes 1/25.7 of the height (the
+// issue asks ≥ 1/28), the same look at 480p, 1080p and 4K; render.font_scale
+// multiplies it.
+inline float bodyTextPx(int imageHeight, double fontScale = 1.0) {
+  return std::max(11.0f, float(imageHeight) / 36.0f * float(fontScale));
+}
 
 // A clear, shiny, shadowless sheet (Brockett's plate, the Bloch sphere).
 inline render::Material glassMaterial(const glm::vec3& tint, float opacity, float specular, float shininess) {

@@ -3,12 +3,32 @@
 #include <algorithm>
 #include <cmath>
 
+#include "draw/draw_style.hpp"
 #include "draw/text_blocks.hpp"
 #include "render/mesh_builders.hpp"
 
 namespace rollspin::draw {
 
 using geometry::Vec3;
+
+namespace {
+
+const glm::vec4 kCaptionColor{0.55f, 0.12f, 0.02f, 1.0f};
+
+// A segment's caption: the lecturer's own text, so it shows even with
+// render.labels = false; top centre, else bottom centre.
+TextBlock captionBlock(const std::string& caption, float text, float viewWidth) {
+  TextBlock block;
+  block.slots = {Slot::TopCentre, Slot::BottomCentre};
+  block.centred = true;
+  if (caption.empty()) return block;
+  const float preferred = text * 1.2f, width = textWidthPx(caption, preferred, true);
+  const float size = width > 0.9f * viewWidth ? preferred * 0.9f * viewWidth / width : preferred;
+  block.lines.push_back({caption, size, true, kCaptionColor});
+  return block;
+}
+
+}  // namespace
 
 SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model,
                          std::shared_ptr<const render::TextureImage> ballTexture,
@@ -27,6 +47,133 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
     twin_ = std::make_unique<TwinView>(spec, model, facts, markerBody_, dotMesh);
   ball_ = std::make_unique<BallView>(spec, model, std::move(ballTexture), std::move(facts), markerBody_, dotMesh);
   camera_ = std::make_unique<CameraFraming>(spec, model, ball_->extent());
+  layOut(model);
+}
+
+// The views' rectangles, as addViews cuts the image.
+SceneDrawer::Rects SceneDrawer::rects() const {
+  const int W = int(spec_.render.width), H = int(spec_.render.height);
+  const int top = titleBand_ ? static_cast<int>(std::lround(text() * 2.4f)) : 0;
+  const int bodyHeight = H - top;
+  Rects r;
+  switch (spec_.render.layout) {
+    case scene::RenderLayout::SideBySide: {
+      const int ballWidth = static_cast<int>(std::lround(W * 0.6));
+      r.ball = {0, top, ballWidth, bodyHeight};
+      r.twin = {ballWidth, top, W - ballWidth, bodyHeight};
+      break;
+    }
+    case scene::RenderLayout::Inset: {
+      r.ball = {0, top, W, bodyHeight};
+      const int margin = static_cast<int>(std::lround(H * 0.025));
+      const int side = static_cast<int>(std::lround(std::min(W, bodyHeight) * 0.42));
+      r.twin = {W - side - margin, top + margin, side, side};
+      r.inset = true;
+      break;
+    }
+    case scene::RenderLayout::Ball: r.ball = {0, top, W, bodyHeight}; break;
+    case scene::RenderLayout::Twin: r.twin = {0, top, W, bodyHeight}; break;
+  }
+  return r;
+}
+
+float SceneDrawer::text() const { return bodyTextPx(int(spec_.render.height), spec_.render.fontScale); }
+
+std::vector<TextBlock> SceneDrawer::ballBlocks(const FrameOrientations& frame, float viewWidth) const {
+  std::vector<TextBlock> blocks = ball_->textBlocks(frame, text(), viewWidth);
+  blocks.push_back(captionBlock(captionAt(frame.story), text(), viewWidth));
+  return blocks;
+}
+
+std::vector<TextBlock> SceneDrawer::twinBlocks(const FrameOrientations& frame, float viewWidth, bool inset) const {
+  std::vector<TextBlock> blocks = twin_->textBlocks(inset, text());
+  if (spec_.render.layout == scene::RenderLayout::Twin)
+    blocks.push_back(captionBlock(captionAt(frame.story), text(), viewWidth));
+  return blocks;
+}
+
+const std::string& SceneDrawer::captionAt(const StoryPlace& story) const {
+  static const std::string none;
+  return spec_.segments.empty() ? none : spec_.segments[std::min(story.segment, spec_.segments.size() - 1)].caption;
+}
+
+// Before the first frame: every block's size over the clip (measured at its
+// start and end, and each caption), then where it goes (clip_layout).
+void SceneDrawer::layOut(const RollingModel& model) {
+  const Rects r = rects();
+  const double L = model.path->length();
+  std::vector<FrameOrientations> samples(2);
+  samples[1].current.s = L;
+  for (auto& f : samples)
+    if (spec_.render.strobe > 1) f.strobe.resize(std::size_t(spec_.render.strobe));
+  for (std::size_t k = 1; k < spec_.segments.size(); ++k) {
+    FrameOrientations f = samples[1];
+    f.story.segment = k;
+    samples.push_back(f);
+  }
+  auto reserve = [&](auto blocksOf) {
+    std::vector<TextBlock> widest = blocksOf(samples[0]);
+    for (const auto& f : samples) {
+      std::vector<TextBlock> b = blocksOf(f);
+      for (std::size_t i = 0; i < b.size(); ++i) {
+        glm::vec2 size = blockSize(b[i]);
+        size.x *= 1.06f;  // digits vary from frame to frame
+        widest[i].minSize = glm::max(widest[i].minSize, size);
+        if (b[i].lines.size() > widest[i].lines.size()) widest[i].lines = b[i].lines;
+      }
+    }
+    return widest;
+  };
+
+  // The arc lengths the clip shows, about two per ball radius, each with
+  // its settled camera and (after a storyboard's cut) the previous one.
+  const int count = int(std::clamp(std::ceil(L / (0.5 * model.ballRadius)), 48.0, 240.0));
+  if (r.ball.width > 0) {
+    const std::vector<TextBlock> blocks = reserve([&](const FrameOrientations& f) { return ballBlocks(f, float(r.ball.width)); });
+    for (const TextBlock& b : blocks) ballReserved_.push_back(b.minSize);
+    auto occupancyFor = [&](const NdcWindow& window) {
+      camera_->setWindow(window);
+      Occupancy occupancy(r.ball.width, r.ball.height);
+      glm::mat4 marked(0.0f);
+      for (int i = 0; i < count; ++i) {
+        const double s = L * i / (count - 1);
+        StoryPlace story = motion::storyPlaceAt(model, s);
+        std::vector<StoryPlace> places{story};
+        if (story.segment > 0) places.push_back({story.segment, 0.0, story.duration});
+        for (const StoryPlace& place : places) {
+          const render::View v = camera_->ballCamera(0, 0, r.ball.width, r.ball.height, s, place);
+          const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+          ball_->markImportant(occupancy, v, s, clipFromWorld != marked);  // the path once per camera
+          marked = clipFromWorld;
+        }
+      }
+      return occupancy;
+    };
+    ballLayout_ = layoutView(r.ball.width, r.ball.height, blocks, occupancyFor, camera_->fixedByScene());
+    camera_->setWindow(ballLayout_.window);
+  }
+  if (twin_) {
+    const std::vector<TextBlock> blocks =
+        reserve([&](const FrameOrientations& f) { return twinBlocks(f, float(r.twin.width), r.inset); });
+    for (const TextBlock& b : blocks) twinReserved_.push_back(b.minSize);
+    auto occupancyFor = [&](const NdcWindow& window) {
+      twin_->setWindow(window);
+      render::DrawList scratch;
+      scratch.width = int(spec_.render.width);
+      scratch.height = int(spec_.render.height);
+      render::View v;
+      v.width = r.twin.width;
+      v.height = r.twin.height;
+      scratch.views.push_back(v);
+      FrameOrientations f;
+      twin_->add(scratch, f, 0, camera_->aimAt(StoryPlace{}, r.twin.width, r.twin.height, 0.0));
+      Occupancy occupancy(r.twin.width, r.twin.height);
+      twin_->markImportant(occupancy, scratch.views[0]);
+      return occupancy;
+    };
+    twinLayout_ = layoutView(r.twin.width, r.twin.height, blocks, occupancyFor, false);
+    twin_->setWindow(twinLayout_.window);
+  }
 }
 
 render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
@@ -37,70 +184,47 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
   list.msaaSamples = static_cast<int>(rs.msaa);
   list.transparent = rs.transparent;
 
-  int top = 0;
   // A segment's title replaces render.title while it plays; the band stays
   // for the whole clip when any title is set, so the views never jump.
   const scene::SegmentSpec* segment =
       spec_.segments.empty() ? nullptr : &spec_.segments[std::min(frame.story.segment, spec_.segments.size() - 1)];
-  if (titleBand_) top = addTitleBand(list, segment && segment->title ? *segment->title : rs.title);
-  addViews(list, frame, top);
+  if (titleBand_) addTitleBand(list, segment && segment->title ? *segment->title : rs.title, text());
+  addViews(list, frame);
   return list;
 }
 
-void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& frame, int top) const {
-  const int W = list.width, H = list.height;
-  const int bodyHeight = H - top;
-  const std::string noCaption;
-  const std::string& caption =
-      spec_.segments.empty() ? noCaption
-                             : spec_.segments[std::min(frame.story.segment, spec_.segments.size() - 1)].caption;
+void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& frame) const {
+  const Rects r = rects();
   const double s = frame.current.s;
-  auto addBall = [&](int x, int w) {
-    list.views.push_back(camera_->ballCamera(x, top, w, bodyHeight, s, frame.story));
-    ball_->add(list, frame, int(list.views.size()) - 1);
-    addCaption(list, caption, int(list.views.size()) - 1);
+  auto place = [&](std::vector<TextBlock> blocks, const std::vector<glm::vec2>& reserved, const ViewLayout& layout,
+                   int view) {
+    for (std::size_t i = 0; i < blocks.size() && i < layout.origins.size(); ++i) {
+      blocks[i].minSize = reserved[i];
+      addTextBlock(list, blocks[i], layout.origins[i], view);
+    }
   };
-  // The twin looks along the ball camera's direction (its aim for the twin's
-  // own rectangle), so the marker and the Bloch arrow point the same way.
-  auto addTwin = [&](render::View twin) {
+  if (r.ball.width > 0) {
+    render::View v = camera_->ballCamera(r.ball.x, r.ball.y, r.ball.width, r.ball.height, s, frame.story);
+    list.views.push_back(v);
+    const int view = int(list.views.size()) - 1;
+    ball_->add(list, frame, view);
+    place(ballBlocks(frame, float(r.ball.width)), ballReserved_, ballLayout_, view);
+  }
+  if (twin_) {
+    render::View twin;
+    twin.x = r.twin.x;
+    twin.y = r.twin.y;
+    twin.width = r.twin.width;
+    twin.height = r.twin.height;
+    twin.frame = r.inset;
     list.views.push_back(twin);
-    twin_->add(list, frame, int(list.views.size()) - 1, camera_->aimAt(frame.story, twin.width, twin.height, s));
-  };
-  switch (spec_.render.layout) {
-    case scene::RenderLayout::SideBySide: {
-      const int ballWidth = static_cast<int>(std::lround(W * 0.6));
-      addBall(0, ballWidth);
-      render::View twin;
-      twin.x = ballWidth;
-      twin.y = top;
-      twin.width = W - ballWidth;
-      twin.height = bodyHeight;
-      addTwin(twin);
-      break;
-    }
-    case scene::RenderLayout::Inset: {
-      addBall(0, W);
-      const int margin = static_cast<int>(std::lround(H * 0.025));
-      const int side = static_cast<int>(std::lround(std::min(W, bodyHeight) * 0.42));
-      render::View twin;
-      twin.x = W - side - margin;
-      twin.y = top + margin;
-      twin.width = side;
-      twin.height = side;
-      twin.frame = true;
-      addTwin(twin);
-      break;
-    }
-    case scene::RenderLayout::Ball: addBall(0, W); break;
-    case scene::RenderLayout::Twin: {
-      render::View twin;
-      twin.y = top;
-      twin.width = W;
-      twin.height = bodyHeight;
-      addTwin(twin);
-      addCaption(list, caption, int(list.views.size()) - 1);
-      break;
-    }
+    const int view = int(list.views.size()) - 1;
+    // "linked": the twin looks along the ball camera's direction, so the
+    // marker and the Bloch arrow point the same way on screen; "fixed": the
+    // first shot's direction for the whole clip.
+    const StoryPlace story = spec_.render.twinCameraFixed ? StoryPlace{} : frame.story;
+    twin_->add(list, frame, view, camera_->aimAt(story, twin.width, twin.height, s));
+    place(twinBlocks(frame, float(twin.width), r.inset), twinReserved_, twinLayout_, view);
   }
 }
 

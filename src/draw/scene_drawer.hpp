@@ -10,8 +10,11 @@
 #pragma once
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "draw/ball_view.hpp"
+#include "draw/clip_layout.hpp"
 #include "draw/camera_framing.hpp"
 #include "draw/twin_view.hpp"
 #include "motion/frame_sampling.hpp"
@@ -48,7 +51,20 @@ class SceneDrawer {
   [[nodiscard]] const geometry::Vec3& markerBody() const { return markerBody_; }
 
  private:
-  void addViews(render::DrawList& list, const FrameOrientations& frame, int top) const;
+  struct Rect {
+    int x = 0, y = 0, width = 0, height = 0;
+  };
+  struct Rects {
+    Rect ball, twin;  // width 0: not shown
+    bool inset = false;
+  };
+  [[nodiscard]] Rects rects() const;
+  [[nodiscard]] float text() const;  // body text size in pixels
+  [[nodiscard]] const std::string& captionAt(const StoryPlace& story) const;
+  [[nodiscard]] std::vector<TextBlock> ballBlocks(const FrameOrientations& frame, float viewWidth) const;
+  [[nodiscard]] std::vector<TextBlock> twinBlocks(const FrameOrientations& frame, float viewWidth, bool inset) const;
+  void layOut(const RollingModel& model);
+  void addViews(render::DrawList& list, const FrameOrientations& frame) const;
 
   const scene::SceneSpec& spec_;
   geometry::Vec3 markerBody_;
@@ -56,6 +72,8 @@ class SceneDrawer {
   std::unique_ptr<TwinView> twin_;  // null when the layout shows no twin
   std::unique_ptr<BallView> ball_;  // with layout = "twin", only its path samples (for the framing)
   std::unique_ptr<CameraFraming> camera_;
+  ViewLayout ballLayout_, twinLayout_;  // decided per clip (layOut)
+  std::vector<glm::vec2> ballReserved_, twinReserved_;  // each block's size over the clip
 };
 
 }  // namespace rollspin::draw

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "draw/clip_layout.hpp"
 #include "draw/draw_style.hpp"
 
 namespace rollspin::draw {
@@ -17,8 +18,7 @@ float sizeToFit(const std::vector<std::string>& lines, float widthPx, float pref
   return std::max(7.0f, std::min(preferred, widthPx / ((bold ? 0.66f : 0.6f) * float(longest))));
 }
 
-int addTitleBand(render::DrawList& list, const std::string& titleText) {
-  const float text = bodyTextPx(list.height);
+int addTitleBand(render::DrawList& list, const std::string& titleText, float text) {
   const int top = static_cast<int>(std::lround(text * 2.4f));
   render::View band;
   band.width = list.width;
@@ -30,7 +30,9 @@ int addTitleBand(render::DrawList& list, const std::string& titleText) {
   title.text = titleText;
   title.anchor = glm::vec3(0.5f * list.width, 0.5f * top, 0.0f);
   title.align = render::Align::Center;
-  title.sizePx = text * 1.35f;
+  // Shrunk to fit the width when it is long: never cut by the frame.
+  const float preferred = text * 1.35f, width = textWidthPx(titleText, preferred, true);
+  title.sizePx = width > 0.94f * float(list.width) ? preferred * 0.94f * float(list.width) / width : preferred;
   title.bold = true;
   title.color = kTextColor;
   if (!titleText.empty()) list.labels.push_back(title);

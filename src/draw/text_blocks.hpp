@@ -19,7 +19,7 @@ float sizeToFit(const std::vector<std::string>& lines, float widthPx, float pref
 
 // A band across the top of the image holding the (centred) title; returns
 // its height in pixels. An empty title keeps the band (views never jump).
-int addTitleBand(render::DrawList& list, const std::string& title);
+int addTitleBand(render::DrawList& list, const std::string& title, float text);
 
 // A storyboard segment's caption, centred under the view's heading row.
 void addCaption(render::DrawList& list, const std::string& caption, int view);

@@ -12,6 +12,7 @@
 #include "draw/draw_facts.hpp"
 #include "draw/draw_style.hpp"
 #include "draw/text_blocks.hpp"
+#include "draw/clip_layout.hpp"
 #include "render/mesh_builders.hpp"
 #include "spin/field.hpp"
 
@@ -31,14 +32,21 @@ TwinView::TwinView(const scene::SceneSpec& spec, const model::RollingModel& mode
 void TwinView::add(render::DrawList& list, const motion::FrameOrientations& frame, int view,
                    const CameraFraming::Aim& aim) const {
   render::View& v = list.views[static_cast<std::size_t>(view)];
-  const float text = bodyTextPx(list.height);
+  const float text = bodyTextPx(list.height, spec_.render.fontScale);
   // Same viewing direction as the ball's camera, so the marker on the ball
   // and the Bloch arrow point the same way on screen.
   const OrbitAngles a{aim.azimuth, aim.elevation};
   const double aspect = double(v.width) / double(std::max(v.height, 1));
   const double sceneRadius = 1.42;
-  render::View oriented = orbitView(v.x, v.y, v.width, v.height, glm::vec3(0.0f, 0.0f, -0.04f),
-                                    fitDistance(sceneRadius, aim.fovDeg, aspect), a, aim.fovDeg, sceneRadius);
+  // Framed into the window the text leaves free (the whole view by default).
+  const Lens lens = windowLens(window_, aim.fovDeg, aspect);
+  const double distance = fitDistance(sceneRadius, lens.fovDeg, lens.aspect);
+  render::View oriented = orbitView(v.x, v.y, v.width, v.height, glm::vec3(0.0f, 0.0f, -0.04f), distance, a,
+                                    aim.fovDeg, sceneRadius);
+  if (!isWholeView(window_))
+    oriented.camera.clipFromView = offAxisProjection(window_, aim.fovDeg, aspect,
+                                                     float(std::max(0.02 * distance, distance - 2.5 * sceneRadius)),
+                                                     float(distance + 4.0 * sceneRadius));
   v.camera = oriented.camera;
   v.light = keyLight(glm::vec3(0, 0, 1), glm::normalize(v.camera.position), glm::vec3(0.0f), 1.5f);
   v.light.shadow = false;
@@ -135,15 +143,28 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
     list.labels.back().offsetPx = glm::vec2(1.6f * text, 0.0f);
     list.labels[list.labels.size() - 2].offsetPx = glm::vec2(1.6f * text, 0.0f);
 
-    // An inset is too small for a heading or a legend.
-    if (!v.frame) {
-      addHeading(list, "Bloch sphere", view);
-      addCornerLines(list,
-                     {{"● spin  X(s) = Q(s) X(0)", glm::vec4(kMarkerColor, 1.0f)},
-                      {"● field  B/|B|", glm::vec4(kFieldColor, 1.0f)}},
-                     view);
-    }
   }
+}
+
+std::vector<TextBlock> TwinView::textBlocks(bool inset, float text) const {
+  std::vector<TextBlock> blocks(2);
+  if (!spec_.render.labels || inset) return blocks;  // an inset is too small for a heading or a legend
+  blocks[0].slots = {Slot::TopLeft, Slot::TopRight};
+  blocks[0].lines.push_back({"Bloch sphere", text * 1.1f, true, kTextColor});
+  blocks[1].slots = {Slot::BottomLeft, Slot::BottomRight};
+  blocks[1].lines.push_back({"● spin  X(s) = Q(s) X(0)", text, false, glm::vec4(kMarkerColor, 1.0f)});
+  blocks[1].lines.push_back({"● field  B/|B|", text, false, glm::vec4(kFieldColor, 1.0f)});
+  return blocks;
+}
+
+void TwinView::markImportant(Occupancy& occupancy, const render::View& v) const {
+  // Everything the twin shows lies within the axes' labels at 1.3 of the
+  // origin: the sphere, the arrows, the trails, the cone.
+  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+  const glm::vec4 c = clipFromWorld * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  const glm::vec2 centre((c.x / c.w * 0.5f + 0.5f) * float(v.width), (0.5f - c.y / c.w * 0.5f) * float(v.height));
+  const float focalPx = 0.5f * float(v.height) * v.camera.clipFromView[1][1];
+  occupancy.disc(centre, 1.3f * focalPx / std::sqrt(c.w * c.w - 1.69f) + 4.0f);
 }
 
 }  // namespace rollspin::draw

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "draw/camera_framing.hpp"
 #include "model/rolling_model.hpp"
@@ -24,11 +25,17 @@ class TwinView {
   // Seen from the orbit angles and field of view of `aim`.
   void add(render::DrawList& list, const motion::FrameOrientations& frame, int view,
            const CameraFraming::Aim& aim) const;
+  // {heading, legend}: empty for an inset or with labels off.
+  [[nodiscard]] std::vector<TextBlock> textBlocks(bool inset, float text) const;
+  // Marks the disc the twin's sphere, arrows, trails and axis labels cover.
+  void markImportant(Occupancy& occupancy, const render::View& v) const;
+  void setWindow(const NdcWindow& window) { window_ = window; }
 
  private:
   const scene::SceneSpec& spec_;
   const model::RollingModel& model_;
   geometry::Vec3 markerBody_;
+  NdcWindow window_;
   std::shared_ptr<render::MeshData> dotMesh_, blochSphereMesh_, fieldConeMesh_;
 };
 

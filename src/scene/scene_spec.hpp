@@ -109,6 +109,8 @@ struct RenderSpec {
   std::optional<Vec3> target;
   bool follow = false;
   double fovDeg = 32.0;
+  double fontScale = 1.0;   // text size × this (README "Rendering"); body line ≥ 1/28 of the height at 1
+  bool twinCameraFixed = false;  // twin_camera = "fixed": the Bloch sphere keeps the first shot's view
   std::optional<VideoFormat> format;  // animations; default: from the output's extension, else mp4
 };
 

@@ -217,6 +217,8 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   else w.computed("target", "framed automatically");
   w.key("follow", boolean(r.follow));
   w.key("fov_deg", number(r.fovDeg));
+  w.key("font_scale", number(r.fontScale));
+  w.key("twin_camera", quoted(r.twinCameraFixed ? "fixed" : "linked"));
   if (r.format) w.key("format", quoted(*r.format == VideoFormat::Mp4 ? "mp4" : "png"));
   else w.computed("format", "from the output's extension, else mp4");
 

@@ -110,7 +110,9 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
         glm::vec2(24.0f, float(12.0 * (c1 - c0) / std::numbers::pi)));
     surfaceMaterial_.color = {0.72f, 0.74f, 0.78f};
     surfaceMaterial_.color2 = {0.52f, 0.56f, 0.62f};
-    for (int i = 0; i <= 8; ++i)
+    // Inside, the whole sphere frames the picture; outside, the ball and its
+    // path do (a small circle on a big sphere would otherwise be lost).
+    for (int i = 0; i <= 8 && sphere->side() == geometry::Side::Inside; ++i)
       for (int k = 0; k < 16; ++k) {
         const double th = c0 + (c1 - c0) * i / 8, phi = 2.0 * std::numbers::pi * k / 16;
         extent_.points.push_back(r * Vec3(std::sin(th) * std::cos(phi), std::sin(th) * std::sin(phi), std::cos(th)));
@@ -334,7 +336,7 @@ std::pair<Vec3, double> BallView::plateDisc(double s) const {
 // numbered.
 void BallView::addMarks(render::DrawList& list, double s, bool plateShown, int view) const {
   const double R = model_.ballRadius;
-  const float text = bodyTextPx(list.height, spec_.render.fontScale);
+  const float text = bodyTextPx(list.width, list.height, spec_.render.fontScale);
   const MarksFact& m = *facts_->marks;
   const int passed = facts_->marksPassed(s);
   // Labels are drawn over everything: leave out a number the ball hides
@@ -379,25 +381,26 @@ void BallView::addMarks(render::DrawList& list, double s, bool plateShown, int v
     list.labels.push_back(number);
   }
 }
-std::vector<TextBlock> BallView::textBlocks(const FrameOrientations& frame, float text, float viewWidth) const {
+std::vector<TextBlock> BallView::textBlocks(const FrameOrientations& frame, float text) const {
   std::vector<TextBlock> blocks(2);
   if (!spec_.render.labels) return blocks;
   // The heading and the scene's facts (draw_facts formats them), top left
   // where there is room.
   TextBlock& facts = blocks[0];
   facts.slots = {Slot::TopLeft, Slot::TopRight};
+  facts.keep = 3;  // the heading and the first fact; later lines give way where there is no room
   facts.lines.push_back({frame.strobe.empty() ? "rolling ball" : fmt::format("rolling ball at {} positions", frame.strobe.size()),
                          text * 1.1f, true, kTextColor});
   if (facts_) {
     const std::vector<std::string> lines = factLines(*facts_, frame, model_.path->length());
     // Lines too long for the view shrink rather than leave it.
-    const float size = sizeToFit(lines, 0.92f * viewWidth, text, false);
-    for (const std::string& line : lines) facts.lines.push_back({line, size, false, kTextColor});
+    for (const std::string& line : lines) facts.lines.push_back({line, text, false, kTextColor});
   }
   // The running values, bottom left.
   if (frame.strobe.empty()) {
     TextBlock& live = blocks[1];
-    live.slots = {Slot::BottomLeft, Slot::BottomRight};
+    live.slots = {Slot::BottomLeft, Slot::BottomRight, Slot::TopLeft};
+    live.keep = 1;
     const spin::AngleAxis aa = spin::rotationAngleAxis(frame.current.q);
     const double psi = spin::spinorAngle(frame.current.q);
     for (const std::string& line : {fmt::format("s = {:.2f} of {:.2f}", frame.current.s, model_.path->length()),

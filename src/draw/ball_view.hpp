@@ -32,8 +32,7 @@ class BallView {
   void add(render::DrawList& list, const motion::FrameOrientations& frame, int view) const;
   // The view's text for this frame: {heading and facts, running values}
   // (empty blocks when labels are off); `text` is the body size in pixels.
-  [[nodiscard]] std::vector<TextBlock> textBlocks(const motion::FrameOrientations& frame, float text,
-                                                  float viewWidth) const;
+  [[nodiscard]] std::vector<TextBlock> textBlocks(const motion::FrameOrientations& frame, float text) const;
   // Marks what the view shows at s that text must not cover: the ball and
   // (withPath) the contact path; the plate's trail so far.
   void markImportant(Occupancy& occupancy, const render::View& v, double s, bool withPath) const;

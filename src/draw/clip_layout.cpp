@@ -43,6 +43,17 @@ void Occupancy::segment(glm::vec2 a, glm::vec2 b, float halfWidth) {
   for (int i = 0; i <= steps; ++i) disc(a + (b - a) * (float(i) / float(steps)), halfWidth);
 }
 
+std::pair<glm::vec2, glm::vec2> Occupancy::bounds() const {
+  glm::vec2 lo(1e30f), hi(-1e30f);
+  for (int y = 0; y < cellsY_; ++y)
+    for (int x = 0; x < cellsX_; ++x)
+      if (cells_[std::size_t(y) * std::size_t(cellsX_) + std::size_t(x)] != 0) {
+        lo = glm::min(lo, glm::vec2(float(x), float(y)) * cell_);
+        hi = glm::max(hi, glm::vec2(float(x + 1), float(y + 1)) * cell_);
+      }
+  return {lo, hi};
+}
+
 bool Occupancy::anyIn(glm::vec2 lo, glm::vec2 hi) const {
   const int x0 = std::max(0, int(std::floor(lo.x / cell_))), x1 = std::min(cellsX_ - 1, int(std::floor(hi.x / cell_)));
   const int y0 = std::max(0, int(std::floor(lo.y / cell_))), y1 = std::min(cellsY_ - 1, int(std::floor(hi.y / cell_)));
@@ -60,6 +71,12 @@ float textWidthPx(const std::string& text, float sizePx, bool bold) {
   const int k = bold ? 1 : 0;
   std::call_once(once[k], [&] { atlas[k] = std::make_unique<render::FontAtlas>(render::defaultFontFile(bold), 64.0f); });
   return atlas[k]->layout(text, 0.0f, 0.0f, nullptr) * sizePx / 64.0f * 1.02f;
+}
+
+void fitWidth(TextBlock& block, float maxWidth) {
+  const float width = blockSize(block).x;
+  if (width <= maxWidth) return;
+  for (TextLine& l : block.lines) l.sizePx *= maxWidth / width;
 }
 
 glm::vec2 blockSize(const TextBlock& block) {
@@ -126,17 +143,35 @@ bool sameWindow(const NdcWindow& a, const NdcWindow& b) {
 
 }  // namespace
 
-ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
+ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& given,
                       const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow) {
   ViewLayout layout;
+  std::vector<TextBlock> blocks = given;
   std::vector<glm::vec2> sizes;
   for (const TextBlock& b : blocks) sizes.push_back(blockSize(b));
+  // No room even with the narrowest window: the failed block drops its last
+  // line (down to what it keeps), from the widest window again.
+  auto dropLine = [&](std::size_t i) {
+    TextBlock& b = blocks[i];
+    if (b.lines.empty() || b.lines.size() <= b.keep) return false;
+    const float step = kLineStep * b.lines.back().sizePx;
+    b.lines.pop_back();
+    sizes[i] = b.lines.empty() ? glm::vec2(0.0f) : glm::vec2(sizes[i].x, sizes[i].y - step);
+    layout.window = NdcWindow{};
+    return true;
+  };
+  auto finish = [&] {
+    layout.lines.clear();
+    for (const TextBlock& b : blocks) layout.lines.push_back(b.lines.size());
+    return layout;
+  };
   for (int attempt = 0;; ++attempt) {
     const Occupancy occupancy = occupancyFor(layout.window);
     layout.origins.assign(blocks.size(), glm::vec2(0.0f));
     std::vector<Rect> placed;
     int failed = -1;
     Rect failedRect{};
+    std::size_t placedBeforeFailed = 0;
     for (std::size_t i = 0; i < blocks.size(); ++i) {
       if (blocks[i].lines.empty()) continue;
       const float margin = 0.5f * blocks[i].lines.front().sizePx;
@@ -157,26 +192,52 @@ ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
         break;
       }
       if (!found) {
+        const std::size_t before = placed.size();
         const Rect r = stackedRect(blocks[i].slots.front(), sizes[i], w, h, margin, placed);
         layout.origins[i] = r.lo;
         placed.push_back(r);
         if (failed < 0) {
           failed = int(i);
           failedRect = r;
+          placedBeforeFailed = before;
         }
       }
     }
     if (std::getenv("ROLLSPIN_LAYOUT_DEBUG"))
-      std::fprintf(stderr, "layout %dx%d attempt %d window %.3f %.3f %.3f %.3f failed %d\n", w, h, attempt,
-                   layout.window.x0, layout.window.x1, layout.window.y0, layout.window.y1, failed);
-    if (failed < 0 || fixedWindow || attempt >= 10) return layout;
+      std::fprintf(stderr, "layout %dx%d attempt %d window %.3f %.3f %.3f %.3f failed %d (%g %g)-(%g %g) occ (%g %g)-(%g %g)\n", w, h, attempt,
+                   layout.window.x0, layout.window.x1, layout.window.y0, layout.window.y1, failed, failedRect.lo.x, failedRect.lo.y, failedRect.hi.x, failedRect.hi.y,
+                   occupancy.bounds().first.x, occupancy.bounds().first.y, occupancy.bounds().second.x, occupancy.bounds().second.y);
+    if (failed < 0 || attempt >= 40) return finish();
+    if (fixedWindow) {
+      if (dropLine(std::size_t(failed))) continue;
+      return finish();
+    }
     // Narrow the window to leave the failed block's column or band free,
     // whichever is the smaller share of the view; the other if that one is
     // taken already or leaves under 35 % of the view.
-    const Slot slot = blocks[std::size_t(failed)].slots.front();
+    // A side already given to text grows (the block stacks there) before a
+    // new one is taken.
+    auto sideTaken = [&](Slot sl) {
+      if (isTop(sl) && layout.window.y1 < 1.0) return true;
+      if (!isTop(sl) && layout.window.y0 > -1.0) return true;
+      if (!isCentre(sl) && isLeft(sl) && layout.window.x0 > -1.0) return true;
+      return !isCentre(sl) && !isLeft(sl) && layout.window.x1 < 1.0;
+    };
+    Slot slot = blocks[std::size_t(failed)].slots.front();
+    for (const Slot sl : blocks[std::size_t(failed)].slots)
+      if (sideTaken(sl)) {
+        slot = sl;
+        const std::vector<Rect> before(placed.begin(), placed.begin() + std::ptrdiff_t(placedBeforeFailed));
+        failedRect = stackedRect(sl, sizes[std::size_t(failed)], w, h,
+                                 0.5f * blocks[std::size_t(failed)].lines.front().sizePx, before);
+        break;
+      }
     const float margin = blocks[std::size_t(failed)].lines.front().sizePx;
-    const double column = isLeft(slot) ? double(failedRect.hi.x + margin) / w : double(w - failedRect.lo.x + margin) / w;
-    const double band = isTop(slot) ? double(failedRect.hi.y + margin) / h : double(h - failedRect.lo.y + margin) / h;
+    // (The fit pads the ball by R; perspective and the gap want a little more.)
+    const double column =
+        (isLeft(slot) ? double(failedRect.hi.x + 2.0f * margin) : double(w - failedRect.lo.x + 2.0f * margin)) / w + 0.02;
+    const double band =
+        (isTop(slot) ? double(failedRect.hi.y + 2.0f * margin) : double(h - failedRect.lo.y + 2.0f * margin)) / h + 0.02;
     auto narrowed = [&](bool byColumn) {
       NdcWindow win = layout.window;
       if (byColumn) {
@@ -190,12 +251,23 @@ ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
       return win;
     };
     auto usable = [&](const NdcWindow& win) {
-      return !sameWindow(win, layout.window) && win.x1 - win.x0 >= 0.7 && win.y1 - win.y0 >= 0.7;
+      return !sameWindow(win, layout.window) && win.x1 - win.x0 >= 0.6 && win.y1 - win.y0 >= 0.6;
     };
-    const bool columnFirst = !isCentre(slot) && column <= band;
+    // Which costs the subject less: its scale is limited by the window's
+    // width over its projected width, or height over height.
+    const auto [subjectLo, subjectHi] = occupancy.bounds();
+    const double subjectAspect =
+        subjectHi.x > subjectLo.x ? double(subjectHi.x - subjectLo.x) / double(subjectHi.y - subjectLo.y) : 1.0;
+    auto scaleLeft = [&](const NdcWindow& win) {
+      return std::min((win.x1 - win.x0) * w / subjectAspect, (win.y1 - win.y0) * double(h));
+    };
+    const bool columnFirst = !isCentre(slot) && scaleLeft(narrowed(true)) >= scaleLeft(narrowed(false));
     NdcWindow next = narrowed(columnFirst);
     if (!usable(next) && !isCentre(slot)) next = narrowed(!columnFirst);
-    if (!usable(next)) return layout;
+    if (!usable(next)) {
+      if (dropLine(std::size_t(failed))) continue;
+      return finish();
+    }
     layout.window = next;
   }
 }

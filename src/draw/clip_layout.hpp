@@ -14,6 +14,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -36,6 +37,8 @@ class Occupancy {
   void disc(glm::vec2 centre, float radius);
   void segment(glm::vec2 a, glm::vec2 b, float halfWidth);
   [[nodiscard]] bool anyIn(glm::vec2 lo, glm::vec2 hi) const;
+  // The marked cells' bounding box in pixels (lo > hi when none).
+  [[nodiscard]] std::pair<glm::vec2, glm::vec2> bounds() const;
   [[nodiscard]] int width() const { return width_; }
   [[nodiscard]] int height() const { return height_; }
 
@@ -61,16 +64,20 @@ struct TextBlock {
   bool plate = true;        // a translucent backing plate behind the text
   bool centred = false;     // lines centred in the block (a caption)
   glm::vec2 minSize{0.0f};  // the size reserved for it over the whole clip
+  std::size_t keep = 1000;  // lines that stay when there is no room for all (from the top)
 };
 
 // Advance width in pixels of `text` at `sizePx` in the label font.
 float textWidthPx(const std::string& text, float sizePx, bool bold);
+// Scales the block's type down (never up) until it is at most maxWidth wide.
+void fitWidth(TextBlock& block, float maxWidth);
 // The block's size in pixels (padding included).
 glm::vec2 blockSize(const TextBlock& block);
 
 struct ViewLayout {
   NdcWindow window;                // the camera frames the subject into this
   std::vector<glm::vec2> origins;  // each block's top-left corner, in view pixels
+  std::vector<std::size_t> lines;  // how many of each block's lines there is room for
 };
 
 // Places `blocks` in a view w × h. occupancyFor(window) projects the clip

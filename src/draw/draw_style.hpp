@@ -37,8 +37,10 @@ inline glm::mat4 rotationOf(const spin::Su2& q) {
 // with the 1.4 em line step a body line takes 1/25.7 of the height (the
 // issue asks ≥ 1/28), the same look at 480p, 1080p and 4K; render.font_scale
 // multiplies it.
-inline float bodyTextPx(int imageHeight, double fontScale = 1.0) {
-  return std::max(11.0f, float(imageHeight) / 36.0f * float(fontScale));
+// A portrait image sizes by 1.25 × its width instead (a 9:16 frame's height
+// would make lines wider than the frame).
+inline float bodyTextPx(int imageWidth, int imageHeight, double fontScale = 1.0) {
+  return std::max(11.0f, std::min(float(imageHeight), 1.25f * float(imageWidth)) / 36.0f * float(fontScale));
 }
 
 // A clear, shiny, shadowless sheet (Brockett's plate, the Bloch sphere).

@@ -58,9 +58,15 @@ SceneDrawer::Rects SceneDrawer::rects() const {
   Rects r;
   switch (spec_.render.layout) {
     case scene::RenderLayout::SideBySide: {
-      const int ballWidth = static_cast<int>(std::lround(W * 0.6));
-      r.ball = {0, top, ballWidth, bodyHeight};
-      r.twin = {ballWidth, top, W - ballWidth, bodyHeight};
+      if (W >= bodyHeight) {
+        const int ballWidth = static_cast<int>(std::lround(W * 0.6));
+        r.ball = {0, top, ballWidth, bodyHeight};
+        r.twin = {ballWidth, top, W - ballWidth, bodyHeight};
+      } else {  // a portrait image: the twin under the ball, each as wide as the image
+        const int ballHeight = static_cast<int>(std::lround(bodyHeight * 0.6));
+        r.ball = {0, top, W, ballHeight};
+        r.twin = {0, top + ballHeight, W, bodyHeight - ballHeight};
+      }
       break;
     }
     case scene::RenderLayout::Inset: {
@@ -77,11 +83,12 @@ SceneDrawer::Rects SceneDrawer::rects() const {
   return r;
 }
 
-float SceneDrawer::text() const { return bodyTextPx(int(spec_.render.height), spec_.render.fontScale); }
+float SceneDrawer::text() const { return bodyTextPx(int(spec_.render.width), int(spec_.render.height), spec_.render.fontScale); }
 
 std::vector<TextBlock> SceneDrawer::ballBlocks(const FrameOrientations& frame, float viewWidth) const {
-  std::vector<TextBlock> blocks = ball_->textBlocks(frame, text(), viewWidth);
+  std::vector<TextBlock> blocks = ball_->textBlocks(frame, text());
   blocks.push_back(captionBlock(captionAt(frame.story), text(), viewWidth));
+  for (TextBlock& b : blocks) fitWidth(b, 0.94f * viewWidth);
   return blocks;
 }
 
@@ -89,6 +96,7 @@ std::vector<TextBlock> SceneDrawer::twinBlocks(const FrameOrientations& frame, f
   std::vector<TextBlock> blocks = twin_->textBlocks(inset, text());
   if (spec_.render.layout == scene::RenderLayout::Twin)
     blocks.push_back(captionBlock(captionAt(frame.story), text(), viewWidth));
+  for (TextBlock& b : blocks) fitWidth(b, 0.94f * viewWidth);
   return blocks;
 }
 
@@ -111,13 +119,13 @@ void SceneDrawer::layOut(const RollingModel& model) {
     f.story.segment = k;
     samples.push_back(f);
   }
-  auto reserve = [&](auto blocksOf) {
+  auto reserve = [&](auto blocksOf, float viewWidth) {
     std::vector<TextBlock> widest = blocksOf(samples[0]);
     for (const auto& f : samples) {
       std::vector<TextBlock> b = blocksOf(f);
       for (std::size_t i = 0; i < b.size(); ++i) {
         glm::vec2 size = blockSize(b[i]);
-        size.x *= 1.06f;  // digits vary from frame to frame
+        size.x = std::min(size.x * 1.06f, 0.96f * viewWidth);  // digits vary from frame to frame
         widest[i].minSize = glm::max(widest[i].minSize, size);
         if (b[i].lines.size() > widest[i].lines.size()) widest[i].lines = b[i].lines;
       }
@@ -129,7 +137,7 @@ void SceneDrawer::layOut(const RollingModel& model) {
   // its settled camera and (after a storyboard's cut) the previous one.
   const int count = int(std::clamp(std::ceil(L / (0.5 * model.ballRadius)), 48.0, 240.0));
   if (r.ball.width > 0) {
-    const std::vector<TextBlock> blocks = reserve([&](const FrameOrientations& f) { return ballBlocks(f, float(r.ball.width)); });
+    const std::vector<TextBlock> blocks = reserve([&](const FrameOrientations& f) { return ballBlocks(f, float(r.ball.width)); }, float(r.ball.width));
     for (const TextBlock& b : blocks) ballReserved_.push_back(b.minSize);
     auto occupancyFor = [&](const NdcWindow& window) {
       camera_->setWindow(window);
@@ -154,7 +162,8 @@ void SceneDrawer::layOut(const RollingModel& model) {
   }
   if (twin_) {
     const std::vector<TextBlock> blocks =
-        reserve([&](const FrameOrientations& f) { return twinBlocks(f, float(r.twin.width), r.inset); });
+        reserve([&](const FrameOrientations& f) { return twinBlocks(f, float(r.twin.width), r.inset); },
+                float(r.twin.width));
     for (const TextBlock& b : blocks) twinReserved_.push_back(b.minSize);
     auto occupancyFor = [&](const NdcWindow& window) {
       twin_->setWindow(window);
@@ -199,7 +208,8 @@ void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& fram
   auto place = [&](std::vector<TextBlock> blocks, const std::vector<glm::vec2>& reserved, const ViewLayout& layout,
                    int view) {
     for (std::size_t i = 0; i < blocks.size() && i < layout.origins.size(); ++i) {
-      blocks[i].minSize = reserved[i];
+      if (blocks[i].lines.size() > layout.lines[i]) blocks[i].lines.resize(layout.lines[i]);
+      blocks[i].minSize = glm::vec2(reserved[i].x, blockSize(blocks[i]).y);
       addTextBlock(list, blocks[i], layout.origins[i], view);
     }
   };

@@ -32,7 +32,7 @@ TwinView::TwinView(const scene::SceneSpec& spec, const model::RollingModel& mode
 void TwinView::add(render::DrawList& list, const motion::FrameOrientations& frame, int view,
                    const CameraFraming::Aim& aim) const {
   render::View& v = list.views[static_cast<std::size_t>(view)];
-  const float text = bodyTextPx(list.height, spec_.render.fontScale);
+  const float text = bodyTextPx(list.width, list.height, spec_.render.fontScale);
   // Same viewing direction as the ball's camera, so the marker on the ball
   // and the Bloch arrow point the same way on screen.
   const OrbitAngles a{aim.azimuth, aim.elevation};
@@ -151,7 +151,9 @@ std::vector<TextBlock> TwinView::textBlocks(bool inset, float text) const {
   if (!spec_.render.labels || inset) return blocks;  // an inset is too small for a heading or a legend
   blocks[0].slots = {Slot::TopLeft, Slot::TopRight};
   blocks[0].lines.push_back({"Bloch sphere", text * 1.1f, true, kTextColor});
+  blocks[0].keep = 0;  // where the sphere needs the room, the heading goes first
   blocks[1].slots = {Slot::BottomLeft, Slot::BottomRight};
+  blocks[1].keep = 1;
   blocks[1].lines.push_back({"● spin  X(s) = Q(s) X(0)", text, false, glm::vec4(kMarkerColor, 1.0f)});
   blocks[1].lines.push_back({"● field  B/|B|", text, false, glm::vec4(kFieldColor, 1.0f)});
   return blocks;

@@ -110,7 +110,7 @@ struct RenderSpec {
   bool follow = false;
   double fovDeg = 32.0;
   double fontScale = 1.0;   // text size × this (README "Rendering"); body line ≥ 1/28 of the height at 1
-  bool twinCameraFixed = false;  // twin_camera = "fixed": the Bloch sphere keeps the first shot's view
+  bool twinCameraFixed = true;  // twin_camera: "fixed" (the first shot's view throughout) or "linked"
   std::optional<VideoFormat> format;  // animations; default: from the output's extension, else mp4
 };
 

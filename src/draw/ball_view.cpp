@@ -215,7 +215,7 @@ void BallView::add(render::DrawList& list, const FrameOrientations& frame, int v
 
   // The contact path, lifted a hair along the normal; travelled part on top.
   render::PolylineItem full, travelled;
-  full.color = kPathColor;
+  full.color = kPathLineColor;
   full.widthPx = std::max(1.5f, float(list.height) / 400.0f);
   travelled.color = kTravelledColor;
   travelled.widthPx = std::max(2.5f, float(list.height) / 200.0f);
@@ -260,8 +260,8 @@ void BallView::add(render::DrawList& list, const FrameOrientations& frame, int v
   // The marker's path through space: cusps where it touches the surface.
   if (frame.trail.size() >= 2) {
     render::PolylineItem markerTrail;
-    markerTrail.color = glm::vec4(kMarkerColor, 0.55f);
-    markerTrail.widthPx = std::max(1.2f, float(list.height) / 500.0f);
+    markerTrail.color = kMarkerTrailColor;
+    markerTrail.widthPx = std::max(1.5f, float(list.height) / 360.0f);  // no hairline: ~3 px at 1080p
     markerTrail.view = view;
     for (const auto& t : frame.trail)
       markerTrail.points.push_back(toGlm(model_.path->at(t.s).centre(R) + R * t.q.rotate(markerBody_)));
@@ -284,7 +284,7 @@ void BallView::add(render::DrawList& list, const FrameOrientations& frame, int v
     disc[3] = glm::vec4(toGlm(discCentre), 1.0f);
     list.meshes.push_back({discMesh_, disc, glassMaterial({0.55f, 0.80f, 0.95f}, 0.14f, 0.9f, 120.0f), view});
     render::PolylineItem rim;  // the glass edge, so the plate reads as a sheet
-    rim.color = glm::vec4(0.85f, 0.95f, 1.0f, 0.9f);
+    rim.color = opaqueLine({0.85f, 0.95f, 1.0f}, 0.9f);
     rim.widthPx = std::max(1.2f, float(list.height) / 450.0f);
     rim.view = view;
     for (int k = 0; k <= 128; ++k) {
@@ -294,7 +294,7 @@ void BallView::add(render::DrawList& list, const FrameOrientations& frame, int v
     list.polylines.push_back(rim);
     // The plate's own marker: a dot at its centre, and the circle it traces.
     render::Material dot;
-    dot.color = {0.35f, 0.10f, 0.55f};
+    dot.color = kPlateColor;
     glm::mat4 dotModel(1.0f);
     dotModel[0] = glm::vec4(e1 * float(0.12 * R), 0.0f);
     dotModel[1] = glm::vec4(e2 * float(0.12 * R), 0.0f);
@@ -302,7 +302,7 @@ void BallView::add(render::DrawList& list, const FrameOrientations& frame, int v
     dotModel[3] = glm::vec4(toGlm(plateCentre + thickness * f.normal), 1.0f);
     list.meshes.push_back({discMesh_, dotModel, dot, view});
     render::PolylineItem plateTrail;
-    plateTrail.color = glm::vec4(dot.color, 0.7f);
+    plateTrail.color = kPlateTrailColor;
     plateTrail.widthPx = std::max(1.2f, float(list.height) / 450.0f);
     plateTrail.view = view;
     for (std::size_t i = 0; i < pathS_.size(); ++i) {

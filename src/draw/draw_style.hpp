@@ -22,6 +22,20 @@ inline const glm::vec4 kPathColor{0.10f, 0.16f, 0.32f, 0.55f};
 inline const glm::vec4 kTravelledColor{0.95f, 0.33f, 0.02f, 1.0f};
 inline const glm::vec4 kTextColor{0.04f, 0.05f, 0.07f, 1.0f};
 
+// Lines are opaque: a polyline's segments overlap at the joints (each is
+// extended by half its width), and a translucent line blended twice there
+// shows a darker bead at every joint. The colour is the translucent one
+// premixed over the light grey most lines cross.
+inline glm::vec4 opaqueLine(const glm::vec3& color, float alpha) {
+  return glm::vec4(glm::mix(glm::vec3(0.78f, 0.79f, 0.80f), color, alpha), 1.0f);
+}
+inline const glm::vec4 kPathLineColor = opaqueLine(glm::vec3(kPathColor), kPathColor.a);
+inline const glm::vec4 kMarkerTrailColor = opaqueLine(kMarkerColor, 0.55f);
+inline const glm::vec3 kPlateColor{0.35f, 0.10f, 0.55f};
+inline const glm::vec4 kPlateTrailColor = opaqueLine(kPlateColor, 0.7f);
+inline const glm::vec4 kBlochTrailColor = opaqueLine(kMarkerColor, 0.85f);
+inline const glm::vec4 kFieldTrailColor = opaqueLine(kFieldColor, 0.7f);
+
 inline glm::vec3 toGlm(const geometry::Vec3& v) { return {float(v.x()), float(v.y()), float(v.z())}; }
 
 // worldFromBody as a glm matrix (the rotation of U).

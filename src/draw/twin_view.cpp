@@ -63,7 +63,7 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
   list.meshes.push_back({dotMesh_, glm::scale(glm::mat4(1.0f), glm::vec3(0.035f)), origin, view});
 
   // Equator and two meridians, and the axes.
-  const glm::vec4 gridColor{0.30f, 0.36f, 0.45f, 0.75f};
+  const glm::vec4 gridColor = opaqueLine({0.30f, 0.36f, 0.45f}, 0.75f);
   const float gridWidth = std::max(1.0f, float(list.height) / 600.0f);
   for (int circle = 0; circle < 3; ++circle) {
     render::PolylineItem c;
@@ -81,7 +81,7 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
   const char* axisNames[3] = {"x", "y", "z"};
   for (int k = 0; k < 3; ++k) {
     render::PolylineItem axis;
-    axis.color = glm::vec4(0.15f, 0.17f, 0.2f, 0.9f);
+    axis.color = opaqueLine({0.15f, 0.17f, 0.2f}, 0.9f);
     axis.widthPx = gridWidth;
     axis.view = view;
     axis.points = {-1.18f * axes[k], 1.18f * axes[k]};
@@ -95,8 +95,8 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
 
   // Trails: the Bloch vector X(s') = Q(s') X(0) and the field direction.
   render::PolylineItem blochTrail, fieldTrail;
-  blochTrail.color = glm::vec4(kMarkerColor, 0.85f);
-  fieldTrail.color = glm::vec4(kFieldColor, 0.7f);
+  blochTrail.color = kBlochTrailColor;
+  fieldTrail.color = kFieldTrailColor;
   blochTrail.widthPx = fieldTrail.widthPx = std::max(1.5f, float(list.height) / 360.0f);
   blochTrail.view = fieldTrail.view = view;
   for (const auto& t : frame.trail) {

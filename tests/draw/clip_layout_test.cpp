@@ -64,9 +64,10 @@ bool sameRgb(const glm::vec4& a, const glm::vec3& b) { return glm::length(glm::v
 // The polylines that carry the story: the contact path (whole and
 // travelled), the marker's trail, the plate's trail, the twin's trails.
 bool isStoryLine(const render::PolylineItem& p) {
-  return sameRgb(p.color, glm::vec3(kPathColor)) || sameRgb(p.color, glm::vec3(kTravelledColor)) ||
-         sameRgb(p.color, kMarkerColor) || sameRgb(p.color, kFieldColor) ||
-         sameRgb(p.color, glm::vec3(0.35f, 0.10f, 0.55f));
+  for (const glm::vec4& c : {kPathLineColor, kTravelledColor, kMarkerTrailColor, kPlateTrailColor, kBlochTrailColor,
+                             kFieldTrailColor})
+    if (sameRgb(p.color, glm::vec3(c))) return true;
+  return false;
 }
 
 struct Aspect {

@@ -425,6 +425,14 @@ void BallView::markImportant(Occupancy& occupancy, const render::View& v, double
   // A sphere's outline is a little wider than R f / depth; its shadow and
   // the marker dot stay within 1.15 R of the centre.
   if (depth > float(R)) occupancy.disc(ball, 1.15f * float(R) * focalPx / std::sqrt(depth * depth - float(R * R)) + 2.0f);
+  // The marker's trail lies on the ball's positions before s: seen by this
+  // camera (which may move with s: follow, orbit), their discs bound it.
+  if (withPath && spec_.render.trails)
+    for (int i = 0; i < 96; ++i) {
+      const glm::vec2 earlier = project(model_.path->at(s * i / 96.0).centre(R), depth);
+      if (depth > float(R))
+        occupancy.disc(earlier, 1.05f * float(R) * focalPx / std::sqrt(depth * depth - float(R * R)) + 2.0f);
+    }
   const float lineHalf = std::max(2.0f, float(v.height) / 250.0f);
   auto markCurve = [&](auto pointAt, std::size_t count) {
     glm::vec2 previous;

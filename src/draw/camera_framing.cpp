@@ -133,9 +133,85 @@ OrbitAngles orbitAngles(const scene::SceneSpec& spec, const model::RollingModel&
   return a;
 }
 
+namespace {
+
+// The least share, over the path, of the ball's disc that the eye sees past
+// a sphere the ball rolls outside (rays to points spread over the disc).
+// eyeAt(s): the eye at arc length s.
+template <typename EyeAt>
+double leastVisibleShare(const model::RollingModel& model, const geometry::Sphere& sphere, const EyeAt& eyeAt) {
+  const double R = model.ballRadius, r = sphere.radius();
+  double least = 1.0;
+  for (int i = 0; i <= 48; ++i) {
+    const double s = model.path->length() * i / 48.0;
+    const Vec3 eye = eyeAt(s);
+    const Vec3 c = model.path->at(s).centre(R);
+    const Vec3 view = (c - eye).normalized();
+    const Vec3 u = view.cross(std::abs(view.z()) < 0.9 ? Vec3::UnitZ() : Vec3::UnitX()).normalized(), v = view.cross(u);
+    int seen = 0, all = 0;
+    for (const double radius : {0.0, 0.45, 0.9})
+      for (int k = 0; k < (radius == 0.0 ? 1 : 12); ++k, ++all) {
+        const double phi = 2.0 * std::numbers::pi * k / 12.0;
+        // The ball's near surface over that point of its disc.
+        const Vec3 p = c + R * (radius * (std::cos(phi) * u + std::sin(phi) * v) -
+                                std::sqrt(1.0 - radius * radius) * view);
+        // Does the segment eye → p pass through the sphere |x| < r?
+        const Vec3 d = p - eye;
+        const double t = std::clamp(-eye.dot(d) / d.squaredNorm(), 0.0, 1.0);
+        if ((eye + t * d).norm() >= r * (1.0 - 1e-9) || t >= 1.0) ++seen;
+      }
+    least = std::min(least, double(seen) / all);
+  }
+  return least;
+}
+
+}  // namespace
+
 CameraFraming::CameraFraming(const scene::SceneSpec& spec, const model::RollingModel& model, FrameExtent extent)
     : spec_(spec), model_(model), extent_(std::move(extent)) {
-  const OrbitAngles base = orbitAngles(spec, model);
+  OrbitAngles base = orbitAngles(spec, model);
+  // Outside a sphere the ball goes round the back: unless the scene sets
+  // the elevation, look down from as low as keeps ≥ 90 % of the ball's disc
+  // in sight along the whole path (else the best of those tried).
+  const auto* sphere = dynamic_cast<const geometry::Sphere*>(model.surface.get());
+  if (sphere && sphere->side() == geometry::Side::Outside && !spec.locations.contains("render.elevation_deg") &&
+      !(spec.render.target && spec.render.distance)) {
+    const double aspect = double(spec.render.width) / double(std::max<long long>(spec.render.height, 1));
+    // The ball's longitude about the sphere's axis at s.
+    auto longitude = [&](double s) {
+      const Vec3 p = model.path->at(s).point;
+      return std::atan2(p.y(), p.x());
+    };
+    const double offset = base.azimuth - longitude(0.0);
+    double best = -1.0, bestElevation = base.elevation;
+    bool bestOrbits = false;
+    // First a still camera; where none sees the ball all along (a path round
+    // the back), one that orbits with the ball's longitude (when the scene
+    // leaves the azimuth free).
+    for (const bool orbits : {false, true}) {
+      if (orbits && (best >= 0.9 || spec.locations.contains("render.azimuth_deg") || !spec.segments.empty())) break;
+      for (const double degrees : {base.elevation / kDeg, 35.0, 45.0, 55.0, 65.0, 75.0}) {
+        const double elevation = std::max(base.elevation, degrees * kDeg);
+        auto eyeAt = [&](double s) {
+          const OrbitAngles a{orbits ? longitude(s) + offset : base.azimuth, elevation};
+          const auto [target, distance] = fitPoints(extent_.points, model.ballRadius, a, spec.render.fovDeg, aspect);
+          return Vec3(target + spec.render.distance.value_or(distance) * towardEye(a));
+        };
+        const double share = leastVisibleShare(model, *sphere, eyeAt);
+        if (share > best + 1e-9) {
+          best = share;
+          bestElevation = elevation;
+          bestOrbits = orbits;
+        }
+        if (share >= 0.9) break;
+      }
+    }
+    base.elevation = bestElevation;
+    if (bestOrbits) {
+      orbitOffset_ = offset;
+      orbits_ = true;
+    }
+  }
   Shot shot{base.azimuth, base.elevation, spec.render.fovDeg, std::nullopt, spec.render.distance, spec.render.follow};
   if (spec.render.target) shot.target = Vec3((*spec.render.target)[0], (*spec.render.target)[1], (*spec.render.target)[2]);
   for (const scene::SegmentSpec& seg : spec.segments) {
@@ -160,7 +236,11 @@ bool CameraFraming::fixedByScene() const {
 }
 
 CameraFraming::Aim CameraFraming::aimOf(const Shot& shot, int w, int h, double s) const {
-  const OrbitAngles a{shot.azimuth, shot.elevation};
+  OrbitAngles a{shot.azimuth, shot.elevation};
+  if (orbits_) {  // with the ball round the sphere (see the constructor)
+    const Vec3 p = model_.path->at(s).point;
+    a.azimuth = std::atan2(p.y(), p.x()) + orbitOffset_;
+  }
   const double R = model_.ballRadius;
   // Fit into the window: a narrower field of view about its centre (the
   // projection is shifted off axis to put that centre there, ballCamera).
@@ -173,7 +253,7 @@ CameraFraming::Aim CameraFraming::aimOf(const Shot& shot, int w, int h, double s
   }
   if (shot.target) target = *shot.target;
   if (shot.distance) distance = *shot.distance;
-  return {target, distance, shot.azimuth, shot.elevation, shot.fovDeg};
+  return {target, distance, a.azimuth, a.elevation, shot.fovDeg};
 }
 
 CameraFraming::Aim CameraFraming::aimAt(const StoryPlace& story, int w, int h, double s) const {

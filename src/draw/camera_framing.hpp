@@ -92,6 +92,8 @@ class CameraFraming {
   // Whether the scene fixes the camera itself (target and distance, or
   // follow), so that the framing cannot make room for text.
   [[nodiscard]] bool fixedByScene() const;
+  // Whether the default camera orbits with the ball (its view changes with s).
+  [[nodiscard]] bool orbits() const { return orbits_; }
 
  private:
   struct Shot {
@@ -106,6 +108,8 @@ class CameraFraming {
   const model::RollingModel& model_;
   FrameExtent extent_;
   NdcWindow window_;
+  bool orbits_ = false;       // the azimuth follows the ball's longitude (a path round a sphere)
+  double orbitOffset_ = 0.0;  // ... plus this
   std::vector<Shot> shots_;  // one per storyboard segment (one for a scene without segments)
 };
 

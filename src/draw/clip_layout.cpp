@@ -36,6 +36,12 @@ void Occupancy::disc(glm::vec2 c, float r) {
     }
 }
 
+void Occupancy::rect(glm::vec2 lo, glm::vec2 hi) {
+  for (int y = std::max(0, int(std::floor(lo.y / cell_))); y <= std::min(cellsY_ - 1, int(std::floor(hi.y / cell_))); ++y)
+    for (int x = std::max(0, int(std::floor(lo.x / cell_))); x <= std::min(cellsX_ - 1, int(std::floor(hi.x / cell_))); ++x)
+      mark(x, y);
+}
+
 void Occupancy::segment(glm::vec2 a, glm::vec2 b, float halfWidth) {
   const float length = glm::length(b - a);
   const int steps = std::max(1, int(std::ceil(length / (0.5f * cell_))));

@@ -36,6 +36,7 @@ class Occupancy {
   Occupancy(int width, int height);
   void disc(glm::vec2 centre, float radius);
   void segment(glm::vec2 a, glm::vec2 b, float halfWidth);
+  void rect(glm::vec2 lo, glm::vec2 hi);
   [[nodiscard]] bool anyIn(glm::vec2 lo, glm::vec2 hi) const;
   // The marked cells' bounding box in pixels (lo > hi when none).
   [[nodiscard]] std::pair<glm::vec2, glm::vec2> bounds() const;

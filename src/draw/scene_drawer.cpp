@@ -135,13 +135,19 @@ void SceneDrawer::layOut(const RollingModel& model) {
 
   // The arc lengths the clip shows, about two per ball radius, each with
   // its settled camera and (after a storyboard's cut) the previous one.
-  const int count = int(std::clamp(std::ceil(L / (0.5 * model.ballRadius)), 48.0, 240.0));
+  // A camera that orbits with the ball sweeps the path across the view: as
+  // many samples as the budget allows.
+  const int count = camera_->orbits() ? 480 : int(std::clamp(std::ceil(L / (0.5 * model.ballRadius)), 48.0, 240.0));
   if (r.ball.width > 0) {
     const std::vector<TextBlock> blocks = reserve([&](const FrameOrientations& f) { return ballBlocks(f, float(r.ball.width)); }, float(r.ball.width));
     for (const TextBlock& b : blocks) ballReserved_.push_back(b.minSize);
     auto occupancyFor = [&](const NdcWindow& window) {
       camera_->setWindow(window);
       Occupancy occupancy(r.ball.width, r.ball.height);
+      // An inset twin covers that corner of the ball view.
+      if (r.inset)
+        occupancy.rect(glm::vec2(r.twin.x - r.ball.x, r.twin.y - r.ball.y),
+                       glm::vec2(r.twin.x - r.ball.x + r.twin.width, r.twin.y - r.ball.y + r.twin.height));
       glm::mat4 marked(0.0f);
       for (int i = 0; i < count; ++i) {
         const double s = L * i / (count - 1);
@@ -231,9 +237,10 @@ void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& fram
     const int view = int(list.views.size()) - 1;
     // "linked": the twin looks along the ball camera's direction, so the
     // marker and the Bloch arrow point the same way on screen; "fixed": the
-    // first shot's direction for the whole clip.
+    // first shot's direction (at s = 0) for the whole clip.
     const StoryPlace story = spec_.render.twinCameraFixed ? StoryPlace{} : frame.story;
-    twin_->add(list, frame, view, camera_->aimAt(story, twin.width, twin.height, s));
+    twin_->add(list, frame, view,
+               camera_->aimAt(story, twin.width, twin.height, spec_.render.twinCameraFixed ? 0.0 : s));
     place(twinBlocks(frame, float(twin.width), r.inset), twinReserved_, twinLayout_, view);
   }
 }

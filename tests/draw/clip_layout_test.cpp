@@ -1,9 +1,10 @@
 // Text never covers the story: for every scene in scenes/ at 16:9, 4:3, 1:1
-// and 9:16, with labels, facts, captions and titles on, at sampled frames of
+// and 9:16 (and 16:9 with the twin as an inset), with labels, facts, captions and titles on, at sampled frames of
 // the clip, the screen-anchored text (each label's box from the font's
 // advances) lies inside its view and clear of the ball's disc, the contact
-// path and the trails, all projected from the DrawList itself. And the
-// default camera keeps the ball's disc inside the frame.
+// path and the trails, all projected from the DrawList itself, and not
+// under an inset view. And the default camera keeps the ball's disc inside
+// the frame and, outside a sphere, ≥ 90 % of it in sight.
 #include <gtest/gtest.h>
 
 #include <glm/glm.hpp>
@@ -73,10 +74,12 @@ bool isStoryLine(const render::PolylineItem& p) {
 struct Aspect {
   int width, height;
   const char* name;
+  const char* layout = nullptr;  // else the scene's own
 };
 
 TEST(ClipLayout, NoTextOverTheBallThePathOrTheTrailsAndNoneCutByTheFrame) {
-  const Aspect aspects[] = {{960, 540, "16:9"}, {720, 540, "4:3"}, {600, 600, "1:1"}, {540, 960, "9:16"}};
+  const Aspect aspects[] = {{960, 540, "16:9"}, {720, 540, "4:3"}, {600, 600, "1:1"}, {540, 960, "9:16"},
+                            {960, 540, "16:9 inset", "inset"}};
   std::vector<std::filesystem::path> scenes;
   for (const auto& e : std::filesystem::directory_iterator(test::sourceDir() / "scenes"))
     if (e.path().extension() == ".toml") scenes.push_back(e.path());
@@ -85,9 +88,10 @@ TEST(ClipLayout, NoTextOverTheBallThePathOrTheTrailsAndNoneCutByTheFrame) {
   int checkedLabels = 0, checkedBalls = 0;
   for (const auto& file : scenes) {
     for (const Aspect& a : aspects) {
-      const scene::SceneSpec spec = loadScene(file.string(), {"render.width=" + std::to_string(a.width),
-                                                              "render.height=" + std::to_string(a.height),
-                                                              "render.labels=true"});
+      std::vector<std::string> overrides{"render.width=" + std::to_string(a.width),
+                                         "render.height=" + std::to_string(a.height), "render.labels=true"};
+      if (a.layout) overrides.push_back(std::string("render.layout=\"") + a.layout + "\"");
+      const scene::SceneSpec spec = loadScene(file.string(), overrides);
       const RollingModel model = buildSceneModel(spec);
       const SceneDrawer drawer(spec, model, nullptr, makeSceneFacts(spec, model));
       const double L = model.path->length();
@@ -108,6 +112,15 @@ TEST(ClipLayout, NoTextOverTheBallThePathOrTheTrailsAndNoneCutByTheFrame) {
           ++checkedLabels;
           if (l.view < 0) continue;
           const Screen screen(list.views[std::size_t(l.view)]);
+          // Nor under an inset drawn over its view.
+          for (std::size_t k = 0; k < list.views.size(); ++k) {
+            const render::View& inset = list.views[k];
+            if (int(k) == l.view || !inset.frame) continue;
+            const glm::vec2 at(screen.v.x, screen.v.y);
+            const bool overlaps = box.lo.x + at.x < float(inset.x + inset.width) && float(inset.x) < box.hi.x + at.x &&
+                                  box.lo.y + at.y < float(inset.y + inset.height) && float(inset.y) < box.hi.y + at.y;
+            EXPECT_FALSE(overlaps) << where << ": \"" << l.text << "\" under the inset";
+          }
           for (const render::MeshItem& m : list.meshes) {
             if (m.view != l.view || m.material.pattern != render::Pattern::Texture) continue;  // the ball(s)
             const glm::vec3 c = screen.project(glm::vec3(m.worldFromModel[3]));
@@ -142,6 +155,24 @@ TEST(ClipLayout, NoTextOverTheBallThePathOrTheTrailsAndNoneCutByTheFrame) {
           EXPECT_TRUE(c.x - 0.8f * r >= 0.0f && c.x + 0.8f * r <= float(screen.v.width) && c.y - 0.8f * r >= 0.0f &&
                       c.y + 0.8f * r <= float(screen.v.height))
               << where << ": the ball leaves the frame";
+          // Outside a sphere (and no camera set by the scene): ≥ 90 % of the
+          // ball's disc seen past the sphere, by rays from the eye.
+          const auto* sphere = dynamic_cast<const geometry::Sphere*>(model.surface.get());
+          if (sphere && sphere->side() == geometry::Side::Outside && !spec.locations.contains("render.elevation_deg")) {
+            const glm::vec3 eye = screen.v.camera.position, centre(m.worldFromModel[3]);
+            const glm::vec3 view = glm::normalize(centre - eye);
+            const glm::vec3 u = glm::normalize(glm::cross(view, glm::vec3(0, 0, 1))), w = glm::cross(view, u);
+            int seen = 0, all = 0;
+            for (int k = 0; k < 400; ++k, ++all) {  // points spread evenly over the disc
+              const float rho = std::sqrt((float(k) + 0.5f) / 400.0f), phi = 2.39996323f * float(k);
+              const glm::vec3 p = centre + R * (rho * (std::cos(phi) * u + std::sin(phi) * w) -
+                                                std::sqrt(1.0f - rho * rho) * view);
+              const glm::vec3 d = p - eye;
+              const float t = std::clamp(-glm::dot(eye, d) / glm::dot(d, d), 0.0f, 1.0f);
+              if (glm::length(eye + t * d) >= float(sphere->radius()) * 0.9999f || t >= 1.0f) ++seen;
+            }
+            EXPECT_GE(double(seen) / all, 0.9) << where << ": the sphere hides the ball";
+          }
           ++checkedBalls;
         }
       }

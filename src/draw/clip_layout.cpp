@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <mutex>
 
 #include "render/font_atlas.hpp"
@@ -209,10 +207,6 @@ ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& given,
         }
       }
     }
-    if (std::getenv("ROLLSPIN_LAYOUT_DEBUG"))
-      std::fprintf(stderr, "layout %dx%d attempt %d window %.3f %.3f %.3f %.3f failed %d (%g %g)-(%g %g) occ (%g %g)-(%g %g)\n", w, h, attempt,
-                   layout.window.x0, layout.window.x1, layout.window.y0, layout.window.y1, failed, failedRect.lo.x, failedRect.lo.y, failedRect.hi.x, failedRect.hi.y,
-                   occupancy.bounds().first.x, occupancy.bounds().first.y, occupancy.bounds().second.x, occupancy.bounds().second.y);
     if (failed < 0 || attempt >= 40) return finish();
     if (fixedWindow) {
       if (dropLine(std::size_t(failed))) continue;

@@ -70,11 +70,11 @@ void BM_ClipFrames1080p(benchmark::State& state) {
   if (state.range(0) == 1) overrides.emplace_back("render.follow=true");
   if (const char* extra = std::getenv("ROLLSPIN_BENCH_SET")) overrides.emplace_back(extra);
   const scene::SceneSpec spec = scene::loadSceneFile(ROLLSPIN_SOURCE_DIR "/scenes/lollipop.toml", overrides);
-  const app::RollingModel model = app::buildModel(spec);
-  std::vector<app::FrameOrientations> frames;
+  const app::RollingModel model = model::buildModel(spec);
+  std::vector<motion::FrameOrientations> frames;
   for (int k = 0; k < 24; ++k)
-    frames.push_back(app::solveFrame(spec, model, (0.3 + double(k) / 300.0) * model.path->length()));
-  const app::SceneDrawer drawer(spec, model, nullptr);
+    frames.push_back(motion::solveFrame(spec, model, (0.3 + double(k) / 300.0) * model.path->length()));
+  const draw::SceneDrawer drawer(spec, model, nullptr);
   const auto context = render::createOsMesaContext();
   const char* shaderDir = std::getenv("ROLLSPIN_SHADER_DIR");
   render::Renderer renderer(*context, render::ShaderLibrary{shaderDir != nullptr ? shaderDir : ""});

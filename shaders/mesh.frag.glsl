@@ -23,10 +23,10 @@
 #define SPECULAR 1
 #endif
 
-in vec3 vWorldPosition;
-in vec3 vNormal;
-in vec2 vUv;
-in vec4 vLightClip;
+centroid in vec3 vWorldPosition;
+centroid in vec3 vNormal;
+centroid in vec2 vUv;
+centroid in vec4 vLightClip;
 
 uniform vec3 color;
 uniform vec3 color2;
@@ -43,9 +43,9 @@ uniform float ambient;
 uniform vec3 cameraPosition;
 uniform bool twoSided;  // light the side that faces the camera
 #if LIT && !SPECULAR
-in vec3 vAmbient;
-in float vNdl;
-in float vGrazing;
+centroid in vec3 vAmbient;
+centroid in float vNdl;
+centroid in float vGrazing;
 #endif
 
 out vec4 fragColor;

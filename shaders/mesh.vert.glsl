@@ -23,10 +23,10 @@ uniform vec4 cutPlane;  // the material's cut-away (0, 0, 0, 1: none)
 
 out float gl_ClipDistance[5];
 
-out vec3 vWorldPosition;
-out vec3 vNormal;
-out vec2 vUv;
-out vec4 vLightClip;
+centroid out vec3 vWorldPosition;
+centroid out vec3 vNormal;
+centroid out vec2 vUv;
+centroid out vec4 vLightClip;
 
 #if LIT && !SPECULAR
 // Matte surfaces are lit per vertex (Gouraud): without a highlight the
@@ -38,9 +38,9 @@ uniform float ambient;
 uniform vec3 cameraPosition;
 uniform bool twoSided;        // light the side that faces the camera
 uniform bool backFacesShown;  // Cull::Front: the back side is the visible one
-out vec3 vAmbient;  // ambient · hemisphere
-out float vNdl;     // max(n·l, 0)
-out float vGrazing;  // translucent materials thicken at grazing angles: alpha factor
+centroid out vec3 vAmbient;  // ambient · hemisphere
+centroid out float vNdl;     // max(n·l, 0)
+centroid out float vGrazing;  // translucent materials thicken at grazing angles: alpha factor
 #endif
 
 void main() {

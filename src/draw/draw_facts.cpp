@@ -21,8 +21,10 @@ std::string timesTurns(double turns) {
 }
 
 // Lines stay under ~42 characters: a 480-pixel thumbnail's ball view holds
-// that at a readable size.
-void deltaLines(const DeltaFact& d, const LiveAngles& live, bool atEnd, bool strobe, double turns,
+// that at a readable size. Every line is there from the first frame to the
+// last (no line jumps); running values end on their final value and stay;
+// the comparison with the closed form appears when the circuit completes.
+void deltaLines(const DeltaFact& d, const LiveAngles& live, double labNow, bool atEnd, double turns,
                 std::vector<std::string>& out) {
   if (d.onSphere) {
     out.push_back(fmt::format("δ = 2π√(ρ²/R² + cos²θ){}", timesTurns(turns)));
@@ -30,12 +32,18 @@ void deltaLines(const DeltaFact& d, const LiveAngles& live, bool atEnd, bool str
   } else {
     out.push_back(fmt::format("δ = 2π√(1 + (r/R)²){} = {:.6f} rad", timesTurns(turns), d.closedForm));
   }
-  out.push_back(fmt::format("solver: {:.6f} rad in the rolling frame", d.measured));
-  if (!atEnd && !strobe) out.push_back(fmt::format("  so far: {:.4f} rad", live.rolling));
-  if (d.wholeCircuits)
-    out.push_back(fmt::format("lab rotation {:.4f}° = |δ mod 2π| {:.4f}°", d.labAngle / kDeg, d.closedFormMod / kDeg));
+  // Relative to the rolling frame (the frame turning with the path).
+  out.push_back(fmt::format("turned, in the rolling frame: {:.4f} rad", atEnd ? d.measured : live.rolling));
+  out.push_back(atEnd ? fmt::format("solver at the end: {:.6f} rad", d.measured)
+                      : std::string("solver at the end: …"));
+  if (d.wholeCircuits) {
+    // The lab angle of U lies in [0, π]: δ's remainder in (−π, π], in size.
+    const double k = std::round(d.closedForm / (2.0 * kPi));
+    out.push_back(atEnd ? fmt::format("in the lab: {:.4f}°; |δ − {:g}π|", d.labAngle / kDeg, 2.0 * k)
+                        : fmt::format("in the lab: {:.4f}°", labNow / kDeg));
+    if (atEnd) out.back() += fmt::format(" = {:.4f}°", d.closedFormMod / kDeg);
+  }
 }
-
 void marksLines(const SceneFacts& facts, const FrameOrientations& frame, bool strobe, std::vector<std::string>& out) {
   const MarksFact& m = *facts.marks;
   out.push_back(fmt::format("a mark every β = π/√(1 + (r/R)²) = {:.2f}°", m.beta / kDeg));
@@ -54,24 +62,26 @@ void marksLines(const SceneFacts& facts, const FrameOrientations& frame, bool st
   out.push_back("(in the frame turning with the path)");
 }
 
-void turnsLines(const TurnsFact& t, const LiveAngles& live, bool strobe, std::vector<std::string>& out) {
-  const double lab = strobe ? t.lab : live.lab, relative = strobe ? t.lab - t.frame : live.lab - live.frame;
-  out.push_back(fmt::format("turns in the lab: {:.2f} (end {:.6f})", std::abs(lab) / (2 * kPi),
-                            std::abs(t.lab) / (2 * kPi)));
-  out.push_back(fmt::format("  {} the revolution", t.lab * t.frame < 0.0 ? "against" : "with"));
+void turnsLines(const TurnsFact& t, const LiveAngles& live, bool atEnd, std::vector<std::string>& out) {
+  const double lab = atEnd ? t.lab : live.lab, relative = atEnd ? t.lab - t.frame : live.lab - live.frame;
+  out.push_back(fmt::format("turns in the lab: {:.{}f}", std::abs(lab) / (2 * kPi), atEnd ? 6 : 2));
+  out.push_back(atEnd ? fmt::format("  {} the revolution", t.lab * t.frame < 0.0 ? "against" : "with")
+                      : std::string("  …"));
   out.push_back("turns relative to the radius line:");
-  out.push_back(fmt::format("  {:.2f} (end {:.6f}{})", std::abs(relative) / (2 * kPi),
-                            std::abs(t.lab - t.frame) / (2 * kPi), t.paperPenny ? "; the paper says 1" : ""));
+  out.push_back(fmt::format("  {:.{}f}{}", std::abs(relative) / (2 * kPi), atEnd ? 6 : 2,
+                            atEnd && t.paperPenny ? " (the paper says 1)" : ""));
 }
 
-void phaseLines(const PhaseSplitFact& p, std::vector<std::string>& out) {
-  out.push_back(fmt::format("cyclic spin X of U(L), {:.2f}° from B:", p.spinFromField / kDeg));
-  out.push_back(fmt::format("dynamic (1/2)∫B·X ds = {:.6f}", p.dynamic));
-  out.push_back(fmt::format("geometric −(1/2)Ω(X) = {:.6f}", p.geometric));
-  out.push_back(fmt::format("sum ≡ total phase {:.6f} (mod 2π)", p.total));
-  out.push_back(fmt::format("  off by {:.1e} rad", std::abs(p.residual)));
-  out.push_back(fmt::format("Berry: (1/2)∫|B| ds = {:.4f}", p.adiabaticDynamic));
-  out.push_back(fmt::format("−(1/2)Ω(B) = {:.6f} (the blue cone)", p.berryGeometric));
+// Everything here is of the closed loop U(L): shown when it closes.
+void phaseLines(const PhaseSplitFact& p, bool atEnd, std::vector<std::string>& out) {
+  auto value = [atEnd](const std::string& text) { return atEnd ? text : std::string("…"); };
+  out.push_back("cyclic spin X of U(L), " + value(fmt::format("{:.2f}°", p.spinFromField / kDeg)) + " from B:");
+  out.push_back("dynamic (1/2)∫B·X ds = " + value(fmt::format("{:.6f}", p.dynamic)));
+  out.push_back("geometric −(1/2)Ω(X) = " + value(fmt::format("{:.6f}", p.geometric)));
+  out.push_back("sum ≡ total phase " + value(fmt::format("{:.6f}", p.total)) + " (mod 2π)");
+  out.push_back("  off by " + value(fmt::format("{:.1e} rad", std::abs(p.residual))));
+  out.push_back("Berry: (1/2)∫|B| ds = " + value(fmt::format("{:.4f}", p.adiabaticDynamic)));
+  out.push_back("−(1/2)Ω(B) = " + value(fmt::format("{:.6f}", p.berryGeometric)) + " (the blue cone)");
   out.push_back(fmt::format("|Ω(B)| = 2π(1 − cos {:.1f}°) = {:.6f}", p.coneAngle / kDeg, 2.0 * std::abs(p.berryClosedForm)));
 }
 
@@ -80,14 +90,16 @@ void phaseLines(const PhaseSplitFact& p, std::vector<std::string>& out) {
 std::vector<std::string> factLines(const SceneFacts& facts, const FrameOrientations& frame, double pathLength) {
   std::vector<std::string> out;
   const bool strobe = !frame.strobe.empty();
-  const bool atEnd = frame.current.s >= pathLength * (1.0 - 1e-12);
+  // A strobe shows the whole circuit: its end values.
+  const bool atEnd = strobe || frame.current.s >= pathLength * (1.0 - 1e-12);
   const LiveAngles live = facts.at(frame.current.s, frame.current.q);
+  const double labNow = spin::rotationAngleAxis(frame.current.q).angle;
   for (const scene::Fact f : facts.facts()) {
     switch (f) {
-      case scene::Fact::Delta: deltaLines(*facts.delta, live, atEnd, strobe, facts.pathTurns(), out); break;
+      case scene::Fact::Delta: deltaLines(*facts.delta, live, labNow, atEnd, facts.pathTurns(), out); break;
       case scene::Fact::Marks: marksLines(facts, frame, strobe, out); break;
-      case scene::Fact::Turns: turnsLines(*facts.turns, live, strobe, out); break;
-      case scene::Fact::PhaseSplit: phaseLines(*facts.phaseSplit, out); break;
+      case scene::Fact::Turns: turnsLines(*facts.turns, live, atEnd, out); break;
+      case scene::Fact::PhaseSplit: phaseLines(*facts.phaseSplit, atEnd, out); break;
     }
   }
   return out;

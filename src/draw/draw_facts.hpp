@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "draw/scene_drawer.hpp"
+#include "motion/frame_sampling.hpp"
 #include "motion/scene_facts.hpp"
 #include "render/draw_list.hpp"
 

@@ -1,16 +1,22 @@
-// SceneDrawer — turns (scene, model, orientation samples) into a DrawList:
-// the textured ball at its centre C(s) oriented by worldFromBody = R(U(s)),
-// the surface, the contact path (travelled part highlighted), Brockett's
-// glass plate, and the Bloch-sphere twin with the Bloch vector of the marker
+// SceneDrawer — turns (scene, model, orientation samples) into a DrawList by
+// composing the views the layout asks for (title band, ball view, twin view,
+// caption) over the camera framing. The ball view shows the textured ball
+// at its centre C(s) oriented by worldFromBody = R(U(s)), the surface, the
+// contact path (travelled part highlighted), Brockett's glass plate; the
+// Bloch-sphere twin shows the Bloch vector of the marker
 // X(s) = Q(s) X(0), the field direction B/|B| and their trails. Only what
 // the layout shows is built. It never runs the solver: the caller passes the
 // orientations (FrameOrientations) it computed.
 #pragma once
 
 #include <memory>
-#include <optional>
+#include <string>
 #include <vector>
 
+#include "draw/ball_view.hpp"
+#include "draw/clip_layout.hpp"
+#include "draw/camera_framing.hpp"
+#include "draw/twin_view.hpp"
 #include "motion/frame_sampling.hpp"
 #include "motion/scene_facts.hpp"
 #include "model/rolling_model.hpp"
@@ -30,7 +36,7 @@ class SceneDrawer {
  public:
   // A camera change between segments moves smoothly (3x² − 2x³) over this
   // many seconds (or the whole segment, when it is shorter).
-  static constexpr double kCameraMove = 1.0;
+  static constexpr double kCameraMove = CameraFraming::kCameraMove;
 
   // `ballTexture` null: the built-in tennis ball. Meshes are built once here
   // and shared by every frame. `facts` (makeSceneFacts): the scene's fact
@@ -45,52 +51,29 @@ class SceneDrawer {
   [[nodiscard]] const geometry::Vec3& markerBody() const { return markerBody_; }
 
  private:
-  void addBallView(render::DrawList& list, const FrameOrientations& frame, int view) const;
-  void addTwinView(render::DrawList& list, const FrameOrientations& frame, int view) const;
-  // The camera of a frame: its segment's, or on the way there from the
-  // previous segment's during the first kCameraMove seconds.
-  struct Shot {
-    double azimuth = 0.0, elevation = 0.0, fovDeg = 32.0;  // radians, radians, degrees
-    std::optional<geometry::Vec3> target;
-    std::optional<double> distance;
-    bool follow = false;
+  struct Rect {
+    int x = 0, y = 0, width = 0, height = 0;
   };
-  struct Aim {
-    geometry::Vec3 target;
-    double distance, azimuth, elevation, fovDeg;
+  struct Rects {
+    Rect ball, twin;  // width 0: not shown
+    bool inset = false;
   };
-  [[nodiscard]] Aim aimOf(const Shot& shot, int w, int h, double s) const;
-  [[nodiscard]] Aim aimAt(const StoryPlace& story, int w, int h, double s) const;
-  render::View ballCamera(int x, int y, int w, int h, double s, const StoryPlace& story) const;
-  void addCaption(render::DrawList& list, const FrameOrientations& frame, int view) const;
-  std::vector<Shot> shots_;  // one per storyboard segment (one for a scene without segments)
-  bool titleBand_ = false;   // render.title or any segment's title: the band is kept for the whole clip
-  render::View ballCamera(int x, int y, int w, int h, double s) const;
-  void addMarks(render::DrawList& list, double s, bool plateShown, int view) const;
-  void addFactLabels(render::DrawList& list, const FrameOrientations& frame, int view, float top) const;
-  // Brockett's plate: the point of the plate above the contact point P(s),
-  // lifted by `lift` above the ball's top.
-  geometry::Vec3 platePoint(double s, double lift) const;
-  // The glass disc drawn for the plate at s (centre, radius): the window of
-  // the plate that holds its marked point and the ball's top.
-  std::pair<geometry::Vec3, double> plateDisc(double s) const;
+  [[nodiscard]] Rects rects() const;
+  [[nodiscard]] float text() const;  // body text size in pixels
+  [[nodiscard]] const std::string& captionAt(const StoryPlace& story) const;
+  [[nodiscard]] std::vector<TextBlock> ballBlocks(const FrameOrientations& frame, float viewWidth) const;
+  [[nodiscard]] std::vector<TextBlock> twinBlocks(const FrameOrientations& frame, float viewWidth, bool inset) const;
+  void layOut(const RollingModel& model);
+  void addViews(render::DrawList& list, const FrameOrientations& frame) const;
 
   const scene::SceneSpec& spec_;
-  const RollingModel& model_;
   geometry::Vec3 markerBody_;
-  std::vector<geometry::Vec3> pathPoints_;  // dense samples of P(s)
-  std::vector<double> pathS_;
-  geometry::Vec3 frameCentre_ = geometry::Vec3::Zero();  // shadow-map centre
-  double frameRadius_ = 1.0;                             // bounding radius of all that moves
-  std::vector<geometry::Vec3> framePoints_;  // the default camera keeps these (padded by R) in view
-  std::shared_ptr<const render::TextureImage> ballTexture_;
-  std::shared_ptr<const SceneFacts> facts_;
-  std::shared_ptr<render::MeshData> fieldConeMesh_;  // phase-split: the cone of B̂ in the twin
-  std::shared_ptr<render::MeshData> sphereMesh_, dotMesh_, surfaceMesh_, blochSphereMesh_, discMesh_;
-  render::Material surfaceMaterial_;
-  glm::mat4 surfaceFromModel_{1.0f};
-  geometry::Vec3 plateCircleCentre_ = geometry::Vec3::Zero();
-  std::vector<geometry::Vec3> cutRim_;  // inside a sphere: the edge of the cut-away
+  bool titleBand_ = false;  // render.title or any segment's title: the band is kept for the whole clip
+  std::unique_ptr<TwinView> twin_;  // null when the layout shows no twin
+  std::unique_ptr<BallView> ball_;  // with layout = "twin", only its path samples (for the framing)
+  std::unique_ptr<CameraFraming> camera_;
+  ViewLayout ballLayout_, twinLayout_;  // decided per clip (layOut)
+  std::vector<glm::vec2> ballReserved_, twinReserved_;  // each block's size over the clip
 };
 
 }  // namespace rollspin::draw

@@ -112,6 +112,8 @@ struct RenderSpec {
   std::optional<std::string> format;
   long long jpegQuality = 92;  // JPEG stills, 1 … 100
   double dpi = 300.0;  // vector figures: resolution of their raster parts (the shaded ball and surfaces)
+  double fontScale = 1.0;   // text size × this (README "Rendering"); body line ≥ 1/28 of the height at 1
+  bool twinCameraFixed = true;  // twin_camera: "fixed" (the first shot's view throughout) or "linked"
 };
 
 // [figure]: a still as a publication figure (PDF/SVG, README "Figures for

@@ -217,6 +217,8 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   else w.computed("target", "framed automatically");
   w.key("follow", boolean(r.follow));
   w.key("fov_deg", number(r.fovDeg));
+  w.key("font_scale", number(r.fontScale));
+  w.key("twin_camera", quoted(r.twinCameraFixed ? "fixed" : "linked"));
   if (r.format) w.key("format", quoted(*r.format));
   else w.computed("format", "from the output's extension, else mp4 (a still: png)");
   w.key("jpeg_quality", std::to_string(r.jpegQuality));

@@ -108,7 +108,7 @@ void Reader::readRender() {
   const toml::table* render = section(
       "render", {"width", "height", "layout", "strobe", "title", "labels", "transparent", "msaa", "azimuth_deg",
                  "elevation_deg", "distance", "target", "follow", "fov_deg", "format", "trails", "shadow", "dpi",
-                 "jpeg_quality"});
+                 "jpeg_quality", "font_scale", "twin_camera"});
   RenderSpec& r = spec_.render;
   constexpr long long kMaxSide = 8192;  // "8K": the renderer's size limit
   for (const char* key : {"width", "height"}) {
@@ -143,6 +143,11 @@ void Reader::readRender() {
   if (camera.follow) r.follow = *camera.follow;
   if (camera.fovDeg) r.fovDeg = *camera.fovDeg;
   if (auto t = boolean(render, "render", "trails")) r.trails = *t;
+  if (auto f = number(render, "render", "font_scale")) {
+    if (!(*f >= 0.25 && *f <= 4.0)) failAt("render.font_scale", fmt::format("expected a text scale in [0.25, 4], got {}", *f));
+    r.fontScale = *f;
+  }
+  if (auto t = text(render, "render", "twin_camera", {"linked", "fixed"})) r.twinCameraFixed = *t == "fixed";
   if (auto sh = boolean(render, "render", "shadow")) r.shadow = *sh;
   if (r.follow && spec_.locations.contains("render.target"))
     failAt("render.target", "conflicts with render.follow = true (the camera then targets the ball)");

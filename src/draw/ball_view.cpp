@@ -1,0 +1,469 @@
+#include "draw/ball_view.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/stage_log.hpp"
+#include "draw/draw_facts.hpp"
+#include "draw/draw_style.hpp"
+#include "draw/text_blocks.hpp"
+#include "draw/clip_layout.hpp"
+#include "render/mesh_builders.hpp"
+#include "render/procedural_textures.hpp"
+
+namespace rollspin::draw {
+
+using geometry::Vec3;
+using motion::FrameOrientations;
+using motion::MarksFact;
+using motion::OrientedSample;
+
+BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& model,
+                   std::shared_ptr<const render::TextureImage> ballTexture,
+                   std::shared_ptr<const motion::SceneFacts> facts, const Vec3& markerBody,
+                   std::shared_ptr<render::MeshData> dotMesh)
+    : spec_(spec), model_(model), markerBody_(markerBody), ballTexture_(std::move(ballTexture)),
+      facts_(std::move(facts)), dotMesh_(std::move(dotMesh)) {
+  const double R = model.ballRadius;
+  const double length = model.path->length();
+  const geometry::DarbouxSample start = model.path->at(0.0);
+  const int samples = 1 + static_cast<int>(std::clamp(480.0 * std::max(1.0, model.path->turns()), 480.0, 20000.0));
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  for (int i = 0; i < samples; ++i) {
+    const double s = length * i / (samples - 1);
+    const geometry::DarbouxSample f = model.path->at(s);
+    pathS_.push_back(s);
+    pathPoints_.push_back(f.point);
+    const Vec3 c = f.centre(R);
+    if (i % std::max(1, samples / 240) == 0) extent_.points.push_back(c);
+    lo = lo.cwiseMin(c - Vec3::Constant(R));
+    hi = hi.cwiseMax(c + Vec3::Constant(R));
+  }
+  const bool layoutShowsBall = spec.render.layout != scene::RenderLayout::Twin;
+  if (!layoutShowsBall) return;  // the twin needs none of the surface geometry
+  StageLog::instance().record("surface-mesh");
+  if (!ballTexture_) ballTexture_ = render::tennisBallTexture();
+
+  // Small triangles are costly on llvmpipe (each shades whole 4×4 blocks):
+  // 64 segments keep the silhouette within 0.2 px of a circle up to 1440p.
+  sphereMesh_ = spec.render.height > 1440 ? render::uvSphere(96, 48) : render::uvSphere(64, 32);
+  // Surfaces receive the ball's shadow but cast none: a surface shadowing
+  // itself only adds acne, and where the ball's shadow would pass through a
+  // surface to its far side, that side faces away from the light anyway.
+  surfaceMaterial_.castsShadow = false;
+  surfaceMaterial_.receivesShadow = true;
+  surfaceMaterial_.specular = 0.0f;  // matte: cheaper, and no glare on the board
+  surfaceMaterial_.shininess = 16.0f;
+  surfaceMaterial_.pattern = render::Pattern::Checker;
+  surfaceMaterial_.cull = render::Cull::None;
+
+  if (const auto* plane = dynamic_cast<const geometry::Plane*>(model.surface.get())) {
+    // A square board under the path; checker cells of size R so that the
+    // distance rolled can be counted.
+    const Vec3 n = plane->normal();
+    const Vec3 mid = 0.5 * (lo + hi);
+    const Vec3 centre = mid - n * n.dot(mid);
+    const double half = 0.5 * (hi - lo).norm() + 3.0 * R;
+    const Vec3 e1 = geometry::defaultTangentFor(n), e2 = n.cross(e1);
+    surfaceMesh_ = render::parametricPatch(
+        [&](float a, float b, glm::vec3& p, glm::vec3& nn) {
+          p = toGlm(centre + (2.0 * a - 1.0) * half * e1 + (2.0 * b - 1.0) * half * e2);
+          nn = toGlm(n);
+        },
+        1, 1);  // flat: two triangles (large ones let llvmpipe shade whole tiles)
+    for (auto& v : surfaceMesh_->vertices) {
+      const Vec3 p(v.position.x, v.position.y, v.position.z);
+      v.uv = glm::vec2(float(p.dot(e1) / R), float(p.dot(e2) / R));  // cells of size R, a corner at the origin
+    }
+    surfaceMaterial_.color = {0.80f, 0.78f, 0.74f};
+    surfaceMaterial_.color2 = {0.55f, 0.56f, 0.58f};
+    surfaceMaterial_.patternScale = glm::vec2(1.0f);
+  } else if (const auto* sphere = dynamic_cast<const geometry::Sphere*>(model.surface.get())) {
+    const double r = sphere->radius();
+    const double c0 = 0.0, c1 = std::numbers::pi;
+    if (sphere->side() == geometry::Side::Inside) {
+      // Cut away the cap that faces the camera, so the ball inside is seen
+      // wherever it rolls; a rim line marks the cut.
+      const Vec3 toEye = towardEye(orbitAngles(spec, model));
+      const double offset = 0.25 * r;
+      surfaceMaterial_.cutPlane = glm::vec4(-toGlm(toEye), float(offset));
+      const Vec3 e1 = Vec3::UnitZ().cross(toEye).normalized(), e2 = toEye.cross(e1);
+      const double rimRadius = std::sqrt(r * r - offset * offset);
+      for (int k = 0; k <= 180; ++k) {
+        const double phi = 2.0 * std::numbers::pi * k / 180;
+        cutRim_.push_back(offset * toEye + rimRadius * (std::cos(phi) * e1 + std::sin(phi) * e2));
+      }
+    }
+    surfaceMesh_ = render::parametricPatch(
+        [&](float a, float b, glm::vec3& p, glm::vec3& nn) {
+          const double phi = 2.0 * std::numbers::pi * a, th = c0 + (c1 - c0) * b;
+          const Vec3 d(std::sin(th) * std::cos(phi), std::sin(th) * std::sin(phi), std::cos(th));
+          p = toGlm(r * d);
+          nn = toGlm(-d);  // the patch winds inward; lighting flips by facing anyway
+        },
+        128, std::max(8, int(64 * (c1 - c0) / std::numbers::pi)),
+        glm::vec2(24.0f, float(12.0 * (c1 - c0) / std::numbers::pi)));
+    surfaceMaterial_.color = {0.72f, 0.74f, 0.78f};
+    surfaceMaterial_.color2 = {0.52f, 0.56f, 0.62f};
+    // Inside, the whole sphere frames the picture; outside, the ball and its
+    // path do (a small circle on a big sphere would otherwise be lost).
+    for (int i = 0; i <= 8 && sphere->side() == geometry::Side::Inside; ++i)
+      for (int k = 0; k < 16; ++k) {
+        const double th = c0 + (c1 - c0) * i / 8, phi = 2.0 * std::numbers::pi * k / 16;
+        extent_.points.push_back(r * Vec3(std::sin(th) * std::cos(phi), std::sin(th) * std::sin(phi), std::cos(th)));
+      }
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], -r);
+      hi[k] = std::max(hi[k], r);
+    }
+  }
+  else if (model.surface) {
+    // Any other surface (cylinder, torus, height field, ...): mesh its own
+    // chart x(u, v) over the parameter box the path visits, padded by about
+    // 3R on the surface, with checker cells of about R.
+    const geometry::Surface& surface = *model.surface;
+    const geometry::ParameterDomain domain = surface.domain();
+    double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300, speedU = 0.0, speedV = 0.0;
+    int found = 0;
+    for (std::size_t i = 0; i < pathPoints_.size(); i += std::max<std::size_t>(1, pathPoints_.size() / 200)) {
+      const auto uv = surface.parametersOf(pathPoints_[i]);
+      if (!uv) continue;
+      u0 = std::min(u0, uv->x());
+      u1 = std::max(u1, uv->x());
+      v0 = std::min(v0, uv->y());
+      v1 = std::max(v1, uv->y());
+      const geometry::SurfaceJet j = surface.jet(*uv);
+      speedU += j.xu.norm();
+      speedV += j.xv.norm();
+      ++found;
+    }
+    if (found > 0) {
+      speedU = std::max(speedU / found, 1e-9);
+      speedV = std::max(speedV / found, 1e-9);
+      const double eps = 1e-6;
+      u0 = std::max(u0 - 3.0 * R / speedU, domain.uMin + eps);
+      u1 = std::min(u1 + 3.0 * R / speedU, domain.uMax - eps);
+      v0 = std::max(v0 - 3.0 * R / speedV, domain.vMin + eps);
+      v1 = std::min(v1 + 3.0 * R / speedV, domain.vMax - eps);
+      const auto cellsU = float((u1 - u0) * speedU / R), cellsV = float((v1 - v0) * speedV / R);
+      surfaceMesh_ = render::parametricPatch(
+          [&](float a, float b, glm::vec3& p, glm::vec3& nn) {
+            const geometry::Vec2 uv(u0 + (u1 - u0) * a, v0 + (v1 - v0) * b);
+            p = toGlm(surface.position(uv));
+            nn = toGlm(surface.normal(uv));
+          },
+          std::clamp(int(cellsU * 4), 16, 256), std::clamp(int(cellsV * 4), 16, 256), glm::vec2(cellsU, cellsV));
+      surfaceMaterial_.color = {0.78f, 0.77f, 0.74f};
+      surfaceMaterial_.color2 = {0.55f, 0.57f, 0.60f};
+      for (const auto& v : surfaceMesh_->vertices) {
+        const Vec3 p(v.position.x, v.position.y, v.position.z);
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+      }
+    }
+  }
+  if (model.plate) {
+    // Brockett's plate translates with the top point: on a plane the top
+    // moves contactSpeedRatio (= 2) times as fast as the contact point, so
+    // the plate point above the circle's centre-opposite point traces the
+    // circle of radius R1 about the contact circle's centre.
+    discMesh_ = render::unitCylinder(96);
+    const double kg = start.geodesicCurvature;
+    plateCircleCentre_ = std::abs(kg) > 1e-12 ? Vec3(start.point + start.tangentNormal / kg) : Vec3(start.point);
+    hi = hi.cwiseMax(model.plate->initialTopPoint + 0.2 * R * start.normal.cwiseAbs());
+    const std::size_t pathFramePoints = extent_.points.size();
+    for (std::size_t i = 0; i < pathFramePoints; ++i) extent_.points.push_back(extent_.points[i] + 1.2 * R * start.normal);
+    // The glass disc reaches beyond the path (the plate's marked point
+    // circles at R1 = 2r): its rim, wherever the plate moves, must stay in
+    // frame and inside the far plane.
+    for (int i = 0; i < 24; ++i) {
+      const double s = length * i / 24.0;
+      const geometry::DarbouxSample f = model.path->at(s);
+      const Vec3 e1 = geometry::defaultTangentFor(f.normal), e2 = f.normal.cross(e1);
+      const auto [centre, radius] = plateDisc(s);
+      for (int k = 0; k < 16; ++k) {
+        const double phi = 2.0 * std::numbers::pi * k / 16.0;
+        const Vec3 p = centre + radius * (std::cos(phi) * e1 + std::sin(phi) * e2) + 0.1 * R * f.normal;
+        extent_.points.push_back(p);
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+      }
+    }
+  }
+  extent_.centre = 0.5 * (lo + hi);
+  extent_.radius = 0.5 * (hi - lo).norm();
+}
+
+void BallView::add(render::DrawList& list, const FrameOrientations& frame, int view) const {
+  const double R = model_.ballRadius;
+  const double s = frame.current.s;
+
+  if (surfaceMesh_) list.meshes.push_back({surfaceMesh_, glm::mat4(1.0f), surfaceMaterial_, view});
+  if (!cutRim_.empty()) {
+    render::PolylineItem rim;
+    rim.color = glm::vec4(0.25f, 0.27f, 0.30f, 1.0f);
+    rim.widthPx = std::max(1.2f, float(list.height) / 450.0f);
+    rim.view = view;
+    for (const Vec3& p : cutRim_) rim.points.push_back(toGlm(p));
+    list.polylines.push_back(rim);
+  }
+
+  // The contact path, lifted a hair along the normal; travelled part on top.
+  render::PolylineItem full, travelled;
+  full.color = kPathLineColor;
+  full.widthPx = std::max(1.5f, float(list.height) / 400.0f);
+  travelled.color = kTravelledColor;
+  travelled.widthPx = std::max(2.5f, float(list.height) / 200.0f);
+  full.view = travelled.view = view;
+  travelled.dynamic = true;  // grows with s: redrawn per frame over the retained layer
+  for (std::size_t i = 0; i < pathS_.size(); ++i) {
+    const Vec3 p = pathPoints_[i] + 0.004 * R * model_.path->normal(pathS_[i]);
+    full.points.push_back(toGlm(p));
+    if (pathS_[i] <= s) travelled.points.push_back(toGlm(p));
+  }
+  travelled.points.push_back(toGlm(model_.path->point(s) + 0.004 * R * model_.path->normal(s)));
+  list.polylines.push_back(full);
+  list.polylines.push_back(travelled);
+
+  // The ball(s): texture in body coordinates, rotated by worldFromBody.
+  render::Material ballMaterial;
+  ballMaterial.pattern = render::Pattern::Texture;
+  ballMaterial.texture = ballTexture_;
+  ballMaterial.color = glm::vec3(1.0f);
+  ballMaterial.specular = 0.12f;
+  ballMaterial.shininess = 24.0f;
+  render::Material markerMaterial;
+  markerMaterial.color = kMarkerColor;
+  markerMaterial.specular = 0.5f;
+  markerMaterial.shininess = 80.0f;
+  auto addBall = [&](const OrientedSample& pose) {
+    const Vec3 c = model_.path->at(pose.s).centre(R);
+    const glm::mat4 worldFromBody = rotationOf(pose.q);
+    list.meshes.push_back({sphereMesh_,
+                           glm::translate(glm::mat4(1.0f), toGlm(c)) * worldFromBody * glm::scale(glm::mat4(1.0f), glm::vec3(float(R))),
+                           ballMaterial, view});
+    list.meshes.back().dynamic = true;
+    const Vec3 marker = c + 0.97 * R * pose.q.rotate(markerBody_);
+    list.meshes.push_back({dotMesh_,
+                           glm::translate(glm::mat4(1.0f), toGlm(marker)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.13 * R))),
+                           markerMaterial, view});
+    list.meshes.back().dynamic = true;
+  };
+  if (frame.strobe.empty()) {
+    addBall(frame.current);
+  } else {
+    for (const auto& pose : frame.strobe) addBall(pose);
+  }
+
+  // The marker's path through space: cusps where it touches the surface.
+  if (frame.trail.size() >= 2) {
+    render::PolylineItem markerTrail;
+    markerTrail.color = kMarkerTrailColor;
+    markerTrail.widthPx = std::max(1.5f, float(list.height) / 360.0f);  // no hairline: ~3 px at 1080p
+    markerTrail.view = view;
+    markerTrail.dynamic = true;
+    for (const auto& t : frame.trail)
+      markerTrail.points.push_back(toGlm(model_.path->at(t.s).centre(R) + R * t.q.rotate(markerBody_)));
+    list.polylines.push_back(markerTrail);
+  }
+
+  if (model_.plate && frame.strobe.empty()) {
+    const geometry::DarbouxSample f = model_.path->at(s);
+    const double thickness = 0.08 * R;
+    // The plate point above the circle's far side traces the circle of
+    // radius R1 = ratio · r about the contact circle's centre.
+    const Vec3 plateCentre = platePoint(s, 0.0);
+    const auto [discCentre, discRadius] = plateDisc(s);
+    const glm::vec3 n = toGlm(f.normal);
+    const glm::vec3 e1 = toGlm(geometry::defaultTangentFor(f.normal)), e2 = glm::cross(n, e1);
+    glm::mat4 disc(1.0f);
+    disc[0] = glm::vec4(e1 * float(discRadius), 0.0f);
+    disc[1] = glm::vec4(e2 * float(discRadius), 0.0f);
+    disc[2] = glm::vec4(n * float(thickness), 0.0f);
+    disc[3] = glm::vec4(toGlm(discCentre), 1.0f);
+    list.meshes.push_back({discMesh_, disc, glassMaterial({0.55f, 0.80f, 0.95f}, 0.14f, 0.9f, 120.0f), view});
+    list.meshes.back().dynamic = true;  // the plate moves with the ball
+    render::PolylineItem rim;  // the glass edge, so the plate reads as a sheet
+    rim.color = opaqueLine({0.85f, 0.95f, 1.0f}, 0.9f);
+    rim.widthPx = std::max(1.2f, float(list.height) / 450.0f);
+    rim.view = view;
+    rim.dynamic = true;
+    for (int k = 0; k <= 128; ++k) {
+      const float phi = 2.0f * std::numbers::pi_v<float> * float(k) / 128.0f;
+      rim.points.push_back(glm::vec3(disc * glm::vec4(std::cos(phi), std::sin(phi), 1.0f, 1.0f)));
+    }
+    list.polylines.push_back(rim);
+    // The plate's own marker: a dot at its centre, and the circle it traces.
+    render::Material dot;
+    dot.color = kPlateColor;
+    glm::mat4 dotModel(1.0f);
+    dotModel[0] = glm::vec4(e1 * float(0.12 * R), 0.0f);
+    dotModel[1] = glm::vec4(e2 * float(0.12 * R), 0.0f);
+    dotModel[2] = glm::vec4(n * float(0.02 * R), 0.0f);
+    dotModel[3] = glm::vec4(toGlm(plateCentre + thickness * f.normal), 1.0f);
+    list.meshes.push_back({discMesh_, dotModel, dot, view});
+    list.meshes.back().dynamic = true;
+    render::PolylineItem plateTrail;
+    plateTrail.color = kPlateTrailColor;
+    plateTrail.widthPx = std::max(1.2f, float(list.height) / 450.0f);
+    plateTrail.view = view;
+    plateTrail.dynamic = true;
+    for (std::size_t i = 0; i < pathS_.size(); ++i) {
+      if (pathS_[i] > s) break;
+      plateTrail.points.push_back(toGlm(platePoint(pathS_[i], thickness * 1.05)));
+    }
+    list.polylines.push_back(plateTrail);
+  }
+  if (facts_ && facts_->marks) addMarks(list, s, frame.strobe.empty(), view);
+
+}
+
+Vec3 BallView::platePoint(double s, double lift) const {
+  const geometry::DarbouxSample f = model_.path->at(s);
+  return plateCircleCentre_ + model_.plate->contactSpeedRatio * (f.point - plateCircleCentre_) +
+         (2.0 * model_.ballRadius + lift) * f.normal;
+}
+
+// Centred between the marked point and the ball's top (the plate is an
+// unbounded plane; a disc around both keeps the picture, and its framing,
+// as small as they can be), with a margin of 0.8 R.
+std::pair<Vec3, double> BallView::plateDisc(double s) const {
+  const geometry::DarbouxSample f = model_.path->at(s);
+  const Vec3 marked = platePoint(s, 0.0);
+  const Vec3 top = f.point + 2.0 * model_.ballRadius * f.normal;
+  return {0.5 * (marked + top), 0.5 * (marked - top).norm() + 0.8 * model_.ballRadius};
+}
+
+// The marks every β of path angle: dots on the contact path (dark once
+// passed) and, where the plate is drawn (not in a strobe), on its trail;
+// numbered.
+void BallView::addMarks(render::DrawList& list, double s, bool plateShown, int view) const {
+  const double R = model_.ballRadius;
+  const float text = bodyTextPx(list.width, list.height, spec_.render.fontScale);
+  const MarksFact& m = *facts_->marks;
+  const int passed = facts_->marksPassed(s);
+  // Labels are drawn over everything: leave out a number the ball hides
+  // (its segment from the eye to the mark passes through the ball).
+  const Vec3 eye(list.views[static_cast<std::size_t>(view)].camera.position.x,
+                 list.views[static_cast<std::size_t>(view)].camera.position.y,
+                 list.views[static_cast<std::size_t>(view)].camera.position.z);
+  const Vec3 ball = model_.path->at(s).centre(R);
+  auto hiddenByBall = [&](const Vec3& p) {
+    const Vec3 d = p - eye;
+    const double t = std::clamp((ball - eye).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    return (eye + t * d - ball).norm() < R && t < 1.0;
+  };
+  for (std::size_t k = 0; k < m.s.size(); ++k) {
+    const bool done = int(k) < passed;
+    render::Material dot;
+    dot.color = done ? glm::vec3(0.05f, 0.05f, 0.08f) : glm::vec3(0.45f, 0.45f, 0.5f);
+    dot.castsShadow = false;
+    const geometry::DarbouxSample f = model_.path->at(m.s[k]);
+    const Vec3 onPath = f.point + 0.02 * R * f.normal;
+    list.meshes.push_back({dotMesh_,
+                           glm::translate(glm::mat4(1.0f), toGlm(onPath)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.06 * R))),
+                           dot, view});
+    list.meshes.back().figureDisc = true;  // a vector disc in PDF/SVG figures
+    if (model_.plate && plateShown && done) {
+      const Vec3 onPlate = platePoint(m.s[k], 0.06 * R);
+      list.meshes.push_back({dotMesh_,
+                             glm::translate(glm::mat4(1.0f), toGlm(onPlate)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.05 * R))),
+                             dot, view});
+      list.meshes.back().figureDisc = true;
+    }
+    if (!spec_.render.labels || (plateShown && hiddenByBall(onPath))) continue;
+    render::LabelItem number;
+    number.view = view;
+    number.text = fmt::format("{}", k);
+    // Outward from the circle's centre, so the number sits beside the path.
+    // Outward: u = n × t points to the centre where κ_g > 0.
+    number.anchor = toGlm(onPath - std::copysign(0.4 * R, f.geodesicCurvature) * f.tangentNormal);
+    number.worldAnchored = true;
+    number.align = render::Align::Center;
+    number.sizePx = text * 0.9f;
+    number.bold = true;
+    number.color = done ? kTextColor : glm::vec4(0.12f, 0.13f, 0.16f, 1.0f);
+    list.labels.push_back(number);
+  }
+}
+std::vector<TextBlock> BallView::textBlocks(const FrameOrientations& frame, float text) const {
+  std::vector<TextBlock> blocks(2);
+  if (!spec_.render.labels) return blocks;
+  // The heading and the scene's facts (draw_facts formats them), top left
+  // where there is room.
+  TextBlock& facts = blocks[0];
+  facts.slots = {Slot::TopLeft, Slot::TopRight};
+  facts.keep = 3;  // the heading and the first fact; later lines give way where there is no room
+  facts.lines.push_back({frame.strobe.empty() ? "rolling ball" : fmt::format("rolling ball at {} positions", frame.strobe.size()),
+                         text * 1.1f, true, kTextColor});
+  if (facts_) {
+    const std::vector<std::string> lines = factLines(*facts_, frame, model_.path->length());
+    // Lines too long for the view shrink rather than leave it.
+    for (const std::string& line : lines) facts.lines.push_back({line, text, false, kTextColor});
+  }
+  // The running values, bottom left.
+  if (frame.strobe.empty()) {
+    TextBlock& live = blocks[1];
+    live.slots = {Slot::BottomLeft, Slot::BottomRight, Slot::TopLeft};
+    live.keep = 1;
+    const spin::AngleAxis aa = spin::rotationAngleAxis(frame.current.q);
+    const double psi = spin::spinorAngle(frame.current.q);
+    for (const std::string& line : {fmt::format("s = {:.2f} of {:.2f}", frame.current.s, model_.path->length()),
+                                    fmt::format("lab rotation angle = {:.1f}°", aa.angle / kDeg),
+                                    fmt::format("spinor angle ψ = {:.1f}°", psi / kDeg)})
+      live.lines.push_back({line, text, false, kTextColor});
+  }
+  return blocks;
+}
+
+void BallView::markImportant(Occupancy& occupancy, const render::View& v, double s, bool withPath) const {
+  const double R = model_.ballRadius;
+  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+  const float focalPx = 0.5f * float(v.height) * v.camera.clipFromView[1][1];
+  auto project = [&](const Vec3& p, float& depth) {
+    const glm::vec4 c = clipFromWorld * glm::vec4(toGlm(p), 1.0f);
+    depth = c.w;
+    return glm::vec2((c.x / c.w * 0.5f + 0.5f) * float(v.width), (0.5f - c.y / c.w * 0.5f) * float(v.height));
+  };
+  float depth = 0.0f;
+  const glm::vec2 ball = project(model_.path->at(s).centre(R), depth);
+  // A sphere's outline is a little wider than R f / depth; its shadow and
+  // the marker dot stay within 1.15 R of the centre.
+  if (depth > float(R)) occupancy.disc(ball, 1.15f * float(R) * focalPx / std::sqrt(depth * depth - float(R * R)) + 2.0f);
+  // The marker's trail lies on the ball's positions before s: seen by this
+  // camera (which may move with s: follow, orbit), their discs bound it.
+  if (withPath && spec_.render.trails)
+    for (int i = 0; i < 96; ++i) {
+      const glm::vec2 earlier = project(model_.path->at(s * i / 96.0).centre(R), depth);
+      if (depth > float(R))
+        occupancy.disc(earlier, 1.05f * float(R) * focalPx / std::sqrt(depth * depth - float(R * R)) + 2.0f);
+    }
+  const float lineHalf = std::max(2.0f, float(v.height) / 250.0f);
+  auto markCurve = [&](auto pointAt, std::size_t count) {
+    glm::vec2 previous;
+    bool havePrevious = false;
+    for (std::size_t i = 0; i < count; ++i) {
+      const glm::vec2 p = project(pointAt(i), depth);
+      if (depth <= 0.0f) {
+        havePrevious = false;
+        continue;
+      }
+      if (havePrevious) occupancy.segment(previous, p, lineHalf);
+      previous = p;
+      havePrevious = true;
+    }
+  };
+  const std::size_t step = std::max<std::size_t>(1, pathPoints_.size() / 400);
+  if (withPath) markCurve([&](std::size_t i) { return pathPoints_[std::min(i * step, pathPoints_.size() - 1)]; },
+                          (pathPoints_.size() + step - 1) / step + 1);
+  if (model_.plate && spec_.render.strobe <= 1)
+    markCurve([&](std::size_t i) { return platePoint(std::min(pathS_[std::min(i * step, pathS_.size() - 1)], s), 0.0); },
+              (pathS_.size() + step - 1) / step + 1);
+}
+
+}  // namespace rollspin::draw

@@ -1,0 +1,63 @@
+// The ball view: the textured ball at its centre C(s) oriented by
+// worldFromBody = R(U(s)) (or a strobe of them), the surface it rolls on,
+// the contact path (travelled part highlighted), the marker's trail,
+// Brockett's glass plate and the tennis ball's marks, with the view's
+// heading and running values. Meshes are built once and shared by frames.
+#pragma once
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "draw/camera_framing.hpp"
+#include "model/rolling_model.hpp"
+#include "motion/frame_sampling.hpp"
+#include "motion/scene_facts.hpp"
+#include "render/draw_list.hpp"
+#include "scene/scene_spec.hpp"
+
+namespace rollspin::draw {
+
+class BallView {
+ public:
+  // `ballTexture` null: the built-in tennis ball. With layout = "twin" only
+  // the path is sampled (the camera framing still reads it).
+  BallView(const scene::SceneSpec& spec, const model::RollingModel& model,
+           std::shared_ptr<const render::TextureImage> ballTexture, std::shared_ptr<const motion::SceneFacts> facts,
+           const geometry::Vec3& markerBody, std::shared_ptr<render::MeshData> dotMesh);
+
+  // What the default camera must keep in view.
+  [[nodiscard]] const FrameExtent& extent() const { return extent_; }
+
+  void add(render::DrawList& list, const motion::FrameOrientations& frame, int view) const;
+  // The view's text for this frame: {heading and facts, running values}
+  // (empty blocks when labels are off); `text` is the body size in pixels.
+  [[nodiscard]] std::vector<TextBlock> textBlocks(const motion::FrameOrientations& frame, float text) const;
+  // Marks what the view shows at s that text must not cover: the ball and
+  // (withPath) the contact path; the plate's trail so far.
+  void markImportant(Occupancy& occupancy, const render::View& v, double s, bool withPath) const;
+
+ private:
+  void addMarks(render::DrawList& list, double s, bool plateShown, int view) const;
+  // Brockett's plate: the point of the plate above the contact point P(s),
+  // lifted by `lift` above the ball's top.
+  geometry::Vec3 platePoint(double s, double lift) const;
+  // The glass disc drawn for the plate at s (centre, radius): the window of
+  // the plate that holds its marked point and the ball's top.
+  std::pair<geometry::Vec3, double> plateDisc(double s) const;
+
+  const scene::SceneSpec& spec_;
+  const model::RollingModel& model_;
+  geometry::Vec3 markerBody_;
+  std::vector<geometry::Vec3> pathPoints_;  // dense samples of P(s)
+  std::vector<double> pathS_;
+  FrameExtent extent_;
+  std::shared_ptr<const render::TextureImage> ballTexture_;
+  std::shared_ptr<const motion::SceneFacts> facts_;
+  std::shared_ptr<render::MeshData> sphereMesh_, dotMesh_, surfaceMesh_, discMesh_;
+  render::Material surfaceMaterial_;
+  geometry::Vec3 plateCircleCentre_ = geometry::Vec3::Zero();
+  std::vector<geometry::Vec3> cutRim_;  // inside a sphere: the edge of the cut-away
+};
+
+}  // namespace rollspin::draw

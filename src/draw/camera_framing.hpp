@@ -1,0 +1,116 @@
+// Camera framing for the ball view: orbit angles (azimuth, elevation) from
+// the scene, the target and distance that keep everything that moves in
+// view (fitPoints), one shot per storyboard segment, and the eased move
+// (3x² − 2x³) from one shot to the next; plus the key light that goes with
+// a camera. Plain geometry: no GL.
+#pragma once
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "draw/clip_layout.hpp"
+#include "geometry/surface.hpp"
+#include "model/rolling_model.hpp"
+#include "motion/frame_sampling.hpp"
+#include "render/draw_list.hpp"
+#include "scene/scene_spec.hpp"
+
+namespace rollspin::draw {
+
+struct OrbitAngles {
+  double azimuth = 0.0, elevation = 0.0;  // radians
+};
+
+// The unit vector from the target towards the eye.
+geometry::Vec3 towardEye(const OrbitAngles& a);
+
+// render.azimuth_deg / elevation_deg, with the defaults a surface asks for
+// where the scene leaves them out (a wall from its side, a ceiling from
+// below, a strobe from high up).
+OrbitAngles orbitAngles(const scene::SceneSpec& spec, const model::RollingModel& model);
+
+// A key light from the upper left, slightly in front of the subject; its
+// shadow map covers the sphere (centre, radius).
+render::Light keyLight(const glm::vec3& up, const glm::vec3& eyeDirection, const glm::vec3& centre, float radius);
+
+// A view of the rectangle (x, y, w, h) looking at `target` from `distance`
+// along the orbit angles, z up; near/far planes enclose sceneRadius.
+render::View orbitView(int x, int y, int w, int h, const glm::vec3& target, double distance, const OrbitAngles& a,
+                       double fovDeg, double sceneRadius);
+
+// The narrower lens that frames a subject into `window` of a view seen with
+// (fovDeg, aspect), and the off-axis projection that puts that lens's axis
+// at the window's centre.
+struct Lens {
+  double fovDeg, aspect;
+};
+Lens windowLens(const NdcWindow& window, double fovDeg, double aspect);
+bool isWholeView(const NdcWindow& window);
+glm::mat4 offAxisProjection(const NdcWindow& window, double fovDeg, double aspect, float nearPlane, float farPlane);
+
+// Distance at which a sphere of radius r fills the smaller field of view.
+double fitDistance(double radius, double fovDeg, double aspect);
+
+// Target and distance that keep every point (padded by `pad`) inside the
+// field of view, seen from the orbit direction.
+std::pair<geometry::Vec3, double> fitPoints(const std::vector<geometry::Vec3>& points, double pad,
+                                            const OrbitAngles& a, double fovDeg, double aspect);
+
+// What the default camera keeps in view: sample points (each padded by the
+// ball's radius when framed) and the bounding sphere of all that moves.
+struct FrameExtent {
+  std::vector<geometry::Vec3> points;
+  geometry::Vec3 centre = geometry::Vec3::Zero();  // shadow-map centre
+  double radius = 1.0;
+};
+
+class CameraFraming {
+ public:
+  // A camera change between segments moves smoothly (3x² − 2x³) over this
+  // many seconds (or the whole segment, when it is shorter).
+  static constexpr double kCameraMove = 1.0;
+
+  struct Aim {
+    geometry::Vec3 target;
+    double distance, azimuth, elevation, fovDeg;
+  };
+
+  // Cameras: [render]'s (with the defaults orbitAngles derives), then each
+  // segment's keys laid over the previous segment's camera.
+  CameraFraming(const scene::SceneSpec& spec, const model::RollingModel& model, FrameExtent extent);
+
+  // The camera of a frame: its segment's, or on the way there from the
+  // previous segment's during the first kCameraMove seconds.
+  [[nodiscard]] Aim aimAt(const motion::StoryPlace& story, int w, int h, double s) const;
+  // The ball view's camera and key light for the rectangle (x, y, w, h).
+  [[nodiscard]] render::View ballCamera(int x, int y, int w, int h, double s, const motion::StoryPlace& story) const;
+
+  // Frame the subject into this part of the ball view (the rest is left to
+  // text); the full view by default. Explicit distance/target keys ignore it.
+  void setWindow(const NdcWindow& window) { window_ = window; }
+  // Whether the scene fixes the camera itself (target and distance, or
+  // follow), so that the framing cannot make room for text.
+  [[nodiscard]] bool fixedByScene() const;
+  // Whether the default camera orbits with the ball (its view changes with s).
+  [[nodiscard]] bool orbits() const { return orbits_; }
+
+ private:
+  struct Shot {
+    double azimuth = 0.0, elevation = 0.0, fovDeg = 32.0;  // radians, radians, degrees
+    std::optional<geometry::Vec3> target;
+    std::optional<double> distance;
+    bool follow = false;
+  };
+  [[nodiscard]] Aim aimOf(const Shot& shot, int w, int h, double s) const;
+
+  const scene::SceneSpec& spec_;
+  const model::RollingModel& model_;
+  FrameExtent extent_;
+  NdcWindow window_;
+  bool orbits_ = false;       // the azimuth follows the ball's longitude (a path round a sphere)
+  double orbitOffset_ = 0.0;  // ... plus this
+  std::vector<Shot> shots_;  // one per storyboard segment (one for a scene without segments)
+};
+
+}  // namespace rollspin::draw

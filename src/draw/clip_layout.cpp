@@ -1,0 +1,329 @@
+#include "draw/clip_layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+
+#include "render/font_atlas.hpp"
+
+namespace rollspin::draw {
+
+Occupancy::Occupancy(int width, int height)
+    : width_(std::max(width, 1)), height_(std::max(height, 1)),
+      // About 160 cells across the view's height: fine enough for text rows.
+      cell_(std::max(1.0f, float(std::max(height, 1)) / 160.0f)) {
+  cellsX_ = int(std::ceil(float(width_) / cell_));
+  cellsY_ = int(std::ceil(float(height_) / cell_));
+  cells_.assign(std::size_t(cellsX_) * std::size_t(cellsY_), 0);
+}
+
+void Occupancy::mark(int cx, int cy) {
+  if (cx >= 0 && cy >= 0 && cx < cellsX_ && cy < cellsY_) cells_[std::size_t(cy) * std::size_t(cellsX_) + std::size_t(cx)] = 1;
+}
+
+void Occupancy::disc(glm::vec2 c, float r) {
+  const int x0 = int(std::floor((c.x - r) / cell_)), x1 = int(std::floor((c.x + r) / cell_));
+  const int y0 = int(std::floor((c.y - r) / cell_)), y1 = int(std::floor((c.y + r) / cell_));
+  if (x1 < 0 || y1 < 0 || x0 >= cellsX_ || y0 >= cellsY_) return;
+  for (int y = std::max(y0, 0); y <= std::min(y1, cellsY_ - 1); ++y)
+    for (int x = std::max(x0, 0); x <= std::min(x1, cellsX_ - 1); ++x) {
+      // The cell's nearest point to the centre.
+      const float nx = std::clamp(c.x, float(x) * cell_, float(x + 1) * cell_);
+      const float ny = std::clamp(c.y, float(y) * cell_, float(y + 1) * cell_);
+      if ((nx - c.x) * (nx - c.x) + (ny - c.y) * (ny - c.y) <= r * r) mark(x, y);
+    }
+}
+
+void Occupancy::rect(glm::vec2 lo, glm::vec2 hi) {
+  for (int y = std::max(0, int(std::floor(lo.y / cell_))); y <= std::min(cellsY_ - 1, int(std::floor(hi.y / cell_))); ++y)
+    for (int x = std::max(0, int(std::floor(lo.x / cell_))); x <= std::min(cellsX_ - 1, int(std::floor(hi.x / cell_))); ++x)
+      mark(x, y);
+}
+
+void Occupancy::segment(glm::vec2 a, glm::vec2 b, float halfWidth) {
+  const float length = glm::length(b - a);
+  const int steps = std::max(1, int(std::ceil(length / (0.5f * cell_))));
+  if (steps > 100000) return;  // a segment from behind the camera: not drawn either
+  for (int i = 0; i <= steps; ++i) disc(a + (b - a) * (float(i) / float(steps)), halfWidth);
+}
+
+std::pair<glm::vec2, glm::vec2> Occupancy::bounds() const {
+  glm::vec2 lo(1e30f), hi(-1e30f);
+  for (int y = 0; y < cellsY_; ++y)
+    for (int x = 0; x < cellsX_; ++x)
+      if (cells_[std::size_t(y) * std::size_t(cellsX_) + std::size_t(x)] != 0) {
+        lo = glm::min(lo, glm::vec2(float(x), float(y)) * cell_);
+        hi = glm::max(hi, glm::vec2(float(x + 1), float(y + 1)) * cell_);
+      }
+  return {lo, hi};
+}
+
+bool Occupancy::anyIn(glm::vec2 lo, glm::vec2 hi) const {
+  const int x0 = std::max(0, int(std::floor(lo.x / cell_))), x1 = std::min(cellsX_ - 1, int(std::floor(hi.x / cell_)));
+  const int y0 = std::max(0, int(std::floor(lo.y / cell_))), y1 = std::min(cellsY_ - 1, int(std::floor(hi.y / cell_)));
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x)
+      if (cells_[std::size_t(y) * std::size_t(cellsX_) + std::size_t(x)] != 0) return true;
+  return false;
+}
+
+// Measured at 64 px once per weight; advances scale with the size (the
+// atlas is not hinted), plus 2 % for rounding at small sizes.
+float textWidthPx(const std::string& text, float sizePx, bool bold) {
+  static std::once_flag once[2];
+  static std::unique_ptr<render::FontAtlas> atlas[2];
+  const int k = bold ? 1 : 0;
+  std::call_once(once[k], [&] { atlas[k] = std::make_unique<render::FontAtlas>(render::defaultFontFile(bold), 64.0f); });
+  return atlas[k]->layout(text, 0.0f, 0.0f, nullptr) * sizePx / 64.0f * 1.02f;
+}
+
+void fitWidth(TextBlock& block, float maxWidth) {
+  const float width = blockSize(block).x;
+  if (width <= maxWidth) return;
+  for (TextLine& l : block.lines) l.sizePx *= maxWidth / width;
+}
+
+glm::vec2 blockSize(const TextBlock& block) {
+  if (block.lines.empty()) return glm::vec2(0.0f);
+  const float pad = kBlockPad * block.lines.front().sizePx;
+  float width = 0.0f, height = 0.0f;
+  for (const TextLine& l : block.lines) {
+    width = std::max(width, textWidthPx(l.text, l.sizePx, l.bold));
+    height += kLineStep * l.sizePx;
+  }
+  return glm::max(block.minSize, glm::vec2(width + 2.0f * pad, height + 2.0f * pad - 0.25f * block.lines.back().sizePx));
+}
+
+namespace {
+
+struct Rect {
+  glm::vec2 lo, hi;
+  [[nodiscard]] bool overlaps(const Rect& o) const {
+    return lo.x < o.hi.x && o.lo.x < hi.x && lo.y < o.hi.y && o.lo.y < hi.y;
+  }
+};
+
+glm::vec2 slotOrigin(Slot slot, glm::vec2 size, int w, int h, float margin) {
+  const float W = float(w), H = float(h);
+  switch (slot) {
+    case Slot::TopLeft: return {margin, margin};
+    case Slot::TopRight: return {W - margin - size.x, margin};
+    case Slot::BottomLeft: return {margin, H - margin - size.y};
+    case Slot::BottomRight: return {W - margin - size.x, H - margin - size.y};
+    case Slot::TopCentre: return {0.5f * (W - size.x), margin};
+    case Slot::BottomCentre: return {0.5f * (W - size.x), H - margin - size.y};
+  }
+  return {margin, margin};
+}
+
+}  // namespace
+
+namespace {
+
+bool isTop(Slot s) { return s == Slot::TopLeft || s == Slot::TopRight || s == Slot::TopCentre; }
+bool isCentre(Slot s) { return s == Slot::TopCentre || s == Slot::BottomCentre; }
+bool isLeft(Slot s) { return s == Slot::TopLeft || s == Slot::BottomLeft; }
+
+// The slot's corner, moved down (top slots) or up (bottom slots) past the
+// blocks already placed there, so that blocks stack instead of overlapping.
+Rect stackedRect(Slot slot, glm::vec2 size, int w, int h, float margin, const std::vector<Rect>& placed) {
+  Rect r{slotOrigin(slot, size, w, h, margin), slotOrigin(slot, size, w, h, margin) + size};
+  for (bool moved = true; moved;) {
+    moved = false;
+    for (const Rect& p : placed)
+      if (p.overlaps(r)) {
+        const float dy = isTop(slot) ? p.hi.y + 0.5f * margin - r.lo.y : p.lo.y - 0.5f * margin - r.hi.y;
+        r.lo.y += dy;
+        r.hi.y += dy;
+        moved = true;
+      }
+  }
+  return r;
+}
+
+bool sameWindow(const NdcWindow& a, const NdcWindow& b) {
+  return a.x0 == b.x0 && a.x1 == b.x1 && a.y0 == b.y0 && a.y1 == b.y1;
+}
+
+}  // namespace
+
+ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& given,
+                      const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow) {
+  ViewLayout layout;
+  std::vector<TextBlock> blocks = given;
+  std::vector<glm::vec2> sizes;
+  for (const TextBlock& b : blocks) sizes.push_back(blockSize(b));
+  // No room even with the narrowest window: the failed block drops its last
+  // line (down to what it keeps), from the widest window again.
+  auto dropLine = [&](std::size_t i) {
+    TextBlock& b = blocks[i];
+    if (b.lines.empty() || b.lines.size() <= b.keep) return false;
+    const float step = kLineStep * b.lines.back().sizePx;
+    b.lines.pop_back();
+    sizes[i] = b.lines.empty() ? glm::vec2(0.0f) : glm::vec2(sizes[i].x, sizes[i].y - step);
+    layout.window = NdcWindow{};
+    return true;
+  };
+  auto finish = [&] {
+    layout.lines.clear();
+    for (const TextBlock& b : blocks) layout.lines.push_back(b.lines.size());
+    return layout;
+  };
+  for (int attempt = 0;; ++attempt) {
+    const Occupancy occupancy = occupancyFor(layout.window);
+    layout.origins.assign(blocks.size(), glm::vec2(0.0f));
+    std::vector<Rect> placed;
+    int failed = -1;
+    Rect failedRect{};
+    std::size_t placedBeforeFailed = 0;
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+      if (blocks[i].lines.empty()) continue;
+      const float margin = 0.5f * blocks[i].lines.front().sizePx;
+      bool found = false;
+      // A camera the scene fixes cannot make room: any corner will do.
+      std::vector<Slot> slots = blocks[i].slots;
+      if (fixedWindow)
+        for (const Slot extra : {Slot::TopLeft, Slot::TopRight, Slot::BottomLeft, Slot::BottomRight})
+          if (std::find(slots.begin(), slots.end(), extra) == slots.end()) slots.push_back(extra);
+      for (const Slot slot : slots) {
+        const Rect r = stackedRect(slot, sizes[i], w, h, margin, placed);
+        if (r.lo.x < 0.0f || r.lo.y < 0.0f || r.hi.x > float(w) || r.hi.y > float(h)) continue;
+        // Keep a gap of half an em between the text and what it must not cover.
+        if (occupancy.anyIn(r.lo - glm::vec2(margin), r.hi + glm::vec2(margin))) continue;
+        layout.origins[i] = r.lo;
+        placed.push_back(r);
+        found = true;
+        break;
+      }
+      if (!found) {
+        const std::size_t before = placed.size();
+        const Rect r = stackedRect(blocks[i].slots.front(), sizes[i], w, h, margin, placed);
+        layout.origins[i] = r.lo;
+        placed.push_back(r);
+        if (failed < 0) {
+          failed = int(i);
+          failedRect = r;
+          placedBeforeFailed = before;
+        }
+      }
+    }
+    if (failed < 0 || attempt >= 40) return finish();
+    if (fixedWindow) {
+      if (dropLine(std::size_t(failed))) continue;
+      return finish();
+    }
+    // Narrow the window to leave the failed block's column or band free,
+    // whichever is the smaller share of the view; the other if that one is
+    // taken already or leaves under 35 % of the view.
+    // A side already given to text grows (the block stacks there) before a
+    // new one is taken.
+    auto sideTaken = [&](Slot sl) {
+      if (isTop(sl) && layout.window.y1 < 1.0) return true;
+      if (!isTop(sl) && layout.window.y0 > -1.0) return true;
+      if (!isCentre(sl) && isLeft(sl) && layout.window.x0 > -1.0) return true;
+      return !isCentre(sl) && !isLeft(sl) && layout.window.x1 < 1.0;
+    };
+    Slot slot = blocks[std::size_t(failed)].slots.front();
+    for (const Slot sl : blocks[std::size_t(failed)].slots)
+      if (sideTaken(sl)) {
+        slot = sl;
+        const std::vector<Rect> before(placed.begin(), placed.begin() + std::ptrdiff_t(placedBeforeFailed));
+        failedRect = stackedRect(sl, sizes[std::size_t(failed)], w, h,
+                                 0.5f * blocks[std::size_t(failed)].lines.front().sizePx, before);
+        break;
+      }
+    const float margin = blocks[std::size_t(failed)].lines.front().sizePx;
+    // (The fit pads the ball by R; perspective and the gap want a little more.)
+    const double column =
+        (isLeft(slot) ? double(failedRect.hi.x + 2.0f * margin) : double(w - failedRect.lo.x + 2.0f * margin)) / w + 0.02;
+    const double band =
+        (isTop(slot) ? double(failedRect.hi.y + 2.0f * margin) : double(h - failedRect.lo.y + 2.0f * margin)) / h + 0.02;
+    auto narrowed = [&](bool byColumn) {
+      NdcWindow win = layout.window;
+      if (byColumn) {
+        if (isLeft(slot)) win.x0 = std::max(win.x0, -1.0 + 2.0 * column);
+        else win.x1 = std::min(win.x1, 1.0 - 2.0 * column);
+      } else if (isTop(slot)) {
+        win.y1 = std::min(win.y1, 1.0 - 2.0 * band);
+      } else {
+        win.y0 = std::max(win.y0, -1.0 + 2.0 * band);
+      }
+      return win;
+    };
+    auto usable = [&](const NdcWindow& win) {
+      return !sameWindow(win, layout.window) && win.x1 - win.x0 >= 0.6 && win.y1 - win.y0 >= 0.6;
+    };
+    // Which costs the subject less: its scale is limited by the window's
+    // width over its projected width, or height over height.
+    const auto [subjectLo, subjectHi] = occupancy.bounds();
+    const double subjectAspect =
+        subjectHi.x > subjectLo.x ? double(subjectHi.x - subjectLo.x) / double(subjectHi.y - subjectLo.y) : 1.0;
+    auto scaleLeft = [&](const NdcWindow& win) {
+      return std::min((win.x1 - win.x0) * w / subjectAspect, (win.y1 - win.y0) * double(h));
+    };
+    const bool columnFirst = !isCentre(slot) && scaleLeft(narrowed(true)) >= scaleLeft(narrowed(false));
+    NdcWindow next = narrowed(columnFirst);
+    if (!usable(next) && !isCentre(slot)) next = narrowed(!columnFirst);
+    if (!usable(next)) {
+      if (dropLine(std::size_t(failed))) continue;
+      return finish();
+    }
+    layout.window = next;
+  }
+}
+
+void addTextBlock(render::DrawList& list, const TextBlock& block, glm::vec2 origin, int view) {
+  if (block.lines.empty()) return;
+  const render::View& v = list.views[static_cast<std::size_t>(view)];
+  const glm::vec2 size = blockSize(block);
+  if (block.plate) {
+    // Unproject the block's corners onto a plane just inside the near plane:
+    // a screen-aligned quad in front of everything the view draws.
+    static const auto quad = [] {
+      auto m = std::make_shared<render::MeshData>();
+      for (int k = 0; k < 4; ++k) m->vertices.push_back({glm::vec3(float(k & 1), float(k >> 1), 0.0f)});
+      m->indices = {0, 1, 2, 1, 3, 2};
+      return m;
+    }();
+    const glm::mat4 worldFromClip = glm::inverse(v.camera.clipFromView * v.camera.viewFromWorld);
+    auto unproject = [&](glm::vec2 px) {
+      const glm::vec4 p = worldFromClip * glm::vec4(2.0f * px.x / float(v.width) - 1.0f,
+                                                    1.0f - 2.0f * px.y / float(v.height), -0.995f, 1.0f);
+      return glm::vec3(p) / p.w;
+    };
+    const glm::vec3 p00 = unproject(origin), p10 = unproject(origin + glm::vec2(size.x, 0.0f)),
+                    p01 = unproject(origin + glm::vec2(0.0f, size.y));
+    glm::mat4 worldFromModel(1.0f);
+    worldFromModel[0] = glm::vec4(p10 - p00, 0.0f);
+    worldFromModel[1] = glm::vec4(p01 - p00, 0.0f);
+    worldFromModel[2] = glm::vec4(glm::cross(p10 - p00, p01 - p00), 0.0f);
+    worldFromModel[3] = glm::vec4(p00, 1.0f);
+    render::Material plate;
+    plate.color = {0.97f, 0.97f, 0.98f};
+    plate.opacity = 0.78f;
+    plate.lit = false;
+    plate.castsShadow = false;
+    plate.specular = 0.0f;
+    plate.cull = render::Cull::None;
+    list.meshes.push_back({quad, worldFromModel, plate, view});
+  }
+  const float pad = kBlockPad * block.lines.front().sizePx;
+  float y = origin.y + pad;
+  for (const TextLine& line : block.lines) {
+    render::LabelItem l;
+    l.view = view;
+    l.dynamic = true;  // running values and captions change; text is cheap to redraw over the layer
+    l.text = line.text;
+    // The anchor is the middle of the capital height.
+    const float x = block.centred ? origin.x + 0.5f * (size.x - textWidthPx(line.text, line.sizePx, line.bold))
+                                  : origin.x + pad;
+    l.anchor = glm::vec3(x, y + 0.5f * line.sizePx, 0.0f);
+    l.sizePx = line.sizePx;
+    l.bold = line.bold;
+    l.color = line.color;
+    list.labels.push_back(l);
+    y += kLineStep * line.sizePx;
+  }
+}
+
+}  // namespace rollspin::draw

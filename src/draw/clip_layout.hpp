@@ -1,0 +1,99 @@
+// Layout decided per clip: text blocks go where nothing important (the ball
+// at any frame, the contact path, the trails) is drawn in any frame, and the
+// camera frames the scene into the part of the view the text leaves free.
+//   1. measure each block (lines × the font's advances, line step 1.4 em);
+//   2. project the clip into an occupancy grid for the camera's window;
+//   3. put each block in its first free slot (corners, then top/bottom
+//      centre); a block that finds none narrows the window by its own width
+//      (a side column) or height (a band), whichever costs the smaller share,
+//      and the clip is projected again.
+// Plain geometry; the text is ordinary DrawList labels over a translucent
+// backing plate (a screen-aligned quad just inside the near plane).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "render/draw_list.hpp"
+
+namespace rollspin::draw {
+
+// The part of a view, in normalised device coordinates (y up), the camera
+// frames its subject into.
+struct NdcWindow {
+  double x0 = -1.0, x1 = 1.0, y0 = -1.0, y1 = 1.0;
+};
+
+// Pixels that a clip draws something important on, in one view (cells of a
+// coarse grid; y down from the view's top).
+class Occupancy {
+ public:
+  Occupancy(int width, int height);
+  void disc(glm::vec2 centre, float radius);
+  void segment(glm::vec2 a, glm::vec2 b, float halfWidth);
+  void rect(glm::vec2 lo, glm::vec2 hi);
+  [[nodiscard]] bool anyIn(glm::vec2 lo, glm::vec2 hi) const;
+  // The marked cells' bounding box in pixels (lo > hi when none).
+  [[nodiscard]] std::pair<glm::vec2, glm::vec2> bounds() const;
+  [[nodiscard]] int width() const { return width_; }
+  [[nodiscard]] int height() const { return height_; }
+
+ private:
+  void mark(int cx, int cy);
+  int width_, height_, cellsX_, cellsY_;
+  float cell_;
+  std::vector<unsigned char> cells_;
+};
+
+struct TextLine {
+  std::string text;
+  float sizePx = 16.0f;
+  bool bold = false;
+  glm::vec4 color{0.0f, 0.0f, 0.0f, 1.0f};
+};
+
+enum class Slot { TopLeft, TopRight, BottomLeft, BottomRight, TopCentre, BottomCentre };
+
+struct TextBlock {
+  std::vector<TextLine> lines;
+  std::vector<Slot> slots;  // in order of preference
+  bool plate = true;        // a translucent backing plate behind the text
+  bool centred = false;     // lines centred in the block (a caption)
+  glm::vec2 minSize{0.0f};  // the size reserved for it over the whole clip
+  std::size_t keep = 1000;  // lines that stay when there is no room for all (from the top)
+};
+
+// Advance width in pixels of `text` at `sizePx` in the label font.
+float textWidthPx(const std::string& text, float sizePx, bool bold);
+// Scales the block's type down (never up) until it is at most maxWidth wide.
+void fitWidth(TextBlock& block, float maxWidth);
+// The block's size in pixels (padding included).
+glm::vec2 blockSize(const TextBlock& block);
+
+struct ViewLayout {
+  NdcWindow window;                // the camera frames the subject into this
+  std::vector<glm::vec2> origins;  // each block's top-left corner, in view pixels
+  std::vector<std::size_t> lines;  // how many of each block's lines there is room for
+};
+
+// Places `blocks` in a view w × h. occupancyFor(window) projects the clip
+// for a camera framed into that window; with fixedWindow (the scene sets
+// the camera itself) the window stays whole and a block with no free slot
+// takes its first slot.
+ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
+                      const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow);
+
+// Draws a placed block into `view` (whose camera must be set: the plate is
+// a world-space quad just inside its near plane).
+void addTextBlock(render::DrawList& list, const TextBlock& block, glm::vec2 origin, int view);
+
+// Line step and padding, in em.
+inline constexpr float kLineStep = 1.4f;
+inline constexpr float kBlockPad = 0.35f;
+
+}  // namespace rollspin::draw

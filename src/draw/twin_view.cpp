@@ -1,0 +1,173 @@
+#include "draw/twin_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <utility>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/stage_log.hpp"
+#include "draw/draw_facts.hpp"
+#include "draw/draw_style.hpp"
+#include "draw/text_blocks.hpp"
+#include "draw/clip_layout.hpp"
+#include "render/mesh_builders.hpp"
+#include "spin/field.hpp"
+
+namespace rollspin::draw {
+
+using geometry::Vec3;
+
+TwinView::TwinView(const scene::SceneSpec& spec, const model::RollingModel& model,
+                   const std::shared_ptr<const motion::SceneFacts>& facts, const Vec3& markerBody,
+                   std::shared_ptr<render::MeshData> dotMesh)
+    : spec_(spec), model_(model), markerBody_(markerBody), dotMesh_(std::move(dotMesh)) {
+  StageLog::instance().record("twin-geometry");
+  blochSphereMesh_ = render::uvSphere(64, 32);
+  if (facts && facts->phaseSplit) fieldConeMesh_ = coneMesh(facts->phaseSplit->fieldLoop);
+}
+
+void TwinView::add(render::DrawList& list, const motion::FrameOrientations& frame, int view,
+                   const CameraFraming::Aim& aim) const {
+  render::View& v = list.views[static_cast<std::size_t>(view)];
+  const float text = bodyTextPx(list.width, list.height, spec_.render.fontScale);
+  // Same viewing direction as the ball's camera, so the marker on the ball
+  // and the Bloch arrow point the same way on screen.
+  const OrbitAngles a{aim.azimuth, aim.elevation};
+  const double aspect = double(v.width) / double(std::max(v.height, 1));
+  const double sceneRadius = 1.42;
+  // Framed into the window the text leaves free (the whole view by default).
+  const Lens lens = windowLens(window_, aim.fovDeg, aspect);
+  const double distance = fitDistance(sceneRadius, lens.fovDeg, lens.aspect);
+  render::View oriented = orbitView(v.x, v.y, v.width, v.height, glm::vec3(0.0f, 0.0f, -0.04f), distance, a,
+                                    aim.fovDeg, sceneRadius);
+  if (!isWholeView(window_))
+    oriented.camera.clipFromView = offAxisProjection(window_, aim.fovDeg, aspect,
+                                                     float(std::max(0.02 * distance, distance - 2.5 * sceneRadius)),
+                                                     float(distance + 4.0 * sceneRadius));
+  v.camera = oriented.camera;
+  v.light = keyLight(glm::vec3(0, 0, 1), glm::normalize(v.camera.position), glm::vec3(0.0f), 1.5f);
+  v.light.shadow = false;
+  v.light.ambient = 0.45f;
+  if (v.frame) {
+    v.backgroundTop = glm::vec3(0.97f, 0.98f, 0.99f);
+    v.backgroundBottom = glm::vec3(0.86f, 0.89f, 0.93f);
+  }
+
+  const auto& blochSphere = blochSphereMesh_;
+  list.meshes.push_back({blochSphere, glm::mat4(1.0f), glassMaterial({0.62f, 0.76f, 0.95f}, 0.16f, 0.5f, 90.0f), view});
+  render::Material origin;
+  origin.color = {0.2f, 0.2f, 0.22f};
+  list.meshes.push_back({dotMesh_, glm::scale(glm::mat4(1.0f), glm::vec3(0.035f)), origin, view});
+
+  // Equator and two meridians, and the axes.
+  const glm::vec4 gridColor = opaqueLine({0.30f, 0.36f, 0.45f}, 0.75f);
+  const float gridWidth = std::max(1.0f, float(list.height) / 600.0f);
+  for (int circle = 0; circle < 3; ++circle) {
+    render::PolylineItem c;
+    c.color = gridColor;
+    c.widthPx = gridWidth;
+    c.view = view;
+    for (int i = 0; i <= 180; ++i) {
+      const float t = 2.0f * std::numbers::pi_v<float> * float(i) / 180.0f;
+      const float x = std::cos(t), y = std::sin(t);
+      c.points.push_back(circle == 0 ? glm::vec3(x, y, 0) : circle == 1 ? glm::vec3(x, 0, y) : glm::vec3(0, x, y));
+    }
+    list.polylines.push_back(c);
+  }
+  const glm::vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const char* axisNames[3] = {"x", "y", "z"};
+  for (int k = 0; k < 3; ++k) {
+    render::PolylineItem axis;
+    axis.color = opaqueLine({0.15f, 0.17f, 0.2f}, 0.9f);
+    axis.widthPx = gridWidth;
+    axis.view = view;
+    axis.points = {-1.18f * axes[k], 1.18f * axes[k]};
+    list.polylines.push_back(axis);
+  }
+
+  auto unit = [](const Vec3& x) { return x.norm() > 1e-12 ? Vec3(x.normalized()) : Vec3(Vec3::Zero()); };
+  const double R = model_.ballRadius;
+  auto fieldDirection = [&](double s) { return unit(spin::fieldB(model_.path->at(s), R)); };
+  const float arrowRadius = 0.028f;
+
+  // Trails: the Bloch vector X(s') = Q(s') X(0) and the field direction.
+  render::PolylineItem blochTrail, fieldTrail;
+  blochTrail.color = kBlochTrailColor;
+  fieldTrail.color = kFieldTrailColor;
+  blochTrail.widthPx = fieldTrail.widthPx = std::max(1.5f, float(list.height) / 360.0f);
+  blochTrail.view = fieldTrail.view = view;
+  blochTrail.dynamic = fieldTrail.dynamic = true;
+  for (const auto& t : frame.trail) {
+    blochTrail.points.push_back(toGlm(t.q.rotate(markerBody_)));
+    const Vec3 b = fieldDirection(t.s);
+    if (b.norm() > 0.5) fieldTrail.points.push_back(toGlm(b));
+  }
+  list.polylines.push_back(fieldTrail);
+  list.polylines.push_back(blochTrail);
+  if (fieldConeMesh_) {
+    // The cone B̂ sweeps over the whole circuit: its solid angle is Berry's phase.
+    render::Material cone;
+    cone.color = kFieldColor;
+    cone.opacity = 0.18f;
+    cone.lit = false;
+    cone.castsShadow = false;
+    cone.cull = render::Cull::None;
+    list.meshes.push_back({fieldConeMesh_, glm::mat4(1.0f), cone, view});
+  }
+
+  const Vec3 x = frame.current.q.rotate(markerBody_);
+  list.arrows.push_back({glm::vec3(0.0f), toGlm(x), arrowRadius, kMarkerColor, view, true});
+  const Vec3 b = fieldDirection(frame.current.s);
+  if (b.norm() > 0.5) list.arrows.push_back({glm::vec3(0.0f), toGlm(b), arrowRadius * 0.8f, kFieldColor, view, true});
+  for (const auto& pose : frame.strobe)
+    list.arrows.push_back({glm::vec3(0.0f), toGlm(pose.q.rotate(markerBody_)), arrowRadius * 0.55f,
+                           glm::mix(kMarkerColor, glm::vec3(1.0f), 0.35f), view});
+
+  if (spec_.render.labels) {
+    auto worldLabel = [&](const std::string& s, const glm::vec3& at, float size, glm::vec4 color) {
+      render::LabelItem l;
+      l.view = view;
+      l.text = s;
+      l.anchor = at;
+      l.worldAnchored = true;
+      l.align = render::Align::Center;
+      l.sizePx = size;
+      l.color = color;
+      list.labels.push_back(l);
+    };
+    for (int k = 0; k < 3; ++k) worldLabel(axisNames[k], 1.3f * axes[k], text, kTextColor);
+    worldLabel("|0⟩", glm::vec3(0, 0, 1.0f), text, kTextColor);
+    worldLabel("|1⟩", glm::vec3(0, 0, -1.0f), text, kTextColor);
+    list.labels.back().offsetPx = glm::vec2(1.6f * text, 0.0f);
+    list.labels[list.labels.size() - 2].offsetPx = glm::vec2(1.6f * text, 0.0f);
+
+  }
+}
+
+std::vector<TextBlock> TwinView::textBlocks(bool inset, float text) const {
+  std::vector<TextBlock> blocks(2);
+  if (!spec_.render.labels || inset) return blocks;  // an inset is too small for a heading or a legend
+  blocks[0].slots = {Slot::TopLeft, Slot::TopRight};
+  blocks[0].lines.push_back({"Bloch sphere", text * 1.1f, true, kTextColor});
+  blocks[0].keep = 0;  // where the sphere needs the room, the heading goes first
+  blocks[1].slots = {Slot::BottomLeft, Slot::BottomRight};
+  blocks[1].keep = 1;
+  blocks[1].lines.push_back({"● spin  X(s) = Q(s) X(0)", text, false, glm::vec4(kMarkerColor, 1.0f)});
+  blocks[1].lines.push_back({"● field  B/|B|", text, false, glm::vec4(kFieldColor, 1.0f)});
+  return blocks;
+}
+
+void TwinView::markImportant(Occupancy& occupancy, const render::View& v) const {
+  // Everything the twin shows lies within the axes' labels at 1.3 of the
+  // origin: the sphere, the arrows, the trails, the cone.
+  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+  const glm::vec4 c = clipFromWorld * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  const glm::vec2 centre((c.x / c.w * 0.5f + 0.5f) * float(v.width), (0.5f - c.y / c.w * 0.5f) * float(v.height));
+  const float focalPx = 0.5f * float(v.height) * v.camera.clipFromView[1][1];
+  occupancy.disc(centre, 1.3f * focalPx / std::sqrt(c.w * c.w - 1.69f) + 4.0f);
+}
+
+}  // namespace rollspin::draw

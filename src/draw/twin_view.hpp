@@ -1,0 +1,42 @@
+// The twin view: the Bloch sphere with the Bloch vector of the marker
+// X(s) = Q(s) X(0) and the field direction B/|B| as arrows, their trails,
+// and (phase-split facts) the cone B̂ sweeps, whose solid angle is Berry's
+// phase; axis and state labels, heading and legend.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "draw/camera_framing.hpp"
+#include "model/rolling_model.hpp"
+#include "motion/frame_sampling.hpp"
+#include "motion/scene_facts.hpp"
+#include "render/draw_list.hpp"
+#include "scene/scene_spec.hpp"
+
+namespace rollspin::draw {
+
+class TwinView {
+ public:
+  TwinView(const scene::SceneSpec& spec, const model::RollingModel& model,
+           const std::shared_ptr<const motion::SceneFacts>& facts, const geometry::Vec3& markerBody,
+           std::shared_ptr<render::MeshData> dotMesh);
+
+  // Seen from the orbit angles and field of view of `aim`.
+  void add(render::DrawList& list, const motion::FrameOrientations& frame, int view,
+           const CameraFraming::Aim& aim) const;
+  // {heading, legend}: empty for an inset or with labels off.
+  [[nodiscard]] std::vector<TextBlock> textBlocks(bool inset, float text) const;
+  // Marks the disc the twin's sphere, arrows, trails and axis labels cover.
+  void markImportant(Occupancy& occupancy, const render::View& v) const;
+  void setWindow(const NdcWindow& window) { window_ = window; }
+
+ private:
+  const scene::SceneSpec& spec_;
+  const model::RollingModel& model_;
+  geometry::Vec3 markerBody_;
+  NdcWindow window_;
+  std::shared_ptr<render::MeshData> dotMesh_, blochSphereMesh_, fieldConeMesh_;
+};
+
+}  // namespace rollspin::draw

@@ -1,0 +1,186 @@
+// Text never covers the story: for every scene in scenes/ at 16:9, 4:3, 1:1
+// and 9:16 (and 16:9 with the twin as an inset), with labels, facts, captions and titles on, at sampled frames of
+// the clip, the screen-anchored text (each label's box from the font's
+// advances) lies inside its view and clear of the ball's disc, the contact
+// path and the trails, all projected from the DrawList itself, and not
+// under an inset view. And the default camera keeps the ball's disc inside
+// the frame and, outside a sphere, ≥ 90 % of it in sight.
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "app/render_jobs.hpp"
+#include "draw/clip_layout.hpp"
+#include "draw/draw_style.hpp"
+#include "draw/scene_drawer.hpp"
+#include "model/rolling_model.hpp"
+#include "support/cli_runner.hpp"
+
+namespace rollspin::draw {
+namespace {
+using namespace rollspin::model;
+using namespace rollspin::motion;
+
+struct Box {
+  glm::vec2 lo, hi;
+};
+
+struct Screen {
+  const render::View& v;
+  glm::mat4 clipFromWorld;
+  explicit Screen(const render::View& view) : v(view), clipFromWorld(view.camera.clipFromView * view.camera.viewFromWorld) {}
+  // View pixels (y down); w ≤ 0 behind the eye.
+  glm::vec3 project(const glm::vec3& p) const {
+    const glm::vec4 c = clipFromWorld * glm::vec4(p, 1.0f);
+    return {(c.x / c.w * 0.5f + 0.5f) * float(v.width), (0.5f - c.y / c.w * 0.5f) * float(v.height), c.w};
+  }
+};
+
+// The renderer puts the anchor at the middle of the capital height: the
+// ascender reaches 0.45 em above it, the descender 0.62 em below.
+Box labelBox(const render::LabelItem& l) {
+  const float width = textWidthPx(l.text, l.sizePx, l.bold);
+  float x = l.anchor.x + l.offsetPx.x;
+  if (l.align == render::Align::Center) x -= 0.5f * width;
+  if (l.align == render::Align::Right) x -= width;
+  const float y = l.anchor.y + l.offsetPx.y;
+  return {{x, y - 0.45f * l.sizePx}, {x + width, y + 0.62f * l.sizePx}};
+}
+
+bool inside(const Box& b, glm::vec2 p) { return p.x >= b.lo.x && p.x <= b.hi.x && p.y >= b.lo.y && p.y <= b.hi.y; }
+
+float distanceTo(const Box& b, glm::vec2 p) {
+  const glm::vec2 q = glm::clamp(p, b.lo, b.hi);
+  return glm::length(p - q);
+}
+
+bool sameRgb(const glm::vec4& a, const glm::vec3& b) { return glm::length(glm::vec3(a) - b) < 1e-4f; }
+
+// The polylines that carry the story: the contact path (whole and
+// travelled), the marker's trail, the plate's trail, the twin's trails.
+bool isStoryLine(const render::PolylineItem& p) {
+  for (const glm::vec4& c : {kPathLineColor, kTravelledColor, kMarkerTrailColor, kPlateTrailColor, kBlochTrailColor,
+                             kFieldTrailColor})
+    if (sameRgb(p.color, glm::vec3(c))) return true;
+  return false;
+}
+
+struct Aspect {
+  int width, height;
+  const char* name;
+  const char* layout = nullptr;  // else the scene's own
+};
+
+TEST(ClipLayout, NoTextOverTheBallThePathOrTheTrailsAndNoneCutByTheFrame) {
+  const Aspect aspects[] = {{960, 540, "16:9"}, {720, 540, "4:3"}, {600, 600, "1:1"}, {540, 960, "9:16"},
+                            {960, 540, "16:9 inset", "inset"}};
+  std::vector<std::filesystem::path> scenes;
+  for (const auto& e : std::filesystem::directory_iterator(test::sourceDir() / "scenes"))
+    if (e.path().extension() == ".toml") scenes.push_back(e.path());
+  std::sort(scenes.begin(), scenes.end());
+  ASSERT_GE(scenes.size(), 15u);
+  int checkedLabels = 0, checkedBalls = 0;
+  for (const auto& file : scenes) {
+    for (const Aspect& a : aspects) {
+      std::vector<std::string> overrides{"render.width=" + std::to_string(a.width),
+                                         "render.height=" + std::to_string(a.height), "render.labels=true"};
+      if (a.layout) overrides.push_back(std::string("render.layout=\"") + a.layout + "\"");
+      const scene::SceneSpec spec = loadScene(file.string(), overrides);
+      const RollingModel model = buildSceneModel(spec);
+      const SceneDrawer drawer(spec, model, nullptr, makeSceneFacts(spec, model));
+      const double L = model.path->length();
+      for (const double fraction : {0.0, 1.0 / 3.0, 0.5, 2.0 / 3.0, 1.0}) {
+        const double s = L * fraction;
+        FrameOrientations frame = solveFrame(spec, model, s);
+        frame.story = storyPlaceAt(model, s);
+        const render::DrawList list = drawer.draw(frame);
+        const std::string where = file.stem().string() + " " + a.name + " s = " + std::to_string(s);
+        for (const render::LabelItem& l : list.labels) {
+          if (l.worldAnchored || l.text.empty()) continue;  // marks' numbers and axis names sit on what they name
+          const Box box = labelBox(l);
+          const int w = l.view < 0 ? list.width : list.views[std::size_t(l.view)].width;
+          const int h = l.view < 0 ? list.height : list.views[std::size_t(l.view)].height;
+          EXPECT_TRUE(box.lo.x >= -0.5f && box.lo.y >= -0.5f && box.hi.x <= float(w) + 0.5f && box.hi.y <= float(h) + 0.5f)
+              << where << ": \"" << l.text << "\" cut by the frame (" << box.lo.x << ", " << box.lo.y << ")–("
+              << box.hi.x << ", " << box.hi.y << ") in " << w << "×" << h;
+          ++checkedLabels;
+          if (l.view < 0) continue;
+          const Screen screen(list.views[std::size_t(l.view)]);
+          // Nor under an inset drawn over its view.
+          for (std::size_t k = 0; k < list.views.size(); ++k) {
+            const render::View& inset = list.views[k];
+            if (int(k) == l.view || !inset.frame) continue;
+            const glm::vec2 at(screen.v.x, screen.v.y);
+            const bool overlaps = box.lo.x + at.x < float(inset.x + inset.width) && float(inset.x) < box.hi.x + at.x &&
+                                  box.lo.y + at.y < float(inset.y + inset.height) && float(inset.y) < box.hi.y + at.y;
+            EXPECT_FALSE(overlaps) << where << ": \"" << l.text << "\" under the inset";
+          }
+          for (const render::MeshItem& m : list.meshes) {
+            if (m.view != l.view || m.material.pattern != render::Pattern::Texture) continue;  // the ball(s)
+            const glm::vec3 c = screen.project(glm::vec3(m.worldFromModel[3]));
+            const float R = glm::length(glm::vec3(m.worldFromModel[0]));
+            if (c.z <= R) continue;
+            const float radiusPx = R * 0.5f * float(screen.v.height) * screen.v.camera.clipFromView[1][1] /
+                                   std::sqrt(c.z * c.z - R * R);
+            EXPECT_GT(distanceTo(box, glm::vec2(c)), radiusPx) << where << ": \"" << l.text << "\" over the ball";
+          }
+          for (const render::PolylineItem& p : list.polylines) {
+            if (p.view != l.view || !isStoryLine(p)) continue;
+            int hits = 0;
+            for (std::size_t i = 0; i + 1 < p.points.size(); ++i) {
+              const glm::vec3 a0 = screen.project(p.points[i]), a1 = screen.project(p.points[i + 1]);
+              if (a0.z <= 0.0f || a1.z <= 0.0f) continue;
+              const int steps = std::max(1, int(glm::length(glm::vec2(a1) - glm::vec2(a0))));
+              for (int k = 0; k <= steps && steps < 100000; ++k)
+                if (inside(box, glm::mix(glm::vec2(a0), glm::vec2(a1), float(k) / float(steps)))) ++hits;
+            }
+            EXPECT_EQ(hits, 0) << where << ": \"" << l.text << "\" over a path or trail";
+          }
+        }
+        // The ball's disc inside the frame (≥ 90 % of its extent on each axis).
+        for (const render::MeshItem& m : list.meshes) {
+          if (m.material.pattern != render::Pattern::Texture) continue;
+          const Screen screen(list.views[std::size_t(m.view)]);
+          const glm::vec3 c = screen.project(glm::vec3(m.worldFromModel[3]));
+          const float R = glm::length(glm::vec3(m.worldFromModel[0]));
+          ASSERT_GT(c.z, R) << where;
+          const float r = R * 0.5f * float(screen.v.height) * screen.v.camera.clipFromView[1][1] /
+                          std::sqrt(c.z * c.z - R * R);
+          EXPECT_TRUE(c.x - 0.8f * r >= 0.0f && c.x + 0.8f * r <= float(screen.v.width) && c.y - 0.8f * r >= 0.0f &&
+                      c.y + 0.8f * r <= float(screen.v.height))
+              << where << ": the ball leaves the frame";
+          // Outside a sphere (and no camera set by the scene): ≥ 90 % of the
+          // ball's disc seen past the sphere, by rays from the eye.
+          const auto* sphere = dynamic_cast<const geometry::Sphere*>(model.surface.get());
+          if (sphere && sphere->side() == geometry::Side::Outside && !spec.locations.contains("render.elevation_deg")) {
+            const glm::vec3 eye = screen.v.camera.position, centre(m.worldFromModel[3]);
+            const glm::vec3 view = glm::normalize(centre - eye);
+            const glm::vec3 u = glm::normalize(glm::cross(view, glm::vec3(0, 0, 1))), w = glm::cross(view, u);
+            int seen = 0, all = 0;
+            for (int k = 0; k < 400; ++k, ++all) {  // points spread evenly over the disc
+              const float rho = std::sqrt((float(k) + 0.5f) / 400.0f), phi = 2.39996323f * float(k);
+              const glm::vec3 p = centre + R * (rho * (std::cos(phi) * u + std::sin(phi) * w) -
+                                                std::sqrt(1.0f - rho * rho) * view);
+              const glm::vec3 d = p - eye;
+              const float t = std::clamp(-glm::dot(eye, d) / glm::dot(d, d), 0.0f, 1.0f);
+              if (glm::length(eye + t * d) >= float(sphere->radius()) * 0.9999f || t >= 1.0f) ++seen;
+            }
+            EXPECT_GE(double(seen) / all, 0.9) << where << ": the sphere hides the ball";
+          }
+          ++checkedBalls;
+        }
+      }
+    }
+  }
+  EXPECT_GT(checkedLabels, 1000);
+  EXPECT_GE(checkedBalls, 300);  // one per frame at least (a strobe: more)
+}
+
+}  // namespace
+}  // namespace rollspin::draw

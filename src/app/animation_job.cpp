@@ -15,6 +15,7 @@
 #include "motion/frame_clock.hpp"
 #include "motion/frame_poses.hpp"
 #include "app/flag_overrides.hpp"
+#include "app/job_setup.hpp"
 #include "app/interrupt_guard.hpp"
 #include "app/progress_meter.hpp"
 #include "app/render_jobs.hpp"
@@ -80,46 +81,24 @@ const QualityPreset* findQualityPreset(const std::string& name) {
 }
 
 AnimationResult renderAnimation(const AnimationOptions& o) {
-  for (const auto& [flag, value] : {std::pair{"--width", o.width}, std::pair{"--height", o.height}})
-    if (value && (*value < 1 || *value > 8192))
-      throw badInput({flag}, "expected an image size in [1, 8192] pixels, got {}", *value);
-  // Later overrides win: --set, then --quality (but not over a key given with
-  // --set), then --width/--height; all validated by the scene loader.
-  std::vector<FlagOverride> flags;
+  std::vector<FlagOverride> presetFlags;
   if (o.quality) {
     const QualityPreset* preset = findQualityPreset(*o.quality);
     if (preset == nullptr)
       throw badInput({"--quality " + *o.quality}, "expected low (854x480@15), medium (1280x720@30), "
                                                   "high (1920x1080@60) or 4k (3840x2160@60)");
     const std::string flag = "--quality " + *o.quality;
-    flags.push_back({flag, fmt::format("render.width={}", preset->width)});
-    flags.push_back({flag, fmt::format("render.height={}", preset->height)});
-    flags.push_back({flag, fmt::format("animation.fps={}", preset->fps)});
-  }
-  if (o.width) flags.push_back({"--width " + std::to_string(*o.width), "render.width=" + std::to_string(*o.width)});
-  if (o.height) flags.push_back({"--height " + std::to_string(*o.height), "render.height=" + std::to_string(*o.height)});
-  if (o.transparent) flags.push_back({"--transparent", "render.transparent=true"});
-  // An explicit --set wins over --quality (with a note); --width/--height over both.
-  scene::SceneSpec spec = loadSceneWithFlags(o.scenePath, o.overrides, flags);
-  const media::OutputFormat& format = chooseOutputFormat(spec, o.output, media::OutputUse::Animation);
-  // What the format's row asks of the clip. A GIF: its own default size
-  // when neither the scene nor a flag gives one (height by the aspect
-  // ratio), and a frame rate capped so frames last whole 1/100 s.
-  if (format.defaultWidth > 0 && !spec.locations.contains("render.width") && !spec.locations.contains("render.height")) {
-    const long long w = spec.render.width, h = spec.render.height;
-    spec.render.width = format.defaultWidth;
-    spec.render.height = std::max<long long>(1, std::llround(double(format.defaultWidth) * double(h) / double(w)));
-  }
-  if (format.fpsCap > 0 && spec.animation.fps.value() > format.fpsCap) spec.animation.fps = scene::FrameRate{format.fpsCap, 1};
-  if (!o.output.empty()) {  // before any frame is rendered
-    const SourceLoc where{"-o " + o.output.string()};
-    if (format.isFolder()) checkOutputFolder(o.output, where);
-    else checkOutputFile(o.output, where);
+    presetFlags.push_back({flag, fmt::format("render.width={}", preset->width)});
+    presetFlags.push_back({flag, fmt::format("render.height={}", preset->height)});
+    presetFlags.push_back({flag, fmt::format("animation.fps={}", preset->fps)});
   }
   // Measured: a 1080p MP4 render peaks ~230 bytes per pixel above the still's
   // estimate (three queued RGBA frames, the yuv420p copy, x264's look-ahead).
-  checkFrameMemory(spec, 256);
-  const RollingModel model = buildSceneModel(spec);
+  const DrawJob job = prepareDrawJob({o.scenePath, o.overrides, presetFlags, o.width, o.height, o.transparent,
+                                      o.output, media::OutputUse::Animation, 256});
+  const scene::SceneSpec& spec = job.spec;
+  const media::OutputFormat& format = *job.format;
+  const RollingModel& model = job.model;
   const FrameClock clock = clipClock(spec, model);
   if (o.frames && o.shard) throw badInput({"--shard " + *o.shard}, "give --frames or --shard, not both");
   const std::optional<Shard> shard = o.shard ? std::optional(parseShard(*o.shard)) : std::nullopt;
@@ -161,11 +140,10 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   StageLog::instance().record(folder ? "png-frames" : "encoder");
   const std::unique_ptr<media::FrameSink> sink = media::openSink(format, sinkOpts);
 
-  const auto texture = spec.render.layout == scene::RenderLayout::Twin ? nullptr : loadBallTexture(spec);
-  const SceneDrawer drawer(spec, model, texture, makeSceneFacts(spec, model));
-  const auto context = render::createOsMesaContext();
-  const render::ShaderLibrary shaders(o.shaderDir);
-  render::Renderer renderer(*context, shaders);
+  const std::unique_ptr<SceneDrawer> drawerOwner = makeDrawer(job);
+  const SceneDrawer& drawer = *drawerOwner;
+  GlRenderer gl(o.shaderDir);
+  render::Renderer& renderer = gl.renderer;
 
   // Render here (the context is current on this thread), encode there.
   using Frame = std::shared_ptr<const media::Image>;

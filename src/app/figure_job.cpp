@@ -1,5 +1,8 @@
 #include "app/figure_job.hpp"
 
+#include "app/job_setup.hpp"
+#include "draw/draw_style.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -14,11 +17,6 @@
 namespace rollspin::app {
 
 namespace {
-
-std::string lowercase(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
 
 constexpr int kMaxRasterSide = 8192;  // the renderer's limit (render.width)
 
@@ -66,9 +64,8 @@ void writeFigureStill(const scene::SceneSpec& spec, const render::DrawList& list
   const bool opaque = render::hasMeshes(list, MeshLayer::Opaque);
   const bool translucent = render::hasMeshes(list, MeshLayer::Translucent);
   if (opaque || translucent) {  // GL only for the raster parts
-    const auto context = render::createOsMesaContext();
-    const render::ShaderLibrary shaders(shaderDir);
-    render::Renderer renderer(*context, shaders);
+    GlRenderer gl(shaderDir);
+    render::Renderer& renderer = gl.renderer;
     if (opaque)
       renderer.renderWithDepth(render::meshLayerOf(list, MeshLayer::Opaque, width, height), rasters.opaque,
                                rasters.opaqueDepth);
@@ -86,8 +83,8 @@ void writeFigureStill(const scene::SceneSpec& spec, const render::DrawList& list
   style.widthPt = spec.figure.widthMm / 25.4 * 72.0;
   style.font = spec.figure.font;
   style.bodyTextPt = spec.figure.fontSizePt;
-  // The body text size of draw/scene_drawer (SceneDrawer::draw: max(11, H/42)).
-  style.bodyTextPx = std::max(11.0f, float(list.height) / 42.0f);
+  // The drawing's own body text size: figure.font_size_pt is set for that one.
+  style.bodyTextPx = draw::bodyTextPx(list.width, list.height, spec.render.fontScale);
   style.transparent = spec.figure.transparent;
   render::writeFigure(out, format, list, rasters, style);
 }

@@ -13,6 +13,7 @@
 
 #include "app/figure_job.hpp"
 #include "app/flag_overrides.hpp"
+#include "app/job_setup.hpp"
 #include "motion/frame_poses.hpp"
 #include "media/image_io.hpp"
 #include "media/sink_factory.hpp"
@@ -122,47 +123,31 @@ media::SinkOptions sinkOptions(const scene::SceneSpec& spec, const std::filesyst
 }
 
 std::filesystem::path renderStill(const StillOptions& o) {
-  // Where it goes is checked before any work (the format, from the table, once the scene is read).
-  if (!o.output.empty()) checkOutputFile(o.output, SourceLoc{"-o " + o.output.string()});
-  for (const auto& [flag, value] : {std::pair{"--width", o.width}, std::pair{"--height", o.height}})
-    if (value && (*value < 1 || *value > 8192))
-      throw badInput({flag}, "expected an image size in [1, 8192] pixels, got {}", *value);
-  std::vector<std::string> overrides = o.overrides;
-  // Command-line sizes go through the scene validation like --set does, and
-  // errors name the flag.
-  std::vector<FlagOverride> flags;
-  if (o.width) flags.push_back({"--width " + std::to_string(*o.width), "render.width=" + std::to_string(*o.width)});
-  if (o.height) flags.push_back({"--height " + std::to_string(*o.height), "render.height=" + std::to_string(*o.height)});
-  if (o.transparent) flags.push_back({"--transparent", "render.transparent=true"});
-  const scene::SceneSpec spec = loadSceneWithFlags(o.scenePath, overrides, flags);
-  const media::OutputFormat& format = chooseOutputFormat(spec, o.output, media::OutputUse::Still);
+  const DrawJob job = prepareDrawJob({o.scenePath, o.overrides, {}, o.width, o.height, o.transparent, o.output,
+                                      media::OutputUse::Still});
+  const scene::SceneSpec& spec = job.spec;
+  const media::OutputFormat& format = *job.format;
   const auto figure = figureFormatOf(format);  // PDF/SVG: drawn by the vector backend (figure_job.hpp)
   if (figure) checkFigureSpec(spec);
-  checkFrameMemory(spec);
-  const RollingModel model = buildSceneModel(spec);
-  const double length = model.path->length();
+  const double length = job.model.path->length();
   double s = spec.render.strobe > 1 ? length : 0.5 * length;
   if (o.at) s = resolveArcPosition(parseArcPosition(*o.at), length, *o.at);
-  const auto texture = spec.render.layout == scene::RenderLayout::Twin ? nullptr : loadBallTexture(spec);
 
   std::filesystem::path out = o.output;
   if (out.empty()) {
     std::filesystem::create_directories("output");
     out = std::filesystem::path("output") / (spec.name + format.defaultExtension());
   }
-  FrameOrientations frame = solveFrame(spec, model, s);
-  frame.story = storyPlaceAt(model, s);
-  const SceneDrawer drawer(spec, model, texture, makeSceneFacts(spec, model));
-  const render::DrawList list = drawer.draw(frame);
+  FrameOrientations frame = solveFrame(spec, job.model, s);
+  frame.story = storyPlaceAt(job.model, s);
+  const render::DrawList list = makeDrawer(job)->draw(frame);
   if (figure) {
     writeFigureStill(spec, list, out, *figure, o.shaderDir);
     return out;
   }
 
-  const auto context = render::createOsMesaContext();
-  const render::ShaderLibrary shaders(o.shaderDir);
-  render::Renderer renderer(*context, shaders);
-  const media::Image image = renderer.render(list);
+  GlRenderer gl(o.shaderDir);
+  const media::Image image = gl.renderer.render(list);
   StageLog::instance().record(std::string(format.name));
   const auto sink = media::openSink(format, sinkOptions(spec, out));
   sink->write(image.view());

@@ -29,7 +29,7 @@ void BM_RenderFrame1080p(benchmark::State& state) {
   const app::RollingModel model = app::buildModel(spec);
   const app::FrameOrientations frame = app::solveFrame(spec, model, 0.3 * model.path->length());
   const app::SceneDrawer drawer(spec, model, nullptr);
-  const auto context = render::createOsMesaContext();
+  const auto context = render::createContext(app::contextRequest(spec));
   // ROLLSPIN_SHADER_DIR: time edited shaders without rebuilding (development).
   const char* shaderDir = std::getenv("ROLLSPIN_SHADER_DIR");
   render::Renderer renderer(*context, render::ShaderLibrary{shaderDir != nullptr ? shaderDir : ""});

@@ -174,7 +174,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
 
   const auto texture = spec.render.layout == scene::RenderLayout::Twin ? nullptr : loadBallTexture(spec);
   const SceneDrawer drawer(spec, model, texture, makeSceneFacts(spec, model));
-  const auto context = render::createOsMesaContext();
+  const auto context = render::createContext(contextRequest(spec));
   const render::ShaderLibrary shaders(o.shaderDir);
   render::Renderer renderer(*context, shaders);
 

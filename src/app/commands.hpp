@@ -19,4 +19,7 @@ void registerRenderCommands(CLI::App& cli, CommandHandler& handler);
 // Adds `report` with errors | stress | paper; report_commands.cpp.
 void registerReportCommands(CLI::App& cli, CommandHandler& handler);
 
+// Adds `info`: the GL backends and the context a render gets; info_command.cpp.
+void registerInfoCommand(CLI::App& cli, CommandHandler& handler);
+
 }  // namespace rollspin::app

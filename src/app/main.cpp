@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   rollspin::app::registerSolveCommands(cli, handler);
   rollspin::app::registerRenderCommands(cli, handler);
   rollspin::app::registerReportCommands(cli, handler);
+  rollspin::app::registerInfoCommand(cli, handler);
 
   // Name an unknown command instead of CLI11's generic "a subcommand is required".
   std::string known;

@@ -111,6 +111,10 @@ void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerP
   }
 }
 
+render::ContextRequest contextRequest(const scene::SceneSpec& spec) {
+  return {spec.render.backend, spec.where("render.backend"), spec.render.device, spec.where("render.device")};
+}
+
 std::filesystem::path renderStill(const StillOptions& o) {
   for (const auto& [flag, value] : {std::pair{"--width", o.width}, std::pair{"--height", o.height}})
     if (value && (*value < 1 || *value > 8192))
@@ -138,7 +142,7 @@ std::filesystem::path renderStill(const StillOptions& o) {
   const SceneDrawer drawer(spec, model, texture, makeSceneFacts(spec, model));
   const render::DrawList list = drawer.draw(frame);
 
-  const auto context = render::createOsMesaContext();
+  const auto context = render::createContext(contextRequest(spec));
   const render::ShaderLibrary shaders(o.shaderDir);
   render::Renderer renderer(*context, shaders);
   const media::Image image = renderer.render(list);

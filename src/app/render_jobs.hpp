@@ -14,6 +14,7 @@
 #include "app/scene_model.hpp"
 #include "media/image_view.hpp"
 #include "render/draw_list.hpp"
+#include "render/gl_context.hpp"
 #include "scene/scene_spec.hpp"
 
 namespace rollspin::app {
@@ -60,5 +61,9 @@ struct StillOptions {
 void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerPixel = 0);
 
 std::filesystem::path renderStill(const StillOptions& options);
+
+// The GL context the scene asks for: render.backend / render.device with
+// where they were given (unset: the environment decides, render/gl_context.hpp).
+[[nodiscard]] render::ContextRequest contextRequest(const scene::SceneSpec& spec);
 
 }  // namespace rollspin::app

@@ -2,6 +2,8 @@
 
 #include <toml++/toml.h>
 
+#include "render/gl_context.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -78,6 +80,7 @@ class Reader {
   std::optional<std::string> anyText(const toml::table* t, const std::string& section, const std::string& key);
   PathKind readPath(const toml::table* path, const std::string& prefix, PathSpec& target);
   void readRender();
+  void readGlContext(const toml::table* table);
   void readAnimation();
   void readLabels();
   void forbid(const toml::table* t, const std::string& section, const std::string& key, const std::string& why);
@@ -294,7 +297,8 @@ void Reader::readSegments() {
 void Reader::readRender() {
   const toml::table* render = section(
       "render", {"width", "height", "layout", "strobe", "title", "labels", "transparent", "msaa", "azimuth_deg",
-                 "elevation_deg", "distance", "target", "follow", "fov_deg", "format", "trails", "shadow"});
+                 "elevation_deg", "distance", "target", "follow", "fov_deg", "format", "trails", "shadow", "backend",
+                 "device"});
   RenderSpec& r = spec_.render;
   constexpr long long kMaxSide = 8192;  // "8K": the renderer's size limit
   for (const char* key : {"width", "height"}) {
@@ -334,6 +338,25 @@ void Reader::readRender() {
     failAt("render.target", "conflicts with render.follow = true (the camera then targets the ball)");
   if (auto f = text(render, "render", "format", {"mp4", "png"}))
     r.format = *f == "mp4" ? VideoFormat::Mp4 : VideoFormat::Png;
+  readGlContext(render);
+}
+
+// render.backend and render.device: the GL context. The names are render's
+// table (gl_backends.cpp); the scene keeps the text.
+void Reader::readGlContext(const toml::table* table) {
+  const std::vector<std::string> names = render::backendNames();
+  if (auto b = text(table, "render", "backend", std::set<std::string>(names.begin(), names.end())))
+    spec_.render.backend = *b;
+  if (const toml::node* node = get(table, "render", "device")) {
+    const SourceLoc at = locOf("render.device", *node);
+    const std::string expected = "an EGL device index (0, 1, …) or a DRM device path (\"/dev/dri/renderD128\")";
+    if (node->is_integer() && node->as_integer()->get() >= 0) spec_.render.device = std::to_string(node->as_integer()->get());
+    else if (node->is_string() && node->as_string()->get().rfind('/', 0) == 0) spec_.render.device = node->as_string()->get();
+    else fail("render.device", at, expected, describeNode(*node));
+    if (spec_.render.backend && !render::backendTakesDevice(*spec_.render.backend))
+      failAt("render.device", fmt::format("applies to a backend that renders on a device (\"egl\" or \"auto\"), but "
+                                          "render.backend is \"{}\"", *spec_.render.backend));
+  }
 }
 
 // [labels] — which facts of the scene are printed (after [surface] and

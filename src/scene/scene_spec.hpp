@@ -110,6 +110,10 @@ struct RenderSpec {
   bool follow = false;
   double fovDeg = 32.0;
   std::optional<VideoFormat> format;  // animations; default: from the output's extension, else mp4
+  // GL context (render/gl_backends.cpp): "auto" or a backend of the table, and
+  // for EGL a device index or DRM path; unset: ROLLSPIN_GL / ROLLSPIN_EGL_DEVICE.
+  std::optional<std::string> backend;
+  std::optional<std::string> device;
 };
 
 // [labels]: facts of the scene, computed from the solver (app/scene_facts)

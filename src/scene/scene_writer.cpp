@@ -219,6 +219,10 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   w.key("fov_deg", number(r.fovDeg));
   if (r.format) w.key("format", quoted(*r.format == VideoFormat::Mp4 ? "mp4" : "png"));
   else w.computed("format", "from the output's extension, else mp4");
+  if (r.backend) w.key("backend", quoted(*r.backend));
+  else w.computed("backend", "ROLLSPIN_GL, else \"auto\"");
+  if (r.device) w.key("device", r.device->front() == '/' ? quoted(*r.device) : *r.device);
+  else w.computed("device", "ROLLSPIN_EGL_DEVICE, else the first GPU");
 
   w.section("labels");
   if (spec.labels.facts) {

@@ -9,6 +9,7 @@ packages=(
   libtomlplusplus-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libosmesa6-dev libstb-dev fonts-dejavu-core
+  libgl-dev libegl-dev libegl1 libegl-mesa0 libgl1-mesa-dri
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   ffmpeg
   libmuparser-dev

@@ -61,7 +61,7 @@ CliResult runRollspin(const std::vector<std::string>& args, const std::filesyste
   std::vector<std::string> envStore;
   // An entry of `environment` replaces the inherited variable of that name
   // (getenv would find the inherited one first): a test that sets
-  // ROLLSPIN_GL=osmesa must win over a CI pass run with ROLLSPIN_GL=egl.
+  // ROLLSPIN_GL must win over the one a CI pass runs under.
   auto nameOf = [](const std::string& entry) { return entry.substr(0, entry.find('=')); };
   std::set<std::string> replaced;
   for (const auto& e : environment) replaced.insert(nameOf(e));

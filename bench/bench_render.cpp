@@ -29,7 +29,7 @@ void BM_RenderFrame1080p(benchmark::State& state) {
   const model::RollingModel model = model::buildModel(spec);
   const motion::FrameOrientations frame = motion::solveFrame(spec, model, 0.3 * model.path->length());
   const draw::SceneDrawer drawer(spec, model, nullptr);
-  const auto context = render::createOsMesaContext();
+  const auto context = render::createContext(app::contextRequest(spec));
   // ROLLSPIN_SHADER_DIR: time edited shaders without rebuilding (development).
   const char* shaderDir = std::getenv("ROLLSPIN_SHADER_DIR");
   render::Renderer renderer(*context, render::ShaderLibrary{shaderDir != nullptr ? shaderDir : ""});
@@ -75,7 +75,7 @@ void BM_ClipFrames1080p(benchmark::State& state) {
   for (int k = 0; k < 24; ++k)
     frames.push_back(motion::solveFrame(spec, model, (0.3 + double(k) / 300.0) * model.path->length()));
   const draw::SceneDrawer drawer(spec, model, nullptr);
-  const auto context = render::createOsMesaContext();
+  const auto context = render::createContext(app::contextRequest(spec));
   const char* shaderDir = std::getenv("ROLLSPIN_SHADER_DIR");
   render::Renderer renderer(*context, render::ShaderLibrary{shaderDir != nullptr ? shaderDir : ""});
   media::Image image;

@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libosmesa6-dev libstb-dev fonts-dejavu-core
   libcairo2-dev poppler-utils librsvg2-bin fonts-lmodern
+  libgl-dev libegl-dev libegl1 libegl-mesa0 libgl1-mesa-dri
   libavcodec-dev libavformat-dev libavfilter-dev libswscale-dev libavutil-dev
   ffmpeg
   libmuparser-dev

@@ -142,7 +142,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
 
   const std::unique_ptr<SceneDrawer> drawerOwner = makeDrawer(job);
   const SceneDrawer& drawer = *drawerOwner;
-  GlRenderer gl(o.shaderDir);
+  GlRenderer gl(spec, o.shaderDir);
   render::Renderer& renderer = gl.renderer;
 
   // Render here (the context is current on this thread), encode there.

@@ -21,5 +21,7 @@ void registerReportCommands(CLI::App& cli, CommandHandler& handler);
 
 // Adds `join` (the parts of a split render → one clip); join_command.cpp.
 void registerJoinCommand(CLI::App& cli, CommandHandler& handler);
+// Adds `info`: the GL backends and the context a render gets; info_command.cpp.
+void registerInfoCommand(CLI::App& cli, CommandHandler& handler);
 
 }  // namespace rollspin::app

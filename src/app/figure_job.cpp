@@ -64,7 +64,7 @@ void writeFigureStill(const scene::SceneSpec& spec, const render::DrawList& list
   const bool opaque = render::hasMeshes(list, MeshLayer::Opaque);
   const bool translucent = render::hasMeshes(list, MeshLayer::Translucent);
   if (opaque || translucent) {  // GL only for the raster parts
-    GlRenderer gl(shaderDir);
+    GlRenderer gl(spec, shaderDir);
     render::Renderer& renderer = gl.renderer;
     if (opaque)
       renderer.renderWithDepth(render::meshLayerOf(list, MeshLayer::Opaque, width, height), rasters.opaque,

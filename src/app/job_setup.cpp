@@ -48,7 +48,7 @@ std::unique_ptr<draw::SceneDrawer> makeDrawer(const DrawJob& job) {
   return std::make_unique<draw::SceneDrawer>(job.spec, job.model, texture, motion::makeSceneFacts(job.spec, job.model));
 }
 
-GlRenderer::GlRenderer(const std::filesystem::path& shaderDir)
-    : context(render::createOsMesaContext()), shaders(shaderDir), renderer(*context, shaders) {}
+GlRenderer::GlRenderer(const scene::SceneSpec& spec, const std::filesystem::path& shaderDir)
+    : context(render::createContext(contextRequest(spec))), shaders(shaderDir), renderer(*context, shaders) {}
 
 }  // namespace rollspin::app

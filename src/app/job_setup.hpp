@@ -51,7 +51,8 @@ struct DrawJob {
 
 // One GL context, its shaders and the renderer over them, in that order.
 struct GlRenderer {
-  explicit GlRenderer(const std::filesystem::path& shaderDir);
+  // The context from render.backend / render.device (else ROLLSPIN_GL, ROLLSPIN_EGL_DEVICE).
+  GlRenderer(const scene::SceneSpec& spec, const std::filesystem::path& shaderDir);
   std::unique_ptr<render::GlContext> context;
   render::ShaderLibrary shaders;
   render::Renderer renderer;

@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   rollspin::app::registerSolveCommands(cli, handler);
   rollspin::app::registerRenderCommands(cli, handler);
   rollspin::app::registerReportCommands(cli, handler);
+  rollspin::app::registerInfoCommand(cli, handler);
   rollspin::app::registerJoinCommand(cli, handler);
 
   // --version needs no command: the release, the source's git describe, and

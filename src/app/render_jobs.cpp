@@ -122,6 +122,10 @@ media::SinkOptions sinkOptions(const scene::SceneSpec& spec, const std::filesyst
   return o;
 }
 
+render::ContextRequest contextRequest(const scene::SceneSpec& spec) {
+  return {spec.render.backend, spec.where("render.backend"), spec.render.device, spec.where("render.device")};
+}
+
 std::filesystem::path renderStill(const StillOptions& o) {
   const DrawJob job = prepareDrawJob({o.scenePath, o.overrides, {}, o.width, o.height, o.transparent, o.output,
                                       media::OutputUse::Still});
@@ -146,7 +150,7 @@ std::filesystem::path renderStill(const StillOptions& o) {
     return out;
   }
 
-  GlRenderer gl(o.shaderDir);
+  GlRenderer gl(spec, o.shaderDir);
   const media::Image image = gl.renderer.render(list);
   StageLog::instance().record(std::string(format.name));
   const auto sink = media::openSink(format, sinkOptions(spec, out));

@@ -15,6 +15,7 @@
 #include "media/image_view.hpp"
 #include "media/sink_factory.hpp"
 #include "render/draw_list.hpp"
+#include "render/gl_context.hpp"
 #include "scene/scene_spec.hpp"
 
 namespace rollspin::app {
@@ -65,5 +66,9 @@ void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerP
 [[nodiscard]] media::SinkOptions sinkOptions(const scene::SceneSpec& spec, const std::filesystem::path& path);
 
 std::filesystem::path renderStill(const StillOptions& options);
+
+// The GL context the scene asks for: render.backend / render.device with
+// where they were given (unset: the environment decides, render/gl_context.hpp).
+[[nodiscard]] render::ContextRequest contextRequest(const scene::SceneSpec& spec);
 
 }  // namespace rollspin::app

@@ -17,7 +17,7 @@ std::string versionLine() {
 std::string glBackendDescription() {
   // The backend factory is one call; a render makes the same one.
   try {
-    return render::createOsMesaContext()->describe();
+    return render::createContext(render::ContextRequest{})->describe();
   } catch (const Error& e) {
     return fmt::format("none: {}", e.message());
   }

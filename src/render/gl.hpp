@@ -1,20 +1,24 @@
 // The one place render/ includes OpenGL: the 4.5 core profile (glcorearb.h)
-// and a table of function pointers filled at run time from libOSMesa, loaded
-// with dlopen (gl_loader.cpp). The binary therefore does not need libOSMesa
-// to start: `solve` and `timeline` run on a machine without it, and only a
-// job that draws loads it. Calls are written as usual (glDrawArrays(...));
-// the macros below route them through the table. A new GL call needs one
-// line in ROLLSPIN_GL_FUNCTIONS.
+// and a table of function pointers filled at run time by the context backend
+// that made the current context (gl_backends.cpp chooses it; each backend
+// loads its library with dlopen and hands its GetProcAddress to
+// loadGlFunctions). The binary therefore needs no GL library to start:
+// `solve` and `timeline` run on a machine without one, and only a job that
+// draws loads one. Calls are written as usual (glDrawArrays(...)); the macros
+// below route them through the table. A new GL call needs one line in
+// ROLLSPIN_GL_FUNCTIONS.
 #pragma once
 
 // Prototypes are declared (never linked: only their types are used) so each
-// table entry can take its exact type from decltype; osmesa.h brings GL/gl.h,
-// which must come before the renaming macros.
+// table entry can take its exact type from decltype; GL/gl.h must come before
+// the renaming macros (a backend's own header may include it again).
 #ifndef GL_GLEXT_PROTOTYPES
 #define GL_GLEXT_PROTOTYPES 1
 #endif
-#include <GL/osmesa.h>
+#include <GL/gl.h>
 #include <GL/glcorearb.h>
+
+#include <string_view>
 
 #define ROLLSPIN_GL_FUNCTIONS(X) \
   X(glActiveTexture) \
@@ -176,7 +180,12 @@ ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DECLARE)
 #define glViewport ::rollspin::render::gl_api::glViewport
 
 namespace rollspin::render {
-// Loads libOSMesa (once) and fills the table; throws rollspin::Error
-// (Runtime) naming the library and dlerror() when it cannot.
-void loadOsMesa();
+// A backend's GetProcAddress (eglGetProcAddress and its kin): the address of
+// a GL entry point for the context it made, or null.
+using GlProc = void (*)();
+using GlProcResolver = GlProc (*)(const char* name);
+// Fills the table from `resolve`, called with the backend's context current
+// (the table serves one backend at a time: the last one to fill it). Throws
+// rollspin::Error (Runtime) naming `library` and the first missing function.
+void loadGlFunctions(GlProcResolver resolve, std::string_view library);
 }  // namespace rollspin::render

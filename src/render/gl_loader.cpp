@@ -1,4 +1,6 @@
-// Loads libOSMesa at run time and fills the GL function table (gl.hpp).
+// The GL function table (gl.hpp) and what every backend shares to fill it:
+// opening its library with dlopen, resolving GL through its GetProcAddress,
+// reading the context's strings.
 #include <dlfcn.h>
 
 #include <cstdlib>
@@ -8,14 +10,7 @@
 
 #include "core/error.hpp"
 #include "render/gl.hpp"
-#include "render/osmesa_api.hpp"
-
-namespace rollspin::render::osmesa_api {
-decltype(&OSMesaCreateContextAttribs) createContextAttribs = nullptr;
-decltype(&OSMesaMakeCurrent) makeCurrent = nullptr;
-decltype(&OSMesaDestroyContext) destroyContext = nullptr;
-decltype(&OSMesaGetProcAddress) getProcAddress = nullptr;
-}  // namespace rollspin::render::osmesa_api
+#include "render/gl_backend.hpp"
 
 #define ROLLSPIN_GL_DEFINE(name) ::rollspin::render::gl_api::name##_type name = nullptr;
 ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DEFINE)
@@ -23,59 +18,50 @@ ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DEFINE)
 
 namespace rollspin::render {
 
-namespace {
-
-void* openLibrary(std::string& tried) {
-  // ROLLSPIN_OSMESA_LIBRARY names the one library to use (another Mesa
-  // build, or a test's missing one); else Debian's soname, then the dev link.
-  std::vector<std::string> names;
-  if (const char* custom = std::getenv("ROLLSPIN_OSMESA_LIBRARY"); custom != nullptr && *custom != '\0') {
-    names.emplace_back(custom);
+void* openGlLibrary(const char* overrideVariable, std::initializer_list<const char*> names, std::string& why) {
+  // The override names the one library to use (another build, or a test's
+  // missing one): falling back to the system's would hide what it tests.
+  std::vector<std::string> candidates;
+  if (const char* custom = std::getenv(overrideVariable); custom != nullptr && *custom != '\0') {
+    candidates.emplace_back(custom);
   } else {
-    names.emplace_back("libOSMesa.so.8");
-    names.emplace_back("libOSMesa.so");
+    candidates.assign(names.begin(), names.end());
   }
-  for (const auto& name : names) {
+  why.clear();
+  for (const auto& name : candidates) {
     if (void* handle = dlopen(name.c_str(), RTLD_NOW | RTLD_LOCAL)) return handle;
-    const char* why = dlerror();
-    tried += (tried.empty() ? "" : "; ") + std::string(why != nullptr ? why : name);
+    const char* error = dlerror();
+    why += (why.empty() ? "" : "; ") + std::string(error != nullptr ? error : name);
   }
   return nullptr;
 }
 
-template <typename Fn>
-void resolve(void* handle, Fn& target, const char* name) {
-  target = reinterpret_cast<Fn>(dlsym(handle, name));
-  if (target == nullptr) throw runtimeError({}, "libOSMesa has no {}: install Debian's libosmesa6", name);
-}
-
-void loadOnce() {
-  std::string tried;
-  void* handle = openLibrary(tried);
-  if (handle == nullptr) {
-    throw runtimeError({}, "cannot load the OSMesa library needed to draw ({}); install Debian's libosmesa6", tried);
-  }
-  resolve(handle, osmesa_api::createContextAttribs, "OSMesaCreateContextAttribs");
-  resolve(handle, osmesa_api::makeCurrent, "OSMesaMakeCurrent");
-  resolve(handle, osmesa_api::destroyContext, "OSMesaDestroyContext");
-  resolve(handle, osmesa_api::getProcAddress, "OSMesaGetProcAddress");
+void loadGlFunctions(GlProcResolver resolve, std::string_view library) {
+  // Contexts are made on several threads in tests; the table is process-wide.
+  static std::mutex mutex;
+  const std::lock_guard lock(mutex);
 #define ROLLSPIN_GL_LOAD(name)                                                                     \
-  name = reinterpret_cast<gl_api::name##_type>(osmesa_api::getProcAddress(#name));                 \
-  if (name == nullptr) throw runtimeError({}, "libOSMesa does not provide {}: OpenGL 4.5 needed", #name);
+  name = reinterpret_cast<gl_api::name##_type>(resolve(#name));                                    \
+  if (name == nullptr) throw runtimeError({}, "{} does not provide {}: OpenGL 4.5 needed", library, #name);
   ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_LOAD)
 #undef ROLLSPIN_GL_LOAD
 }
 
-}  // namespace
+bool isSoftwareRenderer(std::string_view glRenderer) {
+  for (std::string_view cpu : {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer"})
+    if (glRenderer.find(cpu) != std::string_view::npos) return true;
+  return false;
+}
 
-void loadOsMesa() {
-  // A failed load is retried by the next caller and throws again.
-  static std::mutex mutex;
-  static bool loaded = false;
-  const std::lock_guard lock(mutex);
-  if (loaded) return;
-  loadOnce();
-  loaded = true;
+void readGlStrings(ContextInfo& info) {
+  auto text = [](GLenum name) {
+    const auto* s = reinterpret_cast<const char*>(glGetString(name));
+    return std::string(s != nullptr ? s : "?");
+  };
+  info.vendor = text(GL_VENDOR);
+  info.renderer = text(GL_RENDERER);
+  info.version = text(GL_VERSION);
+  info.software = isSoftwareRenderer(info.renderer);
 }
 
 }  // namespace rollspin::render

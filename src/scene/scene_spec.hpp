@@ -114,6 +114,10 @@ struct RenderSpec {
   double dpi = 300.0;  // vector figures: resolution of their raster parts (the shaded ball and surfaces)
   double fontScale = 1.0;   // text size × this (README "Rendering"); body line ≥ 1/28 of the height at 1
   bool twinCameraFixed = true;  // twin_camera: "fixed" (the first shot's view throughout) or "linked"
+  // GL context (render/gl_backends.cpp): "auto" or a backend of the table, and
+  // for EGL a device index or DRM path; unset: ROLLSPIN_GL / ROLLSPIN_EGL_DEVICE.
+  std::optional<std::string> backend;
+  std::optional<std::string> device;
 };
 
 // [figure]: a still as a publication figure (PDF/SVG, README "Figures for

@@ -223,6 +223,10 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   else w.computed("format", "from the output's extension, else mp4 (a still: png)");
   w.key("jpeg_quality", std::to_string(r.jpegQuality));
   w.key("dpi", number(r.dpi));
+  if (r.backend) w.key("backend", quoted(*r.backend));
+  else w.computed("backend", "ROLLSPIN_GL, else \"auto\"");
+  if (r.device) w.key("device", r.device->front() == '/' ? quoted(*r.device) : *r.device);
+  else w.computed("device", "ROLLSPIN_EGL_DEVICE, else the first GPU");
 
   w.section("figure");
   w.key("width_mm", number(spec.figure.widthMm));

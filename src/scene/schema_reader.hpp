@@ -60,6 +60,7 @@ class Reader {
   std::optional<std::string> anyText(const toml::table* t, const std::string& section, const std::string& key);
   PathKind readPath(const toml::table* path, const std::string& prefix, PathSpec& target);
   void readRender();
+  void readGlContext(const toml::table* table);
   void readAnimation();
   void readLabels();
   void readFigure();

@@ -3,6 +3,7 @@
 #include "scene/schema_reader.hpp"
 
 #include "media/output_format.hpp"
+#include "render/gl_context.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -108,7 +109,7 @@ void Reader::readRender() {
   const toml::table* render = section(
       "render", {"width", "height", "layout", "strobe", "title", "labels", "transparent", "msaa", "azimuth_deg",
                  "elevation_deg", "distance", "target", "follow", "fov_deg", "format", "trails", "shadow", "dpi",
-                 "jpeg_quality", "font_scale", "twin_camera"});
+                 "jpeg_quality", "font_scale", "twin_camera", "backend", "device"});
   RenderSpec& r = spec_.render;
   constexpr long long kMaxSide = 8192;  // "8K": the renderer's size limit
   for (const char* key : {"width", "height"}) {
@@ -162,6 +163,25 @@ void Reader::readRender() {
   if (auto d = number(render, "render", "dpi")) {
     if (!(*d >= 30.0 && *d <= 2400.0)) failAt("render.dpi", fmt::format("expected a resolution in [30, 2400] dpi, got {}", *d));
     r.dpi = *d;
+  }
+  readGlContext(render);
+}
+
+// render.backend and render.device: the GL context. The names are render's
+// table (gl_backends.cpp); the scene keeps the text.
+void Reader::readGlContext(const toml::table* table) {
+  const std::vector<std::string> names = render::backendNames();
+  if (auto b = text(table, "render", "backend", std::set<std::string>(names.begin(), names.end())))
+    spec_.render.backend = *b;
+  if (const toml::node* node = get(table, "render", "device")) {
+    const SourceLoc at = locOf("render.device", *node);
+    const std::string expected = "an EGL device index (0, 1, …) or a DRM device path (\"/dev/dri/renderD128\")";
+    if (node->is_integer() && node->as_integer()->get() >= 0) spec_.render.device = std::to_string(node->as_integer()->get());
+    else if (node->is_string() && node->as_string()->get().rfind('/', 0) == 0) spec_.render.device = node->as_string()->get();
+    else fail("render.device", at, expected, describeNode(*node));
+    if (spec_.render.backend && !render::backendTakesDevice(*spec_.render.backend))
+      failAt("render.device", fmt::format("applies to a backend that renders on a device (\"egl\" or \"auto\"), but "
+                                          "render.backend is \"{}\"", *spec_.render.backend));
   }
 }
 

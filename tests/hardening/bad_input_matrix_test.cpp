@@ -217,14 +217,17 @@ TEST(BadInputMatrix, FrameBuffersLargerThanMemoryAreRefusedUpFront) {
 // ---- only what a job needs: the GL library ---------------------------------
 
 TEST(WithoutOsMesa, SolveAndTimelineRunAndDrawingFailsClearly) {
-  // A broken libOSMesa.so.8 first on the library path, and the loader told
-  // to use nothing else: the binary must still start and solve (it does not
-  // link libOSMesa; it loads it only to draw), and a render must fail with
-  // exit code 1 and a message naming the library.
+  // A broken libOSMesa.so.8 and libEGL.so.1 first on the library path, and
+  // the loaders told to use nothing else: the binary must still start and
+  // solve (it links no GL library; it loads one only to draw), and a render
+  // (auto: every backend broken) must fail with exit code 1 and a message
+  // naming the libraries.
   const fs::path dir = freshTempDir("no-osmesa");
   writeRandom(dir / "libOSMesa.so.8", 4096);
-  const std::vector<std::string> env{"LD_LIBRARY_PATH=" + dir.string(),
-                                     "ROLLSPIN_OSMESA_LIBRARY=" + (dir / "libOSMesa.so.8").string()};
+  writeRandom(dir / "libEGL.so.1", 4096);
+  const std::vector<std::string> env{"LD_LIBRARY_PATH=" + dir.string(), "ROLLSPIN_GL=auto",
+                                     "ROLLSPIN_OSMESA_LIBRARY=" + (dir / "libOSMesa.so.8").string(),
+                                     "ROLLSPIN_EGL_LIBRARY=" + (dir / "libEGL.so.1").string()};
   const std::string scene = (sourceDir() / "scenes" / "lollipop.toml").string();
   const auto solve = runRollspin({"solve", scene, "--json"}, {}, 0, env);
   EXPECT_EQ(solve.exitCode, 0) << solve.err;
@@ -232,9 +235,13 @@ TEST(WithoutOsMesa, SolveAndTimelineRunAndDrawingFailsClearly) {
   const auto timeline = runRollspin({"timeline", scene, "-o", (dir / "t.csv").string()}, {}, 0, env);
   EXPECT_EQ(timeline.exitCode, 0) << timeline.err;
   EXPECT_TRUE(fs::exists(dir / "t.csv"));
+  const auto report = runRollspin({"report", "paper"}, dir, 0, env);
+  EXPECT_EQ(report.exitCode, 0) << report.err;
+  EXPECT_TRUE(fs::exists(dir / "output" / "report" / "paper.md"));
   const auto still = runRollspin({"render", scene, "--still", "-o", (dir / "x.png").string()}, {}, 0, env);
   EXPECT_EQ(still.exitCode, 1) << still.err;
   EXPECT_NE(still.err.find("OSMesa"), std::string::npos) << still.err;
+  EXPECT_NE(still.err.find("EGL library"), std::string::npos) << still.err;
   EXPECT_FALSE(fs::exists(dir / "x.png"));
   fs::remove_all(dir);
 }

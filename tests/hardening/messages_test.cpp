@@ -86,7 +86,10 @@ TEST(Messages, VersionNamesTheReleaseAndWithVerboseTheBackend) {
   EXPECT_EQ(r.out.find("GL backend"), std::string::npos);
   const auto v = test::runRollspin({"--version", "--verbose"});
   EXPECT_EQ(v.exitCode, 0);
-  EXPECT_NE(v.out.find("GL backend: OSMesa"), std::string::npos) << v.out;
+  // The backend a render would get (ROLLSPIN_GL chooses in CI's second pass) and its GL version.
+  EXPECT_TRUE(v.out.find("GL backend: osmesa") != std::string::npos || v.out.find("GL backend: egl") != std::string::npos)
+      << v.out;
+  EXPECT_NE(v.out.find("4.5 (Core Profile)"), std::string::npos) << v.out;
 }
 
 }  // namespace

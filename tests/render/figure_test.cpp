@@ -289,7 +289,7 @@ TEST(FigureDepth, LinesBehindAnOpaqueMeshAreCutWhereTheDepthBufferSays) {
     list.meshes.push_back(mark);
   }
 
-  const auto context = createOsMesaContext();
+  const auto context = createContext();  // ROLLSPIN_GL chooses the backend
   Renderer renderer(*context, ShaderLibrary{});
   FigureRasters rasters;
   rasters.width = 400;

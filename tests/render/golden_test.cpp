@@ -10,6 +10,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "media/image_compare.hpp"
 #include "media/image_io.hpp"
@@ -50,28 +53,27 @@ bool regenerate() {
   return v != nullptr && std::string(v) == "1";
 }
 
-fs::path renderScene(const std::string& name, const std::vector<std::string>& extra) {
-  const fs::path dir = test::freshTempDir("golden_" + name);
+// backend: the GL backend forced on the child (ROLLSPIN_GL), "" = inherited.
+fs::path renderScene(const std::string& name, const std::vector<std::string>& extra, const std::string& backend = "") {
+  const fs::path dir = test::freshTempDir("golden_" + name + (backend.empty() ? "" : "_" + backend));
   const fs::path out = dir / (name + ".png");
   std::vector<std::string> args{"render", (test::sourceDir() / "tests/render/scenes" / (name + ".toml")).string(),
-                                "--still", "-o", out.string()};
+                                "--still", "-o", out.string(), "--verbose"};
   args.insert(args.end(), extra.begin(), extra.end());
-  const test::CliResult r = test::runRollspin(args);
+  std::vector<std::string> env;
+  if (!backend.empty()) env.push_back("ROLLSPIN_GL=" + backend);
+  const test::CliResult r = test::runRollspin(args, {}, 0, env);
   EXPECT_EQ(r.exitCode, 0) << r.err;
+  // The backend asked for is the one that drew (--verbose names it).
+  if (!backend.empty()) EXPECT_NE(r.err.find("gl: backend     " + backend), std::string::npos) << r.err;
   return out;
 }
 
-void checkGolden(const std::string& name, const std::vector<std::string>& extra = {}) {
-  const fs::path actualPath = renderScene(name, extra);
-  const fs::path golden = fs::path(ROLLSPIN_GOLDEN_DIR) / (name + ".png");
-  if (regenerate()) {
-    fs::copy_file(actualPath, golden, fs::copy_options::overwrite_existing);
-    std::printf("regenerated %s\n", golden.c_str());
-    return;
-  }
-  ASSERT_TRUE(fs::exists(golden)) << "no reference " << golden << " (run with ROLLSPIN_REGENERATE_GOLDEN=1)";
+// Whether `actualPath` matches `expectedPath` within the thresholds above;
+// a failure keeps the actual image and a heat map under `label`.
+void expectWithinThresholds(const fs::path& actualPath, const fs::path& expectedPath, const std::string& label) {
   const media::Image actual = media::loadImage(actualPath, {});
-  const media::Image expected = media::loadImage(golden, {});
+  const media::Image expected = media::loadImage(expectedPath, {});
   ASSERT_EQ(actual.width, expected.width);
   ASSERT_EQ(actual.height, expected.height);
   const media::ImageDifference d = media::compareImages(actual.view(), expected.view());
@@ -80,25 +82,71 @@ void checkGolden(const std::string& name, const std::vector<std::string>& extra 
   if (!ok) {
     const fs::path failures = ROLLSPIN_GOLDEN_FAILURE_DIR;
     fs::create_directories(failures);
-    const fs::path keep = failures / (name + ".actual.png");
-    const fs::path diff = failures / (name + ".diff.png");
+    const fs::path keep = failures / (label + ".actual.png");
+    const fs::path diff = failures / (label + ".diff.png");
     fs::copy_file(actualPath, keep, fs::copy_options::overwrite_existing);
     media::writePng(diff, media::differenceHeatMap(actual.view(), expected.view()).view());
-    ADD_FAILURE() << name << ": max delta " << d.maxOverall() << " (limit " << kMaxDelta << "), mean "
+    ADD_FAILURE() << label << ": max delta " << d.maxOverall() << " (limit " << kMaxDelta << "), mean "
                   << d.meanOverall() << " (limit " << kMeanDelta << "), differing pixels " << d.differingPixels
                   << ", by more than " << kVisibleDelta << " levels: " << share * 100 << " % (limit "
                   << kMaxVisibleShare * 100 << " %)\n  actual: " << keep << "\n  diff:   " << diff
-                  << "\n  expected: " << golden;
+                  << "\n  expected: " << expectedPath;
   }
+}
+
+void checkGolden(const std::string& name, const std::vector<std::string>& extra, const std::string& backend) {
+  const fs::path actualPath = renderScene(name, extra, backend);
+  const fs::path golden = fs::path(ROLLSPIN_GOLDEN_DIR) / (name + ".png");
+  if (regenerate()) {
+    // References come from one backend (the first in the list below).
+    if (backend != "osmesa") GTEST_SKIP() << "references are regenerated with osmesa";
+    fs::copy_file(actualPath, golden, fs::copy_options::overwrite_existing);
+    std::printf("regenerated %s\n", golden.c_str());
+    return;
+  }
+  ASSERT_TRUE(fs::exists(golden)) << "no reference " << golden << " (run with ROLLSPIN_REGENERATE_GOLDEN=1)";
+  expectWithinThresholds(actualPath, golden, name + "." + backend);
   EXPECT_LT(fs::file_size(golden), 200u * 1024u) << "keep golden PNGs small";
 }
 
-TEST(Golden, LollipopSideBySide) { checkGolden("lollipop_side_by_side", {"--at", "fraction=0.3"}); }
-TEST(Golden, SphereInsideWithInset) { checkGolden("sphere_inside", {"--at", "fraction=0.3"}); }
-TEST(Golden, BrockettPlate) { checkGolden("brockett_plate", {"--at", "fraction=0.3"}); }
-TEST(Golden, TwinOnly) { checkGolden("twin_only", {"--at", "fraction=0.3"}); }
-TEST(Golden, StrobeFigure) { checkGolden("strobe"); }
-TEST(Golden, TransparentStill) { checkGolden("transparent", {"--at", "fraction=0.3"}); }
+struct GoldenScene {
+  const char* name;
+  std::vector<std::string> extra;
+};
+const std::vector<GoldenScene> kGoldenScenes{
+    {"lollipop_side_by_side", {"--at", "fraction=0.3"}},
+    {"sphere_inside", {"--at", "fraction=0.3"}},
+    {"brockett_plate", {"--at", "fraction=0.3"}},
+    {"twin_only", {"--at", "fraction=0.3"}},
+    {"strobe", {}},
+    {"transparent", {"--at", "fraction=0.3"}},
+};
+
+// Every golden through every GL backend (render/gl_backends.cpp), each held
+// to the same thresholds: EGL here is the surfaceless platform on llvmpipe.
+class Golden : public ::testing::TestWithParam<std::tuple<std::size_t, std::string>> {};
+
+TEST_P(Golden, WithinThresholds) {
+  const auto& [index, backend] = GetParam();
+  checkGolden(kGoldenScenes[index].name, kGoldenScenes[index].extra, backend);
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, Golden,
+                         ::testing::Combine(::testing::Range<std::size_t>(0, kGoldenScenes.size()),
+                                            ::testing::Values(std::string("osmesa"), std::string("egl"))),
+                         [](const auto& info) {
+                           return std::string(kGoldenScenes[std::get<0>(info.param)].name) + "_" +
+                                  std::get<1>(info.param);
+                         });
+
+// The two backends draw the same still: compared with each other (not only
+// each with the reference), within the same thresholds.
+TEST(GoldenBackends, EglStillMatchesOsMesa) {
+  const std::vector<std::string> at{"--at", "fraction=0.3"};
+  const fs::path osmesa = renderScene("lollipop_side_by_side", at, "osmesa");
+  const fs::path egl = renderScene("lollipop_side_by_side", at, "egl");
+  expectWithinThresholds(egl, osmesa, "lollipop_side_by_side.egl-vs-osmesa");
+}
 
 // The same scene rendered twice in one run gives byte-identical PNGs.
 TEST(Determinism, SameSceneTwiceIsByteIdentical) {

@@ -59,15 +59,19 @@ TEST(RenderCli, CameraAndLayoutOptionsRender) {
 }
 
 // No OpenGL 4.5 context (simulated by capping Mesa's version): a clear
-// message and exit code 1, and no file.
+// message and exit code 1, and no file — from each backend.
 TEST(RenderCli, ContextFailureExitsOne) {
   const fs::path dir = test::freshTempDir("cli_nocontext");
   ::setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1);
-  const auto r = test::runRollspin({"render", scene("twin_only"), "--still", "-o", (dir / "a.png").string()});
+  for (const auto& [backend, message] : {std::pair{"osmesa", "OSMesa could not create"},
+                                         std::pair{"egl", "eglCreateContext (OpenGL 4.5 core)"}}) {
+    const auto r = test::runRollspin({"render", scene("twin_only"), "--still", "-o", (dir / "a.png").string()}, {}, 0,
+                                     {std::string("ROLLSPIN_GL=") + backend});
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "a.png"));
+  }
   ::unsetenv("MESA_GL_VERSION_OVERRIDE");
-  EXPECT_EQ(r.exitCode, 1) << r.err;
-  EXPECT_NE(r.err.find("OSMesa could not create"), std::string::npos) << r.err;
-  EXPECT_FALSE(fs::exists(dir / "a.png"));
 }
 
 TEST(SolveCli, NeedsNoGlContext) {

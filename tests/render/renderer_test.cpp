@@ -22,7 +22,7 @@ namespace {
 class RendererTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    context_ = createOsMesaContext().release();
+    context_ = createContext().release();  // ROLLSPIN_GL chooses the backend
     renderer_ = new Renderer(*context_, ShaderLibrary{});
   }
   static void TearDownTestSuite() {

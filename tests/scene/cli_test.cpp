@@ -135,3 +135,30 @@ TEST(ScenePrint, ShowsDefaultsOverridesAndDerivedValues) {
   EXPECT_NE(r.out.find("# steps = automatic: "), std::string::npos);         // the automatic step count
   EXPECT_EQ(r.out.find("colatitude_deg"), std::string::npos);                // keys of other kinds are not shown
 }
+
+// render.backend and render.device (the GL context): printed when set, a
+// comment saying who decides when not, and the printed form reads back.
+TEST(ScenePrint, GlContextKeysRoundTrip) {
+  const auto dir = freshTempDir("print_gl");
+  const auto unset = runRollspin({"scene", scenePath("lollipop.toml"), "--print"});
+  ASSERT_EQ(unset.exitCode, 0) << unset.err;
+  EXPECT_NE(unset.out.find("# backend = ROLLSPIN_GL, else \"auto\""), std::string::npos) << unset.out;
+  EXPECT_NE(unset.out.find("# device = ROLLSPIN_EGL_DEVICE, else the first GPU"), std::string::npos) << unset.out;
+  for (const std::vector<std::string> set : {std::vector<std::string>{"render.backend=\"egl\"", "render.device=1"},
+                                             {"render.backend=\"auto\"", "render.device=\"/dev/dri/renderD128\""}}) {
+    const auto first = runRollspin({"scene", scenePath("lollipop.toml"), "--print", "--set", set[0], "--set", set[1]});
+    ASSERT_EQ(first.exitCode, 0) << first.err;
+    const std::string device = set[1].substr(set[1].find('=') + 1);
+    EXPECT_NE(first.out.find("backend = " + set[0].substr(set[0].find('=') + 1)), std::string::npos) << first.out;
+    EXPECT_NE(first.out.find("device = " + device + "\n"), std::string::npos) << first.out;
+    std::ofstream(dir / "p.toml") << first.out;
+    const auto second = runRollspin({"scene", (dir / "p.toml").string(), "--print"});
+    ASSERT_EQ(second.exitCode, 0) << second.err;
+    EXPECT_EQ(withoutHeader(first.out), withoutHeader(second.out));
+  }
+  // A device for a backend that takes none stays rejected, at the key.
+  const auto bad = runRollspin({"scene", scenePath("lollipop.toml"), "--print", "--set", "render.backend=\"osmesa\"",
+                                "--set", "render.device=0"});
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("render.device"), std::string::npos) << bad.err;
+}

@@ -64,7 +64,14 @@ CliResult runRollspin(const std::vector<std::string>& args, const std::filesyste
   for (auto& a : argvStore) argv.push_back(a.data());
   argv.push_back(nullptr);
   std::vector<std::string> envStore;
-  for (char** e = environ; *e != nullptr; ++e) envStore.emplace_back(*e);
+  // An entry of `environment` replaces the inherited variable of that name
+  // (getenv would find the inherited one first): a test that sets
+  // ROLLSPIN_GL must win over the one a CI pass runs under.
+  auto nameOf = [](const std::string& entry) { return entry.substr(0, entry.find('=')); };
+  std::set<std::string> replaced;
+  for (const auto& e : environment) replaced.insert(nameOf(e));
+  for (char** e = environ; *e != nullptr; ++e)
+    if (!replaced.contains(nameOf(*e))) envStore.emplace_back(*e);
   envStore.insert(envStore.end(), environment.begin(), environment.end());
   std::vector<char*> envp;
   for (auto& e : envStore) envp.push_back(e.data());

@@ -18,7 +18,8 @@ struct CliResult {
 // argv excludes the program name. cwd: working directory ("" = current).
 // addressSpaceLimit: RLIMIT_AS for the child in bytes (0 = unlimited), to
 // simulate a machine with little memory.
-// environment: extra "NAME=value" entries for the child.
+// environment: extra "NAME=value" entries for the child; each replaces an
+// inherited variable of the same name.
 CliResult runRollspin(const std::vector<std::string>& args, const std::filesystem::path& cwd = {},
                       std::uint64_t addressSpaceLimit = 0, const std::vector<std::string>& environment = {});
 

@@ -1,0 +1,183 @@
+// Choosing a GL backend as a user meets it: render.backend / ROLLSPIN_GL and
+// their precedence, how auto falls back when a library is missing or broken,
+// and the message and exit code of each failure (README "GL backends").
+// Missing libraries are simulated with the loaders' documented overrides
+// (ROLLSPIN_OSMESA_LIBRARY, ROLLSPIN_EGL_LIBRARY) and Mesa's and glvnd's own
+// variables.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "support/cli_runner.hpp"
+
+namespace rollspin {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kMissingOsMesa = "ROLLSPIN_OSMESA_LIBRARY=/nonexistent/libOSMesa.so.8";
+const std::string kMissingEgl = "ROLLSPIN_EGL_LIBRARY=/nonexistent/libEGL.so.1";
+
+std::string scene() { return (test::sourceDir() / "tests/render/scenes/twin_only.toml").string(); }
+
+// A small still with --verbose; env replaces inherited variables.
+test::CliResult renderSmall(const fs::path& out, std::vector<std::string> env, std::vector<std::string> extra = {}) {
+  std::vector<std::string> args{"render", scene(), "--still", "--width", "64", "--height", "48", "-o", out.string(),
+                                "--verbose"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return test::runRollspin(args, {}, 0, env);
+}
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(GlBackend, AutoRendersThroughEglWhenOsMesaIsMissing) {
+  const fs::path dir = test::freshTempDir("gl_no_osmesa");
+  const auto r = renderSmall(dir / "a.png", {"ROLLSPIN_GL=auto", kMissingOsMesa});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(has(r.err, "gl: backend     egl")) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "a.png"));
+}
+
+TEST(GlBackend, AutoRendersThroughEglWhenOsMesaIsBroken) {
+  // Not a library at all: dlopen fails on it.
+  const fs::path dir = test::freshTempDir("gl_broken_osmesa");
+  std::ofstream(dir / "libOSMesa.so.8") << "not an ELF file";
+  const auto r = renderSmall(dir / "a.png", {"ROLLSPIN_GL=auto", "ROLLSPIN_OSMESA_LIBRARY=" + (dir / "libOSMesa.so.8").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(has(r.err, "gl: backend     egl")) << r.err;
+}
+
+TEST(GlBackend, AutoUsesOsMesaWhenEglIsMissing) {
+  const fs::path dir = test::freshTempDir("gl_no_egl");
+  const auto r = renderSmall(dir / "a.png", {"ROLLSPIN_GL=auto", kMissingEgl});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(has(r.err, "gl: backend     osmesa")) << r.err;
+}
+
+TEST(GlBackend, VerbosePrintsTheContext) {
+  const fs::path dir = test::freshTempDir("gl_verbose");
+  const auto r = renderSmall(dir / "a.png", {"ROLLSPIN_GL=egl"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* line : {"gl: backend     egl (surfaceless)", "gl: GL_VENDOR", "gl: GL_RENDERER", "gl: GL_VERSION  4.5",
+                           "gl: device      none (EGL surfaceless platform)"})
+    EXPECT_TRUE(has(r.err, line)) << line << "\n" << r.err;
+}
+
+TEST(GlBackend, SceneKeyWinsOverTheEnvironmentAndSetWinsOverTheFile) {
+  const fs::path dir = test::freshTempDir("gl_precedence");
+  std::ofstream(dir / "s.toml") << "extends = \"" << scene() << "\"\n[render]\nbackend = \"osmesa\"\n";
+  const std::string file = (dir / "s.toml").string();
+  auto backendOf = [&](const std::string& sceneFile, std::vector<std::string> extra) {
+    std::vector<std::string> args{"render", sceneFile, "--still", "--width", "32", "--height", "24", "-o",
+                                  (dir / "a.png").string(), "--verbose"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = test::runRollspin(args, {}, 0, {"ROLLSPIN_GL=egl"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return has(r.err, "gl: backend     egl") ? "egl" : has(r.err, "gl: backend     osmesa") ? "osmesa" : "?";
+  };
+  EXPECT_STREQ(backendOf(scene(), {}), "egl");  // no key: the variable
+  EXPECT_STREQ(backendOf(file, {}), "osmesa");   // the key wins over the variable
+  EXPECT_STREQ(backendOf(file, {"--set", "render.backend=egl"}), "egl");  // --set wins over the file
+}
+
+TEST(GlBackend, UnknownNamesExitTwoNamingTheChoices) {
+  const fs::path dir = test::freshTempDir("gl_unknown");
+  const auto env = renderSmall(dir / "a.png", {"ROLLSPIN_GL=vulkan"});
+  EXPECT_EQ(env.exitCode, 2) << env.err;
+  EXPECT_TRUE(has(env.err, "ROLLSPIN_GL: unknown GL backend \"vulkan\"")) << env.err;
+  EXPECT_TRUE(has(env.err, "\"auto\" | \"osmesa\" | \"egl\"")) << env.err;
+
+  std::ofstream(dir / "s.toml") << "extends = \"" << scene() << "\"\n[render]\nbackend = \"vulkan\"\n";
+  const auto key = test::runRollspin({"render", (dir / "s.toml").string(), "--still", "-o", (dir / "a.png").string()});
+  EXPECT_EQ(key.exitCode, 2) << key.err;
+  EXPECT_TRUE(has(key.err, "s.toml:3:11: render.backend")) << key.err;
+  EXPECT_TRUE(has(key.err, "\"egl\"")) << key.err;
+  EXPECT_FALSE(fs::exists(dir / "a.png"));
+}
+
+TEST(GlBackend, DeviceKeysAreCheckedWhereGiven) {
+  const fs::path dir = test::freshTempDir("gl_device");
+  const fs::path out = dir / "a.png";
+  struct Case {
+    std::vector<std::string> env, extra;
+    int exitCode;
+    std::string expect;
+  };
+  const std::vector<Case> cases{
+      {{}, {"--set", "render.backend=osmesa", "--set", "render.device=0"}, 2, "render.device: applies to a backend"},
+      {{}, {"--set", "render.device=-1"}, 2, "render.device: expected an EGL device index"},
+      {{"ROLLSPIN_EGL_DEVICE=card0"}, {}, 2, "ROLLSPIN_EGL_DEVICE: expected an EGL device index"},
+      // No such device: exit 1 with the list of the devices there are.
+      {{"ROLLSPIN_GL=egl"}, {"--set", "render.device=37"}, 1, "no EGL device 37 here (EGL devices 0:"},
+      {{"ROLLSPIN_GL=egl", "ROLLSPIN_EGL_DEVICE=/dev/dri/renderD199"}, {}, 1, "no EGL device /dev/dri/renderD199"},
+  };
+  for (const Case& c : cases) {
+    const auto r = renderSmall(out, c.env, c.extra);
+    EXPECT_EQ(r.exitCode, c.exitCode) << c.expect << ": " << r.err;
+    EXPECT_TRUE(has(r.err, c.expect)) << c.expect << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out)) << c.expect;
+  }
+}
+
+TEST(GlBackend, ASoftwareDeviceAskedForSaysSo) {
+  // Mesa lists its CPU rasteriser as an EGL device (index 0 where there is
+  // no GPU): asking for it renders, and --verbose says no GPU does the work.
+  const fs::path dir = test::freshTempDir("gl_software_device");
+  const auto r = renderSmall(dir / "a.png", {"ROLLSPIN_GL=auto", "ROLLSPIN_EGL_DEVICE=0"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(has(r.err, "gl: backend     egl (device)")) << r.err;
+  EXPECT_TRUE(has(r.err, "no GPU is doing the work")) << r.err;
+}
+
+TEST(GlBackend, EachFailureExitsOneWithTheReasonAndWhatToTry) {
+  const fs::path dir = test::freshTempDir("gl_failures");
+  const fs::path out = dir / "a.png";
+  struct Case {
+    std::vector<std::string> env;
+    std::vector<std::string> expect;
+  };
+  const std::vector<Case> cases{
+      // No EGL library.
+      {{"ROLLSPIN_GL=egl", kMissingEgl}, {"cannot load the EGL library", "libegl1", "or try ROLLSPIN_GL=osmesa"}},
+      // No OSMesa library.
+      {{"ROLLSPIN_GL=osmesa", kMissingOsMesa}, {"cannot load the OSMesa library", "libosmesa6", "ROLLSPIN_GL=egl"}},
+      // libEGL without a driver: glvnd read no vendor file.
+      {{"ROLLSPIN_GL=egl", "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent/vendor.json"},
+       {"libEGL found no EGL driver", "10_nvidia.json"}},
+      // eglInitialize failing (as in a container without the driver files).
+      {{"ROLLSPIN_GL=egl", "LIBGL_DRIVERS_PATH=/nonexistent"},
+       {"eglInitialize on the surfaceless platform failed: EGL_NOT_INITIALIZED", "ROLLSPIN_GL=osmesa"}},
+      // A driver without OpenGL 4.5 (Mesa capped at 3.3).
+      {{"ROLLSPIN_GL=egl", "MESA_GL_VERSION_OVERRIDE=3.3"}, {"eglCreateContext (OpenGL 4.5 core)", "EGL_BAD_MATCH"}},
+      // auto with nothing that works: every backend's reason.
+      {{"ROLLSPIN_GL=auto", kMissingOsMesa, kMissingEgl},
+       {"no GL backend could make an OpenGL 4.5 core context", "osmesa: cannot load", "egl: cannot load"}},
+  };
+  for (const Case& c : cases) {
+    const auto r = renderSmall(out, c.env);
+    EXPECT_EQ(r.exitCode, 1) << c.env.back() << ": " << r.err;
+    for (const auto& part : c.expect) EXPECT_TRUE(has(r.err, part)) << part << "\n" << r.err;
+    EXPECT_FALSE(fs::exists(out)) << c.env.back();
+  }
+}
+
+TEST(InfoCommand, PrintsTheBackendsAndTheContext) {
+  const auto r = test::runRollspin({"info", "--backend", "egl"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* part : {"osmesa: available", "egl: available", "backend     egl (surfaceless)", "GL_VENDOR",
+                           "GL_RENDERER", "GL_VERSION  4.5", "device      none"})
+    EXPECT_TRUE(has(r.out, part)) << part << "\n" << r.out;
+  // A backend that cannot be had: the survey first, then exit 1.
+  const auto missing = test::runRollspin({"info", "--backend", "egl"}, {}, 0, {kMissingEgl});
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_TRUE(has(missing.out, "egl: unavailable — cannot load the EGL library")) << missing.out;
+  const auto bad = test::runRollspin({"info", "--backend", "metal"});
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_TRUE(has(bad.err, "--backend: unknown GL backend \"metal\"")) << bad.err;
+}
+
+}  // namespace
+}  // namespace rollspin

@@ -16,15 +16,11 @@ extern "C" {
 #include "core/error.hpp"
 #include "media/sink_factory.hpp"
 
+#include "media/av_support.hpp"
+
 namespace rollspin::media {
 
 namespace {
-
-std::string avErrorText(int code) {
-  char text[AV_ERROR_MAX_STRING_SIZE] = {};
-  av_strerror(code, text, sizeof text);
-  return text;
-}
 
 VideoSettings gifVideoSettings(const GifSettings& s) {
   VideoSettings v;
@@ -72,7 +68,7 @@ struct GifWriter::Graphs {
   bool flushed = false;
 
   [[noreturn]] void fail(const std::string& what, int code) const {
-    throw runtimeError(SourceLoc{file.string()}, "{}: {}", what, avErrorText(code));
+    throw runtimeError(SourceLoc{file.string()}, "{}: {}", what, av::errorText(code));
   }
   void check(int code, const std::string& what) const {
     if (code < 0) fail(what, code);

@@ -18,6 +18,7 @@ extern "C" {
 #include <system_error>
 
 #include "core/error.hpp"
+#include "media/av_support.hpp"
 #include "media/container_tags.hpp"
 
 namespace rollspin::media {
@@ -25,12 +26,6 @@ namespace rollspin::media {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string avErrorText(int code) {
-  char text[AV_ERROR_MAX_STRING_SIZE] = {};
-  av_strerror(code, text, sizeof text);
-  return text;
-}
 
 std::string lowercase(std::string text) {
   for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -71,10 +66,10 @@ Input openPart(const fs::path& path, const SourceLoc& loc) {
   // "file:" keeps a colon in a file name from reading as a protocol.
   const std::string url = "file:" + path.string();
   if (const int ret = avformat_open_input(&raw, url.c_str(), nullptr, nullptr); ret < 0)
-    throw badInput(loc, "cannot open this part: {}", avErrorText(ret));
+    throw badInput(loc, "cannot open this part: {}", av::errorText(ret));
   Input input(raw);
   if (const int ret = avformat_find_stream_info(input.get(), nullptr); ret < 0)
-    throw badInput(loc, "cannot read this part's streams: {}", avErrorText(ret));
+    throw badInput(loc, "cannot read this part's streams: {}", av::errorText(ret));
   if (input->nb_streams != 1 || input->streams[0]->codecpar->codec_type != AVMEDIA_TYPE_VIDEO)
     throw badInput(loc, "expected one video stream (a part rendered by rollspin), found {} stream(s)",
                    input->nb_streams);
@@ -120,7 +115,7 @@ Part inspectPart(const fs::path& path) {
     if (t == AV_NOPTS_VALUE) throw badInput(part.loc(), "packet {} has no presentation timestamp", pts.size());
     pts.push_back(t);
   }
-  if (ret != AVERROR_EOF) throw badInput(part.loc(), "cannot read this part to its end: {}", avErrorText(ret));
+  if (ret != AVERROR_EOF) throw badInput(part.loc(), "cannot read this part to its end: {}", av::errorText(ret));
   part.packets = static_cast<long long>(pts.size());
   if (pts.empty()) throw badInput(part.loc(), "this part holds no frames");
   // A whole render puts frame k at k frame durations: the part's frames must
@@ -211,14 +206,6 @@ void expectContiguous(const std::vector<const Part*>& sorted) {
                    last.tags.lastFrame + 1, total - 1, total, last.range());
 }
 
-// A regular file (or a new name) gets temp + rename; an existing device or
-// pipe is written in place (as the video writer does).
-bool isDevice(const fs::path& p) {
-  std::error_code ec;
-  const auto status = fs::status(p, ec);
-  return !ec && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status);
-}
-
 // The output under construction: closed, freed and (unless committed)
 // removed on every way out.
 struct Output {
@@ -274,7 +261,7 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
   expectContiguous(sorted);
 
   Output out;
-  out.direct = isDevice(output);  // e.g. /dev/null: written in place, in the parts' container
+  out.direct = av::isDevice(output);  // e.g. /dev/null: written in place, in the parts' container
   if (!out.direct && lowercase(output.extension().string()) != ref.extension)
     throw badInput(outLoc, "the parts are '{}' files, so the joined clip must be one too (streams are copied, not "
                    "re-encoded)", ref.extension);
@@ -286,9 +273,9 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
   const std::string url = "file:" + out.writePath.string();
   const SourceLoc where{output.string()};
   auto check = [&](int ret, const std::string& what) {
-    if (ret < 0) throw runtimeError(where, "{}: {}", what, avErrorText(ret));
+    if (ret < 0) throw runtimeError(where, "{}: {}", what, av::errorText(ret));
     if (out.format != nullptr && out.format->pb != nullptr && out.format->pb->error < 0)
-      throw runtimeError(where, "{}: {}", what, avErrorText(out.format->pb->error));
+      throw runtimeError(where, "{}: {}", what, av::errorText(out.format->pb->error));
   };
   check(avformat_alloc_output_context2(&out.format, container, nullptr, url.c_str()), "creating the muxer");
   AVStream* stream = avformat_new_stream(out.format, nullptr);
@@ -309,7 +296,7 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
   if (const int ret = avio_open(&out.format->pb, url.c_str(), AVIO_FLAG_WRITE); ret < 0) {
     av_dict_free(&options);
     out.format->pb = nullptr;
-    throw runtimeError(where, "cannot create {}: {}", out.writePath.string(), avErrorText(ret));
+    throw runtimeError(where, "cannot create {}: {}", out.writePath.string(), av::errorText(ret));
   }
   out.opened = true;
   const int headerRet = avformat_write_header(out.format, &options);
@@ -353,7 +340,7 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
       ret = av_interleaved_write_frame(out.format, packet.get());  // takes the packet's reference
       check(ret, "writing " + out.writePath.string());
     }
-    if (ret != AVERROR_EOF) throw runtimeError(part->loc(), "cannot read this part again: {}", avErrorText(ret));
+    if (ret != AVERROR_EOF) throw runtimeError(part->loc(), "cannot read this part again: {}", av::errorText(ret));
   }
   check(av_write_trailer(out.format), "finishing " + out.writePath.string());
   avio_flush(out.format->pb);

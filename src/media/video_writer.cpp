@@ -18,27 +18,11 @@ extern "C" {
 
 #include "core/error.hpp"
 
+#include "media/av_support.hpp"
+
 namespace rollspin::media {
 
 namespace fs = std::filesystem;
-
-namespace {
-
-std::string avErrorText(int code) {
-  char text[AV_ERROR_MAX_STRING_SIZE] = {};
-  av_strerror(code, text, sizeof text);
-  return text;
-}
-
-// A regular file (or a new name) gets temp + rename; anything else that
-// already exists (a device such as /dev/full, a pipe) is written in place.
-bool isDevice(const fs::path& p) {
-  std::error_code ec;
-  const auto status = fs::status(p, ec);
-  return !ec && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status);
-}
-
-}  // namespace
 
 fs::path partialName(const fs::path& finalPath) {
   fs::path out = finalPath;
@@ -83,7 +67,7 @@ struct VideoWriter::Impl {
   }
 
   [[noreturn]] void fail(const std::string& what, int code) const {
-    throw runtimeError(SourceLoc{finalPath.string()}, "{}: {}", what, avErrorText(code));
+    throw runtimeError(SourceLoc{finalPath.string()}, "{}: {}", what, av::errorText(code));
   }
   void check(int code, const std::string& what) const {
     if (code < 0) fail(what, code);
@@ -138,7 +122,7 @@ VideoWriter::VideoWriter(fs::path finalPath, const VideoSettings& settings) : im
   m.pixelFormat = av_get_pix_fmt(settings.pixelFormat.c_str());
   if (m.pixelFormat == AV_PIX_FMT_NONE) throw runtimeError(where, "libavutil has no pixel format '{}'", settings.pixelFormat);
 
-  m.direct = isDevice(m.finalPath);
+  m.direct = av::isDevice(m.finalPath);
   m.writePath = m.finalPath;
   if (!m.direct) {
     // A temporary left by a run that died hard goes; ours goes on SIGINT/SIGTERM.

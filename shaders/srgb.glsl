@@ -1,7 +1,7 @@
 // Linear → sRGB to within 0.4 of a level: the linear toe, and above it a
 // three-square-root fit of 1.055 c^(1/2.4) − 0.055 (cheaper than pow on
 // llvmpipe, which pays for it on every pixel). Included by the fragment
-// shaders that write the final colour (#include "srgb").
+// shaders that write the final colour (an include line naming srgb).
 vec3 encodeSrgb(vec3 c) {
   c = clamp(c, 0.0, 1.0);
   vec3 s1 = sqrt(c), s2 = sqrt(s1), s3 = sqrt(s2);

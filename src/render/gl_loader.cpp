@@ -12,9 +12,14 @@
 #include "render/gl.hpp"
 #include "render/gl_backend.hpp"
 
-#define ROLLSPIN_GL_DEFINE(name) ::rollspin::render::gl_api::name##_type name = nullptr;
+// `name` expands to ::rollspin::render::gl_api::name (gl.hpp): the declarator
+// is parenthesised so that clang does not read `T ::ns::name` as `T::ns::name`.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wparentheses"  // g++ calls the needed parentheses unnecessary
+#define ROLLSPIN_GL_DEFINE(name) ::rollspin::render::gl_api::name##_type(name) = nullptr;
 ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DEFINE)
 #undef ROLLSPIN_GL_DEFINE
+#pragma GCC diagnostic pop
 
 namespace rollspin::render {
 

@@ -589,6 +589,9 @@ struct Renderer::Impl {
   // independent quads, drawn in the same order either way: the bytes of the
   // dirty pixels do not change.
   const std::vector<PixelRect>* lineClips = nullptr;
+  // The same rectangles for the translucent meshes (see drawRest).
+  const std::vector<PixelRect>* translucentClips = nullptr;
+  PixelRect translucentScissor;  // the view's scissor to restore after them
   static constexpr std::size_t kLineRun = 32;
 
   void drawPolyline(const PolylineItem& p, const glm::mat4& clipFromWorld, const View& v) {
@@ -762,9 +765,26 @@ struct Renderer::Impl {
     std::stable_sort(translucent.begin(), translucent.end(),
                      [&](const Drawable* a, const Drawable* b) { return depthOf(a) < depthOf(b); });
     for (GLenum plane = 0; plane < 5; ++plane) glEnable(GL_CLIP_DISTANCE0 + plane);
-    for (const Drawable* d : translucent) {
-      // Translucent layers (glass, the Bloch sphere) take no shadow.
-      drawMesh(*d, false, d->material->cull);
+    if (translucentClips == nullptr) {
+      for (const Drawable* d : translucent) {
+        // Translucent layers (glass, the Bloch sphere) take no shadow.
+        drawMesh(*d, false, d->material->cull);
+      }
+    } else if (!translucent.empty()) {
+      // Over a retained layer: the glass is shaded only inside the islands
+      // of dirty rectangles, each scissored alone (they are disjoint, so
+      // every pixel still gets the same layers in the same order), not over
+      // the whole bounds of the view's rectangles, which the Bloch sphere's
+      // arrows and trail spread across most of the sphere.
+      const PixelRect area{v.x, v.y, v.x + v.width, v.y + v.height};
+      for (const PixelRect& rect : *translucentClips) {
+        const PixelRect r = intersect(rect, area);
+        if (r.empty()) continue;
+        glScissor(r.x0, list.height - r.y1, r.x1 - r.x0, r.y1 - r.y0);
+        for (const Drawable* d : translucent) drawMesh(*d, false, d->material->cull);
+      }
+      glScissor(translucentScissor.x0, list.height - translucentScissor.y1, translucentScissor.x1 - translucentScissor.x0,
+                translucentScissor.y1 - translucentScissor.y0);
     }
     for (GLenum plane = 0; plane < 5; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);
     glDisable(GL_CULL_FACE);
@@ -1219,6 +1239,28 @@ struct Renderer::Impl {
     ++stats.layerBuilds;
   }
 
+  // The dirty rectangles inside `area` gathered into islands: boxes that
+  // hold every rectangle touching another, widened by the pixel a scissor
+  // needs beyond what is read back (see drawOverLayer), merged until no two
+  // boxes meet, so that the boxes are disjoint and each pixel drawn once.
+  static std::vector<PixelRect> separatedIslands(const std::vector<PixelRect>& rects, const PixelRect& area) {
+    std::vector<PixelRect> boxes;
+    for (const PixelRect& r : rects)
+      if (const PixelRect c = intersect(r, area); !c.empty())
+        boxes.push_back(intersect(PixelRect{c.x0 - 1, c.y0 - 1, c.x1 + 1, c.y1 + 1}, area));
+    for (bool merged = true; merged;) {
+      merged = false;
+      for (std::size_t a = 0; a < boxes.size() && !merged; ++a)
+        for (std::size_t b = a + 1; b < boxes.size() && !merged; ++b)
+          if (overlaps(boxes[a], boxes[b])) {
+            boxes[a] = unite(boxes[a], boxes[b]);
+            boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(b));
+            merged = true;
+          }
+    }
+    return boxes;
+  }
+
   // A frame over the retained layer: its image, with the dirty rectangles
   // redrawn from the snapshot on.
   void drawOverLayer(const DrawList& list, const std::vector<ViewItems>& perView, media::Image& image) {
@@ -1257,8 +1299,12 @@ struct Renderer::Impl {
       beginView(list, v, perView[i], &bounds);
       drawOpaque(perView[i], Items::DynamicOnly);
       lineClips = &rects;
+      const std::vector<PixelRect> islands = separatedIslands(rects, area);
+      translucentClips = &islands;
+      translucentScissor = bounds;
       drawRest(list, static_cast<int>(i), perView[i], Items::All);
       lineClips = nullptr;
+      translucentClips = nullptr;
     }
     for (const PixelRect& r : rects) allBounds = unite(allBounds, r);
     drawImageLabels(list, Items::All, allBounds);

@@ -589,9 +589,6 @@ struct Renderer::Impl {
   // independent quads, drawn in the same order either way: the bytes of the
   // dirty pixels do not change.
   const std::vector<PixelRect>* lineClips = nullptr;
-  // The same rectangles for the translucent meshes (see drawRest).
-  const std::vector<PixelRect>* translucentClips = nullptr;
-  PixelRect translucentScissor;  // the view's scissor to restore after them
   static constexpr std::size_t kLineRun = 32;
 
   void drawPolyline(const PolylineItem& p, const glm::mat4& clipFromWorld, const View& v) {
@@ -765,26 +762,9 @@ struct Renderer::Impl {
     std::stable_sort(translucent.begin(), translucent.end(),
                      [&](const Drawable* a, const Drawable* b) { return depthOf(a) < depthOf(b); });
     for (GLenum plane = 0; plane < 5; ++plane) glEnable(GL_CLIP_DISTANCE0 + plane);
-    if (translucentClips == nullptr) {
-      for (const Drawable* d : translucent) {
-        // Translucent layers (glass, the Bloch sphere) take no shadow.
-        drawMesh(*d, false, d->material->cull);
-      }
-    } else if (!translucent.empty()) {
-      // Over a retained layer: the glass is shaded only inside the islands
-      // of dirty rectangles, each scissored alone (they are disjoint, so
-      // every pixel still gets the same layers in the same order), not over
-      // the whole bounds of the view's rectangles, which the Bloch sphere's
-      // arrows and trail spread across most of the sphere.
-      const PixelRect area{v.x, v.y, v.x + v.width, v.y + v.height};
-      for (const PixelRect& rect : *translucentClips) {
-        const PixelRect r = intersect(rect, area);
-        if (r.empty()) continue;
-        glScissor(r.x0, list.height - r.y1, r.x1 - r.x0, r.y1 - r.y0);
-        for (const Drawable* d : translucent) drawMesh(*d, false, d->material->cull);
-      }
-      glScissor(translucentScissor.x0, list.height - translucentScissor.y1, translucentScissor.x1 - translucentScissor.x0,
-                translucentScissor.y1 - translucentScissor.y0);
+    for (const Drawable* d : translucent) {
+      // Translucent layers (glass, the Bloch sphere) take no shadow.
+      drawMesh(*d, false, d->material->cull);
     }
     for (GLenum plane = 0; plane < 5; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);
     glDisable(GL_CULL_FACE);
@@ -1279,32 +1259,32 @@ struct Renderer::Impl {
       glBlitFramebuffer(r.x0, y0, r.x1, y1, r.x0, y0, r.x1, y1, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT,
                         GL_NEAREST);
     }
-    // Then each view drawn once, scissored to the bounds of its dirty
-    // rectangles: the pixels in between are drawn over stale samples, but
-    // they are neither composited nor read back. The scissor reaches a
-    // pixel beyond them (inside the view): llvmpipe tests the scissor per
-    // sample, and a multisampled pixel on the scissor's edge seems to lose
-    // samples that a whole frame draws (seen: glass drawn scissor by
-    // scissor differed from a whole frame along the row where two met).
+    // Then each view drawn once per island of its dirty rectangles (see
+    // separatedIslands), scissored to the island's box: the pixels of a box
+    // outside the rectangles are drawn over stale samples, but they are
+    // neither composited nor read back, and the boxes are disjoint, so each
+    // pixel gets the same draws in the same order as in a whole frame. A box
+    // reaches a pixel beyond its rectangles (inside the view): llvmpipe tests
+    // the scissor per sample, and a multisampled pixel on the scissor's edge
+    // seems to lose samples that a whole frame draws (seen: glass drawn
+    // scissor by scissor differed from a whole frame along the row where two
+    // met).
     PixelRect allBounds{list.width, list.height, 0, 0};
+    std::vector<PixelRect> islandRects;
     for (std::size_t i = 0; i < list.views.size(); ++i) {
       const View& v = list.views[i];
       const PixelRect area{v.x, v.y, v.x + v.width, v.y + v.height};
-      PixelRect bounds{list.width, list.height, 0, 0};
-      for (const PixelRect& r : rects)
-        if (const PixelRect c = intersect(r, area); !c.empty()) bounds = unite(bounds, c);
-      if (bounds.empty()) continue;
-      bounds = intersect(PixelRect{bounds.x0 - 1, bounds.y0 - 1, bounds.x1 + 1, bounds.y1 + 1}, area);
-      allBounds = unite(allBounds, bounds);
-      beginView(list, v, perView[i], &bounds);
-      drawOpaque(perView[i], Items::DynamicOnly);
-      lineClips = &rects;
-      const std::vector<PixelRect> islands = separatedIslands(rects, area);
-      translucentClips = &islands;
-      translucentScissor = bounds;
-      drawRest(list, static_cast<int>(i), perView[i], Items::All);
-      lineClips = nullptr;
-      translucentClips = nullptr;
+      for (const PixelRect& island : separatedIslands(rects, area)) {
+        allBounds = unite(allBounds, island);
+        islandRects.clear();
+        for (const PixelRect& r : rects)
+          if (overlaps(r, island)) islandRects.push_back(intersect(r, island));
+        beginView(list, v, perView[i], &island);
+        drawOpaque(perView[i], Items::DynamicOnly);
+        lineClips = &islandRects;
+        drawRest(list, static_cast<int>(i), perView[i], Items::All);
+        lineClips = nullptr;
+      }
     }
     for (const PixelRect& r : rects) allBounds = unite(allBounds, r);
     drawImageLabels(list, Items::All, allBounds);

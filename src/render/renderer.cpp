@@ -1224,19 +1224,24 @@ struct Renderer::Impl {
   // needs beyond what is read back (see drawOverLayer), merged until no two
   // boxes meet, so that the boxes are disjoint and each pixel drawn once.
   static std::vector<PixelRect> separatedIslands(const std::vector<PixelRect>& rects, const PixelRect& area) {
+    // The boxes kept are pairwise disjoint: a new one absorbs every kept box
+    // it meets (growing, it may meet more) before it is kept. Each absorption
+    // removes a box, so hundreds of rectangles (a 4K trail) stay cheap.
     std::vector<PixelRect> boxes;
-    for (const PixelRect& r : rects)
-      if (const PixelRect c = intersect(r, area); !c.empty())
-        boxes.push_back(intersect(PixelRect{c.x0 - 1, c.y0 - 1, c.x1 + 1, c.y1 + 1}, area));
-    for (bool merged = true; merged;) {
-      merged = false;
-      for (std::size_t a = 0; a < boxes.size() && !merged; ++a)
-        for (std::size_t b = a + 1; b < boxes.size() && !merged; ++b)
-          if (overlaps(boxes[a], boxes[b])) {
-            boxes[a] = unite(boxes[a], boxes[b]);
-            boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(b));
-            merged = true;
-          }
+    for (const PixelRect& r : rects) {
+      const PixelRect c = intersect(r, area);
+      if (c.empty()) continue;
+      PixelRect box = intersect(PixelRect{c.x0 - 1, c.y0 - 1, c.x1 + 1, c.y1 + 1}, area);
+      for (std::size_t k = 0; k < boxes.size();) {
+        if (overlaps(boxes[k], box)) {
+          box = unite(box, boxes[k]);
+          boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(k));
+          k = 0;
+        } else {
+          ++k;
+        }
+      }
+      boxes.push_back(box);
     }
     return boxes;
   }

@@ -1219,6 +1219,33 @@ struct Renderer::Impl {
     ++stats.layerBuilds;
   }
 
+  // The dirty rectangles inside `area` gathered into islands: boxes that
+  // hold every rectangle touching another, widened by the pixel a scissor
+  // needs beyond what is read back (see drawOverLayer), merged until no two
+  // boxes meet, so that the boxes are disjoint and each pixel drawn once.
+  static std::vector<PixelRect> separatedIslands(const std::vector<PixelRect>& rects, const PixelRect& area) {
+    // The boxes kept are pairwise disjoint: a new one absorbs every kept box
+    // it meets (growing, it may meet more) before it is kept. Each absorption
+    // removes a box, so hundreds of rectangles (a 4K trail) stay cheap.
+    std::vector<PixelRect> boxes;
+    for (const PixelRect& r : rects) {
+      const PixelRect c = intersect(r, area);
+      if (c.empty()) continue;
+      PixelRect box = intersect(PixelRect{c.x0 - 1, c.y0 - 1, c.x1 + 1, c.y1 + 1}, area);
+      for (std::size_t k = 0; k < boxes.size();) {
+        if (overlaps(boxes[k], box)) {
+          box = unite(box, boxes[k]);
+          boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(k));
+          k = 0;
+        } else {
+          ++k;
+        }
+      }
+      boxes.push_back(box);
+    }
+    return boxes;
+  }
+
   // A frame over the retained layer: its image, with the dirty rectangles
   // redrawn from the snapshot on.
   void drawOverLayer(const DrawList& list, const std::vector<ViewItems>& perView, media::Image& image) {
@@ -1237,28 +1264,32 @@ struct Renderer::Impl {
       glBlitFramebuffer(r.x0, y0, r.x1, y1, r.x0, y0, r.x1, y1, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT,
                         GL_NEAREST);
     }
-    // Then each view drawn once, scissored to the bounds of its dirty
-    // rectangles: the pixels in between are drawn over stale samples, but
-    // they are neither composited nor read back. The scissor reaches a
-    // pixel beyond them (inside the view): llvmpipe tests the scissor per
-    // sample, and a multisampled pixel on the scissor's edge seems to lose
-    // samples that a whole frame draws (seen: glass drawn scissor by
-    // scissor differed from a whole frame along the row where two met).
+    // Then each view drawn once per island of its dirty rectangles (see
+    // separatedIslands), scissored to the island's box: the pixels of a box
+    // outside the rectangles are drawn over stale samples, but they are
+    // neither composited nor read back, and the boxes are disjoint, so each
+    // pixel gets the same draws in the same order as in a whole frame. A box
+    // reaches a pixel beyond its rectangles (inside the view): llvmpipe tests
+    // the scissor per sample, and a multisampled pixel on the scissor's edge
+    // seems to lose samples that a whole frame draws (seen: glass drawn
+    // scissor by scissor differed from a whole frame along the row where two
+    // met).
     PixelRect allBounds{list.width, list.height, 0, 0};
+    std::vector<PixelRect> islandRects;
     for (std::size_t i = 0; i < list.views.size(); ++i) {
       const View& v = list.views[i];
       const PixelRect area{v.x, v.y, v.x + v.width, v.y + v.height};
-      PixelRect bounds{list.width, list.height, 0, 0};
-      for (const PixelRect& r : rects)
-        if (const PixelRect c = intersect(r, area); !c.empty()) bounds = unite(bounds, c);
-      if (bounds.empty()) continue;
-      bounds = intersect(PixelRect{bounds.x0 - 1, bounds.y0 - 1, bounds.x1 + 1, bounds.y1 + 1}, area);
-      allBounds = unite(allBounds, bounds);
-      beginView(list, v, perView[i], &bounds);
-      drawOpaque(perView[i], Items::DynamicOnly);
-      lineClips = &rects;
-      drawRest(list, static_cast<int>(i), perView[i], Items::All);
-      lineClips = nullptr;
+      for (const PixelRect& island : separatedIslands(rects, area)) {
+        allBounds = unite(allBounds, island);
+        islandRects.clear();
+        for (const PixelRect& r : rects)
+          if (overlaps(r, island)) islandRects.push_back(intersect(r, island));
+        beginView(list, v, perView[i], &island);
+        drawOpaque(perView[i], Items::DynamicOnly);
+        lineClips = &islandRects;
+        drawRest(list, static_cast<int>(i), perView[i], Items::All);
+        lineClips = nullptr;
+      }
     }
     for (const PixelRect& r : rects) allBounds = unite(allBounds, r);
     drawImageLabels(list, Items::All, allBounds);

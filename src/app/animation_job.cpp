@@ -158,6 +158,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     Frame previous;
     double previousS = std::nan(""), poseS = std::nan("");
     std::size_t previousSegment = 0;
+    bool previousMoving = false;
     std::optional<FrameOrientations> pose;
     for (long long k = range.first; k <= range.last; ++k) {
       if (InterruptGuard::received() != 0) break;
@@ -173,7 +174,9 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
         continue;
       }
       const bool cameraMoving = story.segment > 0 && story.seconds < std::min(SceneDrawer::kCameraMove, story.duration);
-      if (!previous || s != previousS || story.segment != previousSegment || cameraMoving) {
+      // An image drawn mid-move shows the camera short of where it stops: the
+      // first frame after the move is drawn again, as a part starting there is.
+      if (!previous || s != previousS || story.segment != previousSegment || cameraMoving || previousMoving) {
         pose->story = story;
         const std::shared_ptr<media::Image> image = pool->acquire();
         renderer.render(drawer.draw(*pose), *image);
@@ -181,6 +184,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
         previousS = s;
         previousSegment = story.segment;
       }
+      previousMoving = cameraMoving;
       if (!deliver(previous)) break;
     }
     poseWait += poses.waitSeconds();

@@ -62,5 +62,18 @@ TEST(StoryboardVideo, FramesAcrossJoinsAreByteIdenticalAndCaptionsRerender) {
   EXPECT_EQ(frame(50), frame(51));
 }
 
+// A part that starts after the rest's camera move (frames 42 … 45) draws the
+// camera where the move stopped; the whole clip must too, not repeat its last
+// mid-move image over the held frames.
+TEST(StoryboardVideo, HeldFramesAfterACameraMoveMatchAPartStartingThere) {
+  const fs::path dir = test::freshTempDir("storyboard_after_move");
+  ASSERT_EQ(test::runRollspin(story({"render", "-o", (dir / "full").string()})).exitCode, 0);
+  const auto r = test::runRollspin(story({"render", "--frames", "46:48", "-o", (dir / "part").string()}));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (int k = 46; k <= 48; ++k)
+    EXPECT_TRUE(test::readFile(dir / "full" / frameName(k)) == test::readFile(dir / "part" / frameName(k)))
+        << frameName(k) << " differs between the full render and a part starting after the camera move";
+}
+
 }  // namespace
 }  // namespace rollspin

@@ -42,9 +42,12 @@ struct VideoWriter::Impl {
   AVPacket* packet = nullptr;
   SwsContext* sws = nullptr;
   long long framesWritten = 0;
-  bool fileOpen = false, done = false;
+  bool fileOpen = false, done = false, headerWritten = false;
 
   ~Impl() {
+    // Unfinished after its header: the trailer frees what the muxer still
+    // holds (queued packets); the file it completes is removed below.
+    if (!done && headerWritten && format != nullptr && format->pb != nullptr) av_write_trailer(format);
     release();
     if (!done && fileOpen && !direct) {
       std::error_code ec;
@@ -213,6 +216,7 @@ VideoWriter::VideoWriter(fs::path finalPath, const VideoSettings& settings) : im
   const int ret = avformat_write_header(m.format, &options);
   av_dict_free(&options);
   m.check(ret, "writing the " + settings.container + " header");
+  m.headerWritten = true;
   m.checkIo("writing the " + settings.container + " header");
 }
 

@@ -34,7 +34,9 @@ void* openGlLibrary(const char* overrideVariable, std::initializer_list<const ch
   }
   why.clear();
   for (const auto& name : candidates) {
-    if (void* handle = dlopen(name.c_str(), RTLD_NOW | RTLD_LOCAL)) return handle;
+    // RTLD_NODELETE: GL libraries stay mapped to the end of the process, so
+    // LeakSanitizer can still name them (tests/lsan.supp) after a dlclose.
+    if (void* handle = dlopen(name.c_str(), RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE)) return handle;
     const char* error = dlerror();
     why += (why.empty() ? "" : "; ") + std::string(error != nullptr ? error : name);
   }

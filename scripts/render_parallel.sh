@@ -75,6 +75,17 @@ else
   parts=("$stage/$stem".part-*-of-"$shards.$ext")
 fi
 
+# A shard whose job ended without its part (a remote host whose rollspin or
+# shell is missing can end a job with status 0) is named, not left for the
+# join to report as missing frames.
+missing=()
+for k in "${ks[@]}"; do
+  [ -f "${stage:-$out_dir}/$stem.part-$k-of-$shards.$ext" ] || missing+=("$k")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "render_parallel.sh: shard(s) ${missing[*]} of $shards wrote no part; see the messages above" >&2
+  exit 1
+fi
 "$rollspin" join "${parts[@]}" -o "$out"
 if [ "$keep" = 1 ]; then
   [ -z "$hosts" ] || mv "${parts[@]}" "$out_dir/"

@@ -6,8 +6,17 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
 cd build
-ctest --output-on-failure -j2
+# A failed pass is run again, failed tests only, so that their output is the
+# last thing printed (CI keeps only the tail of a log), and so that the log
+# tells a flaky test (passes the second time) from a broken one.
+pass() {
+  "$@" --output-on-failure -j2 && return 0
+  echo "test.sh: some tests failed; running those again for their output:" >&2
+  "$@" --rerun-failed --output-on-failure -j1 || true
+  return 1
+}
+pass ctest
 # The GL tests again on the EGL backend (surfaceless, llvmpipe here): auto
 # picks OSMesa on this machine, so without this pass EGL would only be
 # reached by the tests that force it (about 20 s more).
-ROLLSPIN_GL=egl ctest --output-on-failure -j2 -L gl
+ROLLSPIN_GL=egl pass ctest -L gl

@@ -23,7 +23,14 @@ export ROLLSPIN=$rollspin
 tiny=(--set render.width=160 --set render.height=90 --set animation.fps=30 --set animation.duration=0.6
       --set animation.hold=0.2)
 scene=$src/scenes/lollipop.toml
-fail() { echo "FAIL: $*" >&2; exit 1; }
+# A failure shows what the pretend hosts saw: who ran which shard, what went over SSH.
+fail() {
+  echo "FAIL: $*" >&2
+  for log in "$work/ran.log" "$work/fake-hosts/ssh.log"; do
+    [ -f "$log" ] && { echo "--- $log" >&2; cut -c1-200 "$log" | tail -n 20 >&2; }
+  done
+  exit 1
+}
 
 # A joined clip: 30 decoded frames, tagged as the whole clip, +faststart.
 check_clip() {

@@ -197,6 +197,13 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
   }
   extent_.centre = 0.5 * (lo + hi);
   extent_.radius = 0.5 * (hi - lo).norm();
+  // A curved surface can stand between the eye and the ball: the camera
+  // tests sight lines against it as drawn (a plane's board lies under the
+  // ball and hides nothing).
+  if (surfaceMesh_ && dynamic_cast<const geometry::Plane*>(model.surface.get()) == nullptr) {
+    const glm::vec4 cut = surfaceMaterial_.cutPlane;
+    extent_.surface = std::make_shared<SightLines>(*surfaceMesh_, Eigen::Vector4d(cut.x, cut.y, cut.z, cut.w));
+  }
 }
 
 void BallView::add(render::DrawList& list, const FrameOrientations& frame, int view) const {

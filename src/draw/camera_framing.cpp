@@ -136,82 +136,124 @@ OrbitAngles orbitAngles(const scene::SceneSpec& spec, const model::RollingModel&
 namespace {
 
 // The least share, over the path, of the ball's disc that the eye sees past
-// a sphere the ball rolls outside (rays to points spread over the disc).
-// eyeAt(s): the eye at arc length s.
+// the surface as drawn (or any share below `useless`, once it is clear the
+// least is that low). eyeAt(s): the eye at arc length s.
 template <typename EyeAt>
-double leastVisibleShare(const model::RollingModel& model, const geometry::Sphere& sphere, const EyeAt& eyeAt) {
-  const double R = model.ballRadius, r = sphere.radius();
+double leastVisibleShare(const model::RollingModel& model, const SightLines& surface, const EyeAt& eyeAt,
+                         double useless = 0.0) {
+  const double R = model.ballRadius;
   double least = 1.0;
-  for (int i = 0; i <= 48; ++i) {
+  for (int i = 0; i <= 48 && least >= useless && least > 0.0; ++i) {
     const double s = model.path->length() * i / 48.0;
-    const Vec3 eye = eyeAt(s);
-    const Vec3 c = model.path->at(s).centre(R);
-    const Vec3 view = (c - eye).normalized();
-    const Vec3 u = view.cross(std::abs(view.z()) < 0.9 ? Vec3::UnitZ() : Vec3::UnitX()).normalized(), v = view.cross(u);
-    int seen = 0, all = 0;
-    for (const double radius : {0.0, 0.45, 0.9})
-      for (int k = 0; k < (radius == 0.0 ? 1 : 12); ++k, ++all) {
-        const double phi = 2.0 * std::numbers::pi * k / 12.0;
-        // The ball's near surface over that point of its disc.
-        const Vec3 p = c + R * (radius * (std::cos(phi) * u + std::sin(phi) * v) -
-                                std::sqrt(1.0 - radius * radius) * view);
-        // Does the segment eye → p pass through the sphere |x| < r?
-        const Vec3 d = p - eye;
-        const double t = std::clamp(-eye.dot(d) / d.squaredNorm(), 0.0, 1.0);
-        if ((eye + t * d).norm() >= r * (1.0 - 1e-9) || t >= 1.0) ++seen;
-      }
-    least = std::min(least, double(seen) / all);
+    least = std::min(least, surface.visibleShare(eyeAt(s), model.path->at(s).centre(R), R));
   }
   return least;
 }
 
+// The share of the contact path the eye sees (points lifted a little off the
+// surface, so that the mesh's chords under them do not count).
+template <typename EyeAt>
+double visiblePathShare(const model::RollingModel& model, const SightLines& surface, const EyeAt& eyeAt) {
+  const double R = model.ballRadius;
+  int seen = 0;
+  for (int i = 0; i <= 96; ++i) {
+    const double s = model.path->length() * i / 96.0;
+    const geometry::DarbouxSample f = model.path->at(s);
+    if (!surface.blocked(eyeAt(s), f.point + 0.05 * R * f.normal, 0.05 * R)) ++seen;
+  }
+  return seen / 97.0;
+}
+
 }  // namespace
 
-CameraFraming::CameraFraming(const scene::SceneSpec& spec, const model::RollingModel& model, FrameExtent extent)
-    : spec_(spec), model_(model), extent_(std::move(extent)) {
-  OrbitAngles base = orbitAngles(spec, model);
-  // Outside a sphere the ball goes round the back: unless the scene sets
-  // the elevation, look down from as low as keeps ≥ 90 % of the ball's disc
-  // in sight along the whole path (else the best of those tried).
-  const auto* sphere = dynamic_cast<const geometry::Sphere*>(model.surface.get());
-  if (sphere && sphere->side() == geometry::Side::Outside && !spec.locations.contains("render.elevation_deg") &&
-      !(spec.render.target && spec.render.distance)) {
-    const double aspect = double(spec.render.width) / double(std::max<long long>(spec.render.height, 1));
-    // The ball's longitude about the sphere's axis at s.
+// The default camera keeps the ball in sight: where the scene leaves the
+// orbit angles free, try views round the given one (costlier the further
+// they turn) and keep the cheapest that sees ≥ 90 % of the ball's disc at
+// every place on the path, preferring one that also sees more of the path;
+// where no still view does (a path round the back of a sphere), one that
+// orbits with the ball's longitude. An inside sphere is cut open towards
+// the eye (BallView), so its view already sees in.
+OrbitAngles CameraFraming::unhiddenAngles(OrbitAngles base) {
+  const auto* sphere = dynamic_cast<const geometry::Sphere*>(model_.surface.get());
+  const bool cutOpen = sphere && sphere->side() == geometry::Side::Inside;
+  const bool azimuthFree = !spec_.locations.contains("render.azimuth_deg");
+  const bool elevationFree = !spec_.locations.contains("render.elevation_deg");
+  if (!extent_.surface || cutOpen || spec_.render.follow || (spec_.render.target && spec_.render.distance) ||
+      !(azimuthFree || elevationFree))
+    return base;
+  const double aspect = double(spec_.render.width) / double(std::max<long long>(spec_.render.height, 1));
+  const double R = model_.ballRadius;
+  auto stillEye = [&](const OrbitAngles& a) {
+    const auto [target, distance] = fitPoints(extent_.points, R, a, spec_.render.fovDeg, aspect);
+    return Vec3(target + spec_.render.distance.value_or(distance) * towardEye(a));
+  };
+
+  struct Candidate {
+    OrbitAngles angles;
+    double cost;
+  };
+  std::vector<Candidate> candidates;
+  const double below = base.elevation < 0.0 ? -1.0 : 1.0;  // a view from below stays below
+  for (const double turn : {0.0, 30.0, -30.0, 60.0, -60.0, 90.0, -90.0, 135.0, -135.0, 180.0}) {
+    if (turn != 0.0 && !azimuthFree) break;
+    for (const double degrees : {0.0, 35.0, 45.0, 55.0, 65.0, 75.0}) {
+      if (degrees != 0.0 && !elevationFree) break;
+      const double elevation = below * std::max(below * base.elevation, degrees * kDeg);
+      if (degrees != 0.0 && elevation == base.elevation) continue;
+      candidates.push_back({{base.azimuth + turn * kDeg, elevation},
+                            std::abs(turn) / 30.0 + std::abs(elevation - base.elevation) / kDeg / 10.0});
+    }
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Candidate& x, const Candidate& y) { return x.cost < y.cost; });
+  const Candidate* chosen = nullptr;
+  const Candidate* leastHidden = nullptr;
+  double chosenScore = -1e300, bestShare = -1.0;
+  for (const Candidate& c : candidates) {
+    const Vec3 eye = stillEye(c.angles);
+    auto eyeAt = [&](double) { return eye; };
+    const double share = leastVisibleShare(model_, *extent_.surface, eyeAt, std::min(0.9, bestShare));
+    if (share > bestShare + 1e-9) {
+      bestShare = share;
+      leastHidden = &c;
+    }
+    if (share < 0.9) continue;
+    const double score = visiblePathShare(model_, *extent_.surface, eyeAt) - 0.05 * c.cost;
+    if (score > chosenScore + 1e-9) {
+      chosenScore = score;
+      chosen = &c;
+    }
+  }
+  if (chosen) return chosen->angles;
+
+  if (azimuthFree && spec_.segments.empty()) {
+    // The ball's longitude about the z axis at s.
     auto longitude = [&](double s) {
-      const Vec3 p = model.path->at(s).point;
+      const Vec3 p = model_.path->at(s).point;
       return std::atan2(p.y(), p.x());
     };
     const double offset = base.azimuth - longitude(0.0);
-    double best = -1.0, bestElevation = base.elevation;
-    bool bestOrbits = false;
-    // First a still camera; where none sees the ball all along (a path round
-    // the back), one that orbits with the ball's longitude (when the scene
-    // leaves the azimuth free).
-    for (const bool orbits : {false, true}) {
-      if (orbits && (best >= 0.9 || spec.locations.contains("render.azimuth_deg") || !spec.segments.empty())) break;
-      for (const double degrees : {base.elevation / kDeg, 35.0, 45.0, 55.0, 65.0, 75.0}) {
-        const double elevation = std::max(base.elevation, degrees * kDeg);
-        auto eyeAt = [&](double s) {
-          const OrbitAngles a{orbits ? longitude(s) + offset : base.azimuth, elevation};
-          const auto [target, distance] = fitPoints(extent_.points, model.ballRadius, a, spec.render.fovDeg, aspect);
-          return Vec3(target + spec.render.distance.value_or(distance) * towardEye(a));
-        };
-        const double share = leastVisibleShare(model, *sphere, eyeAt);
-        if (share > best + 1e-9) {
-          best = share;
-          bestElevation = elevation;
-          bestOrbits = orbits;
-        }
-        if (share >= 0.9) break;
+    for (const double degrees : {0.0, 35.0, 45.0, 55.0, 65.0, 75.0}) {
+      if (degrees != 0.0 && !elevationFree) break;
+      const double elevation = below * std::max(below * base.elevation, degrees * kDeg);
+      auto eyeAt = [&](double s) { return stillEye({longitude(s) + offset, elevation}); };
+      const double share = leastVisibleShare(model_, *extent_.surface, eyeAt);
+      if (share > bestShare + 1e-9) {
+        orbitOffset_ = offset;
+        orbits_ = true;
+        bestShare = share;
+        base.elevation = elevation;
       }
+      if (share >= 0.9) return base;
     }
-    base.elevation = bestElevation;
-    if (bestOrbits) {
-      orbitOffset_ = offset;
-      orbits_ = true;
-    }
+    if (orbits_) return base;
   }
+  return leastHidden ? leastHidden->angles : base;
+}
+
+CameraFraming::CameraFraming(const scene::SceneSpec& spec, const model::RollingModel& model, FrameExtent extent)
+    : spec_(spec), model_(model), extent_(std::move(extent)) {
+  const OrbitAngles base = unhiddenAngles(orbitAngles(spec, model));
   Shot shot{base.azimuth, base.elevation, spec.render.fovDeg, std::nullopt, spec.render.distance, spec.render.follow};
   if (spec.render.target) shot.target = Vec3((*spec.render.target)[0], (*spec.render.target)[1], (*spec.render.target)[2]);
   for (const scene::SegmentSpec& seg : spec.segments) {

@@ -5,11 +5,13 @@
 // a camera. Plain geometry: no GL.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
 
 #include "draw/clip_layout.hpp"
+#include "draw/sight_lines.hpp"
 #include "geometry/surface.hpp"
 #include "model/rolling_model.hpp"
 #include "motion/frame_sampling.hpp"
@@ -58,11 +60,13 @@ std::pair<geometry::Vec3, double> fitPoints(const std::vector<geometry::Vec3>& p
                                             const OrbitAngles& a, double fovDeg, double aspect);
 
 // What the default camera keeps in view: sample points (each padded by the
-// ball's radius when framed) and the bounding sphere of all that moves.
+// ball's radius when framed) and the bounding sphere of all that moves; and
+// the drawn surface, which can hide the ball (none for a plane).
 struct FrameExtent {
   std::vector<geometry::Vec3> points;
   geometry::Vec3 centre = geometry::Vec3::Zero();  // shadow-map centre
   double radius = 1.0;
+  std::shared_ptr<const SightLines> surface;
 };
 
 class CameraFraming {
@@ -103,6 +107,9 @@ class CameraFraming {
     bool follow = false;
   };
   [[nodiscard]] Aim aimOf(const Shot& shot, int w, int h, double s) const;
+  // The scene's orbit angles, turned where the surface would hide the ball
+  // (may set orbits_).
+  OrbitAngles unhiddenAngles(OrbitAngles base);
 
   const scene::SceneSpec& spec_;
   const model::RollingModel& model_;

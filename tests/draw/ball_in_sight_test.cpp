@@ -1,0 +1,131 @@
+// The default camera keeps the ball: for every scene in scenes/ at 16:9 and
+// 9:16, at seven places along the clip, ≥ 90 % of each ball's disc is seen
+// past the surface and inside the frame. Measured from pictures, not from
+// the camera's own sight-line model: the frame's surface meshes are drawn
+// with the ball and without it (nothing else: no lines, text, shadow), and
+// the pixels whose centres lie in the ball's projected disc and that differ
+// between the two are the ball seen (label gl).
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "draw/scene_drawer.hpp"
+#include "model/rolling_model.hpp"
+#include "motion/frame_sampling.hpp"
+#include "motion/scene_facts.hpp"
+#include "render/gl_context.hpp"
+#include "render/renderer.hpp"
+#include "support/cli_runner.hpp"
+
+namespace rollspin::draw {
+namespace {
+using namespace rollspin::model;
+using namespace rollspin::motion;
+
+struct Disc {
+  glm::vec2 centre;  // view pixels, y down
+  float radius;
+};
+
+// The ball's outline on screen: the cone from the eye tangent to the ball
+// (its centre's projection is close enough to the ellipse's for a test at
+// this field of view; the radius is the cone's, measured on the image plane).
+Disc projectedDisc(const render::View& v, const render::MeshItem& ball) {
+  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+  const glm::vec4 c = clipFromWorld * glm::vec4(glm::vec3(ball.worldFromModel[3]), 1.0f);
+  const float R = glm::length(glm::vec3(ball.worldFromModel[0]));
+  const float radius = R * 0.5f * float(v.height) * v.camera.clipFromView[1][1] / std::sqrt(c.w * c.w - R * R);
+  return {{(c.x / c.w * 0.5f + 0.5f) * float(v.width), (0.5f - c.y / c.w * 0.5f) * float(v.height)}, radius};
+}
+
+class BallInSight : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    context_ = render::createContext().release();  // ROLLSPIN_GL chooses the backend
+    renderer_ = new render::Renderer(*context_, render::ShaderLibrary{});
+  }
+  static void TearDownTestSuite() {
+    delete renderer_;
+    delete context_;
+  }
+  static render::GlContext* context_;
+  static render::Renderer* renderer_;
+};
+render::GlContext* BallInSight::context_ = nullptr;
+render::Renderer* BallInSight::renderer_ = nullptr;
+
+TEST_F(BallInSight, EveryScenesDefaultCameraSeesNineTenthsOfTheBallAtEverySampledFrame) {
+  std::vector<std::filesystem::path> scenes;
+  for (const auto& e : std::filesystem::directory_iterator(test::sourceDir() / "scenes"))
+    if (e.path().extension() == ".toml") scenes.push_back(e.path());
+  std::sort(scenes.begin(), scenes.end());
+  ASSERT_GE(scenes.size(), 15u);
+  int checked = 0, hiddenSomewhere = 0;
+  for (const auto& file : scenes) {
+    for (const auto& [width, height] : {std::pair{480, 270}, std::pair{270, 480}}) {
+      const scene::SceneSpec spec = loadScene(
+          file.string(), {"render.width=" + std::to_string(width), "render.height=" + std::to_string(height)});
+      if (spec.render.layout == scene::RenderLayout::Twin) continue;  // no ball to see
+      const RollingModel model = buildSceneModel(spec);
+      const SceneDrawer drawer(spec, model, nullptr, makeSceneFacts(spec, model));
+      const double L = model.path->length();
+      for (int k = 0; k <= 6; ++k) {
+        const double s = L * k / 6.0;
+        FrameOrientations frame = solveFrame(spec, model, s);
+        frame.story = storyPlaceAt(model, s);
+        const render::DrawList list = drawer.draw(frame);
+        // The surface alone, and each ball with it.
+        render::DrawList surfaceOnly = list;
+        surfaceOnly.polylines.clear();
+        surfaceOnly.labels.clear();
+        surfaceOnly.arrows.clear();
+        surfaceOnly.meshes.clear();
+        for (render::View& v : surfaceOnly.views) v.light.shadow = false;
+        std::vector<const render::MeshItem*> balls;
+        for (const render::MeshItem& m : list.meshes) {
+          if (m.material.pattern == render::Pattern::Checker) surfaceOnly.meshes.push_back(m);
+          if (m.material.pattern == render::Pattern::Texture) balls.push_back(&m);
+        }
+        ASSERT_FALSE(balls.empty()) << file.stem();
+        const media::Image without = renderer_->render(surfaceOnly);
+        for (const render::MeshItem* ball : balls) {
+          render::DrawList withBall = surfaceOnly;
+          withBall.meshes.push_back(*ball);
+          const media::Image with = renderer_->render(withBall);
+          const render::View& v = list.views[std::size_t(ball->view)];
+          const Disc disc = projectedDisc(v, *ball);
+          int area = 0, seen = 0;
+          const int r = int(std::ceil(disc.radius)) + 1;
+          for (int y = int(disc.centre.y) - r; y <= int(disc.centre.y) + r; ++y)
+            for (int x = int(disc.centre.x) - r; x <= int(disc.centre.x) + r; ++x) {
+              if (glm::length(glm::vec2(float(x) + 0.5f, float(y) + 0.5f) - disc.centre) > disc.radius) continue;
+              ++area;
+              if (x < 0 || y < 0 || x >= v.width || y >= v.height) continue;  // outside the frame: not seen
+              const int px = v.x + x, py = v.y + y;
+              int difference = 0;
+              for (int c = 0; c < 3; ++c) difference += std::abs(int(with.pixel(px, py)[c]) - int(without.pixel(px, py)[c]));
+              if (difference > 6) ++seen;
+            }
+          ASSERT_GT(area, 20) << file.stem() << ": the ball is too small to measure";
+          const double share = double(seen) / area;
+          EXPECT_GE(share, 0.9) << file.stem() << " " << width << "x" << height << " at s = " << s << " of " << L
+                                << ": " << seen << " of " << area << " pixels of the ball's disc seen";
+          if (share < 0.9) ++hiddenSomewhere;
+          ++checked;
+        }
+      }
+    }
+  }
+  EXPECT_GE(checked, 14 * 2 * 7);
+  EXPECT_EQ(hiddenSomewhere, 0);
+}
+
+}  // namespace
+}  // namespace rollspin::draw

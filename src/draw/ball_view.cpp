@@ -406,6 +406,7 @@ std::vector<TextBlock> BallView::textBlocks(const FrameOrientations& frame, floa
   TextBlock& facts = blocks[0];
   facts.slots = {Slot::TopLeft, Slot::TopRight};
   facts.keep = 3;  // the heading and the first fact; later lines give way where there is no room
+  facts.givesWay = 0;  // before the running values
   facts.lines.push_back({frame.strobe.empty() ? "rolling ball" : fmt::format("rolling ball at {} positions", frame.strobe.size()),
                          text * 1.1f, true, kTextColor});
   if (facts_) {
@@ -417,13 +418,18 @@ std::vector<TextBlock> BallView::textBlocks(const FrameOrientations& frame, floa
   if (frame.strobe.empty()) {
     TextBlock& live = blocks[1];
     live.slots = {Slot::BottomLeft, Slot::BottomRight, Slot::TopLeft};
-    live.keep = 1;
     const spin::AngleAxis aa = spin::rotationAngleAxis(frame.current.q);
     const double psi = spin::spinorAngle(frame.current.q);
-    for (const std::string& line : {fmt::format("s = {:.2f} of {:.2f}", frame.current.s, model_.path->length()),
-                                    fmt::format("lab rotation angle = {:.1f}°", aa.angle / kDeg),
-                                    fmt::format("spinor angle ψ = {:.1f}°", psi / kDeg)})
-      live.lines.push_back({line, text, false, kTextColor});
+    std::vector<std::string> lines{fmt::format("s = {:.2f} of {:.2f}", frame.current.s, model_.path->length()),
+                                   fmt::format("lab rotation angle = {:.1f}°", aa.angle / kDeg),
+                                   fmt::format("spinor angle ψ = {:.1f}°", psi / kDeg)};
+    live.keep = 1;
+    if (compactText(int(spec_.render.width), int(spec_.render.height))) {
+      // Where room is short, the two angles (the story) stay; s gives way.
+      std::rotate(lines.begin(), lines.begin() + 1, lines.end());
+      live.keep = 2;
+    }
+    for (const std::string& line : lines) live.lines.push_back({line, text, false, kTextColor});
   }
   return blocks;
 }

@@ -147,17 +147,30 @@ bool sameWindow(const NdcWindow& a, const NdcWindow& b) {
 
 }  // namespace
 
-ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& given,
-                      const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow) {
+namespace {
+
+// One pass of layoutView with a given least window; `clear` says whether
+// every block found room (else the last failed one sits on its first slot).
+ViewLayout layOutBlocks(int w, int h, const std::vector<TextBlock>& given,
+                        const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow,
+                        double minWindow, bool& clear) {
   ViewLayout layout;
   std::vector<TextBlock> blocks = given;
   std::vector<glm::vec2> sizes;
   for (const TextBlock& b : blocks) sizes.push_back(blockSize(b));
   // No room even with the narrowest window: the failed block drops its last
   // line (down to what it keeps), from the widest window again.
-  auto dropLine = [&](std::size_t i) {
+  auto dropLine = [&](std::size_t failed) {
+    // The block that gives way first; among equals, the one that found no room.
+    std::size_t i = blocks.size();
+    for (std::size_t k = 0; k < blocks.size(); ++k) {
+      if (blocks[k].lines.empty() || blocks[k].lines.size() <= blocks[k].keep) continue;
+      if (i == blocks.size() || blocks[k].givesWay < blocks[i].givesWay ||
+          (blocks[k].givesWay == blocks[i].givesWay && k == failed))
+        i = k;
+    }
+    if (i == blocks.size()) return false;
     TextBlock& b = blocks[i];
-    if (b.lines.empty() || b.lines.size() <= b.keep) return false;
     const float step = kLineStep * b.lines.back().sizePx;
     b.lines.pop_back();
     sizes[i] = b.lines.empty() ? glm::vec2(0.0f) : glm::vec2(sizes[i].x, sizes[i].y - step);
@@ -207,6 +220,7 @@ ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& given,
         }
       }
     }
+    clear = failed < 0;
     if (failed < 0 || attempt >= 40) return finish();
     if (fixedWindow) {
       if (dropLine(std::size_t(failed))) continue;
@@ -251,7 +265,7 @@ ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& given,
       return win;
     };
     auto usable = [&](const NdcWindow& win) {
-      return !sameWindow(win, layout.window) && win.x1 - win.x0 >= 0.6 && win.y1 - win.y0 >= 0.6;
+      return !sameWindow(win, layout.window) && win.x1 - win.x0 >= minWindow && win.y1 - win.y0 >= minWindow;
     };
     // Which costs the subject less: its scale is limited by the window's
     // width over its projected width, or height over height.
@@ -261,15 +275,30 @@ ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& given,
     auto scaleLeft = [&](const NdcWindow& win) {
       return std::min((win.x1 - win.x0) * w / subjectAspect, (win.y1 - win.y0) * double(h));
     };
-    const bool columnFirst = !isCentre(slot) && scaleLeft(narrowed(true)) >= scaleLeft(narrowed(false));
+    const bool columnAllowed = !isCentre(slot) && !blocks[std::size_t(failed)].bandOnly;
+    const bool columnFirst = columnAllowed && scaleLeft(narrowed(true)) >= scaleLeft(narrowed(false));
     NdcWindow next = narrowed(columnFirst);
-    if (!usable(next) && !isCentre(slot)) next = narrowed(!columnFirst);
+    if (!usable(next) && columnAllowed) next = narrowed(!columnFirst);
     if (!usable(next)) {
       if (dropLine(std::size_t(failed))) continue;
       return finish();
     }
     layout.window = next;
   }
+}
+
+}  // namespace
+
+ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
+                      const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow,
+                      double minWindow) {
+  bool clear = false;
+  ViewLayout layout = layOutBlocks(w, h, blocks, occupancyFor, fixedWindow, minWindow, clear);
+  // Text over the subject is worse than a smaller subject: where even the
+  // lines that must stay find no room, allow the narrowest window.
+  constexpr double kNarrowest = 0.6;
+  if (!clear && minWindow > kNarrowest) layout = layOutBlocks(w, h, blocks, occupancyFor, fixedWindow, kNarrowest, clear);
+  return layout;
 }
 
 void addTextBlock(render::DrawList& list, const TextBlock& block, glm::vec2 origin, int view) {

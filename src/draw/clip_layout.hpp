@@ -66,6 +66,8 @@ struct TextBlock {
   bool centred = false;     // lines centred in the block (a caption)
   glm::vec2 minSize{0.0f};  // the size reserved for it over the whole clip
   std::size_t keep = 1000;  // lines that stay when there is no room for all (from the top)
+  int givesWay = 1;         // with no room, the lowest gives up a line first (a tie: the block that found none)
+  bool bandOnly = false;    // makes room as a band across the view, never a side column (a portrait frame)
 };
 
 // Advance width in pixels of `text` at `sizePx` in the label font.
@@ -84,9 +86,11 @@ struct ViewLayout {
 // Places `blocks` in a view w × h. occupancyFor(window) projects the clip
 // for a camera framed into that window; with fixedWindow (the scene sets
 // the camera itself) the window stays whole and a block with no free slot
-// takes its first slot.
+// takes its first slot. The window keeps at least minWindow of the view's
+// NDC extent (2) on each axis; past that, blocks give up lines instead.
 ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
-                      const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow);
+                      const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow,
+                      double minWindow = 0.6);
 
 // Draws a placed block into `view` (whose camera must be set: the plate is
 // a world-space quad just inside its near plane).

@@ -49,13 +49,19 @@ inline glm::mat4 rotationOf(const spin::Su2& q) {
 
 // Body text size (em) in pixels for an image `imageHeight` pixels high:
 // with the 1.4 em line step a body line takes 1/25.7 of the height (the
-// issue asks ≥ 1/28), the same look at 480p, 1080p and 4K; render.font_scale
-// multiplies it.
-// A portrait image sizes by 1.25 × its width instead (a 9:16 frame's height
-// would make lines wider than the frame).
+// lecture-hall rule asks ≥ 1/28), the same look at 480p, 1080p and 4K;
+// render.font_scale multiplies it. A portrait image keeps to the rule with
+// the least that meets it (a line 1/27.9 of the height): its width holds
+// ~40 characters at that size, and the narrow layout (compactText) prints
+// fewer, shorter lines.
 inline float bodyTextPx(int imageWidth, int imageHeight, double fontScale = 1.0) {
-  return std::max(11.0f, std::min(float(imageHeight), 1.25f * float(imageWidth)) / 36.0f * float(fontScale));
+  const float perLine = imageHeight > imageWidth ? 39.0f : 36.0f;
+  return std::max(11.0f, float(imageHeight) / perLine * float(fontScale));
 }
+
+// A portrait frame prints fewer, shorter lines: the running angles before
+// the arc length, the legend's two entries side by side on one line.
+inline bool compactText(int imageWidth, int imageHeight) { return imageHeight > imageWidth; }
 
 // A clear, shiny, shadowless sheet (Brockett's plate, the Bloch sphere).
 inline render::Material glassMaterial(const glm::vec3& tint, float opacity, float specular, float shininess) {

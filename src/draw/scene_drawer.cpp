@@ -88,7 +88,10 @@ float SceneDrawer::text() const { return bodyTextPx(int(spec_.render.width), int
 std::vector<TextBlock> SceneDrawer::ballBlocks(const FrameOrientations& frame, float viewWidth) const {
   std::vector<TextBlock> blocks = ball_->textBlocks(frame, text());
   blocks.push_back(captionBlock(captionAt(frame.story), text(), viewWidth));
-  for (TextBlock& b : blocks) fitWidth(b, 0.94f * viewWidth);
+  for (TextBlock& b : blocks) {
+    fitWidth(b, 0.94f * viewWidth);
+    b.bandOnly = compactText(int(spec_.render.width), int(spec_.render.height));  // a column leaves no subject
+  }
   return blocks;
 }
 
@@ -96,7 +99,10 @@ std::vector<TextBlock> SceneDrawer::twinBlocks(const FrameOrientations& frame, f
   std::vector<TextBlock> blocks = twin_->textBlocks(inset, text());
   if (spec_.render.layout == scene::RenderLayout::Twin)
     blocks.push_back(captionBlock(captionAt(frame.story), text(), viewWidth));
-  for (TextBlock& b : blocks) fitWidth(b, 0.94f * viewWidth);
+  for (TextBlock& b : blocks) {
+    fitWidth(b, 0.94f * viewWidth);
+    b.bandOnly = compactText(int(spec_.render.width), int(spec_.render.height));
+  }
   return blocks;
 }
 
@@ -109,6 +115,10 @@ const std::string& SceneDrawer::captionAt(const StoryPlace& story) const {
 // start and end, and each caption), then where it goes (clip_layout).
 void SceneDrawer::layOut(const RollingModel& model) {
   const Rects r = rects();
+  // A portrait frame's text is as tall as the rule asks (bodyTextPx) in a
+  // narrow view: rather than shrink the subject into a strip, the window
+  // keeps over half of each axis and text gives up its later lines.
+  const double minWindow = spec_.render.height > spec_.render.width ? 1.1 : 0.6;
   const double L = model.path->length();
   std::vector<FrameOrientations> samples(2);
   samples[1].current.s = L;
@@ -163,7 +173,7 @@ void SceneDrawer::layOut(const RollingModel& model) {
       }
       return occupancy;
     };
-    ballLayout_ = layoutView(r.ball.width, r.ball.height, blocks, occupancyFor, camera_->fixedByScene());
+    ballLayout_ = layoutView(r.ball.width, r.ball.height, blocks, occupancyFor, camera_->fixedByScene(), minWindow);
     camera_->setWindow(ballLayout_.window);
   }
   if (twin_) {
@@ -186,7 +196,7 @@ void SceneDrawer::layOut(const RollingModel& model) {
       twin_->markImportant(occupancy, scratch.views[0]);
       return occupancy;
     };
-    twinLayout_ = layoutView(r.twin.width, r.twin.height, blocks, occupancyFor, false);
+    twinLayout_ = layoutView(r.twin.width, r.twin.height, blocks, occupancyFor, false, minWindow);
     twin_->setWindow(twinLayout_.window);
   }
 }

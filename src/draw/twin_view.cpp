@@ -153,8 +153,20 @@ std::vector<TextBlock> TwinView::textBlocks(bool inset, float text) const {
   blocks[0].slots = {Slot::TopLeft, Slot::TopRight};
   blocks[0].lines.push_back({"Bloch sphere", text * 1.1f, true, kTextColor});
   blocks[0].keep = 0;  // where the sphere needs the room, the heading goes first
+  blocks[0].givesWay = 0;
   blocks[1].slots = {Slot::BottomLeft, Slot::BottomRight};
   blocks[1].keep = 1;
+  if (compactText(int(spec_.render.width), int(spec_.render.height))) {
+    // Narrow: the two entries share one band, one in each bottom corner.
+    blocks[1].slots = {Slot::BottomLeft};
+    blocks[1].lines.push_back({"● spin X(s)", text, false, glm::vec4(kMarkerColor, 1.0f)});
+    TextBlock field;
+    field.slots = {Slot::BottomRight};
+    field.keep = 1;
+    field.lines.push_back({"● field B/|B|", text, false, glm::vec4(kFieldColor, 1.0f)});
+    blocks.push_back(field);
+    return blocks;
+  }
   blocks[1].lines.push_back({"● spin  X(s) = Q(s) X(0)", text, false, glm::vec4(kMarkerColor, 1.0f)});
   blocks[1].lines.push_back({"● field  B/|B|", text, false, glm::vec4(kFieldColor, 1.0f)});
   return blocks;

@@ -182,5 +182,32 @@ TEST(ClipLayout, NoTextOverTheBallThePathOrTheTrailsAndNoneCutByTheFrame) {
   EXPECT_GE(checkedBalls, 300);  // one per frame at least (a strobe: more)
 }
 
+// Type for a lecture hall: at 16:9, 4:3, 1:1 and 9:16 the body text's line
+// (1.4 em) is at least 1/28 of the frame's height, and no screen line is
+// shrunk below 80 % of the body size to fit its view.
+TEST(ClipLayout, BodyLinesAreAtLeastOneTwentyEighthOfTheHeightAtEveryAspect) {
+  const Aspect aspects[] = {{1920, 1080, "16:9"}, {1440, 1080, "4:3"}, {1080, 1080, "1:1"}, {1080, 1920, "9:16"}};
+  for (const char* name : {"lollipop", "berry", "sphere-outside", "storyboard", "torus"}) {
+    const auto file = test::sourceDir() / "scenes" / (std::string(name) + ".toml");
+    for (const Aspect& a : aspects) {
+      const scene::SceneSpec spec = loadScene(
+          file.string(), {"render.width=" + std::to_string(a.width), "render.height=" + std::to_string(a.height)});
+      const RollingModel model = buildSceneModel(spec);
+      const SceneDrawer drawer(spec, model, nullptr, makeSceneFacts(spec, model));
+      FrameOrientations frame = solveFrame(spec, model, 0.5 * model.path->length());
+      frame.story = storyPlaceAt(model, frame.current.s);
+      const render::DrawList list = drawer.draw(frame);
+      std::vector<float> body;
+      for (const render::LabelItem& l : list.labels)
+        if (!l.worldAnchored && !l.bold && !l.text.empty()) body.push_back(l.sizePx);
+      ASSERT_GE(body.size(), 3u) << name << " " << a.name;
+      std::sort(body.begin(), body.end());
+      const float bodyPx = body[body.size() / 2];
+      EXPECT_GE(kLineStep * bodyPx, float(a.height) / 28.0f) << name << " " << a.name << ": body " << bodyPx << " px";
+      EXPECT_GE(body.front(), 0.8f * bodyPx) << name << " " << a.name << ": a line shrunk to " << body.front() << " px";
+    }
+  }
+}
+
 }  // namespace
 }  // namespace rollspin::draw

@@ -268,6 +268,35 @@ TEST_F(RendererTest, StraightPolylineHasUniformIntensityAt2400Px) {
   EXPECT_LE((hi - lo) / mean, 0.10) << "column sums from " << lo << " to " << hi;
 }
 
+// A segment that reaches between the eye and the near plane is drawn up to
+// where the near plane cuts it (here, past the view's right edge); one with
+// an end behind the eye is skipped whole.
+TEST_F(RendererTest, PolylineThroughTheNearPlaneDrawsItsVisiblePart) {
+  DrawList list;
+  list.width = 160;
+  list.height = 120;
+  const View v = cameraView(160, 120);  // eye at z = 5, near plane 0.1 in front of it
+  list.views = {v};
+  PolylineItem reaching;
+  reaching.points = {{-1.0f, 0.0f, 0.0f}, {0.3f, 0.0f, 4.95f}};  // 0.05 in front of the eye
+  reaching.color = {1, 1, 1, 1};
+  reaching.widthPx = 6.0f;
+  PolylineItem behind = reaching;
+  behind.points = {{-1.0f, 0.5f, 0.0f}, {0.3f, 0.5f, 6.0f}};
+  list.polylines = {reaching, behind};
+  const media::Image img = renderer_->render(list);
+  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+  auto pixelOf = [&](glm::vec3 world) {
+    const glm::vec4 c = clipFromWorld * glm::vec4(world, 1.0f);
+    return glm::ivec2(int((c.x / c.w * 0.5f + 0.5f) * float(v.width)), int((0.5f - c.y / c.w * 0.5f) * float(v.height)));
+  };
+  const glm::ivec2 start = pixelOf(reaching.points[0]);
+  for (int x = start.x + 4; x < v.width; ++x) EXPECT_EQ(img.pixel(x, start.y)[0], 255) << "x = " << x;
+  EXPECT_EQ(img.pixel(start.x - 6, start.y)[0], 0);  // beyond the round cap
+  const glm::ivec2 skipped = pixelOf(behind.points[0]);
+  for (int x = skipped.x - 4; x <= skipped.x + 4; ++x) EXPECT_EQ(img.pixel(x, skipped.y)[0], 0) << "x = " << x;
+}
+
 // A two-view frame whose static part (a shadowed checker floor, a glass
 // sphere, lines, labels) stays while a ball, its trail, an arrow and a live
 // label move: frame k of a short clip.

@@ -22,8 +22,8 @@ inline const glm::vec4 kPathColor{0.10f, 0.16f, 0.32f, 0.55f};
 inline const glm::vec4 kTravelledColor{0.95f, 0.33f, 0.02f, 1.0f};
 inline const glm::vec4 kTextColor{0.04f, 0.05f, 0.07f, 1.0f};
 
-// Lines are opaque: a polyline's segments overlap at the joints (each is
-// extended by half its width), and a translucent line blended twice there
+// Lines are opaque: a polyline's segments overlap at the joints (each is a
+// capsule, round at both ends), and a translucent line blended twice there
 // shows a darker bead at every joint. The colour is the translucent one
 // premixed over the light grey most lines cross.
 inline glm::vec4 opaqueLine(const glm::vec3& color, float alpha) {

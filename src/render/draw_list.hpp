@@ -86,7 +86,8 @@ struct ArrowItem {
   bool operator==(const ArrowItem&) const = default;
 };
 
-// A polyline of constant width in pixels (drawn as screen-space quads).
+// A polyline of constant width in pixels, each segment a screen-space capsule:
+// round joins and round caps (line.geom, line.frag).
 struct PolylineItem {
   std::vector<glm::vec3> points;
   glm::vec4 color{0.0f, 0.0f, 0.0f, 1.0f};

@@ -63,6 +63,8 @@
   X(glGenVertexArrays) \
   X(glGenerateMipmap) \
   X(glGetError) \
+  X(glGetIntegerv) \
+  X(glGetMultisamplefv) \
   X(glGetProgramInfoLog) \
   X(glGetProgramiv) \
   X(glGetShaderInfoLog) \
@@ -146,6 +148,8 @@ ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DECLARE)
 #define glGenVertexArrays ::rollspin::render::gl_api::glGenVertexArrays
 #define glGenerateMipmap ::rollspin::render::gl_api::glGenerateMipmap
 #define glGetError ::rollspin::render::gl_api::glGetError
+#define glGetIntegerv ::rollspin::render::gl_api::glGetIntegerv
+#define glGetMultisamplefv ::rollspin::render::gl_api::glGetMultisamplefv
 #define glGetProgramInfoLog ::rollspin::render::gl_api::glGetProgramInfoLog
 #define glGetProgramiv ::rollspin::render::gl_api::glGetProgramiv
 #define glGetShaderInfoLog ::rollspin::render::gl_api::glGetShaderInfoLog

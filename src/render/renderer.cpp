@@ -5,6 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstring>
 #include <map>
@@ -89,6 +90,7 @@ class Program {
   void set(const char* n, float v) { glUniform1f(at(n), v); }
   void set(const char* n, int v) { glUniform1i(at(n), v); }
   void set(const char* n, unsigned v) { glUniform1ui(at(n), v); }
+  void set(const char* n, const glm::vec2* v, int count) { glUniform2fv(at(n), count, glm::value_ptr(*v)); }
   void release() {
     if (id_ != 0) glDeleteProgram(id_);
     id_ = 0;
@@ -215,6 +217,12 @@ struct Renderer::Impl {
   GLuint scenePacked = 0;  // sceneColor viewed as R32UI: one packed RGBA8 word per sample
   GLuint outputFbo = 0, outputColor = 0;
   int fbWidth = 0, fbHeight = 0, fbSamples = 0;
+  // Where sceneFbo's samples lie in a pixel (from its lower-left corner), as
+  // the implementation reports them: line.frag tests each against a line's
+  // capsule. llvmpipe, for one, runs 2 samples as 4.
+  static constexpr int kMaxLineSamples = 16;
+  int sceneSampleCount = 1;
+  std::array<glm::vec2, kMaxLineSamples> sceneSamplePositions{};
 
   struct CachedMesh {
     std::shared_ptr<const MeshData> keepAlive;
@@ -324,6 +332,7 @@ struct Renderer::Impl {
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, colorTarget, sceneColor, 0);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, sceneDepth);
     checkComplete();
+    querySamplePositions();
     glGenRenderbuffers(1, &outputColor);
     glBindRenderbuffer(GL_RENDERBUFFER, outputColor);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_R32UI, w, h);  // packed RGBA8, as the composite writes it
@@ -334,6 +343,20 @@ struct Renderer::Impl {
     fbWidth = w;
     fbHeight = h;
     fbSamples = samples;
+  }
+
+  // Reads the bound scene framebuffer's sample count and positions; a
+  // single-sampled one has GL_SAMPLES = 0 and samples at the pixel centre.
+  void querySamplePositions() {
+    GLint count = 0;
+    glGetIntegerv(GL_SAMPLES, &count);
+    if (count > kMaxLineSamples)
+      throw runtimeError({}, "OpenGL made a framebuffer with {} samples; lines handle at most {}", count,
+                         kMaxLineSamples);
+    sceneSampleCount = std::max(1, static_cast<int>(count));
+    sceneSamplePositions.fill(glm::vec2(0.5f));
+    for (int i = 0; i < count; ++i)
+      glGetMultisamplefv(GL_SAMPLE_POSITION, static_cast<GLuint>(i), glm::value_ptr(sceneSamplePositions[i]));
   }
 
   const GpuMesh& gpuMesh(const std::shared_ptr<const MeshData>& m) {
@@ -595,7 +618,10 @@ struct Renderer::Impl {
     if (p.points.size() < 2) return;
     line.use();
     line.set("clipFromWorld", clipFromWorld);
+    line.set("viewportOrigin", glm::vec2(v.x, fbHeight - v.y - v.height));  // GL counts rows from the bottom
     line.set("viewportSize", glm::vec2(v.width, v.height));
+    line.set("sampleCount", sceneSampleCount);
+    line.set("samplePositions", sceneSamplePositions.data(), kMaxLineSamples);
     line.set("widthPx", p.widthPx);
     line.set("depthBias", p.depthTested ? 0.0008f : 0.0f);
     line.set("lineColor", p.color);
@@ -607,7 +633,7 @@ struct Renderer::Impl {
       glDrawArrays(GL_LINE_STRIP, 0, static_cast<GLsizei>(p.points.size()));
       return;
     }
-    // The geometry shader widens a segment by at most √2 · width / 2.
+    // A segment draws only within half a width of its ends' span (a capsule).
     const float margin = 0.7072f * p.widthPx + 2.0f;
     std::size_t runStart = 0, runEnd = 0;  // points [runStart, runEnd] pending as one strip
     auto flush = [&] {
@@ -1069,8 +1095,8 @@ struct Renderer::Impl {
       }
       for (const PolylineItem& p : list.polylines) {
         if (p.view != index || !p.dynamic) continue;
-        // The geometry shader widens a segment by half a width to the side
-        // and at both ends: at most √2 · width / 2 from its end points. A
+        // A segment draws the pixels within half a width of it (a capsule,
+        // line.geom/line.frag), inside this margin around its end points. A
         // segment with an end behind the eye is not drawn (line.geom).
         const float margin = 0.7072f * p.widthPx + 2.0f;
         for (std::size_t k = 0; k + 1 < p.points.size(); ++k) {

@@ -4,7 +4,9 @@
 // advances) lies inside its view and clear of the ball's disc, the contact
 // path and the trails, all projected from the DrawList itself, and not
 // under an inset view. And the default camera keeps the ball's disc inside
-// the frame and, outside a sphere, ≥ 90 % of it in sight.
+// the frame and, outside a sphere, ≥ 90 % of it in sight by rays against the
+// exact sphere (every surface kind is measured from pixels in
+// ball_in_sight_test).
 #include <gtest/gtest.h>
 
 #include <glm/glm.hpp>

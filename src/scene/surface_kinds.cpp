@@ -8,15 +8,20 @@
 namespace rollspin::scene {
 
 namespace {
+SurfaceKindRow kindRow(std::string_view name, std::vector<std::string> keys, bool ofRevolution, bool heightField,
+                       PathKind defaultPath) {
+  return {SurfaceKind{name}, name, std::move(keys), ofRevolution, heightField, defaultPath};
+}
+
 const std::vector<SurfaceKindRow>& table() {
   static const std::vector<SurfaceKindRow> rows{
-      {SurfaceKind::Plane, "plane", {"normal"}, false, false, PathKind::Circle},
-      {SurfaceKind::Sphere, "sphere", {"radius", "side"}, true, false, PathKind::Parallel},
-      {SurfaceKind::Cylinder, "cylinder", {"radius", "side", "axis"}, true, false, PathKind::Parallel},
-      {SurfaceKind::Torus, "torus", {"side", "major_radius", "minor_radius"}, true, false, PathKind::Parallel},
-      {SurfaceKind::Paraboloid, "paraboloid", {"side", "a", "b"}, true, true, PathKind::Parallel},
-      {SurfaceKind::Saddle, "saddle", {"side", "a", "b"}, false, true, PathKind::Meridian},
-      {SurfaceKind::Height, "height", {"side", "z"}, false, true, PathKind::Meridian},
+      kindRow("plane", {"normal"}, false, false, PathKind::Circle),
+      kindRow("sphere", {"radius", "side"}, true, false, PathKind::Parallel),
+      kindRow("cylinder", {"radius", "side", "axis"}, true, false, PathKind::Parallel),
+      kindRow("torus", {"side", "major_radius", "minor_radius"}, true, false, PathKind::Parallel),
+      kindRow("paraboloid", {"side", "a", "b"}, true, true, PathKind::Parallel),
+      kindRow("saddle", {"side", "a", "b"}, false, true, PathKind::Meridian),
+      kindRow("height", {"side", "z"}, false, true, PathKind::Meridian),
   };
   return rows;
 }

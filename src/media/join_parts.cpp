@@ -18,6 +18,7 @@ extern "C" {
 #include <system_error>
 
 #include "core/error.hpp"
+#include "core/text.hpp"
 #include "media/av_support.hpp"
 #include "media/container_tags.hpp"
 
@@ -26,11 +27,6 @@ namespace rollspin::media {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string lowercase(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
 
 struct InputCloser {
   void operator()(AVFormatContext* c) const { avformat_close_input(&c); }
@@ -80,7 +76,7 @@ std::map<std::string, std::string> metadataOf(const AVFormatContext& input) {
   std::map<std::string, std::string> out;
   const AVDictionaryEntry* e = nullptr;
   // Matroska (WebM) stores tag names in upper case.
-  while ((e = av_dict_get(input.metadata, "", e, AV_DICT_IGNORE_SUFFIX)) != nullptr) out[lowercase(e->key)] = e->value;
+  while ((e = av_dict_get(input.metadata, "", e, AV_DICT_IGNORE_SUFFIX)) != nullptr) out[asciiLowercase(e->key)] = e->value;
   return out;
 }
 
@@ -89,7 +85,7 @@ Part inspectPart(const fs::path& path) {
   Part part;
   part.path = path;
   part.name = path.string();
-  part.extension = lowercase(path.extension().string());
+  part.extension = asciiLowercase(path.extension().string());
   const Input input = openPart(path, part.loc());
   std::string why;
   const auto tags = parseContainerTags(metadataOf(*input), &why);
@@ -262,7 +258,7 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
 
   Output out;
   out.direct = av::isDevice(output);  // e.g. /dev/null: written in place, in the parts' container
-  if (!out.direct && lowercase(output.extension().string()) != ref.extension)
+  if (!out.direct && asciiLowercase(output.extension().string()) != ref.extension)
     throw badInput(outLoc, "the parts are '{}' files, so the joined clip must be one too (streams are copied, not "
                    "re-encoded)", ref.extension);
   const AVOutputFormat* container = av_guess_format(nullptr, ("clip" + ref.extension).c_str(), nullptr);

@@ -5,16 +5,13 @@
 #include <cctype>
 #include <system_error>
 
+#include "core/text.hpp"
+
 namespace rollspin::media {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string lowercase(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
 
 std::string quoted(std::string_view name) { return fmt::format("\"{}\"", name); }
 
@@ -70,7 +67,7 @@ std::string describeFormats(OutputUse use) {
 
 const OutputFormat& chooseFormat(const std::optional<std::string>& requested, const SourceLoc& requestedAt,
                                  const fs::path& output, OutputUse use) {
-  const std::string ext = lowercase(output.extension().string());
+  const std::string ext = asciiLowercase(output.extension().string());
   const SourceLoc outputAt{"-o " + output.string()};
   std::error_code ec;  // a path through a file is simply not a folder
   const bool isDirectory = !output.empty() && fs::is_directory(output, ec);

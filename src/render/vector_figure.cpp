@@ -15,6 +15,7 @@
 #include <memory>
 
 #include "core/atomic_file.hpp"
+#include "core/text.hpp"
 #include "render/font_atlas.hpp"
 
 namespace rollspin::render {
@@ -84,13 +85,9 @@ FcPattern* matchFont(const std::string& family, bool bold) {
 }
 
 bool sameFamily(FcPattern* match, const std::string& family) {
-  auto lower = [](std::string s) {
-    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-  };
   FcChar8* name = nullptr;
   for (int i = 0; FcPatternGetString(match, FC_FAMILY, i, &name) == FcResultMatch; ++i)
-    if (lower(reinterpret_cast<const char*>(name)) == lower(family)) return true;
+    if (asciiLowercase(reinterpret_cast<const char*>(name)) == asciiLowercase(family)) return true;
   return false;
 }
 

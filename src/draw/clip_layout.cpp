@@ -158,8 +158,9 @@ ViewLayout layOutBlocks(int w, int h, const std::vector<TextBlock>& given,
   std::vector<TextBlock> blocks = given;
   std::vector<glm::vec2> sizes;
   for (const TextBlock& b : blocks) sizes.push_back(blockSize(b));
-  // No room even with the narrowest window: the failed block drops its last
-  // line (down to what it keeps), from the widest window again.
+  // No room even with the narrowest window: a block drops its last line
+  // (down to what it keeps; the lowest givesWay first, among equals the one
+  // that failed), and the layout starts again from the widest window.
   auto dropLine = [&](std::size_t failed) {
     // The block that gives way first; among equals, the one that found no room.
     std::size_t i = blocks.size();

@@ -118,7 +118,7 @@ void SceneDrawer::layOut(const RollingModel& model) {
   // A portrait frame's text is as tall as the rule asks (bodyTextPx) in a
   // narrow view: rather than shrink the subject into a strip, the window
   // keeps over half of each axis and text gives up its later lines.
-  const double minWindow = spec_.render.height > spec_.render.width ? 1.1 : 0.6;
+  const double minWindow = compactText(int(spec_.render.width), int(spec_.render.height)) ? 1.1 : 0.6;
   const double L = model.path->length();
   std::vector<FrameOrientations> samples(2);
   samples[1].current.s = L;

@@ -150,7 +150,20 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
       u1 = std::min(u1 + 3.0 * R / speedU, domain.uMax - eps);
       v0 = std::max(v0 - 3.0 * R / speedV, domain.vMin + eps);
       v1 = std::min(v1 + 3.0 * R / speedV, domain.vMax - eps);
-      const auto cellsU = float((u1 - u0) * speedU / R), cellsV = float((v1 - v0) * speedV / R);
+      auto cellsU = float((u1 - u0) * speedU / R), cellsV = float((v1 - v0) * speedV / R);
+      // An angle padded past one turn would mesh the surface twice over
+      // (two coincident sheets z-fight): keep one turn about the box's
+      // middle, with a whole even number of checker cells so the pattern
+      // closes across the seam.
+      auto oneTurn = [](double period, double& lo, double& hi, float& cells) {
+        if (period <= 0.0 || hi - lo < period) return;
+        const double mid = 0.5 * (lo + hi);
+        cells = std::max(2.0f, 2.0f * std::round(0.5f * cells * float(period / (hi - lo))));
+        lo = mid - 0.5 * period;
+        hi = mid + 0.5 * period;
+      };
+      oneTurn(domain.uPeriod, u0, u1, cellsU);
+      oneTurn(domain.vPeriod, v0, v1, cellsV);
       surfaceMesh_ = render::parametricPatch(
           [&](float a, float b, glm::vec3& p, glm::vec3& nn) {
             const geometry::Vec2 uv(u0 + (u1 - u0) * a, v0 + (v1 - v0) * b);

@@ -28,10 +28,13 @@ struct SurfaceJet {
 };
 
 // The parameter rectangle (bounds may be infinite; open at finite bounds,
-// where the parametrisation degenerates, e.g. a sphere's poles).
+// where the parametrisation degenerates, e.g. a sphere's poles). A period
+// > 0 says the coordinate is an angle: x(u + uPeriod, v) = x(u, v), so a box
+// wider than one period covers the surface twice.
 struct ParameterDomain {
   double uMin = -std::numeric_limits<double>::infinity(), uMax = std::numeric_limits<double>::infinity();
   double vMin = -std::numeric_limits<double>::infinity(), vMax = std::numeric_limits<double>::infinity();
+  double uPeriod = 0.0, vPeriod = 0.0;
   [[nodiscard]] bool contains(const Vec2& uv) const {
     return uv.x() > uMin && uv.x() < uMax && uv.y() > vMin && uv.y() < vMax;
   }

@@ -59,6 +59,13 @@ std::optional<Vec2> Cylinder::parametersOf(const Vec3& point) const {
   return Vec2(std::atan2(b, a), point.dot(axis_));
 }
 
+// φ is an angle: the chart repeats every 2π around the axis.
+ParameterDomain Cylinder::domain() const {
+  ParameterDomain d;
+  d.uPeriod = 2.0 * std::numbers::pi;
+  return d;
+}
+
 Vec3 Cylinder::normalAt(const Vec3& point) const {
   const Vec3 radial = point - point.dot(axis_) * axis_;
   return orientation() * radial.normalized();
@@ -93,6 +100,13 @@ std::optional<Vec2> Torus::parametersOf(const Vec3& point) const {
   const double rho = std::hypot(point.x(), point.y());
   if (rho == 0.0) return std::nullopt;
   return Vec2(std::atan2(point.y(), point.x()), std::atan2(point.z(), rho - major_));
+}
+
+// φ and ψ are both angles.
+ParameterDomain Torus::domain() const {
+  ParameterDomain d;
+  d.uPeriod = d.vPeriod = 2.0 * std::numbers::pi;
+  return d;
 }
 
 Vec3 Torus::normalAt(const Vec3& point) const {

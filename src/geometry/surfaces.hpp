@@ -29,6 +29,7 @@ class Cylinder final : public Surface {
   [[nodiscard]] double orientation() const override { return side_ == Side::Outside ? 1.0 : -1.0; }
   [[nodiscard]] std::optional<Vec2> parametersOf(const Vec3& point) const override;
   [[nodiscard]] std::string parameterNames() const override;
+  [[nodiscard]] ParameterDomain domain() const override;
   [[nodiscard]] double radius() const { return radius_; }
   [[nodiscard]] Side side() const { return side_; }
 
@@ -48,6 +49,7 @@ class Torus final : public Surface {
   [[nodiscard]] double orientation() const override { return side_ == Side::Outside ? 1.0 : -1.0; }
   [[nodiscard]] std::optional<Vec2> parametersOf(const Vec3& point) const override;
   [[nodiscard]] std::string parameterNames() const override;
+  [[nodiscard]] ParameterDomain domain() const override;
   [[nodiscard]] double majorRadius() const { return major_; }
   [[nodiscard]] double minorRadius() const { return minor_; }
 

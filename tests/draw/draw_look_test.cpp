@@ -1,12 +1,15 @@
 // What the ball view shows, checked on the DrawList (no GL): Brockett's
 // glass plate stays in frame wherever it moves, the positions of a strobe
-// figure stand apart on screen, and a wall is lit from above so that the
+// figure stand apart on screen, a surface whose chart is an angle is meshed
+// once round (not twice over, which z-fights), and a wall is lit from above so that the
 // ball's shadow falls below the ball instead of straight behind it.
 #include <gtest/gtest.h>
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -93,6 +96,45 @@ TEST(BallView, StrobePositionsStandApartOnScreen) {
     for (std::size_t j = i + 1; j < balls.size(); ++j)
       EXPECT_GE(glm::length(balls[i].centre - balls[j].centre), 0.95f * (balls[i].radius + balls[j].radius))
           << "balls " << i << " and " << j;
+}
+
+// The surface mesh of a cylinder or torus (coordinates that are angles) may
+// go once round, but not further: a second sheet on the first z-fights in
+// stripes. Its area (flat triangles: a little under the surface's) can then
+// not exceed one turn's: 2πa·(height) for a cylinder about z, 4π²Aa for a
+// torus.
+template <class OneTurnArea>
+void expectSurfaceMeshedOnce(const std::string& scene, OneTurnArea oneTurnArea) {
+  const Loaded l = load(scene);
+  const SceneDrawer drawer(l.spec, l.model, nullptr);
+  const render::DrawList list = drawer.draw(solveFrame(l.spec, l.model, 0.5 * l.model.path->length()));
+  const render::MeshData* surface = nullptr;
+  for (const render::MeshItem& m : list.meshes)
+    if (m.view == 0 && !m.dynamic && m.material.lit && m.material.opacity >= 1.0f &&
+        (surface == nullptr || m.mesh->vertices.size() > surface->vertices.size()))
+      surface = m.mesh.get();
+  ASSERT_NE(surface, nullptr) << scene;
+  double area = 0.0;
+  for (std::size_t t = 0; t + 2 < surface->indices.size(); t += 3) {
+    const glm::dvec3 a(surface->vertices[surface->indices[t]].position);
+    const glm::dvec3 b(surface->vertices[surface->indices[t + 1]].position);
+    const glm::dvec3 c(surface->vertices[surface->indices[t + 2]].position);
+    area += 0.5 * glm::length(glm::cross(b - a, c - a));
+  }
+  const double bound = oneTurnArea(*surface);
+  EXPECT_LE(area, bound * (1.0 + 1e-6)) << scene << ": the mesh covers " << area / bound << " turns";
+  EXPECT_GT(area, 0.3 * bound) << scene;  // the whole path's band, not a sliver
+}
+
+TEST(BallView, AnglesAreMeshedOnceRound) {
+  expectSurfaceMeshedOnce("scenes/cylinder-helix.toml", [](const render::MeshData& m) {
+    float z0 = 1e30f, z1 = -1e30f;
+    for (const render::Vertex& v : m.vertices) z0 = std::min(z0, v.position.z), z1 = std::max(z1, v.position.z);
+    return 2.0 * std::numbers::pi * 2.0 * double(z1 - z0);  // radius a = 2, axis z
+  });
+  expectSurfaceMeshedOnce("scenes/torus.toml", [](const render::MeshData&) {
+    return 4.0 * std::numbers::pi * std::numbers::pi * 4.0 * 1.5;  // A = 4, a = 1.5
+  });
 }
 
 TEST(BallView, OnAWallTheShadowFallsBelowTheBall) {

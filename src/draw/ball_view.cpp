@@ -51,6 +51,7 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
 
   // Small triangles are costly on llvmpipe (each shades whole 4×4 blocks):
   // 64 segments keep the silhouette within 0.2 px of a circle up to 1440p.
+  trailGridCount_ = motion::trailGrid(spec, model).count;
   sphereMesh_ = spec.render.height > 1440 ? render::uvSphere(96, 48) : render::uvSphere(64, 32);
   // Surfaces receive the ball's shadow but cast none: a surface shadowing
   // itself only adds acne, and where the ball's shadow would pass through a
@@ -240,15 +241,15 @@ void BallView::add(render::DrawList& list, const FrameOrientations& frame, int v
   travelled.color = kTravelledColor;
   travelled.widthPx = std::max(2.5f, float(list.height) / 200.0f);
   full.view = travelled.view = view;
-  travelled.dynamic = true;  // grows with s: redrawn per frame over the retained layer
   for (std::size_t i = 0; i < pathS_.size(); ++i) {
     const Vec3 p = pathPoints_[i] + 0.004 * R * model_.path->normal(pathS_[i]);
     full.points.push_back(toGlm(p));
     if (pathS_[i] <= s) travelled.points.push_back(toGlm(p));
   }
+  const std::size_t travelledSettled = settledPoints(travelled.points.size(), pathS_.size());
   travelled.points.push_back(toGlm(model_.path->point(s) + 0.004 * R * model_.path->normal(s)));
   list.polylines.push_back(full);
-  list.polylines.push_back(travelled);
+  addGrowingLine(list, travelled, travelledSettled);  // grows with s
 
   // The ball(s): texture in body coordinates, rotated by worldFromBody.
   render::Material ballMaterial;
@@ -286,10 +287,10 @@ void BallView::add(render::DrawList& list, const FrameOrientations& frame, int v
     markerTrail.color = kMarkerTrailColor;
     markerTrail.widthPx = std::max(1.5f, float(list.height) / 360.0f);  // no hairline: ~3 px at 1080p
     markerTrail.view = view;
-    markerTrail.dynamic = true;
     for (const auto& t : frame.trail)
       markerTrail.points.push_back(toGlm(model_.path->at(t.s).centre(R) + R * t.q.rotate(markerBody_)));
-    list.polylines.push_back(markerTrail);
+    // All its points but the last lie on the trail grid.
+    addGrowingLine(list, markerTrail, settledPoints(frame.trail.size() - 1, trailGridCount_));
   }
 
   if (model_.plate && frame.strobe.empty()) {
@@ -332,12 +333,11 @@ void BallView::add(render::DrawList& list, const FrameOrientations& frame, int v
     plateTrail.color = kPlateTrailColor;
     plateTrail.widthPx = std::max(1.2f, float(list.height) / 450.0f);
     plateTrail.view = view;
-    plateTrail.dynamic = true;
     for (std::size_t i = 0; i < pathS_.size(); ++i) {
       if (pathS_[i] > s) break;
       plateTrail.points.push_back(toGlm(platePoint(pathS_[i], thickness * 1.05)));
     }
-    list.polylines.push_back(plateTrail);
+    addGrowingLine(list, plateTrail, settledPoints(plateTrail.points.size(), pathS_.size()));
   }
   if (facts_ && facts_->marks) addMarks(list, s, frame.strobe.empty(), view);
 
@@ -421,11 +421,11 @@ std::vector<TextBlock> BallView::textBlocks(const FrameOrientations& frame, floa
   facts.keep = 3;  // the heading and the first fact; later lines give way where there is no room
   facts.givesWay = 0;  // before the running values
   facts.lines.push_back({frame.strobe.empty() ? "rolling ball" : fmt::format("rolling ball at {} positions", frame.strobe.size()),
-                         text * 1.1f, true, kTextColor});
+                         text * 1.1f, true, kTextColor, false});
   if (facts_) {
-    const std::vector<std::string> lines = factLines(*facts_, frame, model_.path->length());
+    const std::vector<FactLine> lines = factLines(*facts_, frame, model_.path->length());
     // Lines too long for the view shrink rather than leave it.
-    for (const std::string& line : lines) facts.lines.push_back({line, text, false, kTextColor});
+    for (const FactLine& line : lines) facts.lines.push_back({line.text, text, false, kTextColor, line.live});
   }
   // The running values, bottom left.
   if (frame.strobe.empty()) {

@@ -51,6 +51,7 @@ class BallView {
   geometry::Vec3 markerBody_;
   std::vector<geometry::Vec3> pathPoints_;  // dense samples of P(s)
   std::vector<double> pathS_;
+  std::size_t trailGridCount_ = 0;  // the trail grid's points (frame_sampling.hpp)
   FrameExtent extent_;
   std::shared_ptr<const render::TextureImage> ballTexture_;
   std::shared_ptr<const motion::SceneFacts> facts_;

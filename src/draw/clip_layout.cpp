@@ -342,7 +342,7 @@ void addTextBlock(render::DrawList& list, const TextBlock& block, glm::vec2 orig
   for (const TextLine& line : block.lines) {
     render::LabelItem l;
     l.view = view;
-    l.dynamic = true;  // running values and captions change; text is cheap to redraw over the layer
+    l.dynamic = line.live;  // running values are redrawn per frame over the retained layer
     l.text = line.text;
     // The anchor is the middle of the capital height.
     const float x = block.centred ? origin.x + 0.5f * (size.x - textWidthPx(line.text, line.sizePx, line.bold))

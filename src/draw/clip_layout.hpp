@@ -55,6 +55,7 @@ struct TextLine {
   float sizePx = 16.0f;
   bool bold = false;
   glm::vec4 color{0.0f, 0.0f, 0.0f, 1.0f};
+  bool live = true;  // its text may change every frame; false: the same over a span of frames (a retained layer keeps it)
 };
 
 enum class Slot { TopLeft, TopRight, BottomLeft, BottomRight, TopCentre, BottomCentre };

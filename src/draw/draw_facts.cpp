@@ -25,7 +25,7 @@ std::string timesTurns(double turns) {
 // last (no line jumps); running values end on their final value and stay;
 // the comparison with the closed form appears when the circuit completes.
 void deltaLines(const DeltaFact& d, const LiveAngles& live, double labNow, bool atEnd, double turns,
-                std::vector<std::string>& out) {
+                std::vector<FactLine>& out) {
   if (d.onSphere) {
     out.push_back(fmt::format("δ = 2π√(ρ²/R² + cos²θ){}", timesTurns(turns)));
     out.push_back(fmt::format("  = {:.6f} rad (ρ = r sin θ)", d.closedForm));
@@ -33,18 +33,19 @@ void deltaLines(const DeltaFact& d, const LiveAngles& live, double labNow, bool 
     out.push_back(fmt::format("δ = 2π√(1 + (r/R)²){} = {:.6f} rad", timesTurns(turns), d.closedForm));
   }
   // Relative to the rolling frame (the frame turning with the path).
-  out.push_back(fmt::format("turned, in the rolling frame: {:.4f} rad", atEnd ? d.measured : live.rolling));
+  out.push_back({fmt::format("turned, in the rolling frame: {:.4f} rad", atEnd ? d.measured : live.rolling), !atEnd});
   out.push_back(atEnd ? fmt::format("solver at the end: {:.6f} rad", d.measured)
                       : std::string("solver at the end: …"));
   if (d.wholeCircuits) {
     // The lab angle of U lies in [0, π]: δ's remainder in (−π, π], in size.
     const double k = std::round(d.closedForm / (2.0 * kPi));
-    out.push_back(atEnd ? fmt::format("in the lab: {:.4f}°; |δ − {:g}π|", d.labAngle / kDeg, 2.0 * k)
-                        : fmt::format("in the lab: {:.4f}°", labNow / kDeg));
-    if (atEnd) out.back() += fmt::format(" = {:.4f}°", d.closedFormMod / kDeg);
+    out.push_back({atEnd ? fmt::format("in the lab: {:.4f}°; |δ − {:g}π|", d.labAngle / kDeg, 2.0 * k)
+                         : fmt::format("in the lab: {:.4f}°", labNow / kDeg),
+                   !atEnd});
+    if (atEnd) out.back().text += fmt::format(" = {:.4f}°", d.closedFormMod / kDeg);
   }
 }
-void marksLines(const SceneFacts& facts, const FrameOrientations& frame, bool strobe, std::vector<std::string>& out) {
+void marksLines(const SceneFacts& facts, const FrameOrientations& frame, bool strobe, std::vector<FactLine>& out) {
   const MarksFact& m = *facts.marks;
   out.push_back(fmt::format("a mark every β = π/√(1 + (r/R)²) = {:.2f}°", m.beta / kDeg));
   const int passed = strobe ? int(m.s.size()) : facts.marksPassed(frame.current.s);
@@ -57,23 +58,24 @@ void marksLines(const SceneFacts& facts, const FrameOrientations& frame, bool st
   } else {
     const spin::Su2 v = facts.rollingFrame(frame.current.s, frame.current.q);
     const double since = spin::rotationAngleAxis(v * m.rolling.front().conjugate()).angle;
-    out.push_back(fmt::format("turn since mark 0: {:.2f}°", since / kDeg));
+    out.push_back({fmt::format("turn since mark 0: {:.2f}°", since / kDeg), true});
   }
   out.push_back("(in the frame turning with the path)");
 }
 
-void turnsLines(const TurnsFact& t, const LiveAngles& live, bool atEnd, std::vector<std::string>& out) {
+void turnsLines(const TurnsFact& t, const LiveAngles& live, bool atEnd, std::vector<FactLine>& out) {
   const double lab = atEnd ? t.lab : live.lab, relative = atEnd ? t.lab - t.frame : live.lab - live.frame;
-  out.push_back(fmt::format("turns in the lab: {:.{}f}", std::abs(lab) / (2 * kPi), atEnd ? 6 : 2));
+  out.push_back({fmt::format("turns in the lab: {:.{}f}", std::abs(lab) / (2 * kPi), atEnd ? 6 : 2), !atEnd});
   out.push_back(atEnd ? fmt::format("  {} the revolution", t.lab * t.frame < 0.0 ? "against" : "with")
                       : std::string("  …"));
   out.push_back("turns relative to the radius line:");
-  out.push_back(fmt::format("  {:.{}f}{}", std::abs(relative) / (2 * kPi), atEnd ? 6 : 2,
-                            atEnd && t.paperPenny ? " (the paper says 1)" : ""));
+  out.push_back({fmt::format("  {:.{}f}{}", std::abs(relative) / (2 * kPi), atEnd ? 6 : 2,
+                             atEnd && t.paperPenny ? " (the paper says 1)" : ""),
+                 !atEnd});
 }
 
 // Everything here is of the closed loop U(L): shown when it closes.
-void phaseLines(const PhaseSplitFact& p, bool atEnd, std::vector<std::string>& out) {
+void phaseLines(const PhaseSplitFact& p, bool atEnd, std::vector<FactLine>& out) {
   auto value = [atEnd](const std::string& text) { return atEnd ? text : std::string("…"); };
   out.push_back("cyclic spin X of U(L), " + value(fmt::format("{:.2f}°", p.spinFromField / kDeg)) + " from B:");
   out.push_back("dynamic (1/2)∫B·X ds = " + value(fmt::format("{:.6f}", p.dynamic)));
@@ -87,8 +89,8 @@ void phaseLines(const PhaseSplitFact& p, bool atEnd, std::vector<std::string>& o
 
 }  // namespace
 
-std::vector<std::string> factLines(const SceneFacts& facts, const FrameOrientations& frame, double pathLength) {
-  std::vector<std::string> out;
+std::vector<FactLine> factLines(const SceneFacts& facts, const FrameOrientations& frame, double pathLength) {
+  std::vector<FactLine> out;
   const bool strobe = !frame.strobe.empty();
   // A strobe shows the whole circuit: its end values.
   const bool atEnd = strobe || frame.current.s >= pathLength * (1.0 - 1e-12);

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "motion/frame_sampling.hpp"
@@ -20,10 +21,20 @@ using motion::OrientedSample;
 using motion::SceneFacts;
 using motion::StoryPlace;
 
+// One line of facts; `live` when it shows a running value (its text changes
+// from frame to frame, so a retained layer must not keep it). Lines that
+// change only at a mark or at the end count as fixed: a layer is rebuilt then.
+struct FactLine {
+  std::string text;
+  bool live = false;
+  FactLine(std::string t, bool isLive = false) : text(std::move(t)), live(isLive) {}  // NOLINT: implicit from text
+  FactLine(const char* t) : text(t) {}                                                 // NOLINT
+};
+
 // The lines for the facts the scene shows, at the frame's s (live values
 // use frame.current.q). A strobe shows the circuit's values only.
-[[nodiscard]] std::vector<std::string> factLines(const SceneFacts& facts, const FrameOrientations& frame,
-                                                 double pathLength);
+[[nodiscard]] std::vector<FactLine> factLines(const SceneFacts& facts, const FrameOrientations& frame,
+                                              double pathLength);
 
 // A fan of triangles from the origin through the closed loop of B̂ (unit
 // vectors): the cone whose solid angle is Berry's phase.

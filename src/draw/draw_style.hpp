@@ -3,6 +3,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
+#include <utility>
 #include <numbers>
 
 #include <glm/glm.hpp>
@@ -35,6 +37,40 @@ inline const glm::vec3 kPlateColor{0.35f, 0.10f, 0.55f};
 inline const glm::vec4 kPlateTrailColor = opaqueLine(kPlateColor, 0.7f);
 inline const glm::vec4 kBlochTrailColor = opaqueLine(kMarkerColor, 0.85f);
 inline const glm::vec4 kFieldTrailColor = opaqueLine(kFieldColor, 0.7f);
+
+// A line that grows with s (a trail, the travelled path) whose points are a
+// prefix of one fixed grid plus the current point. It is drawn as two lines:
+// the points settled at the last of kGrowingLineCheckpoints fixed grid
+// indices, static (a retained layer keeps them until the next checkpoint,
+// instead of redrawing the whole line every frame), and the rest from that
+// point on, dynamic. Lines are opaque and cover samples by distance alone,
+// so the two draw exactly the samples the one line would.
+inline constexpr std::size_t kGrowingLineCheckpoints = 8;
+
+// How many leading points are settled: `pointsOnGrid` points of the line lie
+// on a grid of `gridCount`; the settled prefix ends on a checkpoint index.
+inline std::size_t settledPoints(std::size_t pointsOnGrid, std::size_t gridCount) {
+  const std::size_t step = std::max<std::size_t>(2, gridCount / kGrowingLineCheckpoints);
+  if (pointsOnGrid < 1) return 0;
+  return ((pointsOnGrid - 1) / step) * step + 1;
+}
+
+// Appends `line` (flagged dynamic) as its settled static prefix of
+// `settled` points and the dynamic rest, which starts on the prefix's last
+// point so that the two join.
+inline void addGrowingLine(render::DrawList& list, render::PolylineItem line, std::size_t settled) {
+  line.dynamic = true;
+  settled = std::min(settled, line.points.size());
+  if (settled >= 2) {
+    render::PolylineItem prefix = line;
+    prefix.dynamic = false;
+    prefix.points.resize(settled);
+    list.polylines.push_back(std::move(prefix));
+    line.points.erase(line.points.begin(), line.points.begin() + static_cast<std::ptrdiff_t>(settled - 1));
+    if (line.points.size() < 2) return;
+  }
+  list.polylines.push_back(std::move(line));
+}
 
 inline glm::vec3 toGlm(const geometry::Vec3& v) { return {float(v.x()), float(v.y()), float(v.z())}; }
 

@@ -24,7 +24,7 @@ TextBlock captionBlock(const std::string& caption, float text, float viewWidth) 
   if (caption.empty()) return block;
   const float preferred = text * 1.2f, width = textWidthPx(caption, preferred, true);
   const float size = width > 0.9f * viewWidth ? preferred * 0.9f * viewWidth / width : preferred;
-  block.lines.push_back({caption, size, true, kCaptionColor});
+  block.lines.push_back({caption, size, true, kCaptionColor, false});  // changes only between storyboard steps
   return block;
 }
 

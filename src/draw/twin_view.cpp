@@ -13,6 +13,7 @@
 #include "draw/draw_style.hpp"
 #include "draw/text_blocks.hpp"
 #include "draw/clip_layout.hpp"
+#include "motion/frame_sampling.hpp"
 #include "render/mesh_builders.hpp"
 #include "spin/field.hpp"
 
@@ -26,6 +27,7 @@ TwinView::TwinView(const scene::SceneSpec& spec, const model::RollingModel& mode
     : spec_(spec), model_(model), markerBody_(markerBody), dotMesh_(std::move(dotMesh)) {
   StageLog::instance().record("twin-geometry");
   blochSphereMesh_ = render::uvSphere(64, 32);
+  trailGridCount_ = motion::trailGrid(spec, model).count;
   if (facts && facts->phaseSplit) fieldConeMesh_ = coneMesh(facts->phaseSplit->fieldLoop);
 }
 
@@ -99,14 +101,21 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
   fieldTrail.color = kFieldTrailColor;
   blochTrail.widthPx = fieldTrail.widthPx = std::max(1.5f, float(list.height) / 360.0f);
   blochTrail.view = fieldTrail.view = view;
-  blochTrail.dynamic = fieldTrail.dynamic = true;
-  for (const auto& t : frame.trail) {
+  // The trail's points but the last lie on the trail grid (frame_sampling.hpp).
+  const std::size_t settled = settledPoints(frame.trail.size() - std::min<std::size_t>(1, frame.trail.size()),
+                                            trailGridCount_);
+  std::size_t fieldSettled = 0;
+  for (std::size_t i = 0; i < frame.trail.size(); ++i) {
+    const auto& t = frame.trail[i];
     blochTrail.points.push_back(toGlm(t.q.rotate(markerBody_)));
     const Vec3 b = fieldDirection(t.s);
-    if (b.norm() > 0.5) fieldTrail.points.push_back(toGlm(b));
+    if (b.norm() > 0.5) {
+      fieldTrail.points.push_back(toGlm(b));
+      if (i < settled) fieldSettled = fieldTrail.points.size();
+    }
   }
-  list.polylines.push_back(fieldTrail);
-  list.polylines.push_back(blochTrail);
+  addGrowingLine(list, fieldTrail, fieldSettled);
+  addGrowingLine(list, blochTrail, settled);
   if (fieldConeMesh_) {
     // The cone B̂ sweeps over the whole circuit: its solid angle is Berry's phase.
     render::Material cone;
@@ -151,7 +160,7 @@ std::vector<TextBlock> TwinView::textBlocks(bool inset, float text) const {
   std::vector<TextBlock> blocks(2);
   if (!spec_.render.labels || inset) return blocks;  // an inset is too small for a heading or a legend
   blocks[0].slots = {Slot::TopLeft, Slot::TopRight};
-  blocks[0].lines.push_back({"Bloch sphere", text * 1.1f, true, kTextColor});
+  blocks[0].lines.push_back({"Bloch sphere", text * 1.1f, true, kTextColor, false});
   blocks[0].keep = 0;  // where the sphere needs the room, the heading goes first
   blocks[0].givesWay = 0;
   blocks[1].slots = {Slot::BottomLeft, Slot::BottomRight};
@@ -159,16 +168,16 @@ std::vector<TextBlock> TwinView::textBlocks(bool inset, float text) const {
   if (compactText(int(spec_.render.width), int(spec_.render.height))) {
     // Narrow: the two entries share one band, one in each bottom corner.
     blocks[1].slots = {Slot::BottomLeft};
-    blocks[1].lines.push_back({"● spin X(s)", text, false, glm::vec4(kMarkerColor, 1.0f)});
+    blocks[1].lines.push_back({"● spin X(s)", text, false, glm::vec4(kMarkerColor, 1.0f), false});
     TextBlock field;
     field.slots = {Slot::BottomRight};
     field.keep = 1;
-    field.lines.push_back({"● field B/|B|", text, false, glm::vec4(kFieldColor, 1.0f)});
+    field.lines.push_back({"● field B/|B|", text, false, glm::vec4(kFieldColor, 1.0f), false});
     blocks.push_back(field);
     return blocks;
   }
-  blocks[1].lines.push_back({"● spin  X(s) = Q(s) X(0)", text, false, glm::vec4(kMarkerColor, 1.0f)});
-  blocks[1].lines.push_back({"● field  B/|B|", text, false, glm::vec4(kFieldColor, 1.0f)});
+  blocks[1].lines.push_back({"● spin  X(s) = Q(s) X(0)", text, false, glm::vec4(kMarkerColor, 1.0f), false});
+  blocks[1].lines.push_back({"● field  B/|B|", text, false, glm::vec4(kFieldColor, 1.0f), false});
   return blocks;
 }
 

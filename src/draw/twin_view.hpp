@@ -36,6 +36,7 @@ class TwinView {
   const model::RollingModel& model_;
   geometry::Vec3 markerBody_;
   NdcWindow window_;
+  std::size_t trailGridCount_ = 0;  // the trail grid's points (frame_sampling.hpp)
   std::shared_ptr<render::MeshData> dotMesh_, blochSphereMesh_, fieldConeMesh_;
 };
 

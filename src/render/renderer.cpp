@@ -1020,7 +1020,9 @@ struct Renderer::Impl {
                      whole);
   }
 
-  // A mesh's screen bounds: the corners of its model-space bounding box.
+  // A mesh's screen bounds: the corners of its model-space bounding box,
+  // narrowed to its bounding sphere's (a ball's box projects to a square
+  // about 1.5 times its outline; a thin arrow's sphere is the looser one).
   PixelRect meshBounds(const View& v, const glm::mat4& clipFromWorld, const Drawable& d) {
     const GpuMesh& g = gpuMesh(d.mesh);
     glm::vec3 corners[8];
@@ -1028,7 +1030,57 @@ struct Renderer::Impl {
       const glm::vec3 model(k & 1 ? g.hi.x : g.lo.x, k & 2 ? g.hi.y : g.lo.y, k & 4 ? g.hi.z : g.lo.z);
       corners[k] = glm::vec3(d.worldFromModel * glm::vec4(model, 1.0f));
     }
-    return screenBounds(v, clipFromWorld, corners, 8, 2.0f);
+    const PixelRect box = screenBounds(v, clipFromWorld, corners, 8, 2.0f);
+    const glm::mat3 linear(d.worldFromModel);
+    const float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+    const glm::vec3 centre(d.worldFromModel * glm::vec4(glm::vec3(g.bound), 1.0f));
+    if (const std::optional<PixelRect> sphere = sphereBounds(v, centre, g.bound.w * scale, 2.0f))
+      return intersect(box, *sphere);
+    return box;
+  }
+
+  // The pixels a world-space sphere can cover in view v, widened by
+  // `marginPx`; none when the camera is not a plain perspective or
+  // orthographic one, or the sphere reaches the eye's plane. Perspective: in
+  // each of the planes (x, z) and (y, z) of view space the tangents from the
+  // eye to the sphere's circle have slopes x/d = (c d ± r √(c² + d² − r²)) /
+  // (d² − r²), d = −z the depth (Mara & McGuire, "2D polyhedral bounds of a
+  // clipped, perspective-projected 3D sphere", 2013).
+  static std::optional<PixelRect> sphereBounds(const View& v, const glm::vec3& centre, float radius, float marginPx) {
+    const glm::mat4& P = v.camera.clipFromView;
+    // No skew, no x or y in w (frustum or ortho): x_ndc = P00 x/w + P20 z/w + P30/w.
+    if (P[1][0] != 0.0f || P[0][1] != 0.0f || P[0][3] != 0.0f || P[1][3] != 0.0f) return std::nullopt;
+    const glm::vec3 c(v.camera.viewFromWorld * glm::vec4(centre, 1.0f));
+    float ndc[2][2];  // [axis][min, max]
+    const bool perspective = P[2][3] == -1.0f && P[3][3] == 0.0f;
+    const bool orthographic = P[2][3] == 0.0f && P[3][3] == 1.0f;
+    if (!perspective && !orthographic) return std::nullopt;
+    for (int axis = 0; axis < 2; ++axis) {
+      const float ca = c[axis];
+      if (orthographic) {
+        const float mid = P[axis][axis] * ca + P[2][axis] * c.z + P[3][axis];
+        const float half = std::abs(P[axis][axis]) * radius;
+        ndc[axis][0] = mid - half;
+        ndc[axis][1] = mid + half;
+        continue;
+      }
+      const float d = -c.z;
+      if (d - radius <= 1e-4f * std::max(1.0f, d)) return std::nullopt;
+      const float t = std::sqrt(std::max(0.0f, ca * ca + d * d - radius * radius));
+      const float denominator = d * d - radius * radius;
+      const float lo = (ca * d - radius * t) / denominator, hi = (ca * d + radius * t) / denominator;
+      // x_ndc = P00 (x/d) − P20 (the off-axis shift), P00 > 0.
+      const float a = P[axis][axis] * lo - P[2][axis], b = P[axis][axis] * hi - P[2][axis];
+      ndc[axis][0] = std::min(a, b);
+      ndc[axis][1] = std::max(a, b);
+    }
+    const PixelRect whole{v.x, v.y, v.x + v.width, v.y + v.height};
+    auto toInt = [](float f) { return static_cast<int>(std::clamp(f, -1e7f, 1e7f)); };
+    const float x0 = (ndc[0][0] * 0.5f + 0.5f) * float(v.width), x1 = (ndc[0][1] * 0.5f + 0.5f) * float(v.width);
+    const float y0 = (0.5f - ndc[1][1] * 0.5f) * float(v.height), y1 = (0.5f - ndc[1][0] * 0.5f) * float(v.height);
+    return intersect(PixelRect{v.x + toInt(std::floor(x0 - marginPx)), v.y + toInt(std::floor(y0 - marginPx)),
+                               v.x + toInt(std::ceil(x1 + marginPx)) + 1, v.y + toInt(std::ceil(y1 + marginPx)) + 1},
+                     whole);
   }
 
   // Where a receiver's re-shade can draw: its triangles clipped to the

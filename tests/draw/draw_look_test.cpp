@@ -10,9 +10,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <set>
 #include <string>
 #include <vector>
 
+#include "draw/draw_style.hpp"
 #include "draw/scene_drawer.hpp"
 #include "app/render_jobs.hpp"
 #include "model/rolling_model.hpp"
@@ -135,6 +137,50 @@ TEST(BallView, AnglesAreMeshedOnceRound) {
   expectSurfaceMeshedOnce("scenes/torus.toml", [](const render::MeshData&) {
     return 4.0 * std::numbers::pi * std::numbers::pi * 4.0 * 1.5;  // A = 4, a = 1.5
   });
+}
+
+// A growing line (trail, travelled path) is drawn as a static settled prefix
+// and a dynamic rest: together they are the whole line, joined at one shared
+// point, and over a clip the static prefix changes only at the few
+// checkpoints, so a retained layer is rebuilt a few times, not every frame.
+TEST(BallView, GrowingLinesSettleAtAFewCheckpoints) {
+  const Loaded l = load("scenes/lollipop.toml");
+  const SceneDrawer drawer(l.spec, l.model, nullptr);
+  const double length = l.model.path->length();
+  const std::vector<glm::vec4> growing{kTravelledColor, kMarkerTrailColor, kBlochTrailColor, kFieldTrailColor};
+  std::vector<std::set<std::vector<float>>> prefixes(growing.size());
+  constexpr int kFrames = 300;  // a 10 s clip at 30 fps
+  for (int f = 0; f < kFrames; ++f) {
+    const motion::FrameOrientations frame = solveFrame(l.spec, l.model, length * f / (kFrames - 1));
+    const render::DrawList list = drawer.draw(frame);
+    for (std::size_t g = 0; g < growing.size(); ++g) {
+      std::vector<const render::PolylineItem*> parts;
+      for (const render::PolylineItem& p : list.polylines)
+        if (p.color == growing[g]) parts.push_back(&p);
+      ASSERT_FALSE(parts.empty()) << "line " << g << " frame " << f;
+      ASSERT_LE(parts.size(), 2u);
+      const render::PolylineItem& last = *parts.back();
+      EXPECT_TRUE(last.dynamic || parts.size() == 1) << "line " << g << " frame " << f;
+      if (parts.size() == 2) {
+        const render::PolylineItem& prefix = *parts.front();
+        EXPECT_FALSE(prefix.dynamic);
+        EXPECT_EQ(prefix.points.back(), last.points.front()) << "the parts must join";
+        std::vector<float> key;
+        for (const glm::vec3& p : prefix.points) key.insert(key.end(), {p.x, p.y, p.z});
+        prefixes[g].insert(key);
+      }
+      // The parts are the one line the frame would draw: the trail ends at s.
+      if (g == 2) {
+        std::size_t points = 0;
+        for (const auto* p : parts) points += p->points.size();
+        EXPECT_EQ(points, frame.trail.size() + parts.size() - 1) << "frame " << f;
+      }
+    }
+  }
+  for (std::size_t g = 0; g < growing.size(); ++g) {
+    EXPECT_GE(prefixes[g].size(), 3u) << "line " << g << ": the prefix should grow over the clip";
+    EXPECT_LE(prefixes[g].size(), kGrowingLineCheckpoints + 1) << "line " << g;
+  }
 }
 
 TEST(BallView, OnAWallTheShadowFallsBelowTheBall) {

@@ -80,7 +80,8 @@ TEST(Gallery, FactLabelsUseOnlyGlyphsTheAtlasHas) {
     ++scenesWithFacts;
     const double L = model.path->length();
     for (double s : {0.0, 0.3 * L, L}) {
-      for (const std::string& line : draw::factLines(*facts, motion::solveFrame(spec, model, s), L)) {
+      for (const draw::FactLine& fact : draw::factLines(*facts, motion::solveFrame(spec, model, s), L)) {
+        const std::string& line = fact.text;
         for (char32_t c : render::decodeUtf8(line))
           EXPECT_TRUE(atlas.hasGlyph(c)) << file.stem() << ": U+" << std::hex << std::uint32_t(c) << " in: " << line;
       }

@@ -933,20 +933,43 @@ struct Renderer::Impl {
     bool operator==(const StaticKey&) const = default;
   };
 
+  // The shadow box (which follows the ball) shapes only the shadow map,
+  // which a layer does not use: the re-shade is redrawn per frame.
+  static View withoutShadowBox(View v) {
+    v.light.shadowCenter = glm::vec3(0.0f);
+    v.light.shadowRadius = 0.0f;
+    v.light.shadowSoftness = 0.0f;
+    return v;
+  }
+
+  // Whether `list`'s static items are the key's, compared in place: a
+  // frame over a layer pays no copy of the static lines and labels.
+  static bool sameStatic(const StaticKey& k, const DrawList& list) {
+    if (k.width != list.width || k.height != list.height || k.samples != std::max(1, list.msaaSamples) ||
+        k.transparent != list.transparent || k.views.size() != list.views.size())
+      return false;
+    for (std::size_t i = 0; i < k.views.size(); ++i)
+      if (!(k.views[i] == withoutShadowBox(list.views[i]))) return false;
+    auto same = [](const auto& kept, const auto& items) {
+      std::size_t n = 0;
+      for (const auto& item : items) {
+        if (item.dynamic) continue;
+        if (n == kept.size() || !(kept[n] == item)) return false;
+        ++n;
+      }
+      return n == kept.size();
+    };
+    return same(k.meshes, list.meshes) && same(k.arrows, list.arrows) && same(k.polylines, list.polylines) &&
+           same(k.labels, list.labels);
+  }
+
   static StaticKey staticKeyOf(const DrawList& list) {
     StaticKey k;
     k.width = list.width;
     k.height = list.height;
     k.samples = std::max(1, list.msaaSamples);
     k.transparent = list.transparent;
-    k.views = list.views;
-    // The shadow box (which follows the ball) shapes only the shadow map,
-    // which a layer does not use: the re-shade is redrawn per frame.
-    for (View& v : k.views) {
-      v.light.shadowCenter = glm::vec3(0.0f);
-      v.light.shadowRadius = 0.0f;
-      v.light.shadowSoftness = 0.0f;
-    }
+    for (const View& v : list.views) k.views.push_back(withoutShadowBox(v));
     for (const MeshItem& m : list.meshes)
       if (!m.dynamic) k.meshes.push_back(m);
     for (const ArrowItem& a : list.arrows)
@@ -965,6 +988,7 @@ struct Renderer::Impl {
   GLuint snapshotFbo = 0, snapshotColor = 0, snapshotDepth = 0;
   int snapshotWidth = 0, snapshotHeight = 0, snapshotSamples = 0;
   std::optional<StaticKey> layerKey, pendingKey;
+  bool lastFrameOverLayer = false;
   media::Image layerImage;
   RenderStats stats;
 
@@ -1020,23 +1044,37 @@ struct Renderer::Impl {
                      whole);
   }
 
-  // A mesh's screen bounds: the corners of its model-space bounding box,
-  // narrowed to its bounding sphere's (a ball's box projects to a square
-  // about 1.5 times its outline; a thin arrow's sphere is the looser one).
-  PixelRect meshBounds(const View& v, const glm::mat4& clipFromWorld, const Drawable& d) {
+  // A mesh's screen bounds, as rectangles that together hold it: the
+  // corners of its model-space bounding box, narrowed to its bounding
+  // sphere's projection (a ball's box projects to a square about 1.5 times
+  // its outline). A long thin mesh (an arrow's shaft) is cut across its
+  // length into slabs of about its width, each bounded alone: a diagonal
+  // arrow dirties a band along itself, not the square it spans.
+  void meshBounds(const View& v, const glm::mat4& clipFromWorld, const Drawable& d, std::vector<PixelRect>& out) {
     const GpuMesh& g = gpuMesh(d.mesh);
-    glm::vec3 corners[8];
-    for (int k = 0; k < 8; ++k) {
-      const glm::vec3 model(k & 1 ? g.hi.x : g.lo.x, k & 2 ? g.hi.y : g.lo.y, k & 4 ? g.hi.z : g.lo.z);
-      corners[k] = glm::vec3(d.worldFromModel * glm::vec4(model, 1.0f));
-    }
-    const PixelRect box = screenBounds(v, clipFromWorld, corners, 8, 2.0f);
     const glm::mat3 linear(d.worldFromModel);
+    const glm::vec3 extent = (g.hi - g.lo) * glm::vec3(glm::length(linear[0]), glm::length(linear[1]),
+                                                       glm::length(linear[2]));
+    int along = 0;
+    for (int a = 1; a < 3; ++a)
+      if (extent[a] > extent[along]) along = a;
+    const float across = std::max(extent[(along + 1) % 3], extent[(along + 2) % 3]);
+    const int slabs = across > 0.0f ? std::clamp(int(std::ceil(extent[along] / across)), 1, 16) : 1;
     const float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
     const glm::vec3 centre(d.worldFromModel * glm::vec4(glm::vec3(g.bound), 1.0f));
-    if (const std::optional<PixelRect> sphere = sphereBounds(v, centre, g.bound.w * scale, 2.0f))
-      return intersect(box, *sphere);
-    return box;
+    const std::optional<PixelRect> sphere = sphereBounds(v, centre, g.bound.w * scale, 2.0f);
+    for (int slab = 0; slab < slabs; ++slab) {
+      glm::vec3 lo = g.lo, hi = g.hi;
+      lo[along] = g.lo[along] + (g.hi[along] - g.lo[along]) * float(slab) / float(slabs);
+      hi[along] = slab + 1 == slabs ? g.hi[along] : g.lo[along] + (g.hi[along] - g.lo[along]) * float(slab + 1) / float(slabs);
+      glm::vec3 corners[8];
+      for (int k = 0; k < 8; ++k) {
+        const glm::vec3 model(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+        corners[k] = glm::vec3(d.worldFromModel * glm::vec4(model, 1.0f));
+      }
+      const PixelRect box = screenBounds(v, clipFromWorld, corners, 8, 2.0f);
+      out.push_back(sphere ? intersect(box, *sphere) : box);
+    }
   }
 
   // The pixels a world-space sphere can cover in view v, widened by
@@ -1136,12 +1174,17 @@ struct Renderer::Impl {
         for (int tx = std::max(0, r.x0 / kTile); tx <= std::min(cols - 1, (r.x1 - 1) / kTile); ++tx)
           dirty[static_cast<std::size_t>(ty) * cols + tx] = 1;
     };
+    std::vector<PixelRect> meshRects;
     for (std::size_t i = 0; i < list.views.size(); ++i) {
       const View& v = list.views[i];
       const int index = static_cast<int>(i);
       const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
       for (const Drawable& d : perView[i].items) {
-        if (d.dynamic) add(meshBounds(v, clipFromWorld, d));
+        if (d.dynamic) {
+          meshRects.clear();
+          meshBounds(v, clipFromWorld, d, meshRects);
+          for (const PixelRect& r : meshRects) add(r);
+        }
         if (perView[i].shadowMap != nullptr && d.material->receivesShadow && d.material->opacity >= 1.0f)
           add(reshadeBounds(v, clipFromWorld, perView[i].shadow.lightClipFromWorld, d));
       }
@@ -1410,20 +1453,24 @@ struct Renderer::Impl {
 
     // A layer needs disjoint views (an inset's clear would come between
     // the views' steps) and pays off from the second frame that shares it.
+    // When the frame before was drawn over a layer, the camera held still
+    // and only static content changed (a growing line reached a checkpoint,
+    // a caption changed): a new layer is built at once. Otherwise one is
+    // built when a second frame shares it.
     bool overLayer = false;
     if (retainLayers && viewsDisjoint(list)) {
-      StaticKey key = staticKeyOf(list);
-      if (layerKey && *layerKey == key) {
+      if (layerKey && sameStatic(*layerKey, list)) {
         overLayer = true;
-      } else if (pendingKey && *pendingKey == key) {
+      } else if ((pendingKey && sameStatic(*pendingKey, list)) || lastFrameOverLayer) {
         buildLayer(list, perView);
-        layerKey = std::move(key);
+        layerKey = staticKeyOf(list);
         pendingKey.reset();
         overLayer = true;
       } else {
-        pendingKey = std::move(key);
+        pendingKey = staticKeyOf(list);
       }
     }
+    lastFrameOverLayer = overLayer;
     if (overLayer) {
       drawOverLayer(list, perView, image);
       ++stats.retainedFrames;
@@ -1503,7 +1550,7 @@ void Renderer::renderWithDepth(const DrawList& list, media::Image& image, std::v
 
 void Renderer::setRetainLayers(bool on) {
   impl_->retainLayers = on;
-  if (!on) impl_->layerKey.reset(), impl_->pendingKey.reset();
+  if (!on) impl_->layerKey.reset(), impl_->pendingKey.reset(), impl_->lastFrameOverLayer = false;
 }
 const RenderStats& Renderer::stats() const { return impl_->stats; }
 

@@ -414,7 +414,12 @@ TEST_F(RendererTest, RetainedLayerFramesMatchFramesDrawnWholeInAnyOrder) {
   plain.setRetainLayers(false);
   const media::Image expected = plain.render(changed);
   EXPECT_NE(expected.rgba, whole[2].rgba);
+  // The frame before was drawn over a layer (the camera holds still): the
+  // new layer is built at once, not after a frame drawn whole.
+  const RenderStats before = shuffled.stats();
   EXPECT_EQ(shuffled.render(changed).rgba, expected.rgba);
+  EXPECT_EQ(shuffled.stats().layerBuilds, before.layerBuilds + 1);
+  EXPECT_EQ(shuffled.stats().retainedFrames, before.retainedFrames + 1);
   changed = clipFrame(3);
   changed.meshes[0].material.color = {0.2f, 0.5f, 0.3f};
   EXPECT_EQ(shuffled.render(changed).rgba, plain.render(changed).rgba);

@@ -95,6 +95,8 @@ void BM_ClipFrames1080p(benchmark::State& state) {
   const double n = double(std::max<benchmark::IterationCount>(1, state.iterations()));
   state.counters["process_cpu_ms_per_frame"] = 1e3 * (processCpuSeconds() - cpuStart) / n;
   state.counters["retained_share"] = double(renderer.stats().retainedFrames - before.retainedFrames) / n;
+  state.counters["layer_builds_per_frame"] = double(renderer.stats().layerBuilds - before.layerBuilds) / n;
+  state.counters["layer_updates_per_frame"] = double(renderer.stats().layerUpdates - before.layerUpdates) / n;
   state.SetLabel(state.range(0) == 1 ? "1920x1080, 4x MSAA, camera follows the ball"
                                      : "1920x1080, 4x MSAA, fixed camera");
 }

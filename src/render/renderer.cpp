@@ -751,6 +751,9 @@ struct Renderer::Impl {
   void drawRest(const DrawList& list, int index, const ViewItems& viewItems, Items which) {
     const View& v = list.views[static_cast<std::size_t>(index)];
     const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+    // A line's quad faces either way: no culling, whatever ran before (the
+    // shadow pass culls, and a layer's update draws no opaque mesh first).
+    glDisable(GL_CULL_FACE);
     if (viewItems.shadowMap != nullptr && which != Items::StaticOnly) {
       glDisable(GL_BLEND);
       glDepthMask(GL_TRUE);
@@ -936,17 +939,20 @@ struct Renderer::Impl {
       return false;
     for (std::size_t i = 0; i < k.views.size(); ++i)
       if (!(k.views[i] == withoutShadowBox(list.views[i]))) return false;
-    auto same = [](const auto& kept, const auto& items) {
-      std::size_t n = 0;
-      for (const auto& item : items) {
-        if (item.dynamic) continue;
-        if (n == kept.size() || !(kept[n] == item)) return false;
-        ++n;
-      }
-      return n == kept.size();
-    };
-    return same(k.meshes, list.meshes) && same(k.arrows, list.arrows) && same(k.polylines, list.polylines) &&
-           same(k.labels, list.labels);
+    return sameItems(k.meshes, list.meshes) && sameItems(k.arrows, list.arrows) &&
+           sameItems(k.polylines, list.polylines) && sameItems(k.labels, list.labels);
+  }
+
+  // Whether `items`' static ones are `kept`, in order.
+  template <typename Item>
+  static bool sameItems(const std::vector<Item>& kept, const std::vector<Item>& items) {
+    std::size_t n = 0;
+    for (const Item& item : items) {
+      if (item.dynamic) continue;
+      if (n == kept.size() || !(kept[n] == item)) return false;
+      ++n;
+    }
+    return n == kept.size();
   }
 
   static StaticKey staticKeyOf(const DrawList& list) {
@@ -1089,15 +1095,39 @@ struct Renderer::Impl {
   // segment by segment, so that a long trail dirties a thin band along
   // itself) or a receiver's shadow box can touch.
   static constexpr int kTile = 32;
-  std::vector<PixelRect> dirtyRects(const DrawList& list, const std::vector<ViewItems>& perView) {
-    const int cols = (list.width + kTile - 1) / kTile, rows = (list.height + kTile - 1) / kTile;
-    std::vector<std::uint8_t> dirty(static_cast<std::size_t>(cols) * rows, 0);
-    auto add = [&](const PixelRect& r) {
+  struct TileGrid {
+    int cols, rows, width, height;
+    std::vector<std::uint8_t> dirty;
+    TileGrid(int w, int h)
+        : cols((w + kTile - 1) / kTile), rows((h + kTile - 1) / kTile), width(w), height(h),
+          dirty(static_cast<std::size_t>(cols) * rows, 0) {}
+    void add(const PixelRect& r) {
       if (r.empty()) return;
       for (int ty = std::max(0, r.y0 / kTile); ty <= std::min(rows - 1, (r.y1 - 1) / kTile); ++ty)
         for (int tx = std::max(0, r.x0 / kTile); tx <= std::min(cols - 1, (r.x1 - 1) / kTile); ++tx)
           dirty[static_cast<std::size_t>(ty) * cols + tx] = 1;
-    };
+    }
+    [[nodiscard]] std::vector<PixelRect> rects() const { return rectsOfTiles(dirty, cols, rows, kTile, width, height); }
+  };
+
+  // The bounds of a polyline's segments from `first` on, one by one. A
+  // segment draws the pixels within half a width of it (a capsule,
+  // line.geom/line.frag), inside this margin around its end points; one
+  // with an end behind the eye is not drawn (line.geom).
+  static void addSegmentBounds(const PolylineItem& p, const View& v, const glm::mat4& clipFromWorld,
+                               std::size_t first, TileGrid& grid) {
+    const float margin = 0.7072f * p.widthPx + 2.0f;
+    for (std::size_t k = first; k + 1 < p.points.size(); ++k) {
+      const glm::vec3 ends[2] = {p.points[k], p.points[k + 1]};
+      if ((clipFromWorld * glm::vec4(ends[0], 1.0f)).w <= 1e-6f || (clipFromWorld * glm::vec4(ends[1], 1.0f)).w <= 1e-6f)
+        continue;
+      grid.add(screenBounds(v, clipFromWorld, ends, 2, margin));
+    }
+  }
+
+  std::vector<PixelRect> dirtyRects(const DrawList& list, const std::vector<ViewItems>& perView) {
+    TileGrid grid(list.width, list.height);
+    auto add = [&](const PixelRect& r) { grid.add(r); };
     std::vector<PixelRect> meshRects;
     for (std::size_t i = 0; i < list.views.size(); ++i) {
       const View& v = list.views[i];
@@ -1112,26 +1142,153 @@ struct Renderer::Impl {
         if (perView[i].shadowMap != nullptr && d.material->receivesShadow && d.material->opacity >= 1.0f)
           add(reshadeBounds(v, clipFromWorld, perView[i].shadow.lightClipFromWorld, d));
       }
-      for (const PolylineItem& p : list.polylines) {
-        if (p.view != index || !p.dynamic) continue;
-        // A segment draws the pixels within half a width of it (a capsule,
-        // line.geom/line.frag), inside this margin around its end points. A
-        // segment with an end behind the eye is not drawn (line.geom).
-        const float margin = 0.7072f * p.widthPx + 2.0f;
-        for (std::size_t k = 0; k + 1 < p.points.size(); ++k) {
-          const glm::vec3 ends[2] = {p.points[k], p.points[k + 1]};
-          if ((clipFromWorld * glm::vec4(ends[0], 1.0f)).w <= 1e-6f ||
-              (clipFromWorld * glm::vec4(ends[1], 1.0f)).w <= 1e-6f)
-            continue;
-          add(screenBounds(v, clipFromWorld, ends, 2, margin));
-        }
-      }
+      for (const PolylineItem& p : list.polylines)
+        if (p.view == index && p.dynamic) addSegmentBounds(p, v, clipFromWorld, 0, grid);
       for (const LabelItem& l : list.labels)
         if (l.view == index && l.dynamic) add(labelBounds(l, list, &v, clipFromWorld));
     }
     for (const LabelItem& l : list.labels)
       if (l.view < 0 && l.dynamic) add(labelBounds(l, list, nullptr, glm::mat4(1.0f)));
-    return rectsOfTiles(dirty, cols, rows, kTile, list.width, list.height);
+    return grid.rects();
+  }
+
+  // Pairs the kept static items with the new ones, in order (a longest
+  // common subsequence under `pairs`): an item inserted or removed in the
+  // middle (a line's first settled prefix, a new caption line) leaves the
+  // others paired. Returns, for each new item, its partner's index or -1;
+  // `keptPaired` says which kept items found one.
+  template <typename Item, typename Pairs>
+  static std::vector<int> alignItems(const std::vector<Item>& kept, const std::vector<const Item*>& now, Pairs pairs,
+                                     std::vector<bool>& keptPaired) {
+    const std::size_t n = kept.size(), m = now.size();
+    std::vector<int> best((n + 1) * (m + 1), 0);  // best[i*(m+1)+j]: LCS of kept[i…], now[j…]
+    for (std::size_t i = n; i-- > 0;)
+      for (std::size_t j = m; j-- > 0;)
+        best[i * (m + 1) + j] = pairs(kept[i], *now[j]) ? best[(i + 1) * (m + 1) + j + 1] + 1
+                                                        : std::max(best[(i + 1) * (m + 1) + j], best[i * (m + 1) + j + 1]);
+    std::vector<int> partner(m, -1);
+    keptPaired.assign(n, false);
+    for (std::size_t i = 0, j = 0; i < n && j < m;) {
+      if (pairs(kept[i], *now[j]) && best[i * (m + 1) + j] == best[(i + 1) * (m + 1) + j + 1] + 1) {
+        partner[j] = static_cast<int>(i);
+        keptPaired[i] = true;
+        ++i, ++j;
+      } else if (best[(i + 1) * (m + 1) + j] >= best[i * (m + 1) + j + 1]) {
+        ++i;
+      } else {
+        ++j;
+      }
+    }
+    return partner;
+  }
+
+  // When the layer's views, static arrows and static opaque meshes hold and
+  // only static lines, labels or translucent meshes changed (a growing line
+  // reached its next checkpoint, a caption or a text plate changed), the
+  // pixels that can differ between the kept layer and the new one: the
+  // segments past the common prefix of a line that grew or shrank (all
+  // segments of a line otherwise changed, added or removed), and the old
+  // and new bounds of a changed label or translucent mesh. The snapshot
+  // (the static opaque meshes' samples) holds as it is. None: the layer must
+  // be built again.
+  std::optional<std::vector<PixelRect>> layerChanges(const StaticKey& k, const DrawList& list) {
+    if (k.width != list.width || k.height != list.height || k.samples != std::max(1, list.msaaSamples) ||
+        k.transparent != list.transparent || k.views.size() != list.views.size())
+      return std::nullopt;
+    for (std::size_t i = 0; i < k.views.size(); ++i)
+      if (!(k.views[i] == withoutShadowBox(list.views[i]))) return std::nullopt;
+    if (!sameItems(k.arrows, list.arrows)) return std::nullopt;
+    auto staticOf = [](const auto& items) {
+      std::vector<const typename std::decay_t<decltype(items)>::value_type*> out;
+      for (const auto& item : items)
+        if (!item.dynamic) out.push_back(&item);
+      return out;
+    };
+    auto viewOf = [&](int index) -> std::optional<std::pair<const View*, glm::mat4>> {
+      if (index < 0 || static_cast<std::size_t>(index) >= list.views.size()) return std::nullopt;
+      const View& v = list.views[static_cast<std::size_t>(index)];
+      return std::make_pair(&v, v.camera.clipFromView * v.camera.viewFromWorld);
+    };
+    TileGrid grid(list.width, list.height);
+    std::vector<bool> keptPaired;
+
+    // Meshes: an opaque one is in the snapshot and must stay as it is.
+    const auto meshes = staticOf(list.meshes);
+    const auto meshPartner = alignItems(
+        k.meshes, meshes,
+        [](const MeshItem& a, const MeshItem& b) {
+          return a == b || (a.view == b.view && a.material.opacity < 1.0f && b.material.opacity < 1.0f);
+        },
+        keptPaired);
+    auto addMesh = [&](const MeshItem& m) {
+      const auto v = viewOf(m.view);
+      if (!v || !m.mesh) return true;  // drawn in no view: nothing to redraw
+      if (m.material.opacity >= 1.0f) return false;
+      std::vector<PixelRect> rects;
+      meshBounds(*v->first, v->second, Drawable{m.mesh, m.worldFromModel, &m.material, false}, rects);
+      for (const PixelRect& r : rects) grid.add(r);
+      return true;
+    };
+    for (std::size_t j = 0; j < meshes.size(); ++j) {
+      const int i = meshPartner[j];
+      if (i >= 0 && k.meshes[static_cast<std::size_t>(i)] == *meshes[j]) continue;
+      if (!addMesh(*meshes[j]) || (i >= 0 && !addMesh(k.meshes[static_cast<std::size_t>(i)]))) return std::nullopt;
+    }
+    for (std::size_t i = 0; i < k.meshes.size(); ++i)
+      if (!keptPaired[i] && !addMesh(k.meshes[i])) return std::nullopt;
+
+    // Lines: a pair with the same look whose points share a prefix (a line
+    // that grew or shrank) differs only from the last shared point on (round
+    // joins: a segment's capsule ends at its points).
+    const auto lines = staticOf(list.polylines);
+    const auto linePartner = alignItems(
+        k.polylines, lines,
+        [](const PolylineItem& a, const PolylineItem& b) {
+          return a.view == b.view && a.color == b.color && a.widthPx == b.widthPx && a.depthTested == b.depthTested;
+        },
+        keptPaired);
+    auto addLine = [&](const PolylineItem& p, std::size_t first) {
+      const auto v = viewOf(p.view);
+      if (v) addSegmentBounds(p, *v->first, v->second, first, grid);
+    };
+    for (std::size_t j = 0; j < lines.size(); ++j) {
+      const PolylineItem& now = *lines[j];
+      if (linePartner[j] < 0) {
+        addLine(now, 0);
+        continue;
+      }
+      const PolylineItem& before = k.polylines[static_cast<std::size_t>(linePartner[j])];
+      if (before == now) continue;
+      const std::size_t shared = std::min(before.points.size(), now.points.size());
+      const bool prefix = std::equal(before.points.begin(), before.points.begin() + std::ptrdiff_t(shared),
+                                     now.points.begin());
+      const std::size_t first = prefix && shared > 0 ? shared - 1 : 0;
+      addLine(before, first);
+      addLine(now, first);
+    }
+    for (std::size_t i = 0; i < k.polylines.size(); ++i)
+      if (!keptPaired[i]) addLine(k.polylines[i], 0);
+
+    // Labels: old and new bounds of each that changed, came or went.
+    const auto labels = staticOf(list.labels);
+    const auto labelPartner =
+        alignItems(k.labels, labels, [](const LabelItem& a, const LabelItem& b) { return a.view == b.view; }, keptPaired);
+    auto addLabel = [&](const LabelItem& l) {
+      if (l.view < 0) {
+        grid.add(labelBounds(l, list, nullptr, glm::mat4(1.0f)));
+      } else if (const auto v = viewOf(l.view)) {
+        grid.add(labelBounds(l, list, v->first, v->second));
+      }
+    };
+    for (std::size_t j = 0; j < labels.size(); ++j) {
+      const int i = labelPartner[j];
+      if (i >= 0 && k.labels[static_cast<std::size_t>(i)] == *labels[j]) continue;
+      addLabel(*labels[j]);
+      if (i >= 0) addLabel(k.labels[static_cast<std::size_t>(i)]);
+    }
+    for (std::size_t i = 0; i < k.labels.size(); ++i)
+      if (!keptPaired[i]) addLabel(k.labels[i]);
+    return grid.rects();
   }
 
   PixelRect labelBounds(const LabelItem& l, const DrawList& list, const View* v, const glm::mat4& clipFromWorld) {
@@ -1243,6 +1400,25 @@ struct Renderer::Impl {
     const std::vector<PixelRect> rects = dirtyRects(list, perView);
     stats.retainedPixels += static_cast<long long>(list.width) * list.height;
     image.rgba = layerImage.rgba;  // same size: copies into the existing storage
+    redrawRects(list, perView, rects, Items::All, image);
+    long long area = 0;
+    for (const PixelRect& r : rects) area += static_cast<long long>(r.x1 - r.x0) * (r.y1 - r.y0);
+    stats.redrawnPixels += area;
+  }
+
+  // The layer brought up to date in place (see layerChanges): its
+  // rectangles redrawn from the snapshot with the static items alone, as
+  // buildLayer draws them whole. A checkpoint of a growing line then costs
+  // about a frame over the layer instead of a frame drawn whole.
+  void updateLayer(const DrawList& list, const std::vector<ViewItems>& perView, const std::vector<PixelRect>& rects) {
+    redrawRects(list, perView, rects, Items::StaticOnly, layerImage);
+    ++stats.layerUpdates;
+  }
+
+  // Redraws `rects` (disjoint) of `image` from the snapshot on: the
+  // dynamic opaque meshes when `which` takes them, then every later step.
+  void redrawRects(const DrawList& list, const std::vector<ViewItems>& perView, const std::vector<PixelRect>& rects,
+                   Items which, media::Image& image) {
     if (rects.empty()) return;
     // The rectangles are disjoint: all copies first, then all draws, so the
     // binned scene is not flushed between them.
@@ -1276,20 +1452,17 @@ struct Renderer::Impl {
         for (const PixelRect& r : rects)
           if (overlaps(r, island)) islandRects.push_back(intersect(r, island));
         beginView(list, v, perView[i], &island);
-        drawOpaque(perView[i], Items::DynamicOnly);
+        if (which != Items::StaticOnly) drawOpaque(perView[i], Items::DynamicOnly);
         lineClips = &islandRects;
-        drawRest(list, static_cast<int>(i), perView[i], Items::All);
+        drawRest(list, static_cast<int>(i), perView[i], which);
         lineClips = nullptr;
       }
     }
     for (const PixelRect& r : rects) allBounds = unite(allBounds, r);
-    drawImageLabels(list, Items::All, allBounds);
+    drawImageLabels(list, which, allBounds);
     composite(list, &rects);
     glFinish();
     for (const PixelRect& r : rects) readBack(list, image, r);
-    long long area = 0;
-    for (const PixelRect& r : rects) area += static_cast<long long>(r.x1 - r.x0) * (r.y1 - r.y0);
-    stats.redrawnPixels += area;
   }
 
   void render(const DrawList& list, media::Image& image) {
@@ -1329,7 +1502,13 @@ struct Renderer::Impl {
     // built when a second frame shares it.
     bool overLayer = false;
     if (retainLayers && viewsDisjoint(list)) {
+      std::optional<std::vector<PixelRect>> changes;
       if (layerKey && sameStatic(*layerKey, list)) {
+        overLayer = true;
+      } else if (layerKey && (changes = layerChanges(*layerKey, list))) {
+        updateLayer(list, perView, *changes);
+        layerKey = staticKeyOf(list);
+        pendingKey.reset();
         overLayer = true;
       } else if ((pendingKey && sameStatic(*pendingKey, list)) || lastFrameOverLayer) {
         buildLayer(list, perView);

@@ -23,6 +23,7 @@ namespace rollspin::render {
 struct RenderStats {
   long long wholeFrames = 0;     // drawn whole (a still, a camera move, a span's first frame)
   long long layerBuilds = 0;     // retained layers built
+  long long layerUpdates = 0;    // retained layers brought up to date in place (only static lines or labels changed)
   long long retainedFrames = 0;  // drawn over a retained layer
   long long redrawnPixels = 0;   // in those frames' rectangles, summed
   long long retainedPixels = 0;  // those frames' pixels, summed

@@ -425,6 +425,92 @@ TEST_F(RendererTest, RetainedLayerFramesMatchFramesDrawnWholeInAnyOrder) {
   EXPECT_EQ(shuffled.render(changed).rgba, plain.render(changed).rgba);
 }
 
+// A growing line settles at checkpoints and a caption changes now and then
+// (as a SceneDrawer's do): the static lines and labels change while the
+// views and meshes hold, and the layer is brought up to date in place
+// rather than built again. Frames in order, out of order (the static prefix
+// then shrinks as well as grows) and drawn whole must agree byte for byte.
+DrawList checkpointFrame(int k) {
+  DrawList list = clipFrame(k);
+  // Twice clipFrame's size (the same aspect), so that 32-pixel tiles tell
+  // the changed items from the moving ones.
+  list.width *= 2;
+  list.height *= 2;
+  for (View& v : list.views) v.x *= 2, v.width *= 2, v.height *= 2;
+  // A line's static prefix, settling every second frame: points 0…2 at the
+  // floor's far left, 3 and on at its far right, so that the one segment
+  // from point 2 to point 3 alone crosses the top of the view (a tile no
+  // other item dirties).
+  PolylineItem settled;
+  settled.color = {0.2f, 0.3f, 0.9f, 1.0f};
+  settled.widthPx = 3.0f;
+  for (int j = 0; j <= k - k % 2; ++j)
+    settled.points.push_back(j < 3 ? glm::vec3(-1.6f + 0.1f * float(j), 1.6f, 0.0f)
+                                   : glm::vec3(1.3f + 0.1f * float(j - 3), 1.5f, 0.0f));
+  list.polylines.push_back(settled);
+  // From frame 3 a second static line comes first (the kept lines shift),
+  // a translucent plate grows, and the caption changes; from frame 5 a
+  // label comes before it.
+  if (k >= 3) {
+    PolylineItem first;
+    first.color = {0.1f, 0.6f, 0.2f, 1.0f};
+    first.points = {{-1.3f, -1.4f, 0.0f}, {-0.8f, -1.4f, 0.0f}};
+    list.polylines.insert(list.polylines.begin(), first);
+  }
+  MeshItem plate;
+  plate.mesh = clipFrame(0).meshes[1].mesh;
+  plate.worldFromModel = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(1.6f, 1.8f, 0.3f)),
+                                    glm::vec3(k < 3 ? 0.2f : 0.3f));
+  plate.material.opacity = 0.5f;
+  plate.material.castsShadow = false;  // the shadow box hugs the ball alone
+  list.meshes.insert(list.meshes.begin() + 1, plate);
+  if (k >= 5) {
+    LabelItem note;
+    note.text = "note";
+    note.anchor = {150, 128, 0};
+    note.sizePx = 10;
+    note.view = 0;
+    list.labels.push_back(note);
+  }
+  LabelItem caption;
+  caption.text = k < 3 ? "first caption" : "second";
+  caption.anchor = {60, 12, 0};
+  caption.sizePx = 10;
+  caption.view = -1;
+  list.labels.push_back(caption);
+  return list;
+}
+
+TEST_F(RendererTest, RetainedLayerUpdatedInPlaceWhenStaticLinesOrLabelsChange) {
+  constexpr int kFrames = 6;
+  std::vector<media::Image> whole(kFrames);
+  Renderer plain(*context_, ShaderLibrary{});
+  plain.setRetainLayers(false);
+  for (int k = 0; k < kFrames; ++k) whole[k] = plain.render(checkpointFrame(k));
+  Renderer inOrder(*context_, ShaderLibrary{});
+  for (int k = 0; k < kFrames; ++k)
+    EXPECT_TRUE(sameBytes(inOrder.render(checkpointFrame(k)), whole[k])) << "frame " << k;
+  // The static items change at frames 2, 3, 4 and 5.
+  EXPECT_EQ(inOrder.stats().layerBuilds, 1);
+  EXPECT_EQ(inOrder.stats().layerUpdates, 4);
+  EXPECT_EQ(inOrder.stats().retainedFrames, kFrames - 1);
+  Renderer shuffled(*context_, ShaderLibrary{});
+  // The layer is built at the second 4; every later frame changes its
+  // static items and is drawn over the layer brought up to date.
+  for (int k : {4, 4, 1, 5, 0, 3, 2, 4, 1, 5})
+    EXPECT_TRUE(sameBytes(shuffled.render(checkpointFrame(k)), whole[k])) << "frame " << k;
+  EXPECT_EQ(shuffled.stats().layerBuilds, 1);
+  EXPECT_EQ(shuffled.stats().layerUpdates, 8);
+  EXPECT_EQ(shuffled.stats().retainedFrames, 9);
+  // An opaque static mesh that changes (in the snapshot) makes a new layer.
+  DrawList changed = checkpointFrame(2);
+  changed.meshes[0].material.color = {0.2f, 0.5f, 0.3f};
+  const RenderStats before = shuffled.stats();
+  EXPECT_TRUE(sameBytes(shuffled.render(changed), plain.render(changed)));
+  EXPECT_EQ(shuffled.stats().layerBuilds, before.layerBuilds + 1);
+  EXPECT_EQ(shuffled.stats().layerUpdates, before.layerUpdates);
+}
+
 TEST(ShaderLibrary, ShadersAreEmbeddedAndOverridable) {
   EXPECT_NE(ShaderLibrary{}.source("mesh.frag").find("#version 450 core"), std::string::npos);
   EXPECT_THROW((void)ShaderLibrary{"/nonexistent-shader-dir"}.source("mesh.frag"), Error);

@@ -241,8 +241,8 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     const render::RenderStats& st = renderer.stats();
     std::fprintf(stderr,
                  "rollspin: renderer: %lld frames drawn whole, %lld over a retained layer (%lld layers built, "
-                 "%lld updated in place, %.1f %% of their pixels redrawn)\n",
-                 st.wholeFrames, st.retainedFrames, st.layerBuilds, st.layerUpdates,
+                 "%lld updated in place, %lld views drawn whole beside one, %.1f %% of their pixels redrawn)\n",
+                 st.wholeFrames, st.retainedFrames, st.layerBuilds, st.layerUpdates, st.freshViews,
                  st.retainedPixels > 0 ? 100.0 * double(st.redrawnPixels) / double(st.retainedPixels) : 0.0);
   }
 

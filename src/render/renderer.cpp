@@ -919,6 +919,10 @@ struct Renderer::Impl {
     std::vector<ArrowItem> arrows;
     std::vector<PolylineItem> polylines;
     std::vector<LabelItem> labels;
+    // Views whose pixels in the layer are not the key's (a frame drew them
+    // whole with another camera and an update may have drawn over them):
+    // such a view is drawn whole in every frame until a layer is built.
+    std::vector<bool> stale;
     bool operator==(const StaticKey&) const = default;
   };
 
@@ -938,7 +942,7 @@ struct Renderer::Impl {
         k.transparent != list.transparent || k.views.size() != list.views.size())
       return false;
     for (std::size_t i = 0; i < k.views.size(); ++i)
-      if (!(k.views[i] == withoutShadowBox(list.views[i]))) return false;
+      if (k.stale[i] || !(k.views[i] == withoutShadowBox(list.views[i]))) return false;
     return sameItems(k.meshes, list.meshes) && sameItems(k.arrows, list.arrows) &&
            sameItems(k.polylines, list.polylines) && sameItems(k.labels, list.labels);
   }
@@ -962,6 +966,7 @@ struct Renderer::Impl {
     k.samples = std::max(1, list.msaaSamples);
     k.transparent = list.transparent;
     for (const View& v : list.views) k.views.push_back(withoutShadowBox(v));
+    k.stale.assign(list.views.size(), false);
     for (const MeshItem& m : list.meshes)
       if (!m.dynamic) k.meshes.push_back(m);
     for (const ArrowItem& a : list.arrows)
@@ -1125,13 +1130,19 @@ struct Renderer::Impl {
     }
   }
 
-  std::vector<PixelRect> dirtyRects(const DrawList& list, const std::vector<ViewItems>& perView) {
+  // A fresh view (see freshViews) is dirty whole.
+  std::vector<PixelRect> dirtyRects(const DrawList& list, const std::vector<ViewItems>& perView,
+                                    const std::vector<bool>& fresh) {
     TileGrid grid(list.width, list.height);
     auto add = [&](const PixelRect& r) { grid.add(r); };
     std::vector<PixelRect> meshRects;
     for (std::size_t i = 0; i < list.views.size(); ++i) {
       const View& v = list.views[i];
       const int index = static_cast<int>(i);
+      if (fresh[i]) {
+        add(PixelRect{v.x, v.y, v.x + v.width, v.y + v.height});
+        continue;
+      }
       const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
       for (const Drawable& d : perView[i].items) {
         if (d.dynamic) {
@@ -1191,19 +1202,50 @@ struct Renderer::Impl {
   // and new bounds of a changed label or translucent mesh. The snapshot
   // (the static opaque meshes' samples) holds as it is. None: the layer must
   // be built again.
-  std::optional<std::vector<PixelRect>> layerChanges(const StaticKey& k, const DrawList& list) {
+  // The views a frame over the layer must draw whole: those whose camera
+  // (or light, backdrop, place) is not the key's, and the key's stale ones.
+  // None: the layer cannot serve this list at all (another size, another
+  // set of views).
+  static std::optional<std::vector<bool>> freshViews(const StaticKey& k, const DrawList& list) {
     if (k.width != list.width || k.height != list.height || k.samples != std::max(1, list.msaaSamples) ||
         k.transparent != list.transparent || k.views.size() != list.views.size())
       return std::nullopt;
+    std::vector<bool> fresh(k.views.size());
     for (std::size_t i = 0; i < k.views.size(); ++i)
-      if (!(k.views[i] == withoutShadowBox(list.views[i]))) return std::nullopt;
-    if (!sameItems(k.arrows, list.arrows)) return std::nullopt;
-    auto staticOf = [](const auto& items) {
-      std::vector<const typename std::decay_t<decltype(items)>::value_type*> out;
+      fresh[i] = k.stale[i] || !(k.views[i] == withoutShadowBox(list.views[i]));
+    return fresh;
+  }
+
+  // The items of a fresh view are not compared: that view is drawn whole.
+  std::optional<std::vector<PixelRect>> layerChanges(const StaticKey& k, const DrawList& list,
+                                                     const std::vector<bool>& fresh) {
+    auto compared = [&](const auto& item) {
+      return item.view < 0 || static_cast<std::size_t>(item.view) >= fresh.size() ||
+             !fresh[static_cast<std::size_t>(item.view)];
+    };
+    auto keptOf = [&](const auto& items) {
+      std::decay_t<decltype(items)> out;
       for (const auto& item : items)
-        if (!item.dynamic) out.push_back(&item);
+        if (compared(item)) out.push_back(item);
       return out;
     };
+    auto staticOf = [&](const auto& items) {
+      std::vector<const typename std::decay_t<decltype(items)>::value_type*> out;
+      for (const auto& item : items)
+        if (!item.dynamic && compared(item)) out.push_back(&item);
+      return out;
+    };
+    {
+      const auto keptArrows = keptOf(k.arrows);
+      const auto arrows = staticOf(list.arrows);
+      if (keptArrows.size() != arrows.size()) return std::nullopt;
+      for (std::size_t i = 0; i < arrows.size(); ++i)
+        if (!(keptArrows[i] == *arrows[i])) return std::nullopt;
+    }
+    StaticKey kept;
+    kept.meshes = keptOf(k.meshes);
+    kept.polylines = keptOf(k.polylines);
+    kept.labels = keptOf(k.labels);
     auto viewOf = [&](int index) -> std::optional<std::pair<const View*, glm::mat4>> {
       if (index < 0 || static_cast<std::size_t>(index) >= list.views.size()) return std::nullopt;
       const View& v = list.views[static_cast<std::size_t>(index)];
@@ -1215,7 +1257,7 @@ struct Renderer::Impl {
     // Meshes: an opaque one is in the snapshot and must stay as it is.
     const auto meshes = staticOf(list.meshes);
     const auto meshPartner = alignItems(
-        k.meshes, meshes,
+        kept.meshes, meshes,
         [](const MeshItem& a, const MeshItem& b) {
           return a == b || (a.view == b.view && a.material.opacity < 1.0f && b.material.opacity < 1.0f);
         },
@@ -1231,18 +1273,18 @@ struct Renderer::Impl {
     };
     for (std::size_t j = 0; j < meshes.size(); ++j) {
       const int i = meshPartner[j];
-      if (i >= 0 && k.meshes[static_cast<std::size_t>(i)] == *meshes[j]) continue;
-      if (!addMesh(*meshes[j]) || (i >= 0 && !addMesh(k.meshes[static_cast<std::size_t>(i)]))) return std::nullopt;
+      if (i >= 0 && kept.meshes[static_cast<std::size_t>(i)] == *meshes[j]) continue;
+      if (!addMesh(*meshes[j]) || (i >= 0 && !addMesh(kept.meshes[static_cast<std::size_t>(i)]))) return std::nullopt;
     }
-    for (std::size_t i = 0; i < k.meshes.size(); ++i)
-      if (!keptPaired[i] && !addMesh(k.meshes[i])) return std::nullopt;
+    for (std::size_t i = 0; i < kept.meshes.size(); ++i)
+      if (!keptPaired[i] && !addMesh(kept.meshes[i])) return std::nullopt;
 
     // Lines: a pair with the same look whose points share a prefix (a line
     // that grew or shrank) differs only from the last shared point on (round
     // joins: a segment's capsule ends at its points).
     const auto lines = staticOf(list.polylines);
     const auto linePartner = alignItems(
-        k.polylines, lines,
+        kept.polylines, lines,
         [](const PolylineItem& a, const PolylineItem& b) {
           return a.view == b.view && a.color == b.color && a.widthPx == b.widthPx && a.depthTested == b.depthTested;
         },
@@ -1257,7 +1299,7 @@ struct Renderer::Impl {
         addLine(now, 0);
         continue;
       }
-      const PolylineItem& before = k.polylines[static_cast<std::size_t>(linePartner[j])];
+      const PolylineItem& before = kept.polylines[static_cast<std::size_t>(linePartner[j])];
       if (before == now) continue;
       const std::size_t shared = std::min(before.points.size(), now.points.size());
       const bool prefix = std::equal(before.points.begin(), before.points.begin() + std::ptrdiff_t(shared),
@@ -1266,13 +1308,13 @@ struct Renderer::Impl {
       addLine(before, first);
       addLine(now, first);
     }
-    for (std::size_t i = 0; i < k.polylines.size(); ++i)
-      if (!keptPaired[i]) addLine(k.polylines[i], 0);
+    for (std::size_t i = 0; i < kept.polylines.size(); ++i)
+      if (!keptPaired[i]) addLine(kept.polylines[i], 0);
 
     // Labels: old and new bounds of each that changed, came or went.
     const auto labels = staticOf(list.labels);
     const auto labelPartner =
-        alignItems(k.labels, labels, [](const LabelItem& a, const LabelItem& b) { return a.view == b.view; }, keptPaired);
+        alignItems(kept.labels, labels, [](const LabelItem& a, const LabelItem& b) { return a.view == b.view; }, keptPaired);
     auto addLabel = [&](const LabelItem& l) {
       if (l.view < 0) {
         grid.add(labelBounds(l, list, nullptr, glm::mat4(1.0f)));
@@ -1282,12 +1324,12 @@ struct Renderer::Impl {
     };
     for (std::size_t j = 0; j < labels.size(); ++j) {
       const int i = labelPartner[j];
-      if (i >= 0 && k.labels[static_cast<std::size_t>(i)] == *labels[j]) continue;
+      if (i >= 0 && kept.labels[static_cast<std::size_t>(i)] == *labels[j]) continue;
       addLabel(*labels[j]);
-      if (i >= 0) addLabel(k.labels[static_cast<std::size_t>(i)]);
+      if (i >= 0) addLabel(kept.labels[static_cast<std::size_t>(i)]);
     }
-    for (std::size_t i = 0; i < k.labels.size(); ++i)
-      if (!keptPaired[i]) addLabel(k.labels[i]);
+    for (std::size_t i = 0; i < kept.labels.size(); ++i)
+      if (!keptPaired[i]) addLabel(kept.labels[i]);
     return grid.rects();
   }
 
@@ -1396,11 +1438,13 @@ struct Renderer::Impl {
 
   // A frame over the retained layer: its image, with the dirty rectangles
   // redrawn from the snapshot on.
-  void drawOverLayer(const DrawList& list, const std::vector<ViewItems>& perView, media::Image& image) {
-    const std::vector<PixelRect> rects = dirtyRects(list, perView);
+  void drawOverLayer(const DrawList& list, const std::vector<ViewItems>& perView, const std::vector<bool>& fresh,
+                     media::Image& image) {
+    const std::vector<PixelRect> rects = dirtyRects(list, perView, fresh);
     stats.retainedPixels += static_cast<long long>(list.width) * list.height;
+    for (const bool f : fresh) stats.freshViews += f ? 1 : 0;
     image.rgba = layerImage.rgba;  // same size: copies into the existing storage
-    redrawRects(list, perView, rects, Items::All, image);
+    redrawRects(list, perView, rects, Items::All, fresh, image);
     long long area = 0;
     for (const PixelRect& r : rects) area += static_cast<long long>(r.x1 - r.x0) * (r.y1 - r.y0);
     stats.redrawnPixels += area;
@@ -1410,15 +1454,20 @@ struct Renderer::Impl {
   // rectangles redrawn from the snapshot with the static items alone, as
   // buildLayer draws them whole. A checkpoint of a growing line then costs
   // about a frame over the layer instead of a frame drawn whole.
-  void updateLayer(const DrawList& list, const std::vector<ViewItems>& perView, const std::vector<PixelRect>& rects) {
-    redrawRects(list, perView, rects, Items::StaticOnly, layerImage);
+  // A fresh view is not drawn: its pixels in the layer become stale.
+  void updateLayer(const DrawList& list, const std::vector<ViewItems>& perView, const std::vector<PixelRect>& rects,
+                   const std::vector<bool>& fresh) {
+    redrawRects(list, perView, rects, Items::StaticOnly, fresh, layerImage);
     ++stats.layerUpdates;
   }
 
   // Redraws `rects` (disjoint) of `image` from the snapshot on: the
   // dynamic opaque meshes when `which` takes them, then every later step.
+  // A fresh view (its rectangle among `rects`) is cleared and drawn whole
+  // instead, exactly as a whole frame draws it, when `which` takes the
+  // dynamic items; a layer's update leaves it alone.
   void redrawRects(const DrawList& list, const std::vector<ViewItems>& perView, const std::vector<PixelRect>& rects,
-                   Items which, media::Image& image) {
+                   Items which, const std::vector<bool>& fresh, media::Image& image) {
     if (rects.empty()) return;
     // The rectangles are disjoint: all copies first, then all draws, so the
     // binned scene is not flushed between them.
@@ -1446,6 +1495,19 @@ struct Renderer::Impl {
     for (std::size_t i = 0; i < list.views.size(); ++i) {
       const View& v = list.views[i];
       const PixelRect area{v.x, v.y, v.x + v.width, v.y + v.height};
+      if (fresh[i]) {
+        if (which == Items::StaticOnly) continue;
+        // A scissored clear (the view's rectangle): the same values as the
+        // whole frame's one clear.
+        beginView(list, v, perView[i], nullptr);
+        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+        glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
+        drawOpaque(perView[i], Items::StaticOnly);
+        drawOpaque(perView[i], Items::DynamicOnly);
+        drawRest(list, static_cast<int>(i), perView[i], Items::All);
+        allBounds = unite(allBounds, area);
+        continue;
+      }
       for (const PixelRect& island : separatedIslands(rects, area)) {
         allBounds = unite(allBounds, island);
         islandRects.clear();
@@ -1500,20 +1562,37 @@ struct Renderer::Impl {
     // and only static content changed (a growing line reached a checkpoint,
     // a caption changed): a new layer is built at once. Otherwise one is
     // built when a second frame shares it.
+    //
+    // A view whose camera moved while another held (a follow camera beside
+    // a fixed twin) is "fresh": drawn whole inside a frame over the layer,
+    // while the views that held use the layer.
     bool overLayer = false;
+    std::vector<bool> fresh(list.views.size(), false);
     if (retainLayers && viewsDisjoint(list)) {
+      // Whether `key` serves this list: some view held, and the held views'
+      // static items are the key's or changed only as layerChanges allows.
       std::optional<std::vector<PixelRect>> changes;
+      auto serves = [&](const StaticKey& key) {
+        const std::optional<std::vector<bool>> f = freshViews(key, list);
+        if (!f || std::find(f->begin(), f->end(), false) == f->end()) return false;
+        changes = layerChanges(key, list, *f);
+        if (changes) fresh = *f;
+        return changes.has_value();
+      };
       if (layerKey && sameStatic(*layerKey, list)) {
         overLayer = true;
-      } else if (layerKey && (changes = layerChanges(*layerKey, list))) {
-        updateLayer(list, perView, *changes);
+      } else if (layerKey && serves(*layerKey)) {
+        if (!changes->empty()) updateLayer(list, perView, *changes, fresh);
+        std::vector<bool> stale = fresh;
         layerKey = staticKeyOf(list);
+        layerKey->stale = std::move(stale);
         pendingKey.reset();
         overLayer = true;
-      } else if ((pendingKey && sameStatic(*pendingKey, list)) || lastFrameOverLayer) {
+      } else if ((pendingKey && serves(*pendingKey) && changes->empty()) || lastFrameOverLayer) {
         buildLayer(list, perView);
         layerKey = staticKeyOf(list);
         pendingKey.reset();
+        fresh.assign(list.views.size(), false);
         overLayer = true;
       } else {
         pendingKey = staticKeyOf(list);
@@ -1521,7 +1600,7 @@ struct Renderer::Impl {
     }
     lastFrameOverLayer = overLayer;
     if (overLayer) {
-      drawOverLayer(list, perView, image);
+      drawOverLayer(list, perView, fresh, image);
       ++stats.retainedFrames;
     } else {
       clearScene(list);

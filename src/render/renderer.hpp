@@ -24,6 +24,7 @@ struct RenderStats {
   long long wholeFrames = 0;     // drawn whole (a still, a camera move, a span's first frame)
   long long layerBuilds = 0;     // retained layers built
   long long layerUpdates = 0;    // retained layers brought up to date in place (only static lines or labels changed)
+  long long freshViews = 0;      // views drawn whole in frames over a layer (their camera moved, another's held)
   long long retainedFrames = 0;  // drawn over a retained layer
   long long redrawnPixels = 0;   // in those frames' rectangles, summed
   long long retainedPixels = 0;  // those frames' pixels, summed

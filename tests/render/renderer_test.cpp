@@ -511,6 +511,51 @@ TEST_F(RendererTest, RetainedLayerUpdatedInPlaceWhenStaticLinesOrLabelsChange) {
   EXPECT_EQ(shuffled.stats().layerUpdates, before.layerUpdates);
 }
 
+// A camera that follows the ball beside a twin whose camera holds: the
+// ball's view is "fresh" (drawn whole inside a frame over the layer), the
+// twin's view uses the layer, and its static line that grows (with the
+// caption that changes) brings the layer up to date meanwhile.
+DrawList followFrame(int k) {
+  DrawList list = checkpointFrame(k);
+  View& ball = list.views[0];
+  ball.camera.position = {0.25f * float(k), -4.0f, 3.0f};
+  ball.camera.viewFromWorld = glm::lookAt(ball.camera.position, glm::vec3(0.25f * float(k), 0, 0), glm::vec3(0, 0, 1));
+  PolylineItem twinTrail;  // settles every second frame, as the Bloch trail does at its checkpoints
+  twinTrail.view = 1;
+  twinTrail.color = {0.9f, 0.2f, 0.2f, 1.0f};
+  twinTrail.depthTested = false;
+  for (int j = 0; j <= k - k % 2; ++j) twinTrail.points.push_back({0.4f * float(j) - 1.0f, 0.3f * float(j % 2), 0.0f});
+  list.polylines.push_back(twinTrail);
+  return list;
+}
+
+TEST_F(RendererTest, AViewWhoseCameraMovesIsDrawnWholeBesideALayer) {
+  constexpr int kFrames = 6;
+  std::vector<media::Image> whole(kFrames);
+  Renderer plain(*context_, ShaderLibrary{});
+  plain.setRetainLayers(false);
+  for (int k = 0; k < kFrames; ++k) whole[k] = plain.render(followFrame(k));
+  Renderer inOrder(*context_, ShaderLibrary{});
+  for (int k = 0; k < kFrames; ++k)
+    EXPECT_TRUE(sameBytes(inOrder.render(followFrame(k)), whole[k])) << "frame " << k;
+  // Frame 0 whole; frame 1 builds the layer (the twin held); frames 2…5
+  // draw the ball's view whole over it, updating it at 2, 3 and 4 (at 5
+  // only the ball's view gained a label).
+  EXPECT_EQ(inOrder.stats().wholeFrames, 1);
+  EXPECT_EQ(inOrder.stats().layerBuilds, 1);
+  EXPECT_EQ(inOrder.stats().layerUpdates, 3);
+  EXPECT_EQ(inOrder.stats().freshViews, kFrames - 2);
+  Renderer shuffled(*context_, ShaderLibrary{});
+  for (int k : {4, 4, 1, 5, 0, 3, 2, 4, 1, 5})
+    EXPECT_TRUE(sameBytes(shuffled.render(followFrame(k)), whole[k])) << "frame " << k;
+  EXPECT_EQ(shuffled.stats().layerBuilds, 1);
+  EXPECT_EQ(shuffled.stats().freshViews, 8);
+  // The same frame again (the key now names its camera, but the layer holds
+  // the ball's view as frame 4 drew it: stale), and the layer's own frame.
+  EXPECT_TRUE(sameBytes(shuffled.render(followFrame(5)), whole[5]));
+  EXPECT_TRUE(sameBytes(shuffled.render(followFrame(4)), whole[4]));
+}
+
 TEST(ShaderLibrary, ShadersAreEmbeddedAndOverridable) {
   EXPECT_NE(ShaderLibrary{}.source("mesh.frag").find("#version 450 core"), std::string::npos);
   EXPECT_THROW((void)ShaderLibrary{"/nonexistent-shader-dir"}.source("mesh.frag"), Error);

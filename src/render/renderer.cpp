@@ -19,6 +19,7 @@
 #include "render/font_atlas.hpp"
 #include "render/gl.hpp"
 #include "render/mesh_builders.hpp"
+#include "render/layer_key.hpp"
 #include "render/screen_bounds.hpp"
 
 namespace rollspin::render {
@@ -911,73 +912,6 @@ struct Renderer::Impl {
   // samples, so both ways give the same bytes: a frame does not depend on
   // the frames before it (tested), and the first frame of a span is simply
   // drawn whole.
-  struct StaticKey {
-    int width = 0, height = 0, samples = 0;
-    bool transparent = false;
-    std::vector<View> views;
-    std::vector<MeshItem> meshes;
-    std::vector<ArrowItem> arrows;
-    std::vector<PolylineItem> polylines;
-    std::vector<LabelItem> labels;
-    // Views whose pixels in the layer are not the key's (a frame drew them
-    // whole with another camera and an update may have drawn over them):
-    // such a view is drawn whole in every frame until a layer is built.
-    std::vector<bool> stale;
-    bool operator==(const StaticKey&) const = default;
-  };
-
-  // The shadow box (which follows the ball) shapes only the shadow map,
-  // which a layer does not use: the re-shade is redrawn per frame.
-  static View withoutShadowBox(View v) {
-    v.light.shadowCenter = glm::vec3(0.0f);
-    v.light.shadowRadius = 0.0f;
-    v.light.shadowSoftness = 0.0f;
-    return v;
-  }
-
-  // Whether `list`'s static items are the key's, compared in place: a
-  // frame over a layer pays no copy of the static lines and labels.
-  static bool sameStatic(const StaticKey& k, const DrawList& list) {
-    if (k.width != list.width || k.height != list.height || k.samples != std::max(1, list.msaaSamples) ||
-        k.transparent != list.transparent || k.views.size() != list.views.size())
-      return false;
-    for (std::size_t i = 0; i < k.views.size(); ++i)
-      if (k.stale[i] || !(k.views[i] == withoutShadowBox(list.views[i]))) return false;
-    return sameItems(k.meshes, list.meshes) && sameItems(k.arrows, list.arrows) &&
-           sameItems(k.polylines, list.polylines) && sameItems(k.labels, list.labels);
-  }
-
-  // Whether `items`' static ones are `kept`, in order.
-  template <typename Item>
-  static bool sameItems(const std::vector<Item>& kept, const std::vector<Item>& items) {
-    std::size_t n = 0;
-    for (const Item& item : items) {
-      if (item.dynamic) continue;
-      if (n == kept.size() || !(kept[n] == item)) return false;
-      ++n;
-    }
-    return n == kept.size();
-  }
-
-  static StaticKey staticKeyOf(const DrawList& list) {
-    StaticKey k;
-    k.width = list.width;
-    k.height = list.height;
-    k.samples = std::max(1, list.msaaSamples);
-    k.transparent = list.transparent;
-    for (const View& v : list.views) k.views.push_back(withoutShadowBox(v));
-    k.stale.assign(list.views.size(), false);
-    for (const MeshItem& m : list.meshes)
-      if (!m.dynamic) k.meshes.push_back(m);
-    for (const ArrowItem& a : list.arrows)
-      if (!a.dynamic) k.arrows.push_back(a);
-    for (const PolylineItem& p : list.polylines)
-      if (!p.dynamic) k.polylines.push_back(p);
-    for (const LabelItem& l : list.labels)
-      if (!l.dynamic) k.labels.push_back(l);
-    return k;
-  }
-
   // The retained layer: (a) in snapshotFbo, (b) in layerImage; valid while
   // `layerKey` matches. `pendingKey`: the last frame drawn whole, so a layer
   // is built only when a second frame shares it (a moving camera pays
@@ -1099,37 +1033,6 @@ struct Renderer::Impl {
   // rectangles of whole tiles: the tiles that any dynamic item (a line
   // segment by segment, so that a long trail dirties a thin band along
   // itself) or a receiver's shadow box can touch.
-  static constexpr int kTile = 32;
-  struct TileGrid {
-    int cols, rows, width, height;
-    std::vector<std::uint8_t> dirty;
-    TileGrid(int w, int h)
-        : cols((w + kTile - 1) / kTile), rows((h + kTile - 1) / kTile), width(w), height(h),
-          dirty(static_cast<std::size_t>(cols) * rows, 0) {}
-    void add(const PixelRect& r) {
-      if (r.empty()) return;
-      for (int ty = std::max(0, r.y0 / kTile); ty <= std::min(rows - 1, (r.y1 - 1) / kTile); ++ty)
-        for (int tx = std::max(0, r.x0 / kTile); tx <= std::min(cols - 1, (r.x1 - 1) / kTile); ++tx)
-          dirty[static_cast<std::size_t>(ty) * cols + tx] = 1;
-    }
-    [[nodiscard]] std::vector<PixelRect> rects() const { return rectsOfTiles(dirty, cols, rows, kTile, width, height); }
-  };
-
-  // The bounds of a polyline's segments from `first` on, one by one. A
-  // segment draws the pixels within half a width of it (a capsule,
-  // line.geom/line.frag), inside this margin around its end points; one
-  // with an end behind the eye is not drawn (line.geom).
-  static void addSegmentBounds(const PolylineItem& p, const View& v, const glm::mat4& clipFromWorld,
-                               std::size_t first, TileGrid& grid) {
-    const float margin = 0.7072f * p.widthPx + 2.0f;
-    for (std::size_t k = first; k + 1 < p.points.size(); ++k) {
-      const glm::vec3 ends[2] = {p.points[k], p.points[k + 1]};
-      if ((clipFromWorld * glm::vec4(ends[0], 1.0f)).w <= 1e-6f || (clipFromWorld * glm::vec4(ends[1], 1.0f)).w <= 1e-6f)
-        continue;
-      grid.add(screenBounds(v, clipFromWorld, ends, 2, margin));
-    }
-  }
-
   // A fresh view (see freshViews) is dirty whole.
   std::vector<PixelRect> dirtyRects(const DrawList& list, const std::vector<ViewItems>& perView,
                                     const std::vector<bool>& fresh) {
@@ -1163,174 +1066,16 @@ struct Renderer::Impl {
     return grid.rects();
   }
 
-  // Pairs the kept static items with the new ones, in order (a longest
-  // common subsequence under `pairs`): an item inserted or removed in the
-  // middle (a line's first settled prefix, a new caption line) leaves the
-  // others paired. Returns, for each new item, its partner's index or -1;
-  // `keptPaired` says which kept items found one.
-  template <typename Item, typename Pairs>
-  static std::vector<int> alignItems(const std::vector<Item>& kept, const std::vector<const Item*>& now, Pairs pairs,
-                                     std::vector<bool>& keptPaired) {
-    const std::size_t n = kept.size(), m = now.size();
-    std::vector<int> best((n + 1) * (m + 1), 0);  // best[i*(m+1)+j]: LCS of kept[i…], now[j…]
-    for (std::size_t i = n; i-- > 0;)
-      for (std::size_t j = m; j-- > 0;)
-        best[i * (m + 1) + j] = pairs(kept[i], *now[j]) ? best[(i + 1) * (m + 1) + j + 1] + 1
-                                                        : std::max(best[(i + 1) * (m + 1) + j], best[i * (m + 1) + j + 1]);
-    std::vector<int> partner(m, -1);
-    keptPaired.assign(n, false);
-    for (std::size_t i = 0, j = 0; i < n && j < m;) {
-      if (pairs(kept[i], *now[j]) && best[i * (m + 1) + j] == best[(i + 1) * (m + 1) + j + 1] + 1) {
-        partner[j] = static_cast<int>(i);
-        keptPaired[i] = true;
-        ++i, ++j;
-      } else if (best[(i + 1) * (m + 1) + j] >= best[i * (m + 1) + j + 1]) {
-        ++i;
-      } else {
-        ++j;
-      }
-    }
-    return partner;
-  }
-
-  // When the layer's views, static arrows and static opaque meshes hold and
-  // only static lines, labels or translucent meshes changed (a growing line
-  // reached its next checkpoint, a caption or a text plate changed), the
-  // pixels that can differ between the kept layer and the new one: the
-  // segments past the common prefix of a line that grew or shrank (all
-  // segments of a line otherwise changed, added or removed), and the old
-  // and new bounds of a changed label or translucent mesh. The snapshot
-  // (the static opaque meshes' samples) holds as it is. None: the layer must
-  // be built again.
-  // The views a frame over the layer must draw whole: those whose camera
-  // (or light, backdrop, place) is not the key's, and the key's stale ones.
-  // None: the layer cannot serve this list at all (another size, another
-  // set of views).
-  static std::optional<std::vector<bool>> freshViews(const StaticKey& k, const DrawList& list) {
-    if (k.width != list.width || k.height != list.height || k.samples != std::max(1, list.msaaSamples) ||
-        k.transparent != list.transparent || k.views.size() != list.views.size())
-      return std::nullopt;
-    std::vector<bool> fresh(k.views.size());
-    for (std::size_t i = 0; i < k.views.size(); ++i)
-      fresh[i] = k.stale[i] || !(k.views[i] == withoutShadowBox(list.views[i]));
-    return fresh;
-  }
-
-  // The items of a fresh view are not compared: that view is drawn whole.
-  std::optional<std::vector<PixelRect>> layerChanges(const StaticKey& k, const DrawList& list,
-                                                     const std::vector<bool>& fresh) {
-    auto compared = [&](const auto& item) {
-      return item.view < 0 || static_cast<std::size_t>(item.view) >= fresh.size() ||
-             !fresh[static_cast<std::size_t>(item.view)];
+  // What layerChanges needs to know of the items' extents.
+  ItemBounds itemBounds(const DrawList& list) {
+    ItemBounds b;
+    b.mesh = [this](const MeshItem& m, const View& v, const glm::mat4& clipFromWorld, std::vector<PixelRect>& out) {
+      meshBounds(v, clipFromWorld, Drawable{m.mesh, m.worldFromModel, &m.material, false}, out);
     };
-    auto keptOf = [&](const auto& items) {
-      std::decay_t<decltype(items)> out;
-      for (const auto& item : items)
-        if (compared(item)) out.push_back(item);
-      return out;
+    b.label = [this, &list](const LabelItem& l, const View* v, const glm::mat4& clipFromWorld) {
+      return labelBounds(l, list, v, clipFromWorld);
     };
-    auto staticOf = [&](const auto& items) {
-      std::vector<const typename std::decay_t<decltype(items)>::value_type*> out;
-      for (const auto& item : items)
-        if (!item.dynamic && compared(item)) out.push_back(&item);
-      return out;
-    };
-    {
-      const auto keptArrows = keptOf(k.arrows);
-      const auto arrows = staticOf(list.arrows);
-      if (keptArrows.size() != arrows.size()) return std::nullopt;
-      for (std::size_t i = 0; i < arrows.size(); ++i)
-        if (!(keptArrows[i] == *arrows[i])) return std::nullopt;
-    }
-    StaticKey kept;
-    kept.meshes = keptOf(k.meshes);
-    kept.polylines = keptOf(k.polylines);
-    kept.labels = keptOf(k.labels);
-    auto viewOf = [&](int index) -> std::optional<std::pair<const View*, glm::mat4>> {
-      if (index < 0 || static_cast<std::size_t>(index) >= list.views.size()) return std::nullopt;
-      const View& v = list.views[static_cast<std::size_t>(index)];
-      return std::make_pair(&v, v.camera.clipFromView * v.camera.viewFromWorld);
-    };
-    TileGrid grid(list.width, list.height);
-    std::vector<bool> keptPaired;
-
-    // Meshes: an opaque one is in the snapshot and must stay as it is.
-    const auto meshes = staticOf(list.meshes);
-    const auto meshPartner = alignItems(
-        kept.meshes, meshes,
-        [](const MeshItem& a, const MeshItem& b) {
-          return a == b || (a.view == b.view && a.material.opacity < 1.0f && b.material.opacity < 1.0f);
-        },
-        keptPaired);
-    auto addMesh = [&](const MeshItem& m) {
-      const auto v = viewOf(m.view);
-      if (!v || !m.mesh) return true;  // drawn in no view: nothing to redraw
-      if (m.material.opacity >= 1.0f) return false;
-      std::vector<PixelRect> rects;
-      meshBounds(*v->first, v->second, Drawable{m.mesh, m.worldFromModel, &m.material, false}, rects);
-      for (const PixelRect& r : rects) grid.add(r);
-      return true;
-    };
-    for (std::size_t j = 0; j < meshes.size(); ++j) {
-      const int i = meshPartner[j];
-      if (i >= 0 && kept.meshes[static_cast<std::size_t>(i)] == *meshes[j]) continue;
-      if (!addMesh(*meshes[j]) || (i >= 0 && !addMesh(kept.meshes[static_cast<std::size_t>(i)]))) return std::nullopt;
-    }
-    for (std::size_t i = 0; i < kept.meshes.size(); ++i)
-      if (!keptPaired[i] && !addMesh(kept.meshes[i])) return std::nullopt;
-
-    // Lines: a pair with the same look whose points share a prefix (a line
-    // that grew or shrank) differs only from the last shared point on (round
-    // joins: a segment's capsule ends at its points).
-    const auto lines = staticOf(list.polylines);
-    const auto linePartner = alignItems(
-        kept.polylines, lines,
-        [](const PolylineItem& a, const PolylineItem& b) {
-          return a.view == b.view && a.color == b.color && a.widthPx == b.widthPx && a.depthTested == b.depthTested;
-        },
-        keptPaired);
-    auto addLine = [&](const PolylineItem& p, std::size_t first) {
-      const auto v = viewOf(p.view);
-      if (v) addSegmentBounds(p, *v->first, v->second, first, grid);
-    };
-    for (std::size_t j = 0; j < lines.size(); ++j) {
-      const PolylineItem& now = *lines[j];
-      if (linePartner[j] < 0) {
-        addLine(now, 0);
-        continue;
-      }
-      const PolylineItem& before = kept.polylines[static_cast<std::size_t>(linePartner[j])];
-      if (before == now) continue;
-      const std::size_t shared = std::min(before.points.size(), now.points.size());
-      const bool prefix = std::equal(before.points.begin(), before.points.begin() + std::ptrdiff_t(shared),
-                                     now.points.begin());
-      const std::size_t first = prefix && shared > 0 ? shared - 1 : 0;
-      addLine(before, first);
-      addLine(now, first);
-    }
-    for (std::size_t i = 0; i < kept.polylines.size(); ++i)
-      if (!keptPaired[i]) addLine(kept.polylines[i], 0);
-
-    // Labels: old and new bounds of each that changed, came or went.
-    const auto labels = staticOf(list.labels);
-    const auto labelPartner =
-        alignItems(kept.labels, labels, [](const LabelItem& a, const LabelItem& b) { return a.view == b.view; }, keptPaired);
-    auto addLabel = [&](const LabelItem& l) {
-      if (l.view < 0) {
-        grid.add(labelBounds(l, list, nullptr, glm::mat4(1.0f)));
-      } else if (const auto v = viewOf(l.view)) {
-        grid.add(labelBounds(l, list, v->first, v->second));
-      }
-    };
-    for (std::size_t j = 0; j < labels.size(); ++j) {
-      const int i = labelPartner[j];
-      if (i >= 0 && kept.labels[static_cast<std::size_t>(i)] == *labels[j]) continue;
-      addLabel(*labels[j]);
-      if (i >= 0) addLabel(kept.labels[static_cast<std::size_t>(i)]);
-    }
-    for (std::size_t i = 0; i < kept.labels.size(); ++i)
-      if (!keptPaired[i]) addLabel(kept.labels[i]);
-    return grid.rects();
+    return b;
   }
 
   PixelRect labelBounds(const LabelItem& l, const DrawList& list, const View* v, const glm::mat4& clipFromWorld) {
@@ -1575,7 +1320,7 @@ struct Renderer::Impl {
       auto serves = [&](const StaticKey& key) {
         const std::optional<std::vector<bool>> f = freshViews(key, list);
         if (!f || std::find(f->begin(), f->end(), false) == f->end()) return false;
-        changes = layerChanges(key, list, *f);
+        changes = layerChanges(key, list, *f, itemBounds(list));
         if (changes) fresh = *f;
         return changes.has_value();
       };

@@ -70,6 +70,10 @@ CliResult runRollspin(const std::vector<std::string>& args, const std::filesyste
   auto nameOf = [](const std::string& entry) { return entry.substr(0, entry.find('=')); };
   std::set<std::string> replaced;
   for (const auto& e : environment) replaced.insert(nameOf(e));
+  // A device the caller's shell picks (ROLLSPIN_EGL_DEVICE=0 for Mesa's
+  // software device, say) is not passed on: the tests name the devices they
+  // mean, and the EGL pass chooses the backend, not the device.
+  replaced.insert("ROLLSPIN_EGL_DEVICE");
   for (char** e = environ; *e != nullptr; ++e)
     if (!replaced.contains(nameOf(*e))) envStore.emplace_back(*e);
   envStore.insert(envStore.end(), environment.begin(), environment.end());

@@ -69,7 +69,11 @@ void BM_ClipFrames1080p(benchmark::State& state) {
   std::vector<std::string> overrides{"render.width=1920", "render.height=1080", "render.layout=side-by-side"};
   if (state.range(0) == 1) overrides.emplace_back("render.follow=true");
   if (const char* extra = std::getenv("ROLLSPIN_BENCH_SET")) overrides.emplace_back(extra);
-  const scene::SceneSpec spec = scene::loadSceneFile(ROLLSPIN_SOURCE_DIR "/scenes/lollipop.toml", overrides);
+  // ROLLSPIN_BENCH_SCENE=NAME: another scene of scenes/ (torus, say), for experiments.
+  const char* sceneName = std::getenv("ROLLSPIN_BENCH_SCENE");
+  const std::string scenePath =
+      std::string(ROLLSPIN_SOURCE_DIR "/scenes/") + (sceneName != nullptr ? sceneName : "lollipop") + ".toml";
+  const scene::SceneSpec spec = scene::loadSceneFile(scenePath, overrides);
   const app::RollingModel model = model::buildModel(spec);
   std::vector<motion::FrameOrientations> frames;
   for (int k = 0; k < 24; ++k)

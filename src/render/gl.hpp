@@ -72,6 +72,7 @@
   X(glGetString) \
   X(glGetUniformLocation) \
   X(glLinkProgram) \
+  X(glMultiDrawElements) \
   X(glPixelStorei) \
   X(glPolygonOffset) \
   X(glReadBuffer) \
@@ -157,6 +158,7 @@ ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DECLARE)
 #define glGetString ::rollspin::render::gl_api::glGetString
 #define glGetUniformLocation ::rollspin::render::gl_api::glGetUniformLocation
 #define glLinkProgram ::rollspin::render::gl_api::glLinkProgram
+#define glMultiDrawElements ::rollspin::render::gl_api::glMultiDrawElements
 #define glPixelStorei ::rollspin::render::gl_api::glPixelStorei
 #define glPolygonOffset ::rollspin::render::gl_api::glPolygonOffset
 #define glReadBuffer ::rollspin::render::gl_api::glReadBuffer

@@ -103,12 +103,24 @@ class Program {
   std::map<std::string, GLint> locations_;
 };
 
+// A run of a mesh's triangles, consecutive in its index buffer, and the
+// bounding box of their corners in model coordinates.
+struct MeshChunk {
+  GLsizei firstIndex = 0, indexCount = 0;
+  glm::vec3 lo{0.0f}, hi{0.0f};
+};
+
 struct GpuMesh {
   GLuint vao = 0, vbo = 0, ebo = 0;
   GLsizei indexCount = 0;
   glm::vec4 bound{0.0f};  // a bounding sphere in model coordinates: centre, radius
   glm::vec3 lo{0.0f}, hi{0.0f};  // the bounding box in model coordinates
+  std::vector<MeshChunk> chunks;  // the triangles in runs of kChunkTriangles, in index order
 };
+
+// Small enough that a run of a sphere's band spans a few degrees of it, large
+// enough that testing the runs costs little beside drawing them.
+constexpr std::size_t kChunkTriangles = 32;
 
 GpuMesh upload(const MeshData& m) {
   GpuMesh g;
@@ -142,6 +154,16 @@ GpuMesh upload(const MeshData& m) {
     float radius = 0.0f;
     for (const Vertex& v : m.vertices) radius = std::max(radius, glm::length(v.position - centre));
     g.bound = glm::vec4(centre, radius);
+  }
+  for (std::size_t first = 0; first + 3 <= m.indices.size(); first += 3 * kChunkTriangles) {
+    const std::size_t end = std::min(m.indices.size() - m.indices.size() % 3, first + 3 * kChunkTriangles);
+    MeshChunk c{static_cast<GLsizei>(first), static_cast<GLsizei>(end - first), m.vertices[m.indices[first]].position,
+                m.vertices[m.indices[first]].position};
+    for (std::size_t i = first; i < end; ++i) {
+      c.lo = glm::min(c.lo, m.vertices[m.indices[i]].position);
+      c.hi = glm::max(c.hi, m.vertices[m.indices[i]].position);
+    }
+    g.chunks.push_back(c);
   }
   return g;
 }
@@ -589,8 +611,48 @@ struct Renderer::Impl {
     }
     const GpuMesh& g = gpuMesh(d.mesh);
     glBindVertexArray(g.vao);
-    glDrawElements(GL_TRIANGLES, g.indexCount, GL_UNSIGNED_INT, nullptr);
+    if (drawClips == nullptr || clipView == nullptr || g.chunks.size() < 2) {
+      glDrawElements(GL_TRIANGLES, g.indexCount, GL_UNSIGNED_INT, nullptr);
+      return;
+    }
+    // Inside a retained frame's rectangles, only the runs of triangles whose
+    // screen bounds reach one: llvmpipe transforms, sets up and bins every
+    // triangle of a draw however much the scissor leaves of it (a surface's
+    // thousands for its re-shade box, the Bloch glass's for the twin's
+    // arrows). The runs left out cover no pixel of the rectangles, and the
+    // rest are drawn in their order: the rectangles' bytes do not change.
+    const glm::mat4 clipFromModel = viewUniforms.clipFromWorld * d.worldFromModel;
+    GLsizei runFirst = 0, runEnd = 0;  // indices [runFirst, runEnd) pending as one run
+    // The runs go to GL in one call: a draw call costs llvmpipe more than a
+    // run of triangles.
+    runCounts.clear();
+    runOffsets.clear();
+    auto flush = [&] {
+      if (runEnd > runFirst) {
+        runCounts.push_back(runEnd - runFirst);
+        runOffsets.push_back(reinterpret_cast<const void*>(static_cast<std::uintptr_t>(runFirst) * sizeof(std::uint32_t)));
+      }
+    };
+    for (const MeshChunk& c : g.chunks) {
+      glm::vec3 corners[8];
+      for (int k = 0; k < 8; ++k) corners[k] = glm::vec3(k & 1 ? c.hi.x : c.lo.x, k & 2 ? c.hi.y : c.lo.y, k & 4 ? c.hi.z : c.lo.z);
+      const PixelRect bounds = screenBounds(*clipView, clipFromModel, corners, 8, 2.0f);
+      bool reaches = false;
+      for (const PixelRect& r : *drawClips) reaches = reaches || overlaps(r, bounds);
+      if (!reaches) continue;
+      if (runEnd != c.firstIndex) {
+        flush();
+        runFirst = c.firstIndex;
+      }
+      runEnd = c.firstIndex + c.indexCount;
+    }
+    flush();
+    if (!runCounts.empty())
+      glMultiDrawElements(GL_TRIANGLES, runCounts.data(), GL_UNSIGNED_INT, runOffsets.data(),
+                          static_cast<GLsizei>(runCounts.size()));
   }
+  std::vector<GLsizei> runCounts;
+  std::vector<const void*> runOffsets;
 
   // Over a retained layer only the dirty rectangles are read back (see
   // drawOverLayer), so a polyline draws only the runs of segments whose
@@ -598,7 +660,10 @@ struct Renderer::Impl {
   // static lines (the whole path, the Bloch grid) are long. Segments are
   // independent quads, drawn in the same order either way: the bytes of the
   // dirty pixels do not change.
-  const std::vector<PixelRect>* lineClips = nullptr;
+  // The rectangles that a frame over the retained layer redraws, and their
+  // view, while it draws an island of them (meshes too, see drawMesh).
+  const std::vector<PixelRect>* drawClips = nullptr;
+  const View* clipView = nullptr;
   static constexpr std::size_t kLineRun = 32;
 
   void drawPolyline(const PolylineItem& p, const glm::mat4& clipFromWorld, const View& v) {
@@ -616,7 +681,7 @@ struct Renderer::Impl {
     glBindBuffer(GL_ARRAY_BUFFER, streamVbo);
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(p.points.size() * sizeof(glm::vec3)), p.points.data(),
                  GL_STREAM_DRAW);
-    if (lineClips == nullptr) {
+    if (drawClips == nullptr) {
       glDrawArrays(GL_LINE_STRIP, 0, static_cast<GLsizei>(p.points.size()));
       return;
     }
@@ -631,7 +696,7 @@ struct Renderer::Impl {
       const std::size_t last = std::min(first + kLineRun, p.points.size() - 1);
       const PixelRect bounds = screenBounds(v, clipFromWorld, &p.points[first], last - first + 1, margin);
       bool reaches = false;
-      for (const PixelRect& r : *lineClips) reaches = reaches || overlaps(r, bounds);
+      for (const PixelRect& r : *drawClips) reaches = reaches || overlaps(r, bounds);
       if (!reaches) continue;
       if (runEnd != first) {
         flush();
@@ -1259,10 +1324,12 @@ struct Renderer::Impl {
         for (const PixelRect& r : rects)
           if (overlaps(r, island)) islandRects.push_back(intersect(r, island));
         beginView(list, v, perView[i], &island);
+        drawClips = &islandRects;
+        clipView = &v;
         if (which != Items::StaticOnly) drawOpaque(perView[i], Items::DynamicOnly);
-        lineClips = &islandRects;
         drawRest(list, static_cast<int>(i), perView[i], which);
-        lineClips = nullptr;
+        drawClips = nullptr;
+        clipView = nullptr;
       }
     }
     for (const PixelRect& r : rects) allBounds = unite(allBounds, r);

@@ -5,9 +5,11 @@
 #include <filesystem>
 #include <cstdlib>
 #include <fstream>
+#include <string_view>
 
 #include "media/image_io.hpp"
 #include "support/cli_runner.hpp"
+#include "support/gl_machine.hpp"
 
 namespace rollspin {
 namespace {
@@ -65,6 +67,8 @@ TEST(RenderCli, ContextFailureExitsOne) {
   ::setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1);
   for (const auto& [backend, message] : {std::pair{"osmesa", "OSMesa could not create"},
                                          std::pair{"egl", "eglCreateContext (OpenGL 4.5 core)"}}) {
+    // A GPU's EGL driver ignores Mesa's cap: nothing to provoke there.
+    if (std::string_view(backend) == "egl" && test::eglDevicesHere().hardware) continue;
     const auto r = test::runRollspin({"render", scene("twin_only"), "--still", "-o", (dir / "a.png").string()}, {}, 0,
                                      {std::string("ROLLSPIN_GL=") + backend});
     EXPECT_EQ(r.exitCode, 1) << r.err;

@@ -302,6 +302,13 @@ ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
   return layout;
 }
 
+std::size_t wordsBeforeTheFirstNumber(const std::string& text) {
+  const std::size_t digit = text.find_first_of("0123456789");
+  if (digit == std::string::npos || digit == 0) return 0;
+  const std::size_t space = text.rfind(' ', digit - 1);
+  return space == std::string::npos ? 0 : space + 1;
+}
+
 void addTextBlock(render::DrawList& list, const TextBlock& block, glm::vec2 origin, int view) {
   if (block.lines.empty()) return;
   const render::View& v = list.views[static_cast<std::size_t>(view)];
@@ -344,6 +351,9 @@ void addTextBlock(render::DrawList& list, const TextBlock& block, glm::vec2 orig
     l.view = view;
     l.dynamic = line.live;  // running values are redrawn per frame over the retained layer
     l.text = line.text;
+    // The words before a running value's number ("s = ", "lab rotation
+    // angle = ") stay: a retained layer keeps them (left-aligned only).
+    if (line.live && !block.centred) l.staticPrefixBytes = wordsBeforeTheFirstNumber(line.text);
     // The anchor is the middle of the capital height.
     const float x = block.centred ? origin.x + 0.5f * (size.x - textWidthPx(line.text, line.sizePx, line.bold))
                                   : origin.x + pad;

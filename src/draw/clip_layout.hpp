@@ -93,8 +93,15 @@ ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
                       const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow,
                       double minWindow = 0.6);
 
+// The length in bytes of a running value's leading words, the text up to
+// the last space before its first digit ("s = " of "s = 3.78 of 18.85",
+// "ψ = " of "ψ = −521.5°": the sign may change); 0 with no digit or no
+// space before it.
+std::size_t wordsBeforeTheFirstNumber(const std::string& text);
+
 // Draws a placed block into `view` (whose camera must be set: the plate is
-// a world-space quad just inside its near plane).
+// a world-space quad just inside its near plane). A live line is a dynamic
+// label whose leading words are static (see LabelItem::staticPrefixBytes).
 void addTextBlock(render::DrawList& list, const TextBlock& block, glm::vec2 origin, int view);
 
 // Line step and padding, in em.

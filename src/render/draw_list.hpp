@@ -114,6 +114,11 @@ struct LabelItem {
   bool bold = false;
   int view = -1;
   bool dynamic = false;
+  // A dynamic label whose first bytes (whole words, "s = " of "s = 3.78")
+  // are the same in every frame: drawn left-aligned, they keep their place
+  // whatever follows, so a retained layer keeps them and a frame redraws
+  // only the rest (see staticPartOf). 0: the whole label is dynamic.
+  std::size_t staticPrefixBytes = 0;
   bool operator==(const LabelItem&) const = default;
 };
 

@@ -50,7 +50,26 @@ std::vector<int> alignItems(const std::vector<Item>& kept, const std::vector<con
   return partner;
 }
 
+// The labels a layer holds, in order (see staticPartOf).
+std::vector<LabelItem> staticLabelsOf(const std::vector<LabelItem>& labels) {
+  std::vector<LabelItem> out;
+  for (const LabelItem& l : labels)
+    if (auto part = staticPartOf(l)) out.push_back(std::move(*part));
+  return out;
+}
+
 }  // namespace
+
+std::optional<LabelItem> staticPartOf(const LabelItem& label) {
+  if (!label.dynamic) return label;
+  if (label.staticPrefixBytes == 0 || label.staticPrefixBytes >= label.text.size() || label.align != Align::Left)
+    return std::nullopt;
+  LabelItem part = label;
+  part.text.resize(label.staticPrefixBytes);
+  part.dynamic = false;
+  part.staticPrefixBytes = 0;
+  return part;
+}
 
 View withoutShadowBox(View v) {
   v.light.shadowCenter = glm::vec3(0.0f);
@@ -66,7 +85,7 @@ bool sameStatic(const StaticKey& k, const DrawList& list) {
   for (std::size_t i = 0; i < k.views.size(); ++i)
     if (k.stale[i] || !(k.views[i] == withoutShadowBox(list.views[i]))) return false;
   return sameItems(k.meshes, list.meshes) && sameItems(k.arrows, list.arrows) &&
-         sameItems(k.polylines, list.polylines) && sameItems(k.labels, list.labels);
+         sameItems(k.polylines, list.polylines) && k.labels == staticLabelsOf(list.labels);
 }
 
 
@@ -84,8 +103,7 @@ StaticKey staticKeyOf(const DrawList& list) {
     if (!a.dynamic) k.arrows.push_back(a);
   for (const PolylineItem& p : list.polylines)
     if (!p.dynamic) k.polylines.push_back(p);
-  for (const LabelItem& l : list.labels)
-    if (!l.dynamic) k.labels.push_back(l);
+  k.labels = staticLabelsOf(list.labels);
   return k;
 }
 
@@ -194,7 +212,11 @@ std::optional<std::vector<PixelRect>> layerChanges(const StaticKey& k, const Dra
     if (!keptPaired[i]) addLine(kept.polylines[i], 0);
 
   // Labels: old and new bounds of each that changed, came or went.
-  const auto labels = staticOf(list.labels);
+  std::vector<LabelItem> staticLabels;
+  for (LabelItem& l : staticLabelsOf(list.labels))
+    if (compared(l)) staticLabels.push_back(std::move(l));
+  std::vector<const LabelItem*> labels;
+  for (const LabelItem& l : staticLabels) labels.push_back(&l);
   const auto labelPartner =
       alignItems(kept.labels, labels, [](const LabelItem& a, const LabelItem& b) { return a.view == b.view; }, keptPaired);
   auto addLabel = [&](const LabelItem& l) {

@@ -48,6 +48,12 @@ struct StaticKey {
 
 [[nodiscard]] StaticKey staticKeyOf(const DrawList& list);
 
+// What of a label a retained layer holds: all of a static one, the leading
+// words of a left-aligned dynamic one with a static prefix (as a static
+// label of its own: laid out alone it puts its glyphs where the whole label
+// puts them), nothing of the rest.
+[[nodiscard]] std::optional<LabelItem> staticPartOf(const LabelItem& label);
+
 // The views a frame over the layer must draw whole: those whose camera
 // (or light, backdrop, place) is not the key's, and the key's stale ones.
 // None: the layer cannot serve this list at all (another size, another

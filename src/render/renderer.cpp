@@ -10,6 +10,7 @@
 #include <cstring>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -799,6 +800,17 @@ struct Renderer::Impl {
     glBindTexture(GL_TEXTURE_2D, viewItems.shadowMap != nullptr ? viewItems.shadowMap->texture : 0);
   }
 
+  // A label as `which` takes it. A layer's static items take the static
+  // part of a dynamic label (its leading words); everything else draws a
+  // label whole, in one draw, as a still does.
+  void drawLabelAs(const LabelItem& label, Items which, glm::vec2 viewportSize, const glm::mat4* clipFromWorld) {
+    if (which == Items::StaticOnly) {
+      if (const auto part = staticPartOf(label)) drawLabel(*part, viewportSize, clipFromWorld);
+    } else if (takes(which, label.dynamic)) {
+      drawLabel(label, viewportSize, clipFromWorld);
+    }
+  }
+
   // The opaque meshes; receivers without the shadow filter (see drawReshade).
   void drawOpaque(const ViewItems& viewItems, Items which) {
     glDisable(GL_BLEND);
@@ -853,7 +865,7 @@ struct Renderer::Impl {
     for (const PolylineItem& p : list.polylines)
       if (p.view == index && !p.depthTested && takes(which, p.dynamic)) drawPolyline(p, clipFromWorld, v);
     for (const LabelItem& l : list.labels)
-      if (l.view == index && takes(which, l.dynamic)) drawLabel(l, glm::vec2(v.width, v.height), &clipFromWorld);
+      if (l.view == index) drawLabelAs(l, which, glm::vec2(v.width, v.height), &clipFromWorld);
     if (v.frame && which != Items::DynamicOnly) {
       const float w = float(v.width), h = float(v.height), t = std::max(1.0f, h / 300.0f);
       const std::vector<GlyphQuad> border{{0, 0, w, t, 0, 0, 0, 0}, {0, h - t, w, h, 0, 0, 0, 0},
@@ -873,7 +885,7 @@ struct Renderer::Impl {
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     for (const LabelItem& l : list.labels)
-      if (l.view < 0 && takes(which, l.dynamic)) drawLabel(l, glm::vec2(list.width, list.height), nullptr);
+      if (l.view < 0) drawLabelAs(l, which, glm::vec2(list.width, list.height), nullptr);
   }
 
   static bool overlap(const View& a, const View& b) {
@@ -1145,10 +1157,20 @@ struct Renderer::Impl {
 
   PixelRect labelBounds(const LabelItem& l, const DrawList& list, const View* v, const glm::mat4& clipFromWorld) {
     const glm::vec2 size = v != nullptr ? glm::vec2(v->width, v->height) : glm::vec2(list.width, list.height);
+    const glm::mat4* clip = v != nullptr ? &clipFromWorld : nullptr;
     std::vector<GlyphQuad> quads;
-    if (labelQuads(l, size, v != nullptr ? &clipFromWorld : nullptr, quads) == nullptr || quads.empty()) return {};
+    if (labelQuads(l, size, clip, quads) == nullptr || quads.empty()) return {};
+    // A dynamic label's static part is in the layer: only the glyphs after
+    // it change (the part's glyphs are the label's first ones).
+    std::size_t first = 0;
+    if (l.dynamic)
+      if (const auto part = staticPartOf(l)) {
+        std::vector<GlyphQuad> partQuads;
+        if (labelQuads(*part, size, clip, partQuads) != nullptr) first = partQuads.size();
+      }
+    if (first >= quads.size()) return {};
     float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
-    for (const GlyphQuad& q : quads) {
+    for (const GlyphQuad& q : std::span(quads).subspan(first)) {
       x0 = std::min({x0, q.x0, q.x1}), x1 = std::max({x1, q.x0, q.x1});
       y0 = std::min({y0, q.y0, q.y1}), y1 = std::max({y1, q.y0, q.y1});
     }

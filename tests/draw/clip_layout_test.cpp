@@ -211,5 +211,16 @@ TEST(ClipLayout, BodyLinesAreAtLeastOneTwentyEighthOfTheHeightAtEveryAspect) {
   }
 }
 
+// The words a live line keeps from frame to frame (a retained layer holds
+// them): up to the last space before the first digit.
+TEST(ClipLayout, ALiveLinesLeadingWordsEndBeforeItsFirstNumber) {
+  EXPECT_EQ(wordsBeforeTheFirstNumber("s = 3.78 of 18.85"), 4u);
+  EXPECT_EQ(wordsBeforeTheFirstNumber("lab rotation angle = 161.5°"), std::string("lab rotation angle = ").size());
+  EXPECT_EQ(wordsBeforeTheFirstNumber("spinor angle ψ = −521.5°"), std::string("spinor angle ψ = ").size());
+  EXPECT_EQ(wordsBeforeTheFirstNumber("solver at the end: …"), 0u);  // no number
+  EXPECT_EQ(wordsBeforeTheFirstNumber("12 turns"), 0u);              // a number first
+  EXPECT_EQ(wordsBeforeTheFirstNumber("x=1"), 0u);                   // no space before it
+}
+
 }  // namespace
 }  // namespace rollspin::draw

@@ -118,6 +118,49 @@ TEST(LayerKey, LabelsThatChangeComeOrGoDirtyTheirOldAndNewBounds) {
   EXPECT_TRUE(sameStatic(staticKeyOf(twoViews()), moving));
 }
 
+// A live label's leading words are static: the key holds them as a label of
+// their own, so new numbers keep the layer and new words update it there.
+TEST(LayerKey, ALiveLabelsLeadingWordsAreStatic) {
+  LabelItem live;
+  live.dynamic = true;
+  live.text = "s = 1.25 of 9";
+  live.staticPrefixBytes = 4;
+  const auto part = staticPartOf(live);
+  ASSERT_TRUE(part.has_value());
+  EXPECT_EQ(part->text, "s = ");
+  EXPECT_FALSE(part->dynamic);
+  EXPECT_EQ(part->staticPrefixBytes, 0u);
+  LabelItem still = live;
+  still.dynamic = false;
+  EXPECT_EQ(staticPartOf(still), still);  // a static label is its own static part
+  LabelItem centred = live;
+  centred.align = Align::Center;  // its words move with the width of the rest
+  EXPECT_FALSE(staticPartOf(centred).has_value());
+  LabelItem whole = live;
+  whole.staticPrefixBytes = 0;
+  EXPECT_FALSE(staticPartOf(whole).has_value());
+  whole.staticPrefixBytes = whole.text.size();  // nothing would be left to change
+  EXPECT_FALSE(staticPartOf(whole).has_value());
+
+  DrawList list = twoViews();
+  list.labels.push_back(live);
+  const StaticKey key = staticKeyOf(list);
+  ASSERT_EQ(key.labels.size(), 2u);
+  EXPECT_EQ(key.labels[1].text, "s = ");
+  DrawList next = list;
+  next.labels[1].text = "s = 1.50 of 9";
+  EXPECT_TRUE(sameStatic(key, next));
+  next.labels[1].text = "t = 1.50 of 9";
+  EXPECT_FALSE(sameStatic(key, next));
+  live.anchor = {100, 50, 0};
+  next.labels[1].anchor = live.anchor;
+  FakeBounds fake;
+  const auto rects = layerChanges(key, next, {false, false}, fake.bounds());
+  ASSERT_TRUE(rects.has_value());
+  EXPECT_TRUE(covers(*rects, 110, 60));  // the words at their new place
+  EXPECT_TRUE(covers(*rects, 10, 10));   // and at their old one
+}
+
 TEST(LayerKey, AnOpaqueMeshThatChangesNeedsANewLayerATranslucentOneItsBounds) {
   DrawList list = twoViews();
   MeshItem plate;

@@ -357,13 +357,15 @@ DrawList clipFrame(int k) {
   heading.text = "static";
   heading.anchor = {4, 8, 0};
   heading.sizePx = 10;
+  heading.color = {1.0f, 0.9f, 0.6f, 1.0f};  // seen on the black backdrop
   heading.view = 1;
   list.labels.push_back(heading);
   LabelItem live = heading;
-  live.text = "s = " + std::to_string(k);
+  live.text = "s = " + std::to_string(k) + " of 9";
   live.anchor = {4, 60, 0};
   live.view = 0;
   live.dynamic = true;
+  live.staticPrefixBytes = 4;  // "s = " stays in the layer
   list.labels.push_back(live);
   return list;
 }
@@ -469,6 +471,7 @@ DrawList checkpointFrame(int k) {
     note.text = "note";
     note.anchor = {150, 128, 0};
     note.sizePx = 10;
+    note.color = {1.0f, 1.0f, 1.0f, 1.0f};
     note.view = 0;
     list.labels.push_back(note);
   }
@@ -476,9 +479,41 @@ DrawList checkpointFrame(int k) {
   caption.text = k < 3 ? "first caption" : "second";
   caption.anchor = {60, 12, 0};
   caption.sizePx = 10;
+  caption.color = {1.0f, 1.0f, 1.0f, 1.0f};
   caption.view = -1;
   list.labels.push_back(caption);
   return list;
+}
+
+// A live label's leading words stay in the layer and only the tiles of the
+// rest are redrawn; the frames still equal frames drawn whole.
+TEST_F(RendererTest, ALiveLabelsLeadingWordsStayInTheLayer) {
+  auto frame = [](int k) {
+    DrawList list;
+    list.width = 256;
+    list.height = 32;
+    list.views = {cameraView(256, 32)};
+    LabelItem live;
+    live.text = "the running value is now = " + std::to_string(k);
+    live.staticPrefixBytes = live.text.size() - std::to_string(k).size();
+    live.anchor = {4, 16, 0};
+    live.sizePx = 14;
+    live.color = {1, 1, 1, 1};  // on black
+    live.view = 0;
+    live.dynamic = true;
+    list.labels.push_back(live);
+    return list;
+  };
+  Renderer plain(*context_, ShaderLibrary{});
+  plain.setRetainLayers(false);
+  Renderer layered(*context_, ShaderLibrary{});
+  EXPECT_NE(plain.render(frame(1)).rgba, plain.render(frame(2)).rgba);  // the number shows
+  for (int k : {1, 2, 3, 9, 7}) EXPECT_TRUE(sameBytes(layered.render(frame(k)), plain.render(frame(k)))) << "k = " << k;
+  EXPECT_EQ(layered.stats().layerBuilds, 1);
+  EXPECT_EQ(layered.stats().retainedFrames, 4);  // the first frame is drawn whole
+  // The words span five 32-pixel tiles; a frame redraws the number's one
+  // (or two, where it straddles a tile's edge).
+  EXPECT_LE(layered.stats().redrawnPixels, 4 * 2 * 32 * 32);
 }
 
 TEST_F(RendererTest, RetainedLayerUpdatedInPlaceWhenStaticLinesOrLabelsChange) {

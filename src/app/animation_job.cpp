@@ -239,11 +239,14 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
                  progress.elapsedSeconds(), poseWait, queue.producerWaitSeconds(), queue.consumerWaitSeconds());
   if (StageLog::instance().echo()) {  // how many frames the retained layers spared
     const render::RenderStats& st = renderer.stats();
+    auto percent = [](long long part, long long whole) { return whole > 0 ? 100.0 * double(part) / double(whole) : 0.0; };
     std::fprintf(stderr,
                  "rollspin: renderer: %lld frames drawn whole, %lld over a retained layer (%lld layers built, "
-                 "%lld updated in place, %lld views drawn whole beside one, %.1f %% of their pixels redrawn)\n",
+                 "%lld updated in place, %lld views drawn whole beside one, %.1f %% of their pixels redrawn; "
+                 "there, meshes drew %.1f %% of their triangles and lines %.1f %% of their segments)\n",
                  st.wholeFrames, st.retainedFrames, st.layerBuilds, st.layerUpdates, st.freshViews,
-                 st.retainedPixels > 0 ? 100.0 * double(st.redrawnPixels) / double(st.retainedPixels) : 0.0);
+                 percent(st.redrawnPixels, st.retainedPixels), percent(st.meshIndicesDrawn, st.meshIndicesInRects),
+                 percent(st.lineSegmentsDrawn, st.lineSegmentsInRects));
   }
 
   AnimationResult result;

@@ -623,35 +623,28 @@ struct Renderer::Impl {
     // arrows). The runs left out cover no pixel of the rectangles, and the
     // rest are drawn in their order: the rectangles' bytes do not change.
     const glm::mat4 clipFromModel = viewUniforms.clipFromWorld * d.worldFromModel;
-    GLsizei runFirst = 0, runEnd = 0;  // indices [runFirst, runEnd) pending as one run
+    keptParts.clear();
+    for (const MeshChunk& c : g.chunks) {
+      glm::vec3 corners[8];
+      for (int k = 0; k < 8; ++k) corners[k] = glm::vec3(k & 1 ? c.hi.x : c.lo.x, k & 2 ? c.hi.y : c.lo.y, k & 4 ? c.hi.z : c.lo.z);
+      if (reachesAny(*drawClips, screenBounds(*clipView, clipFromModel, corners, 8, 2.0f)))
+        keptParts.add(c.firstIndex, c.firstIndex + c.indexCount);
+    }
     // The runs go to GL in one call: a draw call costs llvmpipe more than a
     // run of triangles.
     runCounts.clear();
     runOffsets.clear();
-    auto flush = [&] {
-      if (runEnd > runFirst) {
-        runCounts.push_back(runEnd - runFirst);
-        runOffsets.push_back(reinterpret_cast<const void*>(static_cast<std::uintptr_t>(runFirst) * sizeof(std::uint32_t)));
-      }
-    };
-    for (const MeshChunk& c : g.chunks) {
-      glm::vec3 corners[8];
-      for (int k = 0; k < 8; ++k) corners[k] = glm::vec3(k & 1 ? c.hi.x : c.lo.x, k & 2 ? c.hi.y : c.lo.y, k & 4 ? c.hi.z : c.lo.z);
-      const PixelRect bounds = screenBounds(*clipView, clipFromModel, corners, 8, 2.0f);
-      bool reaches = false;
-      for (const PixelRect& r : *drawClips) reaches = reaches || overlaps(r, bounds);
-      if (!reaches) continue;
-      if (runEnd != c.firstIndex) {
-        flush();
-        runFirst = c.firstIndex;
-      }
-      runEnd = c.firstIndex + c.indexCount;
+    for (const RunsOfParts::Run& r : keptParts.runs()) {
+      runCounts.push_back(static_cast<GLsizei>(r.end - r.begin));
+      runOffsets.push_back(reinterpret_cast<const void*>(r.begin * sizeof(std::uint32_t)));
+      stats.meshIndicesDrawn += static_cast<long long>(r.end - r.begin);
     }
-    flush();
+    stats.meshIndicesInRects += g.indexCount;
     if (!runCounts.empty())
       glMultiDrawElements(GL_TRIANGLES, runCounts.data(), GL_UNSIGNED_INT, runOffsets.data(),
                           static_cast<GLsizei>(runCounts.size()));
   }
+  RunsOfParts keptParts;
   std::vector<GLsizei> runCounts;
   std::vector<const void*> runOffsets;
 
@@ -687,25 +680,20 @@ struct Renderer::Impl {
       return;
     }
     // A segment draws only within half a width of its ends' span (a capsule).
+    // A part is the points [first, last] of up to kLineRun segments; the
+    // next part begins at its last point, so adjacent parts merge.
     const float margin = 0.7072f * p.widthPx + 2.0f;
-    std::size_t runStart = 0, runEnd = 0;  // points [runStart, runEnd] pending as one strip
-    auto flush = [&] {
-      if (runEnd > runStart)
-        glDrawArrays(GL_LINE_STRIP, static_cast<GLint>(runStart), static_cast<GLsizei>(runEnd - runStart + 1));
-    };
+    keptParts.clear();
     for (std::size_t first = 0; first + 1 < p.points.size(); first += kLineRun) {
       const std::size_t last = std::min(first + kLineRun, p.points.size() - 1);
-      const PixelRect bounds = screenBounds(v, clipFromWorld, &p.points[first], last - first + 1, margin);
-      bool reaches = false;
-      for (const PixelRect& r : *drawClips) reaches = reaches || overlaps(r, bounds);
-      if (!reaches) continue;
-      if (runEnd != first) {
-        flush();
-        runStart = first;
-      }
-      runEnd = last;
+      if (reachesAny(*drawClips, screenBounds(v, clipFromWorld, &p.points[first], last - first + 1, margin)))
+        keptParts.add(first, last);
     }
-    flush();
+    for (const RunsOfParts::Run& r : keptParts.runs()) {
+      glDrawArrays(GL_LINE_STRIP, static_cast<GLint>(r.begin), static_cast<GLsizei>(r.end - r.begin + 1));
+      stats.lineSegmentsDrawn += static_cast<long long>(r.end - r.begin);
+    }
+    stats.lineSegmentsInRects += static_cast<long long>(p.points.size() - 1);
   }
 
   // Pixel-space quads (x0, y0, x1, y1, s0, t0, s1, t1) with the text program.

@@ -28,6 +28,10 @@ struct RenderStats {
   long long retainedFrames = 0;  // drawn over a retained layer
   long long redrawnPixels = 0;   // in those frames' rectangles, summed
   long long retainedPixels = 0;  // those frames' pixels, summed
+  // Inside those rectangles a mesh or a line draws only its parts whose
+  // screen bounds reach one (see drawMesh): what was offered and drawn.
+  long long meshIndicesInRects = 0, meshIndicesDrawn = 0;
+  long long lineSegmentsInRects = 0, lineSegmentsDrawn = 0;
 };
 
 class Renderer {

@@ -15,6 +15,10 @@ PixelRect unite(const PixelRect& a, const PixelRect& b) {
 
 bool overlaps(const PixelRect& a, const PixelRect& b) { return !intersect(a, b).empty(); }
 
+bool reachesAny(const std::vector<PixelRect>& rects, const PixelRect& bounds) {
+  return std::any_of(rects.begin(), rects.end(), [&](const PixelRect& r) { return overlaps(r, bounds); });
+}
+
 PixelRect screenBounds(const View& v, const glm::mat4& clipFromWorld, const glm::vec3* points, std::size_t count,
                        float marginPx) {
   const PixelRect whole{v.x, v.y, v.x + v.width, v.y + v.height};

@@ -26,6 +26,31 @@ struct PixelRect {
 [[nodiscard]] PixelRect intersect(const PixelRect& a, const PixelRect& b);
 [[nodiscard]] PixelRect unite(const PixelRect& a, const PixelRect& b);
 [[nodiscard]] bool overlaps(const PixelRect& a, const PixelRect& b);
+// True when `bounds` overlaps one of `rects`.
+[[nodiscard]] bool reachesAny(const std::vector<PixelRect>& rects, const PixelRect& bounds);
+
+// The parts of a draw (runs of triangles, of line segments) kept for the
+// dirty rectangles, merged into as few runs as possible: a part that begins
+// where the run before ends extends it. Parts are given in drawing order,
+// so drawing the runs in order draws the kept parts in their order.
+class RunsOfParts {
+ public:
+  struct Run {
+    std::size_t begin = 0, end = 0;
+    bool operator==(const Run&) const = default;
+  };
+  void clear() { runs_.clear(); }
+  void add(std::size_t begin, std::size_t end) {
+    if (!runs_.empty() && runs_.back().end == begin)
+      runs_.back().end = end;
+    else
+      runs_.push_back({begin, end});
+  }
+  [[nodiscard]] const std::vector<Run>& runs() const { return runs_; }
+
+ private:
+  std::vector<Run> runs_;
+};
 
 // The pixels (image coordinates) a set of world points can reach in view
 // v, widened by `marginPx`; the whole view when one lies behind the eye.

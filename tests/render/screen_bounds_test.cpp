@@ -137,5 +137,34 @@ TEST(ScreenBounds, IslandsAreDisjointAndHoldEveryRectangle) {
   }
 }
 
+
+TEST(ScreenBounds, ABoxReachesTheRectanglesItOverlaps) {
+  const std::vector<PixelRect> rects{{0, 0, 10, 10}, {20, 0, 30, 10}};
+  EXPECT_TRUE(reachesAny(rects, {5, 5, 8, 8}));
+  EXPECT_TRUE(reachesAny(rects, {29, 9, 40, 40}));
+  EXPECT_FALSE(reachesAny(rects, {10, 0, 20, 10}));  // half-open: touching edges do not overlap
+  EXPECT_FALSE(reachesAny({}, {0, 0, 100, 100}));
+}
+
+// Kept parts that follow on from each other make one run; a part left out
+// between them splits the run, in drawing order.
+TEST(ScreenBounds, KeptPartsMergeIntoRunsWhereOneEndsAndTheNextBegins) {
+  RunsOfParts parts;
+  parts.add(0, 96);
+  parts.add(96, 192);
+  parts.add(288, 384);  // [192, 288) left out
+  parts.add(384, 400);
+  using Run = RunsOfParts::Run;
+  EXPECT_EQ(parts.runs(), (std::vector<Run>{{0, 192}, {288, 400}}));
+  // A polyline's parts share their end points: [0, 32], [32, 64], then [96, 128].
+  parts.clear();
+  parts.add(0, 32);
+  parts.add(32, 64);
+  parts.add(96, 128);
+  EXPECT_EQ(parts.runs(), (std::vector<Run>{{0, 64}, {96, 128}}));
+  parts.clear();
+  EXPECT_TRUE(parts.runs().empty());
+}
+
 }  // namespace
 }  // namespace rollspin::render

@@ -137,7 +137,6 @@ TEST(ScreenBounds, IslandsAreDisjointAndHoldEveryRectangle) {
   }
 }
 
-
 TEST(ScreenBounds, ABoxReachesTheRectanglesItOverlaps) {
   const std::vector<PixelRect> rects{{0, 0, 10, 10}, {20, 0, 30, 10}};
   EXPECT_TRUE(reachesAny(rects, {5, 5, 8, 8}));

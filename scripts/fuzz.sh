@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (ASan + UBSan + coverage) into
-# build-fuzz/ and runs each for FUZZ_SECONDS (default 60) from a seed corpus
-# (scenes/ for the scene loader, tests/fuzz/seeds/expression for the
-# expression parser). A crash leaves its input in build-fuzz/artifacts/ and
-# fails the script: turn it into a regression test.
+# build-fuzz/ and runs each for FUZZ_SECONDS (default 60) from a seed corpus:
+# scenes/ plus tests/fuzz/seeds/scene (inputs that once crashed it) for the
+# scene loader, tests/fuzz/seeds/expression for the expression parser. A crash
+# leaves its input in build-fuzz/artifacts/ and fails the script: turn it into
+# a regression test, and add the input to the seeds.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${FUZZ_SECONDS:-60}
@@ -11,7 +12,7 @@ CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo 
   -DROLLSPIN_BUILD_TESTS=OFF -DROLLSPIN_BUILD_BENCHMARKS=OFF >/dev/null
 cmake --build build-fuzz -j2 --target fuzz_scene fuzz_expression
 mkdir -p build-fuzz/artifacts build-fuzz/corpus/scene build-fuzz/corpus/expression
-cp scenes/*.toml build-fuzz/corpus/scene/
+cp scenes/*.toml tests/fuzz/seeds/scene/* build-fuzz/corpus/scene/
 cp tests/fuzz/seeds/expression/* build-fuzz/corpus/expression/
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 # -timeout=300: a valid but long curve (a uv ellipse over t in [0, 6586],
@@ -19,9 +20,25 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 # in this ASan + coverage build; that is work, not a hang. libFuzzer checks
 # -max_total_time between inputs, so such an input lengthens the run by at
 # most one input's time; a real hang still trips the limit.
+#
+# On a crash, CI's log is all there is: the fuzzer's progress lines are left
+# out, the report and stack follow, and last the input itself (gzip + base64:
+# `base64 -d | gunzip > crash.bin`, then run the fuzz target on that file).
 for target in scene expression; do
   echo "fuzz: $target for ${seconds}s"
-  ./build-fuzz/tests/fuzz/fuzz_$target build-fuzz/corpus/$target -max_total_time="$seconds" -timeout=300 \
+  log=build-fuzz/fuzz_$target.log
+  if ./build-fuzz/tests/fuzz/fuzz_$target build-fuzz/corpus/$target -max_total_time="$seconds" -timeout=300 \
     -rss_limit_mb=2048 -max_len=4096 -artifact_prefix=build-fuzz/artifacts/$target- -print_final_stats=1 \
-    2>&1 | tail -n 12
+    >"$log" 2>&1; then
+    tail -n 6 "$log"
+  else
+    status=$?
+    grep -v -E '^#[0-9]+[[:space:]]' "$log" | tail -n 80
+    crash=$(sed -n 's/.*Test unit written to //p' "$log" | tail -n 1)
+    if [[ -n $crash && -f $crash ]]; then
+      echo "fuzz: input $crash ($(wc -c <"$crash") bytes), gzip | base64:"
+      gzip -9nc "$crash" | base64 -w 100
+    fi
+    exit "$status"
+  fi
 done

@@ -41,11 +41,24 @@ namespace {
 std::string adaptiveNames() {
   std::set<std::string> names;
   for (spin::Method m : spin::allMethods())
-    if (spin::isAdaptive(m)) names.emplace("\"" + std::string(spin::methodName(m)) + "\"");
+    if (spin::isAdaptive(m)) names.emplace(fmt::format("\"{}\"", spin::methodName(m)));
   return joinKeys(names);
 }
 
+// A TOML number as a double; nullopt for anything else. An integer above
+// 2^53 takes the nearest double: toml++'s value<double>() refuses (returns
+// nullopt for) an integer a double cannot hold exactly, and `t_end =
+// 60283185307179586` is a number however it is rounded (found by fuzz_scene).
+std::optional<double> numberOf(const toml::node& node) {
+  if (const auto* f = node.as_floating_point()) return f->get();
+  if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
+  return std::nullopt;
+}
 
+bool isFiniteNumber(const toml::node& node) {
+  const std::optional<double> v = numberOf(node);
+  return v && std::isfinite(*v);
+}
 
 }  // namespace
 
@@ -84,7 +97,7 @@ std::optional<double> Reader::number(const toml::table* t, const std::string& se
   if (node == nullptr) return std::nullopt;
   const std::string full = section + "." + key;
   if (!node->is_number()) fail(full, locOf(full, *node), "a number", describeNode(*node));
-  const double v = node->value<double>().value();
+  const double v = *numberOf(*node);
   if (!std::isfinite(v)) fail(full, locOf(full, *node), "a finite number", describeNode(*node));
   return v;
 }
@@ -125,10 +138,10 @@ std::optional<Vec3> Reader::vector(const toml::table* t, const std::string& sect
   Vec3 v{};
   for (std::size_t i = 0; i < 3; ++i) {
     const toml::node& e = *a->get(i);
-    if (!e.is_number() || !std::isfinite(e.value<double>().value())) {
+    if (!isFiniteNumber(e)) {
       fail(full, locOf(full, *node), expected, "element " + std::to_string(i) + " = " + describeNode(e));
     }
-    v[i] = e.value<double>().value();
+    v[i] = *numberOf(e);
   }
   return v;
 }
@@ -178,9 +191,9 @@ std::optional<std::vector<std::vector<double>>> Reader::pointList(const toml::ta
     std::vector<double> xs;
     for (std::size_t k = 0; k < p->size(); ++k) {
       const toml::node& e = *p->get(k);
-      if (!e.is_number() || !std::isfinite(e.value<double>().value()))
+      if (!isFiniteNumber(e))
         fail(full, locOf(full, *node), expected, "point " + std::to_string(i + 1) + " has " + describeNode(e));
-      xs.push_back(e.value<double>().value());
+      xs.push_back(*numberOf(e));
     }
     if (!points.empty() && xs.size() != points.front().size())
       fail(full, locOf(full, *node), "all points with the same number of coordinates",

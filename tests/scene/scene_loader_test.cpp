@@ -60,6 +60,25 @@ TEST(SceneLoader, PlaneNormalIsNormalisedAndLineDefaultsToAHorizontalDirection) 
   EXPECT_NEAR(std::abs(f.tangentNormal.z()), 1.0, 1e-15);
 }
 
+// toml++ gives no double for an integer above 2^53 (none holds it exactly);
+// such a number still loads, as the nearest double, wherever a number goes:
+// a number key, a vector's element, a point's coordinate. fuzz_scene found
+// the first one escaping as std::bad_optional_access.
+TEST(SceneLoader, IntegersBeyondTwoToThe53AreNumbers) {
+  const double nearest = 9007199254740992.0;  // 2^53, nearest to 2^53 + 1
+  const scene::SceneSpec uv =
+      scene::loadSceneText("[path]\nkind = \"uv\"\nu = \"t\"\nv = \"0\"\nt_end = 9007199254740993\n", "s.toml");
+  EXPECT_EQ(uv.path.tEnd, nearest);
+  const scene::SceneSpec start = scene::loadSceneText(
+      "[surface]\nkind = \"sphere\"\n[path]\nkind = \"geodesic\"\nstart_point = [9007199254740993, 0, 0]\n", "s.toml");
+  ASSERT_TRUE(start.path.startPoint.has_value());
+  EXPECT_EQ((*start.path.startPoint)[0], nearest);
+  const scene::SceneSpec points = scene::loadSceneText(
+      "[path]\nkind = \"points\"\npoints = [[0, 0], [1, 9007199254740993], [2, 0]]\n", "s.toml");
+  ASSERT_EQ(points.path.points.size(), 3u);
+  EXPECT_EQ(points.path.points[1][1], nearest);
+}
+
 TEST(BrockettPlate, ContactCircleIsHalfThePlateCircleAndTheTopMovesWithThePlate) {
   const scene::SceneSpec spec = scene::loadSceneText("[ball]\nradius = 1\n[plate]\nradius = 4\n", "brockett");
   const model::RollingModel model = model::buildModel(spec);

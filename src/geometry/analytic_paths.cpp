@@ -7,10 +7,6 @@
 
 namespace rollspin::geometry {
 
-namespace {
-std::string num(double v) { return describeNumber(v); }
-}  // namespace
-
 // ---- line --------------------------------------------------------------
 
 PlaneLinePath::PlaneLinePath(std::shared_ptr<const Plane> plane, const Vec3& start, const Vec3& direction,
@@ -33,7 +29,9 @@ DarbouxSample PlaneLinePath::at(double s) const {
   return f;
 }
 
-std::string PlaneLinePath::describe() const { return "line of length " + num(length_) + " on a " + plane_->describe(); }
+std::string PlaneLinePath::describe() const {
+  return "line of length " + describeNumber(length_) + " on a " + plane_->describe();
+}
 
 // ---- circle on a plane -------------------------------------------------
 
@@ -73,8 +71,8 @@ DarbouxSample PlaneCirclePath::at(double s) const {
 }
 
 std::string PlaneCirclePath::describe() const {
-  return "circle of radius " + num(radius_) + " (" + num(turns_) + " turns, " + (sense_ > 0 ? "ccw" : "cw") +
-         ") on a " + plane_->describe();
+  return "circle of radius " + describeNumber(radius_) + " (" + describeNumber(turns_) + " turns, " +
+         (sense_ > 0 ? "ccw" : "cw") + ") on a " + plane_->describe();
 }
 
 // ---- parallel on a sphere ----------------------------------------------
@@ -116,8 +114,8 @@ DarbouxSample SphereParallelPath::at(double s) const {
 }
 
 std::string SphereParallelPath::describe() const {
-  return "parallel at colatitude " + num(colatitude_ * 180.0 / std::numbers::pi) + " deg (" + num(turns_) +
-         " turns, " + (sense_ > 0 ? "ccw" : "cw") + ") on a " + sphere_->describe();
+  return "parallel at colatitude " + describeNumber(colatitude_ * 180.0 / std::numbers::pi) + " deg (" +
+         describeNumber(turns_) + " turns, " + (sense_ > 0 ? "ccw" : "cw") + ") on a " + sphere_->describe();
 }
 
 }  // namespace rollspin::geometry

@@ -16,12 +16,6 @@ namespace {
 constexpr int kGaussPoints = 20;
 constexpr int kChebyshevDegree = 24;
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
 // Gauss–Legendre nodes and weights on [−1, 1], by Newton on P_n (computed once).
 struct GaussLegendre {
   std::array<double, kGaussPoints> x{}, w{};
@@ -136,17 +130,18 @@ void SurfaceCurvePath::buildSegment(double sigmaStart, double sigmaEnd) {
     const UvJet c = curve_->at(sigma);
     const bool finite = c.uv.allFinite() && c.d1.allFinite() && c.d2.allFinite();
     if (!finite || !domain.contains(c.uv)) {
-      throw GeometryError("the path leaves the surface's domain at arc length ≈ " + num(approxS) +
-                          " (curve parameter " + num(sigma) + ", surface parameters (" + num(c.uv.x()) + ", " +
-                          num(c.uv.y()) + ") " + surface_->parameterNames() + ")");
+      throw GeometryError("the path leaves the surface's domain at arc length ≈ " + describeNumber(approxS) +
+                          " (curve parameter " + describeNumber(sigma) + ", surface parameters (" +
+                          describeNumber(c.uv.x()) + ", " + describeNumber(c.uv.y()) + ") " +
+                          surface_->parameterNames() + ")");
     }
     const SurfaceJet j = surface_->jet(c.uv);
     const double sp = (j.xu * c.d1.x() + j.xv * c.d1.y()).norm();
     const double area = j.xu.cross(j.xv).norm();
     if (!j.x.allFinite() || !j.xu.allFinite() || !j.xv.allFinite() || !j.xuu.allFinite() || !j.xuv.allFinite() ||
         !j.xvv.allFinite() || !std::isfinite(sp) || !(area > 0.0)) {
-      throw GeometryError("the surface is undefined or singular at arc length ≈ " + num(approxS) +
-                          " (surface parameters (" + num(c.uv.x()) + ", " + num(c.uv.y()) +
+      throw GeometryError("the surface is undefined or singular at arc length ≈ " + describeNumber(approxS) +
+                          " (surface parameters (" + describeNumber(c.uv.x()) + ", " + describeNumber(c.uv.y()) +
                           "): a value or derivative is not finite, or x_u × x_v = 0)");
     }
     speeds[static_cast<std::size_t>(k)] = sp;
@@ -156,7 +151,7 @@ void SurfaceCurvePath::buildSegment(double sigmaStart, double sigmaEnd) {
   for (int k = 0; k <= kProbe; ++k) {
     if (!(speeds[static_cast<std::size_t>(k)] > 1e-9 * typicalSpeed) || typicalSpeed == 0.0) {
       const double sigma = sigmaStart + (sigmaEnd - sigmaStart) * k / kProbe;
-      throw GeometryError("the curve stops (zero speed: a cusp or corner) at curve parameter " + num(sigma));
+      throw GeometryError("the curve stops (zero speed: a cusp or corner) at curve parameter " + describeNumber(sigma));
     }
   }
   // Kinks: the tangent or the normal jumping between neighbouring probes.
@@ -194,8 +189,9 @@ void SurfaceCurvePath::buildSegment(double sigmaStart, double sigmaEnd) {
       const LocalFrame after = localFrame(*surface_, *curve_, *at + 1e-9 * (1.0 + std::abs(*at)));
       const double turn = std::acos(std::clamp(before.tangent.dot(after.tangent), -1.0, 1.0)) * 180.0 / std::numbers::pi;
       const double fold = std::acos(std::clamp(before.normal.dot(after.normal), -1.0, 1.0)) * 180.0 / std::numbers::pi;
-      throw GeometryError("the path has a corner at curve parameter " + num(*at) + " (the tangent turns by " +
-                          num(turn) + " deg, the surface normal by " + num(fold) +
+      throw GeometryError("the path has a corner at curve parameter " + describeNumber(*at) +
+                          " (the tangent turns by " + describeNumber(turn) + " deg, the surface normal by " +
+                          describeNumber(fold) +
                           " deg): round it (points with interpolation = \"polyline\" and a corner_radius) or "
                           "end the curve there");
     }
@@ -231,8 +227,9 @@ void SurfaceCurvePath::fitPanel(double sigmaStart, double sigmaEnd, double sStar
   // curve (or the surface under it) is not smooth there — a kink that the
   // scene must round, or a cusp.
   auto notSmooth = [&] {
-    throw GeometryError("the path is not smooth near curve parameter " + num(sigmaMid) +
-                        " (arc length ≈ " + num(sStart) + "): a kink or cusp; round corners with a polyline's "
+    throw GeometryError("the path is not smooth near curve parameter " + describeNumber(sigmaMid) + " (arc length ≈ " +
+                        describeNumber(sStart) +
+                        "): a kink or cusp; round corners with a polyline's "
                         "corner_radius or split the curve there");
   };
   if (std::abs(total - halves) > tolerance) {
@@ -363,12 +360,13 @@ ContactCheck checkSingleContact(const SurfaceCurvePath& path, double ballRadius,
     check.s = hi;
     check.point = path.point(hi);
     check.curvature = k1At(hi);
-    check.reason = "at arc length s = " + num(hi) + " (point (" + num(check.point.x()) + ", " +
-                   num(check.point.y()) + ", " + num(check.point.z()) +
-                   ")) the surface curves towards the ball with principal curvature " + num(check.curvature) +
-                   " (radius of curvature " + num(1.0 / check.curvature) + "), but the ball's radius is " +
-                   num(ballRadius) + ": the ball no longer touches at one point (needs ball.radius < " +
-                   num(1.0 / check.curvature) + ")";
+    check.reason = "at arc length s = " + describeNumber(hi) + " (point (" + describeNumber(check.point.x()) + ", " +
+                   describeNumber(check.point.y()) + ", " + describeNumber(check.point.z()) +
+                   ")) the surface curves towards the ball with principal curvature " +
+                   describeNumber(check.curvature) + " (radius of curvature " + describeNumber(1.0 / check.curvature) +
+                   "), but the ball's radius is " + describeNumber(ballRadius) +
+                   ": the ball no longer touches at one point (needs ball.radius < " +
+                   describeNumber(1.0 / check.curvature) + ")";
     return check;
   }
   return check;

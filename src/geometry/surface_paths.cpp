@@ -10,8 +10,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-std::string num(double v) { return describeNumber(v); }
-std::string deg(double radians) { return num(radians * 180.0 / kPi) + " deg"; }
+std::string deg(double radians) { return describeNumber(radians * 180.0 / kPi) + " deg"; }
 
 std::unique_ptr<SurfaceCurvePath> wrap(std::shared_ptr<const Surface> surface, FunctionUvCurve::Function f,
                                        double start, double end, std::string description,
@@ -42,7 +41,7 @@ std::unique_ptr<SurfaceCurvePath> cylinderParallel(std::shared_ptr<const Cylinde
                                                    double turns, bool ccw) {
   const double sense = ccw ? 1.0 : -1.0;
   return wrap(cylinder, [=](const Jet& t) { return std::array<Jet, 2>{sense * t, Jet(height)}; }, 0.0,
-              2.0 * kPi * turns, "parallel at height " + num(height), closedCircuit(turns));
+              2.0 * kPi * turns, "parallel at height " + describeNumber(height), closedCircuit(turns));
 }
 
 std::unique_ptr<SurfaceCurvePath> torusParallel(std::shared_ptr<const Torus> torus, double tubeAngle, double turns,
@@ -57,7 +56,7 @@ std::unique_ptr<SurfaceCurvePath> heightFieldParallel(std::shared_ptr<const Heig
   const double sense = ccw ? 1.0 : -1.0;
   return wrap(field,
               [=](const Jet& t) { return std::array<Jet, 2>{radius * cos(sense * t), radius * sin(sense * t)}; },
-              0.0, 2.0 * kPi * turns, "parallel of radius " + num(radius), closedCircuit(turns));
+              0.0, 2.0 * kPi * turns, "parallel of radius " + describeNumber(radius), closedCircuit(turns));
 }
 
 // ---- meridians ---------------------------------------------------------------
@@ -84,7 +83,7 @@ std::unique_ptr<SurfaceCurvePath> torusMeridian(std::shared_ptr<const Torus> tor
 std::unique_ptr<SurfaceCurvePath> cylinderMeridian(std::shared_ptr<const Cylinder> cylinder, double azimuth,
                                                    double height, double length) {
   return wrap(cylinder, [=](const Jet& t) { return std::array<Jet, 2>{Jet(azimuth), height + t}; }, 0.0, length,
-              "generator line at azimuth " + deg(azimuth) + " of length " + num(length), closedCircuit(0.0));
+              "generator line at azimuth " + deg(azimuth) + " of length " + describeNumber(length), closedCircuit(0.0));
 }
 
 std::unique_ptr<SurfaceCurvePath> heightFieldMeridian(std::shared_ptr<const HeightField> field, double azimuth,
@@ -164,8 +163,9 @@ std::unique_ptr<SurfaceCurvePath> geodesicPath(std::shared_ptr<const Surface> su
     const State next = rk4(*surface, nodes.back(), h);
     if (!next.allFinite() || !domain.contains(Vec2(next[0], next[1])))
       throw GeometryError("the geodesic leaves the surface's domain at arc length ≈ " +
-                          num(static_cast<double>(k + 1) * h) + " (surface parameters (" + num(next[0]) + ", " +
-                          num(next[1]) + ") " + surface->parameterNames() + ")");
+                          describeNumber(static_cast<double>(k + 1) * h) + " (surface parameters (" +
+                          describeNumber(next[0]) + ", " + describeNumber(next[1]) + ") " + surface->parameterNames() +
+                          ")");
     nodes.push_back(next);
   }
   auto dense = [&](double s) {
@@ -183,7 +183,7 @@ std::unique_ptr<SurfaceCurvePath> geodesicPath(std::shared_ptr<const Surface> su
     std::vector<double> cuts;
     for (long long p = 0; p <= panels; ++p) cuts.push_back(length * static_cast<double>(p) / static_cast<double>(panels));
     auto curve = std::make_shared<PiecewiseChebyshevUvCurve>(
-        dense, cuts, kDegree, "geodesic of length " + num(length) + " (integrated, RK4 + Chebyshev panels)");
+        dense, cuts, kDegree, "geodesic of length " + describeNumber(length) + " (integrated, RK4 + Chebyshev panels)");
     double worst = 0.0, scale = 1.0;
     for (long long p = 0; p < panels; ++p)
       for (int q = 0; q < 8; ++q) {
@@ -206,8 +206,8 @@ std::unique_ptr<SurfaceCurvePath> geodesicPath(std::shared_ptr<const Surface> su
 std::unique_ptr<SurfaceCurvePath> uvExpressionPath(std::shared_ptr<const Surface> surface,
                                                    std::shared_ptr<const Expression> u,
                                                    std::shared_ptr<const Expression> v, double tStart, double tEnd) {
-  const std::string description = "curve u = " + u->text() + ", v = " + v->text() + " for t in [" + num(tStart) +
-                                  ", " + num(tEnd) + "]";
+  const std::string description = "curve u = " + u->text() + ", v = " + v->text() + " for t in [" +
+                                  describeNumber(tStart) + ", " + describeNumber(tEnd) + "]";
   return wrap(surface, [u, v](const Jet& t) { return std::array<Jet, 2>{u->jet(t), v->jet(t)}; }, tStart, tEnd,
               description);
 }

@@ -10,8 +10,6 @@ namespace rollspin::geometry {
 
 namespace {
 
-std::string num(double v) { return describeNumber(v); }
-
 // Evaluates a point function p(u, v) (three Jets) with u, v as the Jet's two
 // variables and unpacks the derivatives.
 template <typename F>
@@ -74,8 +72,9 @@ Vec3 Cylinder::normalAt(const Vec3& point) const {
 double Cylinder::distance(const Vec3& point) const { return (point - point.dot(axis_) * axis_).norm() - radius_; }
 
 std::string Cylinder::describe() const {
-  return "cylinder of radius " + num(radius_) + " about (" + num(axis_.x()) + ", " + num(axis_.y()) + ", " +
-         num(axis_.z()) + ")" + (side_ == Side::Outside ? " (outside)" : " (inside)");
+  return "cylinder of radius " + describeNumber(radius_) + " about (" + describeNumber(axis_.x()) + ", " +
+         describeNumber(axis_.y()) + ", " + describeNumber(axis_.z()) + ")" +
+         (side_ == Side::Outside ? " (outside)" : " (inside)");
 }
 
 std::string Cylinder::parameterNames() const {
@@ -120,7 +119,7 @@ double Torus::distance(const Vec3& point) const {
 }
 
 std::string Torus::describe() const {
-  return "torus with major radius " + num(major_) + " and tube radius " + num(minor_) +
+  return "torus with major radius " + describeNumber(major_) + " and tube radius " + describeNumber(minor_) +
          (side_ == Side::Outside ? " (outside)" : " (inside the tube)");
 }
 
@@ -137,8 +136,8 @@ std::shared_ptr<HeightField> HeightField::quadric(double a, double b, bool saddl
   const double ca = 0.5 / a, cb = (saddle ? -0.5 : 0.5) / b;
   auto surface = std::make_shared<HeightField>(
       [ca, cb](const Jet& x, const Jet& y) { return ca * (x * x) + cb * (y * y); }, ballAbove,
-      std::string(saddle ? "saddle" : "paraboloid") + " z = (x²/" + num(a) + (saddle ? " − " : " + ") + "y²/" +
-          num(b) + ")/2" + (ballAbove ? " (above)" : " (below)"));
+      std::string(saddle ? "saddle" : "paraboloid") + " z = (x²/" + describeNumber(a) + (saddle ? " − " : " + ") +
+          "y²/" + describeNumber(b) + ")/2" + (ballAbove ? " (above)" : " (below)"));
   surface->revolution_ = !saddle && a == b;
   return surface;
 }

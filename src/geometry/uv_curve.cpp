@@ -10,7 +10,6 @@
 namespace rollspin::geometry {
 
 namespace {
-std::string num(double v) { return describeNumber(v); }
 double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // Index of the piece containing σ among knots k0 < k1 < … (clamped).
@@ -118,16 +117,16 @@ std::shared_ptr<SplineUvCurve> SplineUvCurve::roundedPolyline(const std::vector<
       throw GeometryError("the path turns back on itself at point " + std::to_string(k + 1));
     if (cornerRadius <= 0.0)
       throw GeometryError("corner at point " + std::to_string(k + 1) + " (the path turns by " +
-                          num(turn[k] * 180.0 / std::numbers::pi) +
+                          describeNumber(turn[k] * 180.0 / std::numbers::pi) +
                           " deg): set a corner radius to round it, or use a spline");
     tangentLength[k] = cornerRadius * std::tan(0.5 * std::abs(turn[k]));
   }
   for (std::size_t i = 0; i < legs; ++i) {
     const double used = tangentLength[i] + tangentLength[(i + 1) % n];
     if (used > legLength[i] * (1.0 + 1e-12))
-      throw GeometryError("corner radius " + num(cornerRadius) + " is too large for the leg from point " +
+      throw GeometryError("corner radius " + describeNumber(cornerRadius) + " is too large for the leg from point " +
                           std::to_string(i + 1) + " to point " + std::to_string((i + 1) % n + 1) + " (length " +
-                          num(legLength[i]) + ")");
+                          describeNumber(legLength[i]) + ")");
   }
 
   auto curve = std::make_shared<SplineUvCurve>(SplineUvCurve());
@@ -164,8 +163,8 @@ std::shared_ptr<SplineUvCurve> SplineUvCurve::roundedPolyline(const std::vector<
     const std::size_t k = (i + 1) % n;
     if (tangentLength[k] > 0.0 && (closed || k != 0)) addArc(k);
   }
-  curve->description_ = std::string(closed ? "closed" : "open") + " polyline through " + std::to_string(n) +
-                        " points" + (cornerRadius > 0.0 ? " with corners rounded to radius " + num(cornerRadius) : "");
+  curve->description_ = std::string(closed ? "closed" : "open") + " polyline through " + std::to_string(n) + " points" +
+                        (cornerRadius > 0.0 ? " with corners rounded to radius " + describeNumber(cornerRadius) : "");
   return curve;
 }
 

@@ -15,10 +15,6 @@
 namespace rollspin::model {
 
 namespace {
-geometry::Vec3 toVec(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
-}  // namespace
-
-namespace {
 
 // Where a plane path starts: the origin along its own direction (a scene's
 // [path], a storyboard's first segment), or a point and a heading (the

@@ -15,9 +15,7 @@ namespace {
 using geometry::Vec2;
 using geometry::Vec3;
 using Spec = scene::SurfaceSpec;
-constexpr double kDeg = std::numbers::pi / 180.0;
 
-Vec3 toVec(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
 geometry::Side sideOf(const Spec& s) {
   return s.side == scene::SurfaceSide::Outside ? geometry::Side::Outside : geometry::Side::Inside;
 }
@@ -41,7 +39,7 @@ const std::vector<SurfaceFactory>& factories() {
          return std::make_shared<const geometry::Sphere>(sc.surface.radius, sideOf(sc.surface));
        },
        [](const Spec& s, const geometry::Surface&) {
-         return Vec3(s.radius * Vec3(std::sin(60 * kDeg), 0.0, std::cos(60 * kDeg)));
+         return Vec3(s.radius * Vec3(std::sin(60 * kDegree), 0.0, std::cos(60 * kDegree)));
        }},
       {K::Cylinder,
        [](const scene::SceneSpec& sc) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,11 @@
 #include "scene/scene_spec.hpp"
 
 namespace rollspin::model {
+
+// One degree in radians (a scene gives angles in degrees); a scene's [x, y, z]
+// as the geometry's vector.
+inline constexpr double kDegree = std::numbers::pi / 180.0;
+[[nodiscard]] inline geometry::Vec3 toVec(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
 
 // [surface] → its geometry; throws BadInput (surface.z that does not parse).
 [[nodiscard]] std::shared_ptr<const geometry::Surface> buildSurface(const scene::SceneSpec& spec);

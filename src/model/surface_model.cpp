@@ -11,10 +11,6 @@ namespace {
 
 using geometry::Vec2;
 using geometry::Vec3;
-constexpr double kDeg = std::numbers::pi / 180.0;
-
-Vec3 toVec(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
-
 
 Vec2 parametersOf(const scene::SceneSpec& spec, const geometry::Surface& surface, const Vec3& point,
                   const std::string& key) {
@@ -37,27 +33,27 @@ std::unique_ptr<geometry::SurfaceCurvePath> buildPath(const scene::SceneSpec& sp
   switch (p.kind) {
     case PathKind::Parallel:
       if (cylinder) return geometry::cylinderParallel(cylinder, p.height, p.turns, p.counterClockwise);
-      if (torus) return geometry::torusParallel(torus, p.tubeAngleDeg * kDeg, p.turns, p.counterClockwise);
+      if (torus) return geometry::torusParallel(torus, p.tubeAngleDeg * kDegree, p.turns, p.counterClockwise);
       if (field) return geometry::heightFieldParallel(field, p.radius, p.turns, p.counterClockwise);
       break;
     case PathKind::Meridian:
       if (sphere)
-        return geometry::sphereMeridian(sphere, p.azimuthDeg * kDeg, p.colatitudeStartDeg * kDeg,
-                                        p.colatitudeEndDeg * kDeg);
+        return geometry::sphereMeridian(sphere, p.azimuthDeg * kDegree, p.colatitudeStartDeg * kDegree,
+                                        p.colatitudeEndDeg * kDegree);
       if (torus)
-        return geometry::torusMeridian(torus, p.azimuthDeg * kDeg, p.tubeAngleDeg * kDeg, p.turns,
+        return geometry::torusMeridian(torus, p.azimuthDeg * kDegree, p.tubeAngleDeg * kDegree, p.turns,
                                        p.counterClockwise);
-      if (cylinder) return geometry::cylinderMeridian(cylinder, p.azimuthDeg * kDeg, p.height, p.length);
-      if (field) return geometry::heightFieldMeridian(field, p.azimuthDeg * kDeg, p.length);
+      if (cylinder) return geometry::cylinderMeridian(cylinder, p.azimuthDeg * kDegree, p.height, p.length);
+      if (field) return geometry::heightFieldMeridian(field, p.azimuthDeg * kDegree, p.length);
       break;
     case PathKind::Helix:
       if (cylinder)
-        return geometry::cylinderHelix(cylinder, p.pitchAngleDeg * kDeg, p.height, p.turns, p.counterClockwise);
+        return geometry::cylinderHelix(cylinder, p.pitchAngleDeg * kDegree, p.height, p.turns, p.counterClockwise);
       break;
     case PathKind::Loxodrome:
       if (sphere)
-        return geometry::sphereLoxodrome(sphere, p.headingDeg * kDeg, p.azimuthDeg * kDeg,
-                                         p.colatitudeStartDeg * kDeg, p.colatitudeEndDeg * kDeg);
+        return geometry::sphereLoxodrome(sphere, p.headingDeg * kDegree, p.azimuthDeg * kDegree,
+                                         p.colatitudeStartDeg * kDegree, p.colatitudeEndDeg * kDegree);
       break;
     case PathKind::Geodesic: {
       const Vec3 start = p.startPoint ? toVec(*p.startPoint) : defaultGeodesicStart(spec, *surface);

@@ -22,7 +22,7 @@
 namespace rollspin::report {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 using geometry::Vec3;
 constexpr double kTimeCap = 0.05;         // s per solve: the sweep's last point
 constexpr std::size_t kSamples = 65;      // timeline samples for the max error
@@ -139,18 +139,18 @@ std::vector<ReportScene> defaultErrorScenes() {
                     1.0});
   scenes.push_back({"sphere-outside", "outside a sphere r = 3, parallel at 60°, R = 1, one circuit",
                     std::make_shared<geometry::SphereParallelPath>(
-                        std::make_shared<const geometry::Sphere>(3.0, geometry::Side::Outside), kPi / 3, 1.0, true),
+                        std::make_shared<const geometry::Sphere>(3.0, geometry::Side::Outside), pi / 3, 1.0, true),
                     1.0});
   scenes.push_back({"sphere-inside", "inside a sphere r = 3, parallel at 60°, R = 1, one circuit",
                     std::make_shared<geometry::SphereParallelPath>(
-                        std::make_shared<const geometry::Sphere>(3.0, geometry::Side::Inside), kPi / 3, 1.0, true),
+                        std::make_shared<const geometry::Sphere>(3.0, geometry::Side::Inside), pi / 3, 1.0, true),
                     1.0});
   {
     // A (2, 3) torus knot: κ_n, κ_g and τ_g all vary (a curved surface
     // without a closed form).
     auto torus = std::make_shared<const geometry::Torus>(3.0, 1.0, geometry::Side::Outside);
     auto curve = std::make_shared<geometry::FunctionUvCurve>(
-        [](const geometry::Jet& t) { return std::array<geometry::Jet, 2>{2.0 * t, 3.0 * t}; }, 0.0, 2.0 * kPi,
+        [](const geometry::Jet& t) { return std::array<geometry::Jet, 2>{2.0 * t, 3.0 * t}; }, 0.0, 2.0 * pi,
         "(2, 3) torus knot");
     scenes.push_back({"torus-knot", "outside a torus (A = 3, a = 1) along a (2, 3) torus knot, R = 0.3",
                       std::make_shared<geometry::SurfaceCurvePath>(torus, curve, geometry::SurfaceCurveOptions{false, 1.0}),

@@ -25,7 +25,7 @@ namespace rollspin::report {
 
 namespace {
 namespace closed_form = spin::closed_form;
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 constexpr double kAgree = 1e-8;  // rad: closed-form claims (the solver is ~1e-12, the oracle ~1e-10)
 using geometry::Vec3;
 
@@ -55,18 +55,18 @@ spin::Su2 solve(const geometry::ContactPath& path, double R) {
 
 // Distance of two angles on the circle of circumference 4π (spinor angles).
 double circular(double a, double b) {
-  double d = std::fmod(std::abs(a - b), 4 * kPi);
-  return std::min(d, 4 * kPi - d);
+  double d = std::fmod(std::abs(a - b), 4 * pi);
+  return std::min(d, 4 * pi - d);
 }
 // How far the rotation U is from "a rotation by δ about some axis": its
 // spinor angle ψ against δ, both orientations of the axis (ψ ↔ 4π − ψ).
 double angleDeviation(const spin::Su2& u, double delta) {
   if (!std::isfinite(delta)) return INFINITY;
   const double psi = spin::spinorAngle(u);
-  return std::min(circular(psi, delta), circular(4 * kPi - psi, delta));
+  return std::min(circular(psi, delta), circular(4 * pi - psi, delta));
 }
 
-std::string deg(double rad) { return fmt::format("{:g}°", std::round(rad * 180 / kPi * 1e6) / 1e6); }
+std::string deg(double rad) { return fmt::format("{:g}°", std::round(rad * 180 / pi * 1e6) / 1e6); }
 
 void judge(Claim& c) {
   double worst = 0.0;
@@ -131,10 +131,10 @@ ReportOutcome paperReport(const ReportOptions& options) {
             "U(s) at s = kRβ against exp(−(i/2) β n·σ) exp(−(i/2) kπ ê₄₅·σ), ê₄₅ ∝ u₀ − n"};
     for (int k = 1; k <= 6; ++k) {
       const double beta = k * closed_form::tennisBallBeta(R, R);
-      auto path = circle(R, beta / (2 * kPi));
+      auto path = circle(R, beta / (2 * pi));
       const geometry::DarbouxSample f = path->at(0.0);
       const Vec3 axis45 = (f.tangentNormal - f.normal).normalized();
-      const spin::Su2 predicted = spin::expRotation(beta * f.normal) * spin::expRotation(k * kPi * axis45);
+      const spin::Su2 predicted = spin::expRotation(beta * f.normal) * spin::expRotation(k * pi * axis45);
       Row row = spinorRow(fmt::format("k = {}", k), path, R,
                           [&](const spin::Su2& u) { return spin::spinorDistance(u, predicted); },
                           fmt::format("{}π about ê₄₅", k));
@@ -176,7 +176,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
     for (double r : {0.5, 1.0, 2.0, 3.0, 10.0})
       for (double th : thetas) {
         if (th == 90) continue;  // tan θ: the formula's limit is the great circle
-        const double t = th * kPi / 180;
+        const double t = th * pi / 180;
         const double delta = closed_form::paperOutsideDelta(r, t, R);
         c.rows.push_back(spinorRow(fmt::format("r/R = {:g}, θ = {:g}°", r / R, th), parallel(r, true, t), R,
                                    [&](const spin::Su2& u) { return angleDeviation(-u, delta); },
@@ -188,7 +188,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
     Claim c{"sphere-outside-r=R", "Outside with r = R the rotation is 2π at every latitude",
             "U(L) against +1 (rotating frame −U(L) = a 2π turn = −1)"};
     for (double th : thetas) {
-      const double t = th * kPi / 180;
+      const double t = th * pi / 180;
       c.rows.push_back(spinorRow(fmt::format("θ = {:g}°", th), parallel(R, true, t), R,
                                  [](const spin::Su2& u) { return spin::spinorDistance(u, spin::Su2::identity()); },
                                  "δ = 2π"));
@@ -204,7 +204,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
             "as sphere-inside"};
     for (double r : {1.5, 2.0, 3.0, 5.0, 10.0})
       for (double th : thetas) {
-        const double t = th * kPi / 180;
+        const double t = th * pi / 180;
         const double paper = closed_form::paperInsideDelta(r, t, R);
         const double derived = closed_form::sphereParallelDelta(r, t, R);
         auto path = parallel(r, false, t);
@@ -223,7 +223,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
             "U(L) against +1"};
     c.note = "follows from the inside formula (README); at the equator 2π and the kinematic 6π are the same spinor";
     for (double th : thetas) {
-      const double t = th * kPi / 180;
+      const double t = th * pi / 180;
       c.rows.push_back(spinorRow(fmt::format("θ = {:g}°", th), parallel(3 * R, false, t), R,
                                  [](const spin::Su2& u) { return spin::spinorDistance(u, spin::Su2::identity()); },
                                  "δ = 2π"));
@@ -237,7 +237,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
     // r = R is left out: there δ₊ = 2π, a rotation without an axis.
     for (double r : {0.5, 2.0, 3.0, 10.0})
       for (double th : {10.0, 30.0, 45.0, 60.0, 80.0}) {
-        const double t = th * kPi / 180;
+        const double t = th * pi / 180;
         const double beta = std::atan(std::tan(t) - R / (r + R) / (std::sin(t) * std::cos(t)));
         auto path = parallel(r, true, t);
         Row row;
@@ -267,9 +267,9 @@ ReportOutcome paperReport(const ReportOptions& options) {
     out.asymptotic = in.asymptotic = true;
     for (double th : {30.0, 60.0})
       for (double ratio : {1e-1, 1e-2, 1e-3, 1e-4}) {
-        const double t = th * kPi / 180, r = 1.0, Rb = ratio;
-        const double pOut = 2 * kPi * r * std::sin(t) / Rb;
-        const double pIn = pOut - 4 * kPi * std::sin(t);
+        const double t = th * pi / 180, r = 1.0, Rb = ratio;
+        const double pOut = 2 * pi * r * std::sin(t) / Rb;
+        const double pIn = pOut - 4 * pi * std::sin(t);
         const std::string where = fmt::format("θ = {:g}°, R/r = {:.0e}", th, ratio);
         out.rows.push_back(spinorRow(where, parallel(r, true, t), Rb,
                                      [&](const spin::Su2& u) { return angleDeviation(-u, pOut); },
@@ -285,7 +285,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
     // The penny: turn counts are not visible in U (mod 4π); they are counted
     // on the kinematic oracle: lab turns ∫|ω| ds / 2π, and turns relative to
     // the rolling frame F = [t u n] by unwrapping G(s) = F(s)ᵀ Q(s) F(0).
-    auto path = parallel(3 * R, false, kPi / 2);
+    auto path = parallel(3 * R, false, pi / 2);
     const kinematics::RollingKinematics kin(*path, R, {40000, 0.0});
     const int n = 4000;
     const std::vector<double> s = spin::uniformSamples(path->length(), n + 1);
@@ -310,13 +310,13 @@ ReportOutcome paperReport(const ReportOptions& options) {
     Row labRow;
     labRow.where = "lab";
     labRow.predicted = "2 turns";
-    labRow.measured = fmt::format("{:.9f} turns", lab / (2 * kPi));
-    labRow.deviation = std::abs(lab - 4 * kPi);
+    labRow.measured = fmt::format("{:.9f} turns", lab / (2 * pi));
+    labRow.deviation = std::abs(lab - 4 * pi);
     Row rotRow;
     rotRow.where = "rotating frame";
     rotRow.predicted = "1 turn";
-    rotRow.measured = fmt::format("{:.9f} turns", rolling / (2 * kPi));
-    rotRow.deviation = std::abs(rolling - 2 * kPi);
+    rotRow.measured = fmt::format("{:.9f} turns", rolling / (2 * pi));
+    rotRow.deviation = std::abs(rolling - 2 * pi);
     c.rows = {labRow, rotRow};
     c.note = "README: ∫|g| ds = 6πR · (1/R) = 6π, three turns relative to the frame; the lab count agrees";
     claims.push_back(std::move(c));

@@ -19,7 +19,7 @@
 namespace rollspin::report {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 using geometry::Vec3;
 
 // Signed solid angle enclosed by the closed loop of B̂(s) = −ω̂(s), seen
@@ -31,7 +31,7 @@ double solidAngle(const geometry::ContactPath& path, double R, int n) {
   for (int k = 1; k <= n; ++k) {
     const Vec3 b = spin::fieldB(path.at(path.length() * k / n), R).normalized();
     double dphi = std::atan2(b.y(), b.x()) - std::atan2(prev.y(), prev.x());
-    dphi -= 2 * kPi * std::round(dphi / (2 * kPi));
+    dphi -= 2 * pi * std::round(dphi / (2 * pi));
     total += (1.0 - 0.5 * (b.z() + prev.z())) * dphi;
     prev = b;
   }
@@ -40,9 +40,9 @@ double solidAngle(const geometry::ContactPath& path, double R, int n) {
 
 // Into (−2π, 2π]: spinor angles are defined modulo 4π.
 double wrap4pi(double x) {
-  x = std::fmod(x, 4 * kPi);
-  if (x > 2 * kPi) x -= 4 * kPi;
-  if (x <= -2 * kPi) x += 4 * kPi;
+  x = std::fmod(x, 4 * pi);
+  if (x > 2 * pi) x -= 4 * pi;
+  if (x <= -2 * pi) x += 4 * pi;
   return x;
 }
 }  // namespace
@@ -55,20 +55,20 @@ std::vector<StressCase> stressCases() {
   c.push_back({"plane R/r=1e-3", "h|B| ≈ 98 per step", circle(1.0), 1e-3, 64, perTurn, 1e-9, spin::Method::Exact, true});
   c.push_back({"plane R/r=1", "benign", circle(1.0), 1.0, 64, perTurn, 1e-9});
   c.push_back({"plane R/r=1e3", "circle 1e-3 of the ball: the frame turns fast", circle(1e-3), 1.0, 64, perTurn, 1e-9});
-  c.push_back({"sphere out R/r=1e-6", "parallel at 60°, h|B| ≈ 5e4 per step", parallel(1.0, true, kPi / 3), 1e-6, 64,
+  c.push_back({"sphere out R/r=1e-6", "parallel at 60°, h|B| ≈ 5e4 per step", parallel(1.0, true, pi / 3), 1e-6, 64,
                perTurn, 1e-9, spin::Method::Exact, true});
-  c.push_back({"sphere out R/r=1e3", "sphere 1e-3 of the ball, parallel at 60°", parallel(1e-3, true, kPi / 3), 1.0,
+  c.push_back({"sphere out R/r=1e3", "sphere 1e-3 of the ball, parallel at 60°", parallel(1e-3, true, pi / 3), 1.0,
                64, perTurn, 1e-9});
   c.push_back({"sphere out θ=1e-6", "parallel 1e-6 rad from the north pole: κ_g ≈ 1e6", parallel(1.0, true, 1e-6),
                0.5, 64, perTurn, 1e-9});
-  c.push_back({"sphere out θ=π−1e-6", "1e-6 rad from the south pole", parallel(1.0, true, kPi - 1e-6), 0.5, 64,
+  c.push_back({"sphere out θ=π−1e-6", "1e-6 rad from the south pole", parallel(1.0, true, pi - 1e-6), 0.5, 64,
                perTurn, 1e-9});
   c.push_back({"sphere in θ=1e-6", "inside, 1e-6 rad from the pole", parallel(1.0, false, 1e-6), 0.5, 64, perTurn,
                1e-9});
-  c.push_back({"sphere in 1−R/r=1e-9", "inside, R = r(1 − 1e-9) at 60°: ω ≈ 1e-9 u/R", parallel(1.0, false, kPi / 3),
+  c.push_back({"sphere in 1−R/r=1e-9", "inside, R = r(1 − 1e-9) at 60°: ω ≈ 1e-9 u/R", parallel(1.0, false, pi / 3),
                1.0 - 1e-9, 64, perTurn, 1e-9});
   c.push_back({"sphere in 1−κ_nR=0", "inside, equator, R = r: ω = 0 (no rotation at all)",
-               parallel(1.0, false, kPi / 2), 1.0, 64, perTurn, 1e-9});
+               parallel(1.0, false, pi / 2), 1.0, 64, perTurn, 1e-9});
   c.push_back({"1e6 turns", "lollipop r = 3, R = 1, 1e6 circuits: drift of unitarity and orientation",
                circle(3.0, 1e6), 1.0, 16'000'000, "16 per circuit", 1e-9});
   {
@@ -90,7 +90,7 @@ double stressBound(const StressCase& c) {
 }
 
 double stayProbability(const spin::Su2& u) { return 0.5 * (1.0 + u.rotate(Vec3::UnitZ()).z()); }
-double landauZener(double alpha, double R) { return std::exp(-kPi / (2.0 * alpha * R * R)); }
+double landauZener(double alpha, double R) { return std::exp(-pi / (2.0 * alpha * R * R)); }
 
 ReportOutcome stressReport(const ReportOptions& options) {
   using Clock = std::chrono::steady_clock;
@@ -194,7 +194,7 @@ ReportOutcome stressReport(const ReportOptions& options) {
   std::string adCsv = "side,R_over_r,psi,dynamic,solid_angle,residual\n";
   for (bool outside : {true, false}) {
     for (double ratio : {1e-1, 1e-2, 1e-3, 1e-4}) {
-      const auto path = parallel(1.0, outside, kPi / 3);
+      const auto path = parallel(1.0, outside, pi / 3);
       const double Rb = ratio;
       const spin::Su2 u = spin::Propagator(*path, Rb, spin::Method::Exact, 0).solveFinal().final;
       const Vec3 axis = spin::angularVelocity(path->at(0.0), Rb).normalized();

@@ -7,7 +7,7 @@ namespace rollspin::scene {
 
 namespace {
 using S = SurfaceKind;
-const std::vector<PathKindRow>& table() {
+const std::vector<PathKindRow>& pathTable() {
   static const std::vector<PathKindRow> rows{
       {PathKind::Line, "line", LiesOn::Plane, {{"length", {}}, {"direction_vector", {}}}},
       {PathKind::Circle, "circle", LiesOn::Plane, {{"turns", {}}, {"direction", {}}, {"radius", {}}}},
@@ -54,13 +54,13 @@ const std::vector<PathKindRow>& table() {
 }
 }  // namespace
 
-std::span<const PathKindRow> pathKinds() { return table(); }
+std::span<const PathKindRow> pathKinds() { return pathTable(); }
 
 const PathKindRow& pathKindRow(PathKind kind) {
-  for (const auto& row : table())
+  for (const auto& row : pathTable())
     if (row.kind == kind) return row;
   assert(false && "every PathKind has a row");
-  return table().front();
+  return pathTable().front();
 }
 
 bool liesOn(PathKind path, SurfaceKind surface) {
@@ -98,7 +98,7 @@ std::string describe(LiesOn where) {
 const std::vector<std::string>& allPathKeys() {
   static const std::vector<std::string> keys = [] {
     std::vector<std::string> out;
-    for (const auto& row : table())
+    for (const auto& row : pathTable())
       for (const auto& k : row.keys)
         if (std::find(out.begin(), out.end(), k.key) == out.end()) out.push_back(k.key);
     return out;

@@ -13,7 +13,7 @@ SurfaceKindRow kindRow(std::string_view name, std::vector<std::string> keys, boo
   return {SurfaceKind{name}, name, std::move(keys), ofRevolution, heightField, defaultPath};
 }
 
-const std::vector<SurfaceKindRow>& table() {
+const std::vector<SurfaceKindRow>& surfaceTable() {
   static const std::vector<SurfaceKindRow> rows{
       kindRow("plane", {"normal"}, false, false, PathKind::Circle),
       kindRow("sphere", {"radius", "side"}, true, false, PathKind::Parallel),
@@ -27,19 +27,19 @@ const std::vector<SurfaceKindRow>& table() {
 }
 }  // namespace
 
-std::span<const SurfaceKindRow> surfaceKinds() { return table(); }
+std::span<const SurfaceKindRow> surfaceKinds() { return surfaceTable(); }
 
 const SurfaceKindRow& surfaceKindRow(SurfaceKind kind) {
-  for (const auto& row : table())
+  for (const auto& row : surfaceTable())
     if (row.kind == kind) return row;
   assert(false && "every SurfaceKind has a row");
-  return table().front();
+  return surfaceTable().front();
 }
 
 const std::vector<std::string>& allSurfaceKeys() {
   static const std::vector<std::string> keys = [] {
     std::vector<std::string> out;
-    for (const auto& row : table())
+    for (const auto& row : surfaceTable())
       for (const auto& key : row.keys)
         if (std::find(out.begin(), out.end(), key) == out.end()) out.push_back(key);
     return out;

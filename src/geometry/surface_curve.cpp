@@ -15,6 +15,11 @@ namespace {
 
 constexpr int kGaussPoints = 20;
 constexpr int kChebyshevDegree = 24;
+// A segment starts as 4 panels, each halved until its arc length converges,
+// at most 14 times: panels down to 1/65536 of a segment; beyond that the
+// tolerance is round-off, not truncation.
+constexpr int kInitialPanels = 4;
+constexpr int kMaxPanelDepth = 14;
 
 // Gauss–Legendre nodes and weights on [−1, 1], by Newton on P_n (computed once).
 struct GaussLegendre {
@@ -196,7 +201,6 @@ void SurfaceCurvePath::buildSegment(double sigmaStart, double sigmaEnd) {
                           "end the curve there");
     }
   }
-  constexpr int kInitialPanels = 4;
   for (int p = 0; p < kInitialPanels; ++p) {
     const double a = sigmaStart + (sigmaEnd - sigmaStart) * p / kInitialPanels;
     const double b = p + 1 == kInitialPanels ? sigmaEnd : sigmaStart + (sigmaEnd - sigmaStart) * (p + 1) / kInitialPanels;
@@ -206,9 +210,6 @@ void SurfaceCurvePath::buildSegment(double sigmaStart, double sigmaEnd) {
 }
 
 void SurfaceCurvePath::fitPanel(double sigmaStart, double sigmaEnd, double sStart, int depth) {
-  // Depth 14 allows panels down to 1/65536 of a segment's quarter; beyond
-  // that the tolerance below is round-off, not truncation.
-  constexpr int kMaxDepth = 14;
   const double total = panelArcLength(sigmaStart, sigmaEnd);
   const double sigmaMid = 0.5 * (sigmaStart + sigmaEnd);
   auto split = [&] {
@@ -225,15 +226,21 @@ void SurfaceCurvePath::fitPanel(double sigmaStart, double sigmaEnd, double sStar
   const double tolerance = 8.0 * eps * (1.0 + total) + 4.0 * eps * sigmaScale * speedScale;
   // Still not converged on a panel 2^-14 of a quarter segment wide: the
   // curve (or the surface under it) is not smooth there — a kink that the
-  // scene must round, or a cusp.
+  // scene must round, or a cusp — or the segment turns so often (an ellipse
+  // as a uv curve with t_end = 1e5 winds 16 000 times) that each of 2^16
+  // panels is still too wide for the quadrature. The message names both, and
+  // the panel's width, as the code cannot tell them apart cheaply.
   auto notSmooth = [&] {
-    throw GeometryError("the path is not smooth near curve parameter " + describeNumber(sigmaMid) + " (arc length ≈ " +
-                        describeNumber(sStart) +
-                        "): a kink or cusp; round corners with a polyline's "
-                        "corner_radius or split the curve there");
+    throw GeometryError("the path's arc length does not converge near curve parameter " + describeNumber(sigmaMid) +
+                        " (arc length ≈ " + describeNumber(sStart) + ") even over a parameter step of " +
+                        describeNumber(sigmaEnd - sigmaStart) + " (1/" +
+                        std::to_string(kInitialPanels << kMaxPanelDepth) +
+                        " of its segment): either the curve has a kink or cusp there (round corners with a "
+                        "polyline's corner_radius, or split the curve there), or it turns too often over the segment "
+                        "for steps that size (shorten its parameter range)");
   };
   if (std::abs(total - halves) > tolerance) {
-    if (depth < kMaxDepth) return split();
+    if (depth < kMaxPanelDepth) return split();
     notSmooth();
   }
 
@@ -261,7 +268,7 @@ void SurfaceCurvePath::fitPanel(double sigmaStart, double sigmaEnd, double sStar
     const double ds = 0.5 * total * (xc + 1.0);
     const double sigma = sigmaStart + chebyshevValue(panel.coefficients, xc);
     if (std::abs(panelArcLength(sigmaStart, sigma) - ds) > tolerance) {
-      if (depth < kMaxDepth) return split();
+      if (depth < kMaxPanelDepth) return split();
       notSmooth();
     }
   }

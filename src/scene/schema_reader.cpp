@@ -55,9 +55,12 @@ std::optional<double> numberOf(const toml::node& node) {
   return std::nullopt;
 }
 
-bool isFiniteNumber(const toml::node& node) {
+// The same, and nullopt for inf and nan too: a vector's element or a point's
+// coordinate, which has no key of its own for the "finite" message.
+std::optional<double> finiteNumberOf(const toml::node& node) {
   const std::optional<double> v = numberOf(node);
-  return v && std::isfinite(*v);
+  if (v && std::isfinite(*v)) return v;
+  return std::nullopt;
 }
 
 }  // namespace
@@ -138,10 +141,9 @@ std::optional<Vec3> Reader::vector(const toml::table* t, const std::string& sect
   Vec3 v{};
   for (std::size_t i = 0; i < 3; ++i) {
     const toml::node& e = *a->get(i);
-    if (!isFiniteNumber(e)) {
-      fail(full, locOf(full, *node), expected, "element " + std::to_string(i) + " = " + describeNode(e));
-    }
-    v[i] = *numberOf(e);
+    const std::optional<double> x = finiteNumberOf(e);
+    if (!x) fail(full, locOf(full, *node), expected, "element " + std::to_string(i) + " = " + describeNode(e));
+    v[i] = *x;
   }
   return v;
 }
@@ -191,9 +193,9 @@ std::optional<std::vector<std::vector<double>>> Reader::pointList(const toml::ta
     std::vector<double> xs;
     for (std::size_t k = 0; k < p->size(); ++k) {
       const toml::node& e = *p->get(k);
-      if (!isFiniteNumber(e))
-        fail(full, locOf(full, *node), expected, "point " + std::to_string(i + 1) + " has " + describeNode(e));
-      xs.push_back(*numberOf(e));
+      const std::optional<double> x = finiteNumberOf(e);
+      if (!x) fail(full, locOf(full, *node), expected, "point " + std::to_string(i + 1) + " has " + describeNode(e));
+      xs.push_back(*x);
     }
     if (!points.empty() && xs.size() != points.front().size())
       fail(full, locOf(full, *node), "all points with the same number of coordinates",

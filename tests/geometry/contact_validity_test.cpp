@@ -79,6 +79,23 @@ TEST(CurveErrors, LeavingTheDomainIsReported) {
   }
 }
 
+// A smooth curve that turns too often for its segment's 2^16 panels (an
+// ellipse wound 16 000 times) is refused with both causes named and the
+// panel's width, not called "a kink or cusp" alone.
+TEST(CurveErrors, CurvesTooLongForTheirPanelsNameTheRange) {
+  auto plane = std::make_shared<const Plane>(Vec3(0, 0, 1));
+  auto e = [](const char* t) { return std::make_shared<const Expression>(t, std::vector<std::string>{"t"}); };
+  try {
+    (void)uvExpressionPath(plane, e("cos(t)"), e("2*sin(t)"), 0.0, 1e5);
+    ADD_FAILURE() << "a curve wound 16 000 times was fitted";
+  } catch (const GeometryError& err) {
+    const std::string what = err.what();
+    EXPECT_NE(what.find("parameter step of 1.52588 (1/65536 of its segment)"), std::string::npos) << what;
+    EXPECT_NE(what.find("shorten its parameter range"), std::string::npos) << what;
+    EXPECT_NE(what.find("kink or cusp"), std::string::npos) << what;
+  }
+}
+
 TEST(CurveErrors, KinksInExpressionsAreRefused) {
   auto plane = std::make_shared<const Plane>(Vec3(0, 0, 1));
   auto e = [](const char* t) { return std::make_shared<const Expression>(t, std::vector<std::string>{"t"}); };

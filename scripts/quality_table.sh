@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# The README's antialiasing quality table ("Render speed", "Quality"): for
+# each scene, the mean absolute difference (0-255 levels, mean of R, G, B) of
+# a 640x360 still against a 16-sample reference, the same still at 2560x1440
+# with render.msaa = 1, box-filtered down (ffmpeg scale, flags=area).
+# render.labels and render.trails are off in both: text and trails are not
+# what the table measures.
+#
+#   scripts/quality_table.sh                       # the default settings
+#   scripts/quality_table.sh render.msaa=1 ...     # and a candidate column
+#
+# A pixel-moving change to the renderer shows its column beside the default
+# one before any golden is regenerated. Needs ./build/rollspin and ffmpeg.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+rollspin=${ROLLSPIN:-./build/rollspin}
+scenes=${QUALITY_SCENES:-"lollipop sphere-inside saddle-geodesic torus cylinder-helix"}
+[ -x "$rollspin" ] || { echo "quality_table.sh: $rollspin not found: build first (cmake --build build -j2)" >&2; exit 2; }
+command -v ffmpeg >/dev/null || { echo "quality_table.sh: needs the ffmpeg tool (scripts/install-deps.sh)" >&2; exit 2; }
+
+candidate=()
+for kv in "$@"; do
+  [[ "$kv" == *=* ]] || { echo "quality_table.sh: expected key=value, got '$kv'" >&2; exit 2; }
+  candidate+=(--set "$kv")
+done
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+common=(--still --quiet --set render.labels=false --set render.trails=false)
+
+# The mean of compare's R, G and B mean deltas.
+meanRgb() {
+  "$rollspin" compare --json "$1" "$2" | python3 -c '
+import json, sys
+r = json.load(sys.stdin)["references"][0]
+assert r["size_matches"], "sizes differ"
+print("%.3f" % (sum(r["mean_delta"][:3]) / 3))'
+}
+
+if [ ${#candidate[@]} -gt 0 ]; then
+  echo "| scene | default | $* |"
+  echo "| --- | --- | --- |"
+else
+  echo "| scene | default |"
+  echo "| --- | --- |"
+fi
+for s in $scenes; do
+  file=scenes/$s.toml
+  [ -f "$file" ] || { echo "quality_table.sh: no $file" >&2; exit 2; }
+  "$rollspin" render "$file" "${common[@]}" --width 2560 --height 1440 --set render.msaa=1 -o "$work/$s-big.png"
+  ffmpeg -v error -y -i "$work/$s-big.png" -vf scale=640:360:flags=area "$work/$s-ref.png"
+  "$rollspin" render "$file" "${common[@]}" --width 640 --height 360 -o "$work/$s-default.png"
+  row="| $s | $(meanRgb "$work/$s-default.png" "$work/$s-ref.png") |"
+  if [ ${#candidate[@]} -gt 0 ]; then
+    "$rollspin" render "$file" "${common[@]}" --width 640 --height 360 "${candidate[@]}" -o "$work/$s-candidate.png"
+    row="$row $(meanRgb "$work/$s-candidate.png" "$work/$s-ref.png") |"
+  fi
+  echo "$row"
+done

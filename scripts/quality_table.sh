@@ -27,13 +27,22 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 common=(--still --quiet --set render.labels=false --set render.trails=false)
 
-# The mean of compare's R, G and B mean deltas.
+# A render, quiet unless it fails: its stderr then, and exit 2.
+render() {
+  "$rollspin" render "$@" >/dev/null 2>"$work/stderr" || { cat "$work/stderr" >&2; exit 2; }
+}
+
+# The mean of compare's R, G and B mean deltas (compare exits 1 when the
+# images differ, as they do; 2 is an error).
 meanRgb() {
-  "$rollspin" compare --json "$1" "$2" | python3 -c '
+  local json status=0
+  json=$("$rollspin" compare --json "$1" "$2") || status=$?
+  [ "$status" -le 1 ] || { echo "quality_table.sh: compare failed on $1" >&2; exit 2; }
+  python3 -c '
 import json, sys
 r = json.load(sys.stdin)["references"][0]
 assert r["size_matches"], "sizes differ"
-print("%.3f" % (sum(r["mean_delta"][:3]) / 3))'
+print("%.3f" % (sum(r["mean_delta"][:3]) / 3))' <<<"$json"
 }
 
 if [ ${#candidate[@]} -gt 0 ]; then
@@ -46,12 +55,12 @@ fi
 for s in $scenes; do
   file=scenes/$s.toml
   [ -f "$file" ] || { echo "quality_table.sh: no $file" >&2; exit 2; }
-  "$rollspin" render "$file" "${common[@]}" --width 2560 --height 1440 --set render.msaa=1 -o "$work/$s-big.png"
+  render "$file" "${common[@]}" --width 2560 --height 1440 --set render.msaa=1 -o "$work/$s-big.png"
   ffmpeg -v error -y -i "$work/$s-big.png" -vf scale=640:360:flags=area "$work/$s-ref.png"
-  "$rollspin" render "$file" "${common[@]}" --width 640 --height 360 -o "$work/$s-default.png"
+  render "$file" "${common[@]}" --width 640 --height 360 -o "$work/$s-default.png"
   row="| $s | $(meanRgb "$work/$s-default.png" "$work/$s-ref.png") |"
   if [ ${#candidate[@]} -gt 0 ]; then
-    "$rollspin" render "$file" "${common[@]}" --width 640 --height 360 "${candidate[@]}" -o "$work/$s-candidate.png"
+    render "$file" "${common[@]}" --width 640 --height 360 "${candidate[@]}" -o "$work/$s-candidate.png"
     row="$row $(meanRgb "$work/$s-candidate.png" "$work/$s-ref.png") |"
   fi
   echo "$row"

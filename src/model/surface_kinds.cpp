@@ -32,14 +32,15 @@ struct SurfaceFactory {
 const std::vector<SurfaceFactory>& factories() {
   using K = scene::SurfaceKind;
   static const std::vector<SurfaceFactory> rows{
-      {K::Plane, [](const scene::SceneSpec& sc) { return std::make_shared<const geometry::Plane>(toVec(sc.surface.normal)); },
+      {K::Plane,
+       [](const scene::SceneSpec& sc) { return std::make_shared<const geometry::Plane>(toVec(sc.surface.normal)); },
        atOrigin},
       {K::Sphere,
        [](const scene::SceneSpec& sc) {
          return std::make_shared<const geometry::Sphere>(sc.surface.radius, sideOf(sc.surface));
        },
        [](const Spec& s, const geometry::Surface&) {
-         return Vec3(s.radius * Vec3(std::sin(60 * kDegree), 0.0, std::cos(60 * kDegree)));
+         return Vec3(s.radius * Vec3(std::sin(radians(60)), 0.0, std::cos(radians(60))));
        }},
       {K::Cylinder,
        [](const scene::SceneSpec& sc) {

@@ -16,9 +16,9 @@
 
 namespace rollspin::model {
 
-// One degree in radians (a scene gives angles in degrees); a scene's [x, y, z]
-// as the geometry's vector.
-inline constexpr double kDegree = std::numbers::pi / 180.0;
+// A scene's angle (degrees) in the geometry's radians; a scene's [x, y, z] as
+// the geometry's vector.
+[[nodiscard]] inline constexpr double radians(double degrees) { return degrees * (std::numbers::pi / 180.0); }
 [[nodiscard]] inline geometry::Vec3 toVec(const scene::Vec3& v) { return {v[0], v[1], v[2]}; }
 
 // [surface] → its geometry; throws BadInput (surface.z that does not parse).

@@ -33,27 +33,27 @@ std::unique_ptr<geometry::SurfaceCurvePath> buildPath(const scene::SceneSpec& sp
   switch (p.kind) {
     case PathKind::Parallel:
       if (cylinder) return geometry::cylinderParallel(cylinder, p.height, p.turns, p.counterClockwise);
-      if (torus) return geometry::torusParallel(torus, p.tubeAngleDeg * kDegree, p.turns, p.counterClockwise);
+      if (torus) return geometry::torusParallel(torus, radians(p.tubeAngleDeg), p.turns, p.counterClockwise);
       if (field) return geometry::heightFieldParallel(field, p.radius, p.turns, p.counterClockwise);
       break;
     case PathKind::Meridian:
       if (sphere)
-        return geometry::sphereMeridian(sphere, p.azimuthDeg * kDegree, p.colatitudeStartDeg * kDegree,
-                                        p.colatitudeEndDeg * kDegree);
+        return geometry::sphereMeridian(sphere, radians(p.azimuthDeg), radians(p.colatitudeStartDeg),
+                                        radians(p.colatitudeEndDeg));
       if (torus)
-        return geometry::torusMeridian(torus, p.azimuthDeg * kDegree, p.tubeAngleDeg * kDegree, p.turns,
+        return geometry::torusMeridian(torus, radians(p.azimuthDeg), radians(p.tubeAngleDeg), p.turns,
                                        p.counterClockwise);
-      if (cylinder) return geometry::cylinderMeridian(cylinder, p.azimuthDeg * kDegree, p.height, p.length);
-      if (field) return geometry::heightFieldMeridian(field, p.azimuthDeg * kDegree, p.length);
+      if (cylinder) return geometry::cylinderMeridian(cylinder, radians(p.azimuthDeg), p.height, p.length);
+      if (field) return geometry::heightFieldMeridian(field, radians(p.azimuthDeg), p.length);
       break;
     case PathKind::Helix:
       if (cylinder)
-        return geometry::cylinderHelix(cylinder, p.pitchAngleDeg * kDegree, p.height, p.turns, p.counterClockwise);
+        return geometry::cylinderHelix(cylinder, radians(p.pitchAngleDeg), p.height, p.turns, p.counterClockwise);
       break;
     case PathKind::Loxodrome:
       if (sphere)
-        return geometry::sphereLoxodrome(sphere, p.headingDeg * kDegree, p.azimuthDeg * kDegree,
-                                         p.colatitudeStartDeg * kDegree, p.colatitudeEndDeg * kDegree);
+        return geometry::sphereLoxodrome(sphere, radians(p.headingDeg), radians(p.azimuthDeg),
+                                         radians(p.colatitudeStartDeg), radians(p.colatitudeEndDeg));
       break;
     case PathKind::Geodesic: {
       const Vec3 start = p.startPoint ? toVec(*p.startPoint) : defaultGeodesicStart(spec, *surface);

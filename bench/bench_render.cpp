@@ -6,13 +6,14 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <string>
 #include <vector>
 
-#include "draw/scene_drawer.hpp"
 #include "app/render_jobs.hpp"
+#include "draw/scene_drawer.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"
@@ -26,10 +27,34 @@ std::string benchScenePath() {
   return std::string(ROLLSPIN_SOURCE_DIR "/scenes/") + (name != nullptr && *name != '\0' ? name : "lollipop") + ".toml";
 }
 
+// ROLLSPIN_BENCH_SIZE=WxH: another frame size for every benchmark (3840x2160
+// for 4K); 1920x1080 by default. The benchmarks keep their 1080p names.
+struct FrameSize {
+  int width = 1920;
+  int height = 1080;
+};
+FrameSize benchFrameSize() {
+  FrameSize size;
+  const char* text = std::getenv("ROLLSPIN_BENCH_SIZE");
+  if (text != nullptr && *text != '\0' && std::sscanf(text, "%dx%d", &size.width, &size.height) != 2) {
+    std::fprintf(stderr, "bench_render: ROLLSPIN_BENCH_SIZE=%s is not WIDTHxHEIGHT (3840x2160, say)\n", text);
+    std::exit(2);
+  }
+  return size;
+}
+std::vector<std::string> sizeOverrides() {
+  const FrameSize size = benchFrameSize();
+  return {"render.width=" + std::to_string(size.width), "render.height=" + std::to_string(size.height)};
+}
+std::string sizeLabel() {
+  const FrameSize size = benchFrameSize();
+  return std::to_string(size.width) + "x" + std::to_string(size.height);
+}
+
 void BM_RenderFrame1080p(benchmark::State& state) {
   using namespace rollspin;
-  std::vector<std::string> overrides{"render.width=1920", "render.height=1080", "render.layout=side-by-side",
-                                     "render.msaa=" + std::to_string(state.range(0))};
+  std::vector<std::string> overrides = sizeOverrides();
+  overrides.insert(overrides.end(), {"render.layout=side-by-side", "render.msaa=" + std::to_string(state.range(0))});
   // ROLLSPIN_BENCH_SET=key=value: one extra scene override, for experiments.
   if (const char* extra = std::getenv("ROLLSPIN_BENCH_SET")) overrides.emplace_back(extra);
   const scene::SceneSpec spec = scene::loadSceneFile(benchScenePath(), overrides);
@@ -59,7 +84,7 @@ void BM_RenderFrame1080p(benchmark::State& state) {
   }
   state.counters["process_cpu_ms_per_frame"] =
       1e3 * (processCpuSeconds() - cpuStart) / double(std::max<benchmark::IterationCount>(1, state.iterations()));
-  state.SetLabel("1920x1080, " + std::to_string(state.range(0)) + "x MSAA, shadow, side-by-side");
+  state.SetLabel(sizeLabel() + ", " + std::to_string(state.range(0)) + "x MSAA, shadow, side-by-side");
 }
 // Arg = MSAA samples; 4 is the target configuration, 1 shows what MSAA costs
 // (llvmpipe runs 2 samples as 4: same cost). Layers off: every frame is
@@ -74,7 +99,8 @@ BENCHMARK(BM_RenderFrame1080p)->Arg(4)->Arg(1)->Unit(benchmark::kMillisecond)->U
 // over the layer). Second argument: the number of frames.
 void BM_ClipFrames1080p(benchmark::State& state) {
   using namespace rollspin;
-  std::vector<std::string> overrides{"render.width=1920", "render.height=1080", "render.layout=side-by-side"};
+  std::vector<std::string> overrides = sizeOverrides();
+  overrides.emplace_back("render.layout=side-by-side");
   if (state.range(0) == 1) overrides.emplace_back("render.follow=true");
   if (const char* extra = std::getenv("ROLLSPIN_BENCH_SET")) overrides.emplace_back(extra);
   const scene::SceneSpec spec = scene::loadSceneFile(benchScenePath(), overrides);
@@ -110,8 +136,8 @@ void BM_ClipFrames1080p(benchmark::State& state) {
   state.counters["retained_share"] = double(renderer.stats().retainedFrames - before.retainedFrames) / n;
   state.counters["layer_builds_per_frame"] = double(renderer.stats().layerBuilds - before.layerBuilds) / n;
   state.counters["layer_updates_per_frame"] = double(renderer.stats().layerUpdates - before.layerUpdates) / n;
-  state.SetLabel(std::string(state.range(0) == 1 ? "1920x1080, 4x MSAA, camera follows the ball"
-                                                 : "1920x1080, 4x MSAA, fixed camera") +
+  state.SetLabel(sizeLabel() +
+                 (state.range(0) == 1 ? ", 4x MSAA, camera follows the ball" : ", 4x MSAA, fixed camera") +
                  (count == 300 ? ", the whole clip in order" : ""));
 }
 BENCHMARK(BM_ClipFrames1080p)->Args({0, 24})->Args({1, 24})->Args({0, 300})->Unit(benchmark::kMillisecond)->UseRealTime();
@@ -119,7 +145,7 @@ BENCHMARK(BM_ClipFrames1080p)->Args({0, 24})->Args({1, 24})->Args({0, 300})->Uni
 // The CPU-side half alone: (scene, orientations) → DrawList.
 void BM_DrawList1080p(benchmark::State& state) {
   using namespace rollspin;
-  const std::vector<std::string> overrides{"render.width=1920", "render.height=1080"};
+  const std::vector<std::string> overrides = sizeOverrides();
   const scene::SceneSpec spec = scene::loadSceneFile(benchScenePath(), overrides);
   const model::RollingModel model = model::buildModel(spec);
   const motion::FrameOrientations frame = motion::solveFrame(spec, model, 0.3 * model.path->length());

@@ -128,26 +128,49 @@ struct EglDevice {
   int index = 0;
   std::string drmPath;     // EGL_DRM_DEVICE_FILE_EXT, "" when the device has none
   std::string renderNode;  // EGL_DRM_RENDER_NODE_FILE_EXT, likewise
+  std::string name;        // EGL_RENDERER_EXT (EGL_EXT_device_query_name): "NVIDIA H200", say
   bool software = false;   // EGL_MESA_device_software: Mesa's CPU rasteriser
 
+  // "0: NVIDIA H200 at /dev/dri/renderD128 (hardware)"; a VM or container
+  // may pass the GPU in without its /dev/dri nodes, so the name comes first.
   [[nodiscard]] std::string describe() const {
+    const std::string& node = !renderNode.empty() ? renderNode : drmPath;
     std::string what = std::to_string(index) + ": ";
-    if (!renderNode.empty()) what += renderNode;
-    else if (!drmPath.empty()) what += drmPath;
-    else what += software ? "Mesa's software device" : "a device with no DRM node";
+    if (!name.empty()) {
+      what += node.empty() ? name + ", no DRM node" : name + " at " + node;
+    } else if (!node.empty()) {
+      what += node;
+    } else {
+      what += software ? "Mesa's software device" : "a device with no DRM node";
+    }
     return what + (software ? " (software)" : " (hardware)");
   }
 };
 
-std::vector<EglDevice> listDevices(const EglApi& api) {
-  std::vector<EglDevice> devices;
-  if (api.queryDevices == nullptr || !hasExtension(api.clientExtensions, "EGL_EXT_device_enumeration")) return devices;
+// The devices EGL lists, or why it lists none (said in every message that
+// names the devices, so a user sees at once where a GPU was lost).
+struct EglDevices {
+  std::vector<EglDevice> list;
+  std::string whyNone;
+};
+
+EglDevices listDevices(const EglApi& api) {
+  EglDevices devices;
+  // EGL_EXT_device_base is the older name for enumeration + query together
+  // (NVIDIA's drivers list it); either one makes eglQueryDevicesEXT usable.
+  const bool enumerable = hasExtension(api.clientExtensions, "EGL_EXT_device_enumeration") ||
+                          hasExtension(api.clientExtensions, "EGL_EXT_device_base");
+  if (api.queryDevices == nullptr || !enumerable) {
+    devices.whyNone = "libEGL lists neither EGL_EXT_device_enumeration nor EGL_EXT_device_base";
+    return devices;
+  }
   std::vector<EGLDeviceEXT> handles(32);
   EGLint count = 0;
   if (!api.queryDevices(static_cast<EGLint>(handles.size()), handles.data(), &count)) {
-    (void)api.getError();
+    devices.whyNone = "eglQueryDevicesEXT failed: " + errorName(api.getError());
     return devices;
   }
+  if (count == 0) devices.whyNone = "eglQueryDevicesEXT lists none";
   for (EGLint i = 0; i < count; ++i) {
     EglDevice d;
     d.handle = handles[static_cast<std::size_t>(i)];
@@ -162,22 +185,23 @@ std::vector<EglDevice> listDevices(const EglApi& api) {
       };
       if (hasExtension(extensions, "EGL_EXT_device_drm")) d.drmPath = query(EGL_DRM_DEVICE_FILE_EXT);
       if (hasExtension(extensions, "EGL_EXT_device_drm_render_node")) d.renderNode = query(EGL_DRM_RENDER_NODE_FILE_EXT);
+      if (hasExtension(extensions, "EGL_EXT_device_query_name")) d.name = query(EGL_RENDERER_EXT);
       (void)api.getError();  // a string the device lacks is not an error here
     }
-    devices.push_back(std::move(d));
+    devices.list.push_back(std::move(d));
   }
   return devices;
 }
 
-std::string describeDevices(const std::vector<EglDevice>& devices) {
-  if (devices.empty()) return "no EGL devices";
+std::string describeDevices(const EglDevices& devices) {
+  if (devices.list.empty()) return "no EGL devices (" + devices.whyNone + ")";
   std::string out = "EGL devices ";
-  for (std::size_t i = 0; i < devices.size(); ++i) out += (i ? "; " : "") + devices[i].describe();
+  for (std::size_t i = 0; i < devices.list.size(); ++i) out += (i ? "; " : "") + devices.list[i].describe();
   return out;
 }
 
-const EglDevice* firstHardware(const std::vector<EglDevice>& devices) {
-  for (const auto& d : devices)
+const EglDevice* firstHardware(const EglDevices& devices) {
+  for (const auto& d : devices.list)
     if (!d.software) return &d;
   return nullptr;
 }
@@ -192,13 +216,13 @@ std::string noDriverReason() {
 // The device the user asked for: an index into the list, or a DRM path
 // (the card node or the render node). BadInput when the text is neither,
 // Runtime when no such device is here.
-const EglDevice& requestedDevice(const DeviceChoice& choice, const std::vector<EglDevice>& devices) {
+const EglDevice& requestedDevice(const DeviceChoice& choice, const EglDevices& devices) {
   const std::string& text = choice.text;
   const bool isIndex = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
   if (!isIndex && (text.empty() || text[0] != '/'))
     throw badInput(choice.where, "expected an EGL device index (0, 1, …) or a DRM device path such as "
                                  "/dev/dri/renderD128, got \"{}\"", text);
-  for (const auto& d : devices) {
+  for (const auto& d : devices.list) {
     if (isIndex ? std::to_string(d.index) == text : (d.drmPath == text || d.renderNode == text)) return d;
   }
   throw runtimeError(choice.where, "no EGL device {} here ({}); choose one of those, or leave the device unset",
@@ -327,7 +351,7 @@ BackendProbe probe() {
   if (firstHardware(devices) != nullptr) return {BackendProbe::Reach::Hardware, describeDevices(devices)};
   if (hasExtension(api->clientExtensions, "EGL_MESA_platform_surfaceless"))
     return {BackendProbe::Reach::Software, "surfaceless platform (software); " + describeDevices(devices)};
-  if (!devices.empty()) return {BackendProbe::Reach::Software, describeDevices(devices)};
+  if (!devices.list.empty()) return {BackendProbe::Reach::Software, describeDevices(devices)};
   return {BackendProbe::Reach::None,
           "EGL offers no device (EGL_EXT_platform_device) and no surfaceless platform (EGL_MESA_platform_surfaceless)"};
 }
@@ -352,7 +376,7 @@ std::unique_ptr<GlContext> create(const std::optional<DeviceChoice>& choice) {
     return std::make_unique<EglContext>(*api, gpu, false);
   if (hasExtension(api->clientExtensions, "EGL_MESA_platform_surfaceless"))
     return std::make_unique<EglContext>(*api, nullptr, false);
-  if (!devices.empty() && platformDevice) return std::make_unique<EglContext>(*api, &devices.front(), false);
+  if (!devices.list.empty() && platformDevice) return std::make_unique<EglContext>(*api, &devices.list.front(), false);
   throw runtimeError({}, "EGL offers no device (EGL_EXT_platform_device) and no surfaceless platform "
                          "(EGL_MESA_platform_surfaceless), {}; {}",
                      describeDevices(devices), kAdvice);

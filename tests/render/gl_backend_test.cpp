@@ -172,6 +172,25 @@ TEST(GlBackend, ASoftwareDeviceAskedForSaysSo) {
   EXPECT_TRUE(has(r.err, "no GPU is doing the work")) << r.err;
 }
 
+// Where NVIDIA's driver is the only EGL vendor, glvnd names the device
+// extensions by their older combined name, EGL_EXT_device_base, alone (seen
+// on an H200, driver 580.159.04). The devices must be listed all the same:
+// they were not, and the GPU was reached only through the surfaceless
+// platform, reported as software. The shim lists the client extensions so.
+TEST(GlBackend, ListsEglDevicesWhereLibEglNamesOnlyDeviceBase) {
+  const std::string shim = std::string("ROLLSPIN_EGL_LIBRARY=") + ROLLSPIN_EGL_DEVICE_BASE_SHIM;
+  const auto info = test::runRollspin({"info"}, {}, 0, {shim});
+  ASSERT_EQ(info.exitCode, 0) << info.err;
+  EXPECT_TRUE(has(info.out, "EGL devices 0: ")) << info.out;
+  EXPECT_FALSE(has(info.out, "no EGL devices")) << info.out;
+  const auto index = test::eglDevicesHere().softwareIndex;
+  if (!index) GTEST_SKIP() << "EGL lists no Mesa software device on this machine (rollspin info)";
+  const fs::path dir = test::freshTempDir("gl_device_base");
+  const auto r = renderSmall(dir / "a.png", {"ROLLSPIN_GL=egl", "ROLLSPIN_EGL_DEVICE=" + std::to_string(*index), shim});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(has(r.err, "gl: backend     egl (device)")) << r.err;
+}
+
 TEST(GlBackend, EachFailureExitsOneWithTheReasonAndWhatToTry) {
   const fs::path dir = test::freshTempDir("gl_failures");
   const fs::path out = dir / "a.png";

@@ -65,7 +65,9 @@ fs::path renderScene(const std::string& name, const std::vector<std::string>& ex
   const test::CliResult r = test::runRollspin(args, {}, 0, env);
   EXPECT_EQ(r.exitCode, 0) << r.err;
   // The backend asked for is the one that drew (--verbose names it).
-  if (!backend.empty()) EXPECT_NE(r.err.find("gl: backend     " + backend), std::string::npos) << r.err;
+  if (!backend.empty()) {
+    EXPECT_NE(r.err.find("gl: backend     " + backend), std::string::npos) << r.err;
+  }
   return out;
 }
 

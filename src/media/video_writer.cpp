@@ -13,11 +13,12 @@ extern "C" {
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <system_error>
 
 #include "core/error.hpp"
-
 #include "media/av_support.hpp"
 
 namespace rollspin::media {
@@ -30,6 +31,35 @@ fs::path partialName(const fs::path& finalPath) {
   return out;
 }
 
+namespace {
+
+// RGBA → the codec's format, bilinear, in swscale's own slice threads
+// (ROLLSPIN_SWS_THREADS, else one per core: FFmpeg >= 5.0). The encoder
+// thread converts every frame before x264 spreads the encoding over its
+// threads; converting on one core made that thread the bottleneck of a
+// GPU-rendered 1080p video. The slices split the output rows, so the result
+// does not depend on the thread count.
+SwsContext* makeConverter(int width, int height, AVPixelFormat to) {
+  int threads = 0;  // swscale's "auto": one per core
+  if (const char* text = std::getenv("ROLLSPIN_SWS_THREADS"); text != nullptr && *text != '\0')
+    threads = std::max(0, std::atoi(text));
+  SwsContext* sws = sws_alloc_context();
+  if (sws == nullptr) return nullptr;
+  const bool set = av_opt_set_int(sws, "srcw", width, 0) >= 0 && av_opt_set_int(sws, "srch", height, 0) >= 0 &&
+                   av_opt_set_int(sws, "dstw", width, 0) >= 0 && av_opt_set_int(sws, "dsth", height, 0) >= 0 &&
+                   av_opt_set_pixel_fmt(sws, "src_format", AV_PIX_FMT_RGBA, 0) >= 0 &&
+                   av_opt_set_pixel_fmt(sws, "dst_format", to, 0) >= 0 &&
+                   av_opt_set_int(sws, "sws_flags", SWS_BILINEAR, 0) >= 0 &&
+                   av_opt_set_int(sws, "threads", threads, 0) >= 0;
+  if (!set || sws_init_context(sws, nullptr, nullptr) < 0) {
+    sws_freeContext(sws);
+    return nullptr;
+  }
+  return sws;
+}
+
+}  // namespace
+
 struct VideoWriter::Impl {
   fs::path finalPath, writePath;
   bool direct = false;
@@ -39,6 +69,7 @@ struct VideoWriter::Impl {
   AVCodecContext* codec = nullptr;
   AVStream* stream = nullptr;
   AVFrame* frame = nullptr;
+  AVFrame* source = nullptr;  // the caller's RGBA image, wrapped (never copied) for sws_scale_frame
   AVPacket* packet = nullptr;
   SwsContext* sws = nullptr;
   long long framesWritten = 0;
@@ -59,6 +90,7 @@ struct VideoWriter::Impl {
   void release() {
     sws_freeContext(sws);
     sws = nullptr;
+    av_frame_free(&source);
     av_frame_free(&frame);
     av_packet_free(&packet);
     avcodec_free_context(&codec);
@@ -189,10 +221,11 @@ VideoWriter::VideoWriter(fs::path finalPath, const VideoSettings& settings) : im
   m.check(av_frame_get_buffer(m.frame, 0), "allocating a frame");
 
   if (m.pixelFormat != AV_PIX_FMT_PAL8) {  // a palette comes from a filter graph (gif_writer), not swscale
-    m.sws = sws_getContext(c->width, c->height, AV_PIX_FMT_RGBA, c->width, c->height, m.pixelFormat, SWS_BILINEAR,
-                           nullptr, nullptr, nullptr);
+    m.sws = makeConverter(c->width, c->height, m.pixelFormat);
     if (m.sws == nullptr)
       throw runtimeError(where, "libswscale cannot convert RGBA to {} at this size", settings.pixelFormat);
+    m.source = av_frame_alloc();
+    if (m.source == nullptr) throw runtimeError(where, "out of memory allocating a frame");
     const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
     // Source: full-range RGB (its table is unused); destination: limited range.
     if (settings.yuvBt709) sws_setColorspaceDetails(m.sws, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
@@ -232,9 +265,21 @@ void VideoWriter::write(const ImageView& image) {
   // Rows from the top whatever the storage order: a negative stride flips.
   const std::uint8_t* top = image.rowFromTop(0);
   const int stride = static_cast<int>(image.rows == RowOrder::TopDown ? image.stride : -image.stride);
-  const std::uint8_t* const source[1] = {top};
-  const int sourceStride[1] = {stride};
-  sws_scale(m.sws, source, sourceStride, 0, image.height, m.frame->data, m.frame->linesize);
+  AVFrame* source = m.source;
+  source->format = AV_PIX_FMT_RGBA;
+  source->width = image.width;
+  source->height = image.height;
+  source->data[0] = const_cast<std::uint8_t*>(top);
+  source->linesize[0] = stride;
+  // A reference that frees nothing: swscale takes a reference to its input,
+  // and one to memory without a buffer would be a copy of the whole image.
+  const auto bytes = static_cast<std::size_t>(image.stride) * static_cast<std::size_t>(image.height);
+  source->buf[0] = av_buffer_create(
+      const_cast<std::uint8_t*>(image.rgba), bytes, [](void*, std::uint8_t*) {}, nullptr, AV_BUFFER_FLAG_READONLY);
+  if (source->buf[0] == nullptr) throw runtimeError(SourceLoc{m.finalPath.string()}, "out of memory wrapping a frame");
+  const int converted = sws_scale_frame(m.sws, m.frame, source);
+  av_frame_unref(source);
+  m.check(converted, "converting a frame to " + m.settings.pixelFormat);
   writeConverted(m.frame);
 }
 

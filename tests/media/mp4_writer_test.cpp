@@ -1,13 +1,17 @@
 // Mp4Writer on synthetic frames (no GL): what a player sees (codec, pixel
 // format, BT.709 tags, timestamps, faststart), colours that survive the
 // RGBA → yuv420p → RGBA round trip, and every failure leaving nothing behind.
+#include "media/mp4_writer.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "core/error.hpp"
-#include "media/mp4_writer.hpp"
 #include "media/video_probe.hpp"
 #include "support/cli_runner.hpp"
 
@@ -145,6 +149,47 @@ TEST(Mp4Writer, FullDiskIsAClearRuntimeError) {
     EXPECT_EQ(e.exitCode(), 1);
     EXPECT_NE(std::string(e.what()).find("No space left"), std::string::npos) << e.what();
   }
+}
+
+// The RGBA → yuv420p conversion runs in swscale's slice threads
+// (ROLLSPIN_SWS_THREADS, else one per core). Slices split the output rows,
+// and the chroma rows are filtered from luma rows on both sides of a slice
+// boundary: the bytes must not depend on the thread count, for rows stored
+// top-down or bottom-up (a GL read-back).
+TEST(Mp4Writer, ConversionThreadsDoNotChangeTheBytes) {
+  const int width = 160, height = 90;
+  media::Image image(width, height);
+  std::vector<std::string> videos;
+  for (const char* threads : {"1", "3", "7"}) {
+    ASSERT_EQ(setenv("ROLLSPIN_SWS_THREADS", threads, 1), 0);
+    const fs::path dir = test::freshTempDir(std::string("mp4_sws_threads_") + threads);
+    const fs::path out = dir / "clip.mp4";
+    {
+      media::Mp4Writer writer(out, media::Mp4Settings{width, height, 12});
+      for (int k = 0; k < 6; ++k) {
+        // Gradients, so every row differs from its neighbours in every
+        // channel. (Not noise: libx264's frame threads encode noise a little
+        // differently from run to run whatever the conversion does.)
+        for (int y = 0; y < height; ++y)
+          for (int x = 0; x < width; ++x) {
+            std::uint8_t* p = image.pixel(x, y);
+            p[0] = static_cast<std::uint8_t>(x + 2 * y + 3 * k);
+            p[1] = static_cast<std::uint8_t>(3 * y + x / 4 + k);
+            p[2] = static_cast<std::uint8_t>(2 * (x + y) - 5 * k);
+            p[3] = 255;
+          }
+        media::ImageView view = image.view();
+        if (k % 2 == 1) view.rows = media::RowOrder::BottomUp;
+        writer.write(view);
+      }
+      writer.finish();
+    }
+    videos.push_back(test::readFile(out));
+  }
+  unsetenv("ROLLSPIN_SWS_THREADS");
+  ASSERT_FALSE(videos[0].empty());
+  EXPECT_TRUE(videos[0] == videos[1]) << "1 and 3 conversion threads wrote different videos";
+  EXPECT_TRUE(videos[0] == videos[2]) << "1 and 7 conversion threads wrote different videos";
 }
 
 }  // namespace

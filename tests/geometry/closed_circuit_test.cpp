@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "kinematics/rolling_kinematics.hpp"
+#include "support/numbers.hpp"
 #include "surface_support.hpp"
 
 using namespace rollspin;
@@ -20,8 +21,8 @@ using namespace rollspin::test;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+using rollspin::test::kDeg;
+using rollspin::test::kPi;
 
 struct Circuit {
   std::string name;

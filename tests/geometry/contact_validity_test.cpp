@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "support/numbers.hpp"
 #include "surface_support.hpp"
 
 using namespace rollspin;
@@ -14,7 +15,7 @@ using namespace rollspin::geometry;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using rollspin::test::kPi;
 
 TEST(ContactValidity, BallTooBigInsideACylinder) {
   auto cyl = std::make_shared<const Cylinder>(2.0, Vec3(0, 0, 1), Side::Inside);

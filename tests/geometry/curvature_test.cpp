@@ -11,6 +11,7 @@
 
 #include "geometry/analytic_paths.hpp"
 #include "kinematics/rolling_kinematics.hpp"
+#include "support/numbers.hpp"
 #include "surface_support.hpp"
 
 using namespace rollspin;
@@ -19,8 +20,8 @@ using namespace rollspin::test;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+using rollspin::test::kDeg;
+using rollspin::test::kPi;
 
 std::vector<double> grid(double length, int n) {
   std::vector<double> s;

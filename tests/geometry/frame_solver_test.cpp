@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "support/numbers.hpp"
 #include "surface_support.hpp"
 
 using namespace rollspin;
@@ -16,7 +17,7 @@ using namespace rollspin::test;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using rollspin::test::kPi;
 
 spin::Su2 finalOf(const ContactPath& path, double R, spin::Method m, long long steps) {
   const spin::SolveStats st = spin::Propagator(path, R, m, steps).solveFinal();

@@ -3,11 +3,11 @@
 #include <numbers>
 
 #include "spin/field.hpp"
+#include "support/numbers.hpp"
 
 namespace rollspin::test {
 
 using namespace geometry;
-constexpr double kPi = std::numbers::pi;
 
 namespace {
 std::shared_ptr<const Expression> expr(const std::string& text, std::vector<std::string> vars) {

@@ -10,11 +10,10 @@ namespace test = rollspin::test;
 
 namespace {
 
-std::string lollipop() { return (test::sourceDir() / "scenes" / "lollipop.toml").string(); }
-
 TEST(Messages, SizeFlagsAreNamedAsTyped) {
   const auto dir = test::freshTempDir("messages_size");
-  const auto odd = test::runRollspin({"render", lollipop(), "--width", "641", "-o", (dir / "v.mp4").string()});
+  const auto odd = test::runRollspin(
+      {"render", test::shippedScenePath("lollipop"), "--width", "641", "-o", (dir / "v.mp4").string()});
   EXPECT_EQ(odd.exitCode, 2);
   EXPECT_NE(odd.err.find("rollspin: error: --width 641: "), std::string::npos) << odd.err;
   EXPECT_EQ(odd.err.find("--set"), std::string::npos) << odd.err;
@@ -22,15 +21,15 @@ TEST(Messages, SizeFlagsAreNamedAsTyped) {
   return;  // AddressSanitizer reserves terabytes of address space: RLIMIT_AS cannot be set
 #endif
   // The frame-memory check, in a process limited to 1.5 GiB.
-  const auto big = test::runRollspin({"render", lollipop(), "--still", "--width", "8192", "--height", "8192", "-o",
-                                      (dir / "s.png").string()},
+  const auto big = test::runRollspin({"render", test::shippedScenePath("lollipop"), "--still", "--width", "8192",
+                                      "--height", "8192", "-o", (dir / "s.png").string()},
                                      {}, 1536ULL << 20);
   EXPECT_EQ(big.exitCode, 2) << big.err;
   EXPECT_NE(big.err.find("rollspin: error: --height 8192: 8192x8192"), std::string::npos) << big.err;
 }
 
 TEST(Messages, ATinyBallIsNamedWithItsBound) {
-  const auto r = test::runRollspin({"solve", lollipop(), "--set", "ball.radius=1e-300"});
+  const auto r = test::runRollspin({"solve", test::shippedScenePath("lollipop"), "--set", "ball.radius=1e-300"});
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("--set ball.radius=1e-300: ball.radius = 1e-300"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("ball.radius must be at least"), std::string::npos) << r.err;
@@ -38,42 +37,42 @@ TEST(Messages, ATinyBallIsNamedWithItsBound) {
 }
 
 TEST(Messages, ExactlyIntegralNumbersAreIntegers) {
-  const auto steps = test::runRollspin({"solve", lollipop(), "--set", "solver.steps=1e5"});
+  const auto steps = test::runRollspin({"solve", test::shippedScenePath("lollipop"), "--set", "solver.steps=1e5"});
   EXPECT_EQ(steps.exitCode, 0) << steps.err;
   EXPECT_NE(steps.out.find("(100000 steps)"), std::string::npos) << steps.out;
   const auto dir = test::freshTempDir("messages_samples");
-  const auto samples = test::runRollspin(
-      {"timeline", lollipop(), "--set", "timeline.samples=1e3", "-o", (dir / "t.csv").string()});
+  const auto samples = test::runRollspin({"timeline", test::shippedScenePath("lollipop"), "--set",
+                                          "timeline.samples=1e3", "-o", (dir / "t.csv").string()});
   EXPECT_EQ(samples.exitCode, 0) << samples.err;
   EXPECT_NE(samples.err.find("wrote 1000 samples"), std::string::npos) << samples.err;
-  const auto fraction = test::runRollspin({"solve", lollipop(), "--set", "solver.steps=1e5.5"});
+  const auto fraction = test::runRollspin({"solve", test::shippedScenePath("lollipop"), "--set", "solver.steps=1e5.5"});
   EXPECT_EQ(fraction.exitCode, 2);
-  const auto half = test::runRollspin({"solve", lollipop(), "--set", "solver.steps=100.5"});
+  const auto half = test::runRollspin({"solve", test::shippedScenePath("lollipop"), "--set", "solver.steps=100.5"});
   EXPECT_EQ(half.exitCode, 2);
   EXPECT_NE(half.err.find("solver.steps"), std::string::npos) << half.err;
 }
 
 TEST(Messages, ParserErrorsSpeakAsRollspinAndSuggest) {
-  const auto typo = test::runRollspin({"solve", lollipop(), "--sett", "ball.radius=2"});
+  const auto typo = test::runRollspin({"solve", test::shippedScenePath("lollipop"), "--sett", "ball.radius=2"});
   EXPECT_EQ(typo.exitCode, 2);
   EXPECT_EQ(typo.err.rfind("rollspin: error: ", 0), 0u) << typo.err;
   EXPECT_NE(typo.err.find("did you mean --set?"), std::string::npos) << typo.err;
-  const auto still = test::runRollspin({"render", lollipop(), "--stil"});
+  const auto still = test::runRollspin({"render", test::shippedScenePath("lollipop"), "--stil"});
   EXPECT_NE(still.err.find("did you mean --still?"), std::string::npos) << still.err;
   const auto range = test::runRollspin({"compare", "a.png", "b.png", "--max-delta", "abc"});
   EXPECT_EQ(range.exitCode, 2);
   EXPECT_EQ(range.err.rfind("rollspin: error: --max-delta", 0), 0u) << range.err;
   EXPECT_EQ(range.err.find("0.000000"), std::string::npos) << range.err;
-  const auto command = test::runRollspin({"rendr", lollipop()});
+  const auto command = test::runRollspin({"rendr", test::shippedScenePath("lollipop")});
   EXPECT_NE(command.err.find("did you mean 'render'?"), std::string::npos) << command.err;
-  const auto far = test::runRollspin({"solve", lollipop(), "--zzzzzz"});
+  const auto far = test::runRollspin({"solve", test::shippedScenePath("lollipop"), "--zzzzzz"});
   EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << "no wild guesses: " << far.err;
 }
 
 TEST(Messages, AnExplicitSetWinsOverAQualityPresetAndSaysSo) {
   const auto dir = test::freshTempDir("messages_quality");
-  const auto r = test::runRollspin({"render", lollipop(), "--quality", "low", "--set", "animation.fps=29.97",
-                                    "--frames", "0:0", "-o", (dir / "q.mp4").string()});
+  const auto r = test::runRollspin({"render", test::shippedScenePath("lollipop"), "--quality", "low", "--set",
+                                    "animation.fps=29.97", "--frames", "0:0", "-o", (dir / "q.mp4").string()});
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("--quality low would set animation.fps=15; keeping --set animation.fps=29.97"),
             std::string::npos) << r.err;

@@ -18,8 +18,6 @@ namespace test = rollspin::test;
 
 namespace {
 
-std::string lollipop() { return (test::sourceDir() / "scenes" / "lollipop.toml").string(); }
-
 // Every entry of `dir` but the stderr capture.
 std::vector<std::string> entriesBesideStderr(const fs::path& dir) {
   std::vector<std::string> names;
@@ -66,7 +64,9 @@ TEST_P(Interrupted, TimelineLeavesNothingAndSaysSo) {
   const fs::path dir = test::freshTempDir(std::string("interrupt_timeline_") + signalName(signal));
   const fs::path out = dir / "big.csv";
   const std::string err = interrupt(
-      dir, {"timeline", lollipop(), "--set", "timeline.samples=5000000", "--set", "path.turns=1000", "-o", out.string()},
+      dir,
+      {"timeline", test::shippedScenePath("lollipop"), "--set", "timeline.samples=5000000", "--set", "path.turns=1000",
+       "-o", out.string()},
       [&] { return anyEntryStartsWith(dir, ".big.csv."); }, signal);
   EXPECT_NE(err.find("removed the unfinished " + out.string()), std::string::npos) << err;
   EXPECT_EQ(entriesBesideStderr(dir), std::vector<std::string>{}) << err;
@@ -76,7 +76,9 @@ TEST_P(Interrupted, ReportLeavesOnlyCompleteFiles) {
   const int signal = GetParam();
   const fs::path dir = test::freshTempDir(std::string("interrupt_report_") + signalName(signal));
   const std::string err = interrupt(
-      dir, {"report", "errors", lollipop(), "--set", "path.turns=400", "-o", (dir / "report").string()},
+      dir,
+      {"report", "errors", test::shippedScenePath("lollipop"), "--set", "path.turns=400", "-o",
+       (dir / "report").string()},
       [&] { return stderrHas(dir, "reference"); }, signal);
   EXPECT_NE(err.find("any output already reported as written is complete"), std::string::npos) << err;
   for (const std::string& name : entriesBesideStderr(dir))
@@ -94,10 +96,11 @@ TEST_P(Interrupted, StillLeavesNothingAndSaysSo) {
   const fs::path dir = test::freshTempDir(std::string("interrupt_still_") + signalName(signal));
   const fs::path out = dir / "still.png";
   // A large frame: the render outlasts the wait after the GL context is made.
-  const std::string err = interrupt(dir,
-                                    {"render", lollipop(), "--still", "--verbose", "--width", "4096", "--height",
-                                     "4096", "--set", "render.msaa=4", "-o", out.string()},
-                                    [&] { return stderrHas(dir, "stage: gl-context"); }, signal);
+  const std::string err = interrupt(
+      dir,
+      {"render", test::shippedScenePath("lollipop"), "--still", "--verbose", "--width", "4096", "--height", "4096",
+       "--set", "render.msaa=4", "-o", out.string()},
+      [&] { return stderrHas(dir, "stage: gl-context"); }, signal);
   EXPECT_NE(err.find("nothing unfinished left"), std::string::npos) << err;
   EXPECT_EQ(entriesBesideStderr(dir), std::vector<std::string>{}) << err;
 }
@@ -106,10 +109,11 @@ TEST_P(Interrupted, PngFramesLeaveAPartialFolderNamedSo) {
   const int signal = GetParam();
   const fs::path dir = test::freshTempDir(std::string("interrupt_frames_") + signalName(signal));
   const fs::path out = dir / "frames";
-  const std::string err = interrupt(dir,
-                                    {"render", lollipop(), "--set", "render.width=64", "--set", "render.height=48",
-                                     "--set", "animation.duration=100", "-o", out.string() + "/"},
-                                    [&] { return anyEntryStartsWith(dir, "frame_00002.png"); }, signal);
+  const std::string err = interrupt(
+      dir,
+      {"render", test::shippedScenePath("lollipop"), "--set", "render.width=64", "--set", "render.height=48", "--set",
+       "animation.duration=100", "-o", out.string() + "/"},
+      [&] { return anyEntryStartsWith(dir, "frame_00002.png"); }, signal);
   EXPECT_NE(err.find(out.string() + ".partial holds complete frames"), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(out));
   for (const std::string& name : entriesBesideStderr(dir)) EXPECT_TRUE(name.starts_with("frames.partial")) << name;
@@ -120,9 +124,10 @@ TEST_P(Interrupted, PngFramesLeaveAPartialFolderNamedSo) {
 // killed by the signal, leaving .clip.mp4.PID.tmp behind).
 TEST(SecondSignal, EndsAVideoAtOnceWithoutATemporary) {
   const fs::path dir = test::freshTempDir("interrupt_twice");
-  test::SpawnedRollspin child({"render", lollipop(), "--set", "render.width=640", "--set", "render.height=480",
-                               "--set", "animation.duration=100", "-o", (dir / "clip.mp4").string()},
-                              dir / "stderr");
+  test::SpawnedRollspin child(
+      {"render", test::shippedScenePath("lollipop"), "--set", "render.width=640", "--set", "render.height=480", "--set",
+       "animation.duration=100", "-o", (dir / "clip.mp4").string()},
+      dir / "stderr");
   ASSERT_TRUE(child.waitUntil([&] {
     std::error_code ec;
     for (const auto& e : fs::directory_iterator(dir, ec))
@@ -164,14 +169,15 @@ TEST(StaleTemporaries, TheNextRunToTheSameNameRemovesThoseOfDeadProcessesOnly) {
   fs::create_directories(dir / (".frames." + dead + ".tmp"));
   std::ofstream(dir / (".frames." + dead + ".tmp") / "frame_00000.png") << "half";
 
-  const auto csv = test::runRollspin({"timeline", lollipop(), "-o", (dir / "t.csv").string()});
+  const auto csv = test::runRollspin({"timeline", test::shippedScenePath("lollipop"), "-o", (dir / "t.csv").string()});
   ASSERT_EQ(csv.exitCode, 0) << csv.err;
   EXPECT_NE(csv.err.find("removed " + (dir / (".t.csv." + dead + ".tmp")).string()), std::string::npos) << csv.err;
-  const auto mp4 = test::runRollspin({"render", lollipop(), "--set", "render.width=64", "--set", "render.height=48",
-                                      "--frames", "0:1", "-o", (dir / "clip.mp4").string()});
+  const auto mp4 = test::runRollspin({"render", test::shippedScenePath("lollipop"), "--set", "render.width=64", "--set",
+                                      "render.height=48", "--frames", "0:1", "-o", (dir / "clip.mp4").string()});
   ASSERT_EQ(mp4.exitCode, 0) << mp4.err;
-  const auto frames = test::runRollspin({"render", lollipop(), "--set", "render.width=64", "--set", "render.height=48",
-                                         "--frames", "0:1", "-o", (dir / "frames").string()});
+  const auto frames =
+      test::runRollspin({"render", test::shippedScenePath("lollipop"), "--set", "render.width=64", "--set",
+                         "render.height=48", "--frames", "0:1", "-o", (dir / "frames").string()});
   ASSERT_EQ(frames.exitCode, 0) << frames.err;
   std::vector<std::string> top;
   for (const auto& e : fs::directory_iterator(dir)) top.push_back(e.path().filename().string());
@@ -197,19 +203,37 @@ TEST(OutputPaths, RefusedWithExit2BeforeAnyWork) {
   fs::create_directories(dir / "adir.csv");
   std::ofstream(dir / "afile") << "x";
   const std::vector<OutputCase> cases = {
-      {"mp4 onto a folder", {"render", lollipop(), "-o", "{DIR}/adir.mp4"}, "'{DIR}/adir.mp4' is a directory"},
-      {"csv onto a folder", {"timeline", lollipop(), "-o", "{DIR}/adir.csv"}, "'{DIR}/adir.csv' is a directory"},
-      {"still through a file", {"render", lollipop(), "--still", "-o", "{DIR}/afile/x.png"},
+      {"mp4 onto a folder",
+       {"render", test::shippedScenePath("lollipop"), "-o", "{DIR}/adir.mp4"},
+       "'{DIR}/adir.mp4' is a directory"},
+      {"csv onto a folder",
+       {"timeline", test::shippedScenePath("lollipop"), "-o", "{DIR}/adir.csv"},
+       "'{DIR}/adir.csv' is a directory"},
+      {"still through a file",
+       {"render", test::shippedScenePath("lollipop"), "--still", "-o", "{DIR}/afile/x.png"},
        "'{DIR}/afile' is a file, not a folder"},
-      {"csv in a missing folder", {"timeline", lollipop(), "-o", "{DIR}/nope/x.csv"},
+      {"csv in a missing folder",
+       {"timeline", test::shippedScenePath("lollipop"), "-o", "{DIR}/nope/x.csv"},
        "the folder '{DIR}/nope' does not exist"},
-      {"mp4 in a folder that takes no files", {"render", lollipop(), "-o", "/proc/x.mp4"}, "cannot write in the folder '/proc'"},
-      {"frames onto a file", {"render", lollipop(), "-o", "{DIR}/afile"}, "'{DIR}/afile' is a file; a folder is needed"},
-      {"report into a file", {"report", "errors", lollipop(), "-o", "{DIR}/afile/r"}, "'{DIR}/afile' is a file"},
+      {"mp4 in a folder that takes no files",
+       {"render", test::shippedScenePath("lollipop"), "-o", "/proc/x.mp4"},
+       "cannot write in the folder '/proc'"},
+      {"frames onto a file",
+       {"render", test::shippedScenePath("lollipop"), "-o", "{DIR}/afile"},
+       "'{DIR}/afile' is a file; a folder is needed"},
+      {"report into a file",
+       {"report", "errors", test::shippedScenePath("lollipop"), "-o", "{DIR}/afile/r"},
+       "'{DIR}/afile' is a file"},
       {"diff onto a folder", {"compare", "{GOLDEN}", "{GOLDEN}", "--diff", "{DIR}/adir.csv"}, "is a directory"},
-      {"transparent JPEG", {"render", lollipop(), "--still", "--transparent", "-o", "{DIR}/out.jpg"}, "JPEG has none"},
-      {"still as MP4", {"render", lollipop(), "--still", "-o", "{DIR}/out.mp4"}, "is an animation format (drop --still"},
-      {"clip as JPEG", {"render", lollipop(), "-o", "{DIR}/out.jpg"}, "is a still format (pass --still"},
+      {"transparent JPEG",
+       {"render", test::shippedScenePath("lollipop"), "--still", "--transparent", "-o", "{DIR}/out.jpg"},
+       "JPEG has none"},
+      {"still as MP4",
+       {"render", test::shippedScenePath("lollipop"), "--still", "-o", "{DIR}/out.mp4"},
+       "is an animation format (drop --still"},
+      {"clip as JPEG",
+       {"render", test::shippedScenePath("lollipop"), "-o", "{DIR}/out.jpg"},
+       "is a still format (pass --still"},
   };
   const std::string golden = (test::sourceDir() / "tests" / "golden" / "strobe.png").string();
   auto fill = [&](std::string text) {

@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 
 // Flat colour blocks (chroma subsampling cannot blur them away) and a bar
 // that moves one block per frame, so every frame differs.
-media::Image testFrame(int width, int height, int k) {
+media::Image blockFrame(int width, int height, int k) {
   media::Image image(width, height);
   static const std::uint8_t kColours[4][3] = {{200, 30, 30}, {30, 160, 60}, {40, 60, 210}, {235, 235, 235}};
   for (int y = 0; y < height; ++y)
@@ -35,7 +35,7 @@ media::Image testFrame(int width, int height, int k) {
   return image;
 }
 
-std::vector<fs::path> filesIn(const fs::path& dir) {
+std::vector<fs::path> entriesIn(const fs::path& dir) {
   std::vector<fs::path> out;
   for (const auto& e : fs::directory_iterator(dir)) out.push_back(e.path().filename());
   return out;
@@ -47,11 +47,11 @@ TEST(Mp4Writer, WritesH264Yuv420pTaggedBt709WithMonotonicTimestamps) {
   media::Mp4Settings settings{64, 48, 12};
   {
     media::Mp4Writer writer(out, settings);
-    for (int k = 0; k < 24; ++k) writer.write(testFrame(64, 48, k).view());
+    for (int k = 0; k < 24; ++k) writer.write(blockFrame(64, 48, k).view());
     EXPECT_FALSE(fs::exists(out)) << "the final name appears only on finish()";
     EXPECT_EQ(writer.finish(), out);
   }
-  EXPECT_EQ(filesIn(dir), std::vector<fs::path>{"clip.mp4"}) << "no temporary file left";
+  EXPECT_EQ(entriesIn(dir), std::vector<fs::path>{"clip.mp4"}) << "no temporary file left";
   const test::VideoProbe probe = test::probeVideo(out, {5});
   EXPECT_EQ(probe.codec, "h264");
   EXPECT_EQ(probe.pixelFormat, "yuv420p");
@@ -70,7 +70,7 @@ TEST(Mp4Writer, WritesH264Yuv420pTaggedBt709WithMonotonicTimestamps) {
   // Flat blocks away from their edges: the BT.709 round trip is within a few
   // levels (8-bit limited-range YUV quantisation plus CRF 18).
   ASSERT_EQ(probe.kept.size(), 1u);
-  const media::Image expected = testFrame(64, 48, 5);
+  const media::Image expected = blockFrame(64, 48, 5);
   double worst = 0.0;
   for (int y = 4; y < 48; y += 16)
     for (int x = 4; x < 64; x += 16)
@@ -84,11 +84,11 @@ TEST(Mp4Writer, FinishPartialGivesAShorterPlayableVideoUnderAPartialName) {
   const fs::path out = dir / "clip.mp4";
   {
     media::Mp4Writer writer(out, {32, 32, 10});
-    for (int k = 0; k < 5; ++k) writer.write(testFrame(32, 32, k).view());
+    for (int k = 0; k < 5; ++k) writer.write(blockFrame(32, 32, k).view());
     EXPECT_EQ(writer.finishPartial(), dir / "clip.partial.mp4");
   }
   EXPECT_FALSE(fs::exists(out));
-  EXPECT_EQ(filesIn(dir), std::vector<fs::path>{"clip.partial.mp4"});
+  EXPECT_EQ(entriesIn(dir), std::vector<fs::path>{"clip.partial.mp4"});
   EXPECT_EQ(test::probeVideo(dir / "clip.partial.mp4").ptsSeconds.size(), 5u);
 }
 
@@ -100,9 +100,9 @@ TEST(Mp4Writer, NothingIsLeftWithoutFramesOrWithoutFinish) {
   }
   {
     media::Mp4Writer writer(dir / "b.mp4", {32, 32, 10});
-    writer.write(testFrame(32, 32, 0).view());
+    writer.write(blockFrame(32, 32, 0).view());
   }  // destroyed unfinished (an error elsewhere)
-  EXPECT_TRUE(filesIn(dir).empty());
+  EXPECT_TRUE(entriesIn(dir).empty());
 }
 
 TEST(Mp4Writer, RefusesOddSizesAndMissingEncodersUpFront) {
@@ -123,7 +123,7 @@ TEST(Mp4Writer, RefusesOddSizesAndMissingEncodersUpFront) {
     EXPECT_EQ(e.exitCode(), 1);
     EXPECT_NE(std::string(e.what()).find("no-such-encoder"), std::string::npos) << e.what();
   }
-  EXPECT_TRUE(filesIn(dir).empty());
+  EXPECT_TRUE(entriesIn(dir).empty());
 }
 
 TEST(Mp4Writer, UnwritableFolderIsAClearRuntimeError) {
@@ -142,7 +142,7 @@ TEST(Mp4Writer, FullDiskIsAClearRuntimeError) {
   if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
   try {
     media::Mp4Writer writer("/dev/full", {64, 48, 10});
-    for (int k = 0; k < 40; ++k) writer.write(testFrame(64, 48, k).view());
+    for (int k = 0; k < 40; ++k) writer.write(blockFrame(64, 48, k).view());
     writer.finish();
     FAIL() << "writing to /dev/full succeeded";
   } catch (const Error& e) {

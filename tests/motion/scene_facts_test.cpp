@@ -2,23 +2,25 @@
 // numbers: the kinematic oracle (src/kinematics, which never sees a spinor or
 // a curvature) and closed forms that tests/spin/oracle_test.cpp verifies
 // against it. Each scene is the file in scenes/, as the gallery renders it.
+#include "motion/scene_facts.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "motion/scene_facts.hpp"
-#include "motion/solve_job.hpp"
 #include "core/error.hpp"
 #include "kinematics/rolling_kinematics.hpp"
+#include "motion/solve_job.hpp"
 #include "spin/field.hpp"
 #include "spin/propagator.hpp"
 #include "support/cli_runner.hpp"
+#include "support/numbers.hpp"
 
 using namespace rollspin;
 using motion::SceneFacts;
+using rollspin::test::kPi;
 using scene::Fact;
-constexpr double kPi = std::numbers::pi;
 
 namespace {
 

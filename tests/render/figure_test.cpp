@@ -36,10 +36,8 @@ std::string run(const std::string& command, int* status = nullptr) {
   return out;
 }
 
-fs::path scene(const std::string& name) { return test::sourceDir() / "scenes" / (name + ".toml"); }
-
 void renderStill(const std::string& sceneName, const fs::path& out, std::vector<std::string> extra) {
-  std::vector<std::string> args{"render", scene(sceneName).string(), "--still", "-o", out.string()};
+  std::vector<std::string> args{"render", test::shippedScenePath(sceneName), "--still", "-o", out.string()};
   args.insert(args.end(), extra.begin(), extra.end());
   const test::CliResult r = test::runRollspin(args);
   ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -211,7 +209,7 @@ TEST(FigureCli, TrailsArePathsAndTheLollipopFigureIsSmall) {
 TEST(FigureCli, AFigureJobOpensNoEncoderAndWritesNoPng) {
   const fs::path dir = test::freshTempDir("figure_stages");
   const test::CliResult r = test::runRollspin(
-      {"render", scene("lollipop").string(), "--still", "--verbose", "-o", (dir / "fig.pdf").string()});
+      {"render", test::shippedScenePath("lollipop"), "--still", "--verbose", "-o", (dir / "fig.pdf").string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("stage: figure"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("stage: encoder"), std::string::npos) << r.err;
@@ -234,7 +232,8 @@ TEST(FigureCli, BadFigureKeysExit2NamingTheKey) {
       {{"--set", "render.format=pdf"}, "f.png", "render.format"},
   };
   for (const Case& c : cases) {
-    std::vector<std::string> args{"render", scene("lollipop").string(), "--still", "-o", (dir / c.output).string()};
+    std::vector<std::string> args{"render", test::shippedScenePath("lollipop"), "--still", "-o",
+                                  (dir / c.output).string()};
     args.insert(args.end(), c.extra.begin(), c.extra.end());
     const test::CliResult r = test::runRollspin(args);
     EXPECT_EQ(r.exitCode, 2) << c.key << ": " << r.err;
@@ -242,13 +241,13 @@ TEST(FigureCli, BadFigureKeysExit2NamingTheKey) {
     EXPECT_FALSE(fs::exists(dir / c.output)) << c.key;
   }
   // A full disk is a runtime failure (exit 1); render.format decides for a name without extension.
-  const test::CliResult full =
-      test::runRollspin({"render", scene("lollipop").string(), "--still", "-o", "/dev/full", "--set", "render.format=pdf"});
+  const test::CliResult full = test::runRollspin(
+      {"render", test::shippedScenePath("lollipop"), "--still", "-o", "/dev/full", "--set", "render.format=pdf"});
   EXPECT_EQ(full.exitCode, 1) << full.err;
   EXPECT_NE(full.err.find("No space left"), std::string::npos) << full.err;
   // An animation refuses a figure format.
-  const test::CliResult video =
-      test::runRollspin({"render", scene("lollipop").string(), "-o", (dir / "v.mp4").string(), "--set", "render.format=pdf"});
+  const test::CliResult video = test::runRollspin(
+      {"render", test::shippedScenePath("lollipop"), "-o", (dir / "v.mp4").string(), "--set", "render.format=pdf"});
   EXPECT_EQ(video.exitCode, 2) << video.err;
   EXPECT_NE(video.err.find("--still"), std::string::npos) << video.err;
 }

@@ -16,14 +16,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string scene(const std::string& name) {
+std::string renderTestScene(const std::string& name) {
   return (test::sourceDir() / "tests/render/scenes" / (name + ".toml")).string();
 }
 
 TEST(RenderCli, StillHonoursSizeAndTransparency) {
   const fs::path dir = test::freshTempDir("cli_still");
-  const auto r = test::runRollspin({"render", scene("twin_only"), "--still", "--width", "64", "--height", "48",
-                                    "--transparent", "-o", (dir / "a.png").string()});
+  const auto r = test::runRollspin({"render", renderTestScene("twin_only"), "--still", "--width", "64", "--height",
+                                    "48", "--transparent", "-o", (dir / "a.png").string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const media::Image img = media::loadImage(dir / "a.png", {});
   EXPECT_EQ(img.width, 64);
@@ -36,7 +36,7 @@ TEST(RenderCli, CustomTextureIsUsed) {
   media::Image tex(8, 4);
   for (std::size_t i = 0; i < tex.rgba.size(); i += 4) tex.rgba[i] = tex.rgba[i + 3] = 255;  // pure red
   media::writePng(dir / "red.png", tex.view(), media::PngChannels::Rgba);
-  const auto r = test::runRollspin({"render", scene("transparent"), "--still", "--set",
+  const auto r = test::runRollspin({"render", renderTestScene("transparent"), "--still", "--set",
                                     "ball.texture=" + (dir / "red.png").string(), "-o", (dir / "a.png").string()});
   EXPECT_EQ(r.exitCode, 0) << r.err;
 }
@@ -50,8 +50,15 @@ TEST(RenderCli, CameraAndLayoutOptionsRender) {
       {"--set", "ball.marker=[1, 0, 0]", "--set", "render.strobe=4", "--at", "s=0"},
   };
   for (const auto& extra : variants) {
-    std::vector<std::string> args{"render", scene("lollipop_side_by_side"), "--still", "--width", "96", "--height",
-                                  "54", "-o", (dir / "a.png").string()};
+    std::vector<std::string> args{"render",
+                                  renderTestScene("lollipop_side_by_side"),
+                                  "--still",
+                                  "--width",
+                                  "96",
+                                  "--height",
+                                  "54",
+                                  "-o",
+                                  (dir / "a.png").string()};
     args.insert(args.end(), extra.begin(), extra.end());
     const auto r = test::runRollspin(args);
     EXPECT_EQ(r.exitCode, 0) << extra[1] << ": " << r.err;
@@ -69,8 +76,9 @@ TEST(RenderCli, ContextFailureExitsOne) {
                                          std::pair{"egl", "eglCreateContext (OpenGL 4.5 core)"}}) {
     // A GPU's EGL driver ignores Mesa's cap: nothing to provoke there.
     if (std::string_view(backend) == "egl" && test::eglDevicesHere().hardware) continue;
-    const auto r = test::runRollspin({"render", scene("twin_only"), "--still", "-o", (dir / "a.png").string()}, {}, 0,
-                                     {std::string("ROLLSPIN_GL=") + backend});
+    const auto r =
+        test::runRollspin({"render", renderTestScene("twin_only"), "--still", "-o", (dir / "a.png").string()}, {}, 0,
+                          {std::string("ROLLSPIN_GL=") + backend});
     EXPECT_EQ(r.exitCode, 1) << r.err;
     EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / "a.png"));
@@ -81,7 +89,7 @@ TEST(RenderCli, ContextFailureExitsOne) {
 TEST(SolveCli, NeedsNoGlContext) {
   // solve never creates a context: it works even where GL 4.5 is unavailable.
   ::setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1);
-  const auto r = test::runRollspin({"solve", scene("lollipop_side_by_side")});
+  const auto r = test::runRollspin({"solve", renderTestScene("lollipop_side_by_side")});
   ::unsetenv("MESA_GL_VERSION_OVERRIDE");
   EXPECT_EQ(r.exitCode, 0) << r.err;
 }
@@ -110,7 +118,7 @@ TEST(RenderCli, BadInputExitsTwoWithAClearMessage) {
       {{"--at", "t=1"}, "--at"},
   };
   for (const BadCase& c : cases) {
-    std::vector<std::string> args{"render", scene("lollipop_side_by_side"), "--still", "-o", out};
+    std::vector<std::string> args{"render", renderTestScene("lollipop_side_by_side"), "--still", "-o", out};
     args.insert(args.end(), c.args.begin(), c.args.end());
     const auto r = test::runRollspin(args);
     EXPECT_EQ(r.exitCode, 2) << c.args.back() << ": " << r.err;

@@ -10,15 +10,16 @@
 
 #include "oracle_support.hpp"
 #include "spin/field.hpp"
+#include "support/numbers.hpp"
 #include "support/test_paths.hpp"
 
 using namespace rollspin;
 using namespace rollspin::test;
-using spin::Method;
-using spin::Su2;
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
-constexpr double kPi = std::numbers::pi;
+using rollspin::test::kPi;
+using spin::Method;
+using spin::Su2;
 
 // Oracle ≈ kinematics: limited by RK4 + finite differences in the oracle.
 constexpr double kKinematicTol = 1e-10;

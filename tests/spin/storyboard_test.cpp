@@ -5,26 +5,26 @@
 // kinematic oracle run over the concatenated path (it sees only point(s)
 // and normal(s); the joins are breakpoints, so its stencils stay inside one
 // piece), with the sign from the oracle's continuous lift.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
-
-#include <fmt/format.h>
 
 #include "geometry/clothoid_path.hpp"
 #include "geometry/joined_path.hpp"
 #include "geometry/surface_paths.hpp"
 #include "oracle_support.hpp"
 #include "spin/field.hpp"
+#include "support/numbers.hpp"
 #include "support/test_paths.hpp"
 
 using namespace rollspin;
 using namespace rollspin::test;
 using Eigen::Vector3d;
+using rollspin::test::kPi;
 using spin::Method;
 using spin::Su2;
-constexpr double kPi = std::numbers::pi;
 
 namespace {
 

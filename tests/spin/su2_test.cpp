@@ -1,13 +1,15 @@
 // SU(2) ↔ SO(3) plumbing: the exponential, the product, angle-axis extraction.
+#include "spin/su2.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <numbers>
 
-#include "spin/su2.hpp"
+#include "support/numbers.hpp"
 
 using namespace rollspin::spin;
-constexpr double kPi = std::numbers::pi;
+using rollspin::test::kPi;
 
 TEST(Su2, ExponentialIsTheRotationAboutTheVector) {
   const Vec3 axis = Vec3(1, -2, 0.5).normalized();

@@ -11,11 +11,12 @@
 
 #include "kinematics/rolling_kinematics.hpp"
 #include "oracle_support.hpp"
+#include "support/numbers.hpp"
 #include "support/test_paths.hpp"
 
 using namespace rollspin;
 using namespace rollspin::test;
-constexpr double kPi = std::numbers::pi;
+using rollspin::test::kPi;
 
 namespace {
 

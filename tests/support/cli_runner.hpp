@@ -51,6 +51,8 @@ class SpawnedRollspin {
 std::filesystem::path freshTempDir(const std::string& name);
 
 std::filesystem::path sourceDir();
+// A scene shipped in scenes/ by name ("lollipop"), as a path string for a command line.
+std::string shippedScenePath(const std::string& name);
 // A file's bytes ("" when it cannot be read).
 std::string readFile(const std::filesystem::path& p);
 

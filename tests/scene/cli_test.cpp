@@ -144,7 +144,7 @@ TEST(ScenePrint, GlContextKeysRoundTrip) {
   ASSERT_EQ(unset.exitCode, 0) << unset.err;
   EXPECT_NE(unset.out.find("# backend = ROLLSPIN_GL, else \"auto\""), std::string::npos) << unset.out;
   EXPECT_NE(unset.out.find("# device = ROLLSPIN_EGL_DEVICE, else the first GPU"), std::string::npos) << unset.out;
-  for (const std::vector<std::string> set : {std::vector<std::string>{"render.backend=\"egl\"", "render.device=1"},
+  for (const std::vector<std::string>& set : {std::vector<std::string>{"render.backend=\"egl\"", "render.device=1"},
                                              {"render.backend=\"auto\"", "render.device=\"/dev/dri/renderD128\""}}) {
     const auto first = runRollspin({"scene", scenePath("lollipop.toml"), "--print", "--set", set[0], "--set", set[1]});
     ASSERT_EQ(first.exitCode, 0) << first.err;

@@ -62,7 +62,7 @@ int runRender(RenderCliOptions& o, const CLI::App& command) {
   o.still.output = o.output;
   o.still.shaderDir = o.shaderDir;
   const auto written = renderStill(o.still);
-  std::fprintf(stderr, "rollspin: wrote %s\n", written.string().c_str());
+  if (!o.quiet) std::fprintf(stderr, "rollspin: wrote %s\n", written.string().c_str());
   return 0;
 }
 
@@ -240,7 +240,7 @@ void registerRenderCommands(CLI::App& cli, CommandHandler& handler) {
   render->add_option("--quality", options->quality,
                      "Animation size and frame rate: low (854x480@15), medium (1280x720@30), high (1920x1080@60), "
                      "4k (3840x2160@60)");
-  render->add_flag("--quiet", options->quiet, "No progress bar or summary line");
+  render->add_flag("--quiet", options->quiet, "No progress bar or summary line (a still: no \"wrote FILE\" line)");
   render->add_option("--width", options->width, "Image width in pixels (1..8192)");
   render->add_option("--height", options->height, "Image height in pixels (1..8192)");
   render->add_flag("--transparent", options->still.transparent, "RGBA PNG without background");

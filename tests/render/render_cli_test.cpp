@@ -29,6 +29,14 @@ TEST(RenderCli, StillHonoursSizeAndTransparency) {
   EXPECT_EQ(img.width, 64);
   EXPECT_EQ(img.height, 48);
   EXPECT_EQ(img.pixel(0, 0)[3], 0);
+  EXPECT_NE(r.err.find("wrote " + (dir / "a.png").string()), std::string::npos) << r.err;
+
+  // --quiet: the still is written and nothing is said.
+  const auto quiet = test::runRollspin({"render", renderTestScene("twin_only"), "--still", "--width", "64", "--height",
+                                        "48", "--quiet", "-o", (dir / "b.png").string()});
+  ASSERT_EQ(quiet.exitCode, 0) << quiet.err;
+  EXPECT_TRUE(quiet.err.empty()) << "--quiet: " << quiet.err;
+  EXPECT_TRUE(fs::exists(dir / "b.png"));
 }
 
 TEST(RenderCli, CustomTextureIsUsed) {

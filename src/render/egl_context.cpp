@@ -1,6 +1,7 @@
 // The EGL backend: an OpenGL 4.5 core context with no window and no surface,
 // on a GPU through EGL_EXT_platform_device when one is present, else on
-// Mesa's EGL_MESA_platform_surfaceless (software: llvmpipe). libEGL (glvnd)
+// EGL_MESA_platform_surfaceless (Mesa's llvmpipe where no GPU is listed;
+// NVIDIA's driver offers that platform on its GPU too). libEGL (glvnd)
 // is opened with dlopen when a job draws, never linked; glvnd then loads the
 // vendor's driver (Mesa's libEGL_mesa, NVIDIA's libEGL_nvidia) named by the
 // JSON files in /usr/share/glvnd/egl_vendor.d.

@@ -33,21 +33,29 @@ struct FrameSize {
   int width = 1920;
   int height = 1080;
 };
-FrameSize benchFrameSize() {
-  FrameSize size;
-  const char* text = std::getenv("ROLLSPIN_BENCH_SIZE");
-  if (text != nullptr && *text != '\0' && std::sscanf(text, "%dx%d", &size.width, &size.height) != 2) {
-    std::fprintf(stderr, "bench_render: ROLLSPIN_BENCH_SIZE=%s is not WIDTHxHEIGHT (3840x2160, say)\n", text);
-    std::exit(2);
-  }
+// Read once: every benchmark asks for it.
+const FrameSize& benchFrameSize() {
+  static const FrameSize size = [] {
+    FrameSize parsed;
+    const char* text = std::getenv("ROLLSPIN_BENCH_SIZE");
+    char rest = 0;
+    if (text != nullptr && *text != '\0' &&
+        (std::sscanf(text, "%dx%d%c", &parsed.width, &parsed.height, &rest) != 2 || parsed.width < 1 ||
+         parsed.height < 1 || parsed.width > 8192 || parsed.height > 8192)) {
+      std::fprintf(stderr, "bench_render: ROLLSPIN_BENCH_SIZE=%s is not WIDTHxHEIGHT, each 1..8192 (3840x2160, say)\n",
+                   text);
+      std::exit(2);
+    }
+    return parsed;
+  }();
   return size;
 }
 std::vector<std::string> sizeOverrides() {
-  const FrameSize size = benchFrameSize();
+  const FrameSize& size = benchFrameSize();
   return {"render.width=" + std::to_string(size.width), "render.height=" + std::to_string(size.height)};
 }
 std::string sizeLabel() {
-  const FrameSize size = benchFrameSize();
+  const FrameSize& size = benchFrameSize();
   return std::to_string(size.width) + "x" + std::to_string(size.height);
 }
 

@@ -22,12 +22,11 @@ namespace fs = std::filesystem;
 const std::string kMissingOsMesa = "ROLLSPIN_OSMESA_LIBRARY=/nonexistent/libOSMesa.so.8";
 const std::string kMissingEgl = "ROLLSPIN_EGL_LIBRARY=/nonexistent/libEGL.so.1";
 
-std::string twinOnlyScene() { return (test::sourceDir() / "tests/render/scenes/twin_only.toml").string(); }
-
 // A small still with --verbose; env replaces inherited variables.
 test::CliResult renderSmall(const fs::path& out, std::vector<std::string> env, std::vector<std::string> extra = {}) {
-  std::vector<std::string> args{"render", twinOnlyScene(), "--still", "--width", "64", "--height", "48",
-                                "-o", out.string(), "--verbose"};
+  const std::string scene = test::renderTestScenePath("twin_only");
+  std::vector<std::string> args{"render",   scene, "--still", "--width",    "64",
+                                "--height", "48",  "-o",      out.string(), "--verbose"};
   args.insert(args.end(), extra.begin(), extra.end());
   return test::runRollspin(args, {}, 0, env);
 }
@@ -105,7 +104,8 @@ TEST(GlBackend, VerbosePrintsTheContext) {
 
 TEST(GlBackend, SceneKeyWinsOverTheEnvironmentAndSetWinsOverTheFile) {
   const fs::path dir = test::freshTempDir("gl_precedence");
-  std::ofstream(dir / "s.toml") << "extends = \"" << twinOnlyScene() << "\"\n[render]\nbackend = \"osmesa\"\n";
+  std::ofstream(dir / "s.toml") << "extends = \"" << test::renderTestScenePath("twin_only")
+                                << "\"\n[render]\nbackend = \"osmesa\"\n";
   const std::string file = (dir / "s.toml").string();
   auto backendOf = [&](const std::string& sceneFile, std::vector<std::string> extra) {
     std::vector<std::string> args{"render", sceneFile, "--still", "--width", "32", "--height", "24", "-o",
@@ -115,7 +115,7 @@ TEST(GlBackend, SceneKeyWinsOverTheEnvironmentAndSetWinsOverTheFile) {
     EXPECT_EQ(r.exitCode, 0) << r.err;
     return has(r.err, "gl: backend     egl") ? "egl" : has(r.err, "gl: backend     osmesa") ? "osmesa" : "?";
   };
-  EXPECT_STREQ(backendOf(twinOnlyScene(), {}), "egl");  // no key: the variable
+  EXPECT_STREQ(backendOf(test::renderTestScenePath("twin_only"), {}), "egl");  // no key: the variable
   EXPECT_STREQ(backendOf(file, {}), "osmesa");          // the key wins over the variable
   EXPECT_STREQ(backendOf(file, {"--set", "render.backend=egl"}), "egl");  // --set wins over the file
 }
@@ -127,7 +127,8 @@ TEST(GlBackend, UnknownNamesExitTwoNamingTheChoices) {
   EXPECT_TRUE(has(env.err, "ROLLSPIN_GL: unknown GL backend \"vulkan\"")) << env.err;
   EXPECT_TRUE(has(env.err, "\"auto\" | \"osmesa\" | \"egl\"")) << env.err;
 
-  std::ofstream(dir / "s.toml") << "extends = \"" << twinOnlyScene() << "\"\n[render]\nbackend = \"vulkan\"\n";
+  std::ofstream(dir / "s.toml") << "extends = \"" << test::renderTestScenePath("twin_only")
+                                << "\"\n[render]\nbackend = \"vulkan\"\n";
   const auto key = test::runRollspin({"render", (dir / "s.toml").string(), "--still", "-o", (dir / "a.png").string()});
   EXPECT_EQ(key.exitCode, 2) << key.err;
   EXPECT_TRUE(has(key.err, "s.toml:3:11: render.backend")) << key.err;

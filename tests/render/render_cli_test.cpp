@@ -16,14 +16,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string renderTestScene(const std::string& name) {
-  return (test::sourceDir() / "tests/render/scenes" / (name + ".toml")).string();
-}
-
 TEST(RenderCli, StillHonoursSizeAndTransparency) {
   const fs::path dir = test::freshTempDir("cli_still");
-  const auto r = test::runRollspin({"render", renderTestScene("twin_only"), "--still", "--width", "64", "--height",
-                                    "48", "--transparent", "-o", (dir / "a.png").string()});
+  const auto r = test::runRollspin({"render", test::renderTestScenePath("twin_only"), "--still", "--width", "64",
+                                    "--height", "48", "--transparent", "-o", (dir / "a.png").string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const media::Image img = media::loadImage(dir / "a.png", {});
   EXPECT_EQ(img.width, 64);
@@ -32,8 +28,8 @@ TEST(RenderCli, StillHonoursSizeAndTransparency) {
   EXPECT_NE(r.err.find("wrote " + (dir / "a.png").string()), std::string::npos) << r.err;
 
   // --quiet: the still is written and nothing is said.
-  const auto quiet = test::runRollspin({"render", renderTestScene("twin_only"), "--still", "--width", "64", "--height",
-                                        "48", "--quiet", "-o", (dir / "b.png").string()});
+  const auto quiet = test::runRollspin({"render", test::renderTestScenePath("twin_only"), "--still", "--width", "64",
+                                        "--height", "48", "--quiet", "-o", (dir / "b.png").string()});
   ASSERT_EQ(quiet.exitCode, 0) << quiet.err;
   EXPECT_TRUE(quiet.err.empty()) << "--quiet: " << quiet.err;
   EXPECT_TRUE(fs::exists(dir / "b.png"));
@@ -44,7 +40,7 @@ TEST(RenderCli, CustomTextureIsUsed) {
   media::Image tex(8, 4);
   for (std::size_t i = 0; i < tex.rgba.size(); i += 4) tex.rgba[i] = tex.rgba[i + 3] = 255;  // pure red
   media::writePng(dir / "red.png", tex.view(), media::PngChannels::Rgba);
-  const auto r = test::runRollspin({"render", renderTestScene("transparent"), "--still", "--set",
+  const auto r = test::runRollspin({"render", test::renderTestScenePath("transparent"), "--still", "--set",
                                     "ball.texture=" + (dir / "red.png").string(), "-o", (dir / "a.png").string()});
   EXPECT_EQ(r.exitCode, 0) << r.err;
 }
@@ -59,7 +55,7 @@ TEST(RenderCli, CameraAndLayoutOptionsRender) {
   };
   for (const auto& extra : variants) {
     std::vector<std::string> args{"render",
-                                  renderTestScene("lollipop_side_by_side"),
+                                  test::renderTestScenePath("lollipop_side_by_side"),
                                   "--still",
                                   "--width",
                                   "96",
@@ -85,8 +81,8 @@ TEST(RenderCli, ContextFailureExitsOne) {
     // A GPU's EGL driver ignores Mesa's cap: nothing to provoke there.
     if (std::string_view(backend) == "egl" && test::eglDevicesHere().hardware) continue;
     const auto r =
-        test::runRollspin({"render", renderTestScene("twin_only"), "--still", "-o", (dir / "a.png").string()}, {}, 0,
-                          {std::string("ROLLSPIN_GL=") + backend});
+        test::runRollspin({"render", test::renderTestScenePath("twin_only"), "--still", "-o", (dir / "a.png").string()},
+                          {}, 0, {std::string("ROLLSPIN_GL=") + backend});
     EXPECT_EQ(r.exitCode, 1) << r.err;
     EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / "a.png"));
@@ -97,7 +93,7 @@ TEST(RenderCli, ContextFailureExitsOne) {
 TEST(SolveCli, NeedsNoGlContext) {
   // solve never creates a context: it works even where GL 4.5 is unavailable.
   ::setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1);
-  const auto r = test::runRollspin({"solve", renderTestScene("lollipop_side_by_side")});
+  const auto r = test::runRollspin({"solve", test::renderTestScenePath("lollipop_side_by_side")});
   ::unsetenv("MESA_GL_VERSION_OVERRIDE");
   EXPECT_EQ(r.exitCode, 0) << r.err;
 }
@@ -126,7 +122,7 @@ TEST(RenderCli, BadInputExitsTwoWithAClearMessage) {
       {{"--at", "t=1"}, "--at"},
   };
   for (const BadCase& c : cases) {
-    std::vector<std::string> args{"render", renderTestScene("lollipop_side_by_side"), "--still", "-o", out};
+    std::vector<std::string> args{"render", test::renderTestScenePath("lollipop_side_by_side"), "--still", "-o", out};
     args.insert(args.end(), c.args.begin(), c.args.end());
     const auto r = test::runRollspin(args);
     EXPECT_EQ(r.exitCode, 2) << c.args.back() << ": " << r.err;

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-#include <numbers>
 
 #include "support/numbers.hpp"
 

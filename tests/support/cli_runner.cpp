@@ -45,6 +45,9 @@ void expectBadScene(const BadScene& c) {
 
 std::filesystem::path sourceDir() { return ROLLSPIN_SOURCE_DIR; }
 std::string shippedScenePath(const std::string& name) { return (sourceDir() / "scenes" / (name + ".toml")).string(); }
+std::string renderTestScenePath(const std::string& name) {
+  return (sourceDir() / "tests/render/scenes" / (name + ".toml")).string();
+}
 std::filesystem::path binaryPath() { return ROLLSPIN_BINARY; }
 
 std::filesystem::path freshTempDir(const std::string& name) {

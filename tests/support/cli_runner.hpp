@@ -53,6 +53,8 @@ std::filesystem::path freshTempDir(const std::string& name);
 std::filesystem::path sourceDir();
 // A scene shipped in scenes/ by name ("lollipop"), as a path string for a command line.
 std::string shippedScenePath(const std::string& name);
+// A scene of the renderer's tests (tests/render/scenes) by name ("twin_only").
+std::string renderTestScenePath(const std::string& name);
 // A file's bytes ("" when it cannot be read).
 std::string readFile(const std::filesystem::path& p);
 

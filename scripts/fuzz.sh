@@ -24,21 +24,32 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 # On a crash, CI's log is all there is: the fuzzer's progress lines are left
 # out, the report and stack follow, and last the input itself (gzip + base64:
 # `base64 -d | gunzip > crash.bin`, then run the fuzz target on that file).
+# The two targets run side by side, one core each (each fuzzer is one
+# process on one thread): the same time per target, half the wall time.
+declare -A pid
 for target in scene expression; do
   echo "fuzz: $target for ${seconds}s"
-  log=build-fuzz/fuzz_$target.log
-  if ./build-fuzz/tests/fuzz/fuzz_$target build-fuzz/corpus/$target -max_total_time="$seconds" -timeout=300 \
+  ./build-fuzz/tests/fuzz/fuzz_$target build-fuzz/corpus/$target -max_total_time="$seconds" -timeout=300 \
     -rss_limit_mb=2048 -max_len=4096 -artifact_prefix=build-fuzz/artifacts/$target- -print_final_stats=1 \
-    >"$log" 2>&1; then
+    >"build-fuzz/fuzz_$target.log" 2>&1 &
+  pid[$target]=$!
+done
+failed=0
+for target in scene expression; do
+  log=build-fuzz/fuzz_$target.log
+  if wait "${pid[$target]}"; then
+    echo "fuzz: $target:"
     tail -n 6 "$log"
   else
     status=$?
+    echo "fuzz: $target FAILED (exit $status):"
     grep -v -E '^#[0-9]+[[:space:]]' "$log" | tail -n 80
     crash=$(sed -n 's/.*Test unit written to //p' "$log" | tail -n 1)
     if [[ -n $crash && -f $crash ]]; then
       echo "fuzz: input $crash ($(wc -c <"$crash") bytes), gzip | base64:"
       gzip -9nc "$crash" | base64 -w 100
     fi
-    exit "$status"
+    failed=$status
   fi
 done
+exit "$failed"

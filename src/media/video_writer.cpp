@@ -151,8 +151,9 @@ VideoWriter::VideoWriter(fs::path finalPath, const VideoSettings& settings) : im
 
   const AVCodec* encoder = avcodec_find_encoder_by_name(settings.encoder.c_str());
   if (encoder == nullptr)
-    throw runtimeError(where, "this FFmpeg build has no '{}' encoder (Debian: libavcodec59 has libx264, libvpx-vp9, "
-                              "prores_ks and gif)",
+    throw runtimeError(where,
+                       "this FFmpeg build has no '{}' encoder (Debian: libavcodec59 has libx264, libvpx-vp9, "
+                       "prores_aw and gif)",
                        settings.encoder);
   m.pixelFormat = av_get_pix_fmt(settings.pixelFormat.c_str());
   if (m.pixelFormat == AV_PIX_FMT_NONE) throw runtimeError(where, "libavutil has no pixel format '{}'", settings.pixelFormat);
@@ -213,7 +214,7 @@ VideoWriter::VideoWriter(fs::path finalPath, const VideoSettings& settings) : im
   m.frame->format = c->pix_fmt;
   m.frame->width = c->width;
   m.frame->height = c->height;
-  // Some encoders (prores_ks) write the frame's tags, not the context's.
+  // Some encoders (ProRes) write the frame's tags, not the context's.
   m.frame->color_range = c->color_range;
   m.frame->color_primaries = c->color_primaries;
   m.frame->color_trc = c->color_trc;

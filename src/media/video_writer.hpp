@@ -33,7 +33,7 @@ struct VideoSettings {
   int width = 0, height = 0;
   int fpsNum = 30, fpsDen = 1;   // frames per second as a rational (30000/1001 for NTSC 29.97)
   std::string container;         // libavformat muxer: "mp4", "webm", "mov", "gif"
-  std::string encoder;           // libavcodec encoder: "libx264", "libvpx-vp9", "prores_ks", "gif"
+  std::string encoder;           // libavcodec encoder: "libx264", "libvpx-vp9", "prores_aw", "gif"
   std::string pixelFormat;       // the encoder's input: "yuv420p", "yuva420p", "yuva444p10le", "pal8"
   bool evenSize = true;          // chroma subsampling: width and height must be even
   bool yuvBt709 = true;          // BT.709 matrix and tags, limited range (false: RGB/palette formats)

@@ -21,7 +21,8 @@ KeyRule surfaceKeyRule(const std::string& key, SurfaceKind sk) {
   if (!contains(allSurfaceKeys(), key)) return {true, ""};
   std::vector<std::string> kinds;
   for (const auto& row : surfaceKinds())
-    if (contains(row.keys, key)) kinds.push_back("\"" + std::string(row.name) + "\"");
+    // Built by appends: gcc 12's -Wrestrict misfires on "\"" + std::string(…) + "\"".
+    if (contains(row.keys, key)) kinds.push_back(std::string(1, '"').append(row.name).append(1, '"'));
   return {contains(surfaceKindRow(sk).keys, key), orList(kinds)};
 }
 

@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-bash scripts/build.sh
+bash scripts/build.sh rollspin  # the program alone: the tests are scripts/test.sh's
 ./build/rollspin solve scenes/lollipop.toml
 ./build/rollspin timeline scenes/lollipop.toml -o output/lollipop.csv
 ./build/rollspin render scenes/lollipop.toml

@@ -4,7 +4,8 @@
 #   (a) rollspin render → MP4, end to end (solve, render, convert, encode, mux)
 #   (b) the ffmpeg tool encoding the same frames from raw RGBA with the same
 #       codec settings (libx264, preset, CRF, yuv420p through the BT.709
-#       matrix with swscale's bilinear filter, BT.709 tags, +faststart)
+#       matrix with swscale's bilinear filter, BT.709 tags, +faststart; rollspin
+#       converts with its own BT.709 converter, only the blocks that changed)
 #   (c) rollspin writing PNG frames, then the ffmpeg tool encoding them (the
 #       way a QuTiP/matplotlib script makes a video)
 #   peak RSS of a 40 s clip against the 10 s clip (rollspin, MP4).

@@ -16,10 +16,12 @@ extern "C" {
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <system_error>
 
 #include "core/error.hpp"
 #include "media/av_support.hpp"
+#include "media/yuv420_converter.hpp"
 
 namespace rollspin::media {
 
@@ -33,12 +35,11 @@ fs::path partialName(const fs::path& finalPath) {
 
 namespace {
 
-// RGBA → the codec's format, bilinear, in swscale's own slice threads
-// (ROLLSPIN_SWS_THREADS, else one per core: FFmpeg >= 5.0). The encoder
-// thread converts every frame before x264 spreads the encoding over its
-// threads; converting on one core made that thread the bottleneck of a
-// GPU-rendered 1080p video. The slices split the output rows, so the result
-// does not depend on the thread count.
+// RGBA → ProRes's 10-bit formats, bilinear, in swscale's own slice threads
+// (ROLLSPIN_SWS_THREADS, else one per core: FFmpeg >= 5.0): on one core the
+// encoder thread's conversion set the pace of a GPU-rendered 1080p video.
+// The slices split the output rows, so the result does not depend on the
+// thread count.
 SwsContext* makeConverter(int width, int height, AVPixelFormat to) {
   int threads = 0;  // swscale's "auto": one per core
   if (const char* text = std::getenv("ROLLSPIN_SWS_THREADS"); text != nullptr && *text != '\0')
@@ -72,6 +73,9 @@ struct VideoWriter::Impl {
   AVFrame* source = nullptr;  // the caller's RGBA image, wrapped (never copied) for sws_scale_frame
   AVPacket* packet = nullptr;
   SwsContext* sws = nullptr;
+  // 8-bit 4:2:0 (H.264, VP9): converted here, only the blocks that changed
+  // since the last frame; other formats (ProRes) through swscale.
+  std::optional<Yuv420Converter> yuv420;
   long long framesWritten = 0;
   bool fileOpen = false, done = false, headerWritten = false;
 
@@ -189,7 +193,7 @@ VideoWriter::VideoWriter(fs::path finalPath, const VideoSettings& settings) : im
   c->sample_aspect_ratio = AVRational{1, 1};
   c->pix_fmt = m.pixelFormat;
   if (settings.yuvBt709) {
-    // BT.709 everywhere: the matrix swscale applies below, and the tags.
+    // BT.709 everywhere: the matrix of the conversion below, and the tags.
     c->color_range = AVCOL_RANGE_MPEG;
     c->color_primaries = AVCOL_PRI_BT709;
     c->color_trc = AVCOL_TRC_BT709;
@@ -221,7 +225,9 @@ VideoWriter::VideoWriter(fs::path finalPath, const VideoSettings& settings) : im
   m.frame->colorspace = c->colorspace;
   m.check(av_frame_get_buffer(m.frame, 0), "allocating a frame");
 
-  if (m.pixelFormat != AV_PIX_FMT_PAL8) {  // a palette comes from a filter graph (gif_writer), not swscale
+  if (settings.yuvBt709 && (m.pixelFormat == AV_PIX_FMT_YUV420P || m.pixelFormat == AV_PIX_FMT_YUVA420P)) {
+    m.yuv420.emplace(c->width, c->height);
+  } else if (m.pixelFormat != AV_PIX_FMT_PAL8) {  // a palette comes from a filter graph (gif_writer), not swscale
     m.sws = makeConverter(c->width, c->height, m.pixelFormat);
     if (m.sws == nullptr)
       throw runtimeError(where, "libswscale cannot convert RGBA to {} at this size", settings.pixelFormat);
@@ -261,8 +267,16 @@ void VideoWriter::write(const ImageView& image) {
   if (image.width != m.settings.width || image.height != m.settings.height)
     throw runtimeError(SourceLoc{m.finalPath.string()}, "frame of {}x{} for a {}x{} video", image.width, image.height,
                        m.settings.width, m.settings.height);
-  // The encoder may still hold the previous frame's buffer (lookahead).
+  // The encoder may still hold the previous frame's buffer (lookahead):
+  // then this copies it, so the planes still hold the previous frame.
   m.check(av_frame_make_writable(m.frame), "allocating a frame");
+  if (m.yuv420) {
+    AVFrame* f = m.frame;
+    m.yuv420->convert(image, {f->data[0], f->data[1], f->data[2], f->data[3], f->linesize[0], f->linesize[1],
+                              f->linesize[2], f->linesize[3]});
+    writeConverted(f);
+    return;
+  }
   // Rows from the top whatever the storage order: a negative stride flips.
   const std::uint8_t* top = image.rowFromTop(0);
   const int stride = static_cast<int>(image.rows == RowOrder::TopDown ? image.stride : -image.stride);

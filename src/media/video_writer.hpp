@@ -6,9 +6,11 @@
 // encoder, pixel format and options come from VideoSettings, filled by each
 // format's sink file (mp4_writer, webm_writer, mov_writer, gif_writer).
 // RGBA is converted with the BT.709 matrix (full-range RGB → limited-range
-// YUV, or 4:4:4/4:2:2 10-bit, alpha kept when the pixel format has it) and
-// tagged BT.709 (colour space, primaries, transfer) and limited range, so
-// browsers and players show the colours that were rendered.
+// YUV, alpha kept when the pixel format has it) and tagged BT.709 (colour
+// space, primaries, transfer) and limited range, so browsers and players
+// show the colours that were rendered. 8-bit 4:2:0 (H.264, VP9) goes
+// through Yuv420Converter, which converts only the blocks that changed
+// since the last frame; 4:2:2 and 4:4:4 10-bit (ProRes) through swscale.
 // The file is written under a temporary name in the same folder and renamed
 // on finish(); finishPartial() completes what was written as a shorter,
 // playable NAME.partial.EXT; destroyed unfinished, it removes its file. A

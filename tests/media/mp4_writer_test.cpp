@@ -3,11 +3,13 @@
 // RGBA → yuv420p → RGBA round trip, and every failure leaving nothing behind.
 #include "media/mp4_writer.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -151,26 +153,63 @@ TEST(Mp4Writer, FullDiskIsAClearRuntimeError) {
   }
 }
 
-// The RGBA → yuv420p conversion runs in swscale's slice threads
-// (ROLLSPIN_SWS_THREADS, else one per core). Slices split the output rows,
-// and the chroma rows are filtered from luma rows on both sides of a slice
-// boundary: the bytes must not depend on the thread count, for rows stored
-// top-down or bottom-up (a GL read-back).
+// A frame is converted to yuv420p only where it differs from the frame
+// before (media/yuv420_converter), into a frame the encoder may still hold
+// (x264's lookahead). Lossless (crf 0), every frame of a clip must decode to
+// the same pixels as the same frame written alone, converted whole.
+TEST(Mp4Writer, ChangedBlocksOnlyEncodeAsWholeFrames) {
+  const int width = 96, height = 64, frames = 10;
+  auto frameAt = [&](int k) {
+    media::Image image = blockFrame(width, height, 0);
+    // A small square moving over the still blocks, and one pixel that flips.
+    for (int y = 20; y < 30; ++y)
+      for (int x = 5 * k; x < 5 * k + 10; ++x) std::fill_n(image.pixel(x, y), 3, static_cast<std::uint8_t>(20 * k));
+    if (k % 3 == 0) image.pixel(width - 1, 0)[2] = 0;
+    return image;
+  };
+  media::Mp4Settings lossless{width, height, 30};
+  lossless.crf = 0;
+  const fs::path dir = test::freshTempDir("mp4_changed_blocks");
+  {
+    media::Mp4Writer writer(dir / "clip.mp4", lossless);
+    for (int k = 0; k < frames; ++k) writer.write(frameAt(k).view());
+    writer.finish();
+  }
+  std::set<long long> all;
+  for (int k = 0; k < frames; ++k) all.insert(k);
+  const test::VideoProbe clip = test::probeVideo(dir / "clip.mp4", all);
+  ASSERT_EQ(clip.kept.size(), static_cast<std::size_t>(frames));
+  for (int k = 0; k < frames; ++k) {
+    const fs::path alone = dir / fmt::format("alone_{}.mp4", k);
+    {
+      media::Mp4Writer writer(alone, lossless);
+      writer.write(frameAt(k).view());
+      writer.finish();
+    }
+    const test::VideoProbe single = test::probeVideo(alone, {0});
+    ASSERT_EQ(single.kept.size(), 1u);
+    EXPECT_TRUE(clip.kept[k].rgba == single.kept[0].rgba) << "frame " << k << " of the clip differs from it alone";
+  }
+}
+
+// Other pixel formats (here yuv444p; ProRes in MOV) are converted by swscale
+// in its slice threads (ROLLSPIN_SWS_THREADS, else one per core). Slices
+// split the output rows: the bytes must not depend on the thread count, for
+// rows stored top-down or bottom-up (a GL read-back).
 TEST(Mp4Writer, ConversionThreadsDoNotChangeTheBytes) {
   const int width = 160, height = 90;
   media::Image image(width, height);
   std::vector<std::string> videos;
+  media::VideoSettings settings = media::mp4VideoSettings(media::Mp4Settings{width, height, 12});
+  settings.pixelFormat = "yuv444p";
   for (const char* threads : {"1", "3", "7"}) {
     ASSERT_EQ(setenv("ROLLSPIN_SWS_THREADS", threads, 1), 0);
     const fs::path dir = test::freshTempDir(std::string("mp4_sws_threads_") + threads);
     const fs::path out = dir / "clip.mp4";
     {
-      media::Mp4Writer writer(out, media::Mp4Settings{width, height, 12});
+      media::VideoWriter writer(out, settings);
       for (int k = 0; k < 6; ++k) {
-        // Gradients, so every row differs from its neighbours in every
-        // channel. (Noise once seemed to encode differently from run to run;
-        // that did not reproduce on 2026-11-26: noise at 160×90 and 640×360
-        // with 1, 2, 3 and 7 conversion threads gave identical bytes.)
+        // Gradients, so every row differs from its neighbours in every channel.
         for (int y = 0; y < height; ++y)
           for (int x = 0; x < width; ++x) {
             std::uint8_t* p = image.pixel(x, y);

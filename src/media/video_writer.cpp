@@ -35,7 +35,7 @@ fs::path partialName(const fs::path& finalPath) {
 
 namespace {
 
-// RGBA → ProRes's 10-bit formats, bilinear, in swscale's own slice threads
+// RGBA → any other format (ProRes's 10-bit ones), bilinear, in swscale's own slice threads
 // (ROLLSPIN_SWS_THREADS, else one per core: FFmpeg >= 5.0): on one core the
 // encoder thread's conversion set the pace of a GPU-rendered 1080p video.
 // The slices split the output rows, so the result does not depend on the

@@ -92,8 +92,9 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     presetFlags.push_back({flag, fmt::format("render.height={}", preset->height)});
     presetFlags.push_back({flag, fmt::format("animation.fps={}", preset->fps)});
   }
-  // Measured: a 1080p MP4 render peaks ~230 bytes per pixel above the still's
-  // estimate (three queued RGBA frames, the yuv420p copy, x264's look-ahead).
+  // Measured: a 1080p MP4 render peaks ~235 bytes per pixel above the still's
+  // estimate (three queued RGBA frames, the yuv420p frame and the converter's
+  // copy of the last RGBA frame, x264's look-ahead).
   const DrawJob job = prepareDrawJob({o.scenePath, o.overrides, presetFlags, o.width, o.height, o.transparent,
                                       o.output, media::OutputUse::Animation, 256});
   const scene::SceneSpec& spec = job.spec;

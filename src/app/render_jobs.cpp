@@ -144,6 +144,7 @@ std::filesystem::path renderStill(const StillOptions& o) {
   }
   FrameOrientations frame = solveFrame(spec, job.model, s);
   frame.story = storyPlaceAt(job.model, s);
+  frame.still = true;
   const render::DrawList list = makeDrawer(job)->draw(frame);
   if (figure) {
     writeFigureStill(spec, list, out, *figure, o.shaderDir);

@@ -24,7 +24,9 @@ std::string timesTurns(double turns) {
 // that at a readable size. Every line is there from the first frame to the
 // last (no line jumps); running values end on their final value and stay;
 // the comparison with the closed form appears when the circuit completes.
-void deltaLines(const DeltaFact& d, const LiveAngles& live, double labNow, bool atEnd, double turns,
+// `endShown`: the circuit's end values are printed (at the end, a strobe, a
+// still); in a clip before the end they are "…", revealed at the end.
+void deltaLines(const DeltaFact& d, const LiveAngles& live, double labNow, bool atEnd, bool endShown, double turns,
                 std::vector<FactLine>& out) {
   if (d.onSphere) {
     out.push_back(fmt::format("δ = 2π√(ρ²/R² + cos²θ){}", timesTurns(turns)));
@@ -34,8 +36,8 @@ void deltaLines(const DeltaFact& d, const LiveAngles& live, double labNow, bool 
   }
   // Relative to the rolling frame (the frame turning with the path).
   out.push_back({fmt::format("turned, in the rolling frame: {:.4f} rad", atEnd ? d.measured : live.rolling), !atEnd});
-  out.push_back(atEnd ? fmt::format("solver at the end: {:.6f} rad", d.measured)
-                      : std::string("solver at the end: …"));
+  out.push_back(endShown ? fmt::format("solver at the end: {:.6f} rad", d.measured)
+                         : std::string("solver at the end: …"));
   if (d.wholeCircuits) {
     // The lab angle of U lies in [0, π]: δ's remainder in (−π, π], in size.
     const double k = std::round(d.closedForm / (2.0 * kPi));
@@ -63,11 +65,12 @@ void marksLines(const SceneFacts& facts, const FrameOrientations& frame, bool st
   out.push_back("(in the frame turning with the path)");
 }
 
-void turnsLines(const TurnsFact& t, const LiveAngles& live, bool atEnd, std::vector<FactLine>& out) {
+void turnsLines(const TurnsFact& t, const LiveAngles& live, bool atEnd, bool endShown, std::vector<FactLine>& out) {
   const double lab = atEnd ? t.lab : live.lab, relative = atEnd ? t.lab - t.frame : live.lab - live.frame;
   out.push_back({fmt::format("turns in the lab: {:.{}f}", std::abs(lab) / (2 * kPi), atEnd ? 6 : 2), !atEnd});
-  out.push_back(atEnd ? fmt::format("  {} the revolution", t.lab * t.frame < 0.0 ? "against" : "with")
-                      : std::string("  …"));
+  // Whether the ball turns with or against the revolution is the circuit's.
+  out.push_back(endShown ? fmt::format("  {} the revolution", t.lab * t.frame < 0.0 ? "against" : "with")
+                         : std::string("  …"));
   out.push_back("turns relative to the radius line:");
   out.push_back({fmt::format("  {:.{}f}{}", std::abs(relative) / (2 * kPi), atEnd ? 6 : 2,
                              atEnd && t.paperPenny ? " (the paper says 1)" : ""),
@@ -75,8 +78,8 @@ void turnsLines(const TurnsFact& t, const LiveAngles& live, bool atEnd, std::vec
 }
 
 // Everything here is of the closed loop U(L): shown when it closes.
-void phaseLines(const PhaseSplitFact& p, bool atEnd, std::vector<FactLine>& out) {
-  auto value = [atEnd](const std::string& text) { return atEnd ? text : std::string("…"); };
+void phaseLines(const PhaseSplitFact& p, bool endShown, std::vector<FactLine>& out) {
+  auto value = [endShown](const std::string& text) { return endShown ? text : std::string("…"); };
   out.push_back("cyclic spin X of U(L), " + value(fmt::format("{:.2f}°", p.spinFromField / kDeg)) + " from B:");
   out.push_back("dynamic (1/2)∫B·X ds = " + value(fmt::format("{:.6f}", p.dynamic)));
   out.push_back("geometric −(1/2)Ω(X) = " + value(fmt::format("{:.6f}", p.geometric)));
@@ -94,14 +97,22 @@ std::vector<FactLine> factLines(const SceneFacts& facts, const FrameOrientations
   const bool strobe = !frame.strobe.empty();
   // A strobe shows the whole circuit: its end values.
   const bool atEnd = strobe || frame.current.s >= pathLength * (1.0 - 1e-12);
+  // A still has no later frame to reveal them in: they show beside the values at s.
+  const bool endShown = atEnd || frame.still;
   const LiveAngles live = facts.at(frame.current.s, frame.current.q);
   const double labNow = spin::rotationAngleAxis(frame.current.q).angle;
   for (const scene::Fact f : facts.facts()) {
     switch (f) {
-      case scene::Fact::Delta: deltaLines(*facts.delta, live, labNow, atEnd, facts.pathTurns(), out); break;
+      case scene::Fact::Delta:
+        deltaLines(*facts.delta, live, labNow, atEnd, endShown, facts.pathTurns(), out);
+        break;
       case scene::Fact::Marks: marksLines(facts, frame, strobe, out); break;
-      case scene::Fact::Turns: turnsLines(*facts.turns, live, atEnd, out); break;
-      case scene::Fact::PhaseSplit: phaseLines(*facts.phaseSplit, atEnd, out); break;
+      case scene::Fact::Turns:
+        turnsLines(*facts.turns, live, atEnd, endShown, out);
+        break;
+      case scene::Fact::PhaseSplit:
+        phaseLines(*facts.phaseSplit, endShown, out);
+        break;
     }
   }
   return out;

@@ -32,7 +32,9 @@ struct FactLine {
 };
 
 // The lines for the facts the scene shows, at the frame's s (live values
-// use frame.current.q). A strobe shows the circuit's values only.
+// use frame.current.q). A strobe shows the circuit's values only; a still
+// (frame.still) shows them beside the values at s, where a clip shows "…"
+// until its last frame.
 [[nodiscard]] std::vector<FactLine> factLines(const SceneFacts& facts, const FrameOrientations& frame,
                                               double pathLength);
 

@@ -26,6 +26,9 @@ struct FrameOrientations {
   StoryPlace story;                    // a storyboard's segment (caption, title, camera) and its time
   std::vector<OrientedSample> trail;   // U on [0, s], increasing s, for the Bloch trail
   std::vector<OrientedSample> strobe;  // render.strobe > 1: the extra ball positions
+  // A single image (render --still): no later frame will show the circuit's
+  // end values, so its fact labels show them beside the values at s.
+  bool still = false;
 };
 
 // The trail's fixed grid g_i = L·i/(count − 1), i = 0 … count − 1 (g_last =

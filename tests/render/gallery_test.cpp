@@ -90,5 +90,30 @@ TEST(Gallery, FactLabelsUseOnlyGlyphsTheAtlasHas) {
   EXPECT_GE(scenesWithFacts, 4);
 }
 
+// A clip prints "…" for the circuit's values until its last frame (no line
+// jumps); a still has no later frame, so it prints them, in the same lines.
+TEST(Gallery, StillsPrintTheCircuitsValuesWhereAClipWaits) {
+  int scenesThatWait = 0;
+  for (const fs::path& file : galleryScenes()) {
+    const scene::SceneSpec spec = model::loadScene(file.string(), {});
+    const model::RollingModel model = model::buildSceneModel(spec);
+    const auto facts = motion::makeSceneFacts(spec, model);
+    if (!facts) continue;
+    const double L = model.path->length();
+    motion::FrameOrientations frame = motion::solveFrame(spec, model, 0.3 * L);
+    const std::vector<draw::FactLine> clip = draw::factLines(*facts, frame, L);
+    frame.still = true;
+    const std::vector<draw::FactLine> still = draw::factLines(*facts, frame, L);
+    ASSERT_EQ(still.size(), clip.size()) << file.stem();
+    bool waits = false;
+    for (std::size_t i = 0; i < clip.size(); ++i) {
+      waits = waits || clip[i].text.find("…") != std::string::npos;
+      EXPECT_EQ(still[i].text.find("…"), std::string::npos) << file.stem() << ": " << still[i].text;
+    }
+    scenesThatWait += waits ? 1 : 0;
+  }
+  EXPECT_GE(scenesThatWait, 2);  // at least a delta (lollipop) and a phase split (berry)
+}
+
 }  // namespace
 }  // namespace rollspin

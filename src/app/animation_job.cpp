@@ -238,6 +238,8 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
                  "rollspin: pipeline: %.2f s in all; the renderer waited %.2f s for poses and %.2f s on a full "
                  "encoder queue; the encoder waited %.2f s for frames\n",
                  progress.elapsedSeconds(), poseWait, queue.producerWaitSeconds(), queue.consumerWaitSeconds());
+  if (const std::string line = sink->verboseSummary(); StageLog::instance().echo() && !line.empty())
+    std::fprintf(stderr, "rollspin: encoder: %s\n", line.c_str());
   if (StageLog::instance().echo()) {  // how many frames the retained layers spared
     const render::RenderStats& st = renderer.stats();
     auto percent = [](long long part, long long whole) { return whole > 0 ? 100.0 * double(part) / double(whole) : 0.0; };

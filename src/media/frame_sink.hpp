@@ -9,6 +9,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "media/image_view.hpp"
@@ -27,6 +28,9 @@ class FrameSink {
   // (and leaves nothing) when no frame was written.
   virtual std::filesystem::path finishPartial() = 0;
   [[nodiscard]] virtual long long framesWritten() const = 0;
+  // One line for --verbose on what the sink did beyond writing frames
+  // ("converted 9.1 % of the pixels …"); empty: nothing to say.
+  [[nodiscard]] virtual std::string verboseSummary() const { return {}; }
 
   // A sink that must see the clip before writing it (a GIF's palette) names
   // the frames it wants first: indices in [0, count) of the `count` frames it

@@ -76,6 +76,7 @@ struct VideoWriter::Impl {
   // 8-bit 4:2:0 (H.264, VP9): converted here, only the blocks that changed
   // since the last frame; other formats (ProRes) through swscale.
   std::optional<Yuv420Converter> yuv420;
+  long long pixelsGiven = 0, pixelsConverted = 0;  // over the frames given to yuv420
   long long framesWritten = 0;
   bool fileOpen = false, done = false, headerWritten = false;
 
@@ -272,8 +273,9 @@ void VideoWriter::write(const ImageView& image) {
   m.check(av_frame_make_writable(m.frame), "allocating a frame");
   if (m.yuv420) {
     AVFrame* f = m.frame;
-    m.yuv420->convert(image, {f->data[0], f->data[1], f->data[2], f->data[3], f->linesize[0], f->linesize[1],
-                              f->linesize[2], f->linesize[3]});
+    m.pixelsConverted += m.yuv420->convert(image, {f->data[0], f->data[1], f->data[2], f->data[3], f->linesize[0],
+                                                   f->linesize[1], f->linesize[2], f->linesize[3]});
+    m.pixelsGiven += static_cast<long long>(image.width) * image.height;
     writeConverted(f);
     return;
   }
@@ -336,5 +338,12 @@ fs::path VideoWriter::finishPartial() {
 }
 
 long long VideoWriter::framesWritten() const { return impl_->framesWritten; }
+
+std::string VideoWriter::verboseSummary() const {
+  const Impl& m = *impl_;
+  if (!m.yuv420 || m.pixelsGiven == 0) return {};
+  return fmt::format("converted {:.1f} % of the pixels to {}; the rest were as in the frame before",
+                     100.0 * double(m.pixelsConverted) / double(m.pixelsGiven), m.settings.pixelFormat);
+}
 
 }  // namespace rollspin::media

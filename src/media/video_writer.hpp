@@ -65,6 +65,8 @@ class VideoWriter : public FrameSink {
   std::filesystem::path finish() override;
   std::filesystem::path finishPartial() override;  // "NAME.partial.EXT"
   [[nodiscard]] long long framesWritten() const override;
+  // With the changed-blocks converter: the share of the pixels it converted.
+  [[nodiscard]] std::string verboseSummary() const override;
 
  protected:
   // Encodes a frame already in the encoder's pixel format; its pts is set

@@ -155,6 +155,12 @@ TEST(VideoCli, VerboseSaysWhichStageSetsThePace) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("rollspin: pipeline: "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("the encoder waited"), std::string::npos) << r.err;
+  // A fixed camera: the video writer converts only the blocks that changed.
+  const std::size_t at = r.err.find("rollspin: encoder: converted ");
+  ASSERT_NE(at, std::string::npos) << r.err;
+  const double percent = std::stod(r.err.substr(at + std::string("rollspin: encoder: converted ").size()));
+  EXPECT_GT(percent, 0.0) << r.err;
+  EXPECT_LT(percent, 90.0) << r.err;
   const auto quiet = test::runRollspin(small({"render", lollipop(), "--set", "animation.duration=0.5", "--set",
                                               "animation.hold=0", "-o", (dir / "q.mp4").string()}));
   EXPECT_EQ(quiet.err.find("pipeline"), std::string::npos) << "only with --verbose: " << quiet.err;

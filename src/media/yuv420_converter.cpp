@@ -28,6 +28,9 @@ constexpr int kLumaOffset = (16 << kShift) + (1 << (kShift - 1));
 constexpr int kChromaOffset = (128 << (kShift + 2)) + (1 << (kShift + 1));
 
 inline int lumaOf(int r, int g, int b) { return (kYr * r + kYg * g + kYb * b + kLumaOffset) >> kShift; }
+// Chroma of a 2×2 block from its sums of R, G and B (0 … 1020 each).
+inline int cbOf(int r, int g, int b) { return (kCbR * r + kCbG * g + kCbB * b + kChromaOffset) >> (kShift + 2); }
+inline int crOf(int r, int g, int b) { return (kCrR * r + kCrG * g + kCrB * b + kChromaOffset) >> (kShift + 2); }
 
 // A pixel as one 32-bit load (RGBA in memory order): loops over words
 // vectorise where loops over bytes four apart do not.
@@ -69,8 +72,8 @@ void convertBlock(const std::uint8_t* row0, const std::uint8_t* row1, int y, int
   for (int i = 0; i < n / 2; ++i) {
     const int r = redSum[2 * i] + redSum[2 * i + 1], g = greenSum[2 * i] + greenSum[2 * i + 1];
     const int b = blueSum[2 * i] + blueSum[2 * i + 1];
-    cb[x0 / 2 + i] = static_cast<std::uint8_t>((kCbR * r + kCbG * g + kCbB * b + kChromaOffset) >> (kShift + 2));
-    cr[x0 / 2 + i] = static_cast<std::uint8_t>((kCrR * r + kCrG * g + kCrB * b + kChromaOffset) >> (kShift + 2));
+    cb[x0 / 2 + i] = static_cast<std::uint8_t>(cbOf(r, g, b));
+    cr[x0 / 2 + i] = static_cast<std::uint8_t>(crOf(r, g, b));
   }
   if (out.a != nullptr) {
     std::uint8_t* alphaTop = out.a + y * out.aStride;
@@ -85,12 +88,8 @@ void convertBlock(const std::uint8_t* row0, const std::uint8_t* row1, int y, int
 }  // namespace
 
 std::uint8_t bt709Luma(int r, int g, int b) { return static_cast<std::uint8_t>(lumaOf(r, g, b)); }
-std::uint8_t bt709Cb(int r, int g, int b) {
-  return static_cast<std::uint8_t>((kCbR * r + kCbG * g + kCbB * b + kChromaOffset) >> (kShift + 2));
-}
-std::uint8_t bt709Cr(int r, int g, int b) {
-  return static_cast<std::uint8_t>((kCrR * r + kCrG * g + kCrB * b + kChromaOffset) >> (kShift + 2));
-}
+std::uint8_t bt709Cb(int r, int g, int b) { return static_cast<std::uint8_t>(cbOf(r, g, b)); }
+std::uint8_t bt709Cr(int r, int g, int b) { return static_cast<std::uint8_t>(crOf(r, g, b)); }
 
 Yuv420Converter::Yuv420Converter(int width, int height)
     : width_(width), height_(height), previous_(static_cast<std::size_t>(width) * height * 4) {

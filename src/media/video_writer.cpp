@@ -18,6 +18,7 @@ extern "C" {
 #include <cstdlib>
 #include <optional>
 #include <system_error>
+#include <thread>
 
 #include "core/error.hpp"
 #include "media/av_support.hpp"
@@ -35,15 +36,19 @@ fs::path partialName(const fs::path& finalPath) {
 
 namespace {
 
-// RGBA → any other format (ProRes's 10-bit ones), bilinear, in swscale's own slice threads
-// (ROLLSPIN_SWS_THREADS, else one per core: FFmpeg >= 5.0): on one core the
-// encoder thread's conversion set the pace of a GPU-rendered 1080p video.
-// The slices split the output rows, so the result does not depend on the
-// thread count.
+// The conversion's threads: ROLLSPIN_CONVERT_THREADS, else `fallback`. On
+// one core the encoder thread's conversion set the pace of a GPU-rendered
+// 1080p video; both converters split rows, so the bytes do not depend on it.
+int conversionThreads(int fallback) {
+  if (const char* text = std::getenv("ROLLSPIN_CONVERT_THREADS"); text != nullptr && *text != '\0')
+    return std::max(0, std::atoi(text));
+  return fallback;
+}
+
+// RGBA → any other format (ProRes's 10-bit ones), bilinear, in swscale's own
+// slice threads (0: swscale's "auto", one per core; FFmpeg >= 5.0).
 SwsContext* makeConverter(int width, int height, AVPixelFormat to) {
-  int threads = 0;  // swscale's "auto": one per core
-  if (const char* text = std::getenv("ROLLSPIN_SWS_THREADS"); text != nullptr && *text != '\0')
-    threads = std::max(0, std::atoi(text));
+  const int threads = conversionThreads(0);
   SwsContext* sws = sws_alloc_context();
   if (sws == nullptr) return nullptr;
   const bool set = av_opt_set_int(sws, "srcw", width, 0) >= 0 && av_opt_set_int(sws, "srch", height, 0) >= 0 &&
@@ -227,7 +232,10 @@ VideoWriter::VideoWriter(fs::path finalPath, const VideoSettings& settings) : im
   m.check(av_frame_get_buffer(m.frame, 0), "allocating a frame");
 
   if (settings.yuvBt709 && (m.pixelFormat == AV_PIX_FMT_YUV420P || m.pixelFormat == AV_PIX_FMT_YUVA420P)) {
-    m.yuv420.emplace(c->width, c->height);
+    // A quarter of the cores (at most 8): a fixed camera converts a few
+    // percent of a frame, a moving one all of it; on 2 cores, one thread.
+    const int cores = static_cast<int>(std::thread::hardware_concurrency());
+    m.yuv420.emplace(c->width, c->height, conversionThreads(std::clamp(cores / 4, 1, 8)));
   } else if (m.pixelFormat != AV_PIX_FMT_PAL8) {  // a palette comes from a filter graph (gif_writer), not swscale
     m.sws = makeConverter(c->width, c->height, m.pixelFormat);
     if (m.sws == nullptr)

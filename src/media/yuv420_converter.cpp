@@ -4,6 +4,7 @@
 #include <bit>
 #include <cassert>
 #include <cstring>
+#include <thread>
 
 namespace rollspin::media {
 namespace {
@@ -91,16 +92,41 @@ std::uint8_t bt709Luma(int r, int g, int b) { return static_cast<std::uint8_t>(l
 std::uint8_t bt709Cb(int r, int g, int b) { return static_cast<std::uint8_t>(cbOf(r, g, b)); }
 std::uint8_t bt709Cr(int r, int g, int b) { return static_cast<std::uint8_t>(crOf(r, g, b)); }
 
-Yuv420Converter::Yuv420Converter(int width, int height)
-    : width_(width), height_(height), previous_(static_cast<std::size_t>(width) * height * 4) {
+Yuv420Converter::Yuv420Converter(int width, int height, int threads)
+    : width_(width),
+      height_(height),
+      threads_(std::max(1, threads)),
+      previous_(static_cast<std::size_t>(width) * height * 4) {
   assert(width > 0 && height > 0 && width % 2 == 0 && height % 2 == 0);
 }
 
 long long Yuv420Converter::convert(const ImageView& frame, const Yuv420Planes& planes) {
   assert(frame.width == width_ && frame.height == height_);
+  const int pairs = height_ / 2;
+  // Bands of at least 32 row pairs: below that a thread costs more than it saves.
+  const int bands = std::min(threads_, std::max(1, pairs / 32));
+  long long converted = 0;
+  if (bands == 1) {
+    converted = convertRows(frame, planes, 0, pairs);
+  } else {
+    std::vector<long long> counts(static_cast<std::size_t>(bands), 0);
+    {
+      std::vector<std::jthread> workers;
+      for (int k = 1; k < bands; ++k)
+        workers.emplace_back(
+            [&, k] { counts[k] = convertRows(frame, planes, pairs * k / bands, pairs * (k + 1) / bands); });
+      counts[0] = convertRows(frame, planes, 0, pairs / bands);
+    }  // the workers join here
+    for (const long long c : counts) converted += c;
+  }
+  havePrevious_ = true;
+  return converted;
+}
+
+long long Yuv420Converter::convertRows(const ImageView& frame, const Yuv420Planes& planes, int firstPair, int endPair) {
   const auto rowBytes = static_cast<std::size_t>(width_) * 4;
   long long converted = 0;
-  for (int y = 0; y < height_; y += 2) {
+  for (int y = 2 * firstPair; y < 2 * endPair; y += 2) {
     const std::uint8_t* row0 = frame.rowFromTop(y);
     const std::uint8_t* row1 = frame.rowFromTop(y + 1);
     std::uint8_t* kept0 = previous_.data() + static_cast<std::size_t>(y) * rowBytes;
@@ -118,7 +144,6 @@ long long Yuv420Converter::convert(const ImageView& frame, const Yuv420Planes& p
       converted += 2LL * (x1 - x0);
     }
   }
-  havePrevious_ = true;
   return converted;
 }
 

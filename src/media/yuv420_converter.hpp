@@ -32,7 +32,9 @@ class Yuv420Converter {
   static constexpr int kBlockWidth = 32;  // pixels; a block is 2 rows high
 
   // Width and height must be even (the caller checks: BadInput there).
-  Yuv420Converter(int width, int height);
+  // `threads` > 1 splits each frame's row pairs into that many bands, one
+  // thread each; the bytes do not depend on it (the output is row-local).
+  Yuv420Converter(int width, int height, int threads = 1);
 
   // Writes `frame` (the converter's size) into `planes`. After the first
   // call, `planes` must still hold what the previous call wrote there: only
@@ -44,7 +46,10 @@ class Yuv420Converter {
   void forget() { havePrevious_ = false; }
 
  private:
-  int width_, height_;
+  // Row pairs [firstPair, endPair): converts their changed blocks.
+  long long convertRows(const ImageView& frame, const Yuv420Planes& planes, int firstPair, int endPair);
+
+  int width_, height_, threads_;
   std::vector<std::uint8_t> previous_;  // the last frame, top-down, packed RGBA
   bool havePrevious_ = false;
 };

@@ -193,7 +193,7 @@ TEST(Mp4Writer, ChangedBlocksOnlyEncodeAsWholeFrames) {
 }
 
 // Other pixel formats (here yuv444p; ProRes in MOV) are converted by swscale
-// in its slice threads (ROLLSPIN_SWS_THREADS, else one per core). Slices
+// in its slice threads (ROLLSPIN_CONVERT_THREADS, else one per core). Slices
 // split the output rows: the bytes must not depend on the thread count, for
 // rows stored top-down or bottom-up (a GL read-back).
 TEST(Mp4Writer, ConversionThreadsDoNotChangeTheBytes) {
@@ -203,7 +203,7 @@ TEST(Mp4Writer, ConversionThreadsDoNotChangeTheBytes) {
   media::VideoSettings settings = media::mp4VideoSettings(media::Mp4Settings{width, height, 12});
   settings.pixelFormat = "yuv444p";
   for (const char* threads : {"1", "3", "7"}) {
-    ASSERT_EQ(setenv("ROLLSPIN_SWS_THREADS", threads, 1), 0);
+    ASSERT_EQ(setenv("ROLLSPIN_CONVERT_THREADS", threads, 1), 0);
     const fs::path dir = test::freshTempDir(std::string("mp4_sws_threads_") + threads);
     const fs::path out = dir / "clip.mp4";
     {
@@ -226,7 +226,7 @@ TEST(Mp4Writer, ConversionThreadsDoNotChangeTheBytes) {
     }
     videos.push_back(test::readFile(out));
   }
-  unsetenv("ROLLSPIN_SWS_THREADS");
+  unsetenv("ROLLSPIN_CONVERT_THREADS");
   ASSERT_FALSE(videos[0].empty());
   EXPECT_TRUE(videos[0] == videos[1]) << "1 and 3 conversion threads wrote different videos";
   EXPECT_TRUE(videos[0] == videos[2]) << "1 and 7 conversion threads wrote different videos";

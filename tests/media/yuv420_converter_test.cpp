@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <random>
+#include <tuple>
 #include <vector>
 
 namespace rollspin {
@@ -74,17 +75,19 @@ TEST(Yuv420Converter, ChromaIsTheBlockMean) {
 
 // Frames that change in small rectangles (one pixel, alpha alone, a band),
 // not at all, or everywhere; stored top-down or bottom-up. After each, the
-// planes must equal a fresh converter's, and only changed blocks convert.
+// planes must equal a fresh one-thread converter's, and only changed blocks
+// convert, whether the frame is converted in one band or several threads'.
 TEST(Yuv420Converter, ChangedBlocksOnlyGiveTheWholeFrame) {
-  for (const auto& [width, height] : {std::pair{70, 6}, std::pair{64, 48}, std::pair{2, 2}}) {
-    SCOPED_TRACE(testing::Message() << width << "x" << height);
+  for (const auto& [width, height, threads] : {std::tuple{70, 6, 1}, std::tuple{64, 48, 1}, std::tuple{2, 2, 1},
+                                               std::tuple{96, 260, 3}, std::tuple{64, 48, 3}}) {
+    SCOPED_TRACE(testing::Message() << width << "x" << height << ", " << threads << " threads");
     std::mt19937 random(width * 31 + height);
     std::uniform_int_distribution<int> level(0, 255);
     media::Image image(width, height);
     for (auto& byte : image.rgba) byte = static_cast<std::uint8_t>(level(random));
 
     Planes incremental(width, height, true);
-    media::Yuv420Converter converter(width, height);
+    media::Yuv420Converter converter(width, height, threads);
     for (int frame = 0; frame < 12; ++frame) {
       long long expectedConverted = -1;
       if (frame == 3) {

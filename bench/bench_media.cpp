@@ -10,9 +10,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <random>
-#include <stdexcept>
 #include <vector>
 
+#include "bench_size.hpp"
 #include "media/image_view.hpp"
 #include "media/yuv420_converter.hpp"
 
@@ -25,15 +25,14 @@ namespace {
 
 using rollspin::media::Image;
 
+// yuv420p halves both sizes: they must be even.
 std::pair<int, int> benchSize() {
-  static const std::pair<int, int> size = [] {
-    int w = 1920, h = 1080;
-    if (const char* text = std::getenv("ROLLSPIN_BENCH_SIZE"); text != nullptr && *text != '\0')
-      if (std::sscanf(text, "%dx%d", &w, &h) != 2 || w < 2 || h < 2 || w > 8192 || h > 8192 || w % 2 || h % 2)
-        throw std::runtime_error("ROLLSPIN_BENCH_SIZE: expected WIDTHxHEIGHT, even, 2 … 8192");
-    return std::pair{w, h};
-  }();
-  return size;
+  const rollspin::bench::FrameSize& size = rollspin::bench::benchFrameSize("bench_media");
+  if (size.width % 2 != 0 || size.height % 2 != 0) {
+    std::fprintf(stderr, "bench_media: ROLLSPIN_BENCH_SIZE must be even in both sizes for yuv420p\n");
+    std::exit(2);
+  }
+  return {size.width, size.height};
 }
 
 Image noise(int width, int height, unsigned seed) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/render_jobs.hpp"
+#include "bench_size.hpp"
 #include "draw/scene_drawer.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
@@ -27,35 +28,12 @@ std::string benchScenePath() {
   return std::string(ROLLSPIN_SOURCE_DIR "/scenes/") + (name != nullptr && *name != '\0' ? name : "lollipop") + ".toml";
 }
 
-// ROLLSPIN_BENCH_SIZE=WxH: another frame size for every benchmark (3840x2160
-// for 4K); 1920x1080 by default. The benchmarks keep their 1080p names.
-struct FrameSize {
-  int width = 1920;
-  int height = 1080;
-};
-// Read once: every benchmark asks for it.
-const FrameSize& benchFrameSize() {
-  static const FrameSize size = [] {
-    FrameSize parsed;
-    const char* text = std::getenv("ROLLSPIN_BENCH_SIZE");
-    char rest = 0;
-    if (text != nullptr && *text != '\0' &&
-        (std::sscanf(text, "%dx%d%c", &parsed.width, &parsed.height, &rest) != 2 || parsed.width < 1 ||
-         parsed.height < 1 || parsed.width > 8192 || parsed.height > 8192)) {
-      std::fprintf(stderr, "bench_render: ROLLSPIN_BENCH_SIZE=%s is not WIDTHxHEIGHT, each 1..8192 (3840x2160, say)\n",
-                   text);
-      std::exit(2);
-    }
-    return parsed;
-  }();
-  return size;
-}
 std::vector<std::string> sizeOverrides() {
-  const FrameSize& size = benchFrameSize();
+  const rollspin::bench::FrameSize& size = rollspin::bench::benchFrameSize("bench_render");
   return {"render.width=" + std::to_string(size.width), "render.height=" + std::to_string(size.height)};
 }
 std::string sizeLabel() {
-  const FrameSize& size = benchFrameSize();
+  const rollspin::bench::FrameSize& size = rollspin::bench::benchFrameSize("bench_render");
   return std::to_string(size.width) + "x" + std::to_string(size.height);
 }
 

@@ -30,7 +30,9 @@ done
 [[ "$partMib" =~ ^[0-9]+$ ]] && [ "$partMib" -ge 8 ] || { echo "device_bundle.sh: --part-mib wants a whole number ≥ 8, got $partMib" >&2; exit 2; }
 [ -x build/rollspin ] || { echo "device_bundle.sh: build/rollspin is missing (build first)" >&2; exit 2; }
 binaries=(build/rollspin)
-[ -x build/bench/bench_render ] && binaries+=(build/bench/bench_render)
+for bench in build/bench/bench_render build/bench/bench_media; do
+  [ -x "$bench" ] && binaries+=("$bench")
+done
 if [ "$withFfmpeg" = 1 ]; then
   for tool in ffmpeg ffprobe; do
     path=$(command -v "$tool") || { echo "device_bundle.sh: --with-ffmpeg, but $tool is not installed" >&2; exit 2; }

@@ -12,7 +12,7 @@ set -uo pipefail
 ref=${1:?usage: device_video_check.sh REFERENCE_ROLLSPIN [LOG]}
 log=${2:-${OUT:-/tmp}/device_video_check.txt}
 exec > >(tee -a "$log") 2>&1
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/.." || exit 2
 source /opt/rollspin/env.sh
 new=/opt/rollspin/bin/rollspin
 chmod +x "$ref"
@@ -39,7 +39,7 @@ scene=scenes/lollipop.toml
 hd=(--set render.width=1920 --set render.height=1080 --set animation.fps=30 --set animation.hold=0
     --set animation.crf=18 --set animation.preset=medium --set animation.duration=10)
 echo "== 1080p fixed camera, 10 s, in turn"
-for round in 1 2 3; do
+for _ in 1 2 3; do
   measure "reference        " "$ref" render $scene "${hd[@]}" -o "$w/ref.mp4" --quiet
   measure "bundle           " "$new" render $scene "${hd[@]}" -o "$w/new.mp4" --quiet
   ROLLSPIN_CONVERT_THREADS=1 measure "bundle, 1 thread " "$new" render $scene "${hd[@]}" -o "$w/new1.mp4" --quiet
@@ -53,7 +53,7 @@ ffmpeg -v error -y -i "$w/new.mp4" -f rawvideo -pix_fmt rgba "$w/frames.rgba"
 cat "$w/frames.rgba" >/dev/null
 x264=(-c:v libx264 -preset medium -crf 18 -pix_fmt yuv420p -vf scale=out_color_matrix=bt709:out_range=tv:flags=bilinear
       -colorspace bt709 -color_primaries bt709 -color_trc bt709 -color_range tv -movflags +faststart)
-for round in 1 2; do
+for _ in 1 2; do
   measure "(b)" ffmpeg -v error -y -f rawvideo -pix_fmt rgba -s 1920x1080 -framerate 30 -i "$w/frames.rgba" "${x264[@]}" "$w/b.mp4"
 done
 rm -f "$w/frames.rgba"

@@ -49,12 +49,20 @@ for b in "${binaries[@]}"; do cp "$b" "$root/opt/rollspin/bin/"; done
 # The libraries: the union of what the binaries load, resolved to files.
 # glibc and the C++ runtime stay the host's: a newer host's serve Debian's
 # binaries, and an older copy here would break the host's own GPU driver.
-ldd "${binaries[@]}" 2>/dev/null | awk '/=> \// {print $3}' | sort -u |
+# rollspin opens FFmpeg's libraries with dlopen (media/av_library.hpp), so
+# ldd of the binary does not list them: they and what they load are added.
+ffmpegLibs=()
+for name in libavutil libswscale libavcodec libavformat libavfilter; do
+  lib=$(ldconfig -p | awk -v n="$name" '$1 ~ "^" n "\\.so\\.[0-9]+$" && /x86-64/ {print $NF; exit}')
+  [ -n "$lib" ] || { echo "device_bundle.sh: FFmpeg's $name is not installed here" >&2; exit 1; }
+  ffmpegLibs+=("$lib")
+done
+{ ldd "${binaries[@]}" "${ffmpegLibs[@]}" 2>/dev/null | awk '/=> \// {print $3}'; printf '%s\n' "${ffmpegLibs[@]}"; } | sort -u |
   grep -v -E '/(libc|libm|libdl|libpthread|librt|libresolv|libutil|ld-linux-x86-64|libstdc\+\+|libgcc_s)\.so' \
     >"$stage/libs.txt"
-if ldd "${binaries[@]}" 2>/dev/null | grep -q "not found"; then
+if ldd "${binaries[@]}" "${ffmpegLibs[@]}" 2>/dev/null | grep -q "not found"; then
   echo "device_bundle.sh: a binary's library is missing here:" >&2
-  ldd "${binaries[@]}" | grep "not found" >&2
+  ldd "${binaries[@]}" "${ffmpegLibs[@]}" | grep "not found" >&2
   exit 1
 fi
 while read -r lib; do cp -L "$lib" "$root/opt/rollspin/lib/$(basename "$lib")"; done <"$stage/libs.txt"

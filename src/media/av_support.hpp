@@ -4,9 +4,7 @@
 // Internal to media/; includes the libav headers only where it is included.
 #pragma once
 
-extern "C" {
-#include <libavutil/error.h>
-}
+#include "media/av_library.hpp"
 
 #include <filesystem>
 #include <string>

@@ -1,10 +1,6 @@
 #include "media/container_tags.hpp"
 
-extern "C" {
-#include <libavformat/avformat.h>
-#include <libavutil/hash.h>
-#include <libavutil/opt.h>
-}
+#include "media/av_library.hpp"
 
 #include <fmt/format.h>
 

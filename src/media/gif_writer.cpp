@@ -1,12 +1,6 @@
 #include "media/gif_writer.hpp"
 
-extern "C" {
-#include <libavfilter/avfilter.h>
-#include <libavfilter/buffersink.h>
-#include <libavfilter/buffersrc.h>
-#include <libavutil/frame.h>
-#include <libavutil/pixdesc.h>
-}
+#include "media/av_library.hpp"
 
 #include <fmt/format.h>
 

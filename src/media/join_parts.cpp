@@ -1,10 +1,6 @@
 #include "media/join_parts.hpp"
 
-extern "C" {
-#include <libavcodec/avcodec.h>
-#include <libavformat/avformat.h>
-#include <libavutil/opt.h>
-}
+#include "media/av_library.hpp"
 
 #include <unistd.h>
 

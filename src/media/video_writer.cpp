@@ -3,13 +3,7 @@
 #include "core/temp_files.hpp"
 #include "media/container_tags.hpp"
 
-extern "C" {
-#include <libavcodec/avcodec.h>
-#include <libavformat/avformat.h>
-#include <libavutil/opt.h>
-#include <libavutil/pixdesc.h>
-#include <libswscale/swscale.h>
-}
+#include "media/av_library.hpp"
 
 #include <unistd.h>
 

@@ -1,0 +1,84 @@
+#include "media/av_library.hpp"
+
+#include <dlfcn.h>
+
+#include <array>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace rollspin::media::av_library {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kNames[] = {
+#define ROLLSPIN_AV_NAME(name) #name,
+    ROLLSPIN_AV_FUNCTIONS(ROLLSPIN_AV_NAME)
+#undef ROLLSPIN_AV_NAME
+};
+static_assert(std::size(kNames) == count);
+
+// The libraries and their major versions, as the headers were compiled
+// against them: a library of another major version has another ABI.
+struct Library {
+  const char* name;
+  int major;
+  [[nodiscard]] std::string soname() const { return fmt::format("{}.so.{}", name, major); }
+  [[nodiscard]] std::string debianPackage() const { return fmt::format("{}{}", name, major); }
+};
+constexpr Library kLibraries[] = {{"libavutil", LIBAVUTIL_VERSION_MAJOR},
+                                  {"libswscale", LIBSWSCALE_VERSION_MAJOR},
+                                  {"libavcodec", LIBAVCODEC_VERSION_MAJOR},
+                                  {"libavformat", LIBAVFORMAT_VERSION_MAJOR},
+                                  {"libavfilter", LIBAVFILTER_VERSION_MAJOR}};
+
+struct Table {
+  std::array<void*, count> functions{};
+};
+
+Table load() {
+  std::string directory;
+  if (const char* custom = std::getenv(overrideVariable()); custom != nullptr && *custom != '\0') directory = custom;
+  std::vector<void*> handles;
+  for (const Library& library : kLibraries) {
+    const std::string path = directory.empty() ? library.soname() : (fs::path(directory) / library.soname()).string();
+    // RTLD_NODELETE: the libraries stay for the rest of the process (codec
+    // threads may outlive a writer), and LeakSanitizer can still name them.
+    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
+    if (handle == nullptr) {
+      const char* why = dlerror();
+      std::string packages;
+      for (const Library& l : kLibraries) packages += fmt::format(" {}", l.debianPackage());
+      throw runtimeError({}, "video output and `join` need FFmpeg's {}{} ({}); on Debian: apt-get install{}",
+                         library.soname(),
+                         directory.empty() ? "" : fmt::format(" in {} (${})", directory, overrideVariable()),
+                         why != nullptr ? why : "not found", packages);
+    }
+    handles.push_back(handle);
+  }
+  Table table;
+  for (std::size_t i = 0; i < count; ++i) {
+    for (void* handle : handles)
+      if ((table.functions[i] = dlsym(handle, kNames[i])) != nullptr) break;
+    if (table.functions[i] == nullptr)
+      throw runtimeError({}, "FFmpeg's libraries loaded, but none provides {} (another FFmpeg version?)", kNames[i]);
+  }
+  return table;
+}
+
+}  // namespace
+
+const char* overrideVariable() { return "ROLLSPIN_LIBAV_DIR"; }
+
+void* symbol(std::size_t index) {
+  // Thread-safe; a load that throws is tried again at the next call.
+  static const Table table = load();
+  return table.functions[index];
+}
+
+}  // namespace rollspin::media::av_library

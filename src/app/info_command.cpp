@@ -1,6 +1,7 @@
 // `rollspin info`: which GL backends load on this machine, and the context
 // the renderer would get (backend, GL_VENDOR, GL_RENDERER, GL_VERSION, the
-// EGL device), so a user sees at once whether a GPU would do the work.
+// EGL device), so a user sees at once whether a GPU would do the work; then
+// the FFmpeg libraries video output would load.
 #include <fmt/format.h>
 
 #include <cstdio>
@@ -8,6 +9,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "media/video_libraries.hpp"
 #include "render/gl_context.hpp"
 
 namespace rollspin::app {
@@ -41,6 +43,7 @@ int runInfo(const InfoOptions& o, const CLI::App& command) {
   }
   listBackends();
   fmt::print("\nthe context a render gets here:\n{}", render::describeContext(context->info()));
+  fmt::print("\nvideo (MP4, WebM, MOV, GIF, join): {}\n", media::videoLibrariesSummary());
   return 0;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "media/video_libraries.hpp"
 
 namespace rollspin::media::av_library {
 
@@ -82,3 +83,28 @@ void* symbol(std::size_t index) {
 }
 
 }  // namespace rollspin::media::av_library
+
+namespace rollspin::media {
+
+std::string videoLibrariesSummary() {
+  try {
+    std::string versions;
+    auto add = [&](const char* name, unsigned version) {
+      versions += fmt::format("{}{} {}.{}.{}", versions.empty() ? "" : ", ", name, version >> 16, (version >> 8) & 0xff,
+                              version & 0xff);
+    };
+    add("libavutil", avutil_version());
+    add("libswscale", swscale_version());
+    add("libavcodec", avcodec_version());
+    add("libavformat", avformat_version());
+    add("libavfilter", avfilter_version());
+    const char* directory = std::getenv(av_library::overrideVariable());
+    return versions + (directory != nullptr && *directory != '\0'
+                           ? fmt::format(", from {} (${})", directory, av_library::overrideVariable())
+                           : ", from the loader's path");
+  } catch (const Error& e) {
+    return fmt::format("not available: {}", e.message());
+  }
+}
+
+}  // namespace rollspin::media

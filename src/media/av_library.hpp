@@ -32,27 +32,27 @@ extern "C" {
 // clang-format off
 #define ROLLSPIN_AV_FUNCTIONS(X)                                                                               \
   /* libavutil */                                                                                              \
-  X(av_buffer_create) X(av_dict_free) X(av_dict_get) X(av_dict_set) X(av_frame_alloc) X(av_frame_free)         \
+  X(avutil_version) X(av_buffer_create) X(av_dict_free) X(av_dict_get) X(av_dict_set) X(av_frame_alloc) X(av_frame_free)         \
   X(av_frame_get_buffer) X(av_frame_make_writable) X(av_frame_unref) X(av_get_pix_fmt) X(av_hash_alloc)        \
   X(av_hash_final_hex) X(av_hash_freep) X(av_hash_init) X(av_hash_update) X(av_log_set_level) X(av_opt_find)   \
   X(av_opt_set) X(av_opt_set_int) X(av_opt_set_pixel_fmt) X(av_rescale_q) X(av_strerror)                       \
   /* libavcodec */                                                                                             \
-  X(av_packet_alloc) X(av_packet_free) X(av_packet_rescale_ts) X(av_packet_unref) X(avcodec_alloc_context3)    \
+  X(avcodec_version) X(av_packet_alloc) X(av_packet_free) X(av_packet_rescale_ts) X(av_packet_unref) X(avcodec_alloc_context3)    \
   X(avcodec_find_encoder_by_name) X(avcodec_free_context) X(avcodec_get_name) X(avcodec_open2)                 \
   X(avcodec_parameters_alloc) X(avcodec_parameters_copy) X(avcodec_parameters_free)                            \
   X(avcodec_parameters_from_context) X(avcodec_receive_packet) X(avcodec_send_frame)                           \
   /* libavformat */                                                                                            \
-  X(av_guess_format) X(av_interleaved_write_frame) X(av_read_frame) X(av_write_trailer)                        \
+  X(avformat_version) X(av_guess_format) X(av_interleaved_write_frame) X(av_read_frame) X(av_write_trailer)                        \
   X(avformat_alloc_output_context2) X(avformat_close_input) X(avformat_find_stream_info)                       \
   X(avformat_free_context) X(avformat_new_stream) X(avformat_open_input) X(avformat_write_header)               \
   X(avio_closep) X(avio_flush) X(avio_open)                                                                    \
   /* libavfilter */                                                                                            \
   X(av_buffersink_get_frame) X(av_buffersrc_add_frame) X(av_buffersrc_add_frame_flags) X(avfilter_get_by_name) \
   X(avfilter_graph_alloc) X(avfilter_graph_config) X(avfilter_graph_create_filter) X(avfilter_graph_free)      \
-  X(avfilter_link)                                                                                             \
+  X(avfilter_link) X(avfilter_version)                                                                        \
   /* libswscale */                                                                                             \
   X(sws_alloc_context) X(sws_freeContext) X(sws_getCoefficients) X(sws_init_context) X(sws_scale_frame)        \
-  X(sws_setColorspaceDetails)
+  X(sws_setColorspaceDetails) X(swscale_version)
 // clang-format on
 
 namespace rollspin::media {

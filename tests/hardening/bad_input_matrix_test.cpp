@@ -308,6 +308,15 @@ TEST(WithoutFfmpeg, StillsRunAndVideoFailsClearly) {
     EXPECT_NE(video.err.find("libavutil.so."), std::string::npos) << video.err;
     EXPECT_NE(video.err.find("ROLLSPIN_LIBAV_DIR"), std::string::npos) << video.err;
   }
+  // `info` says why, and still exits 0 (it is about what this machine can do).
+  const auto info = runRollspin({"info"}, {}, 0, env);
+  EXPECT_EQ(info.exitCode, 0) << info.err;
+  EXPECT_NE(info.out.find("video (MP4, WebM, MOV, GIF, join): not available: "), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("libavutil.so."), std::string::npos) << info.out;
+  const auto infoWithFfmpeg = runRollspin({"info"});
+  EXPECT_EQ(infoWithFfmpeg.exitCode, 0) << infoWithFfmpeg.err;
+  EXPECT_NE(infoWithFfmpeg.out.find(", libavcodec "), std::string::npos) << infoWithFfmpeg.out;
+  EXPECT_EQ(infoWithFfmpeg.out.find("not available"), std::string::npos) << infoWithFfmpeg.out;
   // Parts made with FFmpeg, joined without it.
   for (const char* shard : {"1/2", "2/2"}) {
     const auto part =

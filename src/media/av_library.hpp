@@ -70,9 +70,9 @@ enum Index : std::size_t {
 // first call (thread-safe). Throws Error when a library or function is missing.
 void* symbol(std::size_t index);
 
-// The directory the libraries are loaded from: $ROLLSPIN_LIBAV_DIR when set
-// (another FFmpeg build of the same major versions), else the loader's path.
-// Say which in messages.
+// "ROLLSPIN_LIBAV_DIR": the variable that names a folder to load the
+// libraries from (another FFmpeg build of the same major versions); unset,
+// the dynamic loader's search path serves.
 const char* overrideVariable();
 
 template <class Signature>

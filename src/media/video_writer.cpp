@@ -192,6 +192,11 @@ VideoWriter::VideoWriter(fs::path finalPath, const VideoSettings& settings) : im
   c->framerate = AVRational{settings.fpsNum, settings.fpsDen};
   c->sample_aspect_ratio = AVRational{1, 1};
   c->pix_fmt = m.pixelFormat;
+  // 8-bit 4:2:0 goes through rollspin's converter, whose chroma is the mean
+  // of each 2×2 block: sited at the block's centre, not H.264's default left.
+  const bool ownConverter =
+      settings.yuvBt709 && (m.pixelFormat == AV_PIX_FMT_YUV420P || m.pixelFormat == AV_PIX_FMT_YUVA420P);
+  if (ownConverter) c->chroma_sample_location = AVCHROMA_LOC_CENTER;
   if (settings.yuvBt709) {
     // BT.709 everywhere: the matrix of the conversion below, and the tags.
     c->color_range = AVCOL_RANGE_MPEG;
@@ -223,9 +228,10 @@ VideoWriter::VideoWriter(fs::path finalPath, const VideoSettings& settings) : im
   m.frame->color_primaries = c->color_primaries;
   m.frame->color_trc = c->color_trc;
   m.frame->colorspace = c->colorspace;
+  m.frame->chroma_location = c->chroma_sample_location;
   m.check(av_frame_get_buffer(m.frame, 0), "allocating a frame");
 
-  if (settings.yuvBt709 && (m.pixelFormat == AV_PIX_FMT_YUV420P || m.pixelFormat == AV_PIX_FMT_YUVA420P)) {
+  if (ownConverter) {
     // A quarter of the cores (at most 8): a fixed camera converts a few
     // percent of a frame, a moving one all of it; on 2 cores, one thread.
     const int cores = static_cast<int>(std::thread::hardware_concurrency());

@@ -135,6 +135,7 @@ TEST(FormatSinks, EveryVideoRowDecodesToItsCodecPixelFormatFramesColoursAndAlpha
       EXPECT_EQ(probe.height, 48);
       if (format.name == "webm") {
         EXPECT_EQ(probe.alphaMode, alpha ? "1" : "");
+        EXPECT_EQ(probe.chromaLocation, "center") << "the converter's chroma is each 2x2 block's mean";
       }
       if (format.name != "gif") {  // GIF: RGB palette entries, no colour tags
         EXPECT_EQ(probe.colorSpace, "bt709");

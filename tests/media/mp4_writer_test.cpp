@@ -61,6 +61,7 @@ TEST(Mp4Writer, WritesH264Yuv420pTaggedBt709WithMonotonicTimestamps) {
   EXPECT_EQ(probe.colorPrimaries, "bt709");
   EXPECT_EQ(probe.colorTransfer, "bt709");
   EXPECT_EQ(probe.colorRange, "tv");
+  EXPECT_EQ(probe.chromaLocation, "center") << "the converter's chroma is each 2x2 block's mean";
   EXPECT_EQ(probe.width, 64);
   EXPECT_EQ(probe.height, 48);
   EXPECT_DOUBLE_EQ(probe.frameRate, 12.0);

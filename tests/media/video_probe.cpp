@@ -63,6 +63,7 @@ VideoProbe probeVideo(const std::filesystem::path& file, const std::set<long lon
   probe.colorPrimaries = orEmpty(av_color_primaries_name(par->color_primaries));
   probe.colorTransfer = orEmpty(av_color_transfer_name(par->color_trc));
   probe.colorRange = orEmpty(av_color_range_name(par->color_range));
+  probe.chromaLocation = orEmpty(av_chroma_location_name(par->chroma_location));
   probe.width = par->width;
   probe.height = par->height;
   probe.frameRate = av_q2d(stream->avg_frame_rate);

@@ -23,6 +23,7 @@ struct VideoProbe {
   std::string profile;       // "4444", "HQ" (ProRes); "" when the codec has none
   std::string alphaMode;     // the stream's ALPHA_MODE tag (WebM with alpha: "1")
   std::string colorSpace, colorPrimaries, colorTransfer, colorRange;  // "bt709", …, "tv"
+  std::string chromaLocation;  // "left", "center", … ("unspecified" when the stream does not say)
   int width = 0, height = 0;
   double frameRate = 0.0;    // average, from the stream
   int frameRateNum = 0, frameRateDen = 0;  // the same, exactly (30000/1001)

@@ -42,9 +42,15 @@ struct Table {
   std::array<void*, count> functions{};
 };
 
+constexpr const char* kOverrideVariable = "ROLLSPIN_LIBAV_DIR";
+
+std::string customDirectory() {
+  const char* custom = std::getenv(kOverrideVariable);
+  return custom != nullptr ? custom : "";
+}
+
 Table load() {
-  std::string directory;
-  if (const char* custom = std::getenv(overrideVariable()); custom != nullptr && *custom != '\0') directory = custom;
+  const std::string directory = customDirectory();
   std::vector<void*> handles;
   for (const Library& library : kLibraries) {
     const std::string path = directory.empty() ? library.soname() : (fs::path(directory) / library.soname()).string();
@@ -56,8 +62,7 @@ Table load() {
       std::string packages;
       for (const Library& l : kLibraries) packages += fmt::format(" {}", l.debianPackage());
       throw runtimeError({}, "video output and `join` need FFmpeg's {}{} ({}); on Debian: apt-get install{}",
-                         library.soname(),
-                         directory.empty() ? "" : fmt::format(" in {} (${})", directory, overrideVariable()),
+                         library.soname(), directory.empty() ? "" : " in " + customDirectoryNamed(),
                          why != nullptr ? why : "not found", packages);
     }
     handles.push_back(handle);
@@ -74,7 +79,10 @@ Table load() {
 
 }  // namespace
 
-const char* overrideVariable() { return "ROLLSPIN_LIBAV_DIR"; }
+std::string customDirectoryNamed() {
+  const std::string directory = customDirectory();
+  return directory.empty() ? "" : fmt::format("{} (${})", directory, kOverrideVariable);
+}
 
 void* symbol(std::size_t index) {
   // Thread-safe; a load that throws is tried again at the next call.
@@ -98,10 +106,8 @@ std::string videoLibrariesSummary() {
     add("libavcodec", avcodec_version());
     add("libavformat", avformat_version());
     add("libavfilter", avfilter_version());
-    const char* directory = std::getenv(av_library::overrideVariable());
-    return versions + (directory != nullptr && *directory != '\0'
-                           ? fmt::format(", from {} (${})", directory, av_library::overrideVariable())
-                           : ", from the loader's path");
+    const std::string directory = av_library::customDirectoryNamed();
+    return versions + ", from " + (directory.empty() ? "the loader's path" : directory);
   } catch (const Error& e) {
     return fmt::format("not available: {}", e.message());
   }

@@ -26,6 +26,7 @@ extern "C" {
 }
 
 #include <cstddef>
+#include <string>
 
 // Every libav function media/ calls, by library; a call to one not listed
 // here fails to link (the executable does not link libav*).
@@ -70,10 +71,11 @@ enum Index : std::size_t {
 // first call (thread-safe). Throws Error when a library or function is missing.
 void* symbol(std::size_t index);
 
-// "ROLLSPIN_LIBAV_DIR": the variable that names a folder to load the
-// libraries from (another FFmpeg build of the same major versions); unset,
-// the dynamic loader's search path serves.
-const char* overrideVariable();
+// ROLLSPIN_LIBAV_DIR names a folder to load the libraries from (another
+// FFmpeg build of the same major versions); unset, the dynamic loader's
+// search path serves. For messages: "DIR ($ROLLSPIN_LIBAV_DIR)", or "" when
+// it is unset.
+std::string customDirectoryNamed();
 
 template <class Signature>
 struct Function;

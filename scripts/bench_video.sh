@@ -31,40 +31,32 @@ fps=30
 crf=18
 preset=medium
 scene=$root/scenes/lollipop.toml
-common=(--set render.width="$width" --set render.height="$height" --set animation.fps=$fps
-        --set animation.hold=0 --set animation.crf=$crf --set animation.preset=$preset --quiet)
+common=(--set render.width="$width" --set render.height="$height" --set animation.fps="$fps"
+        --set animation.hold=0 --set animation.crf="$crf" --set animation.preset="$preset" --quiet)
 
-# Runs a command; prints "WALL_SECONDS PEAK_RSS_KIB CPU_SECONDS" (RSS of the
-# largest child; CPU = user + system of all its threads). On a machine shared
-# with other jobs the CPU seconds are the steadier measure of the work done.
-measure() {
-  python3 - "$@" <<'EOF'
-import resource, subprocess, sys, time
-start = time.monotonic()
-subprocess.run(sys.argv[1:], check=True)
-wall = time.monotonic() - start
-usage = resource.getrusage(resource.RUSAGE_CHILDREN)
-print(f"{wall:.3f} {usage.ru_maxrss} {usage.ru_utime + usage.ru_stime:.3f}")
-EOF
-}
+# shellcheck source=scripts/bench_common.sh
+source "$root/scripts/bench_common.sh"
+x264_args "$preset" "$crf"
+# A measured run that failed (EXIT_CODE, the 4th field) ends the benchmark.
+ran() { [ "$1" = 0 ] || { echo "bench_video: $2 failed (exit $1)" >&2; exit 1; }; }
 
 echo "bench_video: ${duration} s at ${width}x${height}@${fps}, libx264 preset ${preset} crf ${crf}; work dir $work"
 echo "machine: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
 
 # (a) rollspin end to end.
-read -r a_wall a_rss a_cpu < <(measure "$bin" render "$scene" "${common[@]}" --set animation.duration="$duration" \
-                                       -o "$work/a.mp4")
+read -r a_wall a_rss a_cpu a_rc < <(measure "$bin" render "$scene" "${common[@]}" --set animation.duration="$duration" \
+                                            -o "$work/a.mp4")
+ran "$a_rc" "(a)"
 echo "(a) rollspin render → MP4:                  ${a_wall} s  (CPU ${a_cpu} s, peak RSS $((a_rss / 1024)) MiB)"
 
 # (c) PNG frames, then the ffmpeg tool (timed together).
 rm -rf "$work/frames"
-read -r c1_wall _ c1_cpu < <(measure "$bin" render "$scene" "${common[@]}" --set animation.duration="$duration" \
-                               --set render.format=png -o "$work/frames")
-x264_args=(-c:v libx264 -preset $preset -crf $crf -pix_fmt yuv420p
-           -vf "scale=out_color_matrix=bt709:out_range=tv:flags=bilinear"
-           -colorspace bt709 -color_primaries bt709 -color_trc bt709 -color_range tv -movflags +faststart)
-read -r c2_wall _ c2_cpu < <(measure ffmpeg -v error -y -framerate $fps -i "$work/frames/frame_%05d.png" "${x264_args[@]}" \
-                               "$work/c.mp4")
+read -r c1_wall _ c1_cpu c1_rc < <(measure "$bin" render "$scene" "${common[@]}" --set animation.duration="$duration" \
+                                     --set render.format=png -o "$work/frames")
+ran "$c1_rc" "(c), the PNG frames"
+read -r c2_wall _ c2_cpu c2_rc < <(measure ffmpeg -v error -y -framerate $fps -i "$work/frames/frame_%05d.png" \
+                                     "${X264_ARGS[@]}" "$work/c.mp4")
+ran "$c2_rc" "(c), the ffmpeg tool"
 c_wall=$(python3 -c "print(f'{$c1_wall + $c2_wall:.3f}')")
 c_cpu=$(python3 -c "print(f'{$c1_cpu + $c2_cpu:.3f}')")
 echo "(c) PNG frames + ffmpeg tool:               ${c_wall} s  (CPU ${c_cpu} s; frames ${c1_wall} s, encode ${c2_wall} s)"
@@ -72,14 +64,14 @@ echo "(c) PNG frames + ffmpeg tool:               ${c_wall} s  (CPU ${c_cpu} s; 
 # (b) the same frames as raw RGBA (prepared untimed, read from the page cache).
 ffmpeg -v error -y -i "$work/frames/frame_%05d.png" -f rawvideo -pix_fmt rgba "$work/frames.rgba"
 cat "$work/frames.rgba" > /dev/null
-read -r b_wall b_rss b_cpu < <(measure ffmpeg -v error -y -f rawvideo -pix_fmt rgba -s "${width}x${height}" -framerate $fps \
-                               -i "$work/frames.rgba" "${x264_args[@]}" "$work/b.mp4")
+read -r b_wall b_rss b_cpu b_rc < <(measure ffmpeg -v error -y -f rawvideo -pix_fmt rgba -s "${width}x${height}" \
+                                    -framerate $fps -i "$work/frames.rgba" "${X264_ARGS[@]}" "$work/b.mp4")
+ran "$b_rc" "(b)"
 rm -f "$work/frames.rgba"
 echo "(b) ffmpeg tool, raw RGBA → MP4:            ${b_wall} s  (CPU ${b_cpu} s, peak RSS $((b_rss / 1024)) MiB)"
 
 # Fairness: libx264 writes its full settings into the stream (an SEI); (a),
 # (b) and (c) must have encoded with the same ones (threads included).
-x264_options() { strings "$1" | grep -m1 -o 'options: .*' | tr ' ' '\n'; }
 if ! diff <(x264_options "$work/a.mp4") <(x264_options "$work/b.mp4") >/dev/null ||
    ! diff <(x264_options "$work/a.mp4") <(x264_options "$work/c.mp4") >/dev/null; then
   echo "bench_video: the x264 settings differ between (a), (b) and (c):" >&2
@@ -89,8 +81,9 @@ fi
 echo "    x264 settings identical in (a), (b), (c): $(x264_options "$work/a.mp4" | grep -E '^(threads|lookahead_threads|crf|subme|ref)=' | tr '\n' ' ')"
 
 # Peak RSS of a clip 4× longer.
-read -r l_wall l_rss _ < <(measure "$bin" render "$scene" "${common[@]}" --set animation.duration="$long" \
-                                 -o "$work/long.mp4")
+read -r l_wall l_rss _ l_rc < <(measure "$bin" render "$scene" "${common[@]}" --set animation.duration="$long" \
+                                     -o "$work/long.mp4")
+ran "$l_rc" "the ${long} s clip"
 echo "    rollspin ${long} s clip:                    ${l_wall} s  (peak RSS $((l_rss / 1024)) MiB)"
 
 python3 - "$a_wall" "$b_wall" "$c_wall" "$a_rss" "$l_rss" "$a_cpu" "$b_cpu" "$c_cpu" <<'EOF'

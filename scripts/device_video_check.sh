@@ -20,59 +20,56 @@ w=$(mktemp -d)
 date -u; echo "$(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"; nvidia-smi -L 2>/dev/null
 "$new" info 2>&1 | tail -3
 
+# shellcheck source=scripts/bench_common.sh
+source scripts/bench_common.sh
+x264_args medium 18
 # label, command…: wall, CPU (user + system of the tree), peak RSS, and the
 # --verbose lines about the pipeline and the encoder.
-measure() {
-  python3 - "$@" <<'PY'
-import resource, subprocess, sys, time
-start = time.monotonic()
-r = subprocess.run(sys.argv[2:], stderr=subprocess.PIPE, text=True)
-wall = time.monotonic() - start
-u = resource.getrusage(resource.RUSAGE_CHILDREN)
-print(f"{sys.argv[1]}: {wall:.2f} s wall, {u.ru_utime + u.ru_stime:.2f} s CPU, {u.ru_maxrss // 1024} MiB, rc {r.returncode}")
-for line in r.stderr.splitlines():
-    if "pipeline:" in line or "encoder:" in line or "rror" in line:
-        print("    " + line)
-PY
+report() {
+  local label=$1 err wall rss cpu rc
+  shift
+  err=$(mktemp)
+  read -r wall rss cpu rc < <(measure "$@" 2>"$err")
+  echo "$label: $wall s wall, $cpu s CPU, $((rss / 1024)) MiB, rc $rc"
+  grep -E "pipeline:|encoder:|rror" "$err" | sed 's/^/    /'
+  rm -f "$err"
 }
 scene=scenes/lollipop.toml
 hd=(--set render.width=1920 --set render.height=1080 --set animation.fps=30 --set animation.hold=0
     --set animation.crf=18 --set animation.preset=medium --set animation.duration=10)
 echo "== 1080p fixed camera, 10 s, in turn"
 for _ in 1 2 3; do
-  measure "reference        " "$ref" render $scene "${hd[@]}" -o "$w/ref.mp4" --quiet
-  measure "bundle           " "$new" render $scene "${hd[@]}" -o "$w/new.mp4" --quiet
-  ROLLSPIN_CONVERT_THREADS=1 measure "bundle, 1 thread " "$new" render $scene "${hd[@]}" -o "$w/new1.mp4" --quiet
+  report "reference        " "$ref" render $scene "${hd[@]}" -o "$w/ref.mp4" --quiet
+  report "bundle           " "$new" render $scene "${hd[@]}" -o "$w/new.mp4" --quiet
+  ROLLSPIN_CONVERT_THREADS=1 report "bundle, 1 thread " "$new" render $scene "${hd[@]}" -o "$w/new1.mp4" --quiet
 done
 cmp "$w/new.mp4" "$w/new1.mp4" && echo "bundle: default and 1 conversion thread byte-identical"
-measure "reference --verbose" "$ref" --verbose render $scene "${hd[@]}" -o "$w/refv.mp4"
-measure "bundle --verbose" "$new" --verbose render $scene "${hd[@]}" -o "$w/newv.mp4"
+report "reference --verbose" "$ref" --verbose render $scene "${hd[@]}" -o "$w/refv.mp4"
+report "bundle --verbose" "$new" --verbose render $scene "${hd[@]}" -o "$w/newv.mp4"
 
 echo "== (b) the ffmpeg tool, raw RGBA → MP4"
 ffmpeg -v error -y -i "$w/new.mp4" -f rawvideo -pix_fmt rgba "$w/frames.rgba"
 cat "$w/frames.rgba" >/dev/null
-x264=(-c:v libx264 -preset medium -crf 18 -pix_fmt yuv420p -vf scale=out_color_matrix=bt709:out_range=tv:flags=bilinear
-      -colorspace bt709 -color_primaries bt709 -color_trc bt709 -color_range tv -movflags +faststart)
 for _ in 1 2; do
-  measure "(b)" ffmpeg -v error -y -f rawvideo -pix_fmt rgba -s 1920x1080 -framerate 30 -i "$w/frames.rgba" "${x264[@]}" "$w/b.mp4"
+  report "(b)" ffmpeg -v error -y -f rawvideo -pix_fmt rgba -s 1920x1080 -framerate 30 -i "$w/frames.rgba" "${X264_ARGS[@]}" "$w/b.mp4"
 done
 rm -f "$w/frames.rgba"
 for f in new ref b; do
-  echo "$f.mp4 x264: $(strings "$w/$f.mp4" | grep -m1 -o 'options: .*' | tr ' ' '\n' | grep -E '^(threads|lookahead_threads)=' | tr '\n' ' ')"
+  echo "$f.mp4 x264: $(x264_options "$w/$f.mp4" | grep -E '^(threads|lookahead_threads)=' | tr '\n' ' ')"
 done
 
 uhd=(--set render.width=3840 --set render.height=2160 --set animation.fps=30 --set animation.hold=0 --set animation.duration=5)
 echo "== 4K follow camera, 5 s"
-measure "reference" "$ref" --verbose render $scene "${uhd[@]}" --set render.follow=true -o "$w/ref4f.mp4"
-measure "bundle" "$new" --verbose render $scene "${uhd[@]}" --set render.follow=true -o "$w/new4f.mp4"
+report "reference" "$ref" --verbose render $scene "${uhd[@]}" --set render.follow=true -o "$w/ref4f.mp4"
+report "bundle" "$new" --verbose render $scene "${uhd[@]}" --set render.follow=true -o "$w/new4f.mp4"
 for threads in 1 8; do
-  ROLLSPIN_CONVERT_THREADS=$threads measure "bundle, $threads threads" "$new" --verbose render $scene "${uhd[@]}" \
+  ROLLSPIN_CONVERT_THREADS=$threads report "bundle, $threads threads" "$new" --verbose render $scene "${uhd[@]}" \
     --set render.follow=true -o "$w/new4f-$threads.mp4"
   cmp "$w/new4f.mp4" "$w/new4f-$threads.mp4" && echo "    byte-identical to the default thread count"
 done
 echo "== 4K fixed camera, 5 s"
-measure "reference" "$ref" --verbose render $scene "${uhd[@]}" -o "$w/ref4.mp4"
-measure "bundle" "$new" --verbose render $scene "${uhd[@]}" -o "$w/new4.mp4"
+report "reference" "$ref" --verbose render $scene "${uhd[@]}" -o "$w/ref4.mp4"
+report "bundle" "$new" --verbose render $scene "${uhd[@]}" -o "$w/new4.mp4"
 
 if command -v bench_media >/dev/null; then
   echo "== bench_media (1080p, then 4K)"

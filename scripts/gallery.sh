@@ -37,10 +37,6 @@ if [ ! -x build/rollspin ]; then
   bash scripts/build.sh
 fi
 
-# Many renders: glibc's 2 MiB pages spare each one most of its first-touch
-# page faults where the kernel's transparent huge pages are in madvise mode
-# (README, "Render speed"); the bytes are the same.
-export GLIBC_TUNABLES=${GLIBC_TUNABLES:-glibc.malloc.hugetlb=1}
 mkdir -p output docs/gallery
 for name in "${names[@]}"; do
   scene="scenes/$name.toml"

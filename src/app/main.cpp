@@ -4,12 +4,14 @@
 // 1 runtime failure).
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <string>
 #include <vector>
 
 #include "app/cli_messages.hpp"
 #include "app/commands.hpp"
+#include "app/huge_pages.hpp"
 #include "app/version_info.hpp"
 #include "core/error.hpp"
 #include "core/stage_log.hpp"
@@ -72,6 +74,14 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  // A render restarts itself once, here, before it opens or writes anything,
+  // so that malloc can use huge pages (see app/huge_pages.hpp).
+  if (cli.got_subcommand("render")) rollspin::app::restartWithHugePages(argv);
+  if (const char* tunables = std::getenv("GLIBC_TUNABLES"); rollspin::app::restartedForHugePages() && verbose)
+    std::fprintf(stderr,
+                 "rollspin: memory: restarted with GLIBC_TUNABLES=%s, so that malloc asks for transparent huge pages "
+                 "(GLIBC_TUNABLES=glibc.malloc.hugetlb=0 keeps small pages)\n",
+                 tunables != nullptr ? tunables : "");
   rollspin::StageLog::instance().setEcho(verbose);
   // Ctrl-C or SIGTERM: remove unfinished outputs, say so, exit 128 + signal.
   rollspin::installInterruptCleanup();

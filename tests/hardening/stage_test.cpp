@@ -85,3 +85,38 @@ TEST(Stages, VideoOpensTheEncoderOnce) {
     EXPECT_TRUE(has(s, want)) << want;
   EXPECT_FALSE(has(s, "png"));
 }
+
+// A render restarts itself once so that malloc can ask for huge pages
+// (app/huge_pages.hpp); other commands do not, a user's own setting wins, and
+// the pixels do not depend on it.
+TEST(Stages, RenderRestartsOnceForHugePages) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer's malloc is not glibc's: no restart";
+#endif
+  if (rollspin::test::readFile("/sys/kernel/mm/transparent_hugepage/enabled").find("[madvise]") == std::string::npos)
+    GTEST_SKIP() << "transparent huge pages are not in madvise mode here: no restart";
+  const std::string line = "rollspin: memory: restarted with GLIBC_TUNABLES=glibc.malloc.hugetlb=1";
+  const auto dir = freshTempDir("stages");
+  const std::vector<std::string> still = {
+      "render", scene("lollipop.toml"), "--still", "--width", "160", "--height", "90", "--verbose", "-o"};
+  auto withOutput = [&](const char* name) {
+    std::vector<std::string> args = still;
+    args.push_back((dir / name).string());
+    return args;
+  };
+  const auto restarted = runRollspin(withOutput("huge.png"), {}, 0, {"GLIBC_TUNABLES="});
+  ASSERT_EQ(restarted.exitCode, 0) << restarted.err;
+  const auto at = restarted.err.find(line);
+  EXPECT_NE(at, std::string::npos) << restarted.err;
+  EXPECT_EQ(restarted.err.find(line, at + 1), std::string::npos) << "restarted twice:\n" << restarted.err;
+
+  const auto kept = runRollspin(withOutput("small.png"), {}, 0, {"GLIBC_TUNABLES=glibc.malloc.hugetlb=0"});
+  ASSERT_EQ(kept.exitCode, 0) << kept.err;
+  EXPECT_EQ(kept.err.find("rollspin: memory:"), std::string::npos) << kept.err;
+  const std::string huge = rollspin::test::readFile(dir / "huge.png");
+  EXPECT_FALSE(huge.empty());
+  EXPECT_EQ(huge, rollspin::test::readFile(dir / "small.png")) << "the pixels depend on the page size";
+
+  const auto solve = runRollspin({"solve", scene("lollipop.toml"), "--verbose"}, {}, 0, {"GLIBC_TUNABLES="});
+  EXPECT_EQ(solve.err.find("rollspin: memory:"), std::string::npos) << solve.err;
+}

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -40,12 +41,18 @@ void restartWithHugePages(char** argv) {
 #endif
   const std::optional<std::string> tunables = hugePagesTunables(facts);
   if (!tunables) return;
-  // Nothing is open or written yet; a failed execv (no /proc) leaves this
-  // process as it was, with small pages.
+  // The binary's own path, not /proc/self/exe: the kernel names a process
+  // after the file it execs, and ps, top and pkill should still see
+  // "rollspin". A binary replaced since it started reads "… (deleted)".
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (error || self.string().ends_with(" (deleted)")) return;
+  // Nothing is open or written yet; a failed execv leaves this process as
+  // it was, with small pages.
   ::setenv("GLIBC_TUNABLES", tunables->c_str(), 1);
   ::setenv(kRestartMarker, "1", 1);
   std::fflush(nullptr);
-  ::execv("/proc/self/exe", argv);
+  ::execv(self.c_str(), argv);
   if (facts.tunables)
     ::setenv("GLIBC_TUNABLES", facts.tunables->c_str(), 1);
   else

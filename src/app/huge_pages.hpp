@@ -3,7 +3,7 @@
 // GLIBC_TUNABLES holds glibc.malloc.hugetlb=1. llvmpipe zeroes every buffer
 // it allocates, and each 4 KiB page is a fault; with 2 MiB pages a 1080p
 // still takes about 0.3 s less. glibc reads the variable only when a process
-// starts, so a render restarts itself (execv of /proc/self/exe, same pid,
+// starts, so a render restarts itself (execv of its own binary, same pid,
 // same arguments) with it set.
 #pragma once
 

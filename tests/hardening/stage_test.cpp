@@ -3,8 +3,10 @@
 // for solve/timeline, no encoder for a still, no twin geometry without the
 // twin, no surface/texture/shadow for the twin alone, no font without labels.
 #include <gtest/gtest.h>
+#include <signal.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <sstream>
 
 #include "support/cli_runner.hpp"
@@ -119,4 +121,17 @@ TEST(Stages, RenderRestartsOnceForHugePages) {
 
   const auto solve = runRollspin({"solve", scene("lollipop.toml"), "--verbose"}, {}, 0, {"GLIBC_TUNABLES="});
   EXPECT_EQ(solve.err.find("rollspin: memory:"), std::string::npos) << solve.err;
+
+  // Restarted, the process keeps its name for ps, top and pkill (an exec of
+  // /proc/self/exe would rename it "exe").
+  if (const char* tunables = std::getenv("GLIBC_TUNABLES"); tunables != nullptr && *tunables != '\0')
+    GTEST_SKIP() << "GLIBC_TUNABLES is set here: the spawned render would not restart";
+  rollspin::test::SpawnedRollspin child({"render", scene("penny.toml"), "--width", "128", "--height", "72", "--set",
+                                         "animation.duration=60", "--verbose", "-o", (dir / "long.mp4").string()},
+                                        dir / "stderr");
+  ASSERT_TRUE(child.waitUntil([&] { return rollspin::test::readFile(dir / "stderr").find(line) != std::string::npos; }))
+      << rollspin::test::readFile(dir / "stderr");
+  EXPECT_EQ(rollspin::test::readFile("/proc/" + std::to_string(child.pid()) + "/comm"), "rollspin\n");
+  EXPECT_EQ(kill(child.pid(), SIGTERM), 0);
+  child.wait();
 }

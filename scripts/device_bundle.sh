@@ -50,11 +50,15 @@ for b in "${binaries[@]}"; do cp "$b" "$root/opt/rollspin/bin/"; done
 # glibc and the C++ runtime stay the host's: a newer host's serve Debian's
 # binaries, and an older copy here would break the host's own GPU driver.
 # rollspin opens FFmpeg's libraries with dlopen (media/av_library.hpp), so
-# ldd of the binary does not list them: they and what they load are added.
+# ldd of the binary does not list them: they and what they load are added,
+# by the names and major versions rollspin loads (its `info` lists them).
+sonames=$(build/rollspin info 2>/dev/null | sed -n 's/^video ([^)]*): //p' | grep -oE 'lib[a-z]+ [0-9]+' |
+            awk '{print $1 ".so." $2}') || true
+[ -n "$sonames" ] || { echo "device_bundle.sh: rollspin info finds no FFmpeg here:" >&2; build/rollspin info | tail -1 >&2; exit 1; }
 ffmpegLibs=()
-for name in libavutil libswscale libavcodec libavformat libavfilter; do
-  lib=$(ldconfig -p | awk -v n="$name" '$1 ~ "^" n "\\.so\\.[0-9]+$" && /x86-64/ {print $NF; exit}')
-  [ -n "$lib" ] || { echo "device_bundle.sh: FFmpeg's $name is not installed here" >&2; exit 1; }
+for soname in $sonames; do
+  lib=$(ldconfig -p | awk -v s="$soname" '$1 == s && /x86-64/ {print $NF; exit}')
+  [ -n "$lib" ] || { echo "device_bundle.sh: $soname, which rollspin loads, is not in ldconfig's cache" >&2; exit 1; }
   ffmpegLibs+=("$lib")
 done
 { ldd "${binaries[@]}" "${ffmpegLibs[@]}" 2>/dev/null | awk '/=> \// {print $3}'; printf '%s\n' "${ffmpegLibs[@]}"; } | sort -u |

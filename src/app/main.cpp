@@ -85,6 +85,8 @@ int main(int argc, char** argv) {
   rollspin::StageLog::instance().setEcho(verbose);
   // Ctrl-C or SIGTERM: remove unfinished outputs, say so, exit 128 + signal.
   rollspin::installInterruptCleanup();
+  // A crash (glibc's heap checks included) says where, with a backtrace.
+  rollspin::installCrashReport();
   try {
     return handler ? handler() : 2;
   } catch (const rollspin::Error& e) {

@@ -1,6 +1,7 @@
 #include "core/temp_files.hpp"
 
 #include <dirent.h>
+#include <execinfo.h>
 #include <fmt/format.h>
 #include <signal.h>
 #include <unistd.h>
@@ -30,7 +31,8 @@ namespace {
 // The PID in ".<name>.<PID>.tmp", or -1 when `entry` is not in that pattern.
 long temporaryOwner(const std::string& entry, const std::string& name) {
   const std::string prefix = "." + name + ".", suffix = ".tmp";
-  if (entry.size() <= prefix.size() + suffix.size() || !entry.starts_with(prefix) || !entry.ends_with(suffix)) return -1;
+  if (entry.size() <= prefix.size() + suffix.size() || !entry.starts_with(prefix) || !entry.ends_with(suffix))
+    return -1;
   const std::string digits = entry.substr(prefix.size(), entry.size() - prefix.size() - suffix.size());
   if (digits.empty() || digits.size() > 9 || digits[0] == '0') return -1;
   long pid = 0;
@@ -57,9 +59,60 @@ void say(const char* text) {
   [[maybe_unused]] const ssize_t ignored = ::write(STDERR_FILENO, text, n);
 }
 
-// A folder is only removed when empty: walking it is not async-signal-safe,
-// and a staging folder with frames in it is removed by the next run instead.
+// Removes every registered temporary and says which, after "rollspin: …"
+// (async-signal-safe). A folder is only removed when empty: walking it is
+// not async-signal-safe, and a staging folder with frames in it is removed by
+// the next run instead. True when there was any.
+bool removeRegisteredTemporaries() {
+  bool any = false;
+  for (Slot& slot : slots) {
+    if (slot.state.load() != 2) continue;
+    const int failed = slot.isFolder ? ::rmdir(slot.temporary.data()) : ::unlink(slot.temporary.data());
+    if (failed != 0 && errno == ENOENT) continue;  // renamed into place a moment ago: complete
+    say(any ? "; " : ": ");
+    say(failed == 0 ? "removed the unfinished " : "could not remove the unfinished ");
+    say(slot.finalPath.data());
+    say(failed == 0 ? " (nothing written at that name)" : " (its temporary is removed by the next run)");
+    any = true;
+  }
+  return any;
+}
+
 extern "C" void onTerminatingSignal(int signal) { interruptCleanupAndExit(signal); }
+
+const char* fatalSignalName(int signal) {
+  switch (signal) {
+    case SIGSEGV:
+      return "SIGSEGV";
+    case SIGBUS:
+      return "SIGBUS";
+    case SIGILL:
+      return "SIGILL";
+    case SIGFPE:
+      return "SIGFPE";
+    default:
+      return "SIGABRT";
+  }
+}
+
+// A crash: say so with a backtrace, remove the temporaries, then die of the
+// same signal (SA_RESETHAND restored the default action: the exit status and
+// a core dump are the signal's). Async-signal-safe but for backtrace(),
+// whose one allocation (loading libgcc_s) happened at install.
+extern "C" void onFatalSignal(int signal) {
+  static std::atomic<bool> reporting{false};
+  if (!reporting.exchange(true)) {
+    say("\nrollspin: fatal signal ");
+    say(fatalSignalName(signal));
+    say(" (a bug in rollspin or in a library it loaded); backtrace, innermost first (`addr2line -Cfpe BINARY "
+        "+OFFSET` names a frame of rollspin's own):\n");
+    std::array<void*, 64> frames{};
+    ::backtrace_symbols_fd(frames.data(), ::backtrace(frames.data(), static_cast<int>(frames.size())), STDERR_FILENO);
+    say("rollspin: crashed");
+    say(removeRegisteredTemporaries() ? "\n" : ": nothing unfinished left\n");
+  }
+  ::raise(signal);  // delivered with the default action once this returns
+}
 
 }  // namespace
 
@@ -140,6 +193,24 @@ void installInterruptCleanup() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
+void installCrashReport() {
+#if !defined(__SANITIZE_ADDRESS__)  // the sanitizers report crashes themselves, better
+  std::array<void*, 1> warmUp{};
+  (void)::backtrace(warmUp.data(), 1);  // loads libgcc_s now, not in the handler
+  // Its own stack, so that a stack overflow can still be reported.
+  static std::array<char, 64 * 1024> alternateStack;
+  stack_t stack{};
+  stack.ss_sp = alternateStack.data();
+  stack.ss_size = alternateStack.size();
+  ::sigaltstack(&stack, nullptr);
+  struct sigaction action {};
+  action.sa_handler = onFatalSignal;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESETHAND | SA_ONSTACK;
+  for (const int signal : {SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT}) sigaction(signal, &action, nullptr);
+#endif
+}
+
 void interruptCleanupAndExit(int signal) {
   // Only async-signal-safe calls from here on: unlink, rmdir, write, _exit.
   static std::atomic<bool> running{false};
@@ -147,18 +218,8 @@ void interruptCleanupAndExit(int signal) {
     for (;;) ::pause();  // another thread is cleaning up and will exit
   }
   say(signal == SIGINT ? "\nrollspin: interrupted (SIGINT)" : "\nrollspin: interrupted (SIGTERM)");
-  bool any = false;
-  for (Slot& slot : slots) {
-    if (slot.state.load() != 2) continue;
-    const int failed = slot.isFolder ? ::rmdir(slot.temporary.data()) : ::unlink(slot.temporary.data());
-    if (failed != 0 && errno == ENOENT) continue;  // renamed into place a moment ago: complete
-    say(any ? "; " : ": ");
-    say(failed == 0 ? "removed the unfinished " : "could not remove the unfinished ");
-    say(slot.finalPath.data());
-    say(failed == 0 ? " (nothing written at that name)" : " (its temporary is removed by the next run)");
-    any = true;
-  }
-  say(any ? "; any output already reported as written is complete\n"
+  say(removeRegisteredTemporaries()
+          ? "; any output already reported as written is complete\n"
           : ": nothing unfinished left; any output already reported as written is complete\n");
   ::_exit(128 + signal);
 }

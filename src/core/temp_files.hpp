@@ -1,6 +1,6 @@
 // Temporary output files: the one naming pattern (".NAME.PID.tmp" beside the
-// final NAME), a registry of the ones this process has open so a SIGINT or
-// SIGTERM can remove them before the process ends, and removal of stale ones
+// final NAME), a registry of the ones this process has open so a SIGINT,
+// SIGTERM or crash can remove them before the process ends, and removal of stale ones
 // left by a process that died hard (kill -9, a second Ctrl-C).
 #pragma once
 
@@ -33,5 +33,13 @@ void unregisterTemporary(const std::filesystem::path& temporary);
 // call interruptCleanupAndExit on a second signal.
 void installInterruptCleanup();
 [[noreturn]] void interruptCleanupAndExit(int signal);
+
+// Installs the handler for crashes (SIGSEGV, SIGBUS, SIGILL, SIGFPE,
+// SIGABRT: glibc's heap checks abort): say on stderr which signal, with a
+// backtrace (library frames named, rollspin's as +OFFSET for addr2line),
+// remove the registered temporaries, then die of the same signal, so the
+// exit status and any core dump are as without it. Not under the
+// sanitizers, which report crashes themselves.
+void installCrashReport();
 
 }  // namespace rollspin

@@ -1,10 +1,11 @@
 // Outputs are whole or absent: every writing command (timeline, report, a
 // still, a video) stopped by SIGINT or SIGTERM exits 128 + signal, says on
-// stderr what it left, and leaves no temporary; a temporary left by a process
+// stderr what it left, and leaves no temporary (a crash removes it too); a temporary left by a process
 // that died hard is removed by the next run to the same name; an output path
 // that cannot work is refused (exit 2) before any work.
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -149,6 +150,43 @@ TEST(SecondSignal, EndsAVideoAtOnceWithoutATemporary) {
   for (const std::string& name : entriesBesideStderr(dir))
     EXPECT_TRUE(name == "clip.partial.mp4") << "left behind: " << name;
 }
+
+// A crash (here a signal sent from outside: the same handler runs) says which
+// signal with a backtrace, removes the unfinished video's temporary, and the
+// process still dies of that signal (exit status and core dump unchanged).
+class Crashed : public ::testing::TestWithParam<int> {};
+
+TEST_P(Crashed, SaysWhereRemovesTheTemporaryAndDiesOfTheSignal) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "under the sanitizers their own crash report runs instead";
+#endif
+  const int signal = GetParam();
+  const std::string name = signal == SIGSEGV ? "SIGSEGV" : "SIGABRT";
+  const fs::path dir = test::freshTempDir("crash_" + name);
+  const rlimit noCore{0, 0};  // inherited by the child: no core file in the build tree
+  ASSERT_EQ(setrlimit(RLIMIT_CORE, &noCore), 0);
+  test::SpawnedRollspin child(
+      {"render", test::shippedScenePath("lollipop"), "--set", "render.width=320", "--set", "render.height=180", "--set",
+       "animation.duration=100", "-o", (dir / "clip.mp4").string()},
+      dir / "stderr");
+  ASSERT_TRUE(child.waitUntil([&] { return anyEntryStartsWith(dir, ".clip.mp4."); })) << test::readFile(dir / "stderr");
+  test::sleepMilliseconds(100);
+  ASSERT_EQ(kill(child.pid(), signal), 0);
+  bool signalled = false;
+  const int code = child.wait(&signalled);
+  const std::string err = test::readFile(dir / "stderr");
+  EXPECT_TRUE(signalled) << err;
+  EXPECT_EQ(code, 128 + signal) << err;
+  EXPECT_NE(err.find("rollspin: fatal signal " + name), std::string::npos) << err;
+  EXPECT_NE(err.find("rollspin(+0x"), std::string::npos) << "no frame of rollspin's own: " << err;
+  EXPECT_NE(err.find("libc.so.6"), std::string::npos) << "no library frame: " << err;
+  EXPECT_NE(err.find("rollspin: crashed: removed the unfinished " + (dir / "clip.mp4").string()), std::string::npos)
+      << err;
+  EXPECT_EQ(entriesBesideStderr(dir), std::vector<std::string>{}) << err;
+}
+
+INSTANTIATE_TEST_SUITE_P(Signals, Crashed, ::testing::Values(SIGSEGV, SIGABRT),
+                         [](const auto& info) { return std::string(info.param == SIGSEGV ? "SIGSEGV" : "SIGABRT"); });
 
 INSTANTIATE_TEST_SUITE_P(Signals, Interrupted, ::testing::Values(SIGINT, SIGTERM),
                          [](const auto& info) { return std::string(signalName(info.param)); });

@@ -80,19 +80,11 @@ bool removeRegisteredTemporaries() {
 
 extern "C" void onTerminatingSignal(int signal) { interruptCleanupAndExit(signal); }
 
-const char* fatalSignalName(int signal) {
-  switch (signal) {
-    case SIGSEGV:
-      return "SIGSEGV";
-    case SIGBUS:
-      return "SIGBUS";
-    case SIGILL:
-      return "SIGILL";
-    case SIGFPE:
-      return "SIGFPE";
-    default:
-      return "SIGABRT";
-  }
+// "SIGSEGV", "SIGINT", …: glibc's own table (async-signal-safe).
+void saySignalName(int signal) {
+  say("SIG");
+  const char* name = ::sigabbrev_np(signal);
+  say(name != nullptr ? name : "?");
 }
 
 // A crash: say so with a backtrace, remove the temporaries, then die of the
@@ -103,7 +95,7 @@ extern "C" void onFatalSignal(int signal) {
   static std::atomic<bool> reporting{false};
   if (!reporting.exchange(true)) {
     say("\nrollspin: fatal signal ");
-    say(fatalSignalName(signal));
+    saySignalName(signal);
     say(" (a bug in rollspin or in a library it loaded); backtrace, innermost first (`addr2line -Cfpe BINARY "
         "+OFFSET` names a frame of rollspin's own):\n");
     std::array<void*, 64> frames{};
@@ -217,7 +209,9 @@ void interruptCleanupAndExit(int signal) {
   if (running.exchange(true)) {
     for (;;) ::pause();  // another thread is cleaning up and will exit
   }
-  say(signal == SIGINT ? "\nrollspin: interrupted (SIGINT)" : "\nrollspin: interrupted (SIGTERM)");
+  say("\nrollspin: interrupted (");
+  saySignalName(signal);
+  say(")");
   say(removeRegisteredTemporaries()
           ? "; any output already reported as written is complete\n"
           : ": nothing unfinished left; any output already reported as written is complete\n");

@@ -5,6 +5,12 @@
 // ends are antialiased like any triangle edge, and a pixel's result depends
 // only on its position: a line drawn under a scissor gives the same bytes as
 // drawn whole. The shader still runs once per pixel (gl_SampleID is not read).
+// COVERAGE 1 (a framebuffer of one sample, where one sample would alias):
+// the pixel's coverage instead, from its centre's distance to the capsule
+// through a one-pixel ramp (a box filter across a straight edge), as alpha.
+#ifndef COVERAGE
+#define COVERAGE 0
+#endif
 uniform vec4 lineColor;  // linear RGB + alpha
 uniform float widthPx;
 uniform int sampleCount;           // of the bound framebuffer: 1 to 16
@@ -31,6 +37,12 @@ float distanceSquared(vec2 p) {
 }
 
 void main() {
+#if COVERAGE
+  float radius = 0.5 * widthPx;
+  float coverage = clamp(radius + 0.5 - sqrt(distanceSquared(gl_FragCoord.xy)), 0.0, min(widthPx, 1.0));
+  if (coverage <= 0.0) discard;
+  fragColor = vec4(encodeSrgb(lineColor.rgb), lineColor.a * coverage);
+#else
   vec2 pixel = floor(gl_FragCoord.xy);
   float radiusSquared = 0.25 * widthPx * widthPx;
   int mask = 0;
@@ -39,4 +51,5 @@ void main() {
   if (mask == 0) discard;
   gl_SampleMask[0] = mask;
   fragColor = vec4(encodeSrgb(lineColor.rgb), lineColor.a);
+#endif
 }

@@ -10,6 +10,9 @@
 //   SHADOWED 1: sample the shadow map
 //   LIT      0: flat colour (no lighting)
 //   SPECULAR 0: no highlight, and lit per vertex (see mesh.vert)
+//   IMPOSTOR 1: a unit sphere ray-cast per pixel (impostor.vert draws its
+//               screen rectangle) with analytic edge coverage as alpha, for
+//               framebuffers of one sample (see castSphere)
 #ifndef PATTERN
 #define PATTERN 0
 #endif
@@ -22,11 +25,28 @@
 #ifndef SPECULAR
 #define SPECULAR 1
 #endif
+#ifndef IMPOSTOR
+#define IMPOSTOR 0
+#endif
 
+#if IMPOSTOR
+// What mesh.vert would interpolate, computed per pixel by castSphere.
+vec3 vWorldPosition;
+vec3 vNormal;
+vec2 vUv;
+vec4 vLightClip;
+float latitudeRadius;  // of the point's direction in the model: distance from its z axis
+uniform mat4 worldFromModel;    // a similarity: rotation, uniform scale, translation
+uniform mat4 worldFromClip;     // inverse(clipFromWorld)
+uniform mat4 clipFromWorld;
+uniform mat4 lightClipFromWorld;
+uniform vec4 viewportRect;      // window pixels: x, y, width, height
+#else
 centroid in vec3 vWorldPosition;
 centroid in vec3 vNormal;
 centroid in vec2 vUv;
 centroid in vec4 vLightClip;
+#endif
 
 uniform vec3 color;
 uniform vec3 color2;
@@ -42,7 +62,7 @@ uniform vec3 lightColor;
 uniform float ambient;
 uniform vec3 cameraPosition;
 uniform bool twoSided;  // light the side that faces the camera
-#if LIT && !SPECULAR
+#if LIT && !SPECULAR && !IMPOSTOR
 centroid in vec3 vAmbient;
 centroid in float vNdl;
 centroid in float vGrazing;
@@ -84,20 +104,77 @@ float shadowFactor(float ndl) {
 }
 #endif
 
+#if IMPOSTOR
+// The pixel centre's ray against the sphere |p − c| = r. The ray's closest
+// approach to the centre, d, is r on the silhouette; its change per pixel
+// (the gradient of d) turns r − d into pixels, so the pixel's coverage is
+// that signed distance through a one-pixel ramp: the exact silhouette,
+// antialiased as a box filter of a straight edge would. Pixels just outside
+// the silhouette are shaded at the nearest point of the sphere. Texture
+// coordinates are the uvSphere's (u = longitude, v = colatitude, of the
+// model-space direction), with their derivatives taken across the seam
+// u = 0 ≡ 1 so the mip level does not jump there. Everything depends on
+// the pixel's position only: a rectangle drawn alone gives the same bytes.
+float castSphere() {
+  vec2 ndc = 2.0 * (gl_FragCoord.xy - viewportRect.xy) / viewportRect.zw - 1.0;
+  vec4 nearPoint = worldFromClip * vec4(ndc, -1.0, 1.0);
+  vec4 farPoint = worldFromClip * vec4(ndc, 1.0, 1.0);
+  vec3 origin = nearPoint.xyz / nearPoint.w;
+  vec3 dir = normalize(farPoint.xyz / farPoint.w - origin);
+  vec3 centre = worldFromModel[3].xyz;
+  float radius = length(worldFromModel[0].xyz);
+  vec3 oc = origin - centre;
+  float along = -dot(oc, dir);  // the closest approach's ray parameter
+  vec3 closest = oc + along * dir;
+  float d = length(closest);
+  float perPixel = max(length(vec2(dFdx(d), dFdy(d))), 1e-9);
+  float coverage = clamp(0.5 + (radius - d) / perPixel, 0.0, 1.0);
+  vec3 fromCentre = d < radius ? oc + (along - sqrt(radius * radius - d * d)) * dir
+                               : closest * (radius / max(d, 1e-30));
+  vec3 world = centre + fromCentre;
+  vWorldPosition = world;
+  vNormal = fromCentre / radius;
+  vLightClip = lightClipFromWorld * vec4(world, 1.0);
+  vec3 model = normalize(transpose(mat3(worldFromModel)) * vNormal);
+  latitudeRadius = length(model.xy);
+  float u = atan(model.y, model.x) / 6.2831853 + 0.5;
+  vUv = vec2(u, acos(clamp(model.z, -1.0, 1.0)) / 3.14159265);
+  vec4 clip = clipFromWorld * vec4(world, 1.0);
+  gl_FragDepth = clamp(0.5 + 0.5 * clip.z / clip.w, 0.0, 1.0);
+  return coverage;
+}
+
+// Texture derivatives that wrap across the seam u = 0 ≡ 1, with u's scaled
+// by the circle of latitude's radius: near a pole a pixel spans much of u
+// but little of the texture's content (the mesh, whose triangles meet at
+// the pole, does not see that span either), and the mip level would jump.
+vec2 seamless(vec2 derivative, float radiusOfLatitude) {
+  derivative.x = (derivative.x - round(derivative.x)) * radiusOfLatitude;
+  return derivative;
+}
+#endif
+
 // Alpha is coverage over the transparent scene (see composite.frag): an
 // opaque material writes 1 even where its texture has alpha, as it is drawn
 // without blending.
 void main() {
+#if IMPOSTOR
+  float coverage = castSphere();
+#endif
   vec3 albedo = color;
   float alpha = opacity;
 #if PATTERN == 1
   albedo = mix(color, color2, checker(vUv * patternScale));
+#elif PATTERN == 2 && IMPOSTOR
+  vec4 t = textureGrad(albedoTexture, vUv, seamless(dFdx(vUv), latitudeRadius), seamless(dFdy(vUv), latitudeRadius));
+  albedo = t.rgb * color;
+  alpha *= t.a;
 #elif PATTERN == 2
   vec4 t = texture(albedoTexture, vUv);
   albedo = t.rgb * color;
   alpha *= t.a;
 #endif
-#if LIT && !SPECULAR
+#if LIT && !SPECULAR && !IMPOSTOR
 #if SHADOWED
   float shadow = shadowFactor(vNdl);
 #else
@@ -109,7 +186,9 @@ void main() {
 #elif LIT
   vec3 v = normalize(cameraPosition - vWorldPosition);
   vec3 n = normalize(vNormal);
+#if !IMPOSTOR  // a ray-cast sphere's normal faces the camera
   n = twoSided ? faceforward(n, -v, n) : (gl_FrontFacing ? n : -n);
+#endif
   vec3 l = towardLight;  // unit (the renderer normalises it)
   float ndl = max(dot(n, l), 0.0);
 #if SHADOWED
@@ -119,7 +198,7 @@ void main() {
 #endif
   // Sky light from +z, warm bounce from below.
   vec3 hemisphere = mix(vec3(0.62, 0.58, 0.55), vec3(1.0, 1.0, 1.02), 0.5 + 0.5 * n.z);
-#if SPECULAR
+#if SPECULAR || IMPOSTOR
   vec3 h = normalize(l + v);
   float spec = ndl > 0.0 ? specular * pow(max(dot(n, h), 0.0), shininess) : 0.0;
 #else
@@ -131,5 +210,11 @@ void main() {
   fragColor = vec4(encodeSrgb(c), opacity < 1.0 ? alpha : 1.0);
 #else
   fragColor = vec4(encodeSrgb(albedo), opacity < 1.0 ? alpha : 1.0);
+#endif
+#if IMPOSTOR
+  // Discarded here, not where it is known, so every pixel of a 2×2 quad has
+  // run the derivatives above.
+  if (coverage <= 0.0) discard;
+  fragColor.a = coverage;  // an opaque sphere: its alpha is its coverage, blended over what is behind
 #endif
 }

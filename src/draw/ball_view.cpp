@@ -269,11 +269,13 @@ void BallView::add(render::DrawList& list, const FrameOrientations& frame, int v
                            glm::translate(glm::mat4(1.0f), toGlm(c)) * worldFromBody * glm::scale(glm::mat4(1.0f), glm::vec3(float(R))),
                            ballMaterial, view});
     list.meshes.back().dynamic = true;
+    list.meshes.back().sphere = true;
     const Vec3 marker = c + 0.97 * R * pose.q.rotate(markerBody_);
     list.meshes.push_back({dotMesh_,
                            glm::translate(glm::mat4(1.0f), toGlm(marker)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.13 * R))),
                            markerMaterial, view});
     list.meshes.back().dynamic = true;
+    list.meshes.back().sphere = true;
   };
   if (frame.strobe.empty()) {
     addBall(frame.current);
@@ -389,12 +391,14 @@ void BallView::addMarks(render::DrawList& list, double s, bool plateShown, int v
                            glm::translate(glm::mat4(1.0f), toGlm(onPath)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.06 * R))),
                            dot, view});
     list.meshes.back().figureDisc = true;  // a vector disc in PDF/SVG figures
+    list.meshes.back().sphere = true;
     if (model_.plate && plateShown && done) {
       const Vec3 onPlate = platePoint(m.s[k], 0.06 * R);
       list.meshes.push_back({dotMesh_,
                              glm::translate(glm::mat4(1.0f), toGlm(onPlate)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.05 * R))),
                              dot, view});
       list.meshes.back().figureDisc = true;
+      list.meshes.back().sphere = true;
     }
     if (!spec_.render.labels || (plateShown && hiddenByBall(onPath))) continue;
     render::LabelItem number;

@@ -63,6 +63,7 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
   render::Material origin;
   origin.color = {0.2f, 0.2f, 0.22f};
   list.meshes.push_back({dotMesh_, glm::scale(glm::mat4(1.0f), glm::vec3(0.035f)), origin, view});
+  list.meshes.back().sphere = true;
 
   // Equator and two meridians, and the axes.
   const glm::vec4 gridColor = opaqueLine({0.30f, 0.36f, 0.45f}, 0.75f);

@@ -71,6 +71,12 @@ struct MeshItem {
   // A small opaque unit sphere (a mark) that a vector figure draws as a flat
   // disc of its projected radius instead of as an image; GL ignores it.
   bool figureDisc = false;
+  // The mesh is a unit sphere about the model origin and worldFromModel a
+  // similarity (rotation, uniform scale, translation): in a framebuffer of
+  // one sample, where no sample finds its edge, the renderer ray-casts it
+  // per pixel with analytic edge coverage instead of drawing its triangles
+  // (shadow maps still take the triangles).
+  bool sphere = false;
   bool dynamic = false;
   bool operator==(const MeshItem&) const = default;
 };

@@ -204,6 +204,7 @@ struct MeshViewUniforms {
   float ambient = 0.35f;
   glm::vec3 cameraPosition{0.0f};
   float shadowFilterRadius = 0.0f;
+  const View* view = nullptr;  // its viewport, for ray-cast spheres
 };
 
 struct Renderer::Impl {
@@ -211,7 +212,7 @@ struct Renderer::Impl {
   bool retainLayers = true;
   std::map<int, Program> meshPrograms;  // by variant: pattern * 8 + shadowed * 4 + lit * 2 + specular
   MeshViewUniforms viewUniforms;
-  Program shadow, line, text;
+  Program shadow, line, lineCoverage, text;
   std::map<int, Program> compositePrograms;  // by sample count
   GLuint emptyVao = 0;
   GLuint streamVao = 0, streamVbo = 0;  // polylines (vec3)
@@ -256,6 +257,7 @@ struct Renderer::Impl {
       : library(lib),
         shadow(lib, "shadow.vert", "shadow.frag"),
         line(lib, "line.vert", "line.frag", "line.geom"),
+        lineCoverage(lib, "line.vert", "line.frag", "line.geom", "#define COVERAGE 1\n"),
         text(lib, "text.vert", "text.frag") {
     glGenVertexArrays(1, &emptyVao);
     glGenVertexArrays(1, &streamVao);
@@ -273,7 +275,6 @@ struct Renderer::Impl {
     glEnableVertexAttribArray(1);
     glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 4 * sizeof(float), reinterpret_cast<void*>(2 * sizeof(float)));
     glBindVertexArray(0);
-
   }
 
   ~Impl() {
@@ -293,7 +294,7 @@ struct Renderer::Impl {
     glDeleteVertexArrays(1, &emptyVao);
     for (auto& [key, p] : meshPrograms) p.release();
     for (auto& [key, p] : compositePrograms) p.release();
-    for (Program* p : {&shadow, &line, &text}) p->release();
+    for (Program* p : {&shadow, &line, &lineCoverage, &text}) p->release();
   }
 
   void releaseFramebuffers() {
@@ -421,12 +422,13 @@ struct Renderer::Impl {
     glm::mat4 worldFromModel;
     const Material* material;
     bool dynamic = false;  // see MeshItem::dynamic
+    bool sphere = false;   // see MeshItem::sphere
   };
 
   std::vector<Drawable> drawablesOf(const DrawList& list, int view, std::vector<Material>& arrowMaterials) {
     std::vector<Drawable> out;
     for (const MeshItem& m : list.meshes)
-      if (m.view == view && m.mesh) out.push_back({m.mesh, m.worldFromModel, &m.material, m.dynamic});
+      if (m.view == view && m.mesh) out.push_back({m.mesh, m.worldFromModel, &m.material, m.dynamic, m.sphere});
     for (const ArrowItem& a : list.arrows) {
       if (a.view != view) continue;
       const float len = glm::length(a.tip - a.origin);
@@ -545,14 +547,16 @@ struct Renderer::Impl {
     return setup;
   }
 
-  Program& meshProgram(int pattern, bool shadowed, bool lit, bool specular) {
-    const int key = pattern * 8 + (shadowed ? 4 : 0) + (lit ? 2 : 0) + (specular ? 1 : 0);
+  Program& meshProgram(int pattern, bool shadowed, bool lit, bool specular, bool impostor = false) {
+    const int key = (impostor ? 32 : 0) + pattern * 8 + (shadowed ? 4 : 0) + (lit ? 2 : 0) + (specular ? 1 : 0);
     auto it = meshPrograms.find(key);
     if (it == meshPrograms.end()) {
-      const std::string defines =
-          fmt::format("#define PATTERN {}\n#define SHADOWED {}\n#define LIT {}\n#define SPECULAR {}\n", pattern,
-                      shadowed ? 1 : 0, lit ? 1 : 0, specular ? 1 : 0);
-      it = meshPrograms.emplace(key, Program(library, "mesh.vert", "mesh.frag", {}, defines)).first;
+      const std::string defines = fmt::format(
+          "#define PATTERN {}\n#define SHADOWED {}\n#define LIT {}\n#define SPECULAR {}\n#define IMPOSTOR {}\n",
+          pattern, shadowed ? 1 : 0, lit ? 1 : 0, specular ? 1 : 0, impostor ? 1 : 0);
+      it = meshPrograms
+               .emplace(key, Program(library, impostor ? "impostor.vert" : "mesh.vert", "mesh.frag", {}, defines))
+               .first;
     }
     return it->second;
   }
@@ -572,6 +576,41 @@ struct Renderer::Impl {
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
 
+  // Whether `d` is drawn as a ray-cast sphere: at one sample (with more, the
+  // samples antialias its triangles' edges), opaque and whole, in a view
+  // whose camera sphereBounds understands.
+  std::optional<PixelRect> impostorRect(const Drawable& d, bool clipToShadowBox) const {
+    const Material& m = *d.material;
+    if (!d.sphere || fbSamples != 1 || clipToShadowBox || m.opacity < 1.0f || viewUniforms.view == nullptr ||
+        m.cutPlane != glm::vec4(0.0f, 0.0f, 0.0f, 1.0f))
+      return std::nullopt;
+    // One pixel of the coverage ramp lies outside the silhouette; one more
+    // for rounding.
+    return sphereBounds(*viewUniforms.view, glm::vec3(d.worldFromModel[3]), glm::length(glm::vec3(d.worldFromModel[0])),
+                        2.0f);
+  }
+
+  // A ray-cast sphere (mesh.frag with IMPOSTOR): one rectangle, its
+  // silhouette's coverage blended over what is behind, depth per pixel.
+  void drawImpostor(Program& mesh, const PixelRect& rect) {
+    const View& v = *viewUniforms.view;
+    if (drawClips != nullptr && !reachesAny(*drawClips, rect)) return;
+    mesh.set("worldFromClip", glm::inverse(viewUniforms.clipFromWorld));
+    const int glY = fbHeight - v.y - v.height;
+    mesh.set("viewportRect", glm::vec4(float(v.x), float(glY), float(v.width), float(v.height)));
+    // Image pixels (top-left origin) to the view's normalized device coordinates.
+    mesh.set("ndcRect", glm::vec4(2.0f * float(rect.x0 - v.x) / float(v.width) - 1.0f,
+                                  1.0f - 2.0f * float(rect.y1 - v.y) / float(v.height),
+                                  2.0f * float(rect.x1 - v.x) / float(v.width) - 1.0f,
+                                  1.0f - 2.0f * float(rect.y0 - v.y) / float(v.height)));
+    // Opaque meshes are drawn without blending (drawOpaque): on for this one.
+    glEnable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glBindVertexArray(emptyVao);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    glDisable(GL_BLEND);
+  }
+
   void drawMesh(const Drawable& d, bool shadowOn, Cull cull, bool clipToShadowBox = false) {
     const Material& m = *d.material;
     int pattern = m.pattern == Pattern::Checker ? 1 : 0;
@@ -580,7 +619,8 @@ struct Renderer::Impl {
       glActiveTexture(GL_TEXTURE0);
       glBindTexture(GL_TEXTURE_2D, gpuTexture(m.texture));
     }
-    Program& mesh = meshProgram(pattern, shadowOn && m.lit, m.lit, m.specular > 0.0f);
+    const std::optional<PixelRect> impostor = impostorRect(d, clipToShadowBox);
+    Program& mesh = meshProgram(pattern, shadowOn && m.lit, m.lit, m.specular > 0.0f, impostor.has_value());
     mesh.use();
     const MeshViewUniforms& u = viewUniforms;
     mesh.set("clipFromWorld", u.clipFromWorld);
@@ -604,6 +644,10 @@ struct Renderer::Impl {
     mesh.set("shininess", m.shininess);
     mesh.set("patternScale", m.patternScale);
     mesh.set("clipToShadowBox", clipToShadowBox ? 1 : 0);
+    if (impostor) {
+      drawImpostor(mesh, *impostor);
+      return;
+    }
     if (cull == Cull::None) {
       glDisable(GL_CULL_FACE);
     } else {
@@ -662,15 +706,17 @@ struct Renderer::Impl {
 
   void drawPolyline(const PolylineItem& p, const glm::mat4& clipFromWorld, const View& v) {
     if (p.points.size() < 2) return;
-    line.use();
-    line.set("clipFromWorld", clipFromWorld);
-    line.set("viewportOrigin", glm::vec2(v.x, fbHeight - v.y - v.height));  // GL counts rows from the bottom
-    line.set("viewportSize", glm::vec2(v.width, v.height));
-    line.set("sampleCount", sceneSampleCount);
-    line.set("samplePositions", sceneSamplePositions.data(), kMaxLineSamples);
-    line.set("widthPx", p.widthPx);
-    line.set("depthBias", p.depthTested ? 0.0008f : 0.0f);
-    line.set("lineColor", p.color);
+    // At one sample no sample finds a line's edge: its coverage is alpha.
+    Program& program = fbSamples == 1 ? lineCoverage : line;
+    program.use();
+    program.set("clipFromWorld", clipFromWorld);
+    program.set("viewportOrigin", glm::vec2(v.x, fbHeight - v.y - v.height));  // GL counts rows from the bottom
+    program.set("viewportSize", glm::vec2(v.width, v.height));
+    program.set("sampleCount", sceneSampleCount);
+    program.set("samplePositions", sceneSamplePositions.data(), kMaxLineSamples);
+    program.set("widthPx", p.widthPx);
+    program.set("depthBias", p.depthTested ? 0.0008f : 0.0f);
+    program.set("lineColor", p.color);
     glBindVertexArray(streamVao);
     glBindBuffer(GL_ARRAY_BUFFER, streamVbo);
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(p.points.size() * sizeof(glm::vec3)), p.points.data(),
@@ -784,6 +830,7 @@ struct Renderer::Impl {
     viewUniforms.ambient = v.light.ambient;
     viewUniforms.cameraPosition = v.camera.position;
     viewUniforms.shadowFilterRadius = viewItems.shadow.filterRadius;
+    viewUniforms.view = &v;
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, viewItems.shadowMap != nullptr ? viewItems.shadowMap->texture : 0);
   }

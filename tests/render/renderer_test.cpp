@@ -110,6 +110,52 @@ TEST_F(RendererTest, SphereIsLitAntialiasedAndCentred) {
     }
 }
 
+// At one sample a sphere marked `sphere` is ray-cast: its silhouette is
+// antialiased by coverage (the mesh drawn at one sample has only 0 and 255),
+// it covers what 4× MSAA of a fine mesh covers, and its shading matches.
+TEST_F(RendererTest, RayCastSphereAtOneSampleMatchesTheMultisampledMesh) {
+  DrawList list;
+  list.width = 96;
+  list.height = 96;
+  list.views = {cameraView(96, 96)};
+  MeshItem ball;
+  ball.mesh = uvSphere(96, 48);
+  ball.worldFromModel = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0.2f, -0.1f, 0.3f)), 0.7f,
+                                    glm::normalize(glm::vec3(1, 2, 0))) *
+                        glm::scale(glm::mat4(1.0f), glm::vec3(1.1f));
+  ball.material.color = {0.8f, 0.3f, 0.1f};
+  ball.material.specular = 0.3f;
+  ball.sphere = true;
+  list.meshes.push_back(ball);
+  const media::Image multisampled = renderer_->render(list);
+  list.msaaSamples = 1;
+  const media::Image rayCast = renderer_->render(list);
+  ASSERT_NE(rayCast.rgba, multisampled.rgba);  // not the mesh's path
+  long long coveredMesh = 0, coveredCast = 0, difference = 0;
+  int partial = 0, worst = 0;
+  for (int y = 0; y < 96; ++y)
+    for (int x = 0; x < 96; ++x) {
+      const int a = multisampled.pixel(x, y)[0], b = rayCast.pixel(x, y)[0];
+      coveredMesh += a;
+      coveredCast += b;
+      difference += std::abs(a - b);
+      worst = std::max(worst, std::abs(a - b));
+      partial += b > 0 && b < 100 ? 1 : 0;  // the lit interior is brighter than 100
+    }
+  EXPECT_GT(partial, 40);  // a ramp along the whole silhouette
+  EXPECT_NEAR(double(coveredCast), double(coveredMesh), 0.01 * double(coveredMesh));
+  EXPECT_LT(double(difference) / (96.0 * 96.0), 1.0);  // mean absolute difference, levels
+  EXPECT_LT(worst, 80);                                // an edge pixel: 4 samples quantize coverage to quarters
+  // Not ray-cast where the samples antialias, or when not marked.
+  list.meshes[0].sphere = false;
+  const media::Image aliased = renderer_->render(list);
+  for (int y = 0; y < 96; ++y)
+    for (int x = 0; x < 96; ++x) {
+      const int r = aliased.pixel(x, y)[0];
+      ASSERT_TRUE(r == 0 || r > 100) << x << "," << y << ": " << r;
+    }
+}
+
 TEST_F(RendererTest, TransparentBackgroundHasZeroAlphaAndOpaqueSubject) {
   DrawList list;
   list.width = 48;
@@ -237,6 +283,36 @@ TEST_F(RendererTest, PolylinesHaveRoundJoinsAndRoundCaps) {
   }
 }
 
+// At one sample a line's coverage is its alpha: a thin diagonal line on
+// black leaves intermediate values along its edges, and carries as much
+// light per column as at 4× MSAA.
+TEST_F(RendererTest, LinesAtOneSampleAreAntialiasedByCoverage) {
+  DrawList list;
+  list.width = 120;
+  list.height = 80;
+  list.views = {screenView(0, 0, 120, 80)};
+  PolylineItem line;
+  line.points = {atViewPixel(list.views[0], 10.0f, 20.0f), atViewPixel(list.views[0], 110.0f, 57.0f)};
+  line.color = {1, 1, 1, 1};
+  line.widthPx = 2.5f;
+  line.depthTested = false;
+  list.polylines.push_back(line);
+  const media::Image multisampled = renderer_->render(list);
+  list.msaaSamples = 1;
+  const media::Image covered = renderer_->render(list);
+  for (int x = 30; x <= 90; x += 10) {
+    long long sumMulti = 0, sumCovered = 0;
+    int partial = 0;
+    for (int y = 0; y < 80; ++y) {
+      sumMulti += multisampled.pixel(x, y)[0];
+      sumCovered += covered.pixel(x, y)[0];
+      partial += covered.pixel(x, y)[0] > 0 && covered.pixel(x, y)[0] < 255 ? 1 : 0;
+    }
+    EXPECT_GE(partial, 2) << "column " << x;
+    EXPECT_NEAR(double(sumCovered), double(sumMulti), 0.15 * double(sumMulti)) << "column " << x;
+  }
+}
+
 // A long straight trail of short segments at 2400 px: every column across
 // it carries the same amount of line (no darker or brighter joints).
 TEST_F(RendererTest, StraightPolylineHasUniformIntensityAt2400Px) {
@@ -300,8 +376,9 @@ TEST_F(RendererTest, PolylineThroughTheNearPlaneDrawsItsVisiblePart) {
 // A two-view frame whose static part (a shadowed checker floor, a glass
 // sphere, lines, labels) stays while a ball, its trail, an arrow and a live
 // label move: frame k of a short clip.
-DrawList clipFrame(int k) {
+DrawList clipFrame(int k, int samples = 4) {
   DrawList list;
+  list.msaaSamples = samples;
   list.width = 160;
   list.height = 72;
   View ballView = cameraView(96, 72);
@@ -342,6 +419,7 @@ DrawList clipFrame(int k) {
                                    glm::vec3(0.4f));
   ball.material.color = {0.8f, 0.7f, 0.1f};
   ball.dynamic = true;
+  ball.sphere = true;  // ray-cast at one sample
   list.meshes.push_back(ball);
   PolylineItem path;
   path.points = {{-2, 0.5f, 0}, {2, 0.5f, 0}};
@@ -425,6 +503,24 @@ TEST_F(RendererTest, RetainedLayerFramesMatchFramesDrawnWholeInAnyOrder) {
   changed = clipFrame(3);
   changed.meshes[0].material.color = {0.2f, 0.5f, 0.3f};
   EXPECT_EQ(shuffled.render(changed).rgba, plain.render(changed).rgba);
+}
+
+// The same at one sample, where the ball is ray-cast and lines take their
+// coverage as alpha: both depend on a pixel's position only.
+TEST_F(RendererTest, RetainedLayerFramesMatchFramesDrawnWholeAtOneSample) {
+  constexpr int kFrames = 6;
+  std::vector<media::Image> whole(kFrames);
+  Renderer plain(*context_, ShaderLibrary{});
+  plain.setRetainLayers(false);
+  for (int k = 0; k < kFrames; ++k) whole[k] = plain.render(clipFrame(k, 1));
+  EXPECT_NE(whole[0].rgba, whole[1].rgba);
+  Renderer inOrder(*context_, ShaderLibrary{});
+  for (int k = 0; k < kFrames; ++k) EXPECT_TRUE(sameBytes(inOrder.render(clipFrame(k, 1)), whole[k])) << "frame " << k;
+  EXPECT_EQ(inOrder.stats().retainedFrames, kFrames - 1);
+  Renderer shuffled(*context_, ShaderLibrary{});
+  for (int k : {4, 1, 5, 0, 3, 2, 4, 4, 1})
+    EXPECT_TRUE(sameBytes(shuffled.render(clipFrame(k, 1)), whole[k])) << "frame " << k;
+  EXPECT_GT(shuffled.stats().retainedFrames, 5);
 }
 
 // Over the layer, a mesh or a line draws only its runs that reach the

@@ -12,7 +12,10 @@
 //   SPECULAR 0: no highlight, and lit per vertex (see mesh.vert)
 //   IMPOSTOR 1: a unit sphere ray-cast per pixel (impostor.vert draws its
 //               screen rectangle) with analytic edge coverage as alpha, for
-//               framebuffers of one sample (see castSphere)
+//               framebuffers of one sample (see castSphere); 2: the same,
+//               premultiplied, without a depth of its own (the renderer's
+//               pass under what a pixel shows: the rectangle lies at the
+//               sphere's far depth, so llvmpipe tests it before shading)
 #ifndef PATTERN
 #define PATTERN 0
 #endif
@@ -139,8 +142,10 @@ float castSphere() {
   latitudeRadius = length(model.xy);
   float u = atan(model.y, model.x) / 6.2831853 + 0.5;
   vUv = vec2(u, acos(clamp(model.z, -1.0, 1.0)) / 3.14159265);
+#if IMPOSTOR == 1
   vec4 clip = clipFromWorld * vec4(world, 1.0);
   gl_FragDepth = clamp(0.5 + 0.5 * clip.z / clip.w, 0.0, 1.0);
+#endif
   return coverage;
 }
 
@@ -215,6 +220,9 @@ void main() {
   // Discarded here, not where it is known, so every pixel of a 2×2 quad has
   // run the derivatives above.
   if (coverage <= 0.0) discard;
-  fragColor.a = coverage;  // an opaque sphere: its alpha is its coverage, blended over what is behind
+  fragColor.a *= coverage;  // blended over what is behind (an opaque sphere's alpha is its coverage)
+#if IMPOSTOR == 2
+  fragColor.rgb *= fragColor.a;  // blended under what is drawn (see the renderer)
+#endif
 #endif
 }

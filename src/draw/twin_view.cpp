@@ -60,6 +60,7 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
 
   const auto& blochSphere = blochSphereMesh_;
   list.meshes.push_back({blochSphere, glm::mat4(1.0f), glassMaterial({0.62f, 0.76f, 0.95f}, 0.16f, 0.5f, 90.0f), view});
+  list.meshes.back().sphere = true;
   render::Material origin;
   origin.color = {0.2f, 0.2f, 0.22f};
   list.meshes.push_back({dotMesh_, glm::scale(glm::mat4(1.0f), glm::vec3(0.035f)), origin, view});

@@ -34,6 +34,7 @@
   X(glCheckFramebufferStatus) \
   X(glClear) \
   X(glClearColor) \
+  X(glColorMask) \
   X(glCompileShader) \
   X(glCreateProgram) \
   X(glCreateShader) \
@@ -63,8 +64,6 @@
   X(glGenVertexArrays) \
   X(glGenerateMipmap) \
   X(glGetError) \
-  X(glGetIntegerv) \
-  X(glGetMultisamplefv) \
   X(glGetProgramInfoLog) \
   X(glGetProgramiv) \
   X(glGetShaderInfoLog) \
@@ -120,6 +119,7 @@ ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DECLARE)
 #define glCheckFramebufferStatus ::rollspin::render::gl_api::glCheckFramebufferStatus
 #define glClear ::rollspin::render::gl_api::glClear
 #define glClearColor ::rollspin::render::gl_api::glClearColor
+#define glColorMask ::rollspin::render::gl_api::glColorMask
 #define glCompileShader ::rollspin::render::gl_api::glCompileShader
 #define glCreateProgram ::rollspin::render::gl_api::glCreateProgram
 #define glCreateShader ::rollspin::render::gl_api::glCreateShader
@@ -149,8 +149,6 @@ ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DECLARE)
 #define glGenVertexArrays ::rollspin::render::gl_api::glGenVertexArrays
 #define glGenerateMipmap ::rollspin::render::gl_api::glGenerateMipmap
 #define glGetError ::rollspin::render::gl_api::glGetError
-#define glGetIntegerv ::rollspin::render::gl_api::glGetIntegerv
-#define glGetMultisamplefv ::rollspin::render::gl_api::glGetMultisamplefv
 #define glGetProgramInfoLog ::rollspin::render::gl_api::glGetProgramInfoLog
 #define glGetProgramiv ::rollspin::render::gl_api::glGetProgramiv
 #define glGetShaderInfoLog ::rollspin::render::gl_api::glGetShaderInfoLog

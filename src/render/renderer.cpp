@@ -212,8 +212,7 @@ struct Renderer::Impl {
   bool retainLayers = true;
   std::map<int, Program> meshPrograms;  // by variant: pattern * 8 + shadowed * 4 + lit * 2 + specular
   MeshViewUniforms viewUniforms;
-  Program shadow, line, lineCoverage, text;
-  std::map<int, Program> compositePrograms;  // by sample count
+  Program shadow, line, text, compositor, depthProgram;
   GLuint emptyVao = 0;
   GLuint streamVao = 0, streamVbo = 0;  // polylines (vec3)
   GLuint textVao = 0, textVbo = 0;      // glyph quads (vec2 pixel, vec2 uv)
@@ -221,19 +220,27 @@ struct Renderer::Impl {
     GLuint fbo = 0, texture = 0;
   };
   std::vector<ShadowMap> shadowMaps;  // one per view that has a shadow (usually one)
-  // The scene is drawn into sceneFbo (a colour texture, multisampled unless
-  // msaa = 1, over transparent black) and composited into outputFbo: samples
-  // averaged, the backdrop put behind, rows flipped to top-down (see composite).
+  // The static opaque meshes are drawn into opaqueFbo (multisampled; none
+  // at msaa = 1) and resolved into sceneFbo (a colour texture of one sample,
+  // over transparent black), where every later step draws with analytic
+  // coverage; then composited into outputFbo: the backdrop put behind, rows
+  // flipped to top-down (see composite).
+  GLuint opaqueFbo = 0, opaqueColor = 0, opaquePacked = 0, opaqueDepth = 0;
+  GLuint resolveFbo = 0;            // the scene's colour as packed words (see resolveOpaque)
+  std::optional<Program> resolver;  // for the sample count of opaqueFbo
+  int targetSamples = 1;            // of the framebuffer beginView bound
+  bool depthOnly = false;           // colour writes are off (see depthAtCentres)
+  // Where a ray-cast sphere's under pass (drawImpostor) can change a pixel:
+  // anywhere in a frame drawn whole; over a retained layer, the layer's
+  // edge tiles, the tiles of moving meshes drawn in samples, and the
+  // rectangles of the spheres drawn before it in the frame.
+  bool underEverywhere = true;
+  std::vector<PixelRect> underRects;
+  std::vector<PixelRect> layerEdgeRects;  // tiles where the layer's opaque meshes cover pixels in part
   GLuint sceneFbo = 0, sceneColor = 0, sceneDepth = 0;
-  GLuint scenePacked = 0;  // sceneColor viewed as R32UI: one packed RGBA8 word per sample
+  GLuint scenePacked = 0;  // sceneColor viewed as R32UI: one packed RGBA8 word per pixel
   GLuint outputFbo = 0, outputColor = 0;
   int fbWidth = 0, fbHeight = 0, fbSamples = 0;
-  // Where sceneFbo's samples lie in a pixel (from its lower-left corner), as
-  // the implementation reports them: line.frag tests each against a line's
-  // capsule. llvmpipe, for one, runs 2 samples as 4.
-  static constexpr int kMaxLineSamples = 16;
-  int sceneSampleCount = 1;
-  std::array<glm::vec2, kMaxLineSamples> sceneSamplePositions{};
 
   struct CachedMesh {
     std::shared_ptr<const MeshData> keepAlive;
@@ -257,8 +264,9 @@ struct Renderer::Impl {
       : library(lib),
         shadow(lib, "shadow.vert", "shadow.frag"),
         line(lib, "line.vert", "line.frag", "line.geom"),
-        lineCoverage(lib, "line.vert", "line.frag", "line.geom", "#define COVERAGE 1\n"),
-        text(lib, "text.vert", "text.frag") {
+        text(lib, "text.vert", "text.frag"),
+        compositor(lib, "composite.vert", "composite.frag"),
+        depthProgram(lib, "mesh.vert", "depth.frag", {}, "#define LIT 0\n") {
     glGenVertexArrays(1, &emptyVao);
     glGenVertexArrays(1, &streamVao);
     glGenBuffers(1, &streamVbo);
@@ -293,18 +301,19 @@ struct Renderer::Impl {
     glDeleteVertexArrays(1, &textVao);
     glDeleteVertexArrays(1, &emptyVao);
     for (auto& [key, p] : meshPrograms) p.release();
-    for (auto& [key, p] : compositePrograms) p.release();
-    for (Program* p : {&shadow, &line, &lineCoverage, &text}) p->release();
+    for (Program* p : {&shadow, &line, &text, &compositor, &depthProgram}) p->release();
+    if (resolver) resolver->release();
   }
 
   void releaseFramebuffers() {
-    GLuint fbos[] = {sceneFbo, outputFbo};
-    GLuint rbs[] = {sceneDepth, outputColor};
-    glDeleteFramebuffers(2, fbos);
-    glDeleteRenderbuffers(2, rbs);
-    GLuint textures[] = {scenePacked, sceneColor};
-    glDeleteTextures(2, textures);
+    GLuint fbos[] = {sceneFbo, outputFbo, opaqueFbo, resolveFbo};
+    GLuint rbs[] = {sceneDepth, outputColor, opaqueDepth};
+    glDeleteFramebuffers(4, fbos);
+    glDeleteRenderbuffers(3, rbs);
+    GLuint textures[] = {scenePacked, sceneColor, opaquePacked, opaqueColor};
+    glDeleteTextures(4, textures);
     sceneFbo = outputFbo = sceneDepth = outputColor = sceneColor = scenePacked = 0;
+    opaqueFbo = opaqueColor = opaquePacked = opaqueDepth = resolveFbo = 0;
   }
 
   void ensureFramebuffers(int w, int h, int samples) {
@@ -315,35 +324,49 @@ struct Renderer::Impl {
         throw runtimeError({}, "OpenGL could not create a {}x{} framebuffer with {} samples (out of memory?)", w, h,
                            samples);
     };
-    // The colour is a texture so that the composite pass can read its samples.
-    const GLenum colorTarget = samples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
+    // The scene has one sample; its colour is a texture so that the
+    // composite pass can read it.
     glGenTextures(1, &sceneColor);
-    glBindTexture(colorTarget, sceneColor);
-    if (samples > 1) {
-      glTexStorage2DMultisample(colorTarget, samples, GL_RGBA8, w, h, GL_TRUE);
-    } else {
-      glTexStorage2D(colorTarget, 1, GL_RGBA8, w, h);
-      glTexParameteri(colorTarget, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTexParameteri(colorTarget, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    }
+    glBindTexture(GL_TEXTURE_2D, sceneColor);
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, w, h);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glGenTextures(1, &scenePacked);
-    glTextureView(scenePacked, colorTarget, sceneColor, GL_R32UI, 0, 1, 0, 1);
-    if (samples == 1) {
-      // An integer texture with the default LINEAR filter is incomplete and
-      // texelFetch returns 0 (multisample textures have no filter state).
-      glBindTexture(GL_TEXTURE_2D, scenePacked);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    }
+    glTextureView(scenePacked, GL_TEXTURE_2D, sceneColor, GL_R32UI, 0, 1, 0, 1);
+    // An integer texture with the default LINEAR filter is incomplete and
+    // texelFetch returns 0.
+    glBindTexture(GL_TEXTURE_2D, scenePacked);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glGenRenderbuffers(1, &sceneDepth);
     glBindRenderbuffer(GL_RENDERBUFFER, sceneDepth);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? samples : 0, GL_DEPTH_COMPONENT24, w, h);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, w, h);
     glGenFramebuffers(1, &sceneFbo);
     glBindFramebuffer(GL_FRAMEBUFFER, sceneFbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, colorTarget, sceneColor, 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, sceneColor, 0);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, sceneDepth);
     checkComplete();
-    querySamplePositions();
+    if (samples > 1) {
+      // A texture, viewed as packed words by the resolve pass.
+      glGenTextures(1, &opaqueColor);
+      glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, opaqueColor);
+      glTexStorage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, GL_RGBA8, w, h, GL_TRUE);
+      glGenTextures(1, &opaquePacked);
+      glTextureView(opaquePacked, GL_TEXTURE_2D_MULTISAMPLE, opaqueColor, GL_R32UI, 0, 1, 0, 1);
+      glGenRenderbuffers(1, &opaqueDepth);
+      glBindRenderbuffer(GL_RENDERBUFFER, opaqueDepth);
+      glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, w, h);
+      glGenFramebuffers(1, &opaqueFbo);
+      glBindFramebuffer(GL_FRAMEBUFFER, opaqueFbo);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D_MULTISAMPLE, opaqueColor, 0);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, opaqueDepth);
+      checkComplete();
+      // The scene's colour as packed words, written by the resolve pass.
+      glGenFramebuffers(1, &resolveFbo);
+      glBindFramebuffer(GL_FRAMEBUFFER, resolveFbo);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, scenePacked, 0);
+      checkComplete();
+    }
     glGenRenderbuffers(1, &outputColor);
     glBindRenderbuffer(GL_RENDERBUFFER, outputColor);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_R32UI, w, h);  // packed RGBA8, as the composite writes it
@@ -353,21 +376,40 @@ struct Renderer::Impl {
     checkComplete();
     fbWidth = w;
     fbHeight = h;
+    if (samples != fbSamples && resolver) {
+      resolver->release();
+      resolver.reset();
+    }
     fbSamples = samples;
   }
 
-  // Reads the bound scene framebuffer's sample count and positions; a
-  // single-sampled one has GL_SAMPLES = 0 and samples at the pixel centre.
-  void querySamplePositions() {
-    GLint count = 0;
-    glGetIntegerv(GL_SAMPLES, &count);
-    if (count > kMaxLineSamples)
-      throw runtimeError({}, "OpenGL made a framebuffer with {} samples; lines handle at most {}", count,
-                         kMaxLineSamples);
-    sceneSampleCount = std::max(1, static_cast<int>(count));
-    sceneSamplePositions.fill(glm::vec2(0.5f));
-    for (int i = 0; i < count; ++i)
-      glGetMultisamplefv(GL_SAMPLE_POSITION, static_cast<GLuint>(i), glm::value_ptr(sceneSamplePositions[i]));
+  // Where the static opaque meshes are drawn: their own multisampled
+  // framebuffer, or the scene itself at one sample.
+  GLuint staticTarget() const { return opaqueFbo != 0 ? opaqueFbo : sceneFbo; }
+
+  // The opaque meshes' samples of `r` (image pixels) averaged into the
+  // scene's colour: what every later step draws over at one sample. Not
+  // their depth: a resolve keeps one sample's, off the pixel centre, where
+  // a step at one sample tests its own depth (a small ball would sink into
+  // the surface it touches); depthAtCentres draws it instead.
+  void resolveOpaque(const DrawList& list, const PixelRect& r) {
+    if (opaqueFbo == 0) return;
+    glBindFramebuffer(GL_FRAMEBUFFER, resolveFbo);
+    glViewport(0, 0, list.width, list.height);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(r.x0, list.height - r.y1, r.x1 - r.x0, r.y1 - r.y0);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, opaquePacked);
+    if (!resolver)
+      resolver.emplace(library, "composite.vert", "resolve.frag", "", fmt::format("#define SAMPLES {}\n", fbSamples));
+    resolver->use();
+    resolver->set("samples", 0);
+    glBindVertexArray(emptyVao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glEnable(GL_DEPTH_TEST);
   }
 
   const GpuMesh& gpuMesh(const std::shared_ptr<const MeshData>& m) {
@@ -547,15 +589,17 @@ struct Renderer::Impl {
     return setup;
   }
 
-  Program& meshProgram(int pattern, bool shadowed, bool lit, bool specular, bool impostor = false) {
-    const int key = (impostor ? 32 : 0) + pattern * 8 + (shadowed ? 4 : 0) + (lit ? 2 : 0) + (specular ? 1 : 0);
+  // `impostor`: 0 the mesh's triangles, 1 a ray-cast sphere, 2 the same
+  // under what is drawn (see drawImpostor); see mesh.frag.
+  Program& meshProgram(int pattern, bool shadowed, bool lit, bool specular, int impostor = 0) {
+    const int key = impostor * 32 + pattern * 8 + (shadowed ? 4 : 0) + (lit ? 2 : 0) + (specular ? 1 : 0);
     auto it = meshPrograms.find(key);
     if (it == meshPrograms.end()) {
       const std::string defines = fmt::format(
           "#define PATTERN {}\n#define SHADOWED {}\n#define LIT {}\n#define SPECULAR {}\n#define IMPOSTOR {}\n",
-          pattern, shadowed ? 1 : 0, lit ? 1 : 0, specular ? 1 : 0, impostor ? 1 : 0);
+          pattern, shadowed ? 1 : 0, lit ? 1 : 0, specular ? 1 : 0, impostor);
       it = meshPrograms
-               .emplace(key, Program(library, impostor ? "impostor.vert" : "mesh.vert", "mesh.frag", {}, defines))
+               .emplace(key, Program(library, impostor != 0 ? "impostor.vert" : "mesh.vert", "mesh.frag", {}, defines))
                .first;
     }
     return it->second;
@@ -569,10 +613,18 @@ struct Renderer::Impl {
   // box, with the filter, pulled forward by a polygon offset so that it
   // passes the depth test over its own unfiltered pixels. A retained layer
   // holds the unfiltered surface, and a frame re-shades only the box.
+  //
+  // The scene holds the surface resolved from its samples: at its edges,
+  // premultiplied by its coverage (alpha). The re-shade keeps that
+  // coverage: its colour is weighted by the pixel's alpha, which stays.
   void drawReshade(const Drawable& d) {
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(-1.0f, -4.0f);
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_DST_ALPHA, GL_ZERO, GL_ZERO, GL_ONE);
     drawMesh(d, true, d.material->cull, true);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glDisable(GL_BLEND);
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
 
@@ -581,7 +633,7 @@ struct Renderer::Impl {
   // whose camera sphereBounds understands.
   std::optional<PixelRect> impostorRect(const Drawable& d, bool clipToShadowBox) const {
     const Material& m = *d.material;
-    if (!d.sphere || fbSamples != 1 || clipToShadowBox || m.opacity < 1.0f || viewUniforms.view == nullptr ||
+    if (!d.sphere || targetSamples != 1 || clipToShadowBox || viewUniforms.view == nullptr ||
         m.cutPlane != glm::vec4(0.0f, 0.0f, 0.0f, 1.0f))
       return std::nullopt;
     // One pixel of the coverage ramp lies outside the silhouette; one more
@@ -590,38 +642,9 @@ struct Renderer::Impl {
                         2.0f);
   }
 
-  // A ray-cast sphere (mesh.frag with IMPOSTOR): one rectangle, its
-  // silhouette's coverage blended over what is behind, depth per pixel.
-  void drawImpostor(Program& mesh, const PixelRect& rect) {
-    const View& v = *viewUniforms.view;
-    if (drawClips != nullptr && !reachesAny(*drawClips, rect)) return;
-    mesh.set("worldFromClip", glm::inverse(viewUniforms.clipFromWorld));
-    const int glY = fbHeight - v.y - v.height;
-    mesh.set("viewportRect", glm::vec4(float(v.x), float(glY), float(v.width), float(v.height)));
-    // Image pixels (top-left origin) to the view's normalized device coordinates.
-    mesh.set("ndcRect", glm::vec4(2.0f * float(rect.x0 - v.x) / float(v.width) - 1.0f,
-                                  1.0f - 2.0f * float(rect.y1 - v.y) / float(v.height),
-                                  2.0f * float(rect.x1 - v.x) / float(v.width) - 1.0f,
-                                  1.0f - 2.0f * float(rect.y0 - v.y) / float(v.height)));
-    // Opaque meshes are drawn without blending (drawOpaque): on for this one.
-    glEnable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
-    glBindVertexArray(emptyVao);
-    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-    glDisable(GL_BLEND);
-  }
-
-  void drawMesh(const Drawable& d, bool shadowOn, Cull cull, bool clipToShadowBox = false) {
+  // The uniforms of a mesh program (each program ignores those it lacks).
+  void setMeshUniforms(Program& mesh, const Drawable& d, bool clipToShadowBox) {
     const Material& m = *d.material;
-    int pattern = m.pattern == Pattern::Checker ? 1 : 0;
-    if (m.pattern == Pattern::Texture && m.texture) {
-      pattern = 2;
-      glActiveTexture(GL_TEXTURE0);
-      glBindTexture(GL_TEXTURE_2D, gpuTexture(m.texture));
-    }
-    const std::optional<PixelRect> impostor = impostorRect(d, clipToShadowBox);
-    Program& mesh = meshProgram(pattern, shadowOn && m.lit, m.lit, m.specular > 0.0f, impostor.has_value());
-    mesh.use();
     const MeshViewUniforms& u = viewUniforms;
     mesh.set("clipFromWorld", u.clipFromWorld);
     mesh.set("lightClipFromWorld", u.lightClipFromWorld);
@@ -644,8 +667,99 @@ struct Renderer::Impl {
     mesh.set("shininess", m.shininess);
     mesh.set("patternScale", m.patternScale);
     mesh.set("clipToShadowBox", clipToShadowBox ? 1 : 0);
+  }
+
+  // A ray-cast sphere (mesh.frag with IMPOSTOR): one rectangle, its
+  // silhouette's coverage blended over what is behind, depth per pixel.
+  void drawImpostor(const Drawable& d, Program& mesh, const PixelRect& rect, int pattern) {
+    const View& v = *viewUniforms.view;
+    const Material& m = *d.material;
+    const bool opaque = m.opacity >= 1.0f;
+    if (drawClips != nullptr && !reachesAny(*drawClips, rect)) return;
+    const glm::mat4 worldFromClip = glm::inverse(viewUniforms.clipFromWorld);
+    const glm::vec4 viewport(float(v.x), float(fbHeight - v.y - v.height), float(v.width), float(v.height));
+    // Opaque meshes are drawn without blending (drawOpaque): on for this one.
+    glEnable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glBindVertexArray(emptyVao);
+    const bool behindEdges = opaque && !depthOnly;
+    if (behindEdges) {
+      // Behind what a pixel's centre shows, where that covers the pixel only
+      // in part (an edge of a surface, resolved from its samples over
+      // transparent black: alpha < 1), the sphere shows through the rest:
+      // added under it (premultiplied, weighted by 1 − alpha), as the
+      // samples of a whole multisampled frame would have shown it. Drawn
+      // first, before the sphere's own edges are there to be drawn under.
+      // Its rectangle lies at the sphere's far depth (IMPOSTOR 2 gives no
+      // depth of its own): llvmpipe rejects the pixels where the scene is
+      // behind the whole sphere before it shades them. Where the scene lies
+      // within the sphere's depth, the pass adds it under what is there
+      // (alpha 1 away from edges: nothing changes), and the sphere, in
+      // front there, is drawn over it next. Over a retained layer only
+      // where such pixels can be (see underRects): elsewhere alpha is 1 or
+      // the depth is the clear value, and the pass would change nothing.
+      Program& under = meshProgram(pattern, false, m.lit, m.specular > 0.0f, 2);
+      under.use();
+      setMeshUniforms(under, d, false);
+      under.set("worldFromClip", worldFromClip);
+      under.set("viewportRect", viewport);
+      const glm::vec4 centre = v.camera.viewFromWorld * d.worldFromModel[3];
+      const float radius = glm::length(glm::vec3(d.worldFromModel[0]));
+      const glm::vec4 far = v.camera.clipFromView * (centre - glm::vec4(0.0f, 0.0f, radius, 0.0f));
+      under.set("ndcDepth", std::clamp(far.z / far.w, -1.0f, 1.0f));
+      glDepthFunc(GL_GREATER);
+      glDepthMask(GL_FALSE);
+      glBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+      if (underEverywhere) {
+        under.set("ndcRect", ndcRectOf(v, rect));
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+      } else {
+        for (const PixelRect& part : underRects) {
+          const PixelRect r = intersect(part, rect);
+          if (r.empty()) continue;
+          under.set("ndcRect", ndcRectOf(v, r));
+          glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        }
+      }
+      glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+      glDepthMask(GL_TRUE);
+      glDepthFunc(GL_LEQUAL);
+      mesh.use();
+    }
+    mesh.set("worldFromClip", worldFromClip);
+    mesh.set("viewportRect", viewport);
+    mesh.set("ndcRect", ndcRectOf(v, rect));
+    mesh.set("ndcDepth", 0.0f);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    if (behindEdges && !underEverywhere) underRects.push_back(rect);  // its edges, for a sphere drawn after it
+    if (opaque) glDisable(GL_BLEND);
+  }
+
+  // Image pixels (top-left origin) to the view's normalized device coordinates.
+  static glm::vec4 ndcRectOf(const View& v, const PixelRect& rect) {
+    return glm::vec4(
+        2.0f * float(rect.x0 - v.x) / float(v.width) - 1.0f, 1.0f - 2.0f * float(rect.y1 - v.y) / float(v.height),
+        2.0f * float(rect.x1 - v.x) / float(v.width) - 1.0f, 1.0f - 2.0f * float(rect.y0 - v.y) / float(v.height));
+  }
+
+  void drawMesh(const Drawable& d, bool shadowOn, Cull cull, bool clipToShadowBox = false) {
+    const Material& m = *d.material;
+    int pattern = m.pattern == Pattern::Checker ? 1 : 0;
+    if (m.pattern == Pattern::Texture && m.texture) {
+      pattern = 2;
+      glActiveTexture(GL_TEXTURE0);
+      glBindTexture(GL_TEXTURE_2D, gpuTexture(m.texture));
+    }
+    const std::optional<PixelRect> impostor = impostorRect(d, clipToShadowBox);
+    // Depth alone (depthAtCentres) needs no shading; a ray-cast sphere's
+    // depth comes from its fragment stage.
+    Program& mesh = depthOnly && !impostor
+                        ? depthProgram
+                        : meshProgram(pattern, shadowOn && m.lit, m.lit, m.specular > 0.0f, impostor ? 1 : 0);
+    mesh.use();
+    setMeshUniforms(mesh, d, clipToShadowBox);
     if (impostor) {
-      drawImpostor(mesh, *impostor);
+      drawImpostor(d, mesh, *impostor, pattern);
       return;
     }
     if (cull == Cull::None) {
@@ -703,26 +817,30 @@ struct Renderer::Impl {
   const std::vector<PixelRect>* drawClips = nullptr;
   const View* clipView = nullptr;
   static constexpr std::size_t kLineRun = 32;
+  std::vector<glm::vec3> paddedPoints;  // a polyline's points with its ends repeated
 
   void drawPolyline(const PolylineItem& p, const glm::mat4& clipFromWorld, const View& v) {
     if (p.points.size() < 2) return;
-    // At one sample no sample finds a line's edge: its coverage is alpha.
-    Program& program = fbSamples == 1 ? lineCoverage : line;
-    program.use();
-    program.set("clipFromWorld", clipFromWorld);
-    program.set("viewportOrigin", glm::vec2(v.x, fbHeight - v.y - v.height));  // GL counts rows from the bottom
-    program.set("viewportSize", glm::vec2(v.width, v.height));
-    program.set("sampleCount", sceneSampleCount);
-    program.set("samplePositions", sceneSamplePositions.data(), kMaxLineSamples);
-    program.set("widthPx", p.widthPx);
-    program.set("depthBias", p.depthTested ? 0.0008f : 0.0f);
-    program.set("lineColor", p.color);
+    line.use();
+    line.set("clipFromWorld", clipFromWorld);
+    line.set("viewportOrigin", glm::vec2(v.x, fbHeight - v.y - v.height));  // GL counts rows from the bottom
+    line.set("viewportSize", glm::vec2(v.width, v.height));
+    line.set("widthPx", p.widthPx);
+    line.set("depthBias", p.depthTested ? 0.0008f : 0.0f);
+    line.set("lineColor", p.color);
+    // Drawn with adjacency (each segment sees its neighbours, see line.frag):
+    // the ends repeated, so point k is vertex k + 1 and the segments from
+    // point a to point b are the strip's vertices a to b + 2.
+    paddedPoints.clear();
+    paddedPoints.push_back(p.points.front());
+    paddedPoints.insert(paddedPoints.end(), p.points.begin(), p.points.end());
+    paddedPoints.push_back(p.points.back());
     glBindVertexArray(streamVao);
     glBindBuffer(GL_ARRAY_BUFFER, streamVbo);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(p.points.size() * sizeof(glm::vec3)), p.points.data(),
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(paddedPoints.size() * sizeof(glm::vec3)), paddedPoints.data(),
                  GL_STREAM_DRAW);
     if (drawClips == nullptr) {
-      glDrawArrays(GL_LINE_STRIP, 0, static_cast<GLsizei>(p.points.size()));
+      glDrawArrays(GL_LINE_STRIP_ADJACENCY, 0, static_cast<GLsizei>(paddedPoints.size()));
       return;
     }
     // A segment draws only within half a width of its ends' span (a capsule).
@@ -736,7 +854,7 @@ struct Renderer::Impl {
         keptParts.add(first, last);
     }
     for (const RunsOfParts::Run& r : keptParts.runs()) {
-      glDrawArrays(GL_LINE_STRIP, static_cast<GLint>(r.begin), static_cast<GLsizei>(r.end - r.begin + 1));
+      glDrawArrays(GL_LINE_STRIP_ADJACENCY, static_cast<GLint>(r.begin), static_cast<GLsizei>(r.end - r.begin + 3));
       stats.lineSegmentsDrawn += static_cast<long long>(r.end - r.begin);
     }
     stats.lineSegmentsInRects += static_cast<long long>(p.points.size() - 1);
@@ -812,8 +930,10 @@ struct Renderer::Impl {
 
   // Binds the scene, the view's viewport and uniforms, scissored to `clip`
   // (image pixels, top-left origin; the view's own rectangle if null).
-  void beginView(const DrawList& list, const View& v, const ViewItems& viewItems, const PixelRect* clip) {
-    glBindFramebuffer(GL_FRAMEBUFFER, sceneFbo);
+  void beginView(const DrawList& list, const View& v, const ViewItems& viewItems, const PixelRect* clip,
+                 GLuint fbo = 0) {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo != 0 ? fbo : sceneFbo);
+    targetSamples = fbo != 0 && fbo == opaqueFbo ? fbSamples : 1;
     const int glY = list.height - v.y - v.height;  // GL counts rows from the bottom
     glViewport(v.x, glY, v.width, v.height);
     glEnable(GL_SCISSOR_TEST);
@@ -847,18 +967,59 @@ struct Renderer::Impl {
   }
 
   // The opaque meshes; receivers without the shadow filter (see drawReshade).
-  void drawOpaque(const ViewItems& viewItems, Items which) {
+  // Where an opaque mesh is drawn: with the static ones, in their samples
+  // (Pass::Samples: every static mesh, and a moving one that is not a
+  // sphere, an arrow say, whose triangle edges the samples antialias), or
+  // after the resolve at one sample (Pass::Coverage: a moving sphere,
+  // ray-cast with its coverage; every moving mesh at msaa = 1).
+  enum class Pass { Samples, Coverage };
+  bool inSamplesPass(const Drawable& d) const { return !d.dynamic || (opaqueFbo != 0 && !d.sphere); }
+
+  void drawOpaque(const ViewItems& viewItems, Items which, Pass pass) {
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     for (GLenum plane = 0; plane < 5; ++plane) glEnable(GL_CLIP_DISTANCE0 + plane);
     for (const Drawable& d : viewItems.items)
-      if (d.material->opacity >= 1.0f && takes(which, d.dynamic)) drawMesh(d, false, d.material->cull);
+      if (d.material->opacity >= 1.0f && takes(which, d.dynamic) && inSamplesPass(d) == (pass == Pass::Samples))
+        drawMesh(d, false, d.material->cull);
     for (GLenum plane = 0; plane < 5; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);
     glDisable(GL_CULL_FACE);
   }
 
-  // Everything after the opaque meshes: the receivers' re-shade (not in a
-  // static layer: the shadow moves with the ball), depth-tested lines,
+  // The depth of the meshes drawn in samples (`which` of them), at the
+  // pixel centres, into the scene bound by beginView (colour untouched).
+  void depthAtCentres(const ViewItems& viewItems, Items which) {
+    if (opaqueFbo == 0) return;  // drawn into the scene itself, depth and all
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    depthOnly = true;
+    drawOpaque(viewItems, which, Pass::Samples);
+    depthOnly = false;
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  }
+
+  // The receivers' re-shade (not in a static layer: the shadow moves with
+  // the ball), right after the resolve: before the ray-cast spheres, whose
+  // edges blend over the shadowed surface (drawn after them, a re-shade
+  // would miss the pixels that a sphere's edge covers in part, and leave
+  // them lit).
+  void drawReshades(const ViewItems& viewItems) {
+    if (viewItems.shadowMap == nullptr) return;
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+    for (GLenum plane = 0; plane < 5; ++plane) glEnable(GL_CLIP_DISTANCE0 + plane);
+    for (const Drawable& d : viewItems.items)
+      if (d.material->opacity >= 1.0f && d.material->receivesShadow) drawReshade(d);
+    for (GLenum plane = 0; plane < 5; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);
+    glDisable(GL_CULL_FACE);
+  }
+
+  // What a frame draws at one sample after the resolve, before drawRest.
+  void drawAfterResolve(const ViewItems& viewItems) {
+    drawReshades(viewItems);
+    drawOpaque(viewItems, Items::DynamicOnly, Pass::Coverage);
+  }
+
+  // Everything after the opaque meshes and the re-shade: depth-tested lines,
   // translucent meshes far to near, then lines over everything, labels and
   // the inset frame.
   void drawRest(const DrawList& list, int index, const ViewItems& viewItems, Items which) {
@@ -867,15 +1028,6 @@ struct Renderer::Impl {
     // A line's quad faces either way: no culling, whatever ran before (the
     // shadow pass culls, and a layer's update draws no opaque mesh first).
     glDisable(GL_CULL_FACE);
-    if (viewItems.shadowMap != nullptr && which != Items::StaticOnly) {
-      glDisable(GL_BLEND);
-      glDepthMask(GL_TRUE);
-      for (GLenum plane = 0; plane < 5; ++plane) glEnable(GL_CLIP_DISTANCE0 + plane);
-      for (const Drawable& d : viewItems.items)
-        if (d.material->opacity >= 1.0f && d.material->receivesShadow) drawReshade(d);
-      for (GLenum plane = 0; plane < 5; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);
-      glDisable(GL_CULL_FACE);
-    }
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     for (const PolylineItem& p : list.polylines)
@@ -946,16 +1098,6 @@ struct Renderer::Impl {
     return true;
   }
 
-  Program& compositeProgram(int samples) {
-    auto it = compositePrograms.find(samples);
-    if (it == compositePrograms.end())
-      it = compositePrograms
-               .emplace(samples, Program(library, "composite.vert", "composite.frag", {},
-                                         fmt::format("#define SAMPLES {}\n", samples)))
-               .first;
-    return it->second;
-  }
-
   // sRGB encoding of a backdrop colour (the composite pass works on encoded
   // values, as the scene's blending does).
   static glm::vec3 encodeSrgb(const glm::vec3& linear) {
@@ -981,8 +1123,8 @@ struct Renderer::Impl {
     glDisable(GL_CULL_FACE);
     glEnable(GL_SCISSOR_TEST);
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(fbSamples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, scenePacked);
-    Program& p = compositeProgram(fbSamples);
+    glBindTexture(GL_TEXTURE_2D, scenePacked);
+    Program& p = compositor;
     p.use();
     p.set("scene", 0);
     p.set("sourceTopRow", list.height - 1);
@@ -1010,25 +1152,32 @@ struct Renderer::Impl {
 
   // ---- Retained layers ----------------------------------------------------
   //
-  // A frame is drawn in this order, view by view: the static opaque meshes;
-  // the dynamic opaque meshes; the receivers' re-shade inside the shadow
-  // box; depth-tested lines; translucent meshes; overlays (see drawRest).
+  // A frame is drawn in this order, view by view. In samples (opaqueFbo,
+  // msaa of them): the static opaque meshes, then the moving opaque meshes
+  // that are not spheres (arrows). Resolved into the scene (one sample):
+  // their colour averaged, their depth drawn again at the pixel centres.
+  // Then at one sample, each step antialiased by its own coverage: the
+  // receivers' re-shade inside the shadow box; the moving spheres, ray-cast;
+  // depth-tested lines; translucent meshes; overlays (see drawRest). So
+  // llvmpipe pays for the samples only where a layer keeps them, and per
+  // frame only over the arrows.
   // When the static items and the views are the same as in the frame
-  // before, the renderer keeps (a) the scene's samples after the static
-  // opaque meshes (colour and depth, multisampled) and (b) the finished
-  // image of the static items alone. A frame then starts from (b) and
-  // redraws only the rectangles that its dynamic items (and the shadow box)
-  // can touch: (a) copied in, then every step after the static opaque
-  // meshes, scissored. Outside those rectangles a whole frame draws exactly
-  // what (b) holds, and inside them exactly the same steps run on the same
-  // samples, so both ways give the same bytes: a frame does not depend on
-  // the frames before it (tested), and the first frame of a span is simply
-  // drawn whole.
-  // The retained layer: (a) in snapshotFbo, (b) in layerImage; valid while
-  // `layerKey` matches. `pendingKey`: the last frame drawn whole, so a layer
+  // before, the renderer keeps (a) the scene after the static opaque meshes
+  // (colour and depth, one sample, and their samples too) and (b) the
+  // finished image of the static items alone. A frame then starts from (b)
+  // and redraws only the rectangles that its dynamic items (and the shadow
+  // box) can touch: (a) copied in, the arrows' tiles drawn over its samples
+  // and resolved, then every later step, scissored. Outside those
+  // rectangles a whole frame draws exactly what (b) holds, and inside them
+  // exactly the same steps run on the same values, so both ways give the
+  // same bytes: a frame does not depend on the frames before it (tested),
+  // and the first frame of a span is simply drawn whole.
+  // The retained layer: (a) in snapshotFbo and snapshotSamplesFbo, (b) in
+  // layerImage; valid while `layerKey` matches. `pendingKey`: the last frame drawn whole, so a layer
   // is built only when a second frame shares it (a moving camera pays
   // nothing for layers it would never reuse).
   GLuint snapshotFbo = 0, snapshotColor = 0, snapshotDepth = 0;
+  GLuint snapshotSamplesFbo = 0, snapshotSamplesColor = 0, snapshotSamplesDepth = 0;  // opaqueFbo's, when it exists
   int snapshotWidth = 0, snapshotHeight = 0, snapshotSamples = 0;
   std::optional<StaticKey> layerKey, pendingKey;
   bool lastFrameOverLayer = false;
@@ -1039,34 +1188,50 @@ struct Renderer::Impl {
     glDeleteFramebuffers(1, &snapshotFbo);
     glDeleteTextures(1, &snapshotColor);
     glDeleteRenderbuffers(1, &snapshotDepth);
+    glDeleteFramebuffers(1, &snapshotSamplesFbo);
+    GLuint rbs[] = {snapshotSamplesColor, snapshotSamplesDepth};
+    glDeleteRenderbuffers(2, rbs);
     snapshotFbo = snapshotColor = snapshotDepth = 0;
+    snapshotSamplesFbo = snapshotSamplesColor = snapshotSamplesDepth = 0;
     snapshotWidth = snapshotHeight = snapshotSamples = 0;
   }
 
   void ensureSnapshot() {
     if (snapshotWidth == fbWidth && snapshotHeight == fbHeight && snapshotSamples == fbSamples) return;
     releaseSnapshot();
-    const GLenum colorTarget = fbSamples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
     glGenTextures(1, &snapshotColor);
-    glBindTexture(colorTarget, snapshotColor);
-    if (fbSamples > 1) glTexStorage2DMultisample(colorTarget, fbSamples, GL_RGBA8, fbWidth, fbHeight, GL_TRUE);
-    else glTexStorage2D(colorTarget, 1, GL_RGBA8, fbWidth, fbHeight);
+    glBindTexture(GL_TEXTURE_2D, snapshotColor);
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, fbWidth, fbHeight);
     glGenRenderbuffers(1, &snapshotDepth);
     glBindRenderbuffer(GL_RENDERBUFFER, snapshotDepth);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, fbSamples > 1 ? fbSamples : 0, GL_DEPTH_COMPONENT24, fbWidth,
-                                     fbHeight);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, fbWidth, fbHeight);
     glGenFramebuffers(1, &snapshotFbo);
     glBindFramebuffer(GL_FRAMEBUFFER, snapshotFbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, colorTarget, snapshotColor, 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, snapshotColor, 0);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, snapshotDepth);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-      throw runtimeError({}, "OpenGL could not create a {}x{} retained layer with {} samples (out of memory?)",
-                         fbWidth, fbHeight, fbSamples);
+    auto checkComplete = [&] {
+      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw runtimeError({}, "OpenGL could not create a {}x{} retained layer with {} samples (out of memory?)",
+                           fbWidth, fbHeight, fbSamples);
+    };
+    checkComplete();
+    if (opaqueFbo != 0) {
+      glGenRenderbuffers(1, &snapshotSamplesColor);
+      glBindRenderbuffer(GL_RENDERBUFFER, snapshotSamplesColor);
+      glRenderbufferStorageMultisample(GL_RENDERBUFFER, fbSamples, GL_RGBA8, fbWidth, fbHeight);
+      glGenRenderbuffers(1, &snapshotSamplesDepth);
+      glBindRenderbuffer(GL_RENDERBUFFER, snapshotSamplesDepth);
+      glRenderbufferStorageMultisample(GL_RENDERBUFFER, fbSamples, GL_DEPTH_COMPONENT24, fbWidth, fbHeight);
+      glGenFramebuffers(1, &snapshotSamplesFbo);
+      glBindFramebuffer(GL_FRAMEBUFFER, snapshotSamplesFbo);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, snapshotSamplesColor);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, snapshotSamplesDepth);
+      checkComplete();
+    }
     snapshotWidth = fbWidth;
     snapshotHeight = fbHeight;
     snapshotSamples = fbSamples;
   }
-
 
   // A mesh's screen bounds, as rectangles that together hold it: the
   // corners of its model-space bounding box, narrowed to its bounding
@@ -1225,7 +1390,7 @@ struct Renderer::Impl {
       const View& v = list.views[i];
       bool overlapsEarlier = false;
       for (std::size_t j = 0; j < i; ++j) overlapsEarlier = overlapsEarlier || overlap(list.views[i], list.views[j]);
-      beginView(list, v, perView[i], nullptr);
+      beginView(list, v, perView[i], nullptr, staticTarget());
       if (overlapsEarlier) {
         // An inset over a view drawn before clears its own rectangle (a
         // scissored clear is a full-screen quad on llvmpipe, per sample:
@@ -1233,8 +1398,14 @@ struct Renderer::Impl {
         glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
         glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
       }
-      drawOpaque(perView[i], Items::StaticOnly);
-      drawOpaque(perView[i], Items::DynamicOnly);
+      drawOpaque(perView[i], Items::StaticOnly, Pass::Samples);
+      drawOpaque(perView[i], Items::DynamicOnly, Pass::Samples);
+      resolveOpaque(list, PixelRect{v.x, v.y, v.x + v.width, v.y + v.height});
+      beginView(list, v, perView[i], nullptr);
+      if (overlapsEarlier && opaqueFbo != 0) glClear(GL_DEPTH_BUFFER_BIT);  // the colour came with the resolve
+      depthAtCentres(perView[i], Items::StaticOnly);
+      depthAtCentres(perView[i], Items::DynamicOnly);
+      drawAfterResolve(perView[i]);
       drawRest(list, static_cast<int>(i), perView[i], Items::All);
     }
     drawImageLabels(list, Items::All, PixelRect{0, 0, list.width, list.height});
@@ -1243,12 +1414,15 @@ struct Renderer::Impl {
   // One unscissored clear of the whole scene: llvmpipe does it per tile as
   // the tile is first rasterized; a scissored clear would be a quad draw.
   void clearScene(const DrawList& list) {
-    glBindFramebuffer(GL_FRAMEBUFFER, sceneFbo);
     glDisable(GL_SCISSOR_TEST);
     glViewport(0, 0, list.width, list.height);
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glDepthMask(GL_TRUE);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    for (const GLuint fbo : {opaqueFbo, sceneFbo}) {
+      if (fbo == 0) continue;
+      glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
   }
 
   // Reads back `r` of the output (or all of it) into `image`.
@@ -1280,9 +1454,22 @@ struct Renderer::Impl {
     ensureSnapshot();
     clearScene(list);
     for (std::size_t i = 0; i < list.views.size(); ++i) {
-      beginView(list, list.views[i], perView[i], nullptr);
-      drawOpaque(perView[i], Items::StaticOnly);
+      beginView(list, list.views[i], perView[i], nullptr, staticTarget());
+      drawOpaque(perView[i], Items::StaticOnly, Pass::Samples);
     }
+    glDisable(GL_SCISSOR_TEST);
+    if (opaqueFbo != 0) {
+      glBindFramebuffer(GL_READ_FRAMEBUFFER, opaqueFbo);
+      glBindFramebuffer(GL_DRAW_FRAMEBUFFER, snapshotSamplesFbo);
+      glBlitFramebuffer(0, 0, list.width, list.height, 0, 0, list.width, list.height,
+                        GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    }
+    resolveOpaque(list, PixelRect{0, 0, list.width, list.height});
+    for (std::size_t i = 0; i < list.views.size(); ++i) {
+      beginView(list, list.views[i], perView[i], nullptr);
+      depthAtCentres(perView[i], Items::StaticOnly);
+    }
+    findLayerEdges(list);
     glDisable(GL_SCISSOR_TEST);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, sceneFbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, snapshotFbo);
@@ -1302,6 +1489,23 @@ struct Renderer::Impl {
     ++stats.layerBuilds;
   }
 
+  // The tiles where the resolved opaque layer covers pixels in part (alpha
+  // strictly between 0 and 1): read back once per layer.
+  void findLayerEdges(const DrawList& list) {
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(list.width) * list.height * 4);
+    glDisable(GL_SCISSOR_TEST);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, sceneFbo);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, list.width, list.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    TileGrid grid(list.width, list.height);
+    for (int row = 0; row < list.height; ++row) {
+      const int y = list.height - 1 - row;  // GL counts rows from the bottom
+      const std::uint8_t* p = &rgba[static_cast<std::size_t>(row) * list.width * 4];
+      for (int x = 0; x < list.width; ++x)
+        if (const std::uint8_t a = p[x * 4 + 3]; a != 0 && a != 255) grid.add(PixelRect{x, y, x + 1, y + 1});
+    }
+    layerEdgeRects = grid.rects();
+  }
 
   // A frame over the retained layer: its image, with the dirty rectangles
   // redrawn from the snapshot on.
@@ -1311,7 +1515,10 @@ struct Renderer::Impl {
     stats.retainedPixels += static_cast<long long>(list.width) * list.height;
     for (const bool f : fresh) stats.freshViews += f ? 1 : 0;
     image.rgba = layerImage.rgba;  // same size: copies into the existing storage
+    underEverywhere = false;
+    underRects = layerEdgeRects;
     redrawRects(list, perView, rects, Items::All, fresh, image);
+    underEverywhere = true;
     long long area = 0;
     for (const PixelRect& r : rects) area += static_cast<long long>(r.x1 - r.x0) * (r.y1 - r.y0);
     stats.redrawnPixels += area;
@@ -1333,20 +1540,79 @@ struct Renderer::Impl {
   // A fresh view (its rectangle among `rects`) is cleared and drawn whole
   // instead, exactly as a whole frame draws it, when `which` takes the
   // dynamic items; a layer's update leaves it alone.
+  void copyRects(const DrawList& list, GLuint from, GLuint to, const std::vector<PixelRect>& rects) {
+    glDisable(GL_SCISSOR_TEST);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, from);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
+    for (const PixelRect& r : rects) {
+      const int y0 = list.height - r.y1, y1 = list.height - r.y0;
+      glBlitFramebuffer(r.x0, y0, r.x1, y1, r.x0, y0, r.x1, y1, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT,
+                        GL_NEAREST);
+    }
+  }
+
+  // `draw` for each view not drawn whole (`fresh`) once per island of
+  // `rects` in it (see redrawRects), bound on `fbo` (0: the scene) and
+  // scissored to the island, its meshes and lines clipped to the rects.
+  template <typename Draw>
+  void inIslands(const DrawList& list, const std::vector<ViewItems>& perView, const std::vector<PixelRect>& rects,
+                 const std::vector<bool>& fresh, GLuint fbo, Draw draw) {
+    std::vector<PixelRect> islandRects;
+    for (std::size_t i = 0; i < list.views.size(); ++i) {
+      if (fresh[i]) continue;
+      const View& v = list.views[i];
+      for (const PixelRect& island : separatedIslands(rects, PixelRect{v.x, v.y, v.x + v.width, v.y + v.height})) {
+        islandRects.clear();
+        for (const PixelRect& r : rects)
+          if (overlaps(r, island)) islandRects.push_back(intersect(r, island));
+        beginView(list, v, perView[i], &island, fbo);
+        drawClips = &islandRects;
+        clipView = &v;
+        draw(perView[i]);
+        drawClips = nullptr;
+        clipView = nullptr;
+      }
+    }
+  }
+
+  // The moving meshes that are drawn in samples (arrows, see Pass), over a
+  // retained layer: the rectangles they reach get the layer's static
+  // samples back, the meshes drawn over them island by island (as in
+  // redrawRects), and are resolved over the scene's copy, so that they hold
+  // what a whole frame's resolve gives.
+  void redrawSamples(const DrawList& list, const std::vector<ViewItems>& perView, const std::vector<bool>& fresh) {
+    if (opaqueFbo == 0) return;
+    std::vector<PixelRect> bounds;
+    for (std::size_t i = 0; i < list.views.size(); ++i) {
+      if (fresh[i]) continue;
+      const View& v = list.views[i];
+      const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+      for (const Drawable& d : perView[i].items)
+        if (d.dynamic && d.material->opacity >= 1.0f && inSamplesPass(d)) meshBounds(v, clipFromWorld, d, bounds);
+    }
+    if (bounds.empty()) return;
+    // Their tiles (inside the dirty ones: dirtyRects adds the same bounds).
+    TileGrid grid(list.width, list.height);
+    for (const PixelRect& b : bounds) grid.add(b);
+    const std::vector<PixelRect> reached = grid.rects();
+    if (reached.empty()) return;
+    underRects.insert(underRects.end(), reached.begin(), reached.end());  // their edges are over the layer's
+    copyRects(list, snapshotSamplesFbo, opaqueFbo, reached);
+    inIslands(list, perView, reached, fresh, opaqueFbo,
+              [&](const ViewItems& items) { drawOpaque(items, Items::DynamicOnly, Pass::Samples); });
+    for (const PixelRect& r : reached) resolveOpaque(list, r);
+    inIslands(list, perView, reached, fresh, 0,
+              [&](const ViewItems& items) { depthAtCentres(items, Items::DynamicOnly); });
+  }
+
   void redrawRects(const DrawList& list, const std::vector<ViewItems>& perView, const std::vector<PixelRect>& rects,
                    Items which, const std::vector<bool>& fresh, media::Image& image) {
     if (rects.empty()) return;
     // The rectangles are disjoint: all copies first, then all draws, so the
     // binned scene is not flushed between them.
     // Unscissored: a blit copies every sample of the rectangle's pixels.
-    glDisable(GL_SCISSOR_TEST);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, snapshotFbo);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, sceneFbo);
-    for (const PixelRect& r : rects) {
-      const int y0 = list.height - r.y1, y1 = list.height - r.y0;
-      glBlitFramebuffer(r.x0, y0, r.x1, y1, r.x0, y0, r.x1, y1, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT,
-                        GL_NEAREST);
-    }
+    copyRects(list, snapshotFbo, sceneFbo, rects);
+    if (which != Items::StaticOnly) redrawSamples(list, perView, fresh);
     // Then each view drawn once per island of its dirty rectangles (see
     // separatedIslands), scissored to the island's box: the pixels of a box
     // outside the rectangles are drawn over stale samples, but they are
@@ -1354,9 +1620,9 @@ struct Renderer::Impl {
     // pixel gets the same draws in the same order as in a whole frame. A box
     // reaches a pixel beyond its rectangles (inside the view): llvmpipe tests
     // the scissor per sample, and a multisampled pixel on the scissor's edge
-    // seems to lose samples that a whole frame draws (seen: glass drawn
-    // scissor by scissor differed from a whole frame along the row where two
-    // met).
+    // seems to lose samples that a whole frame draws (seen, when these steps
+    // ran in samples: glass drawn scissor by scissor differed from a whole
+    // frame along the row where two met; redrawSamples still draws so).
     PixelRect allBounds{list.width, list.height, 0, 0};
     std::vector<PixelRect> islandRects;
     for (std::size_t i = 0; i < list.views.size(); ++i) {
@@ -1366,11 +1632,20 @@ struct Renderer::Impl {
         if (which == Items::StaticOnly) continue;
         // A scissored clear (the view's rectangle): the same values as the
         // whole frame's one clear.
-        beginView(list, v, perView[i], nullptr);
+        beginView(list, v, perView[i], nullptr, staticTarget());
         glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
         glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
-        drawOpaque(perView[i], Items::StaticOnly);
-        drawOpaque(perView[i], Items::DynamicOnly);
+        drawOpaque(perView[i], Items::StaticOnly, Pass::Samples);
+        drawOpaque(perView[i], Items::DynamicOnly, Pass::Samples);
+        resolveOpaque(list, area);
+        beginView(list, v, perView[i], nullptr);
+        if (opaqueFbo != 0) glClear(GL_DEPTH_BUFFER_BIT);  // the colour came with the resolve
+        depthAtCentres(perView[i], Items::StaticOnly);
+        depthAtCentres(perView[i], Items::DynamicOnly);
+        const bool under = underEverywhere;
+        underEverywhere = true;  // drawn as in a whole frame
+        drawAfterResolve(perView[i]);
+        underEverywhere = under;
         drawRest(list, static_cast<int>(i), perView[i], Items::All);
         allBounds = unite(allBounds, area);
         continue;
@@ -1383,7 +1658,7 @@ struct Renderer::Impl {
         beginView(list, v, perView[i], &island);
         drawClips = &islandRects;
         clipView = &v;
-        if (which != Items::StaticOnly) drawOpaque(perView[i], Items::DynamicOnly);
+        if (which != Items::StaticOnly) drawAfterResolve(perView[i]);
         drawRest(list, static_cast<int>(i), perView[i], which);
         drawClips = nullptr;
         clipView = nullptr;
@@ -1496,31 +1771,16 @@ struct Renderer::Impl {
     }
   }
 
-  // Vector figures: the scene's depth after render(). The multisampled depth
-  // renderbuffer cannot be read directly; a blit copies one sample per pixel
-  // into a single-sample buffer that glReadPixels can read.
+  // Vector figures: the scene's depth after render() (one sample, at the
+  // pixel centres: see depthAtCentres).
   void readDepth(std::vector<float>& depth) {
     const int w = fbWidth, h = fbHeight;
-    GLuint rb = 0, fbo = 0;
-    glGenRenderbuffers(1, &rb);
-    glBindRenderbuffer(GL_RENDERBUFFER, rb);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, w, h);
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
-    glFramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb);
-    glDrawBuffer(GL_NONE);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, sceneFbo);
-    glDisable(GL_SCISSOR_TEST);
-    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
-    glReadBuffer(GL_NONE);
     std::vector<float> bottomUp(static_cast<std::size_t>(w) * h);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, bottomUp.data());
     const GLenum err = glGetError();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteFramebuffers(1, &fbo);
-    glDeleteRenderbuffers(1, &rb);
     if (err != GL_NO_ERROR) throw runtimeError({}, "OpenGL error 0x{:x} while reading back a {}x{} depth buffer", err, w, h);
     depth.resize(bottomUp.size());
     for (int y = 0; y < h; ++y)  // GL rows count from the bottom

@@ -1,7 +1,10 @@
-// Renderer — draws a DrawList with OpenGL 4.5 core into a multisampled
-// framebuffer object (default 4×), resolves it, waits (glFinish), reads the
-// pixels back and flips the bottom-up GL rows exactly once into a top-down
-// Image. One key light with a shadow map per view, gamma-correct (sRGB)
+// Renderer — draws a DrawList with OpenGL 4.5 core: the opaque meshes that
+// stay (and moving arrows) into a multisampled framebuffer object (default
+// 4×), resolved into one of a single sample where everything else is drawn
+// antialiased by its own coverage (ray-cast spheres, lines as capsules:
+// coverage = clamp(½ + (edge distance)/(pixel size), 0, 1)); then waits
+// (glFinish), reads the pixels back and flips the bottom-up GL rows exactly
+// once into a top-down Image. One key light with a shadow map per view, gamma-correct (sRGB)
 // output. GPU copies of meshes, textures and glyph atlases are cached across
 // frames, keyed by the shared data they came from. Retained layers: while
 // the views and the static (not `dynamic`) items stay the same from frame to

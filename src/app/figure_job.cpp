@@ -1,16 +1,16 @@
 #include "app/figure_job.hpp"
 
-#include "app/job_setup.hpp"
-#include "draw/draw_style.hpp"
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <string>
 
+#include "app/job_setup.hpp"
+#include "app/render_jobs.hpp"
 #include "core/error.hpp"
 #include "core/memory_budget.hpp"
 #include "core/stage_log.hpp"
+#include "draw/draw_style.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 
@@ -43,10 +43,10 @@ void checkFigureSpec(const scene::SceneSpec& spec) {
                    "render.dpi = {} over a {} mm wide figure makes a {}x{} raster; the renderer's limit is {} px",
                    spec.render.dpi, spec.figure.widthMm, width, height, kMaxRasterSide);
   // The GL passes at the raster's size (as checkFrameMemory counts a
-  // still's: 8 bytes per sample, 16 per pixel, 96 MiB fixed) plus the two
-  // images and two depth buffers the figure keeps (16 bytes per pixel).
+  // still's) plus the two images and two depth buffers the figure keeps
+  // (16 bytes per pixel).
   const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
-  const std::uint64_t needed = pixels * (8ULL * spec.render.msaa + 32ULL) + (96ULL << 20);
+  const std::uint64_t needed = rendererBytes(pixels, spec.render.msaa) + pixels * 16ULL;
   const auto available = availableMemoryBytes();
   if (available && needed > *available)
     throw badInput(spec.where(spec.locations.contains("render.dpi") ? "render.dpi" : "figure.width_mm"),

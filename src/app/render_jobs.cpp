@@ -73,13 +73,18 @@ std::shared_ptr<const render::TextureImage> loadBallTexture(const scene::SceneSp
   return texture;
 }
 
+std::uint64_t rendererBytes(std::uint64_t pixels, int msaa) {
+  // Per pixel: multisampled colour and depth (4 + 4 bytes per sample), the
+  // one-sample scene's colour and depth, the composite, the read-back, the
+  // image and the PNG rows (4 bytes each); plus a fixed 96 MiB for the
+  // shadow map, the GL stack and the meshes.
+  return pixels * (8ULL * static_cast<std::uint64_t>(msaa) + 24ULL) + (96ULL << 20);
+}
+
 void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerPixel) {
-  // Per pixel: multisampled colour and depth-stencil (4 + 4 bytes per sample),
-  // the resolved colour, the read-back, the flipped image and the PNG rows
-  // (4 bytes each); plus a fixed 96 MiB for the shadow map, the GL stack and
-  // the meshes. Refuse before creating a context when that cannot fit.
+  // Refused before a context is created when it cannot fit.
   const std::uint64_t pixels = static_cast<std::uint64_t>(spec.render.width) * spec.render.height;
-  const std::uint64_t needed = pixels * (8ULL * spec.render.msaa + 16ULL + extraBytesPerPixel) + (96ULL << 20);
+  const std::uint64_t needed = rendererBytes(pixels, spec.render.msaa) + pixels * extraBytesPerPixel;
   const auto available = availableMemoryBytes();
   if (available && needed > *available) {
     const std::string key = spec.locations.contains("render.height") ? "render.height" : "render.width";

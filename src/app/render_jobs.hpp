@@ -53,6 +53,9 @@ struct StillOptions {
 // extraBytesPerPixel: what a job adds per pixel beyond the renderer (an
 // animation's frame queue, colour conversion and x264's look-ahead).
 void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerPixel = 0);
+// What the renderer's buffers take for `pixels` pixels at `msaa` samples,
+// as checkFrameMemory counts them.
+[[nodiscard]] std::uint64_t rendererBytes(std::uint64_t pixels, int msaa);
 
 // The job's output format (media/output_format.hpp: render.format, the -o
 // extension), after the checks the format imposes on the scene: alpha it

@@ -210,7 +210,7 @@ struct MeshViewUniforms {
 struct Renderer::Impl {
   ShaderLibrary library;  // a copy: mesh variants compile lazily
   bool retainLayers = true;
-  std::map<int, Program> meshPrograms;  // by variant: pattern * 8 + shadowed * 4 + lit * 2 + specular
+  std::map<int, Program> meshPrograms;  // by variant: see meshProgram
   MeshViewUniforms viewUniforms;
   Program shadow, line, text, compositor, depthProgram;
   GLuint emptyVao = 0;
@@ -629,8 +629,9 @@ struct Renderer::Impl {
   }
 
   // Whether `d` is drawn as a ray-cast sphere: at one sample (with more, the
-  // samples antialias its triangles' edges), opaque and whole, in a view
-  // whose camera sphereBounds understands.
+  // samples antialias its triangles' edges), whole (no cut-away, not the
+  // re-shade's clipped part), in a view whose camera sphereBounds
+  // understands; its screen rectangle if so.
   std::optional<PixelRect> impostorRect(const Drawable& d, bool clipToShadowBox) const {
     const Material& m = *d.material;
     if (!d.sphere || targetSamples != 1 || clipToShadowBox || viewUniforms.view == nullptr ||

@@ -70,7 +70,7 @@ void BM_RenderFrame1080p(benchmark::State& state) {
   }
   state.counters["process_cpu_ms_per_frame"] =
       1e3 * (processCpuSeconds() - cpuStart) / double(std::max<benchmark::IterationCount>(1, state.iterations()));
-  state.SetLabel(sizeLabel() + ", " + std::to_string(state.range(0)) + "x MSAA, shadow, side-by-side");
+  state.SetLabel(sizeLabel() + ", " + std::to_string(spec.render.msaa) + "x MSAA, shadow, side-by-side");
 }
 // Arg = MSAA samples; 4 is the target configuration, 1 shows what MSAA costs
 // (llvmpipe runs 2 samples as 4: same cost). Layers off: every frame is
@@ -122,8 +122,9 @@ void BM_ClipFrames1080p(benchmark::State& state) {
   state.counters["retained_share"] = double(renderer.stats().retainedFrames - before.retainedFrames) / n;
   state.counters["layer_builds_per_frame"] = double(renderer.stats().layerBuilds - before.layerBuilds) / n;
   state.counters["layer_updates_per_frame"] = double(renderer.stats().layerUpdates - before.layerUpdates) / n;
-  state.SetLabel(sizeLabel() +
-                 (state.range(0) == 1 ? ", 4x MSAA, camera follows the ball" : ", 4x MSAA, fixed camera") +
+  // The samples as the scene says them (ROLLSPIN_BENCH_SET may change them).
+  state.SetLabel(sizeLabel() + ", " + std::to_string(spec.render.msaa) + "x MSAA" +
+                 (state.range(0) == 1 ? ", camera follows the ball" : ", fixed camera") +
                  (count == 300 ? ", the whole clip in order" : ""));
 }
 BENCHMARK(BM_ClipFrames1080p)->Args({0, 24})->Args({1, 24})->Args({0, 300})->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -11,19 +11,20 @@
 #include <stdexcept>
 #include <thread>
 
-#include "core/bounded_queue.hpp"
-#include "motion/frame_clock.hpp"
-#include "motion/frame_poses.hpp"
 #include "app/flag_overrides.hpp"
-#include "app/job_setup.hpp"
 #include "app/interrupt_guard.hpp"
+#include "app/job_setup.hpp"
 #include "app/progress_meter.hpp"
 #include "app/render_jobs.hpp"
 #include "app/shard_range.hpp"
+#include "core/bounded_queue.hpp"
 #include "core/output_path.hpp"
 #include "core/stage_log.hpp"
+#include "core/temp_files.hpp"
 #include "media/container_tags.hpp"
 #include "media/sink_factory.hpp"
+#include "motion/frame_clock.hpp"
+#include "motion/frame_poses.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"
@@ -259,7 +260,8 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   const double seconds = progress.elapsedSeconds();
   if (result.interruptedBy != 0 && result.framesWritten < result.framesRequested) {
     result.written = sink->finishPartial();
-    const char* name = result.interruptedBy == SIGINT ? "SIGINT" : "SIGTERM";
+    const std::string signal = signalName(result.interruptedBy);
+    const char* name = signal.c_str();
     if (result.written.empty())
       std::fprintf(stderr, "rollspin: interrupted (%s) before the first frame: nothing written\n", name);
     else if (!folder)

@@ -185,6 +185,11 @@ void installInterruptCleanup() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
+std::string signalName(int signal) {
+  const char* name = ::sigabbrev_np(signal);
+  return std::string("SIG") + (name != nullptr ? name : "?");
+}
+
 void installCrashReport() {
 #if !defined(__SANITIZE_ADDRESS__)  // the sanitizers report crashes themselves, better
   std::array<void*, 1> warmUp{};

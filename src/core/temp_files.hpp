@@ -42,4 +42,8 @@ void installInterruptCleanup();
 // sanitizers, which report crashes themselves.
 void installCrashReport();
 
+// "SIGINT", "SIGSEGV", …: a signal's name from glibc's table, the one the
+// handlers above print ("SIG?" for a number it does not know).
+[[nodiscard]] std::string signalName(int signal);
+
 }  // namespace rollspin

@@ -75,9 +75,10 @@ std::shared_ptr<const render::TextureImage> loadBallTexture(const scene::SceneSp
 
 std::uint64_t rendererBytes(std::uint64_t pixels, int msaa) {
   // Per pixel: multisampled colour and depth (4 + 4 bytes per sample), the
-  // one-sample scene's colour and depth, the composite, the read-back, the
-  // image and the PNG rows (4 bytes each); plus a fixed 96 MiB for the
-  // shadow map, the GL stack and the meshes.
+  // one-sample scene's colour and depth, the rows read back (composited on
+  // the CPU), the retained layer's image, the image and the PNG rows (4
+  // bytes each); plus a fixed 96 MiB for the shadow map, the GL stack and
+  // the meshes.
   return pixels * (8ULL * static_cast<std::uint64_t>(msaa) + 24ULL) + (96ULL << 20);
 }
 

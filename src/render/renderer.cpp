@@ -212,7 +212,7 @@ struct Renderer::Impl {
   bool retainLayers = true;
   std::map<int, Program> meshPrograms;  // by variant: see meshProgram
   MeshViewUniforms viewUniforms;
-  Program shadow, line, text, compositor, depthProgram;
+  Program shadow, line, text, depthProgram;
   GLuint emptyVao = 0;
   GLuint streamVao = 0, streamVbo = 0;  // polylines (vec3)
   GLuint textVao = 0, textVbo = 0;      // glyph quads (vec2 pixel, vec2 uv)
@@ -223,8 +223,8 @@ struct Renderer::Impl {
   // The static opaque meshes are drawn into opaqueFbo (multisampled; none
   // at msaa = 1) and resolved into sceneFbo (a colour texture of one sample,
   // over transparent black), where every later step draws with analytic
-  // coverage; then composited into outputFbo: the backdrop put behind, rows
-  // flipped to top-down (see composite).
+  // coverage; then read back, the backdrop put behind and the rows flipped
+  // top-down on the CPU (see readBack).
   GLuint opaqueFbo = 0, opaqueColor = 0, opaquePacked = 0, opaqueDepth = 0;
   GLuint resolveFbo = 0;            // the scene's colour as packed words (see resolveOpaque)
   std::optional<Program> resolver;  // for the sample count of opaqueFbo
@@ -239,7 +239,6 @@ struct Renderer::Impl {
   std::vector<PixelRect> layerEdgeRects;  // tiles where the layer's opaque meshes cover pixels in part
   GLuint sceneFbo = 0, sceneColor = 0, sceneDepth = 0;
   GLuint scenePacked = 0;  // sceneColor viewed as R32UI: one packed RGBA8 word per pixel
-  GLuint outputFbo = 0, outputColor = 0;
   int fbWidth = 0, fbHeight = 0, fbSamples = 0;
 
   struct CachedMesh {
@@ -265,7 +264,6 @@ struct Renderer::Impl {
         shadow(lib, "shadow.vert", "shadow.frag"),
         line(lib, "line.vert", "line.frag", "line.geom"),
         text(lib, "text.vert", "text.frag"),
-        compositor(lib, "composite.vert", "composite.frag"),
         depthProgram(lib, "mesh.vert", "depth.frag", {}, "#define LIT 0\n") {
     glGenVertexArrays(1, &emptyVao);
     glGenVertexArrays(1, &streamVao);
@@ -301,18 +299,18 @@ struct Renderer::Impl {
     glDeleteVertexArrays(1, &textVao);
     glDeleteVertexArrays(1, &emptyVao);
     for (auto& [key, p] : meshPrograms) p.release();
-    for (Program* p : {&shadow, &line, &text, &compositor, &depthProgram}) p->release();
+    for (Program* p : {&shadow, &line, &text, &depthProgram}) p->release();
     if (resolver) resolver->release();
   }
 
   void releaseFramebuffers() {
-    GLuint fbos[] = {sceneFbo, outputFbo, opaqueFbo, resolveFbo};
-    GLuint rbs[] = {sceneDepth, outputColor, opaqueDepth};
-    glDeleteFramebuffers(4, fbos);
-    glDeleteRenderbuffers(3, rbs);
+    GLuint fbos[] = {sceneFbo, opaqueFbo, resolveFbo};
+    GLuint rbs[] = {sceneDepth, opaqueDepth};
+    glDeleteFramebuffers(3, fbos);
+    glDeleteRenderbuffers(2, rbs);
     GLuint textures[] = {scenePacked, sceneColor, opaquePacked, opaqueColor};
     glDeleteTextures(4, textures);
-    sceneFbo = outputFbo = sceneDepth = outputColor = sceneColor = scenePacked = 0;
+    sceneFbo = sceneDepth = sceneColor = scenePacked = 0;
     opaqueFbo = opaqueColor = opaquePacked = opaqueDepth = resolveFbo = 0;
   }
 
@@ -324,8 +322,8 @@ struct Renderer::Impl {
         throw runtimeError({}, "OpenGL could not create a {}x{} framebuffer with {} samples (out of memory?)", w, h,
                            samples);
     };
-    // The scene has one sample; its colour is a texture so that the
-    // composite pass can read it.
+    // The scene has one sample; its colour is a texture so that the resolve
+    // pass can write it as packed words.
     glGenTextures(1, &sceneColor);
     glBindTexture(GL_TEXTURE_2D, sceneColor);
     glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, w, h);
@@ -367,13 +365,6 @@ struct Renderer::Impl {
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, scenePacked, 0);
       checkComplete();
     }
-    glGenRenderbuffers(1, &outputColor);
-    glBindRenderbuffer(GL_RENDERBUFFER, outputColor);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_R32UI, w, h);  // packed RGBA8, as the composite writes it
-    glGenFramebuffers(1, &outputFbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, outputFbo);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, outputColor);
-    checkComplete();
     fbWidth = w;
     fbHeight = h;
     if (samples != fbSamples && resolver) {
@@ -404,7 +395,7 @@ struct Renderer::Impl {
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, opaquePacked);
     if (!resolver)
-      resolver.emplace(library, "composite.vert", "resolve.frag", "", fmt::format("#define SAMPLES {}\n", fbSamples));
+      resolver.emplace(library, "fullscreen.vert", "resolve.frag", "", fmt::format("#define SAMPLES {}\n", fbSamples));
     resolver->use();
     resolver->set("samples", 0);
     glBindVertexArray(emptyVao);
@@ -1080,18 +1071,6 @@ struct Renderer::Impl {
     return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
   }
 
-  // True when the views are disjoint and cover the image: compositing them
-  // one by one then writes every output pixel.
-  static bool viewsTileImage(const DrawList& list) {
-    long long area = 0;
-    for (std::size_t i = 0; i < list.views.size(); ++i) {
-      area += static_cast<long long>(list.views[i].width) * list.views[i].height;
-      for (std::size_t j = i + 1; j < list.views.size(); ++j)
-        if (overlap(list.views[i], list.views[j])) return false;
-    }
-    return area == static_cast<long long>(list.width) * list.height;
-  }
-
   static bool viewsDisjoint(const DrawList& list) {
     for (std::size_t i = 0; i < list.views.size(); ++i)
       for (std::size_t j = i + 1; j < list.views.size(); ++j)
@@ -1099,7 +1078,7 @@ struct Renderer::Impl {
     return true;
   }
 
-  // sRGB encoding of a backdrop colour (the composite pass works on encoded
+  // sRGB encoding of a backdrop colour (readBack composites encoded
   // values, as the scene's blending does).
   static glm::vec3 encodeSrgb(const glm::vec3& linear) {
     glm::vec3 out;
@@ -1110,44 +1089,84 @@ struct Renderer::Impl {
     return out;
   }
 
-  // One pass over the output instead of a backdrop draw, an MSAA resolve and
-  // a CPU row flip: each output pixel averages its scene samples
-  // (premultiplied colour over transparent black), puts the view's backdrop
-  // gradient behind them, and lands on the row where it belongs top-down, so
-  // glReadPixels delivers the image in reading order. `only`: just these
-  // pixels (a retained frame's rectangles), each computed exactly as in a
-  // whole-image pass.
-  void composite(const DrawList& list, const std::vector<PixelRect>* only = nullptr) {
-    glBindFramebuffer(GL_FRAMEBUFFER, outputFbo);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_SCISSOR_TEST);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, scenePacked);
-    Program& p = compositor;
-    p.use();
-    p.set("scene", 0);
-    p.set("sourceTopRow", list.height - 1);
-    p.set("opaqueAlpha", list.transparent ? 0u : 255u);
-    glBindVertexArray(emptyVao);
-    const bool tiled = viewsTileImage(list);
-    auto pass = [&](int x, int y, int w, int h, const View* v, const PixelRect& clip) {
-      const PixelRect r = intersect(PixelRect{x, y, x + w, y + h}, clip);
-      if (r.empty()) return;
-      // Output rows are image rows (top-down), so the rectangle is not flipped.
-      glViewport(x, y, w, h);
-      glScissor(r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
-      const bool backdrop = v != nullptr && v->background && !list.transparent;
-      p.set("backdropWeight", backdrop ? 1.0f : 0.0f);
-      p.set("topColor", backdrop ? encodeSrgb(v->backgroundTop) : glm::vec3(0.0f));
-      p.set("bottomColor", backdrop ? encodeSrgb(v->backgroundBottom) : glm::vec3(0.0f));
-      glDrawArrays(GL_TRIANGLES, 0, 3);
+  // The scene's pixels of `r` (image rows, top-down) made the output's, on
+  // the CPU as they are read back: rows flipped top-down, the view's
+  // backdrop gradient put behind (the scene is premultiplied colour over
+  // transparent black: out = c + (1 − a)·backdrop, the "over" operator,
+  // exact for any stack of blended layers), values sRGB-encoded bytes as the
+  // scene's blending left them. llvmpipe pays about 11 ns a pixel for any
+  // full-image pass (a 1080p still's composite cost 21–22 ms of CPU); this
+  // loop costs a small fraction of that, and the read-back it rides on is
+  // paid anyway. A pixel belongs to the last view that holds it, as the
+  // views are drawn; pixels between views get no backdrop.
+  void readBack(const DrawList& list, media::Image& image, const PixelRect& r) {
+    if (r.empty()) return;
+    const int width = r.x1 - r.x0, rows = r.y1 - r.y0;
+    readRows.resize(static_cast<std::size_t>(width) * rows);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, sceneFbo);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(r.x0, list.height - r.y1, width, rows, GL_RGBA, GL_UNSIGNED_BYTE, readRows.data());
+    static_assert(std::endian::native == std::endian::little, "the packed RGBA8 words assume little endian");
+    const std::uint32_t opaqueAlpha = list.transparent ? 0u : 255u;
+    std::vector<int> cuts;
+    for (int y = r.y0; y < r.y1; ++y) {
+      // GL rows count from the bottom: read row k is image row r.y1 − 1 − k.
+      const std::uint32_t* in = readRows.data() + static_cast<std::size_t>(r.y1 - 1 - y) * width;
+      auto* out =
+          reinterpret_cast<std::uint32_t*>(image.rgba.data() + (static_cast<std::size_t>(y) * list.width + r.x0) * 4);
+      // The row cut where views begin and end; each piece belongs to the
+      // last view that holds it (or none).
+      cuts.assign({r.x0, r.x1});
+      for (const View& v : list.views)
+        if (y >= v.y && y < v.y + v.height)
+          for (const int x : {v.x, v.x + v.width})
+            if (x > r.x0 && x < r.x1) cuts.push_back(x);
+      std::sort(cuts.begin(), cuts.end());
+      for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
+        const int x0 = cuts[c], x1 = cuts[c + 1];
+        if (x0 == x1) continue;
+        const View* owner = nullptr;
+        for (const View& v : list.views)
+          if (y >= v.y && y < v.y + v.height && x0 >= v.x && x0 < v.x + v.width) owner = &v;
+        glm::vec3 backdrop(0.0f);
+        if (owner != nullptr && owner->background && !list.transparent) {
+          // Linear in the row, sampled at the pixel centre.
+          const glm::vec3 top = encodeSrgb(owner->backgroundTop), bottom = encodeSrgb(owner->backgroundBottom);
+          backdrop = top + (bottom - top) * ((float(y - owner->y) + 0.5f) / float(owner->height));
+        }
+        compositeSpan(in + (x0 - r.x0), in + (x1 - r.x0), out + (x0 - r.x0), backdrop, opaqueAlpha);
+      }
+      if (list.transparent) {
+        // Blending left premultiplied colour over the empty background.
+        for (int x = 0; x < width; ++x) {
+          auto* p = reinterpret_cast<std::uint8_t*>(out + x);
+          if (p[3] != 0 && p[3] != 255)
+            for (int c = 0; c < 3; ++c) p[c] = static_cast<std::uint8_t>(std::min(255, (p[c] * 255 + p[3] / 2) / p[3]));
+        }
+      }
+    }
+  }
+  std::vector<std::uint32_t> readRows;  // readBack's rows as read, bottom-up
+
+  // out = c + (1 − a)·backdrop per channel, rounded, clamped; alpha at
+  // least opaqueAlpha. Pixels the scene covers fully keep their word, and
+  // those it leaves empty take the backdrop's, computed once.
+  static void compositeSpan(const std::uint32_t* begin, const std::uint32_t* end, std::uint32_t* out,
+                            const glm::vec3& backdrop, std::uint32_t opaqueAlpha) {
+    auto over = [&](std::uint32_t t) {
+      const std::uint32_t a = t >> 24u;
+      const float uncovered = float(255u - a);
+      std::uint32_t word = std::max(a, opaqueAlpha) << 24u;
+      for (int c = 0; c < 3; ++c) {
+        const auto behind = static_cast<std::uint32_t>(backdrop[c] * uncovered + 0.5f);
+        word |= std::min(((t >> (8 * c)) & 0xFFu) + behind, 255u) << (8 * c);
+      }
+      return word;
     };
-    const std::vector<PixelRect> whole{PixelRect{0, 0, list.width, list.height}};
-    for (const PixelRect& clip : only != nullptr ? *only : whole) {
-      if (!tiled) pass(0, 0, list.width, list.height, nullptr, clip);  // gaps between views: no backdrop
-      for (const View& v : list.views) pass(v.x, v.y, v.width, v.height, &v, clip);
+    const std::uint32_t empty = over(0u);
+    for (const std::uint32_t* p = begin; p != end; ++p, ++out) {
+      const std::uint32_t t = *p;
+      *out = t >= 0xFF000000u ? t : t == 0u ? empty : over(t);
     }
   }
 
@@ -1426,29 +1445,6 @@ struct Renderer::Impl {
     }
   }
 
-  // Reads back `r` of the output (or all of it) into `image`.
-  void readBack(const DrawList& list, media::Image& image, const PixelRect& r) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, outputFbo);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glPixelStorei(GL_PACK_ROW_LENGTH, list.width);
-    // One uint per pixel whose bytes in memory are R, G, B, A (see composite.frag).
-    static_assert(std::endian::native == std::endian::little, "the packed RGBA8 words assume little endian");
-    glReadPixels(r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0, GL_RED_INTEGER, GL_UNSIGNED_INT,
-                 image.rgba.data() + (static_cast<std::size_t>(r.y0) * list.width + r.x0) * 4);
-    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-    if (list.transparent) {
-      for (int y = r.y0; y < r.y1; ++y)
-        for (int x = r.x0; x < r.x1; ++x) {
-          std::uint8_t* p = &image.rgba[(static_cast<std::size_t>(y) * list.width + x) * 4];
-          if (p[3] != 0 && p[3] != 255) {
-            // Blending left premultiplied colour over the empty background.
-            for (int c = 0; c < 3; ++c)
-              p[c] = static_cast<std::uint8_t>(std::min(255, (p[c] * 255 + p[3] / 2) / p[3]));
-          }
-        }
-    }
-  }
-
   // Draws the static items into the scene, keeping the samples after their
   // opaque meshes, and reads their finished image into layerImage.
   void buildLayer(const DrawList& list, const std::vector<ViewItems>& perView) {
@@ -1481,8 +1477,6 @@ struct Renderer::Impl {
       drawRest(list, static_cast<int>(i), perView[i], Items::StaticOnly);
     }
     drawImageLabels(list, Items::StaticOnly, PixelRect{0, 0, list.width, list.height});
-    composite(list);
-    glFinish();
     layerImage.width = list.width;
     layerImage.height = list.height;
     layerImage.rgba.resize(static_cast<std::size_t>(list.width) * list.height * 4);
@@ -1667,8 +1661,6 @@ struct Renderer::Impl {
     }
     for (const PixelRect& r : rects) allBounds = unite(allBounds, r);
     drawImageLabels(list, which, allBounds);
-    composite(list, &rects);
-    glFinish();
     for (const PixelRect& r : rects) readBack(list, image, r);
   }
 
@@ -1750,8 +1742,6 @@ struct Renderer::Impl {
     } else {
       clearScene(list);
       drawWhole(list, perView);
-      composite(list);
-      glFinish();
       readBack(list, image, PixelRect{0, 0, list.width, list.height});
       ++stats.wholeFrames;
     }

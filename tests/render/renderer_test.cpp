@@ -156,6 +156,39 @@ TEST_F(RendererTest, RayCastSphereAtOneSampleMatchesTheMultisampledMesh) {
     }
 }
 
+// The backdrop goes behind the scene as the image is read back: each pixel
+// takes the gradient of the last view that holds it (an inset over a main
+// view), sampled at the pixel's centre row and sRGB-encoded; pixels outside
+// every view stay black.
+TEST_F(RendererTest, BackdropsFollowTheViewsAndTheirGradients) {
+  auto encode = [](float c) { return c < 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; };
+  DrawList list;
+  list.width = 64;
+  list.height = 48;
+  View main = flatView(0, 0, 40, 40, glm::vec3(0.0f));
+  main.backgroundTop = {0.9f, 0.1f, 0.1f};
+  main.backgroundBottom = {0.1f, 0.1f, 0.9f};
+  View inset = flatView(30, 10, 20, 20, glm::vec3(0.2f, 0.8f, 0.2f));
+  list.views = {main, inset};
+  const media::Image img = renderer_->render(list);
+  for (int y = 0; y < list.height; ++y)
+    for (int x = 0; x < list.width; ++x) {
+      const std::uint8_t* p = img.pixel(x, y);
+      ASSERT_EQ(p[3], 255) << x << "," << y;
+      const bool inInset = x >= 30 && x < 50 && y >= 10 && y < 30, inMain = x < 40 && y < 40;
+      if (!inInset && !inMain) {
+        ASSERT_EQ(p[0] + p[1] + p[2], 0) << x << "," << y;  // between views: no backdrop
+        continue;
+      }
+      const View& v = inInset ? inset : main;
+      const float f = (float(y - v.y) + 0.5f) / float(v.height);
+      for (int c = 0; c < 3; ++c) {
+        const float top = encode(v.backgroundTop[c]), bottom = encode(v.backgroundBottom[c]);
+        ASSERT_NEAR(p[c], 255.0f * (top + (bottom - top) * f), 0.51f) << x << "," << y << " channel " << c;
+      }
+    }
+}
+
 TEST_F(RendererTest, TransparentBackgroundHasZeroAlphaAndOpaqueSubject) {
   DrawList list;
   list.width = 48;

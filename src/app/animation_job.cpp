@@ -47,13 +47,21 @@ constexpr std::array<QualityPreset, 4> kQualityPresets{{
     {"4k", 3840, 2160, 60},
 }};
 
+// An image only the renderer writes (the encoder reads it through a const
+// pointer), with what the renderer last wrote into it: a frame over the
+// retained layer then puts back only what differs from the layer.
+struct PooledImage {
+  media::Image image;
+  render::ImageHistory history;
+};
+
 // Frames travel to the encoder thread and come back here for reuse: a few
 // buffers for the whole clip instead of a fresh allocation (and its page
 // faults) per frame.
 class ImagePool : public std::enable_shared_from_this<ImagePool> {
  public:
-  std::shared_ptr<media::Image> acquire() {
-    std::unique_ptr<media::Image> image;
+  std::shared_ptr<PooledImage> acquire() {
+    std::unique_ptr<PooledImage> image;
     {
       std::lock_guard lock(mutex_);
       if (!free_.empty()) {
@@ -61,8 +69,8 @@ class ImagePool : public std::enable_shared_from_this<ImagePool> {
         free_.pop_back();
       }
     }
-    if (!image) image = std::make_unique<media::Image>();
-    return {image.release(), [pool = shared_from_this()](media::Image* used) {
+    if (!image) image = std::make_unique<PooledImage>();
+    return {image.release(), [pool = shared_from_this()](PooledImage* used) {
               std::lock_guard lock(pool->mutex_);
               pool->free_.emplace_back(used);
             }};
@@ -70,7 +78,7 @@ class ImagePool : public std::enable_shared_from_this<ImagePool> {
 
  private:
   std::mutex mutex_;
-  std::vector<std::unique_ptr<media::Image>> free_;
+  std::vector<std::unique_ptr<PooledImage>> free_;
 };
 
 }  // namespace
@@ -180,9 +188,9 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
       // first frame after the move is drawn again, as a part starting there is.
       if (!previous || s != previousS || story.segment != previousSegment || cameraMoving || previousMoving) {
         pose->story = story;
-        const std::shared_ptr<media::Image> image = pool->acquire();
-        renderer.render(drawer.draw(*pose), *image);
-        previous = image;
+        const std::shared_ptr<PooledImage> pooled = pool->acquire();
+        renderer.render(drawer.draw(*pose), pooled->image, pooled->history);
+        previous = Frame(pooled, &pooled->image);  // shares the pooled image's life
         previousS = s;
         previousSegment = story.segment;
       }

@@ -1,13 +1,14 @@
 #include "render/renderer.hpp"
 
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <bit>
+#include <cstring>
+#include <deque>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
-
-#include <algorithm>
-#include <array>
-#include <bit>
-#include <cstring>
 #include <map>
 #include <optional>
 #include <span>
@@ -19,8 +20,8 @@
 #include "core/stage_log.hpp"
 #include "render/font_atlas.hpp"
 #include "render/gl.hpp"
-#include "render/mesh_builders.hpp"
 #include "render/layer_key.hpp"
+#include "render/mesh_builders.hpp"
 #include "render/screen_bounds.hpp"
 
 namespace rollspin::render {
@@ -206,6 +207,21 @@ struct MeshViewUniforms {
   float shadowFilterRadius = 0.0f;
   const View* view = nullptr;  // its viewport, for ray-cast spheres
 };
+
+// An image's pixels: the layer image of `epoch` at `version`, except inside
+// `written` (a frame's rectangles). Epochs are unique in the process, so a
+// history never matches another renderer's layer.
+struct ImageHistory::State {
+  std::uint64_t epoch = 0;  // 0: unknown
+  std::uint64_t version = 0;
+  std::vector<PixelRect> written;
+  const std::uint8_t* pixels = nullptr;  // the buffer it describes
+};
+ImageHistory::ImageHistory() = default;
+ImageHistory::~ImageHistory() = default;
+ImageHistory::ImageHistory(ImageHistory&&) noexcept = default;
+ImageHistory& ImageHistory::operator=(ImageHistory&&) noexcept = default;
+void ImageHistory::reset() { state_.reset(); }
 
 struct Renderer::Impl {
   ShaderLibrary library;  // a copy: mesh variants compile lazily
@@ -1202,6 +1218,12 @@ struct Renderer::Impl {
   std::optional<StaticKey> layerKey, pendingKey;
   bool lastFrameOverLayer = false;
   media::Image layerImage;
+  // layerImage's identity: a new epoch per build, a new version per update
+  // in place, with the rectangles each recent update changed (what an image
+  // drawn over an older version must put back besides its own rectangles).
+  std::uint64_t layerEpoch = 0, layerVersion = 0, restorableFrom = 0;
+  std::deque<std::pair<std::uint64_t, std::vector<PixelRect>>> layerUpdates;
+  static constexpr std::size_t kLayerUpdatesKept = 64;
   RenderStats stats;
 
   void releaseSnapshot() {
@@ -1482,6 +1504,10 @@ struct Renderer::Impl {
     layerImage.rgba.resize(static_cast<std::size_t>(list.width) * list.height * 4);
     readBack(list, layerImage, PixelRect{0, 0, list.width, list.height});
     ++stats.layerBuilds;
+    static std::atomic<std::uint64_t> epochs{0};
+    layerEpoch = ++epochs;
+    layerVersion = restorableFrom = 0;
+    layerUpdates.clear();
   }
 
   // The tiles where the resolved opaque layer covers pixels in part (alpha
@@ -1504,12 +1530,23 @@ struct Renderer::Impl {
 
   // A frame over the retained layer: its image, with the dirty rectangles
   // redrawn from the snapshot on.
+  // With a history that knows the image (see ImageHistory), only what
+  // differs from the layer image is put back: the rectangles the image's
+  // last frame wrote, and those the layer's updates since then changed.
   void drawOverLayer(const DrawList& list, const std::vector<ViewItems>& perView, const std::vector<bool>& fresh,
-                     media::Image& image) {
+                     media::Image& image, ImageHistory::State* history) {
     const std::vector<PixelRect> rects = dirtyRects(list, perView, fresh);
     stats.retainedPixels += static_cast<long long>(list.width) * list.height;
     for (const bool f : fresh) stats.freshViews += f ? 1 : 0;
-    image.rgba = layerImage.rgba;  // same size: copies into the existing storage
+    if (history != nullptr && history->epoch == layerEpoch && history->pixels == image.rgba.data() &&
+        history->version >= restorableFrom) {
+      for (const PixelRect& r : history->written) copyPixels(layerImage, image, r);
+      for (const auto& [version, changed] : layerUpdates)
+        if (version > history->version)
+          for (const PixelRect& r : changed) copyPixels(layerImage, image, r);
+    } else {
+      image.rgba = layerImage.rgba;  // same size: copies into the existing storage
+    }
     underEverywhere = false;
     underRects = layerEdgeRects;
     redrawRects(list, perView, rects, Items::All, fresh, image);
@@ -1517,6 +1554,16 @@ struct Renderer::Impl {
     long long area = 0;
     for (const PixelRect& r : rects) area += static_cast<long long>(r.x1 - r.x0) * (r.y1 - r.y0);
     stats.redrawnPixels += area;
+    if (history != nullptr) *history = {layerEpoch, layerVersion, rects, image.rgba.data()};
+  }
+
+  // `r` of `from` into `to` (images of one size).
+  static void copyPixels(const media::Image& from, media::Image& to, const PixelRect& r) {
+    const std::size_t rowBytes = static_cast<std::size_t>(r.x1 - r.x0) * 4;
+    for (int y = r.y0; y < r.y1; ++y) {
+      const std::size_t at = (static_cast<std::size_t>(y) * from.width + r.x0) * 4;
+      std::memcpy(to.rgba.data() + at, from.rgba.data() + at, rowBytes);
+    }
   }
 
   // The layer brought up to date in place (see layerChanges): its
@@ -1528,6 +1575,11 @@ struct Renderer::Impl {
                    const std::vector<bool>& fresh) {
     redrawRects(list, perView, rects, Items::StaticOnly, fresh, layerImage);
     ++stats.layerUpdates;
+    layerUpdates.emplace_back(++layerVersion, rects);
+    if (layerUpdates.size() > kLayerUpdatesKept) {
+      restorableFrom = layerUpdates.front().first;  // an image at this version needs only the updates kept
+      layerUpdates.pop_front();
+    }
   }
 
   // Redraws `rects` (disjoint) of `image` from the snapshot on: the
@@ -1664,7 +1716,7 @@ struct Renderer::Impl {
     for (const PixelRect& r : rects) readBack(list, image, r);
   }
 
-  void render(const DrawList& list, media::Image& image) {
+  void render(const DrawList& list, media::Image& image, ImageHistory::State* history = nullptr) {
     if (list.width <= 0 || list.height <= 0)
       throw badInput({}, "image size {}x{}: expected positive width and height", list.width, list.height);
     ensureFramebuffers(list.width, list.height, std::max(1, list.msaaSamples));
@@ -1691,7 +1743,9 @@ struct Renderer::Impl {
     if (shadowMapsUsed > 0) glFinish();
     image.width = list.width;
     image.height = list.height;
-    image.rgba.resize(static_cast<std::size_t>(list.width) * list.height * 4);  // reused across frames
+    const std::size_t bytes = static_cast<std::size_t>(list.width) * list.height * 4;
+    if (history != nullptr && (image.rgba.size() != bytes || history->pixels != image.rgba.data())) *history = {};
+    image.rgba.resize(bytes);  // reused across frames
 
     // A layer needs disjoint views (an inset's clear would come between
     // the views' steps) and pays off from the second frame that shares it.
@@ -1737,13 +1791,14 @@ struct Renderer::Impl {
     }
     lastFrameOverLayer = overLayer;
     if (overLayer) {
-      drawOverLayer(list, perView, fresh, image);
+      drawOverLayer(list, perView, fresh, image, history);
       ++stats.retainedFrames;
     } else {
       clearScene(list);
       drawWhole(list, perView);
       readBack(list, image, PixelRect{0, 0, list.width, list.height});
       ++stats.wholeFrames;
+      if (history != nullptr) *history = {};
     }
     if (const GLenum err = glGetError(); err != GL_NO_ERROR)
       throw runtimeError({}, "OpenGL error 0x{:x} while rendering a {}x{} image", err, list.width, list.height);
@@ -1787,6 +1842,10 @@ media::Image Renderer::render(const DrawList& list) {
   return image;
 }
 void Renderer::render(const DrawList& list, media::Image& image) { impl_->render(list, image); }
+void Renderer::render(const DrawList& list, media::Image& image, ImageHistory& history) {
+  if (!history.state_) history.state_ = std::make_unique<ImageHistory::State>();
+  impl_->render(list, image, history.state_.get());
+}
 void Renderer::renderWithDepth(const DrawList& list, media::Image& image, std::vector<float>& depth) {
   // The depth of this list alone, drawn whole: no retained layer in between.
   const bool retain = impl_->retainLayers;

@@ -37,6 +37,26 @@ struct RenderStats {
   long long lineSegmentsInRects = 0, lineSegmentsDrawn = 0;
 };
 
+// What a renderer last wrote into one image that nothing else writes (a
+// video's pool of frames, a benchmark's one image). With it, a frame over
+// the retained layer puts back only the rectangles where the image differs
+// from the layer, instead of copying the whole layer image into it (8 MiB
+// at 1080p). Anything else that writes the image's pixels must reset() it;
+// a default one knows nothing (the whole layer image is copied).
+class ImageHistory {
+ public:
+  ImageHistory();
+  ~ImageHistory();
+  ImageHistory(ImageHistory&&) noexcept;
+  ImageHistory& operator=(ImageHistory&&) noexcept;
+  void reset();
+
+ private:
+  friend class Renderer;
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
 class Renderer {
  public:
   // The context must stay current on this thread for the renderer's life.
@@ -50,6 +70,9 @@ class Renderer {
   [[nodiscard]] media::Image render(const DrawList& list);
   // Same, into `image`, reusing its storage (frame after frame of a video).
   void render(const DrawList& list, media::Image& image);
+  // Same, told what this renderer last wrote into `image` (see ImageHistory),
+  // which it brings up to date.
+  void render(const DrawList& list, media::Image& image, ImageHistory& history);
   // Same, then reads back the depth buffer of what was drawn: window depth in
   // [0, 1] (1 = nothing), top row first, width × height. Only meshes and
   // arrows write depth (lines and translucent items do not), so this is what

@@ -1,19 +1,20 @@
 // The renderer on hand-built DrawLists: row order, MSAA resolve, transparency,
 // arrows and labels, in-process determinism, shader embedding.
+#include "render/renderer.hpp"
+
 #include <gtest/gtest.h>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
+#include <glm/gtc/matrix_transform.hpp>
 #include <string>
 #include <vector>
 
 #include "core/error.hpp"
 #include "render/gl_context.hpp"
 #include "render/mesh_builders.hpp"
-#include "render/renderer.hpp"
 #include "support/cli_runner.hpp"
 
 namespace rollspin::render {
@@ -811,6 +812,60 @@ TEST_F(RendererTest, AViewWhoseCameraMovesIsDrawnWholeBesideALayer) {
   // the ball's view as frame 4 drew it: stale), and the layer's own frame.
   EXPECT_TRUE(sameBytes(shuffled.render(followFrame(5)), whole[5]));
   EXPECT_TRUE(sameBytes(shuffled.render(followFrame(4)), whole[4]));
+}
+
+// Images reused with their histories (as a video's pool keeps them): a
+// frame over the layer puts back only what differs from the layer image,
+// across layer updates, fresh views, new layers and frames drawn whole in
+// between; every frame must still equal the frame drawn whole.
+TEST_F(RendererTest, ImagesReusedWithTheirHistoriesMatchFramesDrawnWhole) {
+  constexpr int kFrames = 6;
+  for (DrawList (*frame)(int) : {checkpointFrame, followFrame}) {
+    std::vector<media::Image> whole(kFrames);
+    Renderer plain(*context_, ShaderLibrary{});
+    plain.setRetainLayers(false);
+    for (int k = 0; k < kFrames; ++k) whole[k] = plain.render(frame(k));
+    Renderer layered(*context_, ShaderLibrary{});
+    std::array<media::Image, 3> pool;
+    std::array<ImageHistory, 3> histories;
+    int turn = 0;
+    const std::vector<int> order{0, 1, 2, 3, 3, 4, 5, 4, 1, 5, 0, 3, 2, 4, 1, 5, 5, 2};
+    for (const int k : order) {
+      const int slot = turn++ % 3;
+      layered.render(frame(k), pool[slot], histories[slot]);
+      ASSERT_TRUE(sameBytes(pool[slot], whole[k])) << "frame " << k << ", turn " << turn;
+    }
+    EXPECT_GT(layered.stats().retainedFrames, 10);
+    EXPECT_GT(layered.stats().layerUpdates, 3);
+    // A new layer (an opaque static mesh changed), then back.
+    DrawList changed = frame(2);
+    changed.meshes[0].material.color = {0.2f, 0.5f, 0.3f};
+    const media::Image expected = plain.render(changed);
+    for (const int k : {2, 3, -1, -1, 4, 2, 2, 2}) {
+      const int slot = turn++ % 3;
+      layered.render(k < 0 ? changed : frame(k), pool[slot], histories[slot]);
+      ASSERT_TRUE(sameBytes(pool[slot], k < 0 ? expected : whole[k])) << "frame " << k << ", turn " << turn;
+    }
+    // A frame drawn whole (overlapping views keep no layer) into an image
+    // whose history knew the layer, then the layer's frames again.
+    DrawList overlapping = frame(3);
+    overlapping.views[1].x -= 8;
+    const media::Image overlapped = plain.render(overlapping);
+    for (int slot = 0; slot < 3; ++slot) {
+      layered.render(overlapping, pool[slot], histories[slot]);
+      ASSERT_TRUE(sameBytes(pool[slot], overlapped)) << "slot " << slot;
+    }
+    for (const int k : {2, 4, 3}) {
+      const int slot = turn++ % 3;
+      layered.render(frame(k), pool[slot], histories[slot]);
+      ASSERT_TRUE(sameBytes(pool[slot], whole[k])) << "frame " << k << " after a whole frame, turn " << turn;
+    }
+    // Pixels written by someone else, the history reset: right again.
+    std::fill(pool[0].rgba.begin(), pool[0].rgba.end(), std::uint8_t{77});
+    histories[0].reset();
+    layered.render(frame(2), pool[0], histories[0]);
+    EXPECT_TRUE(sameBytes(pool[0], whole[2]));
+  }
 }
 
 TEST(ShaderLibrary, ShadersAreEmbeddedAndOverridable) {

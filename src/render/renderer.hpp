@@ -2,10 +2,11 @@
 // stay (and moving arrows) into a multisampled framebuffer object (default
 // 4×), resolved into one of a single sample where everything else is drawn
 // antialiased by its own coverage (ray-cast spheres, lines as capsules:
-// coverage = clamp(½ + (edge distance)/(pixel size), 0, 1)); then waits
-// (glFinish), reads the pixels back and flips the bottom-up GL rows exactly
-// once into a top-down Image. One key light with a shadow map per view, gamma-correct (sRGB)
-// output. GPU copies of meshes, textures and glyph atlases are cached across
+// coverage = clamp(½ + (edge distance)/(pixel size), 0, 1)); then reads the
+// pixels back and, on the CPU, puts each view's backdrop behind them (out =
+// c + (1 − a)·backdrop) and flips the bottom-up GL rows exactly once into a
+// top-down Image. One key light with a shadow map per view, gamma-correct
+// (sRGB) output. GPU copies of meshes, textures and glyph atlases are cached across
 // frames, keyed by the shared data they came from. Retained layers: while
 // the views and the static (not `dynamic`) items stay the same from frame to
 // frame, their image is kept and a frame redraws only the rectangles its

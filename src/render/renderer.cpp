@@ -914,10 +914,31 @@ struct Renderer::Impl {
     return &f;
   }
 
+  // The pixels glyph quads (relative to a view at ox, oy) can touch, with a
+  // margin for their filtered edges.
+  static PixelRect glyphBounds(std::span<const GlyphQuad> quads, int ox, int oy) {
+    float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
+    for (const GlyphQuad& q : quads) {
+      x0 = std::min({x0, q.x0, q.x1}), x1 = std::max({x1, q.x0, q.x1});
+      y0 = std::min({y0, q.y0, q.y1}), y1 = std::max({y1, q.y0, q.y1});
+    }
+    auto toInt = [](float f) { return static_cast<int>(std::clamp(f, -1e7f, 1e7f)); };
+    return PixelRect{ox + toInt(std::floor(x0)) - 2, oy + toInt(std::floor(y0)) - 2, ox + toInt(std::ceil(x1)) + 3,
+                     oy + toInt(std::ceil(y1)) + 3};
+  }
+
+  // Over a retained layer (drawClips set), a label whose glyphs reach none
+  // of the island's dirty rectangles is not drawn: it could change only
+  // pixels that are not read back (each label is a draw of its own, with
+  // its vertices uploaded; a frame has about twenty).
   void drawLabel(const LabelItem& label, glm::vec2 viewportSize, const glm::mat4* clipFromWorld) {
     std::vector<GlyphQuad> quads;
-    if (CachedFont* f = labelQuads(label, viewportSize, clipFromWorld, quads))
-      drawQuads(quads, viewportSize, label.color, f->id, false);
+    CachedFont* f = labelQuads(label, viewportSize, clipFromWorld, quads);
+    if (f == nullptr || quads.empty()) return;
+    if (drawClips != nullptr && clipView != nullptr &&
+        !reachesAny(*drawClips, glyphBounds(quads, clipView->x, clipView->y)))
+      return;
+    drawQuads(quads, viewportSize, label.color, f->id, false);
   }
 
   // What one view draws, gathered before anything is drawn so that the
@@ -1411,17 +1432,9 @@ struct Renderer::Impl {
         if (labelQuads(*part, size, clip, partQuads) != nullptr) first = partQuads.size();
       }
     if (first >= quads.size()) return {};
-    float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
-    for (const GlyphQuad& q : std::span(quads).subspan(first)) {
-      x0 = std::min({x0, q.x0, q.x1}), x1 = std::max({x1, q.x0, q.x1});
-      y0 = std::min({y0, q.y0, q.y1}), y1 = std::max({y1, q.y0, q.y1});
-    }
-    const int ox = v != nullptr ? v->x : 0, oy = v != nullptr ? v->y : 0;
     const PixelRect area = v != nullptr ? PixelRect{v->x, v->y, v->x + v->width, v->y + v->height}
                                         : PixelRect{0, 0, list.width, list.height};
-    auto toInt = [](float f) { return static_cast<int>(std::clamp(f, -1e7f, 1e7f)); };
-    return intersect(PixelRect{ox + toInt(std::floor(x0)) - 2, oy + toInt(std::floor(y0)) - 2,
-                               ox + toInt(std::ceil(x1)) + 3, oy + toInt(std::ceil(y1)) + 3},
+    return intersect(glyphBounds(std::span(quads).subspan(first), v != nullptr ? v->x : 0, v != nullptr ? v->y : 0),
                      area);
   }
 

@@ -71,6 +71,7 @@
   X(glGetString) \
   X(glGetUniformLocation) \
   X(glLinkProgram) \
+  X(glMultiDrawArrays) \
   X(glMultiDrawElements) \
   X(glPixelStorei) \
   X(glPolygonOffset) \
@@ -156,6 +157,7 @@ ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DECLARE)
 #define glGetString ::rollspin::render::gl_api::glGetString
 #define glGetUniformLocation ::rollspin::render::gl_api::glGetUniformLocation
 #define glLinkProgram ::rollspin::render::gl_api::glLinkProgram
+#define glMultiDrawArrays ::rollspin::render::gl_api::glMultiDrawArrays
 #define glMultiDrawElements ::rollspin::render::gl_api::glMultiDrawElements
 #define glPixelStorei ::rollspin::render::gl_api::glPixelStorei
 #define glPolygonOffset ::rollspin::render::gl_api::glPolygonOffset

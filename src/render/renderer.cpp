@@ -813,6 +813,7 @@ struct Renderer::Impl {
   RunsOfParts keptParts;
   std::vector<GLsizei> runCounts;
   std::vector<const void*> runOffsets;
+  std::vector<GLint> lineFirsts;  // drawPolyline's runs
 
   // Over a retained layer only the dirty rectangles are read back (see
   // drawOverLayer), so a polyline draws only the runs of segments whose
@@ -861,10 +862,17 @@ struct Renderer::Impl {
       if (reachesAny(*drawClips, screenBounds(v, clipFromWorld, &p.points[first], last - first + 1, margin)))
         keptParts.add(first, last);
     }
+    // The runs go to GL in one call, as a mesh's do.
+    lineFirsts.clear();
+    runCounts.clear();
     for (const RunsOfParts::Run& r : keptParts.runs()) {
-      glDrawArrays(GL_LINE_STRIP_ADJACENCY, static_cast<GLint>(r.begin), static_cast<GLsizei>(r.end - r.begin + 3));
+      lineFirsts.push_back(static_cast<GLint>(r.begin));
+      runCounts.push_back(static_cast<GLsizei>(r.end - r.begin + 3));
       stats.lineSegmentsDrawn += static_cast<long long>(r.end - r.begin);
     }
+    if (!lineFirsts.empty())
+      glMultiDrawArrays(GL_LINE_STRIP_ADJACENCY, lineFirsts.data(), runCounts.data(),
+                        static_cast<GLsizei>(lineFirsts.size()));
     stats.lineSegmentsInRects += static_cast<long long>(p.points.size() - 1);
   }
 

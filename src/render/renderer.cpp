@@ -1,14 +1,15 @@
 #include "render/renderer.hpp"
 
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <bit>
 #include <cstring>
 #include <deque>
-#include <glm/gtc/matrix_inverse.hpp>
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/type_ptr.hpp>
 #include <map>
 #include <optional>
 #include <span>
@@ -1554,13 +1555,14 @@ struct Renderer::Impl {
   // With a history that knows the image (see ImageHistory), only what
   // differs from the layer image is put back: the rectangles the image's
   // last frame wrote, and those the layer's updates since then changed.
-  void drawOverLayer(const DrawList& list, const std::vector<ViewItems>& perView, const std::vector<bool>& fresh,
-                     media::Image& image, ImageHistory::State* history) {
+  // Returns the rectangles drawn.
+  std::vector<PixelRect> drawOverLayer(const DrawList& list, const std::vector<ViewItems>& perView,
+                                       const std::vector<bool>& fresh, media::Image& image,
+                                       const ImageHistory::State* history) {
     const std::vector<PixelRect> rects = dirtyRects(list, perView, fresh);
     stats.retainedPixels += static_cast<long long>(list.width) * list.height;
     for (const bool f : fresh) stats.freshViews += f ? 1 : 0;
-    if (history != nullptr && history->epoch == layerEpoch && history->pixels == image.rgba.data() &&
-        history->version >= restorableFrom) {
+    if (history != nullptr && history->epoch == layerEpoch && history->version >= restorableFrom) {
       for (const PixelRect& r : history->written) copyPixels(layerImage, image, r);
       for (const auto& [version, changed] : layerUpdates)
         if (version > history->version)
@@ -1575,7 +1577,7 @@ struct Renderer::Impl {
     long long area = 0;
     for (const PixelRect& r : rects) area += static_cast<long long>(r.x1 - r.x0) * (r.y1 - r.y0);
     stats.redrawnPixels += area;
-    if (history != nullptr) *history = {layerEpoch, layerVersion, rects, image.rgba.data()};
+    return rects;
   }
 
   // `r` of `from` into `to` (images of one size).
@@ -1764,8 +1766,15 @@ struct Renderer::Impl {
     if (shadowMapsUsed > 0) glFinish();
     image.width = list.width;
     image.height = list.height;
+    // What the image holds, if its history knows; the history itself
+    // forgets until this frame is done (a frame that throws halfway leaves
+    // pixels it does not describe).
     const std::size_t bytes = static_cast<std::size_t>(list.width) * list.height * 4;
-    if (history != nullptr && (image.rgba.size() != bytes || history->pixels != image.rgba.data())) *history = {};
+    ImageHistory::State known;
+    if (history != nullptr) {
+      if (image.rgba.size() == bytes && history->pixels == image.rgba.data()) known = std::move(*history);
+      *history = {};
+    }
     image.rgba.resize(bytes);  // reused across frames
 
     // A layer needs disjoint views (an inset's clear would come between
@@ -1812,14 +1821,14 @@ struct Renderer::Impl {
     }
     lastFrameOverLayer = overLayer;
     if (overLayer) {
-      drawOverLayer(list, perView, fresh, image, history);
+      std::vector<PixelRect> drawn = drawOverLayer(list, perView, fresh, image, history != nullptr ? &known : nullptr);
+      if (history != nullptr) *history = {layerEpoch, layerVersion, std::move(drawn), image.rgba.data()};
       ++stats.retainedFrames;
     } else {
       clearScene(list);
       drawWhole(list, perView);
       readBack(list, image, PixelRect{0, 0, list.width, list.height});
       ++stats.wholeFrames;
-      if (history != nullptr) *history = {};
     }
     if (const GLenum err = glGetError(); err != GL_NO_ERROR)
       throw runtimeError({}, "OpenGL error 0x{:x} while rendering a {}x{} image", err, list.width, list.height);

@@ -1154,6 +1154,9 @@ struct Renderer::Impl {
     glReadPixels(r.x0, list.height - r.y1, width, rows, GL_RGBA, GL_UNSIGNED_BYTE, readRows.data());
     static_assert(std::endian::native == std::endian::little, "the packed RGBA8 words assume little endian");
     const std::uint32_t opaqueAlpha = list.transparent ? 0u : 255u;
+    // Each view's backdrop ends, sRGB-encoded once (not per row).
+    std::vector<std::pair<glm::vec3, glm::vec3>> ends;
+    for (const View& v : list.views) ends.emplace_back(encodeSrgb(v.backgroundTop), encodeSrgb(v.backgroundBottom));
     std::vector<int> cuts;
     for (int y = r.y0; y < r.y1; ++y) {
       // GL rows count from the bottom: read row k is image row r.y1 − 1 − k.
@@ -1171,14 +1174,17 @@ struct Renderer::Impl {
       for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
         const int x0 = cuts[c], x1 = cuts[c + 1];
         if (x0 == x1) continue;
-        const View* owner = nullptr;
-        for (const View& v : list.views)
-          if (y >= v.y && y < v.y + v.height && x0 >= v.x && x0 < v.x + v.width) owner = &v;
+        std::size_t owner = list.views.size();  // none
+        for (std::size_t i = 0; i < list.views.size(); ++i) {
+          const View& v = list.views[i];
+          if (y >= v.y && y < v.y + v.height && x0 >= v.x && x0 < v.x + v.width) owner = i;
+        }
         glm::vec3 backdrop(0.0f);
-        if (owner != nullptr && owner->background && !list.transparent) {
+        if (owner < list.views.size() && list.views[owner].background && !list.transparent) {
           // Linear in the row, sampled at the pixel centre.
-          const glm::vec3 top = encodeSrgb(owner->backgroundTop), bottom = encodeSrgb(owner->backgroundBottom);
-          backdrop = top + (bottom - top) * ((float(y - owner->y) + 0.5f) / float(owner->height));
+          const View& v = list.views[owner];
+          const auto& [top, bottom] = ends[owner];
+          backdrop = top + (bottom - top) * ((float(y - v.y) + 0.5f) / float(v.height));
         }
         compositeSpan(in + (x0 - r.x0), in + (x1 - r.x0), out + (x0 - r.x0), backdrop, opaqueAlpha);
       }

@@ -123,6 +123,8 @@ void BM_ClipFrames1080p(benchmark::State& state) {
   state.counters["process_cpu_ms_per_frame"] = 1e3 * (processCpuSeconds() - cpuStart) / n;
   state.counters["retained_share"] = double(renderer.stats().retainedFrames - before.retainedFrames) / n;
   state.counters["layer_builds_per_frame"] = double(renderer.stats().layerBuilds - before.layerBuilds) / n;
+  state.counters["redrawn_share"] = double(renderer.stats().redrawnPixels - before.redrawnPixels) /
+                                    double(std::max(1LL, renderer.stats().retainedPixels - before.retainedPixels));
   state.counters["layer_updates_per_frame"] = double(renderer.stats().layerUpdates - before.layerUpdates) / n;
   // The samples as the scene says them (ROLLSPIN_BENCH_SET may change them).
   state.SetLabel(sizeLabel() + ", " + std::to_string(spec.render.msaa) + "x MSAA" +

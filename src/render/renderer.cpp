@@ -253,6 +253,7 @@ struct Renderer::Impl {
   // rectangles of the spheres drawn before it in the frame.
   bool underEverywhere = true;
   std::vector<PixelRect> underRects;
+  std::vector<PixelRect> parts, underParts;  // drawImpostor's scratch
   std::vector<PixelRect> layerEdgeRects;  // tiles where the layer's opaque meshes cover pixels in part
   GLuint sceneFbo = 0, sceneColor = 0, sceneDepth = 0;
   GLuint scenePacked = 0;  // sceneColor viewed as R32UI: one packed RGBA8 word per pixel
@@ -684,7 +685,20 @@ struct Renderer::Impl {
     const View& v = *viewUniforms.view;
     const Material& m = *d.material;
     const bool opaque = m.opacity >= 1.0f;
-    if (drawClips != nullptr && !reachesAny(*drawClips, rect)) return;
+    // Over a retained layer, only the parts of the rectangle inside the
+    // rectangles being redrawn: an island's scissor box reaches pixels
+    // outside them, which are neither composited nor read back, and a large
+    // sphere (the Bloch sphere's glass) would be shaded over all of them.
+    // Each pixel is shaded as the whole rectangle shades it (the shader
+    // depends on the pixel's position alone).
+    parts.clear();
+    if (drawClips != nullptr) {
+      for (const PixelRect& clip : *drawClips)
+        if (const PixelRect p = intersect(clip, rect); !p.empty()) parts.push_back(p);
+      if (parts.empty()) return;
+    } else {
+      parts.push_back(rect);
+    }
     const glm::mat4 worldFromClip = glm::inverse(viewUniforms.clipFromWorld);
     const glm::vec4 viewport(float(v.x), float(fbHeight - v.y - v.height), float(v.width), float(v.height));
     // Opaque meshes are drawn without blending (drawOpaque): on for this one.
@@ -720,14 +734,13 @@ struct Renderer::Impl {
       glDepthMask(GL_FALSE);
       glBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
       if (underEverywhere) {
-        under.set("ndcRect", ndcRectOf(v, rect));
-        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        drawImpostorParts(under, v, parts);
       } else {
         for (const PixelRect& part : underRects) {
-          const PixelRect r = intersect(part, rect);
-          if (r.empty()) continue;
-          under.set("ndcRect", ndcRectOf(v, r));
-          glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+          underParts.clear();
+          for (const PixelRect& r : parts)
+            if (const PixelRect p = intersect(part, r); !p.empty()) underParts.push_back(p);
+          drawImpostorParts(under, v, underParts);
         }
       }
       glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
@@ -737,11 +750,19 @@ struct Renderer::Impl {
     }
     mesh.set("worldFromClip", worldFromClip);
     mesh.set("viewportRect", viewport);
-    mesh.set("ndcRect", ndcRectOf(v, rect));
     mesh.set("ndcDepth", 0.0f);
-    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    drawImpostorParts(mesh, v, parts);
     if (behindEdges && !underEverywhere) underRects.push_back(rect);  // its edges, for a sphere drawn after it
     if (opaque) glDisable(GL_BLEND);
+  }
+
+  // One rectangle of impostor.vert per part (disjoint: blending draws each
+  // pixel once).
+  void drawImpostorParts(Program& program, const View& v, const std::vector<PixelRect>& rects) {
+    for (const PixelRect& r : rects) {
+      program.set("ndcRect", ndcRectOf(v, r));
+      glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    }
   }
 
   // Image pixels (top-left origin) to the view's normalized device coordinates.

@@ -17,9 +17,12 @@ cp tests/fuzz/seeds/expression/* build-fuzz/corpus/expression/
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 # -timeout=300: a valid but long curve (a uv ellipse over t in [0, 6586],
 # ~1000 turns, found by this fuzzer) takes 5.7 s to fit in Release and 136 s
-# in this ASan + coverage build; that is work, not a hang. libFuzzer checks
-# -max_total_time between inputs, so such an input lengthens the run by at
-# most one input's time; a real hang still trips the limit.
+# in this ASan + coverage build; that is work, not a hang. One such input
+# took 341 s in CI, so fuzz_scene now bounds the panels a path may fit per
+# input (geometry::PanelBudget, 500: some 10 s here); the limit stays for
+# any other slow input. libFuzzer checks -max_total_time between inputs, so
+# a slow input lengthens the run by at most its own time; a real hang still
+# trips the limit.
 #
 # On a crash, CI's log is all there is: the fuzzer's progress lines are left
 # out, the report and stack follow, and last the input itself (gzip + base64:

@@ -243,6 +243,7 @@ void SurfaceCurvePath::fitPanel(double sigmaStart, double sigmaEnd, double sStar
     if (depth < kMaxPanelDepth) return split();
     notSmooth();
   }
+  PanelBudget::spend(sigmaStart);
 
   // σ at Chebyshev–Lobatto nodes in s, by Newton on the quadrature.
   auto solveSigma = [&](double ds) {

@@ -237,11 +237,32 @@ void chebyshevEvaluate(const std::vector<double>& c, double x, double& f, double
   }
 }
 
+namespace {
+thread_local PanelBudget* currentPanelBudget = nullptr;
+}  // namespace
+
+PanelBudget::PanelBudget(std::size_t panels) : limit_(panels), left_(panels), outer_(currentPanelBudget) {
+  currentPanelBudget = this;
+}
+
+PanelBudget::~PanelBudget() { currentPanelBudget = outer_; }
+
+void PanelBudget::spend(double sigma) {
+  PanelBudget* budget = currentPanelBudget;
+  if (budget == nullptr) return;
+  if (budget->left_ == 0)
+    throw GeometryError("the path needs more than the " + std::to_string(budget->limit_) +
+                        " panels this run allows (reached near curve parameter " + describeNumber(sigma) +
+                        "): shorten its parameter range, turns or length");
+  --budget->left_;
+}
+
 PiecewiseChebyshevUvCurve::PiecewiseChebyshevUvCurve(const std::function<Vec2(double)>& sample,
                                                      std::vector<double> cuts, int degree, std::string description)
     : cuts_(std::move(cuts)), description_(std::move(description)) {
   const std::vector<double> x = chebyshevLobattoNodes(degree);
   for (std::size_t p = 0; p + 1 < cuts_.size(); ++p) {
+    PanelBudget::spend(cuts_[p]);
     const double mid = 0.5 * (cuts_[p] + cuts_[p + 1]), half = 0.5 * (cuts_[p + 1] - cuts_[p]);
     std::vector<double> us(x.size()), vs(x.size());
     for (std::size_t j = 0; j < x.size(); ++j) {

@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -32,6 +33,29 @@ using Vec2 = Eigen::Vector2d;
 class GeometryError : public std::runtime_error {
  public:
   explicit GeometryError(const std::string& message) : std::runtime_error(message) {}
+};
+
+// Bounds the panels that paths built on this thread may fit while the
+// budget lives (the innermost of nested ones counts): the arc-length panels
+// of a SurfaceCurvePath and the pieces of a PiecewiseChebyshevUvCurve. Past
+// the bound the path throws GeometryError. Building a path costs about its
+// panels (some 1 ms each with expression curves in a Release build, 25×
+// that under the fuzzer's sanitizers, then a contact check per panel), and
+// a long parameter range needs panels in proportion: a caller that must
+// bound its time per input, as the fuzzer does, sets a budget. None by
+// default: a scene may ask for as long a path as it likes.
+class PanelBudget {
+ public:
+  explicit PanelBudget(std::size_t panels);
+  ~PanelBudget();
+  PanelBudget(const PanelBudget&) = delete;
+  PanelBudget& operator=(const PanelBudget&) = delete;
+  // One more panel, at curve parameter `sigma` (for the message).
+  static void spend(double sigma);
+
+ private:
+  std::size_t limit_, left_;
+  PanelBudget* outer_;
 };
 
 struct UvJet {

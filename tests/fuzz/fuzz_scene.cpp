@@ -7,10 +7,16 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
+#include "geometry/uv_curve.hpp"
 #include "model/rolling_model.hpp"
 #include "motion/solve_job.hpp"
-#include "core/error.hpp"
 #include "scene/scene_loader.hpp"
+
+namespace {
+// Ten times the most any scene in scenes/ needs (48); some 20 ms each here.
+constexpr std::size_t kPanelsPerInput = 500;
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string input(reinterpret_cast<const char*>(data), size);
@@ -23,6 +29,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     start = nul + 1;
   }
   const std::vector<std::string> overrides(parts.begin() + 1, parts.end());
+  // Building a path costs about its panels, and a scene may ask for any
+  // number (a uv curve over t in [0, 26000] takes 17 s in Release, several
+  // minutes here): work, not a bug. Bounded per input, as an image decoder's
+  // fuzzer bounds the pixels it decodes.
+  const rollspin::geometry::PanelBudget budget(kPanelsPerInput);
   try {
     const rollspin::scene::SceneSpec spec = rollspin::scene::loadSceneText(parts[0], "<fuzz>", overrides);
     const rollspin::model::RollingModel model = rollspin::model::buildModel(spec);

@@ -9,6 +9,8 @@
 
 #include <unistd.h>
 
+#include "core/error.hpp"
+#include "geometry/uv_curve.hpp"
 #include "model/rolling_model.hpp"
 #include "motion/solve_job.hpp"
 #include "media/output_format.hpp"
@@ -77,6 +79,34 @@ TEST(SceneLoader, IntegersBeyondTwoToThe53AreNumbers) {
       "[path]\nkind = \"points\"\npoints = [[0, 0], [1, 9007199254740993], [2, 0]]\n", "s.toml");
   ASSERT_EQ(points.path.points.size(), 3u);
   EXPECT_EQ(points.path.points[1][1], nearest);
+}
+
+// A uv ellipse over a long parameter range needs arc-length panels in
+// proportion (about 7 per turn): under a PanelBudget (the fuzzer sets one)
+// building it stops with a BadInput naming the path key, without one it
+// builds, and a budget ends with its scope.
+TEST(PanelBudget, BoundsTheWorkOfBuildingALongPath) {
+  const std::string text =
+      "[surface]\nkind = \"height\"\nz = \"0.3*sin(x)*cos(y)\"\n[path]\nkind = \"uv\"\n"
+      "u = \"2*cos(t)\"\nv = \"1.5*sin(t)\"\nt_end = 628.3\n";  // 100 turns
+  const scene::SceneSpec spec = scene::loadSceneText(text, "long.toml");
+  {
+    const geometry::PanelBudget budget(200);
+    try {
+      (void)model::buildModel(spec);
+      ADD_FAILURE() << "a path of 100 turns built within 200 panels";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("path"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("200 panels"), std::string::npos) << e.what();
+    }
+    {
+      const geometry::PanelBudget roomy(2000);  // the innermost counts
+      EXPECT_NO_THROW((void)model::buildModel(spec));
+    }
+    EXPECT_THROW((void)model::buildModel(spec), Error);
+  }
+  const model::RollingModel model = model::buildModel(spec);
+  EXPECT_GT(model.path->length(), 100.0 * 2.0 * std::numbers::pi);
 }
 
 TEST(BrockettPlate, ContactCircleIsHalfThePlateCircleAndTheTopMovesWithThePlate) {

@@ -691,13 +691,11 @@ struct Renderer::Impl {
     // sphere (the Bloch sphere's glass) would be shaded over all of them.
     // Each pixel is shaded as the whole rectangle shades it (the shader
     // depends on the pixel's position alone).
-    parts.clear();
     if (drawClips != nullptr) {
-      for (const PixelRect& clip : *drawClips)
-        if (const PixelRect p = intersect(clip, rect); !p.empty()) parts.push_back(p);
+      clippedParts(*drawClips, rect, parts);
       if (parts.empty()) return;
     } else {
-      parts.push_back(rect);
+      parts.assign({rect});
     }
     const glm::mat4 worldFromClip = glm::inverse(viewUniforms.clipFromWorld);
     const glm::vec4 viewport(float(v.x), float(fbHeight - v.y - v.height), float(v.width), float(v.height));
@@ -737,9 +735,7 @@ struct Renderer::Impl {
         drawImpostorParts(under, v, parts);
       } else {
         for (const PixelRect& part : underRects) {
-          underParts.clear();
-          for (const PixelRect& r : parts)
-            if (const PixelRect p = intersect(part, r); !p.empty()) underParts.push_back(p);
+          clippedParts(parts, part, underParts);
           drawImpostorParts(under, v, underParts);
         }
       }
@@ -754,6 +750,13 @@ struct Renderer::Impl {
     drawImpostorParts(mesh, v, parts);
     if (behindEdges && !underEverywhere) underRects.push_back(rect);  // its edges, for a sphere drawn after it
     if (opaque) glDisable(GL_BLEND);
+  }
+
+  // The non-empty parts of `rects` inside `box`, into `out`.
+  static void clippedParts(const std::vector<PixelRect>& rects, const PixelRect& box, std::vector<PixelRect>& out) {
+    out.clear();
+    for (const PixelRect& r : rects)
+      if (const PixelRect p = intersect(r, box); !p.empty()) out.push_back(p);
   }
 
   // One rectangle of impostor.vert per part (disjoint: blending draws each
@@ -1176,9 +1179,10 @@ struct Renderer::Impl {
     static_assert(std::endian::native == std::endian::little, "the packed RGBA8 words assume little endian");
     const std::uint32_t opaqueAlpha = list.transparent ? 0u : 255u;
     // Each view's backdrop ends, sRGB-encoded once (not per row).
-    std::vector<std::pair<glm::vec3, glm::vec3>> ends;
+    std::vector<std::pair<glm::vec3, glm::vec3>>& ends = backdropEnds;
+    ends.clear();
     for (const View& v : list.views) ends.emplace_back(encodeSrgb(v.backgroundTop), encodeSrgb(v.backgroundBottom));
-    std::vector<int> cuts;
+    std::vector<int>& cuts = rowCuts;
     for (int y = r.y0; y < r.y1; ++y) {
       // GL rows count from the bottom: read row k is image row r.y1 − 1 − k.
       const std::uint32_t* in = readRows.data() + static_cast<std::size_t>(r.y1 - 1 - y) * width;
@@ -1220,6 +1224,8 @@ struct Renderer::Impl {
     }
   }
   std::vector<std::uint32_t> readRows;  // readBack's rows as read, bottom-up
+  std::vector<std::pair<glm::vec3, glm::vec3>> backdropEnds;  // readBack's, per view
+  std::vector<int> rowCuts;                                   // readBack's, per row
 
   // out = c + (1 − a)·backdrop per channel, rounded, clamped; alpha at
   // least opaqueAlpha. Pixels the scene covers fully keep their word, and

@@ -61,6 +61,7 @@ void BM_RenderFrame1080p(benchmark::State& state) {
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
     return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
   };
+  const render::RenderStats before = renderer.stats();
   const double cpuStart = processCpuSeconds();
   media::Image image;
   for (auto _ : state) {
@@ -70,6 +71,8 @@ void BM_RenderFrame1080p(benchmark::State& state) {
   }
   state.counters["process_cpu_ms_per_frame"] =
       1e3 * (processCpuSeconds() - cpuStart) / double(std::max<benchmark::IterationCount>(1, state.iterations()));
+  state.counters["sampled_share"] = double(renderer.stats().sampledPixels - before.sampledPixels) /
+                                    double(std::max(1LL, renderer.stats().wholeViewPixels - before.wholeViewPixels));
   state.SetLabel(sizeLabel() + ", " + std::to_string(spec.render.msaa) + "x MSAA, shadow, side-by-side");
 }
 // Arg = MSAA samples; 4 is the target configuration, 1 shows what MSAA costs
@@ -126,6 +129,8 @@ void BM_ClipFrames1080p(benchmark::State& state) {
   state.counters["redrawn_share"] = double(renderer.stats().redrawnPixels - before.redrawnPixels) /
                                     double(std::max(1LL, renderer.stats().retainedPixels - before.retainedPixels));
   state.counters["layer_updates_per_frame"] = double(renderer.stats().layerUpdates - before.layerUpdates) / n;
+  state.counters["sampled_share"] = double(renderer.stats().sampledPixels - before.sampledPixels) /
+                                    double(std::max(1LL, renderer.stats().wholeViewPixels - before.wholeViewPixels));
   // The samples as the scene says them (ROLLSPIN_BENCH_SET may change them).
   state.SetLabel(sizeLabel() + ", " + std::to_string(spec.render.msaa) + "x MSAA" +
                  (state.range(0) == 1 ? ", camera follows the ball" : ", fixed camera") +

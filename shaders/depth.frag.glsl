@@ -1,5 +1,6 @@
 #version 450 core
-// Depth alone (colour writes are off): the renderer draws the multisampled
-// opaque meshes' depth again at the pixel centres of the one-sample scene
-// with mesh.vert and this (see depthAtCentres).
+// Depth alone (colour writes are off): the renderer draws the moving meshes
+// that it draws in samples (arrows) at the pixel centres of the one-sample
+// scene with mesh.vert and this, for their depth; their colour there comes
+// from the resolve of their samples (see drawOpaqueAtCentres).
 void main() {}

@@ -19,6 +19,7 @@
 
 #include "core/error.hpp"
 #include "core/stage_log.hpp"
+#include "render/coverage_edges.hpp"
 #include "render/font_atlas.hpp"
 #include "render/gl.hpp"
 #include "render/layer_key.hpp"
@@ -237,20 +238,22 @@ struct Renderer::Impl {
     GLuint fbo = 0, texture = 0;
   };
   std::vector<ShadowMap> shadowMaps;  // one per view that has a shadow (usually one)
-  // The static opaque meshes are drawn into opaqueFbo (multisampled; none
-  // at msaa = 1) and resolved into sceneFbo (a colour texture of one sample,
-  // over transparent black), where every later step draws with analytic
-  // coverage; then read back, the backdrop put behind and the rows flipped
-  // top-down on the CPU (see readBack).
+  // The static opaque meshes are drawn into sceneFbo (a colour texture of
+  // one sample, over transparent black), and near their edges also into
+  // opaqueFbo (multisampled; none at msaa = 1) and resolved over it (see
+  // drawViewOpaque); every later step draws into sceneFbo with analytic
+  // coverage; then it is read back, the backdrop put behind and the rows
+  // flipped top-down on the CPU (see readBack).
   GLuint opaqueFbo = 0, opaqueColor = 0, opaquePacked = 0, opaqueDepth = 0;
   GLuint resolveFbo = 0;            // the scene's colour as packed words (see resolveOpaque)
   std::optional<Program> resolver;  // for the sample count of opaqueFbo
   int targetSamples = 1;            // of the framebuffer beginView bound
-  bool depthOnly = false;           // colour writes are off (see depthAtCentres)
+  bool depthOnly = false;           // colour writes are off (see drawOpaqueAtCentres)
   // Where a ray-cast sphere's under pass (drawImpostor) can change a pixel:
-  // anywhere in a frame drawn whole; over a retained layer, the layer's
-  // edge tiles, the tiles of moving meshes drawn in samples, and the
-  // rectangles of the spheres drawn before it in the frame.
+  // in a view drawn whole, its tiles drawn in samples; over a retained
+  // layer, the layer's edge tiles and the tiles of moving meshes drawn in
+  // samples; and the rectangles of the spheres drawn before it in the
+  // frame. Everywhere when set (at one sample: see drawViewAfterOpaque).
   bool underEverywhere = true;
   std::vector<PixelRect> underRects;
   std::vector<PixelRect> parts, underParts;  // drawImpostor's scratch
@@ -263,6 +266,7 @@ struct Renderer::Impl {
     std::shared_ptr<const MeshData> keepAlive;
     GpuMesh gpu;
     bool used = false;  // by the current frame; unused entries are evicted after it
+    std::optional<MeshEdges> edges;  // made on first use (see sampleTiles)
   };
   std::map<const MeshData*, CachedMesh> meshes;
   struct CachedTexture {
@@ -392,15 +396,11 @@ struct Renderer::Impl {
     fbSamples = samples;
   }
 
-  // Where the static opaque meshes are drawn: their own multisampled
-  // framebuffer, or the scene itself at one sample.
-  GLuint staticTarget() const { return opaqueFbo != 0 ? opaqueFbo : sceneFbo; }
-
   // The opaque meshes' samples of `r` (image pixels) averaged into the
-  // scene's colour: what every later step draws over at one sample. Not
-  // their depth: a resolve keeps one sample's, off the pixel centre, where
-  // a step at one sample tests its own depth (a small ball would sink into
-  // the surface it touches); depthAtCentres draws it instead.
+  // scene's colour, over what they drew there at one sample. Not their
+  // depth: a resolve keeps one sample's, off the pixel centre, where a step
+  // at one sample tests its own depth (a small ball would sink into the
+  // surface it touches); the scene keeps the depth of the one-sample draw.
   void resolveOpaque(const DrawList& list, const PixelRect& r) {
     if (opaqueFbo == 0) return;
     glBindFramebuffer(GL_FRAMEBUFFER, resolveFbo);
@@ -423,9 +423,16 @@ struct Renderer::Impl {
 
   const GpuMesh& gpuMesh(const std::shared_ptr<const MeshData>& m) {
     auto it = meshes.find(m.get());
-    if (it == meshes.end()) it = meshes.emplace(m.get(), CachedMesh{m, upload(*m), false}).first;
+    if (it == meshes.end()) it = meshes.emplace(m.get(), CachedMesh{m, upload(*m), false, std::nullopt}).first;
     it->second.used = true;
     return it->second.gpu;
+  }
+
+  const MeshEdges& meshEdges(const std::shared_ptr<const MeshData>& m) {
+    gpuMesh(m);
+    CachedMesh& cached = meshes.at(m.get());
+    if (!cached.edges) cached.edges = meshEdgesOf(*m);
+    return *cached.edges;
   }
 
   GLuint gpuTexture(const std::shared_ptr<const TextureImage>& t) {
@@ -752,6 +759,18 @@ struct Renderer::Impl {
     if (opaque) glDisable(GL_BLEND);
   }
 
+  // The parts of `r` outside `hole`, appended to `out` (disjoint, at most four).
+  static void outside(const PixelRect& r, const PixelRect& hole, std::vector<PixelRect>& out) {
+    const PixelRect h = intersect(r, hole);
+    if (h.empty()) {
+      out.push_back(r);
+      return;
+    }
+    for (const PixelRect& p : {PixelRect{r.x0, r.y0, r.x1, h.y0}, PixelRect{r.x0, h.y1, r.x1, r.y1},
+                               PixelRect{r.x0, h.y0, h.x0, h.y1}, PixelRect{h.x1, h.y0, r.x1, h.y1}})
+      if (!p.empty()) out.push_back(p);
+  }
+
   // The non-empty parts of `rects` inside `box`, into `out`.
   static void clippedParts(const std::vector<PixelRect>& rects, const PixelRect& box, std::vector<PixelRect>& out) {
     out.clear();
@@ -784,8 +803,8 @@ struct Renderer::Impl {
       glBindTexture(GL_TEXTURE_2D, gpuTexture(m.texture));
     }
     const std::optional<PixelRect> impostor = impostorRect(d, clipToShadowBox);
-    // Depth alone (depthAtCentres) needs no shading; a ray-cast sphere's
-    // depth comes from its fragment stage.
+    // Depth alone (drawOpaqueAtCentres) needs no shading; a ray-cast
+    // sphere's depth comes from its fragment stage.
     Program& mesh = depthOnly && !impostor
                         ? depthProgram
                         : meshProgram(pattern, shadowOn && m.lit, m.lit, m.specular > 0.0f, impostor ? 1 : 0);
@@ -1048,15 +1067,157 @@ struct Renderer::Impl {
     glDisable(GL_CULL_FACE);
   }
 
-  // The depth of the meshes drawn in samples (`which` of them), at the
-  // pixel centres, into the scene bound by beginView (colour untouched).
-  void depthAtCentres(const ViewItems& viewItems, Items which) {
-    if (opaqueFbo == 0) return;  // drawn into the scene itself, depth and all
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    depthOnly = true;
+  // The opaque meshes drawn in samples (`which` of them) drawn at one
+  // sample into the scene bound by beginView, for the depth at the pixel
+  // centres, everywhere, and the static ones' colour: right wherever no
+  // triangle covers a pixel in part (every sample would show what the
+  // centre shows, and the resolve's rounded mean of equal samples is that
+  // value). Elsewhere, and wherever a moving one (an arrow) can be, the
+  // samples are resolved over it (see sampleTiles), so a moving one is
+  // drawn for its depth alone. Drawn as in samples: a sphere as its
+  // triangles, not ray-cast.
+  void drawOpaqueAtCentres(const ViewItems& viewItems, Items which) {
+    const bool depthAlone = which == Items::DynamicOnly && opaqueFbo != 0;
+    if (depthAlone) {
+      glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+      depthOnly = true;
+    }
+    targetSamples = fbSamples;
     drawOpaque(viewItems, which, Pass::Samples);
-    depthOnly = false;
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    targetSamples = 1;
+    if (depthAlone) {
+      depthOnly = false;
+      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    }
+  }
+
+  // The tiles of view v (inside its rectangle) where the opaque meshes drawn
+  // in samples (`which` of them) can cover a pixel in part, so where their
+  // samples are drawn and resolved: near a static mesh's outline or cuts
+  // (coverage_edges.hpp), where two static meshes' boxes meet (their
+  // intersection is no edge of either), and all over a moving one's bounds
+  // (an arrow: the same tiles redrawSamples redraws over a layer).
+  // A surface that intersects itself gets no samples along the crossing.
+  std::vector<PixelRect> sampleTiles(const DrawList& list, const View& v, const ViewItems& viewItems, Items which) {
+    TileGrid grid(list.width, list.height);
+    const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+    std::vector<PixelRect> bounds;
+    std::vector<std::pair<glm::vec3, glm::vec3>> boxes;  // the static meshes' world boxes
+    for (const Drawable& d : viewItems.items) {
+      if (d.material->opacity < 1.0f || !inSamplesPass(d) || !takes(which, d.dynamic)) continue;
+      if (d.dynamic) {
+        bounds.clear();
+        meshBounds(v, clipFromWorld, d, bounds);
+        for (const PixelRect& r : bounds) grid.add(r);
+        continue;
+      }
+      addOutlineTiles(*d.mesh, meshEdges(d.mesh), d.worldFromModel, d.material->cutPlane, v, 2.0f, grid);
+      const GpuMesh& g = gpuMesh(d.mesh);
+      glm::vec3 lo(1e30f), hi(-1e30f);
+      for (int k = 0; k < 8; ++k) {
+        const glm::vec3 corner(d.worldFromModel * glm::vec4(k & 1 ? g.hi.x : g.lo.x, k & 2 ? g.hi.y : g.lo.y,
+                                                            k & 4 ? g.hi.z : g.lo.z, 1.0f));
+        lo = glm::min(lo, corner);
+        hi = glm::max(hi, corner);
+      }
+      boxes.emplace_back(lo, hi);
+    }
+    for (std::size_t a = 0; a < boxes.size(); ++a)
+      for (std::size_t b = a + 1; b < boxes.size(); ++b) {
+        const glm::vec3 lo = glm::max(boxes[a].first, boxes[b].first), hi = glm::min(boxes[a].second, boxes[b].second);
+        if (lo.x > hi.x || lo.y > hi.y || lo.z > hi.z) continue;
+        glm::vec3 corners[8];
+        for (int k = 0; k < 8; ++k)
+          corners[k] = glm::vec3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+        grid.add(screenBounds(v, clipFromWorld, corners, 8, 2.0f));
+      }
+    const PixelRect area{v.x, v.y, v.x + v.width, v.y + v.height};
+    std::vector<PixelRect> tiles;
+    for (const PixelRect& r : grid.rects())
+      if (const PixelRect inside = intersect(r, area); !inside.empty()) tiles.push_back(inside);
+    return tiles;
+  }
+
+  // A view's opaque meshes drawn whole (in a frame drawn whole, or a fresh
+  // view): at one sample, then in samples tile rectangle by tile rectangle
+  // of sampleTiles, resolved over them. `clear`: the view's rectangle is cleared
+  // first, scissored (an inset, a fresh view); otherwise the frame's one
+  // clear did it. llvmpipe pays for samples (a clear, a draw and a resolve
+  // of four values a pixel) only near edges: a 1080p frame whose camera
+  // moves drew its ball view's floor in samples in full.
+  // Returns the tiles drawn in samples: the only pixels that the meshes
+  // cover in part (alpha strictly between 0 and 1).
+  std::vector<PixelRect> drawViewOpaque(const DrawList& list, const View& v, const ViewItems& viewItems, bool clear) {
+    beginView(list, v, viewItems, nullptr);
+    if (clear) {
+      glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+      glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
+    }
+    drawOpaqueAtCentres(viewItems, Items::StaticOnly);
+    drawOpaqueAtCentres(viewItems, Items::DynamicOnly);
+    if (opaqueFbo == 0) return {};
+    const std::vector<PixelRect> tiles = sampleTiles(list, v, viewItems, Items::All);
+    stats.wholeViewPixels += static_cast<long long>(v.width) * v.height;
+    for (const PixelRect& r : tiles) stats.sampledPixels += static_cast<long long>(r.x1 - r.x0) * (r.y1 - r.y0);
+    // Each tile rectangle drawn in a box of its own, a pixel wider than it:
+    // a multisampled pixel on a scissor's edge can lose samples, and those
+    // it keeps are shaded at their centroid, off the pixel's (seen: one
+    // pixel in a 1080p frame differed from a draw without a scissor, on a
+    // box's top row). Islands (see redrawRects) would merge the tiles along
+    // a long diagonal edge into the box it spans. So the boxes go in
+    // rounds: no box of a round reaches another rectangle of it, and a
+    // round's rectangles are resolved before the next round's boxes (which
+    // can reach them) are cleared and drawn. Rectangles that touch are in
+    // different rounds; two to four rounds in practice.
+    const PixelRect area{v.x, v.y, v.x + v.width, v.y + v.height};
+    auto boxOf = [&](const PixelRect& r) { return intersect(PixelRect{r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1}, area); };
+    std::vector<int> roundOf(tiles.size(), 0);
+    int rounds = 0;
+    for (std::size_t i = 0; i < tiles.size(); ++i) {
+      std::vector<bool> taken(static_cast<std::size_t>(rounds) + 1, false);
+      for (std::size_t j = 0; j < i; ++j)
+        if (overlaps(boxOf(tiles[i]), tiles[j])) taken[static_cast<std::size_t>(roundOf[j])] = true;
+      while (taken[static_cast<std::size_t>(roundOf[i])]) ++roundOf[i];
+      rounds = std::max(rounds, roundOf[i] + 1);
+    }
+    std::vector<PixelRect> oneBox(1);
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    for (int round = 0; round < rounds; ++round) {
+      for (std::size_t i = 0; i < tiles.size(); ++i) {
+        if (roundOf[i] != round) continue;
+        oneBox[0] = boxOf(tiles[i]);
+        beginView(list, v, viewItems, &oneBox[0], opaqueFbo);
+        glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
+      }
+      drawClips = &oneBox;
+      clipView = &v;
+      for (std::size_t i = 0; i < tiles.size(); ++i) {
+        if (roundOf[i] != round) continue;
+        oneBox[0] = boxOf(tiles[i]);
+        beginView(list, v, viewItems, &oneBox[0], opaqueFbo);
+        drawOpaque(viewItems, Items::StaticOnly, Pass::Samples);
+        drawOpaque(viewItems, Items::DynamicOnly, Pass::Samples);
+      }
+      drawClips = nullptr;
+      clipView = nullptr;
+      for (std::size_t i = 0; i < tiles.size(); ++i)
+        if (roundOf[i] == round) resolveOpaque(list, tiles[i]);
+    }
+    return tiles;
+  }
+
+  // After drawViewOpaque: the steps at one sample, a ray-cast sphere's
+  // under pass only where the meshes cover pixels in part (`sampled`) or a
+  // sphere drawn before it does (the pass changes nothing elsewhere: see
+  // drawImpostor), then the rest.
+  void drawViewAfterOpaque(const DrawList& list, int view, const ViewItems& viewItems, std::vector<PixelRect> sampled) {
+    const bool under = underEverywhere;
+    std::vector<PixelRect> kept = std::exchange(underRects, std::move(sampled));
+    underEverywhere = false;
+    drawAfterResolve(viewItems);
+    underEverywhere = under;
+    underRects = std::move(kept);
+    drawRest(list, view, viewItems, Items::All);
   }
 
   // The receivers' re-shade (not in a static layer: the shadow moves with
@@ -1251,15 +1412,17 @@ struct Renderer::Impl {
 
   // ---- Retained layers ----------------------------------------------------
   //
-  // A frame is drawn in this order, view by view. In samples (opaqueFbo,
-  // msaa of them): the static opaque meshes, then the moving opaque meshes
-  // that are not spheres (arrows). Resolved into the scene (one sample):
-  // their colour averaged, their depth drawn again at the pixel centres.
-  // Then at one sample, each step antialiased by its own coverage: the
-  // receivers' re-shade inside the shadow box; the moving spheres, ray-cast;
+  // A frame is drawn in this order, view by view. The static opaque
+  // meshes, then the moving opaque meshes that are not spheres (arrows), at
+  // one sample into the scene (its colour where no pixel is covered in
+  // part, the depth at the pixel centres everywhere), and in samples
+  // (opaqueFbo, msaa of them) in the tiles near their edges and over the
+  // arrows, resolved there over the scene (see drawViewOpaque). Then at one
+  // sample, each step antialiased by its own coverage: the receivers'
+  // re-shade inside the shadow box; the moving spheres, ray-cast;
   // depth-tested lines; translucent meshes; overlays (see drawRest). So
-  // llvmpipe pays for the samples only where a layer keeps them, and per
-  // frame only over the arrows.
+  // llvmpipe pays for the samples only near edges, and over a layer only
+  // over the arrows.
   // When the static items and the views are the same as in the frame
   // before, the renderer keeps (a) the scene after the static opaque meshes
   // (colour and depth, one sample, and their samples too) and (b) the
@@ -1487,35 +1650,27 @@ struct Renderer::Impl {
       const View& v = list.views[i];
       bool overlapsEarlier = false;
       for (std::size_t j = 0; j < i; ++j) overlapsEarlier = overlapsEarlier || overlap(list.views[i], list.views[j]);
-      beginView(list, v, perView[i], nullptr, staticTarget());
-      if (overlapsEarlier) {
-        // An inset over a view drawn before clears its own rectangle (a
-        // scissored clear is a full-screen quad on llvmpipe, per sample:
-        // only an inset pays for it).
-        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-        glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
-      }
-      drawOpaque(perView[i], Items::StaticOnly, Pass::Samples);
-      drawOpaque(perView[i], Items::DynamicOnly, Pass::Samples);
-      resolveOpaque(list, PixelRect{v.x, v.y, v.x + v.width, v.y + v.height});
+      // An inset over a view drawn before clears its own rectangle (a
+      // scissored clear is a full-screen quad on llvmpipe: only an inset
+      // pays for it).
+      std::vector<PixelRect> sampled = drawViewOpaque(list, v, perView[i], overlapsEarlier);
       beginView(list, v, perView[i], nullptr);
-      if (overlapsEarlier && opaqueFbo != 0) glClear(GL_DEPTH_BUFFER_BIT);  // the colour came with the resolve
-      depthAtCentres(perView[i], Items::StaticOnly);
-      depthAtCentres(perView[i], Items::DynamicOnly);
-      drawAfterResolve(perView[i]);
-      drawRest(list, static_cast<int>(i), perView[i], Items::All);
+      drawViewAfterOpaque(list, static_cast<int>(i), perView[i], std::move(sampled));
     }
     drawImageLabels(list, Items::All, PixelRect{0, 0, list.width, list.height});
   }
 
   // One unscissored clear of the whole scene: llvmpipe does it per tile as
   // the tile is first rasterized; a scissored clear would be a quad draw.
-  void clearScene(const DrawList& list) {
+  // The samples too only for a layer, which draws them whole: llvmpipe
+  // fills every tile of a cleared buffer, and elsewhere only the tiles near
+  // edges are drawn in samples (each cleared with a scissor first).
+  void clearScene(const DrawList& list, bool samplesToo) {
     glDisable(GL_SCISSOR_TEST);
     glViewport(0, 0, list.width, list.height);
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glDepthMask(GL_TRUE);
-    for (const GLuint fbo : {opaqueFbo, sceneFbo}) {
+    for (const GLuint fbo : {samplesToo ? opaqueFbo : 0u, sceneFbo}) {
       if (fbo == 0) continue;
       glBindFramebuffer(GL_FRAMEBUFFER, fbo);
       glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -1526,23 +1681,31 @@ struct Renderer::Impl {
   // opaque meshes, and reads their finished image into layerImage.
   void buildLayer(const DrawList& list, const std::vector<ViewItems>& perView) {
     ensureSnapshot();
-    clearScene(list);
-    for (std::size_t i = 0; i < list.views.size(); ++i) {
-      beginView(list, list.views[i], perView[i], nullptr, staticTarget());
-      drawOpaque(perView[i], Items::StaticOnly, Pass::Samples);
-    }
-    glDisable(GL_SCISSOR_TEST);
+    clearScene(list, true);
     if (opaqueFbo != 0) {
+      // Every sample, kept for the moving meshes drawn in samples over the
+      // layer (redrawSamples), wherever they go.
+      for (std::size_t i = 0; i < list.views.size(); ++i) {
+        beginView(list, list.views[i], perView[i], nullptr, opaqueFbo);
+        drawOpaque(perView[i], Items::StaticOnly, Pass::Samples);
+      }
+      glDisable(GL_SCISSOR_TEST);
       glBindFramebuffer(GL_READ_FRAMEBUFFER, opaqueFbo);
       glBindFramebuffer(GL_DRAW_FRAMEBUFFER, snapshotSamplesFbo);
       glBlitFramebuffer(0, 0, list.width, list.height, 0, 0, list.width, list.height,
                         GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     }
-    resolveOpaque(list, PixelRect{0, 0, list.width, list.height});
+    // The scene as drawViewOpaque draws the static meshes: at one sample,
+    // resolved from the samples near their edges.
+    std::vector<PixelRect> resolved;
     for (std::size_t i = 0; i < list.views.size(); ++i) {
       beginView(list, list.views[i], perView[i], nullptr);
-      depthAtCentres(perView[i], Items::StaticOnly);
+      drawOpaqueAtCentres(perView[i], Items::StaticOnly);
+      if (opaqueFbo == 0) continue;
+      const std::vector<PixelRect> tiles = sampleTiles(list, list.views[i], perView[i], Items::StaticOnly);
+      resolved.insert(resolved.end(), tiles.begin(), tiles.end());
     }
+    for (const PixelRect& r : resolved) resolveOpaque(list, r);
     findLayerEdges(list);
     glDisable(GL_SCISSOR_TEST);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, sceneFbo);
@@ -1679,33 +1842,26 @@ struct Renderer::Impl {
   }
 
   // The moving meshes that are drawn in samples (arrows, see Pass), over a
-  // retained layer: the rectangles they reach get the layer's static
-  // samples back, the meshes drawn over them island by island (as in
-  // redrawRects), and are resolved over the scene's copy, so that they hold
-  // what a whole frame's resolve gives.
+  // retained layer, as drawViewOpaque draws them: at one sample over the
+  // layer's scene, then in samples over the layer's static samples in the
+  // tiles they reach (sampleTiles), island by island (as in redrawRects),
+  // resolved there.
   void redrawSamples(const DrawList& list, const std::vector<ViewItems>& perView, const std::vector<bool>& fresh) {
     if (opaqueFbo == 0) return;
-    std::vector<PixelRect> bounds;
+    std::vector<PixelRect> reached;  // inside the dirty rectangles: dirtyRects adds the same bounds
     for (std::size_t i = 0; i < list.views.size(); ++i) {
       if (fresh[i]) continue;
-      const View& v = list.views[i];
-      const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
-      for (const Drawable& d : perView[i].items)
-        if (d.dynamic && d.material->opacity >= 1.0f && inSamplesPass(d)) meshBounds(v, clipFromWorld, d, bounds);
+      const std::vector<PixelRect> tiles = sampleTiles(list, list.views[i], perView[i], Items::DynamicOnly);
+      reached.insert(reached.end(), tiles.begin(), tiles.end());
     }
-    if (bounds.empty()) return;
-    // Their tiles (inside the dirty ones: dirtyRects adds the same bounds).
-    TileGrid grid(list.width, list.height);
-    for (const PixelRect& b : bounds) grid.add(b);
-    const std::vector<PixelRect> reached = grid.rects();
     if (reached.empty()) return;
     underRects.insert(underRects.end(), reached.begin(), reached.end());  // their edges are over the layer's
+    inIslands(list, perView, reached, fresh, 0,
+              [&](const ViewItems& items) { drawOpaqueAtCentres(items, Items::DynamicOnly); });
     copyRects(list, snapshotSamplesFbo, opaqueFbo, reached);
     inIslands(list, perView, reached, fresh, opaqueFbo,
               [&](const ViewItems& items) { drawOpaque(items, Items::DynamicOnly, Pass::Samples); });
     for (const PixelRect& r : reached) resolveOpaque(list, r);
-    inIslands(list, perView, reached, fresh, 0,
-              [&](const ViewItems& items) { depthAtCentres(items, Items::DynamicOnly); });
   }
 
   void redrawRects(const DrawList& list, const std::vector<ViewItems>& perView, const std::vector<PixelRect>& rects,
@@ -1714,7 +1870,25 @@ struct Renderer::Impl {
     // The rectangles are disjoint: all copies first, then all draws, so the
     // binned scene is not flushed between them.
     // Unscissored: a blit copies every sample of the rectangle's pixels.
-    copyRects(list, snapshotFbo, sceneFbo, rects);
+    // Not into a view drawn whole here: the scene is cleared first, with
+    // one unscissored clear (a scissored clear of a 1080p view's 1 M pixels
+    // is a quad draw: 6–7 ms, with each step finished apart), and those
+    // views drawn over it.
+    const bool anyFresh = which != Items::StaticOnly && std::find(fresh.begin(), fresh.end(), true) != fresh.end();
+    if (!anyFresh) {
+      copyRects(list, snapshotFbo, sceneFbo, rects);
+    } else {
+      clearScene(list, false);
+      std::vector<PixelRect> kept = rects, pieces;
+      for (std::size_t i = 0; i < list.views.size(); ++i) {
+        if (!fresh[i]) continue;
+        const View& v = list.views[i];
+        pieces.clear();
+        for (const PixelRect& r : kept) outside(r, PixelRect{v.x, v.y, v.x + v.width, v.y + v.height}, pieces);
+        std::swap(kept, pieces);
+      }
+      copyRects(list, snapshotFbo, sceneFbo, kept);
+    }
     if (which != Items::StaticOnly) redrawSamples(list, perView, fresh);
     // Then each view drawn once per island of its dirty rectangles (see
     // separatedIslands), scissored to the island's box: the pixels of a box
@@ -1733,23 +1907,9 @@ struct Renderer::Impl {
       const PixelRect area{v.x, v.y, v.x + v.width, v.y + v.height};
       if (fresh[i]) {
         if (which == Items::StaticOnly) continue;
-        // A scissored clear (the view's rectangle): the same values as the
-        // whole frame's one clear.
-        beginView(list, v, perView[i], nullptr, staticTarget());
-        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-        glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
-        drawOpaque(perView[i], Items::StaticOnly, Pass::Samples);
-        drawOpaque(perView[i], Items::DynamicOnly, Pass::Samples);
-        resolveOpaque(list, area);
+        std::vector<PixelRect> sampled = drawViewOpaque(list, v, perView[i], false);  // cleared with the scene
         beginView(list, v, perView[i], nullptr);
-        if (opaqueFbo != 0) glClear(GL_DEPTH_BUFFER_BIT);  // the colour came with the resolve
-        depthAtCentres(perView[i], Items::StaticOnly);
-        depthAtCentres(perView[i], Items::DynamicOnly);
-        const bool under = underEverywhere;
-        underEverywhere = true;  // drawn as in a whole frame
-        drawAfterResolve(perView[i]);
-        underEverywhere = under;
-        drawRest(list, static_cast<int>(i), perView[i], Items::All);
+        drawViewAfterOpaque(list, static_cast<int>(i), perView[i], std::move(sampled));
         allBounds = unite(allBounds, area);
         continue;
       }
@@ -1858,7 +2018,7 @@ struct Renderer::Impl {
       if (history != nullptr) *history = {layerEpoch, layerVersion, std::move(drawn), image.rgba.data()};
       ++stats.retainedFrames;
     } else {
-      clearScene(list);
+      clearScene(list, false);
       drawWhole(list, perView);
       readBack(list, image, PixelRect{0, 0, list.width, list.height});
       ++stats.wholeFrames;
@@ -1881,7 +2041,7 @@ struct Renderer::Impl {
   }
 
   // Vector figures: the scene's depth after render() (one sample, at the
-  // pixel centres: see depthAtCentres).
+  // pixel centres: see drawOpaqueAtCentres).
   void readDepth(std::vector<float>& depth) {
     const int w = fbWidth, h = fbHeight;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, sceneFbo);

@@ -36,6 +36,9 @@ struct RenderStats {
   // screen bounds reach one (see drawMesh): what was offered and drawn.
   long long meshIndicesInRects = 0, meshIndicesDrawn = 0;
   long long lineSegmentsInRects = 0, lineSegmentsDrawn = 0;
+  // Views drawn whole with multisampling: their pixels, and those drawn in
+  // samples (the tiles near a mesh's edges, see renderer.cpp's sampleTiles).
+  long long wholeViewPixels = 0, sampledPixels = 0;
 };
 
 // What a renderer last wrote into one image that nothing else writes (a

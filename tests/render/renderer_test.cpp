@@ -157,6 +157,58 @@ TEST_F(RendererTest, RayCastSphereAtOneSampleMatchesTheMultisampledMesh) {
     }
 }
 
+// A view drawn whole draws its static meshes at one sample, and in samples
+// only in the tiles near their edges: away from those tiles a frame with
+// four samples is the frame with one, byte for byte; near them its edges
+// are antialiased (pixels covered in part, which one sample never gives).
+TEST_F(RendererTest, SamplesAreDrawnOnlyNearAMeshesEdges) {
+  DrawList list;
+  list.width = 320;
+  list.height = 240;
+  View v = cameraView(320, 240);
+  v.camera.position = {0.3f, -2.0f, 7.0f};
+  v.camera.viewFromWorld = glm::lookAt(v.camera.position, glm::vec3(0.2f, 0.4f, 0.0f), glm::vec3(0, 0, 1));
+  v.background = false;
+  list.views = {v};
+  list.transparent = true;
+  MeshItem board;  // its corner and two borders inside the view, its middle filling the rest
+  board.mesh = parametricPatch(
+      [](float a, float b, glm::vec3& p, glm::vec3& n) {
+        p = {6.0f * a - 1.5f, 6.0f * b - 1.0f, 0.0f};
+        n = {0, 0, 1};
+      },
+      3, 3, glm::vec2(6.0f));
+  board.material.pattern = Pattern::Checker;
+  board.material.specular = 0.0f;
+  list.meshes.push_back(board);
+  MeshItem post;  // a cylinder standing on it: silhouettes, a cap's crease, where two meshes meet
+  post.mesh = unitCylinder(24);
+  post.worldFromModel = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(1.0f, 1.5f, 0.0f)), glm::vec3(0.4f, 0.4f, 1.2f));
+  post.material.color = {0.2f, 0.4f, 0.8f};
+  list.meshes.push_back(post);
+  Renderer renderer(*context_, ShaderLibrary{});
+  renderer.setRetainLayers(false);
+  const media::Image four = renderer.render(list);
+  const RenderStats& stats = renderer.stats();
+  EXPECT_EQ(stats.wholeViewPixels, 320LL * 240);
+  EXPECT_GT(stats.sampledPixels, 0);
+  EXPECT_LT(stats.sampledPixels, stats.wholeViewPixels / 2);
+  list.msaaSamples = 1;
+  const media::Image one = renderer.render(list);
+  long long differing = 0;
+  int partial = 0, partialOne = 0;
+  for (int y = 0; y < 240; ++y)
+    for (int x = 0; x < 320; ++x) {
+      differing += std::memcmp(four.pixel(x, y), one.pixel(x, y), 4) != 0 ? 1 : 0;
+      partial += four.pixel(x, y)[3] > 0 && four.pixel(x, y)[3] < 255 ? 1 : 0;
+      partialOne += one.pixel(x, y)[3] > 0 && one.pixel(x, y)[3] < 255 ? 1 : 0;
+    }
+  EXPECT_GT(partial, 200);  // the board's borders and the post's outline, antialiased
+  EXPECT_EQ(partialOne, 0);
+  EXPECT_GT(differing, partial);
+  EXPECT_LE(differing, stats.sampledPixels);  // every other pixel as one sample draws it
+}
+
 // The backdrop goes behind the scene as the image is read back: each pixel
 // takes the gradient of the last view that holds it (an inset over a main
 // view), sampled at the pixel's centre row and sRGB-encoded; pixels outside

@@ -253,7 +253,7 @@ struct Renderer::Impl {
   // in a view drawn whole, its tiles drawn in samples; over a retained
   // layer, the layer's edge tiles and the tiles of moving meshes drawn in
   // samples; and the rectangles of the spheres drawn before it in the
-  // frame. Everywhere when set (at one sample: see drawViewAfterOpaque).
+  // frame. Everywhere when set.
   bool underEverywhere = true;
   std::vector<PixelRect> underRects;
   std::vector<PixelRect> parts, underParts;  // drawImpostor's scratch

@@ -179,6 +179,16 @@ void release(GpuMesh& g) {
   g = {};
 }
 
+// The eight corners of the box [lo, hi], placed by `transform`.
+std::array<glm::vec3, 8> boxCorners(const glm::vec3& lo, const glm::vec3& hi,
+                                    const glm::mat4& transform = glm::mat4(1.0f)) {
+  std::array<glm::vec3, 8> corners;
+  for (int k = 0; k < 8; ++k)
+    corners[std::size_t(k)] =
+        glm::vec3(transform * glm::vec4(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z, 1.0f));
+  return corners;
+}
+
 // worldFromModel for a unit z-aligned primitive stretched from a to b.
 glm::mat4 alongSegment(const glm::vec3& a, const glm::vec3& b, float radius) {
   const glm::vec3 d = b - a;
@@ -835,9 +845,8 @@ struct Renderer::Impl {
     const glm::mat4 clipFromModel = viewUniforms.clipFromWorld * d.worldFromModel;
     keptParts.clear();
     for (const MeshChunk& c : g.chunks) {
-      glm::vec3 corners[8];
-      for (int k = 0; k < 8; ++k) corners[k] = glm::vec3(k & 1 ? c.hi.x : c.lo.x, k & 2 ? c.hi.y : c.lo.y, k & 4 ? c.hi.z : c.lo.z);
-      if (reachesAny(*drawClips, screenBounds(*clipView, clipFromModel, corners, 8, 2.0f)))
+      const std::array<glm::vec3, 8> corners = boxCorners(c.lo, c.hi);
+      if (reachesAny(*drawClips, screenBounds(*clipView, clipFromModel, corners.data(), 8, 2.0f)))
         keptParts.add(c.firstIndex, c.firstIndex + c.indexCount);
     }
     // The runs go to GL in one call: a draw call costs llvmpipe more than a
@@ -1114,9 +1123,7 @@ struct Renderer::Impl {
       addOutlineTiles(*d.mesh, meshEdges(d.mesh), d.worldFromModel, d.material->cutPlane, v, 2.0f, grid);
       const GpuMesh& g = gpuMesh(d.mesh);
       glm::vec3 lo(1e30f), hi(-1e30f);
-      for (int k = 0; k < 8; ++k) {
-        const glm::vec3 corner(d.worldFromModel * glm::vec4(k & 1 ? g.hi.x : g.lo.x, k & 2 ? g.hi.y : g.lo.y,
-                                                            k & 4 ? g.hi.z : g.lo.z, 1.0f));
+      for (const glm::vec3& corner : boxCorners(g.lo, g.hi, d.worldFromModel)) {
         lo = glm::min(lo, corner);
         hi = glm::max(hi, corner);
       }
@@ -1126,10 +1133,7 @@ struct Renderer::Impl {
       for (std::size_t b = a + 1; b < boxes.size(); ++b) {
         const glm::vec3 lo = glm::max(boxes[a].first, boxes[b].first), hi = glm::min(boxes[a].second, boxes[b].second);
         if (lo.x > hi.x || lo.y > hi.y || lo.z > hi.z) continue;
-        glm::vec3 corners[8];
-        for (int k = 0; k < 8; ++k)
-          corners[k] = glm::vec3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
-        grid.add(screenBounds(v, clipFromWorld, corners, 8, 2.0f));
+        grid.add(screenBounds(v, clipFromWorld, boxCorners(lo, hi).data(), 8, 2.0f));
       }
     const PixelRect area{v.x, v.y, v.x + v.width, v.y + v.height};
     std::vector<PixelRect> tiles;
@@ -1170,13 +1174,15 @@ struct Renderer::Impl {
     // can reach them) are cleared and drawn. Rectangles that touch are in
     // different rounds; two to four rounds in practice.
     const PixelRect area{v.x, v.y, v.x + v.width, v.y + v.height};
-    auto boxOf = [&](const PixelRect& r) { return intersect(PixelRect{r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1}, area); };
+    std::vector<PixelRect> boxes;
+    for (const PixelRect& r : tiles)
+      boxes.push_back(intersect(PixelRect{r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1}, area));
     std::vector<int> roundOf(tiles.size(), 0);
     int rounds = 0;
     for (std::size_t i = 0; i < tiles.size(); ++i) {
       std::vector<bool> taken(static_cast<std::size_t>(rounds) + 1, false);
       for (std::size_t j = 0; j < i; ++j)
-        if (overlaps(boxOf(tiles[i]), tiles[j])) taken[static_cast<std::size_t>(roundOf[j])] = true;
+        if (overlaps(boxes[i], tiles[j])) taken[static_cast<std::size_t>(roundOf[j])] = true;
       while (taken[static_cast<std::size_t>(roundOf[i])]) ++roundOf[i];
       rounds = std::max(rounds, roundOf[i] + 1);
     }
@@ -1185,7 +1191,7 @@ struct Renderer::Impl {
     for (int round = 0; round < rounds; ++round) {
       for (std::size_t i = 0; i < tiles.size(); ++i) {
         if (roundOf[i] != round) continue;
-        oneBox[0] = boxOf(tiles[i]);
+        oneBox[0] = boxes[i];
         beginView(list, v, viewItems, &oneBox[0], opaqueFbo);
         glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
       }
@@ -1193,7 +1199,7 @@ struct Renderer::Impl {
       clipView = &v;
       for (std::size_t i = 0; i < tiles.size(); ++i) {
         if (roundOf[i] != round) continue;
-        oneBox[0] = boxOf(tiles[i]);
+        oneBox[0] = boxes[i];
         beginView(list, v, viewItems, &oneBox[0], opaqueFbo);
         drawOpaque(viewItems, Items::StaticOnly, Pass::Samples);
         drawOpaque(viewItems, Items::DynamicOnly, Pass::Samples);
@@ -1524,12 +1530,7 @@ struct Renderer::Impl {
       glm::vec3 lo = g.lo, hi = g.hi;
       lo[along] = g.lo[along] + (g.hi[along] - g.lo[along]) * float(slab) / float(slabs);
       hi[along] = slab + 1 == slabs ? g.hi[along] : g.lo[along] + (g.hi[along] - g.lo[along]) * float(slab + 1) / float(slabs);
-      glm::vec3 corners[8];
-      for (int k = 0; k < 8; ++k) {
-        const glm::vec3 model(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
-        corners[k] = glm::vec3(d.worldFromModel * glm::vec4(model, 1.0f));
-      }
-      const PixelRect box = screenBounds(v, clipFromWorld, corners, 8, 2.0f);
+      const PixelRect box = screenBounds(v, clipFromWorld, boxCorners(lo, hi, d.worldFromModel).data(), 8, 2.0f);
       out.push_back(sphere ? intersect(box, *sphere) : box);
     }
   }

@@ -64,12 +64,14 @@
   X(glGenVertexArrays) \
   X(glGenerateMipmap) \
   X(glGetError) \
+  X(glGetIntegerv) \
   X(glGetProgramInfoLog) \
   X(glGetProgramiv) \
   X(glGetShaderInfoLog) \
   X(glGetShaderiv) \
   X(glGetString) \
   X(glGetUniformLocation) \
+  X(glIsEnabled) \
   X(glLinkProgram) \
   X(glMultiDrawArrays) \
   X(glMultiDrawElements) \
@@ -150,12 +152,14 @@ ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DECLARE)
 #define glGenVertexArrays ::rollspin::render::gl_api::glGenVertexArrays
 #define glGenerateMipmap ::rollspin::render::gl_api::glGenerateMipmap
 #define glGetError ::rollspin::render::gl_api::glGetError
+#define glGetIntegerv ::rollspin::render::gl_api::glGetIntegerv
 #define glGetProgramInfoLog ::rollspin::render::gl_api::glGetProgramInfoLog
 #define glGetProgramiv ::rollspin::render::gl_api::glGetProgramiv
 #define glGetShaderInfoLog ::rollspin::render::gl_api::glGetShaderInfoLog
 #define glGetShaderiv ::rollspin::render::gl_api::glGetShaderiv
 #define glGetString ::rollspin::render::gl_api::glGetString
 #define glGetUniformLocation ::rollspin::render::gl_api::glGetUniformLocation
+#define glIsEnabled ::rollspin::render::gl_api::glIsEnabled
 #define glLinkProgram ::rollspin::render::gl_api::glLinkProgram
 #define glMultiDrawArrays ::rollspin::render::gl_api::glMultiDrawArrays
 #define glMultiDrawElements ::rollspin::render::gl_api::glMultiDrawElements

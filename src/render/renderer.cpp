@@ -267,6 +267,11 @@ struct Renderer::Impl {
   bool underEverywhere = true;
   std::vector<PixelRect> underRects;
   std::vector<PixelRect> parts, underParts;  // drawImpostor's scratch
+  // A ray-cast sphere's pixels: one pixel of its coverage ramp lies outside
+  // the silhouette, one more for rounding; drawn in bands of 16 rows (see
+  // sphereBands; narrower bands fit closer, but each is a draw).
+  static constexpr float kImpostorMarginPx = 2.0f;
+  static constexpr int kImpostorBandRows = 16;
   std::vector<PixelRect> layerEdgeRects;  // tiles where the layer's opaque meshes cover pixels in part
   GLuint sceneFbo = 0, sceneColor = 0, sceneDepth = 0;
   GLuint scenePacked = 0;  // sceneColor viewed as R32UI: one packed RGBA8 word per pixel
@@ -663,10 +668,8 @@ struct Renderer::Impl {
     if (!d.sphere || targetSamples != 1 || clipToShadowBox || viewUniforms.view == nullptr ||
         m.cutPlane != glm::vec4(0.0f, 0.0f, 0.0f, 1.0f))
       return std::nullopt;
-    // One pixel of the coverage ramp lies outside the silhouette; one more
-    // for rounding.
     return sphereBounds(*viewUniforms.view, glm::vec3(d.worldFromModel[3]), glm::length(glm::vec3(d.worldFromModel[0])),
-                        2.0f);
+                        kImpostorMarginPx);
   }
 
   // The uniforms of a mesh program (each program ignores those it lacks).
@@ -696,24 +699,33 @@ struct Renderer::Impl {
     mesh.set("clipToShadowBox", clipToShadowBox ? 1 : 0);
   }
 
-  // A ray-cast sphere (mesh.frag with IMPOSTOR): one rectangle, its
-  // silhouette's coverage blended over what is behind, depth per pixel.
+  // A ray-cast sphere (mesh.frag with IMPOSTOR): the bands of its screen
+  // rectangle that it reaches, its silhouette's coverage blended over what
+  // is behind, depth per pixel.
   void drawImpostor(const Drawable& d, Program& mesh, const PixelRect& rect, int pattern) {
     const View& v = *viewUniforms.view;
     const Material& m = *d.material;
     const bool opaque = m.opacity >= 1.0f;
-    // Over a retained layer, only the parts of the rectangle inside the
-    // rectangles being redrawn: an island's scissor box reaches pixels
-    // outside them, which are neither composited nor read back, and a large
-    // sphere (the Bloch sphere's glass) would be shaded over all of them.
-    // Each pixel is shaded as the whole rectangle shades it (the shader
-    // depends on the pixel's position alone).
-    if (drawClips != nullptr) {
-      clippedParts(*drawClips, rect, parts);
-      if (parts.empty()) return;
-    } else {
-      parts.assign({rect});
+    // Only the rectangle's bands that the silhouette reaches (its corners,
+    // a fifth of it, are all outside), and over a retained layer only their
+    // parts inside the rectangles being redrawn: an island's scissor box
+    // reaches pixels outside them, which are neither composited nor read
+    // back, and a large sphere (the Bloch sphere's glass) would be shaded
+    // over all of them. Each pixel is shaded as the whole rectangle shades
+    // it (the shader depends on the pixel's position alone).
+    const float radius = glm::length(glm::vec3(d.worldFromModel[0]));
+    const std::vector<PixelRect> bands =
+        sphereBands(v, rect, glm::vec3(d.worldFromModel[3]), radius, kImpostorMarginPx, kImpostorBandRows);
+    parts.clear();
+    for (const PixelRect& band : bands) {
+      if (drawClips == nullptr) {
+        parts.push_back(band);
+        continue;
+      }
+      for (const PixelRect& clip : *drawClips)
+        if (const PixelRect p = intersect(band, clip); !p.empty()) parts.push_back(p);
     }
+    if (parts.empty()) return;
     const glm::mat4 worldFromClip = glm::inverse(viewUniforms.clipFromWorld);
     const glm::vec4 viewport(float(v.x), float(fbHeight - v.y - v.height), float(v.width), float(v.height));
     // Opaque meshes are drawn without blending (drawOpaque): on for this one.
@@ -742,7 +754,6 @@ struct Renderer::Impl {
       under.set("worldFromClip", worldFromClip);
       under.set("viewportRect", viewport);
       const glm::vec4 centre = v.camera.viewFromWorld * d.worldFromModel[3];
-      const float radius = glm::length(glm::vec3(d.worldFromModel[0]));
       const glm::vec4 far = v.camera.clipFromView * (centre - glm::vec4(0.0f, 0.0f, radius, 0.0f));
       under.set("ndcDepth", std::clamp(far.z / far.w, -1.0f, 1.0f));
       glDepthFunc(GL_GREATER);
@@ -788,13 +799,26 @@ struct Renderer::Impl {
       if (const PixelRect p = intersect(r, box); !p.empty()) out.push_back(p);
   }
 
-  // One rectangle of impostor.vert per part (disjoint: blending draws each
-  // pixel once).
+  // One triangle of impostor.vert per part (disjoint: blending draws each
+  // pixel once), scissored to the part inside the scissor in force: a
+  // rectangle's two triangles would both shade the pixel blocks along
+  // their diagonal (llvmpipe shades a block that a triangle covers in part
+  // whole, under a mask), and a band is little more than that diagonal.
   void drawImpostorParts(Program& program, const View& v, const std::vector<PixelRect>& rects) {
+    GLint box[4] = {0, 0, fbWidth, fbHeight};
+    const bool scissored = glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE;
+    if (scissored) glGetIntegerv(GL_SCISSOR_BOX, box);
+    const PixelRect inForce{box[0], fbHeight - box[1] - box[3], box[0] + box[2], fbHeight - box[1]};
+    glEnable(GL_SCISSOR_TEST);
     for (const PixelRect& r : rects) {
-      program.set("ndcRect", ndcRectOf(v, r));
-      glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+      const PixelRect part = intersect(r, inForce);
+      if (part.empty()) continue;
+      glScissor(part.x0, fbHeight - part.y1, part.x1 - part.x0, part.y1 - part.y0);
+      program.set("ndcRect", ndcRectOf(v, part));
+      glDrawArrays(GL_TRIANGLES, 0, 3);
     }
+    glScissor(box[0], box[1], box[2], box[3]);
+    if (!scissored) glDisable(GL_SCISSOR_TEST);
   }
 
   // Image pixels (top-left origin) to the view's normalized device coordinates.

@@ -1,7 +1,9 @@
 #include "render/screen_bounds.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <numbers>
 
 namespace rollspin::render {
 
@@ -76,6 +78,64 @@ std::optional<PixelRect> sphereBounds(const View& v, const glm::vec3& centre, fl
   return intersect(PixelRect{v.x + toInt(std::floor(x0 - marginPx)), v.y + toInt(std::floor(y0 - marginPx)),
                              v.x + toInt(std::ceil(x1 + marginPx)) + 1, v.y + toInt(std::ceil(y1 + marginPx)) + 1},
                    whole);
+}
+
+// The outline circle: where the rays from the eye touch the sphere. In
+// perspective its plane is normal to the centre's direction, at c (1 − r²/D²)
+// with radius r √(D² − r²) / D (D = |c|, view space); orthographic: the
+// sphere's great circle facing the camera.
+std::vector<PixelRect> sphereBands(const View& v, const PixelRect& box, const glm::vec3& centre, float radius,
+                                   float marginPx, int bandRows) {
+  const glm::mat4& P = v.camera.clipFromView;
+  const glm::vec3 c(v.camera.viewFromWorld * glm::vec4(centre, 1.0f));
+  const bool orthographic = P[2][3] == 0.0f && P[3][3] == 1.0f;
+  glm::vec3 axis(0.0f, 0.0f, 1.0f), circleCentre = c;
+  float circleRadius = radius;
+  if (!orthographic) {
+    const float distance = glm::length(c);
+    if (distance <= radius) return {box};
+    axis = c / distance;
+    circleCentre = c * (1.0f - radius * radius / (distance * distance));
+    circleRadius = radius * std::sqrt(distance * distance - radius * radius) / distance;
+  }
+  const glm::vec3 side =
+      glm::normalize(glm::cross(axis, std::abs(axis.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
+  const glm::vec3 up = glm::cross(axis, side);
+  // A regular polygon around the circle (its edges touch it), projected.
+  constexpr int kCorners = 32;
+  const float toCorner = circleRadius / std::cos(std::numbers::pi_v<float> / kCorners);
+  std::array<glm::vec2, kCorners> polygon;
+  for (int k = 0; k < kCorners; ++k) {
+    const float angle = 2.0f * std::numbers::pi_v<float> * float(k) / kCorners;
+    const glm::vec4 clip =
+        P * glm::vec4(circleCentre + toCorner * (std::cos(angle) * side + std::sin(angle) * up), 1.0f);
+    if (clip.w <= 1e-6f) return {box};
+    polygon[k] = glm::vec2(float(v.x) + (clip.x / clip.w * 0.5f + 0.5f) * float(v.width),
+                           float(v.y) + (0.5f - clip.y / clip.w * 0.5f) * float(v.height));
+  }
+  std::vector<PixelRect> bands;
+  auto floorTo = [](float f, int step) {
+    return step * static_cast<int>(std::floor(std::clamp(f, -1e7f, 1e7f) / float(step)));
+  };
+  for (int y0 = floorTo(float(box.y0), bandRows); y0 < box.y1; y0 += bandRows) {
+    // The polygon's extent across the band's rows, widened by the margin.
+    const float lo = float(y0) - marginPx, hi = float(y0 + bandRows) + marginPx;
+    float x0 = 1e30f, x1 = -1e30f;
+    for (int k = 0; k < kCorners; ++k) {
+      const glm::vec2 p = polygon[k], q = polygon[(k + 1) % kCorners];
+      if (p.y >= lo && p.y <= hi) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+      for (const float edge : {lo, hi})
+        if ((p.y - edge) * (q.y - edge) < 0.0f) {
+          const float x = p.x + (q.x - p.x) * (edge - p.y) / (q.y - p.y);
+          x0 = std::min(x0, x), x1 = std::max(x1, x);
+        }
+    }
+    if (x0 > x1) continue;
+    const PixelRect band =
+        intersect(PixelRect{floorTo(x0 - marginPx, 4), y0, floorTo(x1 + marginPx, 4) + 4, y0 + bandRows}, box);
+    if (!band.empty()) bands.push_back(band);
+  }
+  return bands;
 }
 
 std::vector<PixelRect> rectsOfTiles(const std::vector<std::uint8_t>& dirty, int cols, int rows, int tile, int width,

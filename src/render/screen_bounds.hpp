@@ -63,6 +63,17 @@ class RunsOfParts {
 [[nodiscard]] std::optional<PixelRect> sphereBounds(const View& v, const glm::vec3& centre, float radius,
                                                     float marginPx);
 
+// The pixels of `box` (sphereBounds of the sphere, widened by marginPx)
+// that the sphere can cover, widened by marginPx: horizontal bands of
+// `bandRows` rows (aligned to multiples of it), each as wide as the
+// silhouette over its rows, in columns rounded out to multiples of 4
+// (llvmpipe's pixel blocks). Disjoint, top to bottom. The silhouette is
+// held by a polygon whose edges touch the sphere's outline circle (a
+// projection keeps lines tangent, so the projected polygon holds the
+// projected outline); where a corner would lie behind the eye, `box` whole.
+[[nodiscard]] std::vector<PixelRect> sphereBands(const View& v, const PixelRect& box, const glm::vec3& centre,
+                                                 float radius, float marginPx, int bandRows);
+
 // The set tiles of a cols × rows mask of `tile`-pixel tiles over a width ×
 // height image, as disjoint rectangles: runs along each tile row, a run
 // continuing the rectangle above it when it spans the same columns.

@@ -80,6 +80,64 @@ TEST(ScreenBounds, ASpheresBoundsHoldEveryPointOfItAndLittleMore) {
   EXPECT_GT(checked, 300);
 }
 
+// Every pixel near the sphere's projection lies in a band: the pixels
+// within 1.5 px of a projected point of it (the margin is 2); the bands are
+// disjoint, inside the box, and leave out most of its corners.
+TEST(ScreenBounds, ASpheresBandsHoldEveryPixelNearItAndLeaveOutTheCorners) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  int checked = 0, trimmed = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const int kind = trial % 3;
+    const View v = randomView(rng, kind);
+    const glm::vec3 centre(1.5f * u(rng), 1.5f * u(rng), 0.5f * u(rng));
+    const float radius = 0.1f + 0.4f * (u(rng) + 1.0f);
+    const auto box = sphereBounds(v, centre, radius, 2.0f);
+    if (!box || box->empty()) continue;
+    const int rows = trial % 2 == 0 ? 16 : 8;
+    const std::vector<PixelRect> bands = sphereBands(v, *box, centre, radius, 2.0f, rows);
+    std::vector<int> inBands(std::size_t(v.x + v.width) * (v.y + v.height), 0);
+    long long area = 0;
+    for (const PixelRect& b : bands) {
+      ASSERT_FALSE(b.empty());
+      ASSERT_EQ(intersect(b, *box), b) << "trial " << trial;
+      area += static_cast<long long>(b.x1 - b.x0) * (b.y1 - b.y0);
+      for (int y = b.y0; y < b.y1; ++y)
+        for (int x = b.x0; x < b.x1; ++x) ASSERT_EQ(inBands[std::size_t(y) * (v.x + v.width) + x]++, 0) << trial;
+    }
+    const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+    for (int i = 0; i <= 90; ++i)
+      for (int j = 0; j < 180; ++j) {
+        const float th = std::numbers::pi_v<float> * float(i) / 90.0f;
+        const float ph = 2.0f * std::numbers::pi_v<float> * float(j) / 180.0f;
+        const glm::vec4 c =
+            clipFromWorld * glm::vec4(centre + radius * glm::vec3(std::sin(th) * std::cos(ph),
+                                                                  std::sin(th) * std::sin(ph), std::cos(th)),
+                                      1.0f);
+        const float px = float(v.x) + (c.x / c.w * 0.5f + 0.5f) * float(v.width);
+        const float py = float(v.y) + (0.5f - c.y / c.w * 0.5f) * float(v.height);
+        for (const float dx : {-1.5f, 0.0f, 1.5f})
+          for (const float dy : {-1.5f, 0.0f, 1.5f}) {
+            const int x = int(std::floor(px + dx)), y = int(std::floor(py + dy));
+            if (x < box->x0 || x >= box->x1 || y < box->y0 || y >= box->y1) continue;
+            ASSERT_EQ(inBands[std::size_t(y) * (v.x + v.width) + x], 1)
+                << "trial " << trial << ": pixel " << x << "," << y << " near the sphere is in no band";
+          }
+      }
+    ++checked;
+    // A sphere whole in view, over a few bands: its box's corners (a fifth
+    // of it) are mostly left out.
+    const long long boxArea = static_cast<long long>(box->x1 - box->x0) * (box->y1 - box->y0);
+    if (box->x0 > v.x && box->y0 > v.y && box->x1 < v.x + v.width && box->y1 < v.y + v.height &&
+        box->y1 - box->y0 >= 8 * rows) {
+      ++trimmed;
+      EXPECT_LT(double(area), 0.92 * double(boxArea)) << "trial " << trial;
+    }
+  }
+  EXPECT_GT(checked, 150);
+  EXPECT_GT(trimmed, 20);
+}
+
 TEST(ScreenBounds, SkewedCamerasGetNoSphereBounds) {
   std::mt19937 rng(1);
   View v = randomView(rng, 0);

@@ -74,8 +74,8 @@ struct MeshItem {
   // The mesh is a unit sphere about the model origin and worldFromModel a
   // similarity (rotation, uniform scale, translation): in a framebuffer of
   // one sample, where no sample finds its edge, the renderer ray-casts it
-  // per pixel with analytic edge coverage instead of drawing its triangles
-  // (shadow maps still take the triangles).
+  // per pixel with analytic edge coverage instead of drawing its triangles;
+  // a shadow map takes its depth ray-cast per texel.
   bool sphere = false;
   bool dynamic = false;
   bool operator==(const MeshItem&) const = default;

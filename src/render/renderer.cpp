@@ -240,7 +240,7 @@ struct Renderer::Impl {
   bool retainLayers = true;
   std::map<int, Program> meshPrograms;  // by variant: see meshProgram
   MeshViewUniforms viewUniforms;
-  Program shadow, line, text, depthProgram;
+  Program shadow, shadowSphere, line, text, depthProgram;
   GLuint emptyVao = 0;
   GLuint streamVao = 0, streamVbo = 0;  // polylines (vec3)
   GLuint textVao = 0, textVbo = 0;      // glyph quads (vec2 pixel, vec2 uv)
@@ -299,6 +299,7 @@ struct Renderer::Impl {
   explicit Impl(const ShaderLibrary& lib)
       : library(lib),
         shadow(lib, "shadow.vert", "shadow.frag"),
+        shadowSphere(lib, "impostor.vert", "shadow_sphere.frag"),
         line(lib, "line.vert", "line.frag", "line.geom"),
         text(lib, "text.vert", "text.frag"),
         depthProgram(lib, "mesh.vert", "depth.frag", {}, "#define LIT 0\n") {
@@ -584,9 +585,13 @@ struct Renderer::Impl {
     // the far plane is lit, and on a wall lit from above the shadow lands
     // well behind the ball along the light (the floor: about R behind).
     ShadowSetup setup;
-    const glm::mat4 lightClipFromWorld =
-        glm::ortho(centre.x - half, centre.x + half, centre.y - half, centre.y + half, 0.01f * r, 8.0f * r) *
-        lightViewFromWorld;
+    // The map as a view, for a sphere's bands (see drawShadowSphere).
+    View mapView;
+    mapView.width = mapView.height = kShadowMapSize;
+    mapView.camera.viewFromWorld = lightViewFromWorld;
+    mapView.camera.clipFromView =
+        glm::ortho(centre.x - half, centre.x + half, centre.y - half, centre.y + half, 0.01f * r, 8.0f * r);
+    const glm::mat4 lightClipFromWorld = mapView.camera.clipFromView * lightViewFromWorld;
     setup.lightClipFromWorld = lightClipFromWorld;
     // The filter radius in map uv: the light's softness (world units), and
     // at least 1.5 texels so that the edge is always filtered.
@@ -600,9 +605,13 @@ struct Renderer::Impl {
     glDisable(GL_BLEND);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.5f, 2.0f);
-    shadow.use();
     for (const Drawable& d : items) {
       if (!d.material->castsShadow || d.material->opacity < 0.5f) continue;
+      if (d.sphere) {
+        drawShadowSphere(d, mapView, lightClipFromWorld);
+        continue;
+      }
+      shadow.use();
       // Closed casters draw only the faces towards the light: casters take
       // no shadow, so their far sides' depths are never needed.
       if (d.material->cull == Cull::Back) {
@@ -618,6 +627,40 @@ struct Renderer::Impl {
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     return setup;
+  }
+
+  // A sphere (MeshItem::sphere) into the bound shadow map `map`, ray-cast
+  // (see shadow_sphere.frag) in the bands of its square that its circle
+  // reaches, one scissored triangle of impostor.vert each (see
+  // drawImpostorParts). Casters take no shadow, so the polygon offset that
+  // triangles get (against a receiver's shadow on its own faces) is not
+  // needed where gl_FragDepth replaces it.
+  void drawShadowSphere(const Drawable& d, const View& map, const glm::mat4& lightClipFromWorld) {
+    const glm::vec3 centre(d.worldFromModel[3]);
+    const float radius = glm::length(glm::vec3(d.worldFromModel[0]));
+    const std::optional<PixelRect> box = sphereBounds(map, centre, radius, kImpostorMarginPx);
+    if (!box || box->empty()) return;
+    // The light's clip space is a box, square across the light: the
+    // sphere's radius across it and along it, in its coordinates (the rows
+    // of the linear part hold each axis's scale).
+    const glm::vec3 c(lightClipFromWorld * glm::vec4(centre, 1.0f));
+    auto scaleOfRow = [&](int row) {
+      return glm::length(glm::vec3(lightClipFromWorld[0][row], lightClipFromWorld[1][row], lightClipFromWorld[2][row]));
+    };
+    shadowSphere.use();
+    shadowSphere.set("ndcDepth", 0.0f);
+    shadowSphere.set("mapSize", glm::vec2(float(kShadowMapSize)));
+    shadowSphere.set("sphereNdc", glm::vec4(c, radius * scaleOfRow(0)));
+    shadowSphere.set("depthRadius", radius * scaleOfRow(2));
+    glDisable(GL_CULL_FACE);
+    glBindVertexArray(emptyVao);
+    glEnable(GL_SCISSOR_TEST);
+    for (const PixelRect& band : sphereBands(map, *box, centre, radius, kImpostorMarginPx, kImpostorBandRows)) {
+      glScissor(band.x0, kShadowMapSize - band.y1, band.x1 - band.x0, band.y1 - band.y0);
+      shadowSphere.set("ndcRect", ndcRectOf(map, band));
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    glDisable(GL_SCISSOR_TEST);
   }
 
   // `impostor`: 0 the mesh's triangles, 1 a ray-cast sphere, 2 the same

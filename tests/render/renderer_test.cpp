@@ -14,6 +14,7 @@
 
 #include "core/error.hpp"
 #include "render/gl_context.hpp"
+#include "render/layer_key.hpp"
 #include "render/mesh_builders.hpp"
 #include "render/screen_bounds.hpp"
 #include "support/cli_runner.hpp"
@@ -771,7 +772,7 @@ TEST_F(RendererTest, OverTheLayerOnlyPartsReachingTheRectanglesAreDrawn) {
 // then shrinks as well as grows) and drawn whole must agree byte for byte.
 DrawList checkpointFrame(int k) {
   DrawList list = clipFrame(k);
-  // Twice clipFrame's size (the same aspect), so that 32-pixel tiles tell
+  // Twice clipFrame's size (the same aspect), so that the dirty tiles tell
   // the changed items from the moving ones.
   list.width *= 2;
   list.height *= 2;
@@ -848,9 +849,9 @@ TEST_F(RendererTest, ALiveLabelsLeadingWordsStayInTheLayer) {
   for (int k : {1, 2, 3, 9, 7}) EXPECT_TRUE(sameBytes(layered.render(frame(k)), plain.render(frame(k)))) << "k = " << k;
   EXPECT_EQ(layered.stats().layerBuilds, 1);
   EXPECT_EQ(layered.stats().retainedFrames, 4);  // the first frame is drawn whole
-  // The words span five 32-pixel tiles; a frame redraws the number's one
-  // (or two, where it straddles a tile's edge).
-  EXPECT_LE(layered.stats().redrawnPixels, 4 * 2 * 32 * 32);
+  // The words span several tiles; each of the four frames over the layer
+  // redraws the number's (two by two at most, where it straddles tile edges).
+  EXPECT_LE(layered.stats().redrawnPixels, 4 * 4 * TileGrid::kTile * TileGrid::kTile);
 }
 
 TEST_F(RendererTest, RetainedLayerUpdatedInPlaceWhenStaticLinesOrLabelsChange) {

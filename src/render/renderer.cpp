@@ -607,7 +607,8 @@ struct Renderer::Impl {
     glPolygonOffset(1.5f, 2.0f);
     for (const Drawable& d : items) {
       if (!d.material->castsShadow || d.material->opacity < 0.5f) continue;
-      if (d.sphere) {
+      // A sphere that also took a shadow would need the triangles' offset.
+      if (d.sphere && !d.material->receivesShadow) {
         drawShadowSphere(d, mapView, lightClipFromWorld);
         continue;
       }
@@ -632,9 +633,9 @@ struct Renderer::Impl {
   // A sphere (MeshItem::sphere) into the bound shadow map `map`, ray-cast
   // (see shadow_sphere.frag) in the bands of its square that its circle
   // reaches, one scissored triangle of impostor.vert each (see
-  // drawImpostorParts). Casters take no shadow, so the polygon offset that
-  // triangles get (against a receiver's shadow on its own faces) is not
-  // needed where gl_FragDepth replaces it.
+  // drawImpostorParts). It takes no shadow (shadowPass sees to it), so the
+  // polygon offset that triangles get (against a receiver's shadow on its
+  // own faces) is not needed where gl_FragDepth replaces it.
   void drawShadowSphere(const Drawable& d, const View& map, const glm::mat4& lightClipFromWorld) {
     const glm::vec3 centre(d.worldFromModel[3]);
     const float radius = glm::length(glm::vec3(d.worldFromModel[0]));

@@ -69,6 +69,8 @@ uniform bool twoSided;  // light the side that faces the camera
 centroid in vec3 vAmbient;
 centroid in float vNdl;
 centroid in float vGrazing;
+centroid in vec3 vLitSrgb;
+centroid in vec3 vLitSrgb2;
 #endif
 
 out vec4 fragColor;
@@ -180,14 +182,24 @@ void main() {
   alpha *= t.a;
 #endif
 #if LIT && !SPECULAR && !IMPOSTOR
-#if SHADOWED
-  float shadow = shadowFactor(vNdl);
-#else
-  float shadow = 1.0;
-#endif
-  vec3 c = albedo * (vAmbient + (1.0 - ambient) * lightColor * vNdl * shadow);
+  // Matte: lit per vertex (see mesh.vert); a checker's two colours are
+  // mixed in sRGB, also where the shadow darkens them per pixel.
   if (opacity < 1.0) alpha = clamp(alpha * vGrazing, 0.0, 1.0);
-  fragColor = vec4(encodeSrgb(c), opacity < 1.0 ? alpha : 1.0);
+#if SHADOWED
+  vec3 light = vAmbient + (1.0 - ambient) * lightColor * vNdl * shadowFactor(vNdl);
+#if PATTERN == 1
+  vec3 srgb = mix(encodeSrgb(color * light), encodeSrgb(color2 * light), checker(vUv * patternScale));
+#else
+  vec3 srgb = encodeSrgb(albedo * light);
+#endif
+#elif PATTERN == 1
+  vec3 srgb = mix(vLitSrgb, vLitSrgb2, checker(vUv * patternScale));
+#elif PATTERN == 2
+  vec3 srgb = encodeSrgb(albedo * (vAmbient + (1.0 - ambient) * lightColor * vNdl));
+#else
+  vec3 srgb = vLitSrgb;
+#endif
+  fragColor = vec4(srgb, opacity < 1.0 ? alpha : 1.0);
 #elif LIT
   vec3 v = normalize(cameraPosition - vWorldPosition);
   vec3 n = normalize(vNormal);

@@ -220,6 +220,61 @@ TEST_F(RendererTest, ARayCastSpheresShadowIsTheShadowOfItsTriangles) {
   EXPECT_LE(worst, 12);  // a penumbra pixel: a tap or two of sixteen
 }
 
+// A matte surface is lit per vertex and leaves the vertex stage in sRGB
+// (mesh.vert): inside a checker's square a pixel is its colour lit, as the
+// exact sRGB curve encodes it; on a square's edge it mixes the two squares'
+// sRGB bytes, as a resolve of samples would, not their linear light. With
+// red and blue squares of one brightness, R + B then stays that of either
+// square (a linear mix would lift an even mix of 243 and 63 to 182 + 182).
+TEST_F(RendererTest, AMatteCheckersEdgesMixItsSquaresInSrgb) {
+  auto srgb = [](float linear) {
+    const float c = std::clamp(linear, 0.0f, 1.0f);
+    return 255.0f * (c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f);
+  };
+  DrawList list;
+  list.width = 96;
+  list.height = 96;
+  list.views = {cameraView(96, 96)};
+  list.views[0].light.towardLight = glm::normalize(glm::vec3(0.3f, -0.2f, 1.0f));
+  const Light& light = list.views[0].light;
+  auto plane = std::make_shared<MeshData>();
+  for (const glm::vec2 corner : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 1)})
+    plane->vertices.push_back({glm::vec3(4.0f * corner - 2.0f, 0.0f), glm::vec3(0, 0, 1), corner});
+  plane->indices = {0, 1, 2, 0, 2, 3};
+  MeshItem floor;
+  floor.mesh = plane;
+  // Turned, so that the squares' edges cross pixels at every offset.
+  floor.worldFromModel = glm::rotate(glm::mat4(1.0f), 0.3f, glm::vec3(0, 0, 1));
+  floor.material.color = {0.9f, 0.05f, 0.05f};
+  floor.material.color2 = {0.05f, 0.05f, 0.9f};
+  floor.material.pattern = Pattern::Checker;
+  floor.material.patternScale = glm::vec2(5.0f);
+  floor.material.specular = 0.0f;
+  list.meshes.push_back(floor);
+  // The light of a plane facing +z (mesh.vert): hemisphere fill and key.
+  const float ndl = light.towardLight.z;
+  const glm::vec3 lit = light.ambient * glm::vec3(1.0f, 1.0f, 1.02f) + (1.0f - light.ambient) * light.color * ndl;
+  const float red = srgb(0.9f * lit.r), dim = srgb(0.05f * lit.b), green = srgb(0.05f * lit.g);
+  for (const int samples : {4, 1}) {
+    list.msaaSamples = samples;
+    const media::Image img = renderer_->render(list);
+    int edges = 0, squares = 0;
+    for (int y = 20; y < 76; ++y)
+      for (int x = 20; x < 76; ++x) {  // well inside the plane
+        const std::uint8_t* p = img.pixel(x, y);
+        ASSERT_NEAR(p[1], green, 1.0f) << x << "," << y;
+        ASSERT_NEAR(p[0] + p[2], red + dim, 2.0f) << x << "," << y << ": " << int(p[0]) << " " << int(p[2]);
+        edges += std::min(p[0], p[2]) > dim + 20.0f ? 1 : 0;  // well mixed
+        if (std::min(p[0], p[2]) <= dim + 1.0f) {
+          ++squares;
+          EXPECT_NEAR(std::max(p[0], p[2]), red, 1.0f) << x << "," << y;
+        }
+      }
+    EXPECT_GT(edges, 100) << samples;  // not a test of squares alone
+    EXPECT_GT(squares, 1000) << samples;
+  }
+}
+
 // A view drawn whole draws its static meshes at one sample, and in samples
 // only in the tiles near their edges: away from those tiles a frame with
 // four samples is the frame with one, byte for byte; near them its edges

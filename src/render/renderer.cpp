@@ -1829,17 +1829,10 @@ struct Renderer::Impl {
     for (const bool f : fresh) stats.freshViews += f ? 1 : 0;
     // A fresh view is read back whole below: its pixels in the layer are
     // not restored first (a follow camera's view, 5 MB at 1080p a frame).
-    std::vector<PixelRect>& restored = restoredParts;
     auto restore = [&](const PixelRect& r) {
-      restored.assign(1, r);
-      for (std::size_t i = 0; i < list.views.size(); ++i) {
-        if (!fresh[i]) continue;
-        const View& v = list.views[i];
-        restoredSplit.clear();
-        for (const PixelRect& part : restored) outside(part, PixelRect{v.x, v.y, v.x + v.width, v.y + v.height}, restoredSplit);
-        std::swap(restored, restoredSplit);
-      }
-      for (const PixelRect& part : restored) copyPixels(layerImage, image, part);
+      restoredParts.assign(1, r);
+      outsideFreshViews(list, fresh, restoredParts);
+      for (const PixelRect& part : restoredParts) copyPixels(layerImage, image, part);
     };
     if (history != nullptr && history->epoch == layerEpoch && history->version >= restorableFrom) {
       for (const PixelRect& r : history->written) restore(r);
@@ -1861,7 +1854,19 @@ struct Renderer::Impl {
     return rects;
   }
 
-  std::vector<PixelRect> restoredParts, restoredSplit;  // drawOverLayer's
+  std::vector<PixelRect> restoredParts;  // drawOverLayer's
+
+  // `rects` less the rectangles of the fresh views (drawn whole).
+  void outsideFreshViews(const DrawList& list, const std::vector<bool>& fresh, std::vector<PixelRect>& rects) {
+    for (std::size_t i = 0; i < list.views.size(); ++i) {
+      if (!fresh[i]) continue;
+      const View& v = list.views[i];
+      splitParts.clear();
+      for (const PixelRect& r : rects) outside(r, PixelRect{v.x, v.y, v.x + v.width, v.y + v.height}, splitParts);
+      std::swap(rects, splitParts);
+    }
+  }
+  std::vector<PixelRect> splitParts;  // outsideFreshViews'
 
   // `r` of `from` into `to` (images of one size).
   static void copyPixels(const media::Image& from, media::Image& to, const PixelRect& r) {
@@ -1966,14 +1971,8 @@ struct Renderer::Impl {
       copyRects(list, snapshotFbo, sceneFbo, rects);
     } else {
       clearScene(list, false);
-      std::vector<PixelRect> kept = rects, pieces;
-      for (std::size_t i = 0; i < list.views.size(); ++i) {
-        if (!fresh[i]) continue;
-        const View& v = list.views[i];
-        pieces.clear();
-        for (const PixelRect& r : kept) outside(r, PixelRect{v.x, v.y, v.x + v.width, v.y + v.height}, pieces);
-        std::swap(kept, pieces);
-      }
+      std::vector<PixelRect> kept = rects;
+      outsideFreshViews(list, fresh, kept);
       copyRects(list, snapshotFbo, sceneFbo, kept);
     }
     if (which != Items::StaticOnly) redrawSamples(list, perView, fresh);

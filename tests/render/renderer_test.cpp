@@ -220,6 +220,31 @@ TEST_F(RendererTest, ARayCastSpheresShadowIsTheShadowOfItsTriangles) {
   EXPECT_LE(worst, 12);  // a penumbra pixel: a tap or two of sixteen
 }
 
+// The sRGB level (0–255, unrounded) of a linear value, by the exact curve.
+float srgbLevel(float linear) {
+  const float c = std::clamp(linear, 0.0f, 1.0f);
+  return 255.0f * (c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f);
+}
+
+// A matte 4 × 4 plane at z = 0, checkered red and blue of one brightness,
+// `cells` squares per side, turned so that the squares' edges cross pixels
+// at every offset.
+MeshItem redBlueCheckerPlane(float cells) {
+  auto plane = std::make_shared<MeshData>();
+  for (const glm::vec2 corner : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 1)})
+    plane->vertices.push_back({glm::vec3(4.0f * corner - 2.0f, 0.0f), glm::vec3(0, 0, 1), corner});
+  plane->indices = {0, 1, 2, 0, 2, 3};
+  MeshItem floor;
+  floor.mesh = plane;
+  floor.worldFromModel = glm::rotate(glm::mat4(1.0f), 0.3f, glm::vec3(0, 0, 1));
+  floor.material.color = {0.9f, 0.05f, 0.05f};
+  floor.material.color2 = {0.05f, 0.05f, 0.9f};
+  floor.material.pattern = Pattern::Checker;
+  floor.material.patternScale = glm::vec2(cells);
+  floor.material.specular = 0.0f;
+  return floor;
+}
+
 // A matte surface is lit per vertex and leaves the vertex stage in sRGB
 // (mesh.vert): inside a checker's square a pixel is its colour lit, as the
 // exact sRGB curve encodes it; on a square's edge it mixes the two squares'
@@ -227,34 +252,17 @@ TEST_F(RendererTest, ARayCastSpheresShadowIsTheShadowOfItsTriangles) {
 // red and blue squares of one brightness, R + B then stays that of either
 // square (a linear mix would lift an even mix of 243 and 63 to 182 + 182).
 TEST_F(RendererTest, AMatteCheckersEdgesMixItsSquaresInSrgb) {
-  auto srgb = [](float linear) {
-    const float c = std::clamp(linear, 0.0f, 1.0f);
-    return 255.0f * (c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f);
-  };
   DrawList list;
   list.width = 96;
   list.height = 96;
   list.views = {cameraView(96, 96)};
   list.views[0].light.towardLight = glm::normalize(glm::vec3(0.3f, -0.2f, 1.0f));
   const Light& light = list.views[0].light;
-  auto plane = std::make_shared<MeshData>();
-  for (const glm::vec2 corner : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 1)})
-    plane->vertices.push_back({glm::vec3(4.0f * corner - 2.0f, 0.0f), glm::vec3(0, 0, 1), corner});
-  plane->indices = {0, 1, 2, 0, 2, 3};
-  MeshItem floor;
-  floor.mesh = plane;
-  // Turned, so that the squares' edges cross pixels at every offset.
-  floor.worldFromModel = glm::rotate(glm::mat4(1.0f), 0.3f, glm::vec3(0, 0, 1));
-  floor.material.color = {0.9f, 0.05f, 0.05f};
-  floor.material.color2 = {0.05f, 0.05f, 0.9f};
-  floor.material.pattern = Pattern::Checker;
-  floor.material.patternScale = glm::vec2(5.0f);
-  floor.material.specular = 0.0f;
-  list.meshes.push_back(floor);
+  list.meshes.push_back(redBlueCheckerPlane(5.0f));
   // The light of a plane facing +z (mesh.vert): hemisphere fill and key.
   const float ndl = light.towardLight.z;
   const glm::vec3 lit = light.ambient * glm::vec3(1.0f, 1.0f, 1.02f) + (1.0f - light.ambient) * light.color * ndl;
-  const float red = srgb(0.9f * lit.r), dim = srgb(0.05f * lit.b), green = srgb(0.05f * lit.g);
+  const float red = srgbLevel(0.9f * lit.r), dim = srgbLevel(0.05f * lit.b), green = srgbLevel(0.05f * lit.g);
   for (const int samples : {4, 1}) {
     list.msaaSamples = samples;
     const media::Image img = renderer_->render(list);
@@ -272,6 +280,58 @@ TEST_F(RendererTest, AMatteCheckersEdgesMixItsSquaresInSrgb) {
       }
     EXPECT_GT(edges, 100) << samples;  // not a test of squares alone
     EXPECT_GT(squares, 1000) << samples;
+  }
+}
+
+// In the shadow the re-shade (drawn over the shadow box, per pixel) mixes
+// the squares in sRGB too: inside the umbra, where only the ambient light
+// is left, R + B of every pixel is that of either square darkened, at the
+// squares' edges as well (a linear mix there would be a seam at the box).
+TEST_F(RendererTest, AMatteCheckersSquaresMixInSrgbInItsShadowToo) {
+  DrawList list;
+  list.width = 192;
+  list.height = 192;
+  View v = cameraView(192, 192);
+  v.light.shadow = true;
+  v.light.towardLight = glm::normalize(glm::vec3(1.0f, 0.0f, 1.0f));
+  v.light.shadowRadius = 3.0f;
+  v.light.shadowSoftness = 0.05f;
+  list.views = {v};
+  MeshItem floor = redBlueCheckerPlane(10.0f);
+  floor.material.castsShadow = false;
+  floor.material.receivesShadow = true;
+  list.meshes.push_back(floor);
+  // A ball up and to the light's side: its shadow falls on the plane beside it.
+  MeshItem ball;
+  ball.mesh = uvSphere(64, 32);
+  ball.worldFromModel = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.9f, 0.0f, 1.0f)), glm::vec3(0.5f));
+  ball.material.color = {0.9f, 0.9f, 0.9f};
+  list.meshes.push_back(ball);
+  // Only the ambient fill in the umbra (mesh.vert's hemisphere, facing +z).
+  const glm::vec3 ambient = v.light.ambient * glm::vec3(1.0f, 1.0f, 1.02f);
+  const float red = srgbLevel(0.9f * ambient.r), dim = srgbLevel(0.05f * ambient.b),
+              green = srgbLevel(0.05f * ambient.g);
+  for (const int samples : {4, 1}) {
+    list.msaaSamples = samples;
+    const media::Image img = renderer_->render(list);
+    // The umbra: green at its shadowed level here and 3 pixels around
+    // (the penumbra's light lifts red and blue faster than green).
+    auto dark = [&](int x, int y) { return std::abs(img.pixel(x, y)[1] - green) <= 0.5f; };
+    int umbra = 0, edges = 0;
+    for (int y = 3; y < 189; ++y)
+      for (int x = 3; x < 100; ++x) {  // left of the ball (x < 0.1 in the world)
+        bool inside = true;
+        for (int dy = -3; dy <= 3 && inside; ++dy)
+          for (int dx = -3; dx <= 3 && inside; ++dx) inside = dark(x + dx, y + dy);
+        if (!inside) continue;
+        const std::uint8_t* p = img.pixel(x, y);
+        ++umbra;
+        ASSERT_NEAR(p[0] + p[2], red + dim, 2.0f)
+            << samples << ": " << x << "," << y << ": " << int(p[0]) << " " << int(p[2]);
+        edges += std::min(p[0], p[2]) > dim + 6.0f ? 1 : 0;
+      }
+    EXPECT_GT(umbra, 600) << samples;  // the umbra is found
+    EXPECT_GT(edges, 60) << samples;   // and squares' edges cross it
   }
 }
 

@@ -10,6 +10,7 @@
 //   SHADOWED 1: sample the shadow map
 //   LIT      0: flat colour (no lighting)
 //   SPECULAR 0: no highlight, and lit per vertex (see mesh.vert)
+//   VERTEX_LIT 1: lit per vertex with the highlight (an arrow, see mesh.vert)
 //   IMPOSTOR 1: a unit sphere ray-cast per pixel (impostor.vert draws its
 //               screen rectangle) with analytic edge coverage as alpha, for
 //               framebuffers of one sample (see castSphere); 2: the same,
@@ -30,6 +31,9 @@
 #endif
 #ifndef IMPOSTOR
 #define IMPOSTOR 0
+#endif
+#ifndef VERTEX_LIT
+#define VERTEX_LIT 0
 #endif
 
 #if IMPOSTOR
@@ -71,6 +75,8 @@ centroid in float vNdl;
 centroid in float vGrazing;
 centroid in vec3 vLitSrgb;
 centroid in vec3 vLitSrgb2;
+#elif LIT && VERTEX_LIT
+centroid in vec3 vLitSrgb;
 #endif
 
 out vec4 fragColor;
@@ -165,6 +171,10 @@ vec2 seamless(vec2 derivative, float radiusOfLatitude) {
 // opaque material writes 1 even where its texture has alpha, as it is drawn
 // without blending.
 void main() {
+#if LIT && VERTEX_LIT
+  fragColor = vec4(vLitSrgb, 1.0);  // opaque (see mesh.vert)
+  return;
+#endif
 #if IMPOSTOR
   float coverage = castSphere();
 #endif

@@ -666,13 +666,16 @@ struct Renderer::Impl {
 
   // `impostor`: 0 the mesh's triangles, 1 a ray-cast sphere, 2 the same
   // under what is drawn (see drawImpostor); see mesh.frag.
-  Program& meshProgram(int pattern, bool shadowed, bool lit, bool specular, int impostor = 0) {
-    const int key = impostor * 32 + pattern * 8 + (shadowed ? 4 : 0) + (lit ? 2 : 0) + (specular ? 1 : 0);
+  // `vertexLit`: lit per vertex with the highlight (an arrow's own meshes).
+  Program& meshProgram(int pattern, bool shadowed, bool lit, bool specular, int impostor = 0, bool vertexLit = false) {
+    const int key =
+        (vertexLit ? 128 : 0) + impostor * 32 + pattern * 8 + (shadowed ? 4 : 0) + (lit ? 2 : 0) + (specular ? 1 : 0);
     auto it = meshPrograms.find(key);
     if (it == meshPrograms.end()) {
       const std::string defines = fmt::format(
-          "#define PATTERN {}\n#define SHADOWED {}\n#define LIT {}\n#define SPECULAR {}\n#define IMPOSTOR {}\n",
-          pattern, shadowed ? 1 : 0, lit ? 1 : 0, specular ? 1 : 0, impostor);
+          "#define PATTERN {}\n#define SHADOWED {}\n#define LIT {}\n#define SPECULAR {}\n#define IMPOSTOR {}\n"
+          "#define VERTEX_LIT {}\n",
+          pattern, shadowed ? 1 : 0, lit ? 1 : 0, specular ? 1 : 0, impostor, vertexLit ? 1 : 0);
       it = meshPrograms
                .emplace(key, Program(library, impostor != 0 ? "impostor.vert" : "mesh.vert", "mesh.frag", {}, defines))
                .first;
@@ -883,9 +886,13 @@ struct Renderer::Impl {
     const std::optional<PixelRect> impostor = impostorRect(d, clipToShadowBox);
     // Depth alone (drawOpaqueAtCentres) needs no shading; a ray-cast
     // sphere's depth comes from its fragment stage.
-    Program& mesh = depthOnly && !impostor
-                        ? depthProgram
-                        : meshProgram(pattern, shadowOn && m.lit, m.lit, m.specular > 0.0f, impostor ? 1 : 0);
+    // The arrows' cylinder and cone: opaque, plain, closed and culled, their
+    // facets a pixel or two wide (see mesh.vert's VERTEX_LIT).
+    const bool vertexLit = (d.mesh == cylinder || d.mesh == cone) && m.lit && m.opacity >= 1.0f && pattern == 0 &&
+                           cull == Cull::Back && !shadowOn;
+    Program& mesh = depthOnly && !impostor ? depthProgram
+                                           : meshProgram(pattern, shadowOn && m.lit, m.lit, m.specular > 0.0f,
+                                                         impostor ? 1 : 0, vertexLit);
     mesh.use();
     setMeshUniforms(mesh, d, clipToShadowBox);
     if (impostor) {

@@ -90,8 +90,10 @@ python3 - "$a_wall" "$b_wall" "$c_wall" "$a_rss" "$l_rss" "$a_cpu" "$b_cpu" "$c_
 import sys
 a, b, c, rss10, rss40, a_cpu, b_cpu, c_cpu = map(float, sys.argv[1:])
 def verdict(ok): return "ok" if ok else "MISSED"
-print(f"(a)/(b) = {a / b:.2f} wall, {a_cpu / b_cpu:.2f} CPU   target <= 1.5   {verdict(a / b <= 1.5)}")
-print(f"(c)/(a) = {c / a:.2f} wall, {c_cpu / a_cpu:.2f} CPU   target >= 3     {verdict(c / a >= 3)}")
+# The targets hold in wall and in CPU time alike.
+print(f"(a)/(b) = {a / b:.2f} wall, {a_cpu / b_cpu:.2f} CPU   target <= 1.5   "
+      f"{verdict(a / b <= 1.5 and a_cpu / b_cpu <= 1.5)}")
+print(f"(c)/(a) = {c / a:.2f} wall, {c_cpu / a_cpu:.2f} CPU   target >= 3     {verdict(c / a >= 3 and c_cpu / a_cpu >= 3)}")
 print(f"RSS long/short = {rss40 / rss10:.3f} ({rss40 / 1024:.0f} / {rss10 / 1024:.0f} MiB)   target <= 1.10   "
       f"{verdict(rss40 / rss10 <= 1.10)}")
 EOF

@@ -82,6 +82,7 @@ centroid in vec3 vLitSrgb;
 out vec4 fragColor;
 
 #include "srgb"
+#include "light"
 
 // Box-filtered checker (no aliasing at grazing angles).
 float checker(vec2 p) {
@@ -223,15 +224,12 @@ void main() {
 #else
   float shadow = 1.0;
 #endif
-  // Sky light from +z, warm bounce from below.
-  vec3 hemisphere = mix(vec3(0.62, 0.58, 0.55), vec3(1.0, 1.0, 1.02), 0.5 + 0.5 * n.z);
 #if SPECULAR || IMPOSTOR
-  vec3 h = normalize(l + v);
-  float spec = ndl > 0.0 ? specular * pow(max(dot(n, h), 0.0), shininess) : 0.0;
+  float spec = highlight(n, v, l, ndl, specular, shininess);
 #else
   const float spec = 0.0;
 #endif
-  vec3 c = albedo * (ambient * hemisphere + (1.0 - ambient) * lightColor * ndl * shadow) + spec * shadow * lightColor;
+  vec3 c = albedo * (ambient * hemisphere(n) + (1.0 - ambient) * lightColor * ndl * shadow) + spec * shadow * lightColor;
   // Translucent surfaces (glass, the Bloch sphere) thicken at grazing angles.
   if (opacity < 1.0) alpha = clamp(alpha * (1.0 + 2.0 * pow(1.0 - abs(dot(n, v)), 3.0)), 0.0, 1.0);
   fragColor = vec4(encodeSrgb(c), opacity < 1.0 ? alpha : 1.0);

@@ -31,6 +31,15 @@ centroid out vec3 vNormal;
 centroid out vec2 vUv;
 centroid out vec4 vLightClip;
 
+#if LIT && (!SPECULAR || VERTEX_LIT)
+uniform vec3 towardLight;  // unit
+uniform vec3 lightColor;
+uniform float ambient;
+uniform vec3 cameraPosition;
+uniform vec3 color;
+#include "srgb"
+#include "light"
+#endif
 #if LIT && !SPECULAR
 // Matte surfaces are lit per vertex (Gouraud): without a highlight the
 // light varies slowly across a triangle (on a plane not at all), and the
@@ -42,20 +51,14 @@ centroid out vec4 vLightClip;
 // a level where it varies slowly, and the same on a plane. A checker's edge
 // pixels blend its colours in sRGB too, as a resolve of samples does and
 // as the quality table's reference, a box filter of sRGB bytes, does.
-uniform vec3 towardLight;  // unit
-uniform vec3 lightColor;
-uniform float ambient;
-uniform vec3 cameraPosition;
 uniform bool twoSided;        // light the side that faces the camera
 uniform bool backFacesShown;  // Cull::Front: the back side is the visible one
-uniform vec3 color;
 uniform vec3 color2;
 centroid out vec3 vAmbient;  // ambient · hemisphere
 centroid out float vNdl;     // max(n·l, 0)
 centroid out float vGrazing;  // translucent materials thicken at grazing angles: alpha factor
 centroid out vec3 vLitSrgb;   // color lit, unshadowed, sRGB-encoded
 centroid out vec3 vLitSrgb2;  // color2 so
-#include "srgb"
 #elif LIT && VERTEX_LIT
 // An arrow's shaft and head (the renderer's own cylinder and cone, opaque,
 // back faces culled) are lit per vertex with the highlight too, and leave
@@ -63,16 +66,10 @@ centroid out vec3 vLitSrgb2;  // color2 so
 // are drawn, so the light interpolated across one is the light per pixel
 // to within rounding, and the fragment stage, which llvmpipe pays for on
 // every pixel of every sample tile they reach, only passes it on (about
-// 0.7 ms of a fixed-camera 1080p frame). Blinn–Phong as in mesh.frag.
-uniform vec3 towardLight;  // unit
-uniform vec3 lightColor;
-uniform float ambient;
-uniform vec3 cameraPosition;
-uniform vec3 color;
+// 0.7 ms of a fixed-camera 1080p frame).
 uniform float specular;
 uniform float shininess;
 centroid out vec3 vLitSrgb;
-#include "srgb"
 #endif
 
 void main() {
@@ -85,8 +82,7 @@ void main() {
   vec3 n = normalize(vNormal);
   vec3 v = normalize(cameraPosition - world.xyz);
   n = twoSided ? faceforward(n, -v, n) : (backFacesShown ? -n : n);
-  // Sky light from +z, warm bounce from below (as in mesh.frag).
-  vAmbient = ambient * mix(vec3(0.62, 0.58, 0.55), vec3(1.0, 1.0, 1.02), 0.5 + 0.5 * n.z);
+  vAmbient = ambient * hemisphere(n);
   vNdl = max(dot(n, towardLight), 0.0);
   vGrazing = 1.0 + 2.0 * pow(1.0 - abs(dot(n, v)), 3.0);
   vec3 light = vAmbient + (1.0 - ambient) * lightColor * vNdl;
@@ -96,10 +92,8 @@ void main() {
   vec3 n = normalize(vNormal);
   vec3 v = normalize(cameraPosition - world.xyz);
   float ndl = max(dot(n, towardLight), 0.0);
-  vec3 hemisphere = mix(vec3(0.62, 0.58, 0.55), vec3(1.0, 1.0, 1.02), 0.5 + 0.5 * n.z);
-  vec3 h = normalize(towardLight + v);
-  float spec = ndl > 0.0 ? specular * pow(max(dot(n, h), 0.0), shininess) : 0.0;
-  vLitSrgb = encodeSrgb(color * (ambient * hemisphere + (1.0 - ambient) * lightColor * ndl) + spec * lightColor);
+  float spec = highlight(n, v, towardLight, ndl, specular, shininess);
+  vLitSrgb = encodeSrgb(color * (ambient * hemisphere(n) + (1.0 - ambient) * lightColor * ndl) + spec * lightColor);
 #endif
   vec2 box = vLightClip.xy / vLightClip.w;
   gl_ClipDistance[0] = clipToShadowBox ? 1.0 - box.x : 1.0;

@@ -497,6 +497,9 @@ struct Renderer::Impl {
     const Material* material;
     bool dynamic = false;  // see MeshItem::dynamic
     bool sphere = false;   // see MeshItem::sphere
+    // An arrow's cylinder or cone (opaque, plain, culled, its facets a
+    // pixel or two wide): lit per vertex, see mesh.vert's VERTEX_LIT.
+    bool litPerVertex = false;
   };
 
   std::vector<Drawable> drawablesOf(const DrawList& list, int view, std::vector<Material>& arrowMaterials) {
@@ -514,8 +517,8 @@ struct Renderer::Impl {
       mat.color = a.color;
       mat.specular = 0.35f;
       mat.shininess = 64.0f;
-      out.push_back({cylinder, alongSegment(a.origin, neck, a.shaftRadius), &mat, a.dynamic});
-      out.push_back({cone, alongSegment(neck, a.tip, a.shaftRadius * 2.6f), &mat, a.dynamic});
+      out.push_back({cylinder, alongSegment(a.origin, neck, a.shaftRadius), &mat, a.dynamic, false, true});
+      out.push_back({cone, alongSegment(neck, a.tip, a.shaftRadius * 2.6f), &mat, a.dynamic, false, true});
     }
     // Every mesh the list names stays cached, also one a retained frame does
     // not draw (evicting it would re-upload it at the next layer build).
@@ -886,13 +889,9 @@ struct Renderer::Impl {
     const std::optional<PixelRect> impostor = impostorRect(d, clipToShadowBox);
     // Depth alone (drawOpaqueAtCentres) needs no shading; a ray-cast
     // sphere's depth comes from its fragment stage.
-    // The arrows' cylinder and cone: opaque, plain, closed and culled, their
-    // facets a pixel or two wide (see mesh.vert's VERTEX_LIT).
-    const bool vertexLit = (d.mesh == cylinder || d.mesh == cone) && m.lit && m.opacity >= 1.0f && pattern == 0 &&
-                           cull == Cull::Back && !shadowOn;
     Program& mesh = depthOnly && !impostor ? depthProgram
                                            : meshProgram(pattern, shadowOn && m.lit, m.lit, m.specular > 0.0f,
-                                                         impostor ? 1 : 0, vertexLit);
+                                                         impostor ? 1 : 0, d.litPerVertex);
     mesh.use();
     setMeshUniforms(mesh, d, clipToShadowBox);
     if (impostor) {

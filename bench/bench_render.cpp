@@ -129,6 +129,8 @@ void BM_ClipFrames1080p(benchmark::State& state) {
   state.counters["redrawn_share"] = double(renderer.stats().redrawnPixels - before.redrawnPixels) /
                                     double(std::max(1LL, renderer.stats().retainedPixels - before.retainedPixels));
   state.counters["layer_updates_per_frame"] = double(renderer.stats().layerUpdates - before.layerUpdates) / n;
+  state.counters["sphere_replays_per_frame"] = double(renderer.stats().sphereReplays - before.sphereReplays) / n;
+  state.counters["sphere_captures"] = double(renderer.stats().sphereCaptures - before.sphereCaptures);
   state.counters["sampled_share"] = double(renderer.stats().sampledPixels - before.sampledPixels) /
                                     double(std::max(1LL, renderer.stats().wholeViewPixels - before.wholeViewPixels));
   // The samples as the scene says them (ROLLSPIN_BENCH_SET may change them).

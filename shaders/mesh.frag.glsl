@@ -17,6 +17,8 @@
 //               premultiplied, without a depth of its own (the renderer's
 //               pass under what a pixel shows: the rectangle lies at the
 //               sphere's far depth, so llvmpipe tests it before shading)
+//   CAPTURE  1: IMPOSTOR 1 drawn into a capture (the renderer's
+//               SphereCapture), which keeps the depth it gives a pixel too
 #ifndef PATTERN
 #define PATTERN 0
 #endif
@@ -34,6 +36,9 @@
 #endif
 #ifndef VERTEX_LIT
 #define VERTEX_LIT 0
+#endif
+#ifndef CAPTURE
+#define CAPTURE 0
 #endif
 
 #if IMPOSTOR
@@ -79,7 +84,10 @@ centroid in vec3 vLitSrgb2;
 centroid in vec3 vLitSrgb;
 #endif
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
+#if CAPTURE
+layout(location = 1) out float capturedDepth;
+#endif
 
 #include "srgb"
 #include "light"
@@ -153,7 +161,11 @@ float castSphere() {
   vUv = vec2(u, acos(clamp(model.z, -1.0, 1.0)) / 3.14159265);
 #if IMPOSTOR == 1
   vec4 clip = clipFromWorld * vec4(world, 1.0);
-  gl_FragDepth = clamp(0.5 + 0.5 * clip.z / clip.w, 0.0, 1.0);
+  float depth = clamp(0.5 + 0.5 * clip.z / clip.w, 0.0, 1.0);
+  gl_FragDepth = depth;
+#if CAPTURE
+  capturedDepth = depth;
+#endif
 #endif
   return coverage;
 }

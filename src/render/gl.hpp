@@ -33,6 +33,7 @@
   X(glBufferData) \
   X(glCheckFramebufferStatus) \
   X(glClear) \
+  X(glClearBufferfv) \
   X(glClearColor) \
   X(glColorMask) \
   X(glCompileShader) \
@@ -51,6 +52,7 @@
   X(glDisable) \
   X(glDrawArrays) \
   X(glDrawBuffer) \
+  X(glDrawBuffers) \
   X(glDrawElements) \
   X(glEnable) \
   X(glEnableVertexAttribArray) \
@@ -93,6 +95,7 @@
   X(glUniform1i) \
   X(glUniform1ui) \
   X(glUniform2fv) \
+  X(glUniform2i) \
   X(glUniform3fv) \
   X(glUniform4fv) \
   X(glUniformMatrix3fv) \
@@ -121,6 +124,7 @@ ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DECLARE)
 #define glBufferData ::rollspin::render::gl_api::glBufferData
 #define glCheckFramebufferStatus ::rollspin::render::gl_api::glCheckFramebufferStatus
 #define glClear ::rollspin::render::gl_api::glClear
+#define glClearBufferfv ::rollspin::render::gl_api::glClearBufferfv
 #define glClearColor ::rollspin::render::gl_api::glClearColor
 #define glColorMask ::rollspin::render::gl_api::glColorMask
 #define glCompileShader ::rollspin::render::gl_api::glCompileShader
@@ -139,6 +143,7 @@ ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DECLARE)
 #define glDisable ::rollspin::render::gl_api::glDisable
 #define glDrawArrays ::rollspin::render::gl_api::glDrawArrays
 #define glDrawBuffer ::rollspin::render::gl_api::glDrawBuffer
+#define glDrawBuffers ::rollspin::render::gl_api::glDrawBuffers
 #define glDrawElements ::rollspin::render::gl_api::glDrawElements
 #define glEnable ::rollspin::render::gl_api::glEnable
 #define glEnableVertexAttribArray ::rollspin::render::gl_api::glEnableVertexAttribArray
@@ -181,6 +186,7 @@ ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DECLARE)
 #define glUniform1i ::rollspin::render::gl_api::glUniform1i
 #define glUniform1ui ::rollspin::render::gl_api::glUniform1ui
 #define glUniform2fv ::rollspin::render::gl_api::glUniform2fv
+#define glUniform2i ::rollspin::render::gl_api::glUniform2i
 #define glUniform3fv ::rollspin::render::gl_api::glUniform3fv
 #define glUniform4fv ::rollspin::render::gl_api::glUniform4fv
 #define glUniformMatrix3fv ::rollspin::render::gl_api::glUniformMatrix3fv

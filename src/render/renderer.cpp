@@ -95,6 +95,7 @@ class Program {
   void set(const char* n, const glm::vec2& v) { glUniform2fv(at(n), 1, glm::value_ptr(v)); }
   void set(const char* n, float v) { glUniform1f(at(n), v); }
   void set(const char* n, int v) { glUniform1i(at(n), v); }
+  void set(const char* n, const glm::ivec2& v) { glUniform2i(at(n), v.x, v.y); }
   void set(const char* n, unsigned v) { glUniform1ui(at(n), v); }
   void set(const char* n, const glm::vec2* v, int count) { glUniform2fv(at(n), count, glm::value_ptr(*v)); }
   void release() {
@@ -240,7 +241,7 @@ struct Renderer::Impl {
   bool retainLayers = true;
   std::map<int, Program> meshPrograms;  // by variant: see meshProgram
   MeshViewUniforms viewUniforms;
-  Program shadow, shadowSphere, line, text, depthProgram;
+  Program shadow, shadowSphere, line, text, depthProgram, sphereReplay;
   GLuint emptyVao = 0;
   GLuint streamVao = 0, streamVbo = 0;  // polylines (vec3)
   GLuint textVao = 0, textVbo = 0;      // glyph quads (vec2 pixel, vec2 uv)
@@ -302,7 +303,8 @@ struct Renderer::Impl {
         shadowSphere(lib, "impostor.vert", "shadow_sphere.frag"),
         line(lib, "line.vert", "line.frag", "line.geom"),
         text(lib, "text.vert", "text.frag"),
-        depthProgram(lib, "mesh.vert", "depth.frag", {}, "#define LIT 0\n") {
+        depthProgram(lib, "mesh.vert", "depth.frag", {}, "#define LIT 0\n"),
+        sphereReplay(lib, "sphere_replay.vert", "sphere_replay.frag") {
     glGenVertexArrays(1, &emptyVao);
     glGenVertexArrays(1, &streamVao);
     glGenBuffers(1, &streamVbo);
@@ -337,7 +339,8 @@ struct Renderer::Impl {
     glDeleteVertexArrays(1, &textVao);
     glDeleteVertexArrays(1, &emptyVao);
     for (auto& [key, p] : meshPrograms) p.release();
-    for (Program* p : {&shadow, &line, &text, &depthProgram}) p->release();
+    for (Program* p : {&shadow, &shadowSphere, &line, &text, &depthProgram, &sphereReplay}) p->release();
+    releaseSphereCaptures();
     if (resolver) resolver->release();
   }
 
@@ -355,6 +358,7 @@ struct Renderer::Impl {
   void ensureFramebuffers(int w, int h, int samples) {
     if (w == fbWidth && h == fbHeight && samples == fbSamples) return;
     releaseFramebuffers();
+    releaseSphereCaptures();
     auto checkComplete = [&] {
       if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw runtimeError({}, "OpenGL could not create a {}x{} framebuffer with {} samples (out of memory?)", w, h,
@@ -670,15 +674,16 @@ struct Renderer::Impl {
   // `impostor`: 0 the mesh's triangles, 1 a ray-cast sphere, 2 the same
   // under what is drawn (see drawImpostor); see mesh.frag.
   // `vertexLit`: lit per vertex with the highlight (an arrow's own meshes).
-  Program& meshProgram(int pattern, bool shadowed, bool lit, bool specular, int impostor = 0, bool vertexLit = false) {
-    const int key =
-        (vertexLit ? 128 : 0) + impostor * 32 + pattern * 8 + (shadowed ? 4 : 0) + (lit ? 2 : 0) + (specular ? 1 : 0);
+  Program& meshProgram(int pattern, bool shadowed, bool lit, bool specular, int impostor = 0, bool vertexLit = false,
+                       bool capture = false) {
+    const int key = (capture ? 256 : 0) + (vertexLit ? 128 : 0) + impostor * 32 + pattern * 8 + (shadowed ? 4 : 0) +
+                    (lit ? 2 : 0) + (specular ? 1 : 0);
     auto it = meshPrograms.find(key);
     if (it == meshPrograms.end()) {
       const std::string defines = fmt::format(
           "#define PATTERN {}\n#define SHADOWED {}\n#define LIT {}\n#define SPECULAR {}\n#define IMPOSTOR {}\n"
-          "#define VERTEX_LIT {}\n",
-          pattern, shadowed ? 1 : 0, lit ? 1 : 0, specular ? 1 : 0, impostor, vertexLit ? 1 : 0);
+          "#define VERTEX_LIT {}\n#define CAPTURE {}\n",
+          pattern, shadowed ? 1 : 0, lit ? 1 : 0, specular ? 1 : 0, impostor, vertexLit ? 1 : 0, capture ? 1 : 0);
       it = meshPrograms
                .emplace(key, Program(library, impostor != 0 ? "impostor.vert" : "mesh.vert", "mesh.frag", {}, defines))
                .first;
@@ -752,7 +757,7 @@ struct Renderer::Impl {
   // A ray-cast sphere (mesh.frag with IMPOSTOR): the bands of its screen
   // rectangle that it reaches, its silhouette's coverage blended over what
   // is behind, depth per pixel.
-  void drawImpostor(const Drawable& d, Program& mesh, const PixelRect& rect, int pattern) {
+  void drawImpostor(const Drawable& d, Program& mesh, const PixelRect& rect, int pattern, bool shadowed) {
     const View& v = *viewUniforms.view;
     const Material& m = *d.material;
     const bool opaque = m.opacity >= 1.0f;
@@ -782,6 +787,38 @@ struct Renderer::Impl {
     glEnable(GL_BLEND);
     glDisable(GL_CULL_FACE);
     glBindVertexArray(emptyVao);
+    // Over a retained layer, a translucent sphere that stays there (the
+    // Bloch sphere's glass, shaded again in every frame's rectangles over
+    // it) is replayed from its capture.
+    if (!opaque && !depthOnly && !shadowed && drawClips != nullptr) {
+      const SphereCapture& capture = sphereCaptureOf(d, rect, pattern, worldFromClip, viewport);
+      GLint activeUnit = GL_TEXTURE0;
+      glGetIntegerv(GL_ACTIVE_TEXTURE, &activeUnit);
+      glActiveTexture(GL_TEXTURE2);
+      glBindTexture(GL_TEXTURE_2D, capture.color);
+      glActiveTexture(GL_TEXTURE3);
+      glBindTexture(GL_TEXTURE_2D, capture.depth);
+      glActiveTexture(static_cast<GLenum>(activeUnit));
+      sphereReplay.use();
+      sphereReplay.set("capturedColor", 2);
+      sphereReplay.set("capturedDepth", 3);
+      sphereReplay.set("captureOrigin", glm::ivec2(capture.originX, capture.originY));
+      sphereReplay.set("viewportRect", viewport);
+      replayCorners.clear();
+      for (const PixelRect& p : parts) {
+        const float x0 = float(p.x0), x1 = float(p.x1), y0 = float(fbHeight - p.y1), y1 = float(fbHeight - p.y0);
+        for (const glm::vec2 corner : {glm::vec2(x0, y0), glm::vec2(x1, y0), glm::vec2(x1, y1), glm::vec2(x0, y0),
+                                       glm::vec2(x1, y1), glm::vec2(x0, y1)})
+          replayCorners.emplace_back(corner, 0.0f);
+      }
+      glBindVertexArray(streamVao);
+      glBindBuffer(GL_ARRAY_BUFFER, streamVbo);
+      glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(replayCorners.size() * sizeof(glm::vec3)),
+                   replayCorners.data(), GL_STREAM_DRAW);
+      glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(replayCorners.size()));
+      ++stats.sphereReplays;
+      return;
+    }
     const bool behindEdges = opaque && !depthOnly;
     if (behindEdges) {
       // Behind what a pixel's centre shows, where that covers the pixel only
@@ -828,6 +865,133 @@ struct Renderer::Impl {
     drawImpostorParts(mesh, v, parts);
     if (behindEdges && !underEverywhere) underRects.push_back(rect);  // its edges, for a sphere drawn after it
     if (opaque) glDisable(GL_BLEND);
+  }
+
+  // A translucent ray-cast sphere's fragments depend on the pixel's
+  // position and on uniforms alone (see mesh.frag's castSphere): captured
+  // once over its screen rectangle (the colour mesh.frag gives each pixel,
+  // before blending, and its depth), they are replayed in later frames
+  // (sphere_replay.frag) with the same values, so blending and the depth
+  // test give the same bytes. A frame over the layer then fetches two
+  // texels a pixel instead of casting the ray and lighting it.
+  struct SphereCapture {
+    GLuint fbo = 0, color = 0, depth = 0;
+    int originX = 0, originY = 0;  // the window pixel (GL, from the bottom) of texel (0, 0)
+    // What the fragments depend on (the unshadowed program reads no more).
+    glm::mat4 worldFromModel{1.0f}, clipFromWorld{1.0f};
+    glm::vec3 towardLight{0.0f}, lightColor{0.0f}, cameraPosition{0.0f};
+    float ambient = 0.0f;
+    glm::vec4 viewport{0.0f};
+    PixelRect rect;
+    Material material;
+    bool sameInputs(const SphereCapture& o) const {
+      return worldFromModel == o.worldFromModel && clipFromWorld == o.clipFromWorld && towardLight == o.towardLight &&
+             lightColor == o.lightColor && cameraPosition == o.cameraPosition && ambient == o.ambient &&
+             viewport == o.viewport && rect.x0 == o.rect.x0 && rect.y0 == o.rect.y0 && rect.x1 == o.rect.x1 &&
+             rect.y1 == o.rect.y1 && material == o.material;
+    }
+  };
+  std::deque<SphereCapture> sphereCaptures;  // the newest last
+  std::vector<glm::vec3> replayCorners;      // drawImpostor's scratch
+  static constexpr std::size_t kSphereCapturesKept = 4;
+
+  static void releaseCapture(const SphereCapture& c) {
+    glDeleteFramebuffers(1, &c.fbo);
+    const GLuint textures[] = {c.color, c.depth};
+    glDeleteTextures(2, textures);
+  }
+
+  void releaseSphereCaptures() {
+    for (const SphereCapture& c : sphereCaptures) releaseCapture(c);
+    sphereCaptures.clear();
+  }
+
+  // The capture of the unshadowed translucent sphere `d` drawn in `rect`
+  // with the uniforms in force, made now if none matches. Drawn into its
+  // own framebuffer, as drawImpostor draws it, with texel (0, 0) at an even
+  // window pixel: the derivatives pair the pixels of the same 2×2 quads.
+  // (Binding that framebuffer makes llvmpipe run the scene binned so far:
+  // once per layer.)
+  const SphereCapture& sphereCaptureOf(const Drawable& d, const PixelRect& rect, int pattern,
+                                       const glm::mat4& worldFromClip, const glm::vec4& viewport) {
+    const MeshViewUniforms& u = viewUniforms;
+    SphereCapture key;
+    key.worldFromModel = d.worldFromModel;
+    key.clipFromWorld = u.clipFromWorld;
+    key.towardLight = u.towardLight;
+    key.lightColor = u.lightColor;
+    key.cameraPosition = u.cameraPosition;
+    key.ambient = u.ambient;
+    key.viewport = viewport;
+    key.rect = rect;
+    key.material = *d.material;
+    for (const SphereCapture& c : sphereCaptures)
+      if (c.sameInputs(key)) return c;
+    if (sphereCaptures.size() == kSphereCapturesKept) {
+      releaseCapture(sphereCaptures.front());
+      sphereCaptures.pop_front();
+    }
+    SphereCapture& c = sphereCaptures.emplace_back(std::move(key));
+    c.originX = rect.x0 & ~1;
+    c.originY = (fbHeight - rect.y1) & ~1;
+    const int width = rect.x1 - c.originX, height = fbHeight - rect.y0 - c.originY;
+    glGenTextures(1, &c.color);
+    glBindTexture(GL_TEXTURE_2D, c.color);
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, width, height);
+    glGenTextures(1, &c.depth);
+    glBindTexture(GL_TEXTURE_2D, c.depth);
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_R32F, width, height);
+    for (const GLuint t : {c.color, c.depth}) {
+      glBindTexture(GL_TEXTURE_2D, t);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    GLint drawFbo = 0, viewportBox[4], scissorBox[4];
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFbo);
+    glGetIntegerv(GL_VIEWPORT, viewportBox);
+    glGetIntegerv(GL_SCISSOR_BOX, scissorBox);
+    const bool scissored = glIsEnabled(GL_SCISSOR_TEST), blended = glIsEnabled(GL_BLEND),
+               depthTested = glIsEnabled(GL_DEPTH_TEST);
+    glGenFramebuffers(1, &c.fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, c.fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, c.color, 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, c.depth, 0);
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(2, buffers);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw runtimeError({}, "OpenGL could not create a {}x{} float framebuffer (out of memory?)", width, height);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f}, noDepth[4] = {-1.0f, 0.0f, 0.0f, 0.0f};
+    glClearBufferfv(GL_COLOR, 0, none);
+    glClearBufferfv(GL_COLOR, 1, noDepth);
+    const glm::vec4 shifted = viewport - glm::vec4(float(c.originX), float(c.originY), 0.0f, 0.0f);
+    glViewport(int(shifted.x), int(shifted.y), int(shifted.z), int(shifted.w));
+    const Material& m = *d.material;
+    Program& program = meshProgram(pattern, false, m.lit, m.specular > 0.0f, 1, false, true);
+    program.use();
+    setMeshUniforms(program, d, false);
+    program.set("worldFromClip", worldFromClip);
+    program.set("viewportRect", shifted);
+    program.set("ndcDepth", 0.0f);
+    const View& v = *u.view;
+    glEnable(GL_SCISSOR_TEST);
+    for (const PixelRect& band :
+         sphereBands(v, rect, glm::vec3(d.worldFromModel[3]), glm::length(glm::vec3(d.worldFromModel[0])),
+                     kImpostorMarginPx, kImpostorBandRows)) {
+      glScissor(band.x0 - c.originX, fbHeight - band.y1 - c.originY, band.x1 - band.x0, band.y1 - band.y0);
+      program.set("ndcRect", ndcRectOf(v, band));
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    ++stats.sphereCaptures;
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(drawFbo));
+    glViewport(viewportBox[0], viewportBox[1], viewportBox[2], viewportBox[3]);
+    glScissor(scissorBox[0], scissorBox[1], scissorBox[2], scissorBox[3]);
+    if (!scissored) glDisable(GL_SCISSOR_TEST);
+    if (blended) glEnable(GL_BLEND);
+    if (depthTested) glEnable(GL_DEPTH_TEST);
+    return c;
   }
 
   // The parts of `r` outside `hole`, appended to `out` (disjoint, at most four).
@@ -895,7 +1059,7 @@ struct Renderer::Impl {
     mesh.use();
     setMeshUniforms(mesh, d, clipToShadowBox);
     if (impostor) {
-      drawImpostor(d, mesh, *impostor, pattern);
+      drawImpostor(d, mesh, *impostor, pattern, shadowOn && m.lit);
       return;
     }
     if (cull == Cull::None) {
@@ -2110,6 +2274,7 @@ struct Renderer::Impl {
       if (history != nullptr) *history = {layerEpoch, layerVersion, std::move(drawn), image.rgba.data()};
       ++stats.retainedFrames;
     } else {
+      releaseSphereCaptures();  // no layer: a camera move, most likely, which they would not survive
       clearScene(list, false);
       drawWhole(list, perView);
       readBack(list, image, PixelRect{0, 0, list.width, list.height});

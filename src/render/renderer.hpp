@@ -39,6 +39,9 @@ struct RenderStats {
   // Views drawn whole with multisampling: their pixels, and those drawn in
   // samples (the tiles near a mesh's edges, see renderer.cpp's sampleTiles).
   long long wholeViewPixels = 0, sampledPixels = 0;
+  // Translucent ray-cast spheres over a layer (the Bloch sphere's glass):
+  // captured once, then replayed in each frame's rectangles (see renderer.cpp).
+  long long sphereCaptures = 0, sphereReplays = 0;
 };
 
 // What a renderer last wrote into one image that nothing else writes (a

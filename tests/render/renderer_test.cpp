@@ -688,8 +688,9 @@ TEST_F(RendererTest, PolylineThroughTheNearPlaneDrawsItsVisiblePart) {
 
 // A two-view frame whose static part (a shadowed checker floor, a glass
 // sphere, lines, labels) stays while a ball, its trail, an arrow and a live
-// label move: frame k of a short clip.
-DrawList clipFrame(int k, int samples = 4) {
+// label move: frame k of a short clip. `rayCastGlass`: the glass is a
+// ray-cast sphere, as the Bloch sphere's is.
+DrawList clipFrame(int k, int samples = 4, bool rayCastGlass = false) {
   DrawList list;
   list.msaaSamples = samples;
   list.width = 160;
@@ -725,6 +726,7 @@ DrawList clipFrame(int k, int samples = 4) {
   glass.mesh = sphere;
   glass.material.opacity = 0.2f;
   glass.view = 1;
+  glass.sphere = rayCastGlass;
   list.meshes.push_back(glass);
   MeshItem ball;
   ball.mesh = sphere;
@@ -834,6 +836,54 @@ TEST_F(RendererTest, RetainedLayerFramesMatchFramesDrawnWholeAtOneSample) {
   for (int k : {4, 1, 5, 0, 3, 2, 4, 4, 1})
     EXPECT_TRUE(sameBytes(shuffled.render(clipFrame(k, 1)), whole[k])) << "frame " << k;
   EXPECT_GT(shuffled.stats().retainedFrames, 5);
+}
+
+// The Bloch sphere's glass is a translucent ray-cast sphere. Over a layer
+// it is captured once and replayed in each frame's rectangles; that gives
+// the bytes of frames that cast it, in any order, where an arrow pokes out
+// through its front (the depth test sees the replayed depth), and after
+// its colour changes while the camera holds (captured again).
+TEST_F(RendererTest, ARayCastGlassReplayedOverTheLayerMatchesFramesDrawnWhole) {
+  constexpr int kFrames = 6;
+  auto frame = [](int k) {
+    DrawList list = clipFrame(k, 4, true);
+    // Through the glass's front, towards the camera, turning.
+    list.arrows.push_back({glm::vec3(0),
+                           glm::vec3(0.4f * std::cos(0.7f * float(k)), 0.4f * std::sin(0.7f * float(k)), 1.3f), 0.06f,
+                           glm::vec3(0.1f, 0.7f, 0.2f), 1, true});
+    return list;
+  };
+  Renderer plain(*context_, ShaderLibrary{});
+  plain.setRetainLayers(false);
+  std::vector<media::Image> whole(kFrames);
+  for (int k = 0; k < kFrames; ++k) whole[k] = plain.render(frame(k));
+  EXPECT_EQ(plain.stats().sphereCaptures, 0);
+  EXPECT_NE(whole[0].rgba, whole[1].rgba);
+
+  Renderer inOrder(*context_, ShaderLibrary{});
+  for (int k = 0; k < kFrames; ++k) EXPECT_TRUE(sameBytes(inOrder.render(frame(k)), whole[k])) << "frame " << k;
+  EXPECT_EQ(inOrder.stats().retainedFrames, kFrames - 1);
+  EXPECT_EQ(inOrder.stats().sphereCaptures, 1);
+  EXPECT_GE(inOrder.stats().sphereReplays, kFrames - 1);
+
+  Renderer shuffled(*context_, ShaderLibrary{});
+  for (int k : {4, 1, 5, 0, 3, 2, 4, 4, 1})
+    EXPECT_TRUE(sameBytes(shuffled.render(frame(k)), whole[k])) << "frame " << k;
+  EXPECT_EQ(shuffled.stats().sphereCaptures, 1);
+
+  // The glass tinted: a static translucent mesh that changed (the layer is
+  // updated in place); the old capture no longer serves.
+  const RenderStats before = shuffled.stats();
+  DrawList tinted = frame(3);
+  tinted.meshes[1].material.color = {0.9f, 0.6f, 0.3f};
+  const media::Image expected = plain.render(tinted);
+  EXPECT_NE(expected.rgba, whole[3].rgba);
+  EXPECT_TRUE(sameBytes(shuffled.render(tinted), expected));
+  EXPECT_EQ(shuffled.stats().retainedFrames, before.retainedFrames + 1);
+  EXPECT_EQ(shuffled.stats().sphereCaptures, before.sphereCaptures + 1);
+  tinted = frame(5);
+  tinted.meshes[1].material.color = {0.9f, 0.6f, 0.3f};
+  EXPECT_TRUE(sameBytes(shuffled.render(tinted), plain.render(tinted)));
 }
 
 // A ray-cast ball that passes behind the edge of a static opaque sphere (a

@@ -27,6 +27,7 @@
   X(glBindFramebuffer) \
   X(glBindRenderbuffer) \
   X(glBindTexture) \
+  X(glBindTextureUnit) \
   X(glBindVertexArray) \
   X(glBlendFuncSeparate) \
   X(glBlitFramebuffer) \
@@ -39,6 +40,7 @@
   X(glCompileShader) \
   X(glCreateProgram) \
   X(glCreateShader) \
+  X(glCreateTextures) \
   X(glCullFace) \
   X(glDeleteBuffers) \
   X(glDeleteFramebuffers) \
@@ -90,6 +92,8 @@
   X(glTexStorage2D) \
   X(glTexStorage2DMultisample) \
   X(glTexSubImage2D) \
+  X(glTextureParameteri) \
+  X(glTextureStorage2D) \
   X(glTextureView) \
   X(glUniform1f) \
   X(glUniform1i) \
@@ -118,6 +122,7 @@ ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DECLARE)
 #define glBindFramebuffer ::rollspin::render::gl_api::glBindFramebuffer
 #define glBindRenderbuffer ::rollspin::render::gl_api::glBindRenderbuffer
 #define glBindTexture ::rollspin::render::gl_api::glBindTexture
+#define glBindTextureUnit ::rollspin::render::gl_api::glBindTextureUnit
 #define glBindVertexArray ::rollspin::render::gl_api::glBindVertexArray
 #define glBlendFuncSeparate ::rollspin::render::gl_api::glBlendFuncSeparate
 #define glBlitFramebuffer ::rollspin::render::gl_api::glBlitFramebuffer
@@ -130,6 +135,7 @@ ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DECLARE)
 #define glCompileShader ::rollspin::render::gl_api::glCompileShader
 #define glCreateProgram ::rollspin::render::gl_api::glCreateProgram
 #define glCreateShader ::rollspin::render::gl_api::glCreateShader
+#define glCreateTextures ::rollspin::render::gl_api::glCreateTextures
 #define glCullFace ::rollspin::render::gl_api::glCullFace
 #define glDeleteBuffers ::rollspin::render::gl_api::glDeleteBuffers
 #define glDeleteFramebuffers ::rollspin::render::gl_api::glDeleteFramebuffers
@@ -181,6 +187,8 @@ ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_DECLARE)
 #define glTexStorage2D ::rollspin::render::gl_api::glTexStorage2D
 #define glTexStorage2DMultisample ::rollspin::render::gl_api::glTexStorage2DMultisample
 #define glTexSubImage2D ::rollspin::render::gl_api::glTexSubImage2D
+#define glTextureParameteri ::rollspin::render::gl_api::glTextureParameteri
+#define glTextureStorage2D ::rollspin::render::gl_api::glTextureStorage2D
 #define glTextureView ::rollspin::render::gl_api::glTextureView
 #define glUniform1f ::rollspin::render::gl_api::glUniform1f
 #define glUniform1i ::rollspin::render::gl_api::glUniform1i

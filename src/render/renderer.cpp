@@ -792,13 +792,8 @@ struct Renderer::Impl {
     // it) is replayed from its capture.
     if (!opaque && !depthOnly && !shadowed && drawClips != nullptr) {
       const SphereCapture& capture = sphereCaptureOf(d, rect, pattern, worldFromClip, viewport);
-      GLint activeUnit = GL_TEXTURE0;
-      glGetIntegerv(GL_ACTIVE_TEXTURE, &activeUnit);
-      glActiveTexture(GL_TEXTURE2);
-      glBindTexture(GL_TEXTURE_2D, capture.color);
-      glActiveTexture(GL_TEXTURE3);
-      glBindTexture(GL_TEXTURE_2D, capture.depth);
-      glActiveTexture(static_cast<GLenum>(activeUnit));
+      glBindTextureUnit(2, capture.color);
+      glBindTextureUnit(3, capture.depth);
       sphereReplay.use();
       sphereReplay.set("capturedColor", 2);
       sphereReplay.set("capturedDepth", 3);
@@ -874,22 +869,20 @@ struct Renderer::Impl {
   // (sphere_replay.frag) with the same values, so blending and the depth
   // test give the same bytes. A frame over the layer then fetches two
   // texels a pixel instead of casting the ray and lighting it.
-  struct SphereCapture {
-    GLuint fbo = 0, color = 0, depth = 0;
-    int originX = 0, originY = 0;  // the window pixel (GL, from the bottom) of texel (0, 0)
-    // What the fragments depend on (the unshadowed program reads no more).
-    glm::mat4 worldFromModel{1.0f}, clipFromWorld{1.0f};
-    glm::vec3 towardLight{0.0f}, lightColor{0.0f}, cameraPosition{0.0f};
-    float ambient = 0.0f;
-    glm::vec4 viewport{0.0f};
+  // What a sphere's fragments depend on (the unshadowed program reads no more).
+  struct SphereInputs {
+    glm::mat4 worldFromModel, clipFromWorld;
+    glm::vec3 towardLight, lightColor, cameraPosition;
+    float ambient;
+    glm::vec4 viewport;
     PixelRect rect;
     Material material;
-    bool sameInputs(const SphereCapture& o) const {
-      return worldFromModel == o.worldFromModel && clipFromWorld == o.clipFromWorld && towardLight == o.towardLight &&
-             lightColor == o.lightColor && cameraPosition == o.cameraPosition && ambient == o.ambient &&
-             viewport == o.viewport && rect.x0 == o.rect.x0 && rect.y0 == o.rect.y0 && rect.x1 == o.rect.x1 &&
-             rect.y1 == o.rect.y1 && material == o.material;
-    }
+    bool operator==(const SphereInputs&) const = default;
+  };
+  struct SphereCapture {
+    SphereInputs inputs;
+    GLuint fbo = 0, color = 0, depth = 0;
+    int originX = 0, originY = 0;  // the window pixel (GL, from the bottom) of texel (0, 0)
   };
   std::deque<SphereCapture> sphereCaptures;  // the newest last
   std::vector<glm::vec3> replayCorners;      // drawImpostor's scratch
@@ -915,36 +908,24 @@ struct Renderer::Impl {
   const SphereCapture& sphereCaptureOf(const Drawable& d, const PixelRect& rect, int pattern,
                                        const glm::mat4& worldFromClip, const glm::vec4& viewport) {
     const MeshViewUniforms& u = viewUniforms;
-    SphereCapture key;
-    key.worldFromModel = d.worldFromModel;
-    key.clipFromWorld = u.clipFromWorld;
-    key.towardLight = u.towardLight;
-    key.lightColor = u.lightColor;
-    key.cameraPosition = u.cameraPosition;
-    key.ambient = u.ambient;
-    key.viewport = viewport;
-    key.rect = rect;
-    key.material = *d.material;
+    SphereInputs inputs{d.worldFromModel, u.clipFromWorld, u.towardLight, u.lightColor, u.cameraPosition,
+                        u.ambient,        viewport,        rect,          *d.material};
     for (const SphereCapture& c : sphereCaptures)
-      if (c.sameInputs(key)) return c;
+      if (c.inputs == inputs) return c;
     if (sphereCaptures.size() == kSphereCapturesKept) {
       releaseCapture(sphereCaptures.front());
       sphereCaptures.pop_front();
     }
-    SphereCapture& c = sphereCaptures.emplace_back(std::move(key));
+    SphereCapture& c = sphereCaptures.emplace_back(SphereCapture{std::move(inputs)});
     c.originX = rect.x0 & ~1;
     c.originY = (fbHeight - rect.y1) & ~1;
     const int width = rect.x1 - c.originX, height = fbHeight - rect.y0 - c.originY;
-    glGenTextures(1, &c.color);
-    glBindTexture(GL_TEXTURE_2D, c.color);
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, width, height);
-    glGenTextures(1, &c.depth);
-    glBindTexture(GL_TEXTURE_2D, c.depth);
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_R32F, width, height);
-    for (const GLuint t : {c.color, c.depth}) {
-      glBindTexture(GL_TEXTURE_2D, t);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    // Made without binding: the active unit holds the sphere's own texture.
+    for (const auto& [texture, format] : {std::pair{&c.color, GL_RGBA32F}, std::pair{&c.depth, GL_R32F}}) {
+      glCreateTextures(GL_TEXTURE_2D, 1, texture);
+      glTextureStorage2D(*texture, 1, format, width, height);
+      glTextureParameteri(*texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTextureParameteri(*texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
     GLint drawFbo = 0, viewportBox[4], scissorBox[4];
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFbo);

@@ -1,0 +1,374 @@
+// ---- Retained layers ----------------------------------------------------
+//
+// A frame is drawn in this order, view by view. The static opaque
+// meshes, then the moving opaque meshes that are not spheres (arrows), at
+// one sample into the scene (its colour where no pixel is covered in
+// part, the depth at the pixel centres everywhere), and in samples
+// (opaqueFbo, msaa of them) in the tiles near their edges and over the
+// arrows, resolved there over the scene (see drawViewOpaque). Then at one
+// sample, each step antialiased by its own coverage: the receivers'
+// re-shade inside the shadow box; the moving spheres, ray-cast;
+// depth-tested lines; translucent meshes; overlays (see drawRest). So
+// llvmpipe pays for the samples only near edges, and over a layer only
+// over the arrows.
+// When the static items and the views are the same as in the frame
+// before, the renderer keeps (a) the scene after the static opaque meshes
+// (colour and depth, one sample, and their samples too) and (b) the
+// finished image of the static items alone. A frame then starts from (b)
+// and redraws only the rectangles that its dynamic items (and the shadow
+// box) can touch: (a) copied in, the arrows' tiles drawn over its samples
+// and resolved, then every later step, scissored. Outside those
+// rectangles a whole frame draws exactly what (b) holds, and inside them
+// exactly the same steps run on the same values, so both ways give the
+// same bytes: a frame does not depend on the frames before it (tested),
+// and the first frame of a span is simply drawn whole.
+// The retained layer: (a) in the targets' snapshot framebuffers, (b) in
+// layer.image; valid while layer.memory.layerKey matches (layer_plan.hpp).
+#include <algorithm>
+#include <cstring>
+#include <functional>
+
+#include "render/renderer_impl.hpp"
+
+namespace rollspin::render {
+
+namespace {
+
+// The parts of `r` outside `hole`, appended to `out` (disjoint, at most four).
+void outside(const PixelRect& r, const PixelRect& hole, std::vector<PixelRect>& out) {
+  const PixelRect h = intersect(r, hole);
+  if (h.empty()) {
+    out.push_back(r);
+    return;
+  }
+  for (const PixelRect& p : {PixelRect{r.x0, r.y0, r.x1, h.y0}, PixelRect{r.x0, h.y1, r.x1, r.y1},
+                             PixelRect{r.x0, h.y0, h.x0, h.y1}, PixelRect{h.x1, h.y0, r.x1, h.y1}})
+    if (!p.empty()) out.push_back(p);
+}
+
+// `rects` less the rectangles of the fresh views (drawn whole).
+void outsideFreshViews(const DrawList& list, const std::vector<bool>& fresh, std::vector<PixelRect>& rects,
+                       std::vector<PixelRect>& scratch) {
+  for (std::size_t i = 0; i < list.views.size(); ++i) {
+    if (!fresh[i]) continue;
+    const View& v = list.views[i];
+    scratch.clear();
+    for (const PixelRect& r : rects) outside(r, PixelRect{v.x, v.y, v.x + v.width, v.y + v.height}, scratch);
+    std::swap(rects, scratch);
+  }
+}
+
+// `r` of `from` into `to` (images of one size).
+void copyPixels(const media::Image& from, media::Image& to, const PixelRect& r) {
+  const std::size_t rowBytes = static_cast<std::size_t>(r.x1 - r.x0) * 4;
+  for (int y = r.y0; y < r.y1; ++y) {
+    const std::size_t at = (static_cast<std::size_t>(y) * from.width + r.x0) * 4;
+    std::memcpy(to.rgba.data() + at, from.rgba.data() + at, rowBytes);
+  }
+}
+
+// Where a receiver's re-shade can draw: its triangles clipped to the
+// shadow box's prism across the light (|x|, |y| ≤ 1 in light clip space,
+// affine: an orthographic light), projected.
+PixelRect reshadeBounds(const View& v, const glm::mat4& clipFromWorld, const glm::mat4& lightClipFromWorld,
+                        const Drawable& d) {
+  const MeshData& m = *d.mesh;
+  struct P {
+    glm::vec3 world;
+    glm::vec2 light;
+  };
+  std::vector<P> verts(m.vertices.size());
+  for (std::size_t i = 0; i < verts.size(); ++i) {
+    const glm::vec3 w(d.worldFromModel * glm::vec4(m.vertices[i].position, 1.0f));
+    verts[i] = {w, glm::vec2(lightClipFromWorld * glm::vec4(w, 1.0f))};
+  }
+  std::vector<glm::vec3> inside;
+  std::vector<P> poly, next;
+  for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+    poly = {verts[m.indices[t]], verts[m.indices[t + 1]], verts[m.indices[t + 2]]};
+    for (int plane = 0; plane < 4 && !poly.empty(); ++plane) {
+      auto dist = [&](const P& p) { return 1.0f + (plane & 1 ? -1.0f : 1.0f) * p.light[plane / 2]; };
+      next.clear();
+      for (std::size_t i = 0; i < poly.size(); ++i) {
+        const P& a = poly[i];
+        const P& b = poly[(i + 1) % poly.size()];
+        const float da = dist(a), db = dist(b);
+        if (da >= 0.0f) next.push_back(a);
+        if ((da >= 0.0f) != (db >= 0.0f)) {
+          const float f = da / (da - db);
+          next.push_back({a.world + f * (b.world - a.world), a.light + f * (b.light - a.light)});
+        }
+      }
+      std::swap(poly, next);
+    }
+    for (const P& p : poly) inside.push_back(p.world);
+  }
+  return screenBounds(v, clipFromWorld, inside.data(), inside.size(), 3.0f);
+}
+
+}  // namespace
+
+// The pixels a frame must redraw over the retained layer, as disjoint
+// rectangles of whole tiles: the tiles that any dynamic item (a line
+// segment by segment, so that a long trail dirties a thin band along
+// itself) or a receiver's shadow box can touch. A fresh view is dirty whole.
+std::vector<PixelRect> Renderer::Impl::dirtyRects(const DrawList& list, const std::vector<ViewItems>& perView,
+                                                  const std::vector<bool>& fresh) {
+  TileGrid grid(list.width, list.height);
+  auto add = [&](const PixelRect& rect) { grid.add(rect); };
+  std::vector<PixelRect> meshRects;
+  for (std::size_t i = 0; i < list.views.size(); ++i) {
+    const View& v = list.views[i];
+    const int index = static_cast<int>(i);
+    if (fresh[i]) {
+      add(PixelRect{v.x, v.y, v.x + v.width, v.y + v.height});
+      continue;
+    }
+    const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+    for (const Drawable& d : perView[i].items) {
+      if (d.dynamic) {
+        meshRects.clear();
+        meshBounds(v, clipFromWorld, d, meshRects);
+        for (const PixelRect& rect : meshRects) add(rect);
+      }
+      if (perView[i].shadowMap != nullptr && d.material->receivesShadow && d.material->opacity >= 1.0f)
+        add(reshadeBounds(v, clipFromWorld, perView[i].shadow.lightClipFromWorld, d));
+    }
+    for (const PolylineItem& p : list.polylines)
+      if (p.view == index && p.dynamic) addSegmentBounds(p, v, clipFromWorld, 0, grid);
+    for (const LabelItem& l : list.labels)
+      if (l.view == index && l.dynamic) add(labelBounds(l, list, &v, clipFromWorld));
+  }
+  for (const LabelItem& l : list.labels)
+    if (l.view < 0 && l.dynamic) add(labelBounds(l, list, nullptr, glm::mat4(1.0f)));
+  return grid.rects();
+}
+
+// `island(view, island box, scope)` for each view not drawn whole (`fresh`)
+// once per island of `rects` in it (separatedIslands), bound on `fbo` (0:
+// the scene) and scissored to the island, its meshes, lines and labels
+// clipped to the rects (scope.clips); `whole(view)` for a fresh view, in
+// the views' order.
+void Renderer::Impl::forEachIsland(const RedrawJob& job, const std::vector<PixelRect>& rects, GLuint fbo,
+                                  std::vector<PixelRect>* under,
+                                  const std::function<void(std::size_t, const PixelRect&, const DrawScope&)>& island,
+                                  const std::function<void(std::size_t)>& whole) {
+  std::vector<PixelRect> islandRects;
+  for (std::size_t i = 0; i < job.list.views.size(); ++i) {
+    const View& v = job.list.views[i];
+    if (job.fresh[i]) {
+      if (whole) whole(i);
+      continue;
+    }
+    for (const PixelRect& box : separatedIslands(rects, PixelRect{v.x, v.y, v.x + v.width, v.y + v.height})) {
+      islandRects.clear();
+      for (const PixelRect& rect : rects)
+        if (overlaps(rect, box)) islandRects.push_back(intersect(rect, box));
+      DrawScope scope = beginView(job.list, v, job.perView[i], &box, fbo);
+      scope.clips = &islandRects;
+      scope.under = under;
+      island(i, box, scope);
+    }
+  }
+}
+
+// The moving meshes that are drawn in samples (arrows, see Pass), over a
+// retained layer, as drawViewOpaque draws them: at one sample over the
+// layer's scene, then in samples over the layer's static samples in the
+// tiles they reach (sampleTiles), island by island, resolved there. Their
+// tiles join `under` (their edges are over the layer's).
+void Renderer::Impl::redrawSamples(const RedrawJob& job, std::vector<PixelRect>* under) {
+  if (targets.opaqueFbo == 0) return;
+  std::vector<PixelRect> reached;  // inside the dirty rectangles: dirtyRects adds the same bounds
+  for (std::size_t i = 0; i < job.list.views.size(); ++i) {
+    if (job.fresh[i]) continue;
+    const std::vector<PixelRect> tiles = sampleTiles(job.list, job.list.views[i], job.perView[i], Items::DynamicOnly);
+    reached.insert(reached.end(), tiles.begin(), tiles.end());
+  }
+  if (reached.empty()) return;
+  if (under != nullptr) under->insert(under->end(), reached.begin(), reached.end());
+  forEachIsland(job, reached, 0, under, [&](std::size_t i, const PixelRect&, const DrawScope& scope) {
+    drawOpaqueAtCentres(job.perView[i], scope, Items::DynamicOnly);
+  });
+  FrameTargets::copyRects(job.list, targets.snapshotSamplesFbo, targets.opaqueFbo, reached);
+  forEachIsland(job, reached, targets.opaqueFbo, under, [&](std::size_t i, const PixelRect&, const DrawScope& scope) {
+    drawOpaque(job.perView[i], scope, Items::DynamicOnly, Pass::Samples);
+  });
+  for (const PixelRect& rect : reached) targets.resolve(job.list, rect, programs, streams);
+}
+
+// Redraws `rects` (disjoint) of `image` from the snapshot on: the dynamic
+// opaque meshes when `which` takes them, then every later step. A fresh
+// view (its rectangle among `rects`) is cleared and drawn whole instead,
+// exactly as a whole frame draws it, when `which` takes the dynamic items;
+// a layer's update leaves it alone.
+void Renderer::Impl::redrawRects(const RedrawJob& job, const std::vector<PixelRect>& rects, Items which,
+                                 media::Image& image, std::vector<PixelRect>* under) {
+  if (rects.empty()) return;
+  const DrawList& list = job.list;
+  // The rectangles are disjoint: all copies first, then all draws, so the
+  // binned scene is not flushed between them.
+  // Unscissored: a blit copies every sample of the rectangle's pixels.
+  // Not into a view drawn whole here: the scene is cleared first, with
+  // one unscissored clear (a scissored clear of a 1080p view's 1 M pixels
+  // is a quad draw: 6–7 ms, with each step finished apart), and those
+  // views drawn over it.
+  const bool anyFresh =
+      which != Items::StaticOnly && std::find(job.fresh.begin(), job.fresh.end(), true) != job.fresh.end();
+  if (!anyFresh) {
+    FrameTargets::copyRects(list, targets.snapshotFbo, targets.sceneFbo, rects);
+  } else {
+    targets.clear(list, false);
+    std::vector<PixelRect> kept = rects;
+    outsideFreshViews(list, job.fresh, kept, scratch.splitParts);
+    FrameTargets::copyRects(list, targets.snapshotFbo, targets.sceneFbo, kept);
+  }
+  if (which != Items::StaticOnly) redrawSamples(job, under);
+  // Then each view drawn once per island of its dirty rectangles (see
+  // separatedIslands), scissored to the island's box: the pixels of a box
+  // outside the rectangles are drawn over stale samples, but they are
+  // neither composited nor read back, and the boxes are disjoint, so each
+  // pixel gets the same draws in the same order as in a whole frame. A box
+  // reaches a pixel beyond its rectangles (inside the view): llvmpipe tests
+  // the scissor per sample, and a multisampled pixel on the scissor's edge
+  // seems to lose samples that a whole frame draws (seen, when these steps
+  // ran in samples: glass drawn scissor by scissor differed from a whole
+  // frame along the row where two met; redrawSamples still draws so).
+  PixelRect allBounds{list.width, list.height, 0, 0};
+  forEachIsland(
+      job, rects, 0, under,
+      [&](std::size_t i, const PixelRect& island, const DrawScope& scope) {
+        allBounds = unite(allBounds, island);
+        if (which != Items::StaticOnly) drawAfterResolve(job.perView[i], scope);
+        drawRest(list, static_cast<int>(i), job.perView[i], which, scope);
+      },
+      [&](std::size_t i) {
+        if (which == Items::StaticOnly) return;
+        const View& v = list.views[i];
+        std::vector<PixelRect> sampled = drawViewOpaque(list, v, job.perView[i], false, under);  // cleared with the scene
+        DrawScope scope = beginView(list, v, job.perView[i], nullptr);
+        scope.under = under;
+        drawViewAfterOpaque(list, static_cast<int>(i), job.perView[i], std::move(sampled), scope);
+        allBounds = unite(allBounds, PixelRect{v.x, v.y, v.x + v.width, v.y + v.height});
+      });
+  for (const PixelRect& rect : rects) allBounds = unite(allBounds, rect);
+  drawImageLabels(list, which, allBounds);
+  for (const PixelRect& rect : rects) readBack(list, image, rect);
+}
+
+// Draws the static items into the scene, keeping the samples after their
+// opaque meshes, and reads their finished image into the layer's image.
+void Renderer::Impl::buildLayer(const DrawList& list, const std::vector<ViewItems>& perView) {
+  targets.ensureSnapshot();
+  targets.clear(list, true);
+  if (targets.opaqueFbo != 0) {
+    // Every sample, kept for the moving meshes drawn in samples over the
+    // layer (redrawSamples), wherever they go.
+    for (std::size_t i = 0; i < list.views.size(); ++i) {
+      const DrawScope scope = beginView(list, list.views[i], perView[i], nullptr, targets.opaqueFbo);
+      drawOpaque(perView[i], scope, Items::StaticOnly, Pass::Samples);
+    }
+    glDisable(GL_SCISSOR_TEST);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.opaqueFbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.snapshotSamplesFbo);
+    glBlitFramebuffer(0, 0, list.width, list.height, 0, 0, list.width, list.height,
+                      GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  }
+  // The scene as drawViewOpaque draws the static meshes: at one sample,
+  // resolved from the samples near their edges.
+  std::vector<PixelRect> resolved;
+  for (std::size_t i = 0; i < list.views.size(); ++i) {
+    const DrawScope scope = beginView(list, list.views[i], perView[i], nullptr);
+    drawOpaqueAtCentres(perView[i], scope, Items::StaticOnly);
+    if (targets.opaqueFbo == 0) continue;
+    const std::vector<PixelRect> tiles = sampleTiles(list, list.views[i], perView[i], Items::StaticOnly);
+    resolved.insert(resolved.end(), tiles.begin(), tiles.end());
+  }
+  for (const PixelRect& r : resolved) targets.resolve(list, r, programs, streams);
+  findLayerEdges(list);
+  glDisable(GL_SCISSOR_TEST);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.sceneFbo);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.snapshotFbo);
+  glBlitFramebuffer(0, 0, list.width, list.height, 0, 0, list.width, list.height,
+                    GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  for (std::size_t i = 0; i < list.views.size(); ++i) {
+    const DrawScope scope = beginView(list, list.views[i], perView[i], nullptr);
+    drawRest(list, static_cast<int>(i), perView[i], Items::StaticOnly, scope);
+  }
+  drawImageLabels(list, Items::StaticOnly, PixelRect{0, 0, list.width, list.height});
+  layer.image.width = list.width;
+  layer.image.height = list.height;
+  layer.image.rgba.resize(static_cast<std::size_t>(list.width) * list.height * 4);
+  readBack(list, layer.image, PixelRect{0, 0, list.width, list.height});
+  ++stats.layerBuilds;
+  layer.identity = std::make_shared<const LayerIdentity>();
+  layer.version = layer.restorableFrom = 0;
+  layer.updates.clear();
+}
+
+// A frame over the retained layer: its image, with the dirty rectangles
+// redrawn from the snapshot on. With a history that knows the image (see
+// ImageHistory), only what differs from the layer image is put back: the
+// rectangles the image's last frame wrote, and those the layer's updates
+// since then changed. Returns the rectangles drawn.
+std::vector<PixelRect> Renderer::Impl::drawOverLayer(const DrawList& list, const std::vector<ViewItems>& perView,
+                                                     const std::vector<bool>& fresh, media::Image& image,
+                                                     const ImageHistory::State* history) {
+  const std::vector<PixelRect> rects = dirtyRects(list, perView, fresh);
+  stats.retainedPixels += static_cast<long long>(list.width) * list.height;
+  for (const bool f : fresh) stats.freshViews += f ? 1 : 0;
+  // A fresh view is read back whole below: its pixels in the layer are
+  // not restored first (a follow camera's view, 5 MB at 1080p a frame).
+  auto restore = [&](const PixelRect& r) {
+    scratch.restoredParts.assign(1, r);
+    outsideFreshViews(list, fresh, scratch.restoredParts, scratch.splitParts);
+    for (const PixelRect& part : scratch.restoredParts) copyPixels(layer.image, image, part);
+  };
+  if (history != nullptr && history->layer == layer.identity && history->version >= layer.restorableFrom) {
+    for (const PixelRect& r : history->written) restore(r);
+    for (const auto& [version, changed] : layer.updates)
+      if (version > history->version)
+        for (const PixelRect& r : changed) restore(r);
+  } else if (std::find(fresh.begin(), fresh.end(), true) != fresh.end()) {
+    restore(PixelRect{0, 0, list.width, list.height});
+  } else {
+    image.rgba = layer.image.rgba;  // same size: copies into the existing storage
+  }
+  std::vector<PixelRect> under = layer.edgeRects;
+  redrawRects(RedrawJob{list, perView, fresh}, rects, Items::All, image, &under);
+  long long area = 0;
+  for (const PixelRect& r : rects) area += static_cast<long long>(r.x1 - r.x0) * (r.y1 - r.y0);
+  stats.redrawnPixels += area;
+  return rects;
+}
+
+// The layer brought up to date in place (see layerChanges): its
+// rectangles redrawn from the snapshot with the static items alone, as
+// buildLayer draws them whole. A checkpoint of a growing line then costs
+// about a frame over the layer instead of a frame drawn whole.
+// A fresh view is not drawn: its pixels in the layer become stale.
+void Renderer::Impl::updateLayer(const DrawList& list, const std::vector<ViewItems>& perView,
+                                 const std::vector<PixelRect>& rects, const std::vector<bool>& fresh) {
+  redrawRects(RedrawJob{list, perView, fresh}, rects, Items::StaticOnly, layer.image, nullptr);
+  ++stats.layerUpdates;
+  layer.updates.emplace_back(++layer.version, rects);
+  if (layer.updates.size() > Layer::kUpdatesKept) {
+    layer.restorableFrom = layer.updates.front().first;  // an image at this version needs only the updates kept
+    layer.updates.pop_front();
+  }
+}
+
+
+// What layerChanges needs to know of the items' extents.
+ItemBounds Renderer::Impl::itemBounds(const DrawList& list) {
+  ItemBounds b;
+  b.mesh = [this](const MeshItem& m, const View& v, const glm::mat4& clipFromWorld, std::vector<PixelRect>& out) {
+    meshBounds(v, clipFromWorld, Drawable{m.mesh, m.worldFromModel, &m.material, false}, out);
+  };
+  b.label = [this, &list](const LabelItem& l, const View* v, const glm::mat4& clipFromWorld) {
+    return labelBounds(l, list, v, clipFromWorld);
+  };
+  return b;
+}
+
+}  // namespace rollspin::render

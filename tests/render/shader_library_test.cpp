@@ -36,5 +36,12 @@ TEST(ShaderLibrary, TheEmbeddedFragmentShadersShareOneSrgbEncoder) {
   }
 }
 
+TEST(ShaderLibrary, ShadersAreEmbeddedAndOverridable) {
+  EXPECT_NE(ShaderLibrary{}.source("mesh.frag").find("#version 450 core"), std::string::npos);
+  EXPECT_THROW((void)ShaderLibrary{"/nonexistent-shader-dir"}.source("mesh.frag"), Error);
+  // The repository's shaders/ folder is a valid override (--shader-dir shaders).
+  EXPECT_EQ(ShaderLibrary{test::sourceDir() / "shaders"}.source("mesh.frag"), ShaderLibrary{}.source("mesh.frag"));
+}
+
 }  // namespace
 }  // namespace rollspin::render

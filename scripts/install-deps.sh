@@ -17,6 +17,7 @@ packages=(
   gnuplot-nox
   clang libclang-rt-14-dev time
   parallel rsync jq
+  slurm-wlm munge  # tests/cli/slurm_cluster_test.sh starts a one-node cluster of its own
 )
 
 missing=()

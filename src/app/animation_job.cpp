@@ -112,6 +112,19 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   const FrameClock clock = clipClock(spec, model);
   if (o.frames && o.shard) throw badInput({"--shard " + *o.shard}, "give --frames or --shard, not both");
   const std::optional<Shard> shard = o.shard ? std::optional(parseShard(*o.shard)) : std::nullopt;
+  // Refused before any frame is rendered: parts that `join` would refuse
+  // afterwards are hours of work for nothing.
+  if (shard && !format.shards) {
+    std::string joinable;  // from the format table: ".mp4, .webm, .mov"
+    for (const media::OutputFormat& f : media::kOutputFormats)
+      if (f.shards && f.kind == media::OutputKind::Video)
+        joinable += (joinable.empty() ? "" : ", ") + f.defaultExtension();
+    throw badInput({"--shard " + *o.shard},
+                   "{} parts cannot be joined ({} files carry no part tags and each has its own palette); render "
+                   "the shards as {} and join those, or as PNG frames into one folder, or render the {} whole "
+                   "without --shard",
+                   format.name, format.name, joinable, format.name);
+  }
   const FrameRange range = o.frames  ? parseFrameRange(*o.frames, clock.frameCount())
                            : shard ? shardFrames(*shard, clock.frameCount())
                                    : FrameRange{0, clock.frameCount() - 1};

@@ -22,4 +22,9 @@ namespace rollspin::app {
 [[nodiscard]] std::string describeParseError(const CLI::App& cli, const CLI::ParseError& error, int argc,
                                              const char* const* argv);
 
+// Running out of memory (std::bad_alloc, or a GL buffer that could not be
+// made) has a way out: `message` with what to lower appended when it says
+// "out of memory", else `message` unchanged.
+[[nodiscard]] std::string withMemoryWayOut(const std::string& message);
+
 }  // namespace rollspin::app

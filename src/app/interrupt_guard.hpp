@@ -2,7 +2,10 @@
 // so a long render can stop between frames and still finish its output
 // cleanly (flush the encoder, write the trailer). A second Ctrl-C ends the
 // process through the shared clean-up (core/temp_files.hpp: temporaries
-// removed, never a corrupt file at a final name). The previous handlers are
+// removed, never a corrupt file at a final name), unless it comes within
+// 250 ms of the first: that is the same interruption delivered twice (to the
+// process and to its process group, as `timeout` does), the two deliveries
+// apart by however long a loaded machine takes to schedule the process. The previous handlers are
 // restored when the guard goes.
 #pragma once
 
@@ -19,6 +22,9 @@ class InterruptGuard {
 
   // The signal received (SIGINT, SIGTERM) or 0.
   [[nodiscard]] static int received();
+
+  // A second signal this soon after the first is the same interruption.
+  static constexpr long long kSameInterruptionNanoseconds = 250'000'000;
 
  private:
   struct sigaction previousInt_ {}, previousTerm_ {};

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -90,8 +91,11 @@ int main(int argc, char** argv) {
   try {
     return handler ? handler() : 2;
   } catch (const rollspin::Error& e) {
-    std::fprintf(stderr, "rollspin: error: %s\n", e.what());
+    std::fprintf(stderr, "rollspin: error: %s\n", rollspin::app::withMemoryWayOut(e.what()).c_str());
     return e.exitCode();
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "rollspin: error: %s\n", rollspin::app::withMemoryWayOut("out of memory").c_str());
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "rollspin: internal error: %s\n", e.what());
     return 1;

@@ -1,5 +1,6 @@
 // `rollspin render SCENE --still ...` and `rollspin compare A.png B.png ...`.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <charconv>
 #include <cmath>
@@ -106,6 +107,10 @@ struct ReferenceResult {
   std::int64_t overMaxDelta = 0;  // pixels whose largest channel difference exceeds --max-delta
   double ssim = 0.0;
   bool pass = false;
+  // Each threshold it failed, in the options' words: "size" (no other
+  // measure then exists), "max_delta" (with --max-pixels), "mean_delta",
+  // "min_ssim"; `why` says each one with its numbers for the text output.
+  std::vector<std::string> failed, why;
 };
 
 std::string jsonString(const std::string& text) {
@@ -118,14 +123,22 @@ std::string jsonString(const std::string& text) {
   return out + "\"";
 }
 
-std::string jsonNumber(std::optional<double> v) { return v ? fmt::format("{:.17g}", *v) : "null"; }
+// As typed: the shortest text that reads back as the same double (0.6, not 0.59999999999999998).
+std::string jsonNumber(std::optional<double> v) { return v ? fmt::format("{}", *v) : "null"; }
+
+std::string jsonList(const std::vector<std::string>& items) {
+  std::string out;
+  for (const std::string& item : items) out += (out.empty() ? "" : ", ") + jsonString(item);
+  return "[" + out + "]";
+}
 
 void printText(const CompareOptions& o, const std::vector<ReferenceResult>& results, const media::Image& a) {
   const std::int64_t pixels = std::int64_t{a.width} * a.height;
   for (const ReferenceResult& r : results) {
     if (results.size() > 1) fmt::print("reference       {}\n", r.path);
     if (!r.sizeMatches) {
-      fmt::print("size mismatch   {}x{} vs {}x{}\nDIFFERENT\n", a.width, a.height, r.width, r.height);
+      fmt::print("size mismatch   {}x{} vs {}x{}: no pixel was compared\nDIFFERENT: the sizes differ\n", a.width,
+                 a.height, r.width, r.height);
       continue;
     }
     const media::ImageDifference& d = r.d;
@@ -136,7 +149,8 @@ void printText(const CompareOptions& o, const std::vector<ReferenceResult>& resu
     fmt::print("differing px    {} of {} ({} by more than {} levels)\n", d.differingPixels, pixels, r.overMaxDelta,
                o.maxDelta);
     fmt::print("ssim            {:.6f}\n", r.ssim);
-    fmt::print("{}\n", r.pass ? "within tolerance" : "DIFFERENT");
+    if (r.pass) fmt::print("within tolerance\n");
+    else fmt::print("DIFFERENT: {}\n", fmt::join(r.why, "; "));
   }
 }
 
@@ -165,12 +179,28 @@ int runCompareChecked(const CompareOptions& o) {
     if (!r.sizeMatches) {
       std::fprintf(stderr, "rollspin: size mismatch: %s is %dx%d, %s is %dx%d\n", o.a.c_str(), a.width, a.height,
                    path.c_str(), b.width, b.height);
+      r.failed.push_back("size");
+      r.why.push_back(fmt::format("the sizes differ ({}x{} vs {}x{})", a.width, a.height, b.width, b.height));
     } else {
       r.d = media::compareImages(a.view(), b.view());
       r.overMaxDelta = r.d.pixelsAbove(static_cast<int>(std::floor(o.maxDelta)));
       r.ssim = media::structuralSimilarity(a.view(), b.view());
-      r.pass = double(r.overMaxDelta) <= allowance.allowedOf(pixels) &&
-               (!o.meanDelta || r.d.meanOverall() <= *o.meanDelta) && (!o.minSsim || r.ssim >= *o.minSsim);
+      // Every threshold is checked, so the message names each one that failed.
+      if (const double allowed = allowance.allowedOf(pixels); double(r.overMaxDelta) > allowed) {
+        r.failed.push_back("max_delta");
+        r.why.push_back(fmt::format("--max-delta {}: {} pixels differ by more than {} levels, {} allowed{}", o.maxDelta,
+                                    r.overMaxDelta, o.maxDelta, std::floor(allowed),
+                                    o.maxPixels.empty() ? "" : " (--max-pixels " + o.maxPixels + ")"));
+      }
+      if (o.meanDelta && !(r.d.meanOverall() <= *o.meanDelta)) {
+        r.failed.push_back("mean_delta");
+        r.why.push_back(fmt::format("--mean-delta {}: the mean delta is {:.4f}", *o.meanDelta, r.d.meanOverall()));
+      }
+      if (o.minSsim && !(r.ssim >= *o.minSsim)) {
+        r.failed.push_back("min_ssim");
+        r.why.push_back(fmt::format("--min-ssim {}: the SSIM is {:.6f}", *o.minSsim, r.ssim));
+      }
+      r.pass = r.failed.empty();
     }
     results.push_back(r);
   }
@@ -188,13 +218,18 @@ int runCompareChecked(const CompareOptions& o) {
     std::string refs;
     for (const ReferenceResult& r : results) {
       const media::ImageDifference& d = r.d;
+      // A size mismatch compares no pixel: its measures are null, not zeros.
+      const auto measured = [&](std::string text) { return r.sizeMatches ? text : std::string("null"); };
       refs += fmt::format(
-          "{}    {{\"path\": {}, \"width\": {}, \"height\": {}, \"size_matches\": {}, \"max_delta\": [{}, {}, {}, {}], "
-          "\"mean_delta\": [{:.6g}, {:.6g}, {:.6g}, {:.6g}], \"differing_pixels\": {}, \"pixels_over_max_delta\": {}, "
-          "\"ssim\": {}, \"pass\": {}}}",
-          refs.empty() ? "" : ",\n", jsonString(r.path), r.width, r.height, r.sizeMatches, d.maxDelta[0], d.maxDelta[1],
-          d.maxDelta[2], d.maxDelta[3], d.meanDelta[0], d.meanDelta[1], d.meanDelta[2], d.meanDelta[3],
-          d.differingPixels, r.overMaxDelta, r.sizeMatches ? fmt::format("{:.9f}", r.ssim) : "null", r.pass);
+          "{}    {{\"path\": {}, \"width\": {}, \"height\": {}, \"size_matches\": {}, \"max_delta\": {}, "
+          "\"mean_delta\": {}, \"differing_pixels\": {}, \"pixels_over_max_delta\": {}, \"ssim\": {}, "
+          "\"pass\": {}, \"failed\": {}, \"why\": {}}}",
+          refs.empty() ? "" : ",\n", jsonString(r.path), r.width, r.height, r.sizeMatches,
+          measured(fmt::format("[{}, {}, {}, {}]", d.maxDelta[0], d.maxDelta[1], d.maxDelta[2], d.maxDelta[3])),
+          measured(fmt::format("[{:.6g}, {:.6g}, {:.6g}, {:.6g}]", d.meanDelta[0], d.meanDelta[1], d.meanDelta[2],
+                               d.meanDelta[3])),
+          measured(std::to_string(d.differingPixels)), measured(std::to_string(r.overMaxDelta)),
+          measured(fmt::format("{:.9f}", r.ssim)), r.pass, jsonList(r.failed), jsonList(r.why));
     }
     fmt::print("{{\n  \"image\": {},\n  \"width\": {},\n  \"height\": {},\n  \"pass\": {},\n  \"matched\": {},\n"
                "  \"thresholds\": {{\"max_delta\": {}, \"max_pixels\": {}, \"mean_delta\": {}, \"min_ssim\": {}}},\n"

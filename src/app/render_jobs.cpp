@@ -90,7 +90,7 @@ void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerP
   if (available && needed > *available) {
     const std::string key = spec.locations.contains("render.height") ? "render.height" : "render.width";
     throw badInput(spec.where(key), "{}x{} with {}x MSAA needs about {} MiB for its frame buffers, but only {} MiB "
-                                    "are available",
+                                    "are available (out of memory)",
                    spec.render.width, spec.render.height, spec.render.msaa, needed >> 20, *available >> 20);
   }
 }

@@ -14,6 +14,7 @@
 #include "model/rolling_model.hpp"
 #include "core/error.hpp"
 #include "core/output_path.hpp"
+#include "core/temp_files.hpp"
 #include "report/report.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -29,19 +30,30 @@ struct ReportArgs {
   std::string outDir = "output/report";
 };
 
+// The output folder: made before the work (a folder that cannot be made
+// fails first, not after it), and removed again, with any parents this run
+// made, when the report fails or is interrupted before it writes a file.
+std::unique_ptr<CreatedFolders> makeOutputFolder(const ReportArgs& a) {
+  checkOutputFolder(a.outDir, SourceLoc{"--output-dir " + a.outDir});
+  std::error_code ec;
+  auto folders = std::make_unique<CreatedFolders>(a.outDir, ec);
+  if (ec) throw runtimeError(SourceLoc{"--output-dir " + a.outDir}, "cannot create {}: {}", a.outDir, ec.message());
+  return folders;
+}
+
 report::ReportOptions optionsFrom(const ReportArgs& a) {
   report::ReportOptions o;
   o.outDir = a.outDir;
-  // Fail before the work, not after it, when the folder cannot be made.
-  checkOutputFolder(o.outDir, SourceLoc{"--output-dir " + a.outDir});
-  std::error_code ec;
-  std::filesystem::create_directories(o.outDir, ec);
-  if (ec) throw runtimeError(SourceLoc{"--output-dir " + a.outDir}, "cannot create {}: {}", a.outDir, ec.message());
   o.progress = [](const std::string& line) { std::fprintf(stderr, "rollspin: %s\n", line.c_str()); };
   return o;
 }
 
-int finish(const report::ReportOutcome& out) {
+// Runs one report into its folder, then prints what it wrote and its headline.
+template <typename Report>
+int writeReport(const ReportArgs& a, const Report& run) {
+  const std::unique_ptr<CreatedFolders> folders = makeOutputFolder(a);
+  const report::ReportOutcome out = run(optionsFrom(a));
+  folders->keep();
   for (const auto& p : out.written) std::fprintf(stderr, "rollspin: wrote %s\n", p.string().c_str());
   std::printf("%s\n", out.headline.c_str());
   if (!out.plotError.empty())
@@ -61,9 +73,10 @@ int runErrors(const ReportArgs& a) {
                         model.ballRadius});
     }
   }
-  report::ReportOptions options = optionsFrom(a);
-  options.lollipopSpeedRatio = a.scenes.empty();
-  return finish(report::errorsReport(scenes, options));
+  return writeReport(a, [&](report::ReportOptions options) {
+    options.lollipopSpeedRatio = a.scenes.empty();
+    return report::errorsReport(scenes, options);
+  });
 }
 
 }  // namespace
@@ -83,11 +96,11 @@ void registerReportCommands(CLI::App& cli, CommandHandler& handler) {
 
   CLI::App* stress = report->add_subcommand("stress", "Stiff and extreme cases x methods, pass/fail against bounds");
   addOut(stress);
-  stress->callback([args, &handler] { handler = [args] { return finish(report::stressReport(optionsFrom(*args))); }; });
+  stress->callback([args, &handler] { handler = [args] { return writeReport(*args, report::stressReport); }; });
 
   CLI::App* paper = report->add_subcommand("paper", "The paper's closed-form claims against the solver");
   addOut(paper);
-  paper->callback([args, &handler] { handler = [args] { return finish(report::paperReport(optionsFrom(*args))); }; });
+  paper->callback([args, &handler] { handler = [args] { return writeReport(*args, report::paperReport); }; });
 }
 
 }  // namespace rollspin::app

@@ -48,6 +48,7 @@ long temporaryOwner(const std::string& entry, const std::string& name) {
 struct Slot {
   std::atomic<int> state{0};  // 0 free, 1 being filled, 2 live
   bool isFolder = false;
+  bool createdFolder = false;  // an output folder this run made: removed only while empty
   std::array<char, PATH_MAX> temporary{};
   std::array<char, PATH_MAX> finalPath{};
 };
@@ -65,16 +66,27 @@ void say(const char* text) {
 // the next run instead. True when there was any.
 bool removeRegisteredTemporaries() {
   bool any = false;
-  for (Slot& slot : slots) {
-    if (slot.state.load() != 2) continue;
-    const int failed = slot.isFolder ? ::rmdir(slot.temporary.data()) : ::unlink(slot.temporary.data());
-    if (failed != 0 && errno == ENOENT) continue;  // renamed into place a moment ago: complete
-    say(any ? "; " : ": ");
-    say(failed == 0 ? "removed the unfinished " : "could not remove the unfinished ");
-    say(slot.finalPath.data());
-    say(failed == 0 ? " (nothing written at that name)" : " (its temporary is removed by the next run)");
-    any = true;
-  }
+  // Files first, then folders: a folder empties as the files in it go.
+  for (const bool folders : {false, true})
+    for (Slot& slot : slots) {
+      if (slot.state.load() != 2 || slot.isFolder != folders) continue;
+      const int failed = slot.isFolder ? ::rmdir(slot.temporary.data()) : ::unlink(slot.temporary.data());
+      if (failed != 0 && errno == ENOENT) continue;  // renamed into place a moment ago: complete
+      if (slot.createdFolder) {
+        if (failed != 0) continue;  // it holds complete outputs: kept, and not unfinished
+        say(any ? "; " : ": ");
+        say("removed the empty folder ");
+        say(slot.finalPath.data());
+        say(" it had created");
+        any = true;
+        continue;
+      }
+      say(any ? "; " : ": ");
+      say(failed == 0 ? "removed the unfinished " : "could not remove the unfinished ");
+      say(slot.finalPath.data());
+      say(failed == 0 ? " (nothing written at that name)" : " (its temporary is removed by the next run)");
+      any = true;
+    }
   return any;
 }
 
@@ -151,7 +163,9 @@ int removeStaleTemporaries(const fs::path& finalPath) {
   return removed;
 }
 
-void registerTemporary(const fs::path& temporary, const fs::path& finalPath, bool isFolder) {
+namespace {
+
+void registerSlot(const fs::path& temporary, const fs::path& finalPath, bool isFolder, bool createdFolder) {
   const std::string t = temporary.string(), f = finalPath.string();
   if (t.size() >= PATH_MAX || f.size() >= PATH_MAX) return;
   for (Slot& slot : slots) {
@@ -160,10 +174,40 @@ void registerTemporary(const fs::path& temporary, const fs::path& finalPath, boo
     std::memcpy(slot.temporary.data(), t.c_str(), t.size() + 1);
     std::memcpy(slot.finalPath.data(), f.c_str(), f.size() + 1);
     slot.isFolder = isFolder;
+    slot.createdFolder = createdFolder;
     slot.state.store(2);
     return;
   }
 }
+
+}  // namespace
+
+void registerTemporary(const fs::path& temporary, const fs::path& finalPath, bool isFolder) {
+  registerSlot(temporary, finalPath, isFolder, false);
+}
+
+CreatedFolders::CreatedFolders(const fs::path& folder, std::error_code& ec) {
+  // The missing ancestors, innermost first: the order they are removed in.
+  for (fs::path p = folder.lexically_normal(); !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+    created_.push_back(p);
+    if (!p.has_parent_path() || p.parent_path() == p) break;
+  }
+  fs::create_directories(folder, ec);
+  if (ec) {
+    created_.clear();
+    return;
+  }
+  for (const fs::path& p : created_) registerSlot(p, p, true, true);
+}
+
+CreatedFolders::~CreatedFolders() {
+  for (const fs::path& p : created_) unregisterTemporary(p);
+  // Unkept, everything in them is this run's and was never reported written.
+  std::error_code ec;
+  if (!kept_ && !created_.empty()) fs::remove_all(created_.back(), ec);
+}
+
+void CreatedFolders::keep() { kept_ = true; }
 
 void unregisterTemporary(const fs::path& temporary) {
   const std::string t = temporary.string();

@@ -6,6 +6,8 @@
 
 #include <filesystem>
 #include <string>
+#include <system_error>
+#include <vector>
 
 namespace rollspin {
 
@@ -24,6 +26,25 @@ int removeStaleTemporaries(const std::filesystem::path& finalPath);
 void registerTemporary(const std::filesystem::path& temporary, const std::filesystem::path& finalPath,
                        bool isFolder = false);
 void unregisterTemporary(const std::filesystem::path& temporary);
+
+// An output folder made for a command (`report -o DIR`), with the parents it
+// had to make: until keep(), a failure (the destructor) removes them with
+// what the run wrote into them, and a SIGINT/SIGTERM removes each one that
+// is empty by then (the handler may not walk a folder), so an interrupted or
+// failed run leaves no empty folder it created. Folders that existed before
+// are never touched.
+class CreatedFolders {
+ public:
+  CreatedFolders(const std::filesystem::path& folder, std::error_code& ec);  // ec: as create_directories
+  ~CreatedFolders();
+  CreatedFolders(const CreatedFolders&) = delete;
+  CreatedFolders& operator=(const CreatedFolders&) = delete;
+  void keep();  // the command succeeded: its folders stay
+
+ private:
+  std::vector<std::filesystem::path> created_;  // innermost first
+  bool kept_ = false;
+};
 
 // Installs the process-wide SIGINT/SIGTERM handler used by every writing
 // command: remove the registered temporaries (a folder is emptied of files

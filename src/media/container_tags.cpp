@@ -4,7 +4,9 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <charconv>
+#include <fstream>
 #include <memory>
 #include <stdexcept>
 
@@ -66,6 +68,52 @@ void allowCustomContainerKeys(AVFormatContext* format, AVDictionary** muxerOptio
   // (read back by libavformat and ffprobe); Matroska writes any tag anyway.
   if (format->priv_data != nullptr && av_opt_find(format->priv_data, "movflags", nullptr, 0, 0) != nullptr)
     av_dict_set(muxerOptions, "movflags", "+use_metadata_tags", AV_DICT_APPEND);
+}
+
+std::optional<FramesRetag> retagPartial(AVFormatContext* format, long long framesWritten) {
+  std::map<std::string, std::string> metadata;
+  for (const AVDictionaryEntry* e = nullptr; (e = av_dict_get(format->metadata, "", e, AV_DICT_IGNORE_SUFFIX)) != nullptr;)
+    metadata[e->key] = e->value;
+  std::optional<ContainerTags> tags = parseContainerTags(metadata);
+  if (!tags || framesWritten <= 0) return std::nullopt;
+  FramesRetag retag{metadata.at(kFrames), {}};
+  tags->lastFrame = std::min(tags->lastFrame, tags->firstFrame + framesWritten - 1);
+  retag.after = fmt::format("{}-{}", tags->firstFrame, tags->lastFrame);
+  av_dict_set(&format->metadata, kFrames, retag.after.c_str(), 0);
+  return retag;
+}
+
+bool patchMatroskaFramesTag(const std::filesystem::path& path, const std::string& oldValue, const std::string& value) {
+  if (value.size() > oldValue.size()) return false;
+  std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+  if (!file) return false;
+  // The tags sit near the start (written with the header): SimpleTag's
+  // TagName element (0x45A3, size, name), then TagString (0x4487, size, value).
+  std::string head(std::size_t{1} << 20, '\0');  // the header's tags come long before 1 MiB
+  file.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(file.gcount()));
+  // libavformat's Matroska muxer writes tag names in upper case.
+  std::string name = kFrames;
+  for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  std::size_t found = std::string::npos;
+  for (std::size_t at = head.find(name); at != std::string::npos; at = head.find(name, at + 1)) {
+    const std::size_t tagString = at + name.size();
+    // TagString's id, a one-byte size (0x80 | n) and the value itself.
+    if (tagString + 3 + oldValue.size() > head.size() || head.compare(tagString, 2, "\x44\x87") != 0 ||
+        static_cast<unsigned char>(head[tagString + 2]) != (0x80 | oldValue.size()) ||
+        head.compare(tagString + 3, oldValue.size(), oldValue) != 0)
+      continue;
+    if (found != std::string::npos) return false;  // twice: which one is unclear
+    found = tagString + 3;
+  }
+  if (found == std::string::npos) return false;
+  std::string padded = value;
+  padded.resize(oldValue.size(), '\0');
+  file.clear();
+  file.seekp(static_cast<std::streamoff>(found));
+  file.write(padded.data(), static_cast<std::streamsize>(padded.size()));
+  file.flush();
+  return static_cast<bool>(file);
 }
 
 std::string sha256Hex(const std::string& text) {

@@ -10,6 +10,7 @@
 // The writer only copies the tags in; the app decides their values.
 #pragma once
 
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
@@ -45,6 +46,23 @@ struct ContainerTags {
 void applyContainerTags(AVFormatContext* format, const ContainerTags& tags, AVDictionary** muxerOptions);
 // Only the movflags part: lets MP4/MOV keep custom keys already set on `format`.
 void allowCustomContainerKeys(AVFormatContext* format, AVDictionary** muxerOptions);
+
+// An interrupted render keeps only its first `framesWritten` frames: when
+// `format` carries rollspin's tags, its frames tag is made to say so
+// (FIRST-(FIRST + framesWritten - 1)). Returns the tag's value before and
+// after, or nullopt when the metadata carries no rollspin tags. Call it
+// before the trailer: MP4 and MOV write their metadata there; Matroska wrote
+// it with the header (see patchMatroskaFramesTag).
+struct FramesRetag {
+  std::string before, after;  // "0-929" → "0-336"
+};
+[[nodiscard]] std::optional<FramesRetag> retagPartial(AVFormatContext* format, long long framesWritten);
+
+// Matroska/WebM write their tags with the header: overwrites the frames
+// tag's value in the finished file at `path` with `value` (no longer than the
+// old one; EBML strings may end in zero bytes, which readers drop). False
+// when the old value is not found exactly once.
+bool patchMatroskaFramesTag(const std::filesystem::path& path, const std::string& oldValue, const std::string& value);
 
 // Lower-case hex SHA-256 of `text` (libavutil's implementation).
 [[nodiscard]] std::string sha256Hex(const std::string& text);

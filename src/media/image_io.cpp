@@ -3,7 +3,9 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
+#include <cstdint>
 #include <fstream>
+#include <limits>
 #include <iterator>
 #include <string>
 #include <vector>
@@ -61,11 +63,23 @@ Image loadImage(const std::filesystem::path& file, const SourceLoc& where) {
   if (!in || std::filesystem::is_directory(file, ec))
     throw badInput(where, "cannot read the image file '{}'", file.string());
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return decodeImage(bytes, file.string(), where);
+}
+
+Image decodeImage(std::string_view bytes, const std::string& name, const SourceLoc& where) {
+  if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw badInput(where, "'{}' is larger than the 2 GiB an image file may have", name);
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int size = static_cast<int>(bytes.size());
   int w = 0, h = 0, comp = 0;
-  stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
-                                          static_cast<int>(bytes.size()), &w, &h, &comp, 4);
+  // The header first: a few bytes may claim an image of gigabytes, which
+  // would be allocated before the data is found missing.
+  if (stbi_info_from_memory(data, size, &w, &h, &comp) != 0 &&
+      static_cast<std::int64_t>(w) * h > kMaxImagePixels)
+    throw badInput(where, "'{}' claims {}x{} pixels, more than the {} an image may have", name, w, h, kMaxImagePixels);
+  stbi_uc* pixels = stbi_load_from_memory(data, size, &w, &h, &comp, 4);
   if (pixels == nullptr)
-    throw badInput(where, "'{}' is not a readable PNG or JPG image ({})", file.string(), stbi_failure_reason());
+    throw badInput(where, "'{}' is not a readable PNG or JPG image ({})", name, stbi_failure_reason());
   Image img(w, h);
   std::copy(pixels, pixels + static_cast<std::size_t>(w) * h * 4, img.rgba.begin());
   stbi_image_free(pixels);

@@ -2,7 +2,10 @@
 // write leaves nothing) and PNG/JPG loading (stb_image) into RGBA.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <string>
+#include <string_view>
 
 #include "core/error.hpp"
 #include "media/image_view.hpp"
@@ -22,5 +25,15 @@ void writeJpeg(const std::filesystem::path& file, const ImageView& image, int qu
 // Loads a PNG or JPG as RGBA (top-down). A missing, unreadable or corrupt
 // file throws Error (BadInput) at `where` (the scene key that named it).
 [[nodiscard]] Image loadImage(const std::filesystem::path& file, const SourceLoc& where);
+
+// The most pixels a loaded image may have (16384 x 16384: a texture's
+// limit, and 1 GiB of RGBA): a larger claim in a header is refused before
+// anything is allocated.
+inline constexpr std::int64_t kMaxImagePixels = std::int64_t{16384} * 16384;
+
+// loadImage's decoder, on a file's bytes; `name` is the file in messages.
+// Any bytes at all: an image, or Error (BadInput), never a crash (fuzzed:
+// tests/fuzz/fuzz_image.cpp).
+[[nodiscard]] Image decodeImage(std::string_view bytes, const std::string& name, const SourceLoc& where);
 
 }  // namespace rollspin::media

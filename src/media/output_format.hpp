@@ -33,6 +33,7 @@ struct OutputFormat {
   bool evenSize;     // 4:2:0 / 4:2:2 chroma: even width and height
   int fpsCap;        // 0 = none
   int defaultWidth;  // 0 = the scene's size
+  bool shards;       // --shard K/N parts come together again (join, or one folder)
 
   [[nodiscard]] constexpr OutputUse use() const {
     return kind == OutputKind::Still || kind == OutputKind::Figure ? OutputUse::Still : OutputUse::Animation;
@@ -43,8 +44,8 @@ struct OutputFormat {
   [[nodiscard]] bool hasExtension(std::string_view lowerCaseExtension) const;
 };
 
-#define ROLLSPIN_OUTPUT_FORMAT(name, extensions, kind, alpha, even, fpsCap, defaultWidth, factory) \
-  OutputFormat{name, extensions, OutputKind::kind, AlphaSupport::alpha, even, fpsCap, defaultWidth},
+#define ROLLSPIN_OUTPUT_FORMAT(name, extensions, kind, alpha, even, fpsCap, defaultWidth, shards, factory) \
+  OutputFormat{name, extensions, OutputKind::kind, AlphaSupport::alpha, even, fpsCap, defaultWidth, shards},
 inline constexpr std::array kOutputFormats{
 #include "media/output_formats.def"
 };

@@ -7,7 +7,7 @@ namespace {
 using SinkFactory = std::unique_ptr<FrameSink> (*)(const SinkOptions&);
 
 // The table's factory column, in the table's row order.
-#define ROLLSPIN_OUTPUT_FORMAT(name, extensions, kind, alpha, even, fpsCap, defaultWidth, factory) &factory,
+#define ROLLSPIN_OUTPUT_FORMAT(name, extensions, kind, alpha, even, fpsCap, defaultWidth, shards, factory) &factory,
 constexpr SinkFactory kSinkFactories[] = {
 #include "media/output_formats.def"
 };

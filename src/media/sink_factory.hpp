@@ -38,7 +38,7 @@ struct SinkOptions {
 // throws Runtime. Such rows are written by their own backend.
 [[nodiscard]] std::unique_ptr<FrameSink> noRasterSink(const SinkOptions& options);
 
-#define ROLLSPIN_OUTPUT_FORMAT(name, extensions, kind, alpha, even, fpsCap, defaultWidth, factory) \
+#define ROLLSPIN_OUTPUT_FORMAT(name, extensions, kind, alpha, even, fpsCap, defaultWidth, shards, factory) \
   [[nodiscard]] std::unique_ptr<FrameSink> factory(const SinkOptions& options);
 #include "media/output_formats.def"
 #undef ROLLSPIN_OUTPUT_FORMAT

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
+#include <string_view>
 #include <system_error>
 #include <thread>
 
@@ -78,11 +79,15 @@ struct VideoWriter::Impl {
   long long pixelsGiven = 0, pixelsConverted = 0;  // over the frames given to yuv420
   long long framesWritten = 0;
   bool fileOpen = false, done = false, headerWritten = false;
+  // av_write_trailer was called, whatever it returned: the muxer has freed
+  // its state then, and a second call (Matroska after a failed write on a
+  // full disk) reads freed memory.
+  bool trailerCalled = false;
 
   ~Impl() {
     // Unfinished after its header: the trailer frees what the muxer still
     // holds (queued packets); the file it completes is removed below.
-    if (!done && headerWritten && format != nullptr && format->pb != nullptr) av_write_trailer(format);
+    if (!done && headerWritten && !trailerCalled && format != nullptr && format->pb != nullptr) av_write_trailer(format);
     release();
     if (!done && fileOpen && !direct) {
       std::error_code ec;
@@ -132,6 +137,7 @@ struct VideoWriter::Impl {
 
   void close() {
     encode(nullptr);
+    trailerCalled = true;
     check(av_write_trailer(format), "finishing " + writePath.string());
     avio_flush(format->pb);
     checkIo("finishing " + writePath.string());
@@ -332,7 +338,17 @@ fs::path VideoWriter::finish() {
 fs::path VideoWriter::finishPartial() {
   Impl& m = *impl_;
   if (m.framesWritten == 0) return {};  // the destructor removes the empty file
+  // The tags say which frames the file holds: the ones written, not the
+  // ones asked for. MP4/MOV write them with the trailer; Matroska (WebM)
+  // wrote them with the header, so the finished file is patched.
+  const std::optional<FramesRetag> retag = retagPartial(m.format, m.framesWritten);
+  const bool tagsInHeader = std::string_view(m.format->oformat->name).find("matroska") != std::string_view::npos ||
+                            std::string_view(m.format->oformat->name) == "webm";
   m.close();
+  if (!m.direct && tagsInHeader && retag && retag->after != retag->before &&
+      !patchMatroskaFramesTag(m.writePath, retag->before, retag->after))
+    std::fprintf(stderr, "rollspin: warning: %s still says it holds frames %s (it holds %s)\n",
+                 partialName(m.finalPath).string().c_str(), retag->before.c_str(), retag->after.c_str());
   if (m.direct) {
     m.done = true;
     return m.finalPath;

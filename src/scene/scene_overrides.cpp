@@ -1,6 +1,8 @@
 // --set key.sub=value overrides, laid into the document before validation.
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstdlib>
 
 #include "scene/scene_sources.hpp"
 
@@ -43,6 +45,15 @@ void applyOverride(toml::table& root, const std::string& arg, std::map<std::stri
   try {
     parsed = toml::parse(std::string_view("v = " + value), std::string_view("--set"));
   } catch (const toml::parse_error&) {
+    // A number TOML cannot hold (1e400) is a number all the same: say so,
+    // rather than take it as a word and complain about a string later.
+    errno = 0;
+    char* end = nullptr;
+    std::strtod(value.c_str(), &end);
+    if (errno == ERANGE && !value.empty() && end == value.c_str() + value.size())
+      throw badInput(loc, "'{}' is out of range: a number here is at most about 1.8e308 in size and, unless 0, at "
+                          "least about 2.2e-308",
+                     value);
     parsed = toml::table{};
     parsed.insert("v", value);  // a bare word: take it as a string
   }

@@ -226,7 +226,16 @@ void Reader::readLabels() {
       spec_.labels.facts = std::vector<Fact>{};
       return;
     }
-    fail(key, locOf(key, *node), expected, describeNode(*node));
+    // One fact is still a list: show the syntax, the shell's quotes too
+    // when it came from --set (a bare word there reads as a string).
+    const SourceLoc where = locOf(key, *node);
+    if (std::find(kFactNames.begin(), kFactNames.end(), word->get()) != kFactNames.end())
+      fail(key, where,
+           fmt::format("{}; a list even for one fact: {}", expected,
+                       where.file.starts_with("--set") ? fmt::format("--set '{}=[\"{}\"]'", key, word->get())
+                                                       : fmt::format("{} = [\"{}\"]", "facts", word->get())),
+           describeNode(*node));
+    fail(key, where, expected, describeNode(*node));
   }
   const toml::array* list = node->as_array();
   if (list == nullptr) fail(key, locOf(key, *node), expected, describeNode(*node));

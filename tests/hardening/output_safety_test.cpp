@@ -120,9 +120,10 @@ TEST_P(Interrupted, PngFramesLeaveAPartialFolderNamedSo) {
   for (const std::string& name : entriesBesideStderr(dir)) EXPECT_TRUE(name.starts_with("frames.partial")) << name;
 }
 
-// A second Ctrl-C does not wait for the video to be finished: the shared
-// clean-up removes the temporary and the process exits 130 at once (it was
-// killed by the signal, leaving .clip.mp4.PID.tmp behind).
+// A second Ctrl-C (seconds, not milliseconds, after the first) does not wait
+// for the video to be finished: the shared clean-up removes the temporary
+// and the process exits 130 at once (it was killed by the signal, leaving
+// .clip.mp4.PID.tmp behind).
 TEST(SecondSignal, EndsAVideoAtOnceWithoutATemporary) {
   const fs::path dir = test::freshTempDir("interrupt_twice");
   test::SpawnedRollspin child(
@@ -136,9 +137,10 @@ TEST(SecondSignal, EndsAVideoAtOnceWithoutATemporary) {
     return false;
   })) << test::readFile(dir / "stderr");
   ASSERT_EQ(kill(child.pid(), SIGINT), 0);
-  // Apart, or the kernel merges them into one pending signal; the encoder's
-  // flush after the first takes far longer than this.
-  test::sleepMilliseconds(5);
+  // A deliberate second Ctrl-C: later than InterruptGuard's 250 ms, within
+  // which a second signal is the same interruption delivered twice (to the
+  // process and its group). The flush may finish first: then the partial stays.
+  test::sleepMilliseconds(400);
   ASSERT_EQ(kill(child.pid(), SIGINT), 0);
   bool signalled = false;
   const int code = child.wait(&signalled);

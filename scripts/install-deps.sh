@@ -17,6 +17,7 @@ packages=(
   gnuplot-nox
   clang libclang-rt-14-dev time
   parallel rsync jq
+  man-db dpkg-dev  # `man rollspin` after the install; cpack -G DEB's dpkg-shlibdeps
 )
 
 missing=()

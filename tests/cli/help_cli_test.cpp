@@ -108,7 +108,7 @@ TEST(SceneKeys, AMisspelledKeySaysDidYouMeanWithItsPlace) {
   std::ofstream(dir / "typo.toml") << "[ball]\nradius = 1\n\n[surface]\nkind = \"sphere\"\nradus = 3\n";
   const auto r = runRollspin({"solve", (dir / "typo.toml").string()});
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_TRUE(has(r.err, "typo.toml:6:1: surface.radus: unknown key; did you mean `radius`?")) << r.err;
+  EXPECT_TRUE(has(r.err, "typo.toml:6:9: surface.radus: unknown key; did you mean `radius`?")) << r.err;
   const auto set = runRollspin({"solve", "lollipop", "--set", "render.widht=640"});
   EXPECT_EQ(set.exitCode, 2);
   EXPECT_TRUE(has(set.err, "render.widht: unknown key; did you mean `width`?")) << set.err;

@@ -18,6 +18,7 @@ packages=(
   clang libclang-rt-14-dev time
   parallel rsync jq
   slurm-wlm munge  # tests/cli/slurm_cluster_test.sh starts a one-node cluster of its own
+  man-db dpkg-dev  # `man rollspin` after the install; cpack -G DEB's dpkg-shlibdeps
 )
 
 missing=()

@@ -8,14 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "core/text.hpp"
+
 namespace rollspin::app {
 
-// Edit distance (insertions, deletions, substitutions, adjacent swaps).
-[[nodiscard]] std::size_t editDistance(const std::string& a, const std::string& b);
-
-// The candidate nearest to `typed` when it is close enough to be a typo
-// (at most a third of its length, and at least 1, edits away), else "".
-[[nodiscard]] std::string nearestName(const std::string& typed, const std::vector<std::string>& candidates);
+// The typo helpers live in core/ (the scene loader suggests keys with them).
+using rollspin::editDistance;
+using rollspin::nearestName;
 
 // Everything to print on stderr for a parse error of `argv` (lines ending in
 // '\n'), naming the command whose options were searched.

@@ -261,13 +261,16 @@ int runCompare(const CompareOptions& o) {
 void registerRenderCommands(CLI::App& cli, CommandHandler& handler) {
   auto options = std::make_shared<RenderCliOptions>();
   CLI::App* render =
-      cli.add_subcommand("render", "Render a scene: an animation (MP4 or PNG frames), or a still PNG (--still)");
-  render->add_option("scene", options->still.scenePath, "Scene file (TOML)")->required();
+      cli.add_subcommand("render", "Render a scene: a clip (MP4, WebM, MOV, GIF or PNG frames), or with --still an "
+                                   "image (PNG, JPEG) or a figure (PDF, SVG)");
+  render->add_option("scene", options->still.scenePath, "Scene file (TOML), or a bundled scene's name (rollspin scenes)")
+      ->required();
   render->add_flag("--still", options->stillFlag, "Render one still image");
   render->add_option("--at", options->at, "Where: s=ARC_LENGTH or fraction=F (default: fraction=0.5)");
   render->add_option("-o,--output", options->output,
-                     "Output: FILE.mp4, or a folder for PNG frames; with --still a PNG "
-                     "(default: output/<scene>.mp4, output/<scene>/ or output/<scene>.png)");
+                     "Output; its extension picks the format: a clip FILE.mp4|.webm|.mov|.gif or a folder for PNG "
+                     "frames; with --still FILE.png|.jpg|.pdf|.svg (default: output/<scene>.mp4, or "
+                     "output/<scene>.png; render.format overrides)");
   render->add_option("--frames", options->frames, "Render only frames FIRST:LAST (0-based, inclusive) of the animation");
   render->add_option("--shard", options->shard,
                      "Render the K-th of N near-equal frame ranges (K/N, 1-based) to NAME.part-K-of-N.mp4 "
@@ -278,7 +281,8 @@ void registerRenderCommands(CLI::App& cli, CommandHandler& handler) {
   render->add_flag("--quiet", options->quiet, "No progress bar or summary line (a still: no \"wrote FILE\" line)");
   render->add_option("--width", options->width, "Image width in pixels (1..8192)");
   render->add_option("--height", options->height, "Image height in pixels (1..8192)");
-  render->add_flag("--transparent", options->still.transparent, "RGBA PNG without background");
+  render->add_flag("--transparent", options->still.transparent, "No background: alpha in a PNG still or PNG frames, a WebM (VP9) or MOV "
+                                                         "(ProRes 4444) clip, a PDF/SVG figure; GIF: 1-bit");
   render->add_option("--set", options->still.overrides, "Override a scene key: --set key.sub=value (repeatable)");
   render->add_option("--shader-dir", options->shaderDir, "Read shaders from this folder instead of the built-in copies");
   render->callback([options, render, &handler] {

@@ -136,19 +136,19 @@ void registerSolveCommands(CLI::App& cli, CommandHandler& handler) {
   auto options = std::make_shared<SolveOptions>();
 
   CLI::App* solve = cli.add_subcommand("solve", "Propagate the rolling spinor and print the final orientation");
-  solve->add_option("scene", options->scenePath, "Scene file (TOML)")->required();
+  solve->add_option("scene", options->scenePath, "Scene file (TOML), or a bundled scene's name (rollspin scenes)")->required();
   solve->add_option("--set", options->overrides, "Override a scene key: --set key.sub=value (repeatable)");
   solve->add_flag("--json", options->json, "Print JSON");
   solve->callback([options, &handler] { handler = [options] { return runSolve(*options); }; });
 
   CLI::App* timeline = cli.add_subcommand("timeline", "Write the orientation timeline as CSV");
-  timeline->add_option("scene", options->scenePath, "Scene file (TOML)")->required();
+  timeline->add_option("scene", options->scenePath, "Scene file (TOML), or a bundled scene's name (rollspin scenes)")->required();
   timeline->add_option("--set", options->overrides, "Override a scene key: --set key.sub=value (repeatable)");
   timeline->add_option("-o,--output", options->output, "Output CSV (default: output/<scene>.csv)");
   timeline->callback([options, &handler] { handler = [options] { return runTimeline(*options); }; });
 
   CLI::App* sceneCmd = cli.add_subcommand("scene", "Show a scene as the engine will run it");
-  sceneCmd->add_option("scene", options->scenePath, "Scene file (TOML)")->required();
+  sceneCmd->add_option("scene", options->scenePath, "Scene file (TOML), or a bundled scene's name (rollspin scenes)")->required();
   sceneCmd->add_option("--set", options->overrides, "Override a scene key: --set key.sub=value (repeatable)");
   sceneCmd->add_flag("--print", options->print, "Print the fully resolved scene as TOML")->required();
   sceneCmd->callback([options, &handler] { handler = [options] { return runScenePrint(*options); }; });

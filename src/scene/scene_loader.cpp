@@ -1,5 +1,6 @@
 #include "scene/scene_loader.hpp"
 
+#include "scene/scene_catalog.hpp"
 #include "scene/schema_reader.hpp"
 #include "scene/scene_sources.hpp"
 
@@ -15,7 +16,9 @@ SceneSpec loadSceneText(std::string_view text, const std::string& sourceName, st
   return spec;
 }
 
-SceneSpec loadSceneFile(const std::filesystem::path& file, std::span<const std::string> overrides) {
+SceneSpec loadSceneFile(const std::filesystem::path& given, std::span<const std::string> overrides) {
+  // A bare name ("lollipop") is a bundled scene when no such file is here.
+  const std::filesystem::path file = resolveScene(given.string());
   SceneSpec spec = loadSceneText(readSceneFile(file, {}, ""), file.string(), overrides);
   spec.name = file.stem().string();
   return spec;

@@ -14,6 +14,7 @@
 
 namespace rollspin::scene {
 
+// `file` may also name a bundled scene (scene_catalog.hpp: "lollipop").
 [[nodiscard]] SceneSpec loadSceneFile(const std::filesystem::path& file, std::span<const std::string> overrides = {});
 
 // Same, from text; sourceName is used in messages (e.g. "<inline>").

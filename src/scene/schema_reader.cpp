@@ -5,6 +5,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "core/text.hpp"
+#include "scene/scene_keys.hpp"
 #include "spin/propagator.hpp"
 
 namespace rollspin::scene::schema {
@@ -29,11 +31,15 @@ std::string joinKeys(const std::set<std::string>& keys) {
   return out;
 }
 
-std::set<std::string> pathTableKeys() {
-  std::set<std::string> keys(allPathKeys().begin(), allPathKeys().end());
-  keys.insert("kind");
-  return keys;
+Error unknownKey(const SourceLoc& loc, const std::string& fullKey, const std::string& typed,
+                 const std::string& table, const std::set<std::string>& allowed) {
+  const std::string guess = nearestName(typed, std::vector<std::string>(allowed.begin(), allowed.end()));
+  const std::string accepts = table.ends_with(":") ? table : table + " accepts:";
+  if (guess.empty()) return badInput(loc, "{}: unknown key; {} {}", fullKey, accepts, joinKeys(allowed));
+  return badInput(loc, "{}: unknown key; did you mean `{}`? {} {}", fullKey, guess, accepts, joinKeys(allowed));
 }
+
+std::set<std::string> pathTableKeys() { return keysOf("path"); }
 
 namespace {
 
@@ -81,9 +87,7 @@ const toml::table* Reader::subTable(const toml::table& parent, const std::string
   spec_.locations[full] = locOf(full, *node);
   for (auto&& [k, v] : *t) {
     const std::string key = full + "." + std::string(k.str());
-    if (!allowed.contains(std::string(k.str()))) {
-      throw badInput(locOf(key, v), "{}: unknown key; {} accepts: {}", key, what, joinKeys(allowed));
-    }
+    if (!allowed.contains(std::string(k.str()))) throw unknownKey(locOf(key, v), key, std::string(k.str()), what, allowed);
   }
   return t;
 }
@@ -262,7 +266,7 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
     if (*t <= 0.0) failAt(prefix + ".turns", fmt::format("expected a number of turns > 0, got {}", *t));
     target.turns = *t;
   }
-  if (auto d = text(path, prefix, "direction", {"ccw", "cw"})) target.counterClockwise = *d == "ccw";
+  if (auto d = text(path, prefix, "direction", keyChoices("path", "direction"))) target.counterClockwise = *d == "ccw";
   if (pk == PathKind::Geodesic && !spec_.locations.contains(prefix + ".length")) target.length = 6.0;
   if (auto len = number(path, prefix, "length")) {
     if (*len <= 0.0) failAt(prefix + ".length", fmt::format("expected a length > 0, got {}", *len));
@@ -331,7 +335,7 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
            fmt::format("expected t_end > t_start, got [{}, {}]", target.tStart, target.tEnd));
   if (auto pts = pointList(path, prefix, "points")) target.points = *pts;
   if (auto c = boolean(path, prefix, "closed")) target.closed = *c;
-  if (auto i = text(path, prefix, "interpolation", {"spline", "polyline"})) target.interpolation = *i;
+  if (auto i = text(path, prefix, "interpolation", keyChoices("path", "interpolation"))) target.interpolation = *i;
   if (auto r = number(path, prefix, "corner_radius")) {
     if (*r < 0.0) failAt(prefix + ".corner_radius", fmt::format("expected a radius >= 0, got {}", *r));
     target.cornerRadius = *r;
@@ -354,18 +358,17 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
 
 SceneSpec Reader::read() {
   spec_.sourceFile = file_;
-  static const std::set<std::string> kSections{"ball",     "surface", "path",   "plate",     "solver",
-                                               "timeline", "render",  "labels", "animation", "segment",
-                                               "figure"};
+  // The tables are the registry's (scene_keys.cpp); `extends` was resolved before.
+  std::set<std::string> kSections;
+  for (const std::string& s : keySections())
+    if (!s.empty() && s.find('.') == std::string::npos) kSections.insert(s);
   for (auto&& [k, v] : root_) {
     const std::string key(k.str());
-    if (!kSections.contains(key)) {
-      throw badInput(locOf(key, v), "{}: unknown key; a scene has the tables: {}", key, joinKeys(kSections));
-    }
+    if (!kSections.contains(key)) throw unknownKey(locOf(key, v), key, key, "a scene has the tables:", kSections);
   }
 
   // [ball]
-  const toml::table* ball = section("ball", {"radius", "texture", "marker"});
+  const toml::table* ball = section("ball", keysOf("ball"));
   if (auto r = number(ball, "ball", "radius")) {
     if (*r <= 0.0) failAt("ball.radius", fmt::format("expected a radius > 0, got {}", *r));
     spec_.ball.radius = *r;
@@ -382,9 +385,7 @@ SceneSpec Reader::read() {
   const double R = spec_.ball.radius;
 
   // [surface]
-  std::set<std::string> surfaceKeys(allSurfaceKeys().begin(), allSurfaceKeys().end());
-  surfaceKeys.insert("kind");
-  const toml::table* surface = section("surface", surfaceKeys);
+  const toml::table* surface = section("surface", keysOf("surface"));
   std::set<std::string> surfaceNames;
   for (const auto& row : surfaceKinds()) surfaceNames.emplace(row.name);
   if (auto kind = text(surface, "surface", "kind", surfaceNames))
@@ -454,7 +455,7 @@ SceneSpec Reader::read() {
   }
 
   // [plate] — Brockett's upper plate; the contact path is then derived.
-  const toml::table* plate = section("plate", {"radius"});
+  const toml::table* plate = section("plate", keysOf("plate"));
   if (plate != nullptr) {
     PlateSpec p;
     auto r1 = number(plate, "plate", "radius");
@@ -483,11 +484,9 @@ SceneSpec Reader::read() {
   readSegments();
 
   // [solver]
-  const toml::table* solver = section("solver", {"method", "steps", "tolerance"});
+  const toml::table* solver = section("solver", keysOf("solver"));
   // The method names are spin's (one table there); the scene keeps the text.
-  std::set<std::string> methodNames;
-  for (spin::Method m : spin::allMethods()) methodNames.emplace(spin::methodName(m));
-  if (auto m = text(solver, "solver", "method", methodNames)) spec_.solver.method = *m;
+  if (auto m = text(solver, "solver", "method", keyChoices("solver", "method"))) spec_.solver.method = *m;
   if (auto n = integer(solver, "solver", "steps")) {
     if (*n < 1 || *n > kMaxSolverSteps)
       failAt("solver.steps", fmt::format("expected an integer in [1, 1e11], got {}", *n));
@@ -513,7 +512,7 @@ SceneSpec Reader::read() {
                                        spec_.solver.method));
 
   // [timeline]
-  const toml::table* timeline = section("timeline", {"samples"});
+  const toml::table* timeline = section("timeline", keysOf("timeline"));
   if (auto n = integer(timeline, "timeline", "samples")) {
     if (*n < 2 || *n > kMaxTimelineSamples)
       failAt("timeline.samples", fmt::format("expected an integer in [2, 1e8], got {}", *n));

@@ -19,6 +19,10 @@ namespace rollspin::scene::schema {
 // For messages: "string \"x\"", "integer 3", …
 std::string describeNode(const toml::node& node);
 std::string joinKeys(const std::set<std::string>& keys);
+// "KEY: unknown key; did you mean `NEAR`? TABLE accepts: …" (the nearest
+// accepted key when the typed one is a likely typo).
+Error unknownKey(const SourceLoc& loc, const std::string& fullKey, const std::string& typed,
+                 const std::string& table, const std::set<std::string>& allowed);
 // The keys a path table accepts: kind and every kind-specific path key.
 std::set<std::string> pathTableKeys();
 

@@ -4,6 +4,7 @@
 
 #include "media/output_format.hpp"
 #include "render/gl_context.hpp"
+#include "scene/scene_keys.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -49,10 +50,10 @@ void Reader::readSegments() {
     spec_.locations[prefix] = locOf(prefix, entry);
     const toml::table& table = *entry.as_table();
     for (auto&& [k, v] : table) {
-      static const std::set<std::string> kSegmentKeys{"path", "hold", "duration", "speed", "caption", "title", "camera"};
+      static const std::set<std::string> kSegmentKeys = keysOf("segment");
       if (!kSegmentKeys.contains(std::string(k.str())))
-        throw badInput(locOf(prefix + "." + std::string(k.str()), v), "{}.{}: unknown key; a segment accepts: {}",
-                       prefix, k.str(), joinKeys(kSegmentKeys));
+        throw unknownKey(locOf(prefix + "." + std::string(k.str()), v), prefix + "." + std::string(k.str()),
+                         std::string(k.str()), "a segment", kSegmentKeys);
     }
     SegmentSpec seg;
     const toml::table* path = subTable(table, "path", prefix + ".path", pathTableKeys());
@@ -90,8 +91,7 @@ void Reader::readSegments() {
     }
     if (auto c = anyText(&table, prefix, "caption")) seg.caption = *c;
     seg.title = anyText(&table, prefix, "title");
-    const std::set<std::string> cameraKeys(kCameraKeys.begin(), kCameraKeys.end());
-    seg.camera = readCamera(subTable(table, "camera", prefix + ".camera", cameraKeys), prefix + ".camera");
+    seg.camera = readCamera(subTable(table, "camera", prefix + ".camera", keysOf("segment.camera")), prefix + ".camera");
     spec_.segments.push_back(std::move(seg));
   }
   // A segment's camera target stops a follow, and follow = true drops a
@@ -106,10 +106,7 @@ void Reader::readSegments() {
 
 // [render] — image size, layout, strobe, text, camera (render issue).
 void Reader::readRender() {
-  const toml::table* render = section(
-      "render", {"width", "height", "layout", "strobe", "title", "labels", "transparent", "msaa", "azimuth_deg",
-                 "elevation_deg", "distance", "target", "follow", "fov_deg", "format", "trails", "shadow", "dpi",
-                 "jpeg_quality", "font_scale", "twin_camera", "backend", "device"});
+  const toml::table* render = section("render", keysOf("render"));
   RenderSpec& r = spec_.render;
   constexpr long long kMaxSide = 8192;  // "8K": the renderer's size limit
   for (const char* key : {"width", "height"}) {
@@ -119,7 +116,7 @@ void Reader::readRender() {
       (std::string(key) == "width" ? r.width : r.height) = *n;
     }
   }
-  if (auto l = text(render, "render", "layout", {"side-by-side", "inset", "ball", "twin"}))
+  if (auto l = text(render, "render", "layout", keyChoices("render", "layout")))
     r.layout = *l == "side-by-side" ? RenderLayout::SideBySide
              : *l == "inset"        ? RenderLayout::Inset
              : *l == "ball"         ? RenderLayout::Ball
@@ -148,14 +145,12 @@ void Reader::readRender() {
     if (!(*f >= 0.25 && *f <= 4.0)) failAt("render.font_scale", fmt::format("expected a text scale in [0.25, 4], got {}", *f));
     r.fontScale = *f;
   }
-  if (auto t = text(render, "render", "twin_camera", {"linked", "fixed"})) r.twinCameraFixed = *t == "fixed";
+  if (auto t = text(render, "render", "twin_camera", keyChoices("render", "twin_camera"))) r.twinCameraFixed = *t == "fixed";
   if (auto sh = boolean(render, "render", "shadow")) r.shadow = *sh;
   if (r.follow && spec_.locations.contains("render.target"))
     failAt("render.target", "conflicts with render.follow = true (the camera then targets the ball)");
-  // The names are media's output-format table's (output_formats.def).
-  std::set<std::string> formats;
-  for (const media::OutputFormat& f : media::kOutputFormats) formats.emplace(f.name);
-  if (auto f = text(render, "render", "format", formats)) r.format = *f;
+  // The names are media's output-format table's (output_formats.def), through the registry.
+  if (auto f = text(render, "render", "format", keyChoices("render", "format"))) r.format = *f;
   if (auto q = integer(render, "render", "jpeg_quality")) {
     if (*q < 1 || *q > 100) failAt("render.jpeg_quality", fmt::format("expected a JPEG quality in [1, 100], got {}", *q));
     r.jpegQuality = *q;
@@ -170,8 +165,7 @@ void Reader::readRender() {
 // render.backend and render.device: the GL context. The names are render's
 // table (gl_backends.cpp); the scene keeps the text.
 void Reader::readGlContext(const toml::table* table) {
-  const std::vector<std::string> names = render::backendNames();
-  if (auto b = text(table, "render", "backend", std::set<std::string>(names.begin(), names.end())))
+  if (auto b = text(table, "render", "backend", keyChoices("render", "backend")))
     spec_.render.backend = *b;
   if (const toml::node* node = get(table, "render", "device")) {
     const SourceLoc at = locOf("render.device", *node);
@@ -187,7 +181,7 @@ void Reader::readGlContext(const toml::table* table) {
 
 // [figure] — a still as a PDF/SVG figure (README "Figures for papers").
 void Reader::readFigure() {
-  const toml::table* figure = section("figure", {"width_mm", "width_in", "font", "font_size_pt", "transparent"});
+  const toml::table* figure = section("figure", keysOf("figure"));
   FigureSpec& f = spec_.figure;
   const auto mm = number(figure, "figure", "width_mm");
   const auto in = number(figure, "figure", "width_in");
@@ -213,7 +207,7 @@ void Reader::readFigure() {
 // [labels] — which facts of the scene are printed (after [surface] and
 // [path]: a fact must apply to their kinds).
 void Reader::readLabels() {
-  const toml::table* labels = section("labels", {"facts"});
+  const toml::table* labels = section("labels", keysOf("labels"));
   const toml::node* node = get(labels, "labels", "facts");
   if (node == nullptr) return;
   const std::string key = "labels.facts";
@@ -257,7 +251,7 @@ void Reader::readLabels() {
 // [animation] — frame time → arc length, and the H.264 settings (video issue).
 void Reader::readAnimation() {
   const toml::table* animation =
-      section("animation", {"fps", "duration", "speed", "easing", "hold", "crf", "preset", "loop"});
+      section("animation", keysOf("animation"));
   AnimationSpec& a = spec_.animation;
   if (const toml::node* node = get(animation, "animation", "fps")) {
     const std::string expected =
@@ -287,7 +281,7 @@ void Reader::readAnimation() {
       failAt("animation.speed", "conflicts with animation.duration: give the duration or the speed, not both");
     a.speed = *v;
   }
-  if (auto e = text(animation, "animation", "easing", {"linear", "smooth"}))
+  if (auto e = text(animation, "animation", "easing", keyChoices("animation", "easing")))
     a.easing = *e == "linear" ? Easing::Linear : Easing::Smooth;
   if (auto h = number(animation, "animation", "hold")) {
     if (!(*h >= 0.0 && *h <= 3600.0))
@@ -298,8 +292,7 @@ void Reader::readAnimation() {
     if (!(*c >= 0.0 && *c <= 51.0)) failAt("animation.crf", fmt::format("expected a CRF in [0, 51], got {}", *c));
     a.crf = *c;
   }
-  if (auto p = text(animation, "animation", "preset",
-                    {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}))
+  if (auto p = text(animation, "animation", "preset", keyChoices("animation", "preset")))
     a.preset = *p;
   if (auto l = boolean(animation, "animation", "loop")) a.loop = *l;
 }

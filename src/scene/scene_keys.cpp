@@ -1,0 +1,330 @@
+#include "scene/scene_keys.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+
+#include "core/error.hpp"
+#include "core/text.hpp"
+#include "media/output_format.hpp"
+#include "render/gl_context.hpp"
+#include "scene/scene_spec.hpp"
+#include "spin/propagator.hpp"
+
+namespace rollspin::scene {
+
+namespace {
+
+// Defaults are read off a default SceneSpec, so that the reference shows
+// the values the engine starts from (scene_spec.hpp), never a copy of them.
+std::string num(double v) { return fmt::format("{}", v); }
+std::string vec(const Vec3& v) { return fmt::format("[{}, {}, {}]", v[0], v[1], v[2]); }
+std::string inQuotes(std::string_view s) { return fmt::format("\"{}\"", s); }
+
+Bounds above(double lo) { return {lo, std::nullopt, true, false}; }
+Bounds atLeast(double lo) { return {lo, std::nullopt, false, false}; }
+Bounds closed(double lo, double hi) { return {lo, hi, false, false}; }
+Bounds openRange(double lo, double hi) { return {lo, hi, true, true}; }
+Bounds leftOpen(double lo, double hi) { return {lo, hi, true, false}; }
+
+struct Row {
+  std::string type, defaultText;
+  std::optional<Bounds> bounds;
+  std::vector<std::string> choices;
+  std::string rangeNote, units, meaning;
+};
+
+KeyInfo info(std::string section, std::string key, Row r, std::string appliesTo = "") {
+  return {std::move(section), std::move(key), std::move(r.type),      std::move(r.defaultText),
+          r.bounds,           std::move(r.choices), std::move(r.rangeNote), std::move(r.units),
+          std::move(r.meaning), std::move(appliesTo)};
+}
+
+// [surface]: which keys exist and on which kinds comes from the surface kind
+// table (surface_kinds.cpp); this is the one place that reads it, so that a
+// kind table with parameter descriptors can replace it.
+std::vector<KeyInfo> surfaceKeyInfos(const SurfaceSpec& d) {
+  std::vector<std::string> kindNames;
+  for (const auto& row : surfaceKinds()) kindNames.emplace_back(row.name);
+  std::vector<KeyInfo> out{info("surface", "kind",
+                                {"string", inQuotes(toString(d.kind)), {}, kindNames, "", "",
+                                 "the surface the ball rolls on"})};
+  const std::map<std::string, Row> rows{
+      {"normal", {"[x, y, z]", vec(d.normal), {}, {}, "non-zero; normalised", "", "the plane's unit normal, on the ball's side"}},
+      {"radius", {"number", num(d.radius), above(0), {}, "", "length", "sphere: its radius r; cylinder: its radius a"}},
+      {"side",
+       {"string", "\"outside\" (height fields: \"above\")", {}, {"outside", "inside", "above", "below"},
+        "\"outside\" | \"inside\"; on paraboloid, saddle, height: \"above\" | \"below\"", "",
+        "which side of the surface the ball rolls on"}},
+      {"axis", {"[x, y, z]", vec(d.axis), {}, {}, "non-zero; normalised", "", "the cylinder's axis, through the origin"}},
+      {"major_radius", {"number", num(d.majorRadius), above(0), {}, "> minor_radius", "length", "the torus's ring radius A (about the z axis)"}},
+      {"minor_radius", {"number", num(d.minorRadius), above(0), {}, "", "length", "the torus's tube radius a"}},
+      {"a", {"number", num(d.a), above(0), {}, "", "length", "z = (x²/a ± y²/b)/2: the curvature scale along x"}},
+      {"b", {"number", num(d.b), above(0), {}, "", "length", "z = (x²/a ± y²/b)/2: the curvature scale along y (saddle: minus)"}},
+      {"z", {"expression", inQuotes(d.z), {}, {}, "muparser syntax in x, y", "length", "the height field z = f(x, y)"}},
+  };
+  for (const std::string& key : allSurfaceKeys()) {
+    const auto it = rows.find(key);
+    const Row row = it != rows.end() ? it->second : Row{"?", "", {}, {}, "", "", "(undocumented surface key)"};
+    out.push_back(info("surface", key, row, "kind = " + surfaceKeyRule(key, d.kind).kinds));
+  }
+  return out;
+}
+
+// [path], and a segment's path: which keys apply to which kinds comes from
+// the path kind table (path_kinds.cpp).
+std::vector<KeyInfo> pathKeyInfos(const PathSpec& d) {
+  std::vector<std::string> kindNames;
+  for (const auto& row : pathKinds()) kindNames.emplace_back(row.name);
+  std::vector<KeyInfo> out{info("path", "kind",
+                                {"string", "\"circle\" on a plane, else the surface's own (parallel or meridian)",
+                                 {}, kindNames, "", "", "the curve the contact point follows"})};
+  const std::map<std::string, Row> rows{
+      {"turns", {"number", num(d.turns), above(0), {}, "", "turns", "how many times round"}},
+      {"direction", {"string", d.counterClockwise ? "\"ccw\"" : "\"cw\"", {}, {"ccw", "cw"}, "", "", "the sense of rotation, seen from the normal's side"}},
+      {"length", {"number", num(d.length) + " (geodesic: 6)", above(0), {}, "", "length", "the arc length travelled"}},
+      {"direction_vector", {"[x, y, z]", "horizontal in the plane", {}, {}, "non-zero; in the plane on a plane", "", "the start heading"}},
+      {"radius", {"number", num(d.radius) + " (paraboloid parallel: 2)", above(0), {}, "", "length", "circle: the contact circle's radius; paraboloid parallel: its radius"}},
+      {"colatitude_deg", {"number", num(d.colatitudeDeg), openRange(0, 180), {}, "", "degrees", "the parallel's colatitude θ on a sphere"}},
+      {"tube_angle_deg", {"number", num(d.tubeAngleDeg), {}, {}, "", "degrees", "the angle ψ up the torus tube (0 = outer equator)"}},
+      {"height", {"number", num(d.height), {}, {}, "", "length", "the start height along the cylinder's axis"}},
+      {"azimuth_deg", {"number", num(d.azimuthDeg), {}, {}, "", "degrees", "the start azimuth φ0"}},
+      {"colatitude_start_deg", {"number", num(d.colatitudeStartDeg), openRange(0, 180), {}, "", "degrees", "the start colatitude θ0"}},
+      {"colatitude_end_deg", {"number", num(d.colatitudeEndDeg), openRange(0, 180), {}, "!= colatitude_start_deg", "degrees", "the end colatitude θ1"}},
+      {"pitch_angle_deg", {"number", num(d.pitchAngleDeg), openRange(-90, 90), {}, "", "degrees", "the helix's angle β from the parallels"}},
+      {"heading_deg", {"number", num(d.headingDeg), openRange(-90, 90), {}, "", "degrees", "the loxodrome's heading α from the meridians"}},
+      {"start_point", {"[x, y, z]", "per surface", {}, {}, "", "length", "the geodesic's start, projected onto the surface"}},
+      {"u", {"expression", inQuotes(d.u), {}, {}, "muparser syntax in t", "", "the first surface parameter as a function of t"}},
+      {"v", {"expression", inQuotes(d.v), {}, {}, "muparser syntax in t", "", "the second surface parameter as a function of t"}},
+      {"t_start", {"number", num(d.tStart), {}, {}, "", "", "where t starts"}},
+      {"t_end", {"number", num(d.tEnd), {}, {}, "> t_start", "", "where t ends"}},
+      {"points", {"array of [u, v] or [x, y, z]", "(required)", {}, {}, "at least 2 points (3 when closed)", "", "the points the path passes through"}},
+      {"closed", {"boolean", d.closed ? "true" : "false", {}, {}, "", "", "a periodic spline or a closed polygon"}},
+      {"interpolation", {"string", inQuotes(d.interpolation), {}, {"spline", "polyline"}, "", "", "a cubic spline through the points, or straight pieces"}},
+      {"corner_radius", {"number", num(d.cornerRadius), atLeast(0), {}, "", "length", "a polyline's corners rounded by arcs of this radius"}},
+      {"curvature_start", {"number", num(d.curvatureStart), closed(-1e6, 1e6), {}, "", "1/length", "the clothoid's geodesic curvature κ₀ at s = 0"}},
+      {"curvature_rate", {"number", num(d.curvatureRate), closed(-1e6, 1e6), {}, "", "1/length²", "α in κ_g = κ₀ + α s"}},
+  };
+  for (const std::string& key : allPathKeys()) {
+    const auto it = rows.find(key);
+    const Row row = it != rows.end() ? it->second : Row{"?", "", {}, {}, "", "", "(undocumented path key)"};
+    out.push_back(info("path", key, row, "kind = " + pathKeyRule(key, PathKind::Line, SurfaceKind::Plane).kinds));
+  }
+  return out;
+}
+
+// The camera keys of [render] and of a segment's camera table.
+std::vector<KeyInfo> cameraKeyInfos(const std::string& section, const RenderSpec& d, bool segment) {
+  auto dflt = [&](const std::string& value) { return segment ? std::string("the previous segment's") : value; };
+  return {
+      info(section, "azimuth_deg", {"number", dflt(num(d.azimuthDeg)), {}, {}, "", "degrees", "the camera's azimuth about the target"}),
+      info(section, "elevation_deg", {"number", dflt(num(d.elevationDeg)), openRange(-90, 90), {}, "", "degrees", "the camera's elevation above the horizon"}),
+      info(section, "distance", {"number", dflt("frames the whole path"), above(0), {}, "", "length", "the camera's distance from the target"}),
+      info(section, "target", {"[x, y, z]", dflt("the path's centre"), {}, {}, "", "length", "the point the camera looks at"}),
+      info(section, "follow", {"boolean", dflt(d.follow ? "true" : "false"), {}, {}, "", "", "the camera follows the ball"}),
+      info(section, "fov_deg", {"number", dflt(num(d.fovDeg)), closed(5, 120), {}, "", "degrees", "the vertical field of view"}),
+  };
+}
+
+std::vector<KeyInfo> buildRegistry() {
+  const SceneSpec d;
+  std::vector<KeyInfo> keys{
+      info("", "extends", {"string", "(none)", {}, {}, "", "", "a base scene (relative to this file) whose keys this one overrides"}),
+      info("ball", "radius", {"number", num(d.ball.radius), above(0), {}, "", "length", "the ball's radius R"}),
+      info("ball", "texture", {"string", "the built-in tennis ball", {}, {}, "non-empty", "", "an equirectangular PNG/JPG painted on the ball (relative to the scene file)"}),
+      info("ball", "marker", {"[x, y, z]", "the top n(0)", {}, {}, "non-zero; normalised", "", "the body direction whose trail is the tracked Bloch vector"}),
+  };
+  for (KeyInfo& k : surfaceKeyInfos(d.surface)) keys.push_back(std::move(k));
+  keys.push_back(info("plate", "radius", {"number", "(required)", above(0), {}, "", "length", "Brockett's plate: the radius R1 of the circle each plate point describes"}));
+  for (KeyInfo& k : pathKeyInfos(d.path)) keys.push_back(std::move(k));
+
+  std::vector<std::string> methods;
+  for (spin::Method m : spin::allMethods()) methods.emplace_back(spin::methodName(m));
+  keys.push_back(info("solver", "method", {"string", inQuotes(d.solver.method) + " (frame6a with only a tolerance)", {}, methods, "", "", "the propagator"}));
+  keys.push_back(info("solver", "steps", {"integer", "automatic", closed(1, double(kMaxSolverSteps)), {}, "fixed-step methods only", "", "the number of steps"}));
+  keys.push_back(info("solver", "tolerance", {"number", num(SolverSpec::kDefaultTolerance), closed(1e-15, 1), {}, "adaptive methods only", "", "the adaptive methods' error per unit length"}));
+  keys.push_back(info("timeline", "samples", {"integer", "60 per turn, + 1", closed(2, double(kMaxTimelineSamples)), {}, "", "", "rows of `rollspin timeline`'s CSV"}));
+
+  const RenderSpec& r = d.render;
+  std::set<std::string> formats;
+  for (const media::OutputFormat& f : media::kOutputFormats) formats.emplace(f.name);
+  auto add = [&](const std::string& section, const std::string& key, Row row) { keys.push_back(info(section, key, std::move(row))); };
+  add("render", "width", {"integer", num(double(r.width)), closed(1, 8192), {}, "", "pixels", "the image width"});
+  add("render", "height", {"integer", num(double(r.height)), closed(1, 8192), {}, "", "pixels", "the image height"});
+  add("render", "layout", {"string", inQuotes(toString(r.layout)), {}, {"side-by-side", "inset", "ball", "twin"}, "", "", "the views: the scene and the Bloch sphere side by side, the sphere inset, the ball alone, or the twin"});
+  add("render", "strobe", {"integer", num(double(r.strobe)), closed(0, 200), {}, "not 1 (0 is off)", "", "the ball at N evenly spaced positions in one image"});
+  add("render", "title", {"string", "\"\" (none)", {}, {}, "", "", "a title over the image"});
+  add("render", "labels", {"boolean", r.labels ? "true" : "false", {}, {}, "", "", "axis, pole and live labels (s, angles)"});
+  add("render", "transparent", {"boolean", r.transparent ? "true" : "false", {}, {}, "", "", "no background (PNG, WebM, MOV keep the alpha)"});
+  add("render", "msaa", {"integer", num(double(r.msaa)), closed(1, 4), {}, "1, 2 or 4", "samples", "multisample anti-aliasing"});
+  for (KeyInfo& k : cameraKeyInfos("render", r, false)) keys.push_back(std::move(k));
+  add("render", "format", {"string", "from the output's extension, else mp4 (a clip) or png (a still)", {}, {formats.begin(), formats.end()}, "", "", "the output format (docs/rendering.md)"});
+  add("render", "trails", {"boolean", r.trails ? "true" : "false", {}, {}, "", "", "the marker's and the field's trails"});
+  add("render", "shadow", {"boolean", r.shadow ? "true" : "false", {}, {}, "", "", "the key light's shadow"});
+  add("render", "dpi", {"number", num(r.dpi), closed(30, 2400), {}, "", "dpi", "PDF/SVG figures: the resolution of their raster parts"});
+  add("render", "jpeg_quality", {"integer", num(double(r.jpegQuality)), closed(1, 100), {}, "", "", "JPEG stills' quality"});
+  add("render", "font_scale", {"number", num(r.fontScale), closed(0.25, 4), {}, "", "", "the text size, times this"});
+  add("render", "twin_camera", {"string", r.twinCameraFixed ? "\"fixed\"" : "\"linked\"", {}, {"fixed", "linked"}, "", "", "twin layout: the first shot's view throughout, or the scene camera's"});
+  const std::vector<std::string> backends = render::backendNames();
+  add("render", "backend", {"string", "ROLLSPIN_GL, else \"auto\"", {}, backends, "", "", "the GL backend (docs/gl-backends.md)"});
+  add("render", "device", {"integer or string", "ROLLSPIN_EGL_DEVICE", {}, {}, "an EGL device index >= 0 or a DRM path \"/dev/dri/…\"", "", "the GPU an EGL render uses"});
+
+  const FigureSpec& f = d.figure;
+  add("figure", "width_mm", {"number", num(f.widthMm), closed(10, 2000), {}, "", "mm", "the figure's printed width"});
+  add("figure", "width_in", {"number", "(width_mm)", closed(10 / 25.4, 2000 / 25.4), {}, "not with width_mm", "inches", "the width in inches instead"});
+  add("figure", "font", {"string", inQuotes(f.font), {}, {}, "non-empty", "", "the labels' font family (fontconfig name)"});
+  add("figure", "font_size_pt", {"number", "the still's proportions", closed(2, 72), {}, "", "pt", "the body text size"});
+  add("figure", "transparent", {"boolean", f.transparent ? "true" : "false", {}, {}, "", "", "a transparent page (false: the views' backdrops)"});
+
+  std::string facts;
+  for (const auto& n : kFactNames) facts += (facts.empty() ? "" : ", ") + n;
+  add("labels", "facts", {"string or array", "\"auto\"", {}, {}, "\"auto\", \"none\" or a list of: " + facts, "", "which facts of the scene are printed beside the paper's closed form"});
+
+  const AnimationSpec& a = d.animation;
+  add("animation", "fps", {"number or string", a.fps.text(), closed(1, 240), {}, "an integer, 23.976 | 29.97 | 59.94, or \"num/den\"", "1/s", "frames per second"});
+  add("animation", "duration", {"number", num(a.duration), leftOpen(0, 36000), {}, "", "seconds", "how long the whole path takes"});
+  add("animation", "speed", {"number", "(duration)", above(0), {}, "not with duration", "length/s", "arc length per second instead of a duration"});
+  add("animation", "easing", {"string", a.easing == Easing::Smooth ? "\"smooth\"" : "\"linear\"", {}, {"smooth", "linear"}, "", "", "ease in and out, or a constant speed"});
+  add("animation", "hold", {"number", num(a.hold), closed(0, 3600), {}, "", "seconds", "how long the first and the last frame are held"});
+  add("animation", "crf", {"number", "the format's (18 H.264, 31 VP9)", closed(0, 51), {}, "", "", "the encoder's constant rate factor (lower: better)"});
+  add("animation", "preset", {"string", inQuotes(a.preset), {}, {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}, "", "", "the x264 preset (WebM maps it to libvpx's cpu-used)"});
+  add("animation", "loop", {"boolean", a.loop ? "true" : "false", {}, {}, "", "", "a GIF loops forever (false: plays once)"});
+
+  const SegmentSpec s;
+  add("segment", "path", {"table", "(a hold)", {}, {}, "the [path] keys", "", "the segment's motion: path = { kind = ..., ... }"});
+  add("segment", "hold", {"number", "(a motion)", leftOpen(0, 3600), {}, "not with path", "seconds", "the ball rests this long"});
+  add("segment", "duration", {"number", "the motion's share of animation.duration", leftOpen(0, 36000), {}, "with path only", "seconds", "how long the motion takes"});
+  add("segment", "speed", {"number", "(duration)", above(0), {}, "with path only; not with duration", "length/s", "arc length per second instead of a duration"});
+  add("segment", "caption", {"string", inQuotes(s.caption), {}, {}, "", "", "the caption shown while the segment plays"});
+  add("segment", "title", {"string", "render.title", {}, {}, "", "", "replaces render.title while the segment plays"});
+  add("segment", "camera", {"table", "(unchanged)", {}, {}, "the segment.camera keys", "", "a camera change laid over the previous segment's"});
+  for (KeyInfo& k : cameraKeyInfos("segment.camera", r, true)) keys.push_back(std::move(k));
+  return keys;
+}
+
+std::string boundText(const Bounds& b) {
+  if (b.lo && b.hi) return fmt::format("{}{}, {}{}", b.loOpen ? "(" : "[", *b.lo, *b.hi, b.hiOpen ? ")" : "]");
+  if (b.lo) return fmt::format("{} {}", b.loOpen ? ">" : ">=", *b.lo);
+  if (b.hi) return fmt::format("{} {}", b.hiOpen ? "<" : "<=", *b.hi);
+  return "";
+}
+
+std::string fullName(const KeyInfo& k) { return k.section.empty() ? k.key : k.section + "." + k.key; }
+
+std::string sectionTitle(const std::string& section) {
+  if (section.empty()) return "Top level";
+  if (section == "segment") return "[[segment]]";
+  if (section == "segment.camera") return "segment camera = { ... }";
+  return "[" + section + "]";
+}
+
+}  // namespace
+
+std::span<const KeyInfo> sceneKeys() {
+  static const std::vector<KeyInfo> keys = buildRegistry();
+  return keys;
+}
+
+const std::vector<std::string>& keySections() {
+  static const std::vector<std::string> sections = [] {
+    std::vector<std::string> out;
+    for (const KeyInfo& k : sceneKeys())
+      if (std::find(out.begin(), out.end(), k.section) == out.end()) out.push_back(k.section);
+    return out;
+  }();
+  return sections;
+}
+
+std::set<std::string> keysOf(std::string_view section) {
+  std::set<std::string> out;
+  for (const KeyInfo& k : sceneKeys())
+    if (k.section == section) out.insert(k.key);
+  return out;
+}
+
+const KeyInfo& keyInfo(std::string_view section, std::string_view key) {
+  for (const KeyInfo& k : sceneKeys())
+    if (k.section == section && k.key == key) return k;
+  throw std::logic_error(fmt::format("scene key registry: no key {}.{}", section, key));
+}
+
+std::set<std::string> keyChoices(std::string_view section, std::string_view key) {
+  const KeyInfo& k = keyInfo(section, key);
+  return {k.choices.begin(), k.choices.end()};
+}
+
+std::string rangeText(const KeyInfo& k) {
+  std::vector<std::string> parts;
+  if (!k.choices.empty()) {
+    std::string c;
+    for (const auto& v : k.choices) c += (c.empty() ? "" : " | ") + inQuotes(v);
+    if (k.rangeNote.empty()) parts.push_back(c);
+  }
+  if (k.bounds) parts.push_back(boundText(*k.bounds));
+  if (!k.rangeNote.empty()) parts.push_back(k.rangeNote);
+  std::string out;
+  for (const auto& p : parts) out += (out.empty() ? "" : "; ") + p;
+  return out;
+}
+
+std::string keysText(std::string_view section) {
+  const auto& sections = keySections();
+  const std::string wanted(section);
+  if (!wanted.empty() && std::find(sections.begin(), sections.end(), wanted) == sections.end()) {
+    std::string names;
+    for (const auto& s : sections)
+      if (!s.empty()) names += (names.empty() ? "" : ", ") + s;
+    std::vector<std::string> candidates(sections.begin(), sections.end());
+    const std::string guess = nearestName(wanted, candidates);
+    throw badInput(SourceLoc{"keys"}, "unknown section '{}'{}; the sections: {}", wanted,
+                   guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess), names);
+  }
+  std::string out;
+  std::string current = "\x01";
+  for (const KeyInfo& k : sceneKeys()) {
+    if (!wanted.empty() && k.section != wanted) continue;
+    if (k.section != current) {
+      out += (out.empty() ? "" : "\n") + sectionTitle(k.section) + "\n";
+      current = k.section;
+    }
+    out += fmt::format("  {} ({}) = {}\n      {}\n", fullName(k), k.type, k.defaultText, k.meaning);
+    const std::string range = rangeText(k);
+    if (!range.empty()) out += fmt::format("      allowed: {}\n", range);
+    if (!k.units.empty()) out += fmt::format("      units: {}\n", k.units);
+    if (!k.appliesTo.empty()) out += fmt::format("      applies to: {}\n", k.appliesTo);
+  }
+  return out;
+}
+
+std::string keysMarkdown() {
+  std::string out =
+      "# Scene reference\n\n"
+      "<!-- Generated by `rollspin keys --markdown`; do not edit by hand. Regenerate with\n"
+      "     build/rollspin keys --markdown > docs/scene-reference.md -->\n\n"
+      "Every key a scene file (TOML) accepts, with its default, the values the loader accepts, its units and\n"
+      "its meaning. The loader reads the same table, so a key missing here is a key the loader rejects.\n"
+      "`rollspin keys [SECTION]` prints the same in a terminal; `rollspin scene FILE --print` shows a scene\n"
+      "with every default filled in. Lengths are in the scene's units (the ball's radius is 1 by default).\n";
+  std::string current = "\x01";
+  auto cell = [](std::string text) {
+    std::string out;
+    for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+    return out;
+  };
+  for (const KeyInfo& k : sceneKeys()) {
+    if (k.section != current) {
+      out += "\n## " + sectionTitle(k.section) + "\n\n";
+      out += "| Key | Type | Default | Allowed | Units | Meaning |\n|---|---|---|---|---|---|\n";
+      current = k.section;
+    }
+    std::string meaning = k.meaning;
+    if (!k.appliesTo.empty()) meaning += " (" + k.appliesTo + ")";
+    out += fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", k.key, cell(k.type), cell(k.defaultText),
+                       cell(rangeText(k)), k.units, cell(meaning));
+  }
+  return out;
+}
+
+}  // namespace rollspin::scene

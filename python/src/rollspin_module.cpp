@@ -12,6 +12,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -268,7 +269,7 @@ std::shared_ptr<Image> renderStillImage(const std::shared_ptr<const Scene>& scen
   return image;
 }
 
-// An animation through the CLI's job: (written, frames written, frames
+// An animation through the CLI's job: (written ("" for nothing), frames written, frames
 // requested, the signal that stopped it or 0).
 py::tuple renderClip(const std::shared_ptr<const Scene>& scene, const fs::path& output, std::optional<std::string> frames,
                      std::optional<std::string> quality, std::optional<long long> width,
@@ -293,7 +294,7 @@ py::tuple renderClip(const std::shared_ptr<const Scene>& scene, const fs::path& 
     dropSharedGl();  // the animation job makes its own context
     result = app::renderAnimation(o);
   }
-  return py::make_tuple(result.written, result.framesWritten, result.framesRequested, result.interruptedBy);
+  return py::make_tuple(result.written.string(), result.framesWritten, result.framesRequested, result.interruptedBy);
 }
 
 // rollspin::Error → rollspin.SceneError / rollspin.RollspinError with the
@@ -362,7 +363,7 @@ PYBIND11_MODULE(_rollspin, m) {
         py::arg("height") = std::nullopt, py::arg("transparent") = false);
   m.def("render", &renderClip, py::arg("scene"), py::arg("output"), py::arg("frames") = std::nullopt,
         py::arg("quality") = std::nullopt, py::arg("width") = std::nullopt, py::arg("height") = std::nullopt,
-        py::arg("transparent") = false, py::arg("quiet") = true, py::arg("on_frame") = nullptr);
+        py::arg("transparent") = false, py::arg("quiet") = true, py::arg("on_frame") = py::none());
   m.def("drop_gl", [] {
           py::gil_scoped_release release;
           const std::lock_guard lock(sharedGl().mutex);

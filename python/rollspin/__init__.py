@@ -22,9 +22,7 @@ import math
 import os
 import sys
 from pathlib import Path
-from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
-
-import numpy as np
+from typing import TYPE_CHECKING, Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
 from . import _rollspin as _core
 from ._errors import RenderError, RollspinError, SceneError
@@ -32,7 +30,17 @@ from ._errors import RenderError, RollspinError, SceneError
 __all__ = ["load", "loads", "Scene", "Solution", "Timeline", "Image", "Clip", "SceneError", "RenderError",
            "RollspinError", "scene_dirs", "load_ipython_extension"]
 
+if TYPE_CHECKING:
+    import numpy as np
+
 PathLike = Union[str, "os.PathLike[str]"]
+
+
+def _numpy() -> Any:
+    # numpy is imported when an array is first needed, not by `import rollspin`:
+    # a script that only renders does not pay for it.
+    import numpy
+    return numpy
 
 
 def scene_dirs() -> List[Path]:
@@ -81,11 +89,13 @@ def loads(text: str, name: str = "<string>") -> "Scene":
 
 def _toml_value(value: Any) -> str:
     """A Python value as the right-hand side of a --set override (TOML)."""
+    if type(value).__module__ == "numpy":
+        value = value.tolist()  # a numpy scalar or array as Python numbers
     if isinstance(value, bool):
         return "true" if value else "false"
-    if isinstance(value, (int, np.integer)):
+    if isinstance(value, int):
         return str(int(value))
-    if isinstance(value, (float, np.floating)):
+    if isinstance(value, float):
         v = float(value)
         if math.isnan(v):
             return "nan"
@@ -99,7 +109,7 @@ def _toml_value(value: Any) -> str:
         return _toml_value(os.fspath(value))
     if isinstance(value, dict):
         return "{" + ", ".join(f"{k} = {_toml_value(v)}" for k, v in value.items()) + "}"
-    if isinstance(value, (list, tuple, np.ndarray)):
+    if isinstance(value, (list, tuple)):
         return "[" + ", ".join(_toml_value(v) for v in value) + "]"
     raise TypeError(f"cannot use a {type(value).__name__} as a scene value (use bool, int, float, str, list or dict)")
 
@@ -213,11 +223,12 @@ class Scene:
         names, values, segments, method, steps, seconds = core.timeline()
         return Timeline(names, values, segments, method, steps, seconds)
 
-    def field(self, s: Union[float, Sequence[float], np.ndarray]) -> np.ndarray:
+    def field(self, s: Union[float, Sequence[float], "np.ndarray"]) -> "np.ndarray":
         """The field B(s) = −ω(s) at arc lengths s, shape (N, 3) (the solver's own field code).
 
         The spinor obeys i dU/ds = −½ B(s)·σ U: the Hamiltonian is H(s) = −½ B(s)·σ.
         """
+        np = _numpy()
         return self._core.field(np.atleast_1d(np.asarray(s, dtype=float)).ravel())
 
     # -- pictures ---------------------------------------------------------
@@ -296,7 +307,7 @@ class Solution:
 
     __slots__ = ("quaternion", "rotation_matrix", "length", "method", "steps", "seconds", "unitarity_error")
 
-    def __init__(self, quaternion: np.ndarray, rotation_matrix: np.ndarray, length: float, method: str, steps: int,
+    def __init__(self, quaternion: "np.ndarray", rotation_matrix: "np.ndarray", length: float, method: str, steps: int,
                  seconds: float, unitarity_error: float) -> None:
         self.quaternion = quaternion            #: (4,) qw, qx, qy, qz of U = qw·1 − i(q·σ); the sign is kept
         self.rotation_matrix = rotation_matrix  #: (3, 3) R(U), worldFromBody
@@ -307,15 +318,15 @@ class Solution:
         self.unitarity_error = unitarity_error
 
     @property
-    def spinor(self) -> np.ndarray:
+    def spinor(self) -> "np.ndarray":
         """U(L)|↑⟩ as a complex (2,) array: (qw − i qz, qy − i qx)."""
         qw, qx, qy, qz = self.quaternion
-        return np.array([complex(qw, -qz), complex(qy, -qx)])
+        return _numpy().array([complex(qw, -qz), complex(qy, -qx)])
 
     @property
-    def unitary(self) -> np.ndarray:
+    def unitary(self) -> "np.ndarray":
         """U(L) = qw·1 − i(qx σx + qy σy + qz σz) as a complex (2, 2) array."""
-        return _unitaries(self.quaternion[np.newaxis, :])[0]
+        return _unitaries(self.quaternion.reshape(1, 4))[0]
 
     @property
     def angle(self) -> float:
@@ -333,9 +344,9 @@ class Solution:
         return f"<rollspin.Solution quaternion=[{q}] method={self.method} steps={self.steps} length={self.length:.6g}>"
 
 
-def _unitaries(q: np.ndarray) -> np.ndarray:
+def _unitaries(q: "np.ndarray") -> "np.ndarray":
     qw, qx, qy, qz = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
-    u = np.empty((len(q), 2, 2), dtype=complex)
+    u = _numpy().empty((len(q), 2, 2), dtype=complex)
     u[:, 0, 0] = qw - 1j * qz
     u[:, 0, 1] = -qy - 1j * qx
     u[:, 1, 0] = qy - 1j * qx
@@ -350,7 +361,7 @@ class Timeline:
     names in the CSV's order (a storyboard adds "segment").
     """
 
-    def __init__(self, names: List[str], values: np.ndarray, segments: Optional[np.ndarray], method: str, steps: int,
+    def __init__(self, names: List[str], values: "np.ndarray", segments: Optional["np.ndarray"], method: str, steps: int,
                  seconds: float) -> None:
         self._index = {name: k for k, name in enumerate(names)}
         self._values = values  # (columns, rows): each column contiguous
@@ -363,7 +374,7 @@ class Timeline:
     def __len__(self) -> int:
         return self._values.shape[1]
 
-    def __getitem__(self, column: str) -> np.ndarray:
+    def __getitem__(self, column: str) -> "np.ndarray":
         if column == "segment" and self._segments is not None:
             return self._segments
         if column not in self._index:
@@ -380,21 +391,21 @@ class Timeline:
         return list(self.columns)
 
     @property
-    def s(self) -> np.ndarray:
+    def s(self) -> "np.ndarray":
         return self["s"]
 
-    def quaternions(self) -> np.ndarray:
+    def quaternions(self) -> "np.ndarray":
         """(N, 4): qw, qx, qy, qz per row."""
-        return np.stack([self["qw"], self["qx"], self["qy"], self["qz"]], axis=1)
+        return _numpy().stack([self["qw"], self["qx"], self["qy"], self["qz"]], axis=1)
 
-    def spinors(self) -> np.ndarray:
+    def spinors(self) -> "np.ndarray":
         """(N, 2) complex: U(s)|↑⟩ per row."""
         return _unitaries(self.quaternions())[:, :, 0]
 
-    def bloch_vectors(self) -> np.ndarray:
+    def bloch_vectors(self) -> "np.ndarray":
         """(N, 3): the Bloch vector of U(s)|↑⟩, i.e. R(U(s)) ẑ."""
         qw, qx, qy, qz = self["qw"], self["qx"], self["qy"], self["qz"]
-        return np.stack([2.0 * (qx * qz + qw * qy), 2.0 * (qy * qz - qw * qx), 1.0 - 2.0 * (qx * qx + qy * qy)], axis=1)
+        return _numpy().stack([2.0 * (qx * qz + qw * qy), 2.0 * (qy * qz - qw * qx), 1.0 - 2.0 * (qx * qx + qy * qy)], axis=1)
 
     def to_pandas(self) -> Any:
         """A pandas.DataFrame with the CSV's columns."""
@@ -414,7 +425,7 @@ class Image:
         self._core = core
 
     @property
-    def array(self) -> np.ndarray:
+    def array(self) -> "np.ndarray":
         return self._core.array
 
     @property

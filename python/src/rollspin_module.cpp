@@ -264,7 +264,7 @@ std::shared_ptr<Image> renderStillImage(const std::shared_ptr<const Scene>& scen
   const StillJob& still = scene->stillJob(width, height, transparent);
   image->still = &still;
   image->s = app::stillArcLength(still.job, at);
-  image->list = app::drawStill(still.job, *still.drawer, image->s);
+  image->list = still.drawer->draw(app::stillFrame(still.job, image->s));
   stillRenderer(still.job.spec).renderer.render(image->list, image->pixels);
   return image;
 }

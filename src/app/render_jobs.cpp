@@ -138,11 +138,11 @@ double stillArcLength(const DrawJob& job, const std::optional<std::string>& at) 
   return job.spec.render.strobe > 1 ? length : 0.5 * length;
 }
 
-render::DrawList drawStill(const DrawJob& job, const draw::SceneDrawer& drawer, double s) {
+FrameOrientations stillFrame(const DrawJob& job, double s) {
   FrameOrientations frame = solveFrame(job.spec, job.model, s);
   frame.story = storyPlaceAt(job.model, s);
   frame.still = true;
-  return drawer.draw(frame);
+  return frame;
 }
 
 std::filesystem::path renderStill(const StillOptions& o) {
@@ -159,7 +159,8 @@ std::filesystem::path renderStill(const StillOptions& o) {
     std::filesystem::create_directories("output");
     out = std::filesystem::path("output") / (spec.name + format.defaultExtension());
   }
-  const render::DrawList list = drawStill(job, *makeDrawer(job), s);
+  const FrameOrientations frame = stillFrame(job, s);
+  const render::DrawList list = makeDrawer(job)->draw(frame);
   if (figure) {
     writeFigureStill(spec, list, out, *figure, o.shaderDir);
     return out;

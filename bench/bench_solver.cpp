@@ -10,6 +10,9 @@
 #include <memory>
 
 #include "geometry/analytic_paths.hpp"
+#include "model/rolling_model.hpp"
+#include "motion/solve_job.hpp"
+#include "scene/scene_loader.hpp"
 #include "spin/propagator.hpp"
 
 using namespace rollspin;
@@ -91,3 +94,16 @@ static void BM_LollipopRevolution_Exact(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(propagator.solveFinal().final);
 }
 BENCHMARK(BM_LollipopRevolution_Exact)->Unit(benchmark::kMicrosecond);
+
+// The scene file's lollipop solved as `rollspin solve` does it (the solver
+// the scene chooses, its automatic steps): the C++ side of bench_python.py's
+// Scene.solve() comparison (issue 44: ≤ 1.5× this + 20 µs).
+static void BM_LollipopScene_Solve(benchmark::State& state) {
+  const scene::SceneSpec spec = scene::loadSceneFile(ROLLSPIN_SOURCE_DIR "/scenes/lollipop.toml");
+  const model::RollingModel model = model::buildModel(spec);
+  for (auto _ : state) {
+    const motion::SolverChoice choice = motion::chooseSolver(spec, model);
+    benchmark::DoNotOptimize(motion::solveScene(spec, model, choice).final);
+  }
+}
+BENCHMARK(BM_LollipopScene_Solve)->Unit(benchmark::kMicrosecond);

@@ -19,6 +19,9 @@ packages=(
   parallel rsync jq
   slurm-wlm munge  # tests/cli/slurm_cluster_test.sh starts a one-node cluster of its own
   man-db dpkg-dev  # `man rollspin` after the install; cpack -G DEB's dpkg-shlibdeps
+  pybind11-dev python3-dev python3-pytest python3-numpy
+  python3-qutip python3-nbclient python3-ipywidgets python3-ipykernel
+  python3-pandas python3-matplotlib jupyter-nbformat
 )
 
 missing=()

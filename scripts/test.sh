@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Fresh machine → the whole test suite: installs the Debian packages, builds
-# Release, runs every test through ctest.
+# Release, runs every test through ctest (the Python tests and the example
+# notebooks too: ctest's python_tests, pytest with the build's package).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh

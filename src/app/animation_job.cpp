@@ -105,7 +105,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   // estimate (three queued RGBA frames, the yuv420p frame and the converter's
   // copy of the last RGBA frame, x264's look-ahead).
   const DrawJob job = prepareDrawJob({o.scenePath, o.overrides, presetFlags, o.width, o.height, o.transparent,
-                                      o.output, media::OutputUse::Animation, 256});
+                                      o.output, media::OutputUse::Animation, 256, o.sceneText});
   const scene::SceneSpec& spec = job.spec;
   const media::OutputFormat& format = *job.format;
   const RollingModel& model = job.model;
@@ -172,6 +172,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   using Frame = std::shared_ptr<const media::Image>;
   const auto pool = std::make_shared<ImagePool>();
   double poseWait = 0.0;
+  long long framesHanded = 0, framesTotal = 0;  // for o.onFrame
   // One pass over the range: poses from one forward march; frame k is
   // rendered and delivered when wanted(k). Held frames show the same pose:
   // the same pixels, rendered once — unless a storyboard's caption or camera
@@ -209,6 +210,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
       }
       previousMoving = cameraMoving;
       if (!deliver(previous)) break;
+      if (o.onFrame) o.onFrame(++framesHanded, framesTotal);
     }
     poseWait += poses.waitSeconds();
   };
@@ -216,7 +218,8 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   // A sink that needs to see the clip first (a GIF's palette) gets its
   // frames in a first pass, here on this thread.
   const std::vector<long long> previewFrames = sink->previewFrames(range.count());
-  ProgressMeter progress(range.count() + static_cast<long long>(previewFrames.size()), o.quiet);
+  framesTotal = range.count() + static_cast<long long>(previewFrames.size());
+  ProgressMeter progress(framesTotal, o.quiet);
   if (!previewFrames.empty()) {
     std::size_t next = 0;
     renderPass([&](long long k) { return next < previewFrames.size() && k - range.first == previewFrames[next]; },

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +29,10 @@ struct AnimationOptions {
   bool transparent = false;
   bool quiet = false;
   std::filesystem::path shaderDir;
+  std::optional<std::string> sceneText;        // the scene itself (Python's loads()); scenePath names it
+  // Called on the rendering thread after each frame is handed on (done, of
+  // total including a GIF's palette pass); the Python binding's progress bar.
+  std::function<void(long long done, long long total)> onFrame;
 };
 
 struct AnimationResult {

@@ -4,6 +4,7 @@
 
 #include "model/rolling_model.hpp"
 #include "core/error.hpp"
+#include "scene/scene_loader.hpp"
 
 namespace rollspin::app {
 
@@ -22,7 +23,8 @@ std::string explicitSetting(const std::vector<std::string>& overrides, const std
 }  // namespace
 
 scene::SceneSpec loadSceneWithFlags(const std::string& file, std::vector<std::string> overrides,
-                                    const std::vector<FlagOverride>& flags) {
+                                    const std::vector<FlagOverride>& flags,
+                                    const std::optional<std::string>& sceneText) {
   const std::vector<std::string> explicitOnes = overrides;
   std::vector<const FlagOverride*> applied;
   for (const FlagOverride& f : flags) {
@@ -45,7 +47,7 @@ scene::SceneSpec loadSceneWithFlags(const std::string& file, std::vector<std::st
   };
   scene::SceneSpec spec;
   try {
-    spec = model::loadScene(file, overrides);
+    spec = sceneText ? scene::loadSceneText(*sceneText, file, overrides) : model::loadScene(file, overrides);
   } catch (const Error& e) {
     if (const FlagOverride* f = flagFor(e.where().file)) throw Error(e.kind(), SourceLoc{f->flag}, e.message());
     throw;

@@ -5,6 +5,7 @@
 // typed (`--width 641`), not a `--set` they never wrote.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,10 @@ struct FlagOverride {
 // loadScene(file, overrides + each setting), with the flags as the source of
 // the keys they set. A --quality preset does not override a key the user set
 // with --set; it says so in one line on stderr instead.
+// sceneText: the scene itself (the Python binding's loads()); `file` then
+// only names it in messages.
 [[nodiscard]] scene::SceneSpec loadSceneWithFlags(const std::string& file, std::vector<std::string> overrides,
-                                                  const std::vector<FlagOverride>& flags);
+                                                  const std::vector<FlagOverride>& flags,
+                                                  const std::optional<std::string>& sceneText = std::nullopt);
 
 }  // namespace rollspin::app

@@ -20,7 +20,7 @@ DrawJob prepareDrawJob(const DrawJobRequest& r) {
   if (r.width) flags.push_back({"--width " + std::to_string(*r.width), "render.width=" + std::to_string(*r.width)});
   if (r.height) flags.push_back({"--height " + std::to_string(*r.height), "render.height=" + std::to_string(*r.height)});
   if (r.transparent) flags.push_back({"--transparent", "render.transparent=true"});
-  DrawJob job{loadSceneWithFlags(r.scenePath, r.overrides, flags), nullptr, {}};
+  DrawJob job{loadSceneWithFlags(r.scenePath, r.overrides, flags, r.sceneText), nullptr, {}};
   scene::SceneSpec& spec = job.spec;
   const media::OutputFormat& format = chooseOutputFormat(spec, r.output, r.use);
   job.format = &format;

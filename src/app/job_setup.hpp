@@ -34,6 +34,7 @@ struct DrawJobRequest {
   std::filesystem::path output;               // -o ("" = the job's default name)
   media::OutputUse use = media::OutputUse::Still;
   std::uint64_t extraBytesPerPixel = 0;       // what the job adds to the renderer's frame memory
+  std::optional<std::string> sceneText;       // the scene itself (Python's loads()); scenePath names it
 };
 
 struct DrawJob {

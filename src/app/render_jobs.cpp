@@ -132,6 +132,19 @@ render::ContextRequest contextRequest(const scene::SceneSpec& spec) {
   return {spec.render.backend, spec.where("render.backend"), spec.render.device, spec.where("render.device")};
 }
 
+double stillArcLength(const DrawJob& job, const std::optional<std::string>& at) {
+  const double length = job.model.path->length();
+  if (at) return resolveArcPosition(parseArcPosition(*at), length, *at);
+  return job.spec.render.strobe > 1 ? length : 0.5 * length;
+}
+
+FrameOrientations stillFrame(const DrawJob& job, double s) {
+  FrameOrientations frame = solveFrame(job.spec, job.model, s);
+  frame.story = storyPlaceAt(job.model, s);
+  frame.still = true;
+  return frame;
+}
+
 std::filesystem::path renderStill(const StillOptions& o) {
   const DrawJob job = prepareDrawJob({o.scenePath, o.overrides, {}, o.width, o.height, o.transparent, o.output,
                                       media::OutputUse::Still});
@@ -139,18 +152,14 @@ std::filesystem::path renderStill(const StillOptions& o) {
   const media::OutputFormat& format = *job.format;
   const auto figure = figureFormatOf(format);  // PDF/SVG: drawn by the vector backend (figure_job.hpp)
   if (figure) checkFigureSpec(spec);
-  const double length = job.model.path->length();
-  double s = spec.render.strobe > 1 ? length : 0.5 * length;
-  if (o.at) s = resolveArcPosition(parseArcPosition(*o.at), length, *o.at);
+  const double s = stillArcLength(job, o.at);
 
   std::filesystem::path out = o.output;
   if (out.empty()) {
     std::filesystem::create_directories("output");
     out = std::filesystem::path("output") / (spec.name + format.defaultExtension());
   }
-  FrameOrientations frame = solveFrame(spec, job.model, s);
-  frame.story = storyPlaceAt(job.model, s);
-  frame.still = true;
+  const FrameOrientations frame = stillFrame(job, s);
   const render::DrawList list = makeDrawer(job)->draw(frame);
   if (figure) {
     writeFigureStill(spec, list, out, *figure, o.shaderDir);

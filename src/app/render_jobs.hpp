@@ -70,6 +70,13 @@ void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerP
 
 std::filesystem::path renderStill(const StillOptions& options);
 
+struct DrawJob;  // job_setup.hpp
+// The arc length a still shows: `at` ("s=…" | "fraction=…"), else the middle
+// of the path (its end for a strobe); BadInput naming --at when outside.
+[[nodiscard]] double stillArcLength(const DrawJob& job, const std::optional<std::string>& at);
+// The still's poses at arc length s (solved from 0 to s), marked as a still.
+[[nodiscard]] motion::FrameOrientations stillFrame(const DrawJob& job, double s);
+
 // The GL context the scene asks for: render.backend / render.device with
 // where they were given (unset: the environment decides, render/gl_context.hpp).
 [[nodiscard]] render::ContextRequest contextRequest(const scene::SceneSpec& spec);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/scene_print.hpp"
 #include "motion/frame_clock.hpp"
 #include "model/rolling_model.hpp"
 #include "motion/solve_job.hpp"
@@ -96,37 +97,7 @@ int runTimeline(const SolveOptions& o) {
 
 // The resolved scene, with what the engine derives noted beside the keys.
 int runScenePrint(const SolveOptions& o) {
-  const scene::SceneSpec spec = loadScene(o.scenePath, o.overrides);
-  const RollingModel model = buildSceneModel(spec);
-  const SolverChoice choice = chooseSolver(spec, model);
-  std::map<std::string, std::string> notes;
-  if (choice.method != spin::Method::Exact && choice.automaticSteps)
-    notes["solver.steps"] = fmt::format("automatic: {} steps", choice.steps);
-  if (!spec.timeline.samples) notes["timeline.samples"] = fmt::format("{} (60 per turn + 1)", defaultSampleCount(model));
-  if (spec.isStoryboard()) {
-    // What each segment will do: where on the path, for how long.
-    const FrameClock clock(model.segments, spec);
-    const std::vector<double> seconds = FrameClock::segmentSeconds(model.segments, spec);
-    const double fps = spec.animation.fps.value();
-    for (std::size_t k = 0; k < spec.segments.size(); ++k) {
-      const SegmentSpan& span = model.segments[k];
-      notes[scene::SceneSpec::segmentKey(k)] =
-          spec.segments[k].path
-              ? fmt::format("segment {}: s {:.6g} to {:.6g} (length {:.6g}) in {:.6g} s, {} frames", k + 1, span.start,
-                            span.end, span.end - span.start, seconds[k], std::llround(seconds[k] * fps))
-              : fmt::format("segment {}: rests at s = {:.6g} for {:.6g} s, {} frames", k + 1, span.start,
-                            spec.segments[k].hold, std::llround(spec.segments[k].hold * fps));
-    }
-    notes[spec.animation.speed ? "animation.speed" : "animation.duration"] =
-        fmt::format("segments without their own timing move at {:.6g} per second; the clip has {} frames",
-                    spec.animation.speed ? *spec.animation.speed : model.path->length() / spec.animation.duration,
-                    clock.frameCount());
-  }
-  if (model.plate)
-    notes["plate.radius"] = fmt::format("the contact circle's radius is derived: R1/{} = {}",
-                                        model.plate->contactSpeedRatio, model.plate->radius / model.plate->contactSpeedRatio);
-  fmt::print("# {} resolved: every default filled in, extends and --set applied.\n# path: {}, length {}\n\n{}",
-             o.scenePath, model.path->describe(), model.path->length(), scene::writeScene(spec, notes));
+  fmt::print("{}", resolvedSceneText(o.scenePath, loadScene(o.scenePath, o.overrides)));
   return 0;
 }
 

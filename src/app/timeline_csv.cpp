@@ -1,6 +1,7 @@
 #include "app/timeline_csv.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <vector>
@@ -14,47 +15,65 @@ namespace rollspin::app {
 using namespace rollspin::model;
 using namespace rollspin::motion;
 
-spin::SolveStats writeTimelineCsv(const std::filesystem::path& out, const RollingModel& model,
-                                  const SolverChoice& choice, const spin::SampleArcLengths& sampleS) {
-  AtomicFile file(out);
-  fmt::memory_buffer buffer;
-  // A storyboard adds the number of the segment each row is in (from 1).
-  std::vector<std::pair<double, std::size_t>> motions;  // (start s, segment index) of each motion
+namespace {
+
+// (start s, segment number from 1) of each motion of a storyboard; empty otherwise.
+std::vector<std::pair<double, std::size_t>> motionStarts(const RollingModel& model) {
+  std::vector<std::pair<double, std::size_t>> motions;
   for (std::size_t k = 0; k < model.segments.size(); ++k)
     if (model.segments[k].end > model.segments[k].start) motions.emplace_back(model.segments[k].start, k + 1);
-  fmt::format_to(std::back_inserter(buffer), "s,px,py,pz,nx,ny,nz,cx,cy,cz,qw,qx,qy,qz,Bx,By,Bz,tx,ty,tz,kappa_n,kappa_g,"
-                                             "tau_g{}\n",
-                 motions.empty() ? "" : ",segment");
+  return motions;
+}
+
+}  // namespace
+
+bool timelineHasSegments(const RollingModel& model) { return !motionStarts(model).empty(); }
+
+spin::SolveStats sampleTimeline(const RollingModel& model, const SolverChoice& choice,
+                                const spin::SampleArcLengths& sampleS, const TimelineRowSink& rowSink,
+                                const std::string& where) {
+  // A storyboard adds the number of the segment each row is in (from 1).
+  const std::vector<std::pair<double, std::size_t>> motions = motionStarts(model);
   const double R = model.ballRadius;
-  // Rows are formatted into a buffer and handed to the file in ~1 MiB chunks.
-  auto sink = [&](std::size_t, double s, const spin::Su2& q) {
+  TimelineRow row;
+  auto sink = [&](std::size_t index, double s, const spin::Su2& q) {
     const geometry::DarbouxSample f = model.path->at(s);
     const geometry::Vec3 c = f.centre(R), b = spin::fieldB(f, R);
-    fmt::format_to(std::back_inserter(buffer),
-                   "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
-                   "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
-                   "{:.17g},{:.17g},{:.17g}",
-                   s, f.point.x(), f.point.y(), f.point.z(), f.normal.x(), f.normal.y(), f.normal.z(), c.x(), c.y(),
-                   c.z(), q.w, q.x, q.y, q.z, b.x(), b.y(), b.z(), f.tangent.x(), f.tangent.y(), f.tangent.z(),
-                   f.normalCurvature, f.geodesicCurvature, f.geodesicTorsion);
+    row.values = {s,   f.point.x(),   f.point.y(),   f.point.z(),   f.normal.x(),        f.normal.y(),
+                  f.normal.z(), c.x(), c.y(), c.z(), q.w, q.x, q.y, q.z, b.x(), b.y(), b.z(),
+                  f.tangent.x(), f.tangent.y(), f.tangent.z(), f.normalCurvature, f.geodesicCurvature,
+                  f.geodesicTorsion};
     if (!motions.empty()) {
       // The motion that starts last at or before s: a join's row belongs to the segment starting there.
       const auto it = std::upper_bound(motions.begin(), motions.end(), s,
                                        [](double x, const auto& m) { return x < m.first; });
-      fmt::format_to(std::back_inserter(buffer), ",{}", (it == motions.begin() ? motions.front() : *(it - 1)).second);
+      row.segment = (it == motions.begin() ? motions.front() : *(it - 1)).second;
     }
+    rowSink(index, row);
+  };
+  const spin::Propagator propagator(*model.path, R, choice.method, choice.steps, choice.tolerance);
+  const spin::SolveStats stats = propagator.run(sampleS, sink);
+  if (stats.status != spin::SolveStatus::Ok)
+    throw runtimeError(SourceLoc{where}, "solver failed: {}; nothing written", spin::statusMessage(stats.status));
+  return stats;
+}
+
+spin::SolveStats writeTimelineCsv(const std::filesystem::path& out, const RollingModel& model,
+                                  const SolverChoice& choice, const spin::SampleArcLengths& sampleS) {
+  AtomicFile file(out);
+  fmt::memory_buffer buffer;
+  const bool segments = timelineHasSegments(model);
+  fmt::format_to(std::back_inserter(buffer), "{}{}\n", fmt::join(kTimelineColumns, ","), segments ? ",segment" : "");
+  // Rows are formatted into a buffer and handed to the file in ~1 MiB chunks.
+  const spin::SolveStats stats = sampleTimeline(model, choice, sampleS, [&](std::size_t, const TimelineRow& row) {
+    fmt::format_to(std::back_inserter(buffer), "{:.17g}", fmt::join(row.values, ","));
+    if (segments) fmt::format_to(std::back_inserter(buffer), ",{}", row.segment);
     buffer.push_back('\n');
     if (buffer.size() > (1u << 20)) {
       file.write({buffer.data(), buffer.size()});
       buffer.clear();
     }
-  };
-  const spin::Propagator propagator(*model.path, R, choice.method, choice.steps, choice.tolerance);
-  const spin::SolveStats stats = propagator.run(sampleS, sink);
-  if (stats.status != spin::SolveStatus::Ok) {
-    throw runtimeError(SourceLoc{out.string()}, "solver failed: {}; nothing written",
-                       spin::statusMessage(stats.status));
-  }
+  }, out.string());
   file.write({buffer.data(), buffer.size()});
   file.commit();
   return stats;

@@ -9,8 +9,12 @@
 // of the segment whose motion the row is in.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <span>
+#include <string_view>
 
 #include "model/rolling_model.hpp"
 #include "motion/solve_job.hpp"
@@ -20,6 +24,27 @@ namespace rollspin::app {
 
 using model::RollingModel;
 using motion::SolverChoice;
+
+// The columns every row has, in order (the CSV header and the Python
+// Timeline's names); a storyboard adds "segment".
+inline constexpr std::array<std::string_view, 23> kTimelineColumns{
+    "s",  "px", "py", "pz", "nx", "ny", "nz", "cx", "cy", "cz", "qw",      "qx",     "qy",
+    "qz", "Bx", "By", "Bz", "tx", "ty", "tz", "kappa_n", "kappa_g", "tau_g"};
+
+struct TimelineRow {
+  std::array<double, kTimelineColumns.size()> values{};
+  std::size_t segment = 0;  // the storyboard segment (from 1) whose motion the row is in; 0: not a storyboard
+};
+using TimelineRowSink = std::function<void(std::size_t index, const TimelineRow& row)>;
+
+// Solves along the path and hands each sample's row to `sink`, in order: the
+// one sampling the CSV and the Python binding share. Throws Runtime (at
+// `where`) when the solver fails; rows already handed over are then partial.
+spin::SolveStats sampleTimeline(const RollingModel& model, const SolverChoice& choice,
+                                const spin::SampleArcLengths& sampleS, const TimelineRowSink& sink,
+                                const std::string& where);
+// Whether `model` is a storyboard, i.e. rows carry a segment number.
+[[nodiscard]] bool timelineHasSegments(const RollingModel& model);
 
 [[nodiscard]] spin::SolveStats writeTimelineCsv(const std::filesystem::path& out, const RollingModel& model,
                                                 const SolverChoice& choice, const spin::SampleArcLengths& sampleS);

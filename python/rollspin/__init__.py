@@ -1,0 +1,491 @@
+"""rollspin — the rolling ball and the spin-1/2, from Python.
+
+The same C++ core as the `rollspin` program (its scene loader, solver,
+timeline, still, figure and animation jobs), reached without a subprocess or
+a CSV:
+
+    >>> import rollspin
+    >>> scene = rollspin.load("lollipop")              # a bundled scene, or a path
+    >>> scene.solve().quaternion                        # qw, qx, qy, qz (sign kept)
+    >>> t = scene.timeline(samples=1000); t["qw"]       # numpy, the CSV's columns
+    >>> scene.set("render.azimuth_deg", 30).still(at=1.5)   # an Image; shown inline
+    >>> scene.render("lollipop.mp4")                    # any clip format
+
+In IPython, `%load_ext rollspin` adds the `%%rollspin` cell magic. See
+docs/python.md for the whole API.
+"""
+from __future__ import annotations
+
+import base64
+import html
+import math
+import os
+import sys
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
+
+from . import _rollspin as _core
+from ._errors import RenderError, RollspinError, SceneError
+
+__all__ = ["load", "loads", "Scene", "Solution", "Timeline", "Image", "Clip", "SceneError", "RenderError",
+           "RollspinError", "scene_dirs", "load_ipython_extension"]
+
+if TYPE_CHECKING:
+    import numpy as np
+
+PathLike = Union[str, "os.PathLike[str]"]
+
+
+def _numpy() -> Any:
+    # numpy is imported when an array is first needed, not by `import rollspin`:
+    # a script that only renders does not pay for it.
+    import numpy
+    return numpy
+
+
+def scene_dirs() -> List[Path]:
+    """Where a bare scene name (``load("lollipop")``) is looked for, in order.
+
+    ``$ROLLSPIN_SCENE_DIR``, the source tree's ``scenes/`` (a build tree's
+    package), then ``<prefix>/share/rollspin/scenes`` of the installed package.
+    """
+    dirs = [Path(os.environ["ROLLSPIN_SCENE_DIR"])] if os.environ.get("ROLLSPIN_SCENE_DIR") else []
+    # Installed: <prefix>/lib/python3.X/dist-packages/rollspin → <prefix>/share/rollspin/scenes.
+    here = Path(__file__).resolve().parent
+    if len(here.parents) > 3:
+        dirs.append(here.parents[3] / "share" / "rollspin" / "scenes")
+    dirs.append(Path(_core.SOURCE_SCENES))  # the source tree this package was built from
+    return dirs
+
+
+def _resolve_scene_path(path: PathLike) -> str:
+    text = os.fspath(path)
+    if os.path.exists(text):
+        return text
+    # A bare name of a bundled scene, as on the command line.
+    if text and os.sep not in text and not text.endswith(".toml"):
+        for folder in scene_dirs():
+            candidate = folder / (text + ".toml")
+            if candidate.is_file():
+                return str(candidate)
+    return text  # the loader says it cannot be read, naming it
+
+
+def load(path: PathLike) -> "Scene":
+    """A scene from a TOML file, or a bundled scene by name (``"lollipop"``).
+
+    Raises SceneError (a ValueError) with the CLI's message when the file is
+    missing or invalid.
+    """
+    return Scene(_core.Scene.load(_resolve_scene_path(path)))
+
+
+def loads(text: str, name: str = "<string>") -> "Scene":
+    """A scene from TOML text; `name` is what error messages call it."""
+    if not isinstance(text, str):
+        raise TypeError(f"loads() expects the scene's TOML text as str, got {type(text).__name__}")
+    return Scene(_core.Scene.loads(text, name))
+
+
+def _toml_value(value: Any) -> str:
+    """A Python value as the right-hand side of a --set override (TOML)."""
+    if type(value).__module__ == "numpy":
+        value = value.tolist()  # a numpy scalar or array as Python numbers
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, int):
+        return str(int(value))
+    if isinstance(value, float):
+        v = float(value)
+        if math.isnan(v):
+            return "nan"
+        if math.isinf(v):
+            return "inf" if v > 0 else "-inf"
+        return repr(v)
+    if isinstance(value, str):
+        escaped = value.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n").replace("\t", "\\t")
+        return f'"{escaped}"'
+    if isinstance(value, os.PathLike):
+        return _toml_value(os.fspath(value))
+    if isinstance(value, dict):
+        return "{" + ", ".join(f"{k} = {_toml_value(v)}" for k, v in value.items()) + "}"
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_toml_value(v) for v in value) + "]"
+    raise TypeError(f"cannot use a {type(value).__name__} as a scene value (use bool, int, float, str, list or dict)")
+
+
+def _override(key: str, value: Any) -> str:
+    if not isinstance(key, str):
+        raise TypeError(f"a scene key is a str like 'path.radius', got {type(key).__name__}")
+    return f"{key}={_toml_value(value)}"
+
+
+def _in_notebook() -> bool:
+    shell = sys.modules.get("IPython")
+    if shell is None:
+        return False
+    ip = shell.get_ipython()  # type: ignore[attr-defined]
+    return ip is not None and "IPKernelApp" in getattr(ip, "config", {})
+
+
+class Scene:
+    """A validated scene: a scene file (or text) plus its overrides.
+
+    Immutable: ``set()`` returns a new Scene. A Scene keeps its model and, once
+    it has drawn a still, its drawing job, so further stills cost a solve to s
+    and one GL frame.
+    """
+
+    __slots__ = ("_core", "_variants")
+
+    def __init__(self, core: Any) -> None:
+        self._core = core
+        self._variants: Dict[Tuple[str, ...], Any] = {}
+
+    # -- what it is -------------------------------------------------------
+    @property
+    def name(self) -> str:
+        """The scene's name (its file's stem)."""
+        return self._core.name
+
+    @property
+    def source(self) -> str:
+        """The scene file as given to load(), or the name given to loads()."""
+        return self._core.source
+
+    @property
+    def overrides(self) -> List[str]:
+        """The --set overrides laid over the file, in order ("key=value")."""
+        return list(self._core.overrides)
+
+    @property
+    def length(self) -> float:
+        """The path's length L (the arc length s runs over [0, L])."""
+        return self._core.length
+
+    @property
+    def ball_radius(self) -> float:
+        return self._core.ball_radius
+
+    def __repr__(self) -> str:
+        extra = f", {len(self.overrides)} override(s)" if self.overrides else ""
+        return f"<rollspin.Scene {self.name!r} from {self.source!r}{extra}: {self._core.describe}, length {self.length:.6g}>"
+
+    def set(self, key: str, value: Any) -> "Scene":
+        """A new Scene with `key` set to `value` (the CLI's ``--set key=value``).
+
+        Keys are dotted paths: ``"path.radius"``, ``"render.azimuth_deg"``,
+        ``"segment[2].path.radius"``. The new scene is validated by the same
+        loader; a bad key or value raises SceneError naming it.
+        """
+        return Scene(self._core.with_overrides([_override(key, value)]))
+
+    def toml(self) -> str:
+        """The resolved scene as TOML (``rollspin scene --print``)."""
+        return self._core.toml()
+
+    def _with(self, overrides: Sequence[str]) -> Any:
+        """The core scene with these overrides added, made once and kept."""
+        key = tuple(overrides)
+        if not key:
+            return self._core
+        found = self._variants.get(key)
+        if found is None:
+            if len(self._variants) > 32:
+                self._variants.clear()
+            found = self._variants[key] = self._core.with_overrides(list(key))
+        return found
+
+    # -- numbers ----------------------------------------------------------
+    def solve(self, method: Optional[str] = None, steps: Optional[int] = None,
+              tolerance: Optional[float] = None) -> "Solution":
+        """U(L): the spinor after the whole path (``rollspin solve``).
+
+        method, steps, tolerance override solver.method / .steps / .tolerance.
+        """
+        overrides = []
+        if method is not None:
+            overrides.append(_override("solver.method", method))
+        if steps is not None:
+            overrides.append(_override("solver.steps", steps))
+        if tolerance is not None:
+            overrides.append(_override("solver.tolerance", tolerance))
+        core = self._with(overrides)
+        quaternion, method_name, step_count, seconds, length, unitarity, rotation = core.solve()
+        return Solution(quaternion, rotation, length, method_name, step_count, seconds, unitarity)
+
+    def timeline(self, samples: Optional[int] = None) -> "Timeline":
+        """The orientation timeline (``rollspin timeline``) as numpy columns.
+
+        samples overrides timeline.samples (default: 60 per turn + 1).
+        """
+        core = self._with([_override("timeline.samples", samples)] if samples is not None else [])
+        names, values, segments, method, steps, seconds = core.timeline()
+        return Timeline(names, values, segments, method, steps, seconds)
+
+    def field(self, s: Union[float, Sequence[float], "np.ndarray"]) -> "np.ndarray":
+        """The field B(s) = −ω(s) at arc lengths s, shape (N, 3) (the solver's own field code).
+
+        The spinor obeys i dU/ds = −½ B(s)·σ U: the Hamiltonian is H(s) = −½ B(s)·σ.
+        """
+        np = _numpy()
+        return self._core.field(np.atleast_1d(np.asarray(s, dtype=float)).ravel())
+
+    # -- pictures ---------------------------------------------------------
+    def still(self, at: Union[None, float, str] = None, *, fraction: Optional[float] = None,
+              width: Optional[int] = None, height: Optional[int] = None, transparent: bool = False,
+              **render_keys: Any) -> "Image":
+        """One still (``rollspin render --still``) as an Image.
+
+        at: an arc length s (float), or "s=1.5" / "fraction=0.25" as on the CLI;
+        default the middle of the path (its end for a strobe). Other keyword
+        arguments set render keys: ``azimuth_deg=30`` is ``render.azimuth_deg=30``.
+        """
+        if at is not None and fraction is not None:
+            raise ValueError("give at= or fraction=, not both")
+        where: Optional[str]
+        if fraction is not None:
+            where = f"fraction={float(fraction)!r}"
+        elif at is None or isinstance(at, str):
+            where = at
+        else:
+            where = f"s={float(at)!r}"
+        core = self._with([_override("render." + k, v) for k, v in render_keys.items()])
+        return Image(_core.still(core, where, width, height, bool(transparent)))
+
+    def render(self, path: PathLike, *, frames: Optional[str] = None, quality: Optional[str] = None,
+               width: Optional[int] = None, height: Optional[int] = None, transparent: bool = False,
+               progress: Optional[bool] = None, on_frame: Optional[Callable[[int, int], None]] = None,
+               **render_keys: Any) -> "Clip":
+        """An animation (``rollspin render``): MP4, WebM, GIF, MOV, or a folder of PNG frames.
+
+        The format comes from render.format or the extension of `path`.
+        frames="A:B" renders part of the clip; quality is low | medium | high | 4k.
+        In a notebook a progress bar shows while it renders (progress=False: none;
+        progress=True outside a notebook: the CLI's bar on stderr). Ctrl-C
+        (KeyboardInterrupt) stops between frames and leaves the CLI's shorter,
+        playable file; the KeyboardInterrupt then names it. on_frame(done, total)
+        is called after each frame.
+        """
+        from . import _notebook
+        core = self._with([_override("render." + k, v) for k, v in render_keys.items()])
+        notebook = _in_notebook()
+        callbacks = [on_frame] if on_frame is not None else []
+        bar = None
+        if notebook and progress is not False:
+            bar, moved = _notebook.progress_bar(f"rendering {os.fspath(path)}")
+            if moved is not None:
+                callbacks.append(moved)
+
+        def each_frame(done: int, total: int) -> None:
+            for callback in callbacks:
+                callback(done, total)
+
+        quiet = not (progress and not notebook)
+        try:
+            written, done, requested, signal_number = _core.render(core, os.fspath(path), frames, quality, width,
+                                                                   height, bool(transparent), quiet,
+                                                                   each_frame if callbacks else None)
+        finally:
+            if bar is not None:
+                bar.close()
+        clip = Clip(Path(written) if written else None, done, requested, signal_number != 0)
+        if signal_number != 0:
+            raise KeyboardInterrupt(
+                f"rendering stopped after {done} of {requested} frames"
+                + (f"; wrote a shorter clip {written}" if written else "; nothing written"))
+        return clip
+
+    def explore(self, width: int = 640, height: int = 360) -> Any:
+        """Sliders over s and the camera's azimuth that redraw the still (ipywidgets)."""
+        from . import _notebook
+        return _notebook.explore(self, width, height)
+
+
+class Solution:
+    """The end of a solve: U(L) and how it was found."""
+
+    __slots__ = ("quaternion", "rotation_matrix", "length", "method", "steps", "seconds", "unitarity_error")
+
+    def __init__(self, quaternion: "np.ndarray", rotation_matrix: "np.ndarray", length: float, method: str, steps: int,
+                 seconds: float, unitarity_error: float) -> None:
+        self.quaternion = quaternion            #: (4,) qw, qx, qy, qz of U = qw·1 − i(q·σ); the sign is kept
+        self.rotation_matrix = rotation_matrix  #: (3, 3) R(U), worldFromBody
+        self.length = length                    #: the path's length L
+        self.method = method                    #: the solver method used
+        self.steps = steps                      #: its steps (0 for the closed form)
+        self.seconds = seconds                  #: the solve's wall time
+        self.unitarity_error = unitarity_error
+
+    @property
+    def spinor(self) -> "np.ndarray":
+        """U(L)|↑⟩ as a complex (2,) array: (qw − i qz, qy − i qx)."""
+        qw, qx, qy, qz = self.quaternion
+        return _numpy().array([complex(qw, -qz), complex(qy, -qx)])
+
+    @property
+    def unitary(self) -> "np.ndarray":
+        """U(L) = qw·1 − i(qx σx + qy σy + qz σz) as a complex (2, 2) array."""
+        return _unitaries(self.quaternion.reshape(1, 4))[0]
+
+    @property
+    def angle(self) -> float:
+        """The spinor angle 2·atan2(|q|, qw) in [0, 2π] (2π: U = −1, the ball turned once)."""
+        qw, qx, qy, qz = self.quaternion
+        return 2.0 * math.atan2(math.sqrt(qx * qx + qy * qy + qz * qz), qw)
+
+    def to_qutip(self) -> Any:
+        """U(L) as a qutip.Qobj (2 × 2 unitary operator)."""
+        import qutip
+        return qutip.Qobj(self.unitary)
+
+    def __repr__(self) -> str:
+        q = ", ".join(f"{v:.12g}" for v in self.quaternion)
+        return f"<rollspin.Solution quaternion=[{q}] method={self.method} steps={self.steps} length={self.length:.6g}>"
+
+
+def _unitaries(q: "np.ndarray") -> "np.ndarray":
+    qw, qx, qy, qz = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
+    u = _numpy().empty((len(q), 2, 2), dtype=complex)
+    u[:, 0, 0] = qw - 1j * qz
+    u[:, 0, 1] = -qy - 1j * qx
+    u[:, 1, 0] = qy - 1j * qx
+    u[:, 1, 1] = qw + 1j * qz
+    return u
+
+
+class Timeline:
+    """The orientation timeline: the CSV's columns as numpy arrays.
+
+    ``t["qw"]``, ``t["Bx"]``, ``t.s`` …; ``len(t)`` rows; ``t.columns`` the
+    names in the CSV's order (a storyboard adds "segment").
+    """
+
+    def __init__(self, names: List[str], values: "np.ndarray", segments: Optional["np.ndarray"], method: str, steps: int,
+                 seconds: float) -> None:
+        self._index = {name: k for k, name in enumerate(names)}
+        self._values = values  # (columns, rows): each column contiguous
+        self._segments = segments
+        self.columns: List[str] = list(names) + (["segment"] if segments is not None else [])
+        self.method = method
+        self.steps = steps
+        self.seconds = seconds
+
+    def __len__(self) -> int:
+        return self._values.shape[1]
+
+    def __getitem__(self, column: str) -> "np.ndarray":
+        if column == "segment" and self._segments is not None:
+            return self._segments
+        if column not in self._index:
+            raise KeyError(f"no column {column!r}; the columns are {', '.join(self.columns)}")
+        return self._values[self._index[column]]
+
+    def __contains__(self, column: object) -> bool:
+        return column in self.columns
+
+    def __iter__(self):  # like a mapping: the column names
+        return iter(self.columns)
+
+    def keys(self) -> List[str]:
+        return list(self.columns)
+
+    @property
+    def s(self) -> "np.ndarray":
+        return self["s"]
+
+    def quaternions(self) -> "np.ndarray":
+        """(N, 4): qw, qx, qy, qz per row."""
+        return _numpy().stack([self["qw"], self["qx"], self["qy"], self["qz"]], axis=1)
+
+    def spinors(self) -> "np.ndarray":
+        """(N, 2) complex: U(s)|↑⟩ per row."""
+        return _unitaries(self.quaternions())[:, :, 0]
+
+    def bloch_vectors(self) -> "np.ndarray":
+        """(N, 3): the Bloch vector of U(s)|↑⟩, i.e. R(U(s)) ẑ."""
+        qw, qx, qy, qz = self["qw"], self["qx"], self["qy"], self["qz"]
+        return _numpy().stack([2.0 * (qx * qz + qw * qy), 2.0 * (qy * qz - qw * qx), 1.0 - 2.0 * (qx * qx + qy * qy)], axis=1)
+
+    def to_pandas(self) -> Any:
+        """A pandas.DataFrame with the CSV's columns."""
+        import pandas
+        return pandas.DataFrame({name: self[name] for name in self.columns})
+
+    def __repr__(self) -> str:
+        return f"<rollspin.Timeline {len(self)} rows × {len(self.columns)} columns ({self.method}, {self.steps} steps)>"
+
+
+class Image:
+    """A still: ``array`` (H × W × 4 uint8, RGBA), ``save(path)``, shown inline in a notebook."""
+
+    __slots__ = ("_core",)
+
+    def __init__(self, core: Any) -> None:
+        self._core = core
+
+    @property
+    def array(self) -> "np.ndarray":
+        return self._core.array
+
+    @property
+    def width(self) -> int:
+        return self._core.width
+
+    @property
+    def height(self) -> int:
+        return self._core.height
+
+    @property
+    def s(self) -> float:
+        """The arc length shown."""
+        return self._core.s
+
+    def save(self, path: PathLike) -> Path:
+        """Writes the still: PNG, JPEG, … by extension or render.format; PDF and SVG as a vector figure."""
+        return Path(self._core.save(os.fspath(path)))
+
+    def _repr_png_(self) -> bytes:
+        return self._core.png()
+
+    def __repr__(self) -> str:
+        return f"<rollspin.Image {self.width}x{self.height} at s={self.s:.6g}>"
+
+
+_VIDEO_TYPES = {".mp4": "video/mp4", ".webm": "video/webm", ".mov": "video/quicktime"}
+
+
+class Clip:
+    """What Scene.render() wrote; shown inline in a notebook (``_repr_html_``)."""
+
+    def __init__(self, path: Optional[Path], frames_written: int, frames_requested: int, interrupted: bool) -> None:
+        self.path = path
+        self.frames_written = frames_written
+        self.frames_requested = frames_requested
+        self.interrupted = interrupted
+
+    def _repr_html_(self) -> str:
+        if self.path is None:
+            return "<p>rollspin: nothing was written</p>"
+        if self.path.is_dir():
+            frames = sorted(self.path.glob("*.png"))
+            if not frames:
+                return f"<p>rollspin: {html.escape(str(self.path))} (no frames)</p>"
+            data = base64.b64encode(frames[0].read_bytes()).decode()
+            return (f'<p>{len(frames)} frames in {html.escape(str(self.path))}; the first:</p>'
+                    f'<img src="data:image/png;base64,{data}"/>')
+        data = base64.b64encode(self.path.read_bytes()).decode()
+        suffix = self.path.suffix.lower()
+        if suffix == ".gif":
+            return f'<img src="data:image/gif;base64,{data}"/>'
+        kind = _VIDEO_TYPES.get(suffix, "video/mp4")
+        return f'<video controls loop autoplay muted><source src="data:{kind};base64,{data}" type="{kind}"></video>'
+
+    def __repr__(self) -> str:
+        return f"<rollspin.Clip {self.path} ({self.frames_written} of {self.frames_requested} frames)>"
+
+
+def load_ipython_extension(ipython: Any) -> None:
+    """``%load_ext rollspin``: registers the ``%%rollspin`` cell magic."""
+    from . import _notebook
+    _notebook.register_magic(ipython)

@@ -1,0 +1,373 @@
+// rollspin._rollspin — the Python door onto the same C++ core as the CLI:
+// the scene loader (with --set overrides), the solve and timeline jobs, the
+// still, figure and animation jobs. Nothing here reimplements a step; the
+// pure-Python package (python/rollspin/) wraps these objects in the public
+// API (Scene, Solution, Timeline, Image, Clip). The GIL is released while the
+// C++ works; rollspin::Error becomes rollspin.SceneError (bad input) or
+// rollspin.RollspinError (runtime), built in rollspin/_errors.py.
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <tuple>
+#include <vector>
+
+#include <unistd.h>
+
+#include "app/animation_job.hpp"
+#include "app/figure_job.hpp"
+#include "app/job_setup.hpp"
+#include "app/render_jobs.hpp"
+#include "app/scene_print.hpp"
+#include "app/timeline_csv.hpp"
+#include "core/error.hpp"
+#include "core/temp_files.hpp"
+#include "media/image_io.hpp"
+#include "media/sink_factory.hpp"
+#include "model/rolling_model.hpp"
+#include "motion/solve_job.hpp"
+#include "scene/scene_loader.hpp"
+#include "spin/field.hpp"
+#include "spin/su2.hpp"
+
+namespace py = pybind11;
+namespace fs = std::filesystem;
+using namespace rollspin;
+
+namespace {
+
+// Where a scene comes from: a file, or text (loads()), and the --set
+// overrides laid over it. Loading it again gives the same scene.
+struct SceneSource {
+  std::string name;                 // the path as given, or "<string>"
+  std::optional<std::string> text;  // loads(): the TOML itself
+  std::vector<std::string> overrides;
+};
+
+// One still size and alpha of a scene: the drawing job (spec with the size
+// applied, model) and its drawer, kept between stills so that a second still
+// costs a solve to s, a DrawList and a GL frame — not a fresh start.
+struct StillJob {
+  app::DrawJob job;
+  std::unique_ptr<draw::SceneDrawer> drawer;
+};
+
+// The GL renderer every still shares: one context for the process (a context
+// is current on one thread, and the animation and figure jobs make their
+// own, so it is dropped before they run and made again after).
+struct SharedGl {
+  std::mutex mutex;
+  std::unique_ptr<app::GlRenderer> gl;
+  std::thread::id thread;
+  std::string key;  // backend | device it was made for
+};
+SharedGl& sharedGl() {
+  static SharedGl* shared = new SharedGl;  // never destroyed: no GL calls at interpreter exit
+  return *shared;
+}
+void dropSharedGl() {
+  SharedGl& s = sharedGl();
+  if (s.gl && s.thread != std::this_thread::get_id()) (void)s.gl.release();  // not current here: leak, never crash
+  s.gl.reset();
+}
+app::GlRenderer& stillRenderer(const scene::SceneSpec& spec) {
+  SharedGl& s = sharedGl();
+  const std::string key = spec.render.backend.value_or("") + "|" + spec.render.device.value_or("");
+  if (!s.gl || s.thread != std::this_thread::get_id() || s.key != key) {
+    dropSharedGl();
+    s.gl = std::make_unique<app::GlRenderer>(spec, fs::path{});
+    s.thread = std::this_thread::get_id();
+    s.key = key;
+  }
+  return *s.gl;
+}
+
+class Scene {
+ public:
+  static std::shared_ptr<Scene> open(SceneSource source) {
+    auto scene = std::make_shared<Scene>();
+    {
+      py::gil_scoped_release release;
+      scene->spec_ = source.text ? scene::loadSceneText(*source.text, source.name, source.overrides)
+                                 : model::loadScene(source.name, source.overrides);
+      if (source.text && scene->spec_.name.empty()) scene->spec_.name = "scene";
+      scene->model_ = model::buildSceneModel(scene->spec_);
+    }
+    scene->source_ = std::move(source);
+    return scene;
+  }
+
+  [[nodiscard]] std::shared_ptr<Scene> withOverrides(const std::vector<std::string>& more) const {
+    SceneSource source = source_;
+    source.overrides.insert(source.overrides.end(), more.begin(), more.end());
+    return open(std::move(source));
+  }
+
+  [[nodiscard]] std::string toml() const {
+    py::gil_scoped_release release;
+    return app::resolvedSceneText(source_.name, spec_);
+  }
+
+  // (quaternion (4,), method, steps, seconds, length, unitarity error, rotation matrix (3,3)).
+  [[nodiscard]] py::tuple solve() const {
+    spin::SolveStats stats;
+    motion::SolverChoice choice;
+    {
+      py::gil_scoped_release release;
+      choice = motion::chooseSolver(spec_, model_);
+      stats = motion::solveScene(spec_, model_, choice);
+    }
+    const spin::Su2& q = stats.final;
+    py::array_t<double> quaternion(4);
+    double* qd = quaternion.mutable_data();
+    qd[0] = q.w, qd[1] = q.x, qd[2] = q.y, qd[3] = q.z;
+    py::array_t<double> rotation({3, 3});
+    const spin::Mat3 m = q.rotationMatrix();
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) rotation.mutable_at(i, j) = m(i, j);
+    return py::make_tuple(quaternion, std::string(spin::methodName(choice.method)), stats.steps, stats.seconds,
+                          model_.path->length(), stats.unitarityError, rotation);
+  }
+
+  // (column names, values (columns × rows), segment numbers or None, method, steps, seconds).
+  [[nodiscard]] py::tuple timeline() const {
+    const spin::SampleArcLengths samples = motion::timelineArcLengths(spec_, model_);
+    const auto rows = static_cast<py::ssize_t>(samples.size());
+    constexpr auto columns = static_cast<py::ssize_t>(app::kTimelineColumns.size());
+    py::array_t<double> values({columns, rows});
+    const bool segmented = app::timelineHasSegments(model_);
+    py::array_t<long long> segments(segmented ? rows : 0);
+    double* out = values.mutable_data();
+    long long* segmentOut = segments.mutable_data();
+    spin::SolveStats stats;
+    motion::SolverChoice choice;
+    {
+      py::gil_scoped_release release;
+      choice = motion::chooseSolver(spec_, model_);
+      stats = app::sampleTimeline(model_, choice, samples, [&](std::size_t index, const app::TimelineRow& row) {
+        for (py::ssize_t c = 0; c < columns; ++c) out[c * rows + static_cast<py::ssize_t>(index)] = row.values[c];
+        if (segmented) segmentOut[index] = static_cast<long long>(row.segment);
+      }, source_.name);
+    }
+    py::list names;
+    for (const auto name : app::kTimelineColumns) names.append(std::string(name));
+    return py::make_tuple(names, values, segmented ? py::object(segments) : py::object(py::none()),
+                          std::string(spin::methodName(choice.method)), stats.steps, stats.seconds);
+  }
+
+  // B(s) at each arc length (N × 3), from the field code the solver uses.
+  [[nodiscard]] py::array_t<double> field(const py::array_t<double, py::array::c_style | py::array::forcecast>& s) const {
+    const double length = model_.path->length();
+    const auto n = s.size();
+    const double* sd = s.data();
+    for (py::ssize_t k = 0; k < n; ++k)
+      if (!std::isfinite(sd[k]) || sd[k] < 0.0 || sd[k] > length)
+        throw badInput(SourceLoc{"s"}, "s: expected arc lengths in [0, {}] (the path's length), got {}", length, sd[k]);
+    py::array_t<double> b({n, py::ssize_t{3}});
+    double* bd = b.mutable_data();
+    {
+      py::gil_scoped_release release;
+      for (py::ssize_t k = 0; k < n; ++k) {
+        const geometry::Vec3 v = spin::fieldB(model_.path->at(sd[k]), model_.ballRadius);
+        bd[3 * k] = v.x(), bd[3 * k + 1] = v.y(), bd[3 * k + 2] = v.z();
+      }
+    }
+    return b;
+  }
+
+  // The still job for this size and alpha, made once and kept.
+  StillJob& stillJob(std::optional<long long> width, std::optional<long long> height, bool transparent) const {
+    const auto key = std::make_tuple(width.value_or(0), height.value_or(0), transparent);
+    auto found = stills_.find(key);
+    if (found != stills_.end()) return *found->second;
+    auto still = std::make_unique<StillJob>();
+    still->job = app::prepareDrawJob({source_.name, source_.overrides, {}, width, height, transparent, {},
+                                      media::OutputUse::Still, 0, source_.text});
+    still->drawer = app::makeDrawer(still->job);
+    return *stills_.emplace(key, std::move(still)).first->second;
+  }
+
+  [[nodiscard]] const scene::SceneSpec& spec() const { return spec_; }
+  [[nodiscard]] const model::RollingModel& model() const { return model_; }
+  [[nodiscard]] const SceneSource& source() const { return source_; }
+
+ private:
+  SceneSource source_;
+  scene::SceneSpec spec_;
+  model::RollingModel model_;
+  mutable std::map<std::tuple<long long, long long, bool>, std::unique_ptr<StillJob>> stills_;
+};
+
+// A still: its pixels, and what drew them (the scene, kept alive, and the
+// DrawList), so that save() can also write a PDF/SVG figure of it.
+struct Image {
+  std::shared_ptr<const Scene> scene;
+  const StillJob* still = nullptr;
+  render::DrawList list;
+  media::Image pixels;
+  double s = 0.0;
+
+  [[nodiscard]] fs::path save(const fs::path& path) const {
+    py::gil_scoped_release release;
+    const scene::SceneSpec& spec = still->job.spec;
+    const media::OutputFormat& format = app::chooseOutputFormat(spec, path, media::OutputUse::Still);
+    if (const auto figure = app::figureFormatOf(format)) {
+      app::checkFigureSpec(spec);
+      const std::lock_guard lock(sharedGl().mutex);
+      dropSharedGl();  // the figure job makes its own context
+      app::writeFigureStill(spec, list, path, *figure, {});
+      return path;
+    }
+    const auto sink = media::openSink(format, app::sinkOptions(spec, path));
+    sink->write(pixels.view());
+    return sink->finish();
+  }
+
+  [[nodiscard]] py::bytes png() const {
+    std::string bytes;
+    {
+      py::gil_scoped_release release;
+      const fs::path file = fs::temp_directory_path() / ("rollspin-repr-" + std::to_string(::getpid()) + "-" +
+                                                       std::to_string(reinterpret_cast<std::uintptr_t>(this)) + ".png");
+      media::writePng(file, pixels.view(),
+                      still->job.spec.render.transparent ? media::PngChannels::Rgba : media::PngChannels::Rgb);
+      std::ifstream in(file, std::ios::binary);
+      bytes.assign(std::istreambuf_iterator<char>(in), {});
+      std::error_code ec;
+      fs::remove(file, ec);
+    }
+    return py::bytes(bytes);
+  }
+};
+
+std::shared_ptr<Image> renderStillImage(const std::shared_ptr<const Scene>& scene, std::optional<std::string> at,
+                                        std::optional<long long> width, std::optional<long long> height,
+                                        bool transparent) {
+  auto image = std::make_shared<Image>();
+  image->scene = scene;
+  py::gil_scoped_release release;
+  const std::lock_guard lock(sharedGl().mutex);  // one GL context, one thread at a time
+  const StillJob& still = scene->stillJob(width, height, transparent);
+  image->still = &still;
+  image->s = app::stillArcLength(still.job, at);
+  image->list = still.drawer->draw(app::stillFrame(still.job, image->s));
+  stillRenderer(still.job.spec).renderer.render(image->list, image->pixels);
+  return image;
+}
+
+// An animation through the CLI's job: (written ("" for nothing), frames written, frames
+// requested, the signal that stopped it or 0).
+py::tuple renderClip(const std::shared_ptr<const Scene>& scene, const fs::path& output, std::optional<std::string> frames,
+                     std::optional<std::string> quality, std::optional<long long> width,
+                     std::optional<long long> height, bool transparent, bool quiet,
+                     std::function<void(long long, long long)> onFrame) {
+  app::AnimationOptions o;
+  o.scenePath = scene->source().name;
+  o.sceneText = scene->source().text;
+  o.overrides = scene->source().overrides;
+  o.output = output;
+  o.frames = std::move(frames);
+  o.quality = std::move(quality);
+  o.width = width;
+  o.height = height;
+  o.transparent = transparent;
+  o.quiet = quiet;
+  o.onFrame = std::move(onFrame);
+  app::AnimationResult result;
+  {
+    py::gil_scoped_release release;
+    const std::lock_guard lock(sharedGl().mutex);
+    dropSharedGl();  // the animation job makes its own context
+    result = app::renderAnimation(o);
+  }
+  return py::make_tuple(result.written.string(), result.framesWritten, result.framesRequested, result.interruptedBy);
+}
+
+// rollspin::Error → rollspin.SceneError / rollspin.RollspinError with the
+// CLI's message (what main() prints after "rollspin: error: ").
+void translateErrors() {
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const Error& e) {
+      const py::module_ errors = py::module_::import("rollspin._errors");
+      const py::object make = errors.attr("_from_core");
+      const SourceLoc& at = e.where();
+      const py::object error = make(e.kind() == ErrorKind::BadInput, std::string(e.what()), e.message(), at.file,
+                                    at.line, at.column);
+      PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(error.ptr())), error.ptr());
+    }
+  });
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_rollspin, m) {
+  m.doc() = "rollspin's C++ core (scene loader, solve, timeline, still, figure and animation jobs); "
+            "use the `rollspin` package's API, not this module directly.";
+  translateErrors();
+  m.attr("SOURCE_SCENES") = ROLLSPIN_SOURCE_SCENES;
+
+  py::class_<Scene, std::shared_ptr<Scene>>(m, "Scene")
+      .def_static("load", [](const std::string& path, const std::vector<std::string>& overrides) {
+        return Scene::open({path, std::nullopt, overrides});
+      }, py::arg("path"), py::arg("overrides") = std::vector<std::string>{})
+      .def_static("loads", [](const std::string& text, const std::string& name, const std::vector<std::string>& overrides) {
+        return Scene::open({name, text, overrides});
+      }, py::arg("text"), py::arg("name") = "<string>", py::arg("overrides") = std::vector<std::string>{})
+      .def("with_overrides", &Scene::withOverrides, py::arg("overrides"))
+      .def("toml", &Scene::toml)
+      .def("solve", &Scene::solve)
+      .def("timeline", &Scene::timeline)
+      .def("field", &Scene::field, py::arg("s"))
+      .def_property_readonly("name", [](const Scene& s) { return s.spec().name; })
+      .def_property_readonly("source", [](const Scene& s) { return s.source().name; })
+      .def_property_readonly("text", [](const Scene& s) { return s.source().text; })
+      .def_property_readonly("overrides", [](const Scene& s) { return s.source().overrides; })
+      .def_property_readonly("length", [](const Scene& s) { return s.model().path->length(); })
+      .def_property_readonly("ball_radius", [](const Scene& s) { return s.model().ballRadius; })
+      .def_property_readonly("describe", [](const Scene& s) { return s.model().path->describe(); })
+      .def_property_readonly("azimuth_deg", [](const Scene& s) { return s.spec().render.azimuthDeg; })
+      .def_property_readonly("width", [](const Scene& s) { return s.spec().render.width; })
+      .def_property_readonly("height", [](const Scene& s) { return s.spec().render.height; });
+
+  py::class_<Image, std::shared_ptr<Image>>(m, "Image")
+      .def_property_readonly("width", [](const Image& i) { return i.pixels.width; })
+      .def_property_readonly("height", [](const Image& i) { return i.pixels.height; })
+      .def_property_readonly("s", [](const Image& i) { return i.s; })
+      .def_property_readonly("transparent", [](const Image& i) { return i.still->job.spec.render.transparent; })
+      // H × W × 4 uint8, a view of the image's own pixels (kept alive by the array).
+      .def_property_readonly("array", [](const std::shared_ptr<Image>& i) {
+        auto* owner = new std::shared_ptr<Image>(i);
+        py::capsule keep(owner, [](void* p) { delete static_cast<std::shared_ptr<Image>*>(p); });
+        return py::array_t<std::uint8_t>({i->pixels.height, i->pixels.width, 4}, i->pixels.rgba.data(), keep);
+      })
+      .def("save", &Image::save, py::arg("path"))
+      .def("png", &Image::png);
+
+  m.def("still", &renderStillImage, py::arg("scene"), py::arg("at") = std::nullopt, py::arg("width") = std::nullopt,
+        py::arg("height") = std::nullopt, py::arg("transparent") = false);
+  m.def("render", &renderClip, py::arg("scene"), py::arg("output"), py::arg("frames") = std::nullopt,
+        py::arg("quality") = std::nullopt, py::arg("width") = std::nullopt, py::arg("height") = std::nullopt,
+        py::arg("transparent") = false, py::arg("quiet") = true, py::arg("on_frame") = py::none());
+  m.def("drop_gl", [] {
+          py::gil_scoped_release release;
+          const std::lock_guard lock(sharedGl().mutex);
+          dropSharedGl();
+        },
+        "Destroy the shared still renderer's GL context (a fresh one is made by the next still).");
+}

@@ -1,0 +1,81 @@
+"""Stills, clips and the notebook magic through Python: the CLI's pixels and files."""
+import os
+import signal
+
+import numpy as np
+import pytest
+
+import rollspin
+from conftest import SCENES, run_cli
+
+matplotlib_image = pytest.importorskip("matplotlib.image")
+
+
+def test_still_is_the_cli_still(lollipop, tmp_path):
+    png = tmp_path / "cli.png"
+    run_cli("render", SCENES / "lollipop.toml", "--still", "--at", "s=2.5", "--width", 160, "--height", 90, "-o", png,
+            "--quiet")
+    image = lollipop.still(at=2.5, width=160, height=90)
+    assert image.array.shape == (90, 160, 4) and image.array.dtype == np.uint8
+    theirs = np.rint(matplotlib_image.imread(png)[:, :, :3] * 255).astype(np.uint8)
+    assert np.array_equal(image.array[:, :, :3], theirs)
+    assert (image.array[:, :, 3] == 255).all()
+    # A second still on the kept context: the same pixels again.
+    again = lollipop.still(at=2.5, width=160, height=90)
+    assert np.array_equal(again.array, image.array)
+    assert lollipop.still(fraction=0.5, width=160, height=90).s == pytest.approx(0.5 * lollipop.length)
+
+
+def test_render_keys_and_save_formats(lollipop, tmp_path):
+    image = lollipop.still("fraction=0.25", width=96, height=64, azimuth_deg=30)
+    assert not np.array_equal(image.array, lollipop.still("fraction=0.25", width=96, height=64).array)
+    for suffix, magic in [(".png", b"\x89PNG"), (".jpg", b"\xff\xd8"), (".pdf", b"%PDF"), (".svg", b"<?xml")]:
+        written = image.save(tmp_path / f"still{suffix}")
+        assert written.read_bytes().startswith(magic), suffix
+    assert image._repr_png_().startswith(b"\x89PNG")
+    clear = lollipop.still(width=32, height=32, transparent=True)
+    assert clear.array[0, 0, 3] == 0  # the background is transparent
+
+
+def test_render_clip_and_html(lollipop, tmp_path):
+    short = lollipop.set("animation.duration", 0.5).set("animation.fps", 8)
+    clip = short.render(tmp_path / "clip.mp4", width=64, height=36)
+    assert clip.path.is_file() and 0 < clip.frames_written == clip.frames_requested <= 5
+    assert '<video' in clip._repr_html_() and "base64," in clip._repr_html_()
+    gif = short.render(tmp_path / "clip.gif", width=64, height=36)
+    assert gif.path.read_bytes().startswith(b"GIF8") and "<img" in gif._repr_html_()
+    # Stills still work after an animation made its own context.
+    assert short.still(width=32, height=32).array.shape == (32, 32, 4)
+
+
+def test_ctrl_c_leaves_the_cli_partial_file(lollipop, tmp_path):
+    scene = lollipop.set("animation.duration", 2.0).set("animation.fps", 10)
+    seen = []
+
+    def interrupt_at_third(done, total):
+        seen.append(done)
+        if done == 3:
+            os.kill(os.getpid(), signal.SIGINT)  # what Ctrl-C (or a kernel interrupt) sends
+
+    out = tmp_path / "cut.mp4"
+    with pytest.raises(KeyboardInterrupt) as caught:
+        scene.render(out, width=64, height=36, on_frame=interrupt_at_third)
+    assert max(seen) < 20
+    assert "shorter clip" in str(caught.value)
+    partial = [p for p in tmp_path.iterdir()]
+    assert len(partial) == 1 and partial[0].stat().st_size > 0  # a playable shorter file, no temporary left
+    assert not out.exists() or out == partial[0]
+    # Python's own Ctrl-C handling is back afterwards.
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+
+
+def test_magic_renders_the_cell(tmp_path, monkeypatch):
+    shell_module = pytest.importorskip("IPython.core.interactiveshell")
+    monkeypatch.chdir(tmp_path)
+    shell = shell_module.InteractiveShell.instance()
+    shell.run_line_magic("load_ext", "rollspin")
+    cell = (SCENES / "lollipop.toml").read_text()
+    shell.run_cell_magic("rollspin", "--still --width 48 --height 32 -o still.png", cell)
+    assert (tmp_path / "still.png").read_bytes().startswith(b"\x89PNG")
+    shell.run_cell_magic("rollspin", "--width 48 --height 32 --set animation.duration=0.25 -o clip.mp4", cell)
+    assert (tmp_path / "clip.mp4").stat().st_size > 0

@@ -1,0 +1,81 @@
+"""solve() and timeline() give the CLI's numbers, bit for bit, as numpy."""
+import json
+
+import numpy as np
+import pytest
+
+import rollspin
+from conftest import SCENES, run_cli
+
+
+def test_solve_is_the_cli_solve(lollipop):
+    cli = json.loads(run_cli("solve", SCENES / "lollipop.toml", "--json"))
+    sol = lollipop.solve()
+    assert sol.quaternion.shape == (4,) and sol.quaternion.dtype == np.float64
+    assert sol.quaternion.tolist() == cli["quaternion"]  # %.17g round-trips: the same doubles
+    assert (sol.method, sol.steps, sol.length) == (cli["method"], cli["steps"], cli["length"])
+    assert sol.seconds >= 0.0
+
+
+def test_sign_is_kept():
+    # r = √3 R: δ = 4π and U = −1 exactly (scenes/lollipop.toml's comment).
+    sol = rollspin.load(SCENES / "lollipop.toml").set("path.radius", 3 ** 0.5).solve()
+    assert sol.quaternion[0] == pytest.approx(-1.0, abs=1e-10)
+    assert np.allclose(sol.rotation_matrix, np.eye(3), atol=1e-10)
+    assert sol.angle == pytest.approx(2 * np.pi, abs=1e-9)
+
+
+def test_solution_forms_agree(lollipop):
+    sol = lollipop.solve()
+    qw, qx, qy, qz = sol.quaternion
+    u = sol.unitary
+    assert np.allclose(u.conj().T @ u, np.eye(2), atol=1e-12)
+    assert np.allclose(sol.spinor, u[:, 0])
+    # R(U) from the C++ core against R v = U (v·σ) U† done here.
+    sigma = [np.array([[0, 1], [1, 0]]), np.array([[0, -1j], [1j, 0]]), np.array([[1, 0], [0, -1]])]
+    for j in range(3):
+        rotated = u @ sigma[j] @ u.conj().T
+        column = [0.5 * np.trace(rotated @ sigma[i]).real for i in range(3)]
+        assert np.allclose(sol.rotation_matrix[:, j], column, atol=1e-12)
+
+
+def test_solve_options_go_through_the_loader(lollipop):
+    sol = lollipop.solve(method="rk4", steps=640)
+    assert (sol.method, sol.steps) == ("rk4", 640)
+    assert np.allclose(sol.quaternion, lollipop.solve().quaternion, atol=1e-9)
+
+
+def test_timeline_is_the_cli_csv(tmp_path):
+    for name in ("lollipop", "storyboard"):
+        path = SCENES / f"{name}.toml"
+        csv = tmp_path / f"{name}.csv"
+        run_cli("timeline", path, "-o", csv, "--set", "timeline.samples=157")
+        header = csv.read_text().split("\n", 1)[0].split(",")
+        table = np.loadtxt(csv, delimiter=",", skiprows=1)
+        t = rollspin.load(path).timeline(samples=157)
+        assert t.columns == header and len(t) == 157 == table.shape[0]
+        for k, column in enumerate(header):
+            assert (np.asarray(t[column], dtype=float) == table[:, k]).all(), column
+    assert "segment" in t and t["segment"].dtype.kind == "i"
+
+
+def test_timeline_helpers(lollipop):
+    t = lollipop.timeline()
+    assert t["s"][0] == 0.0 and t["s"][-1] == pytest.approx(lollipop.length)
+    assert np.array_equal(t.s, t["s"])
+    with pytest.raises(KeyError):
+        t["nope"]
+    q = t.quaternions()
+    assert np.allclose(np.linalg.norm(q, axis=1), 1.0, atol=1e-12)
+    assert np.allclose(np.linalg.norm(t.bloch_vectors(), axis=1), 1.0, atol=1e-12)
+    frame = t.to_pandas()
+    assert list(frame.columns) == t.columns and len(frame) == len(t)
+    assert (frame["qw"].to_numpy() == t["qw"]).all()
+
+
+def test_field_is_the_timeline_field(lollipop):
+    t = lollipop.timeline(samples=33)
+    b = lollipop.field(t.s)
+    assert b.shape == (33, 3)
+    assert (b == np.stack([t["Bx"], t["By"], t["Bz"]], axis=1)).all()
+    assert lollipop.field(1.0).shape == (1, 3)

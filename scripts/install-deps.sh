@@ -17,6 +17,7 @@ packages=(
   gnuplot-nox
   clang libclang-rt-14-dev time
   parallel rsync jq
+  mkdocs
 )
 
 missing=()

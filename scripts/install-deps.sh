@@ -22,6 +22,7 @@ packages=(
   pybind11-dev python3-dev python3-pytest python3-numpy
   python3-qutip python3-nbclient python3-ipywidgets python3-ipykernel
   python3-pandas python3-matplotlib jupyter-nbformat
+  mkdocs
 )
 
 missing=()

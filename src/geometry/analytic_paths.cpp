@@ -78,8 +78,12 @@ std::string PlaneCirclePath::describe() const {
 // ---- parallel on a sphere ----------------------------------------------
 
 SphereParallelPath::SphereParallelPath(std::shared_ptr<const Sphere> sphere, double colatitude, double turns,
-                                       bool counterClockwise)
-    : sphere_(std::move(sphere)), colatitude_(colatitude), turns_(turns), sense_(counterClockwise ? 1.0 : -1.0) {
+                                       bool counterClockwise, double startAzimuth)
+    : sphere_(std::move(sphere)),
+      colatitude_(colatitude),
+      turns_(turns),
+      sense_(counterClockwise ? 1.0 : -1.0),
+      startAzimuth_(startAzimuth) {
   assert(colatitude > 0.0 && colatitude < std::numbers::pi);
 }
 
@@ -87,7 +91,12 @@ double SphereParallelPath::parallelRadius() const { return sphere_->radius() * s
 
 double SphereParallelPath::length() const { return 2.0 * std::numbers::pi * parallelRadius() * turns_; }
 
-double SphereParallelPath::azimuth(double s) const { return sense_ * s / parallelRadius(); }
+// A zero start adds nothing, so scenes without start_azimuth_deg keep their
+// bytes (0 + −0 is +0).
+double SphereParallelPath::azimuth(double s) const {
+  const double swept = sense_ * s / parallelRadius();
+  return startAzimuth_ == 0.0 ? swept : startAzimuth_ + swept;
+}
 
 Vec3 SphereParallelPath::point(double s) const {
   const double r = sphere_->radius(), phi = azimuth(s);
@@ -114,7 +123,9 @@ DarbouxSample SphereParallelPath::at(double s) const {
 }
 
 std::string SphereParallelPath::describe() const {
-  return "parallel at colatitude " + describeNumber(colatitude_ * 180.0 / std::numbers::pi) + " deg (" +
+  const std::string from =
+      startAzimuth_ == 0.0 ? "" : " from azimuth " + describeNumber(startAzimuth_ * 180.0 / std::numbers::pi) + " deg";
+  return "parallel at colatitude " + describeNumber(colatitude_ * 180.0 / std::numbers::pi) + " deg" + from + " (" +
          describeNumber(turns_) + " turns, " + (sense_ > 0 ? "ccw" : "cw") + ") on a " + sphere_->describe();
 }
 

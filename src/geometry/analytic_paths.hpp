@@ -60,10 +60,11 @@ class PlaneCirclePath final : public ContactPath {
 
 class SphereParallelPath final : public ContactPath {
  public:
-  // Parallel at colatitude θ ∈ (0, π), starting at azimuth 0, moving
-  // counter-clockwise about +z (seen from above the north pole) when
-  // counterClockwise.
-  SphereParallelPath(std::shared_ptr<const Sphere> sphere, double colatitude, double turns, bool counterClockwise);
+  // Parallel at colatitude θ ∈ (0, π), starting at azimuth startAzimuth
+  // (radians, default 0), moving counter-clockwise about +z (seen from above
+  // the north pole) when counterClockwise: φ(s) = φ0 ± s/ρ.
+  SphereParallelPath(std::shared_ptr<const Sphere> sphere, double colatitude, double turns, bool counterClockwise,
+                     double startAzimuth = 0.0);
   [[nodiscard]] double length() const override;
   [[nodiscard]] DarbouxSample at(double s) const override;
   [[nodiscard]] Vec3 point(double s) const override;
@@ -76,7 +77,7 @@ class SphereParallelPath final : public ContactPath {
  private:
   [[nodiscard]] double azimuth(double s) const;
   std::shared_ptr<const Sphere> sphere_;
-  double colatitude_, turns_, sense_;
+  double colatitude_, turns_, sense_, startAzimuth_;
 };
 
 }  // namespace rollspin::geometry

@@ -30,33 +30,53 @@ SurfaceCurveOptions closedCircuit(double turns) {
 
 // ---- parallels ---------------------------------------------------------------
 
+namespace {
+// The azimuth along a parallel, φ0 + σ t. A zero start adds nothing, so the
+// bytes of a scene without start_azimuth_deg stay as they were (0 + −0 would
+// turn the cw parallel's first sin(φ) from −0 into +0).
+Jet parallelAzimuth(const Jet& t, double sense, double startAzimuth) {
+  return startAzimuth == 0.0 ? sense * t : startAzimuth + sense * t;
+}
+std::string fromAzimuth(double startAzimuth) { return startAzimuth == 0.0 ? "" : " from azimuth " + deg(startAzimuth); }
+}  // namespace
+
 std::unique_ptr<SurfaceCurvePath> sphereParallel(std::shared_ptr<const Sphere> sphere, double colatitude, double turns,
-                                                 bool ccw) {
+                                                 bool ccw, double startAzimuth) {
   const double sense = ccw ? 1.0 : -1.0;
-  return wrap(sphere, [=](const Jet& t) { return std::array<Jet, 2>{Jet(colatitude), sense * t}; }, 0.0,
-              2.0 * kPi * turns, "parallel at colatitude " + deg(colatitude), closedCircuit(turns));
+  return wrap(sphere,
+              [=](const Jet& t) { return std::array<Jet, 2>{Jet(colatitude), parallelAzimuth(t, sense, startAzimuth)}; },
+              0.0, 2.0 * kPi * turns, "parallel at colatitude " + deg(colatitude) + fromAzimuth(startAzimuth),
+              closedCircuit(turns));
 }
 
 std::unique_ptr<SurfaceCurvePath> cylinderParallel(std::shared_ptr<const Cylinder> cylinder, double height,
-                                                   double turns, bool ccw) {
+                                                   double turns, bool ccw, double startAzimuth) {
   const double sense = ccw ? 1.0 : -1.0;
-  return wrap(cylinder, [=](const Jet& t) { return std::array<Jet, 2>{sense * t, Jet(height)}; }, 0.0,
-              2.0 * kPi * turns, "parallel at height " + describeNumber(height), closedCircuit(turns));
+  return wrap(cylinder,
+              [=](const Jet& t) { return std::array<Jet, 2>{parallelAzimuth(t, sense, startAzimuth), Jet(height)}; },
+              0.0, 2.0 * kPi * turns, "parallel at height " + describeNumber(height) + fromAzimuth(startAzimuth),
+              closedCircuit(turns));
 }
 
 std::unique_ptr<SurfaceCurvePath> torusParallel(std::shared_ptr<const Torus> torus, double tubeAngle, double turns,
-                                                bool ccw) {
+                                                bool ccw, double startAzimuth) {
   const double sense = ccw ? 1.0 : -1.0;
-  return wrap(torus, [=](const Jet& t) { return std::array<Jet, 2>{sense * t, Jet(tubeAngle)}; }, 0.0,
-              2.0 * kPi * turns, "parallel at tube angle " + deg(tubeAngle), closedCircuit(turns));
+  return wrap(torus,
+              [=](const Jet& t) { return std::array<Jet, 2>{parallelAzimuth(t, sense, startAzimuth), Jet(tubeAngle)}; },
+              0.0, 2.0 * kPi * turns, "parallel at tube angle " + deg(tubeAngle) + fromAzimuth(startAzimuth),
+              closedCircuit(turns));
 }
 
 std::unique_ptr<SurfaceCurvePath> heightFieldParallel(std::shared_ptr<const HeightField> field, double radius,
-                                                      double turns, bool ccw) {
+                                                      double turns, bool ccw, double startAzimuth) {
   const double sense = ccw ? 1.0 : -1.0;
   return wrap(field,
-              [=](const Jet& t) { return std::array<Jet, 2>{radius * cos(sense * t), radius * sin(sense * t)}; },
-              0.0, 2.0 * kPi * turns, "parallel of radius " + describeNumber(radius), closedCircuit(turns));
+              [=](const Jet& t) {
+                const Jet phi = parallelAzimuth(t, sense, startAzimuth);
+                return std::array<Jet, 2>{radius * cos(phi), radius * sin(phi)};
+              },
+              0.0, 2.0 * kPi * turns, "parallel of radius " + describeNumber(radius) + fromAzimuth(startAzimuth),
+              closedCircuit(turns));
 }
 
 // ---- meridians ---------------------------------------------------------------

@@ -27,15 +27,19 @@
 
 namespace rollspin::geometry {
 
+// Parallels start at azimuth startAzimuth (radians; 0 by default: φ = 0 on
+// the surface's own azimuth, see docs/conventions.md) and run ±2π·turns.
 [[nodiscard]] std::unique_ptr<SurfaceCurvePath> sphereParallel(std::shared_ptr<const Sphere> sphere, double colatitude,
-                                                               double turns, bool ccw);
+                                                               double turns, bool ccw, double startAzimuth = 0.0);
 [[nodiscard]] std::unique_ptr<SurfaceCurvePath> cylinderParallel(std::shared_ptr<const Cylinder> cylinder,
-                                                                 double height, double turns, bool ccw);
+                                                                 double height, double turns, bool ccw,
+                                                                 double startAzimuth = 0.0);
 [[nodiscard]] std::unique_ptr<SurfaceCurvePath> torusParallel(std::shared_ptr<const Torus> torus, double tubeAngle,
-                                                              double turns, bool ccw);
+                                                              double turns, bool ccw, double startAzimuth = 0.0);
 // Requires a surface of revolution (paraboloid with a = b).
 [[nodiscard]] std::unique_ptr<SurfaceCurvePath> heightFieldParallel(std::shared_ptr<const HeightField> field,
-                                                                    double radius, double turns, bool ccw);
+                                                                    double radius, double turns, bool ccw,
+                                                                    double startAzimuth = 0.0);
 
 [[nodiscard]] std::unique_ptr<SurfaceCurvePath> sphereMeridian(std::shared_ptr<const Sphere> sphere, double azimuth,
                                                                double colatitudeStart, double colatitudeEnd);

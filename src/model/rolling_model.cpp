@@ -82,7 +82,8 @@ RollingModel buildPathModel(const scene::SceneSpec& spec, const Placement& place
     auto sphere = std::static_pointer_cast<const geometry::Sphere>(buildSurface(spec));
     model.surface = sphere;
     model.path = std::make_unique<geometry::SphereParallelPath>(
-        sphere, spec.path.colatitudeDeg * std::numbers::pi / 180.0, spec.path.turns, spec.path.counterClockwise);
+        sphere, spec.path.colatitudeDeg * std::numbers::pi / 180.0, spec.path.turns, spec.path.counterClockwise,
+        spec.path.startAzimuthDeg * std::numbers::pi / 180.0);
   }
   return model;
 }

@@ -32,9 +32,13 @@ std::unique_ptr<geometry::SurfaceCurvePath> buildPath(const scene::SceneSpec& sp
   auto field = std::dynamic_pointer_cast<const geometry::HeightField>(surface);
   switch (p.kind) {
     case PathKind::Parallel:
-      if (cylinder) return geometry::cylinderParallel(cylinder, p.height, p.turns, p.counterClockwise);
-      if (torus) return geometry::torusParallel(torus, radians(p.tubeAngleDeg), p.turns, p.counterClockwise);
-      if (field) return geometry::heightFieldParallel(field, p.radius, p.turns, p.counterClockwise);
+      if (cylinder)
+        return geometry::cylinderParallel(cylinder, p.height, p.turns, p.counterClockwise, radians(p.startAzimuthDeg));
+      if (torus)
+        return geometry::torusParallel(torus, radians(p.tubeAngleDeg), p.turns, p.counterClockwise,
+                                       radians(p.startAzimuthDeg));
+      if (field)
+        return geometry::heightFieldParallel(field, p.radius, p.turns, p.counterClockwise, radians(p.startAzimuthDeg));
       break;
     case PathKind::Meridian:
       if (sphere)

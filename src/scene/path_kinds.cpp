@@ -16,6 +16,7 @@ const std::vector<PathKindRow>& pathTable() {
        LiesOn::Revolution,
        {{"turns", {}},
         {"direction", {}},
+        {"start_azimuth_deg", {}},
         {"radius", {S::Paraboloid}},
         {"colatitude_deg", {S::Sphere}},
         {"tube_angle_deg", {S::Torus}},

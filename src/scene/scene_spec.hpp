@@ -48,6 +48,7 @@ struct PathSpec {
   std::optional<Vec3> directionVector;  // line; default: horizontal in the plane (see README)
   double radius = 3.0;                // circle: contact circle radius r
   double colatitudeDeg = 60.0;        // parallel: θ in degrees
+  double startAzimuthDeg = 0.0;       // parallel: the azimuth φ at s = 0 (docs/conventions.md)
   // Curved surfaces (issue 3). Angles in degrees; see README "Curves".
   double tubeAngleDeg = 0.0;          // torus parallel / meridian start: ψ (0 = outer equator)
   double height = 0.0;                // cylinder parallel / helix / meridian: start height along the axis

@@ -84,6 +84,7 @@ void writePath(Writer& w, const PathSpec& p, SurfaceKind sk, bool plate, PathDef
     else if (key == "tube_angle_deg") w.key(key, number(p.tubeAngleDeg));
     else if (key == "height") w.key(key, number(p.height));
     else if (key == "azimuth_deg") w.key(key, number(p.azimuthDeg));
+    else if (key == "start_azimuth_deg") w.key(key, number(p.startAzimuthDeg));
     else if (key == "colatitude_start_deg") w.key(key, number(p.colatitudeStartDeg));
     else if (key == "colatitude_end_deg") w.key(key, number(p.colatitudeEndDeg));
     else if (key == "pitch_angle_deg") w.key(key, number(p.pitchAngleDeg));

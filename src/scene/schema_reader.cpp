@@ -314,6 +314,7 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
   if (auto v = number(path, prefix, "tube_angle_deg")) target.tubeAngleDeg = *v;
   if (auto v = number(path, prefix, "height")) target.height = *v;
   if (auto v = number(path, prefix, "azimuth_deg")) target.azimuthDeg = *v;
+  if (auto v = number(path, prefix, "start_azimuth_deg")) target.startAzimuthDeg = *v;
   if (auto v = number(path, prefix, "pitch_angle_deg")) {
     if (!(std::abs(*v) < 90.0))
       failAt(prefix + ".pitch_angle_deg", fmt::format("expected a pitch angle in (-90, 90) degrees, got {}", *v));

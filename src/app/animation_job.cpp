@@ -165,6 +165,8 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
 
   const std::unique_ptr<SceneDrawer> drawerOwner = makeDrawer(job);
   const SceneDrawer& drawer = *drawerOwner;
+  // A view the scene's own camera keys force, that hides the ball: say where.
+  for (const std::string& line : drawer.cameraWarnings()) fmt::print(stderr, "{}\n", line);
   GlRenderer gl(spec, o.shaderDir);
   render::Renderer& renderer = gl.renderer;
 
@@ -197,7 +199,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
         previous.reset();
         continue;
       }
-      const bool cameraMoving = story.segment > 0 && story.seconds < std::min(SceneDrawer::kCameraMove, story.duration);
+      const bool cameraMoving = drawer.cameraMoving(story);
       // An image drawn mid-move shows the camera short of where it stops: the
       // first frame after the move is drawn again, as a part starting there is.
       if (!previous || s != previousS || story.segment != previousSegment || cameraMoving || previousMoving) {

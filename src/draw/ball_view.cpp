@@ -179,6 +179,20 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
         lo = lo.cwiseMin(p);
         hi = hi.cwiseMax(p);
       }
+      // The drawn patch's edge near the path (a cylinder's top and bottom
+      // rims) is framed too, so that the frame does not cut the surface
+      // just past the ball; far corners (a paraboloid's rising rim) are not.
+      const std::size_t pathFramePoints = extent_.points.size();
+      for (int k = 0; k <= 32; ++k) {
+        const double t = k / 32.0;
+        for (const geometry::Vec2 uv : {geometry::Vec2(u0 + (u1 - u0) * t, v0), geometry::Vec2(u0 + (u1 - u0) * t, v1),
+                                        geometry::Vec2(u0, v0 + (v1 - v0) * t), geometry::Vec2(u1, v0 + (v1 - v0) * t)}) {
+          const Vec3 p = surface.position(uv);
+          double nearest = 1e300;
+          for (std::size_t i = 0; i < pathFramePoints; ++i) nearest = std::min(nearest, (extent_.points[i] - p).norm());
+          if (nearest <= 4.5 * R) extent_.points.push_back(p);
+        }
+      }
     }
   }
   if (model.plate) {

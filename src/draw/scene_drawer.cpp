@@ -167,7 +167,9 @@ void SceneDrawer::layOut(const RollingModel& model) {
         for (const StoryPlace& place : places) {
           const render::View v = camera_->ballCamera(0, 0, r.ball.width, r.ball.height, s, place);
           const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
-          ball_->markImportant(occupancy, v, s, clipFromWorld != marked);  // the path once per camera
+          // The path once per camera; a camera that follows the ball sweeps
+          // the path across the whole view, so only the ball counts there.
+          ball_->markImportant(occupancy, v, s, clipFromWorld != marked && !camera_->follows(place));
           marked = clipFromWorld;
         }
       }

@@ -47,6 +47,14 @@ class SceneDrawer {
 
   [[nodiscard]] render::DrawList draw(const FrameOrientations& frame) const;
 
+  // Whether the frame's camera is still on its way from the previous
+  // segment's (a held frame must be drawn again).
+  [[nodiscard]] bool cameraMoving(const StoryPlace& story) const { return camera_->moving(story); }
+
+  // Where the scene's own camera keys hide the ball: one warning line per
+  // segment, with the seconds (CameraFraming::hiddenWarnings).
+  [[nodiscard]] std::vector<std::string> cameraWarnings() const { return camera_->hiddenWarnings(); }
+
   // The marker's body direction X(0) (unit).
   [[nodiscard]] const geometry::Vec3& markerBody() const { return markerBody_; }
 

@@ -51,7 +51,8 @@ std::vector<std::string> optionNames(const CLI::Option* o) {
   return names;
 }
 
-bool takesValue(const CLI::Option* o) { return o->get_type_size() != 0; }
+// A flag expects no value (CLI11 sets expected(0) for add_flag).
+bool takesValue(const CLI::Option* o) { return o->get_expected_max() != 0; }
 // A positional that names scenes: completed with bundled scene names and *.toml files.
 bool isScene(const CLI::Option* o) { return o->get_name() == "scene" || o->get_name() == "scenes"; }
 
@@ -103,7 +104,9 @@ std::string zshText(const std::string& text) {
 
 std::string manPage(const CLI::App& cli, const std::string& version) {
   std::string out = fmt::format(".TH ROLLSPIN 1 \"\" \"rollspin {}\" \"User Commands\"\n", version);
-  out += ".SH NAME\nrollspin \\- " + roff(cli.get_description()) + "\n";
+  std::string summary = cli.get_description();
+  if (summary.starts_with("rollspin: ")) summary = summary.substr(10);
+  out += ".SH NAME\nrollspin \\- " + roff(summary) + "\n";
   out += ".SH SYNOPSIS\n.B rollspin\n[\\fB\\-\\-verbose\\fR] \\fICOMMAND\\fR [\\fIARGS\\fR]\n";
   out += ".SH DESCRIPTION\nrollspin solves a ball rolling without slipping or spinning on a surface as a spin\\-1/2 "
          "in a magnetic field, with arc length as time, and renders stills, figures and clips of it off screen. "
@@ -228,7 +231,8 @@ std::string zshCompletion(const CLI::App& cli) {
   auto globalSpecs = [&] {
     std::string out;
     for (const CLI::Option* o : namedOptions(&cli))
-      for (const auto& n : optionNames(o)) out += "    '" + n + "[" + zshText(o->get_description()) + "]' \\\n";
+      if (o->get_name() != "--help")  // each command has its own
+        for (const auto& n : optionNames(o)) out += "    '" + n + "[" + zshText(o->get_description()) + "]' \\\n";
     return out;
   };
   for (const CommandView& c : commands(cli)) {
@@ -238,7 +242,7 @@ std::string zshCompletion(const CLI::App& cli) {
         std::string spec = "'" + n + "[" + zshText(o->get_description()) + "]";
         if (takesValue(o)) {
           const bool file = n == "-o" || n == "--output" || n == "--output-dir" || n == "--diff" || n == "--shader-dir";
-          spec += ":" + o->get_name() + ":" + (file ? "_files" : " ");
+          spec += std::string(":value:") + (file ? "_files" : " ");
         }
         specs += "    " + spec + "' \\\n";
       }

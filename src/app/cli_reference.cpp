@@ -44,7 +44,7 @@ std::vector<const CLI::Option*> positionals(const CLI::App* app) {
   return out;
 }
 
-std::vector<std::string> optionNames(const CLI::Option* o) {
+std::vector<std::string> spelledNames(const CLI::Option* o) {
   std::vector<std::string> names;
   for (const auto& s : o->get_snames()) names.push_back("-" + s);
   for (const auto& l : o->get_lnames()) names.push_back("--" + l);
@@ -114,14 +114,14 @@ std::string manPage(const CLI::App& cli, const std::string& version) {
          "\\fBrollspin keys\\fR lists every key a scene accepts).\n";
   out += ".SH GLOBAL OPTIONS\n";
   for (const CLI::Option* o : namedOptions(&cli))
-    out += ".TP\n.B " + roff(joined(optionNames(o), ", ")) + "\n" + roff(o->get_description()) + "\n";
+    out += ".TP\n.B " + roff(joined(spelledNames(o), ", ")) + "\n" + roff(o->get_description()) + "\n";
   out += ".SH COMMANDS\n";
   for (const CommandView& c : commands(cli)) {
     out += ".SS \"" + roff(usageOf(c)) + "\"\n" + roff(c.app->get_description()) + "\n";
     for (const CLI::Option* p : positionals(c.app))
       out += ".TP\n.I " + roff(p->get_name()) + "\n" + roff(p->get_description()) + "\n";
     for (const CLI::Option* o : namedOptions(c.app)) {
-      std::string names = roff(joined(optionNames(o), ", "));
+      std::string names = roff(joined(spelledNames(o), ", "));
       if (takesValue(o)) names += " \\fIVALUE\\fR";
       out += ".TP\n\\fB" + names + "\\fR\n" + roff(o->get_description()) + "\n";
     }
@@ -143,13 +143,13 @@ std::string bashCompletion(const CLI::App& cli) {
     if (!sub->get_group().empty()) top.push_back(sub->get_name());
   std::vector<std::string> global;
   for (const CLI::Option* o : namedOptions(&cli))
-    for (const auto& n : optionNames(o)) global.push_back(n);
+    for (const auto& n : spelledNames(o)) global.push_back(n);
 
   std::string cases;
   for (const CommandView& c : commands(cli)) {
     std::vector<std::string> words, valued, subs;
     for (const CLI::Option* o : namedOptions(c.app))
-      for (const auto& n : optionNames(o)) {
+      for (const auto& n : spelledNames(o)) {
         words.push_back(n);
         if (takesValue(o)) valued.push_back(n);
       }
@@ -232,13 +232,13 @@ std::string zshCompletion(const CLI::App& cli) {
     std::string out;
     for (const CLI::Option* o : namedOptions(&cli))
       if (o->get_name() != "--help")  // each command has its own
-        for (const auto& n : optionNames(o)) out += "    '" + n + "[" + zshText(o->get_description()) + "]' \\\n";
+        for (const auto& n : spelledNames(o)) out += "    '" + n + "[" + zshText(o->get_description()) + "]' \\\n";
     return out;
   };
   for (const CommandView& c : commands(cli)) {
     std::string specs;
     for (const CLI::Option* o : namedOptions(c.app)) {
-      for (const auto& n : optionNames(o)) {
+      for (const auto& n : spelledNames(o)) {
         std::string spec = "'" + n + "[" + zshText(o->get_description()) + "]";
         if (takesValue(o)) {
           const bool file = n == "-o" || n == "--output" || n == "--output-dir" || n == "--diff" || n == "--shader-dir";

@@ -44,14 +44,15 @@ std::vector<const CLI::Option*> positionals(const CLI::App* app) {
   return out;
 }
 
-std::vector<std::string> optionNames(const CLI::Option* o) {
+std::vector<std::string> spelledNames(const CLI::Option* o) {
   std::vector<std::string> names;
   for (const auto& s : o->get_snames()) names.push_back("-" + s);
   for (const auto& l : o->get_lnames()) names.push_back("--" + l);
   return names;
 }
 
-bool takesValue(const CLI::Option* o) { return o->get_type_size() != 0; }
+// A flag expects no value (CLI11 sets expected(0) for add_flag).
+bool takesValue(const CLI::Option* o) { return o->get_expected_max() != 0; }
 // A positional that names scenes: completed with bundled scene names and *.toml files.
 bool isScene(const CLI::Option* o) { return o->get_name() == "scene" || o->get_name() == "scenes"; }
 
@@ -103,7 +104,9 @@ std::string zshText(const std::string& text) {
 
 std::string manPage(const CLI::App& cli, const std::string& version) {
   std::string out = fmt::format(".TH ROLLSPIN 1 \"\" \"rollspin {}\" \"User Commands\"\n", version);
-  out += ".SH NAME\nrollspin \\- " + roff(cli.get_description()) + "\n";
+  std::string summary = cli.get_description();
+  if (summary.starts_with("rollspin: ")) summary = summary.substr(10);
+  out += ".SH NAME\nrollspin \\- " + roff(summary) + "\n";
   out += ".SH SYNOPSIS\n.B rollspin\n[\\fB\\-\\-verbose\\fR] \\fICOMMAND\\fR [\\fIARGS\\fR]\n";
   out += ".SH DESCRIPTION\nrollspin solves a ball rolling without slipping or spinning on a surface as a spin\\-1/2 "
          "in a magnetic field, with arc length as time, and renders stills, figures and clips of it off screen. "
@@ -111,14 +114,14 @@ std::string manPage(const CLI::App& cli, const std::string& version) {
          "\\fBrollspin keys\\fR lists every key a scene accepts).\n";
   out += ".SH GLOBAL OPTIONS\n";
   for (const CLI::Option* o : namedOptions(&cli))
-    out += ".TP\n.B " + roff(joined(optionNames(o), ", ")) + "\n" + roff(o->get_description()) + "\n";
+    out += ".TP\n.B " + roff(joined(spelledNames(o), ", ")) + "\n" + roff(o->get_description()) + "\n";
   out += ".SH COMMANDS\n";
   for (const CommandView& c : commands(cli)) {
     out += ".SS \"" + roff(usageOf(c)) + "\"\n" + roff(c.app->get_description()) + "\n";
     for (const CLI::Option* p : positionals(c.app))
       out += ".TP\n.I " + roff(p->get_name()) + "\n" + roff(p->get_description()) + "\n";
     for (const CLI::Option* o : namedOptions(c.app)) {
-      std::string names = roff(joined(optionNames(o), ", "));
+      std::string names = roff(joined(spelledNames(o), ", "));
       if (takesValue(o)) names += " \\fIVALUE\\fR";
       out += ".TP\n\\fB" + names + "\\fR\n" + roff(o->get_description()) + "\n";
     }
@@ -140,13 +143,13 @@ std::string bashCompletion(const CLI::App& cli) {
     if (!sub->get_group().empty()) top.push_back(sub->get_name());
   std::vector<std::string> global;
   for (const CLI::Option* o : namedOptions(&cli))
-    for (const auto& n : optionNames(o)) global.push_back(n);
+    for (const auto& n : spelledNames(o)) global.push_back(n);
 
   std::string cases;
   for (const CommandView& c : commands(cli)) {
     std::vector<std::string> words, valued, subs;
     for (const CLI::Option* o : namedOptions(c.app))
-      for (const auto& n : optionNames(o)) {
+      for (const auto& n : spelledNames(o)) {
         words.push_back(n);
         if (takesValue(o)) valued.push_back(n);
       }
@@ -228,17 +231,18 @@ std::string zshCompletion(const CLI::App& cli) {
   auto globalSpecs = [&] {
     std::string out;
     for (const CLI::Option* o : namedOptions(&cli))
-      for (const auto& n : optionNames(o)) out += "    '" + n + "[" + zshText(o->get_description()) + "]' \\\n";
+      if (o->get_name() != "--help")  // each command has its own
+        for (const auto& n : spelledNames(o)) out += "    '" + n + "[" + zshText(o->get_description()) + "]' \\\n";
     return out;
   };
   for (const CommandView& c : commands(cli)) {
     std::string specs;
     for (const CLI::Option* o : namedOptions(c.app)) {
-      for (const auto& n : optionNames(o)) {
+      for (const auto& n : spelledNames(o)) {
         std::string spec = "'" + n + "[" + zshText(o->get_description()) + "]";
         if (takesValue(o)) {
           const bool file = n == "-o" || n == "--output" || n == "--output-dir" || n == "--diff" || n == "--shader-dir";
-          spec += ":" + o->get_name() + ":" + (file ? "_files" : " ");
+          spec += std::string(":value:") + (file ? "_files" : " ");
         }
         specs += "    " + spec + "' \\\n";
       }

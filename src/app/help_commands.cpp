@@ -48,6 +48,8 @@ int runScenes(const HelpOptions& o) {
 
 void registerHelpCommands(CLI::App& cli, CommandHandler& handler) {
   auto options = std::make_shared<HelpOptions>();
+  cli.footer("SCENE: a TOML file, or a bundled scene's name (`rollspin scenes` lists them). Every scene key: "
+             "`rollspin keys [SECTION]`. More: `man rollspin`, `rollspin COMMAND --help`.");
 
   CLI::App* keys = cli.add_subcommand("keys", "List every scene key with its default, allowed values, units and meaning");
   keys->add_option("section", options->section, "Only this table (ball, surface, path, render, animation, …)");

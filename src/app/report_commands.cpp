@@ -88,7 +88,7 @@ void registerReportCommands(CLI::App& cli, CommandHandler& handler) {
   auto addOut = [&](CLI::App* c) { c->add_option("-o,--output-dir", args->outDir, "Output folder (default output/report)"); };
 
   CLI::App* errors = report->add_subcommand("errors", "Error against run time for every method (CSV, PNG, Markdown)");
-  errors->add_option("scenes", args->scenes, "Scene files (default: a built-in set: plane, sphere outside/inside, "
+  errors->add_option("scenes", args->scenes, "Scene files or bundled scenes' names (default: a built-in set: plane, sphere outside/inside, "
                                              "torus knot, clothoid, stiff lollipop)");
   errors->add_option("--set", args->overrides, "Override a key in every given scene: --set key.sub=value");
   addOut(errors);

@@ -20,7 +20,7 @@ namespace {
 // Defaults are read off a default SceneSpec, so that the reference shows
 // the values the engine starts from (scene_spec.hpp), never a copy of them.
 std::string num(double v) { return fmt::format("{}", v); }
-std::string vec(const Vec3& v) { return fmt::format("[{}, {}, {}]", v[0], v[1], v[2]); }
+std::string vectorText(const Vec3& v) { return fmt::format("[{}, {}, {}]", v[0], v[1], v[2]); }
 std::string inQuotes(std::string_view s) { return fmt::format("\"{}\"", s); }
 
 Bounds above(double lo) { return {lo, std::nullopt, true, false}; }
@@ -52,13 +52,13 @@ std::vector<KeyInfo> surfaceKeyInfos(const SurfaceSpec& d) {
                                 {"string", inQuotes(toString(d.kind)), {}, kindNames, "", "",
                                  "the surface the ball rolls on"})};
   const std::map<std::string, Row> rows{
-      {"normal", {"[x, y, z]", vec(d.normal), {}, {}, "non-zero; normalised", "", "the plane's unit normal, on the ball's side"}},
+      {"normal", {"[x, y, z]", vectorText(d.normal), {}, {}, "non-zero; normalised", "", "the plane's unit normal, on the ball's side"}},
       {"radius", {"number", num(d.radius), above(0), {}, "", "length", "sphere: its radius r; cylinder: its radius a"}},
       {"side",
        {"string", "\"outside\" (height fields: \"above\")", {}, {"outside", "inside", "above", "below"},
         "\"outside\" | \"inside\"; on paraboloid, saddle, height: \"above\" | \"below\"", "",
         "which side of the surface the ball rolls on"}},
-      {"axis", {"[x, y, z]", vec(d.axis), {}, {}, "non-zero; normalised", "", "the cylinder's axis, through the origin"}},
+      {"axis", {"[x, y, z]", vectorText(d.axis), {}, {}, "non-zero; normalised", "", "the cylinder's axis, through the origin"}},
       {"major_radius", {"number", num(d.majorRadius), above(0), {}, "> minor_radius", "length", "the torus's ring radius A (about the z axis)"}},
       {"minor_radius", {"number", num(d.minorRadius), above(0), {}, "", "length", "the torus's tube radius a"}},
       {"a", {"number", num(d.a), above(0), {}, "", "length", "z = (x²/a ± y²/b)/2: the curvature scale along x"}},

@@ -5,6 +5,7 @@
 // generated man page and completions.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -143,6 +144,9 @@ TEST(Help, ManPageAndCompletionsCoverEveryCommand) {
   const auto dir = freshTempDir("completion_syntax");
   std::ofstream(dir / "rollspin.bash") << bash.out;
   EXPECT_EQ(std::system(("bash -n " + (dir / "rollspin.bash").string()).c_str()), 0);
+  std::ofstream(dir / "_rollspin") << zsh.out;
+  if (std::system("command -v zsh > /dev/null") == 0)
+    EXPECT_EQ(std::system(("zsh -n " + (dir / "_rollspin").string()).c_str()), 0);
 }
 
 }  // namespace

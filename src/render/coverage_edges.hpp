@@ -1,5 +1,5 @@
 // Where a mesh drawn at one sample could differ from the same mesh drawn in
-// samples and resolved (render/renderer.cpp draws the static opaque meshes
+// samples and resolved (render/view_pass.cpp draws the static opaque meshes
 // at one sample and in samples only near these edges): the pixels a
 // triangle covers in part. That is near an edge of the mesh's screen
 // outline: an edge whose two triangles face opposite ways (a silhouette),

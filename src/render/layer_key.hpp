@@ -1,4 +1,4 @@
-// The retained layer's key (render/renderer.cpp): the static items and views
+// The retained layer's key (render/retained_layers.cpp): the static items and views
 // a layer was drawn from, and what a new frame's list changes against it —
 // whether the layer serves it as it is, which views must be drawn whole
 // (their camera moved), and which tiles an in-place update must

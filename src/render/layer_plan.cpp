@@ -4,18 +4,14 @@
 
 namespace rollspin::render {
 
-namespace {
-
-bool overlap(const View& a, const View& b) {
+bool viewsOverlap(const View& a, const View& b) {
   return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
 }
-
-}  // namespace
 
 bool viewsDisjoint(const DrawList& list) {
   for (std::size_t i = 0; i < list.views.size(); ++i)
     for (std::size_t j = i + 1; j < list.views.size(); ++j)
-      if (overlap(list.views[i], list.views[j])) return false;
+      if (viewsOverlap(list.views[i], list.views[j])) return false;
   return true;
 }
 

@@ -42,6 +42,9 @@ struct LayerPlan {
   [[nodiscard]] bool overLayer() const { return step != LayerStep::DrawWhole; }
 };
 
+// Whether two views' rectangles share a pixel.
+[[nodiscard]] bool viewsOverlap(const View& a, const View& b);
+
 // Whether no two views of `list` overlap (a layer needs that: an inset's
 // clear would come between the views' steps).
 [[nodiscard]] bool viewsDisjoint(const DrawList& list);

@@ -37,10 +37,10 @@ struct RenderStats {
   long long meshIndicesInRects = 0, meshIndicesDrawn = 0;
   long long lineSegmentsInRects = 0, lineSegmentsDrawn = 0;
   // Views drawn whole with multisampling: their pixels, and those drawn in
-  // samples (the tiles near a mesh's edges, see renderer.cpp's sampleTiles).
+  // samples (the tiles near a mesh's edges, see view_pass.cpp's sampleTiles).
   long long wholeViewPixels = 0, sampledPixels = 0;
   // Translucent ray-cast spheres over a layer (the Bloch sphere's glass):
-  // captured once, then replayed in each frame's rectangles (see renderer.cpp).
+  // captured once, then replayed in each frame's rectangles (see glass_capture.hpp).
   long long sphereCaptures = 0, sphereReplays = 0;
 };
 

@@ -1,4 +1,4 @@
-// Screen-space bounds for redrawing part of a frame (render/renderer.cpp's
+// Screen-space bounds for redrawing part of a frame (render/retained_layers.cpp's
 // retained layers): pixel rectangles, the pixels world points or a sphere
 // can reach in a view, and a tile mask as few rectangles. Plain data: no GL.
 // A sphere (centre c, radius r, depth d = −c_z in view space) projects

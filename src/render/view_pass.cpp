@@ -10,14 +10,6 @@
 
 namespace rollspin::render {
 
-namespace {
-
-bool overlap(const View& a, const View& b) {
-  return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
-}
-
-}  // namespace
-
 // Binds the scene (or `fbo`), the view's viewport and shadow map, scissored
 // to `clip` (image pixels, top-left origin; the view's own rectangle if
 // null); the scope of the draws that follow.
@@ -253,7 +245,7 @@ void Renderer::Impl::drawWhole(const DrawList& list, const std::vector<ViewItems
   for (std::size_t i = 0; i < list.views.size(); ++i) {
     const View& v = list.views[i];
     bool overlapsEarlier = false;
-    for (std::size_t j = 0; j < i; ++j) overlapsEarlier = overlapsEarlier || overlap(list.views[i], list.views[j]);
+    for (std::size_t j = 0; j < i; ++j) overlapsEarlier = overlapsEarlier || viewsOverlap(list.views[i], list.views[j]);
     // An inset over a view drawn before clears its own rectangle (a
     // scissored clear is a full-screen quad on llvmpipe: only an inset
     // pays for it).

@@ -86,6 +86,8 @@ TEST(LayerPlan, RetainOffOrOverlappingViewsAlwaysDrawWhole) {
   DrawList inset = twoViews();
   inset.views[1].x = 300;  // overlaps the first view
   EXPECT_FALSE(viewsDisjoint(inset));
+  EXPECT_TRUE(viewsOverlap(inset.views[0], inset.views[1]));
+  EXPECT_FALSE(viewsOverlap(list.views[0], list.views[1]));  // they only touch
   EXPECT_TRUE(viewsDisjoint(twoViews()));
   for (int k = 0; k < 3; ++k) EXPECT_EQ(step(memory, inset).step, LayerStep::DrawWhole);
 }

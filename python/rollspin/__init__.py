@@ -16,12 +16,11 @@ docs/python.md for the whole API.
 """
 from __future__ import annotations
 
-import base64
-import html
+# Imports are few and cheap here (numpy, pathlib, base64 come when first
+# used): a script that renders one still starts about as fast as the CLI.
 import math
 import os
 import sys
-from pathlib import Path
 from typing import TYPE_CHECKING, Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
 from . import _rollspin as _core
@@ -31,6 +30,8 @@ __all__ = ["load", "loads", "Scene", "Solution", "Timeline", "Image", "Clip", "S
            "RollspinError", "scene_dirs", "load_ipython_extension"]
 
 if TYPE_CHECKING:
+    from pathlib import Path
+
     import numpy as np
 
 PathLike = Union[str, "os.PathLike[str]"]
@@ -43,12 +44,13 @@ def _numpy() -> Any:
     return numpy
 
 
-def scene_dirs() -> List[Path]:
+def scene_dirs() -> "List[Path]":
     """Where a bare scene name (``load("lollipop")``) is looked for, in order.
 
     ``$ROLLSPIN_SCENE_DIR``, the source tree's ``scenes/`` (a build tree's
     package), then ``<prefix>/share/rollspin/scenes`` of the installed package.
     """
+    from pathlib import Path
     dirs = [Path(os.environ["ROLLSPIN_SCENE_DIR"])] if os.environ.get("ROLLSPIN_SCENE_DIR") else []
     # Installed: <prefix>/lib/python3.X/dist-packages/rollspin → <prefix>/share/rollspin/scenes.
     here = Path(__file__).resolve().parent
@@ -65,9 +67,9 @@ def _resolve_scene_path(path: PathLike) -> str:
     # A bare name of a bundled scene, as on the command line.
     if text and os.sep not in text and not text.endswith(".toml"):
         for folder in scene_dirs():
-            candidate = folder / (text + ".toml")
-            if candidate.is_file():
-                return str(candidate)
+            candidate = os.path.join(folder, text + ".toml")
+            if os.path.isfile(candidate):
+                return candidate
     return text  # the loader says it cannot be read, naming it
 
 
@@ -289,6 +291,7 @@ class Scene:
         finally:
             if bar is not None:
                 bar.close()
+        from pathlib import Path
         clip = Clip(Path(written) if written else None, done, requested, signal_number != 0)
         if signal_number != 0:
             raise KeyboardInterrupt(
@@ -443,6 +446,7 @@ class Image:
 
     def save(self, path: PathLike) -> Path:
         """Writes the still: PNG, JPEG, … by extension or render.format; PDF and SVG as a vector figure."""
+        from pathlib import Path
         return Path(self._core.save(os.fspath(path)))
 
     def _repr_png_(self) -> bytes:
@@ -465,6 +469,8 @@ class Clip:
         self.interrupted = interrupted
 
     def _repr_html_(self) -> str:
+        import base64
+        import html
         if self.path is None:
             return "<p>rollspin: nothing was written</p>"
         if self.path.is_dir():

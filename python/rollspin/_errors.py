@@ -7,13 +7,12 @@ RenderError, a RuntimeError. str(error) is the message the CLI prints after
 """
 from __future__ import annotations
 
-import re
 from typing import Optional
 
 __all__ = ["RollspinError", "SceneError", "RenderError"]
 
 # "render.width: expected ..." or "segment[2].path.radius: ..." — the key a message is about.
-_KEY_AT_START = re.compile(r"^([A-Za-z_][\w-]*(?:\[\d+\])?(?:\.[A-Za-z_][\w-]*(?:\[\d+\])?)*):\s")
+_KEY_AT_START = r"^([A-Za-z_][\w-]*(?:\[\d+\])?(?:\.[A-Za-z_][\w-]*(?:\[\d+\])?)*):\s"
 
 
 class RollspinError(Exception):
@@ -38,7 +37,8 @@ class RenderError(RollspinError, RuntimeError):
 
 
 def _key_of(message: str, file: str) -> Optional[str]:
-    found = _KEY_AT_START.match(message)
+    import re  # only when an error is raised
+    found = re.match(_KEY_AT_START, message)
     if found:
         return found.group(1)
     if file.startswith("--set "):

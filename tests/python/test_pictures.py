@@ -40,7 +40,7 @@ def test_render_keys_and_save_formats(lollipop, tmp_path):
 def test_render_clip_and_html(lollipop, tmp_path):
     short = lollipop.set("animation.duration", 0.5).set("animation.fps", 8)
     clip = short.render(tmp_path / "clip.mp4", width=64, height=36)
-    assert clip.path.is_file() and 0 < clip.frames_written == clip.frames_requested <= 5
+    assert clip.path.is_file() and 0 < clip.frames_written == clip.frames_requested
     assert '<video' in clip._repr_html_() and "base64," in clip._repr_html_()
     gif = short.render(tmp_path / "clip.gif", width=64, height=36)
     assert gif.path.read_bytes().startswith(b"GIF8") and "<img" in gif._repr_html_()

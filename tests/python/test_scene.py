@@ -30,9 +30,9 @@ def test_set_is_the_cli_set():
 def test_set_indexes_segments():
     path = SCENES / "storyboard.toml"
     scene = rollspin.load(path)
-    changed = scene.set("segment[2].hold", 0.75)
-    assert "hold = 0.75" in changed.toml()
-    assert changed.toml() == run_cli("scene", path, "--print", "--set", "segment[2].hold=0.75")
+    changed = scene.set("segment[2].path.radius", 2.5)
+    assert changed.length == pytest.approx(scene.length - 2 * 3.141592653589793 * 0.5)
+    assert changed.toml() == run_cli("scene", path, "--print", "--set", "segment[2].path.radius=2.5")
 
 
 def test_set_returns_a_new_scene(lollipop):

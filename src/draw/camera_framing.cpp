@@ -115,8 +115,9 @@ OrbitAngles orbitAngles(const scene::SceneSpec& spec, const model::RollingModel&
   OrbitAngles a{spec.render.azimuthDeg * kDeg, spec.render.elevationDeg * kDeg};
   const bool azimuthGiven = spec.locations.contains("render.azimuth_deg");
   const bool elevationGiven = spec.locations.contains("render.elevation_deg");
-  if (const auto* plane = dynamic_cast<const geometry::Plane*>(model.surface.get())) {
-    const Vec3 n = plane->normal();
+  const geometry::SurfaceLook look = model.surface ? model.surface->look() : geometry::SurfaceLook{};
+  if (look.orientedByUp) {
+    const Vec3 n = look.up;
     if (std::abs(n.z()) < 0.5) {
       // A wall: look at it from its side, a little from above.
       if (!azimuthGiven) a.azimuth = std::atan2(n.y(), n.x()) - 25.0 * kDeg;
@@ -175,8 +176,7 @@ double visiblePathShare(const model::RollingModel& model, const SightLines& surf
 // with the ball's longitude. An inside sphere is cut open towards the eye
 // (BallView), so its view already sees in.
 OrbitAngles CameraFraming::unhiddenAngles(OrbitAngles base) {
-  const auto* sphere = dynamic_cast<const geometry::Sphere*>(model_.surface.get());
-  const bool cutOpen = sphere && sphere->side() == geometry::Side::Inside;
+  const bool cutOpen = model_.surface && model_.surface->look().cutAwayTowardEye;
   const bool azimuthFree = !spec_.locations.contains("render.azimuth_deg");
   const bool elevationFree = !spec_.locations.contains("render.elevation_deg");
   if (!extent_.surface || cutOpen || spec_.render.follow || (spec_.render.target && spec_.render.distance) ||
@@ -339,8 +339,9 @@ render::View CameraFraming::ballCamera(int x, int y, int w, int h, double s, con
         offAxisProjection(window_, aim.fovDeg, double(w) / double(std::max(h, 1)), nearPlane, farPlane);
   }
   glm::vec3 up(0, 0, 1);
-  if (const auto* plane = dynamic_cast<const geometry::Plane*>(model_.surface.get())) {
-    up = toGlm(plane->normal());
+  if (const geometry::SurfaceLook look = model_.surface ? model_.surface->look() : geometry::SurfaceLook{};
+      look.orientedByUp) {
+    up = toGlm(look.up);
     // A wall: light from the ceiling as well as from in front, so that the
     // ball's shadow falls below it on the wall, where it reads as a shadow,
     // not straight behind it as a dark rim around the ball.

@@ -5,7 +5,8 @@
 #   bash scripts/build.sh rollspin   # only these targets (the quick start)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+source scripts/compiler_cache.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${cache_flags[@]}"
 if [ $# -gt 0 ]; then
   cmake --build build -j2 --target "$@"
 else

@@ -3,12 +3,13 @@
 # into build-asan/ and runs the full test suite under it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/compiler_cache.sh
 # src/ optimised as a release is (-O2: the suite's numerics stay fast; the
 # test programs at -O1, see tests/CMakeLists.txt), with the asserts on: this
 # pass is where the broken-invariant checks run, as a release build compiles
 # them out (NDEBUG).
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2" \
-  -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2" -DROLLSPIN_SANITIZE=ON -DROLLSPIN_BUILD_BENCHMARKS=OFF >/dev/null
+  -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2" -DROLLSPIN_SANITIZE=ON -DROLLSPIN_BUILD_BENCHMARKS=OFF "${cache_flags[@]}" >/dev/null
 cmake --build build-asan -j2
 # Mesa's llvmpipe keeps some allocations for the life of the process (its
 # LLVM JIT and screen caches): suppress leaks from inside the GL stack only.

@@ -63,10 +63,13 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
   surfaceMaterial_.pattern = render::Pattern::Checker;
   surfaceMaterial_.cull = render::Cull::None;
 
-  if (const auto* plane = dynamic_cast<const geometry::Plane*>(model.surface.get())) {
+  // Each surface says how it is shown (geometry::SurfaceLook): a board, a
+  // whole sphere, or its own chart.
+  const geometry::SurfaceLook look = model.surface ? model.surface->look() : geometry::SurfaceLook{};
+  if (model.surface && look.mesh == geometry::SurfaceLook::Mesh::Board) {
     // A square board under the path; checker cells of size R so that the
     // distance rolled can be counted.
-    const Vec3 n = plane->normal();
+    const Vec3 n = look.up;
     const Vec3 mid = 0.5 * (lo + hi);
     const Vec3 centre = mid - n * n.dot(mid);
     const double half = 0.5 * (hi - lo).norm() + 3.0 * R;
@@ -84,10 +87,10 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
     surfaceMaterial_.color = {0.80f, 0.78f, 0.74f};
     surfaceMaterial_.color2 = {0.55f, 0.56f, 0.58f};
     surfaceMaterial_.patternScale = glm::vec2(1.0f);
-  } else if (const auto* sphere = dynamic_cast<const geometry::Sphere*>(model.surface.get())) {
-    const double r = sphere->radius();
+  } else if (model.surface && look.mesh == geometry::SurfaceLook::Mesh::Sphere) {
+    const double r = look.radius;
     const double c0 = 0.0, c1 = std::numbers::pi;
-    if (sphere->side() == geometry::Side::Inside) {
+    if (look.cutAwayTowardEye) {
       // Cut away the cap that faces the camera, so the ball inside is seen
       // wherever it rolls; a rim line marks the cut.
       const Vec3 toEye = towardEye(orbitAngles(spec, model));
@@ -113,7 +116,7 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
     surfaceMaterial_.color2 = {0.52f, 0.56f, 0.62f};
     // Inside, the whole sphere frames the picture; outside, the ball and its
     // path do (a small circle on a big sphere would otherwise be lost).
-    for (int i = 0; i <= 8 && sphere->side() == geometry::Side::Inside; ++i)
+    for (int i = 0; i <= 8 && look.cutAwayTowardEye; ++i)
       for (int k = 0; k < 16; ++k) {
         const double th = c0 + (c1 - c0) * i / 8, phi = 2.0 * std::numbers::pi * k / 16;
         extent_.points.push_back(r * Vec3(std::sin(th) * std::cos(phi), std::sin(th) * std::sin(phi), std::cos(th)));
@@ -228,7 +231,7 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
   // A curved surface can stand between the eye and the ball: the camera
   // tests sight lines against it as drawn (a plane's board lies under the
   // ball and hides nothing).
-  if (surfaceMesh_ && dynamic_cast<const geometry::Plane*>(model.surface.get()) == nullptr) {
+  if (surfaceMesh_ && look.canHideBall) {
     const glm::vec4 cut = surfaceMaterial_.cutPlane;
     extent_.surface = std::make_shared<SightLines>(*surfaceMesh_, Eigen::Vector4d(cut.x, cut.y, cut.z, cut.w));
   }

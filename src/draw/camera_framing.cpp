@@ -138,9 +138,9 @@ OrbitAngles orbitAngles(const scene::SceneSpec &spec,
   OrbitAngles a{spec.render.azimuthDeg * kDeg, spec.render.elevationDeg * kDeg};
   const bool azimuthGiven = spec.locations.contains("render.azimuth_deg");
   const bool elevationGiven = spec.locations.contains("render.elevation_deg");
-  if (const auto *plane =
-          dynamic_cast<const geometry::Plane *>(model.surface.get())) {
-    const Vec3 n = plane->normal();
+  const geometry::SurfaceLook look = model.surface ? model.surface->look() : geometry::SurfaceLook{};
+  if (look.orientedByUp) {
+    const Vec3 n = look.up;
     if (std::abs(n.z()) < 0.5) {
       // A wall: look at it from its side, a little from above.
       if (!azimuthGiven)
@@ -217,9 +217,8 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(
     OrbitAngles base, double s0, double s1, bool azimuthFree,
     bool elevationFree, bool mayOrbit, double maxTurnDeg, bool mayLower) const {
   Unhidden out{base, false, 0.0};
-  const auto *sphere =
-      dynamic_cast<const geometry::Sphere *>(model_.surface.get());
-  const bool cutOpen = sphere && sphere->side() == geometry::Side::Inside;
+  const bool cutOpen =
+      model_.surface && model_.surface->look().cutAwayTowardEye;
   if (!extent_.surface || cutOpen || !(azimuthFree || elevationFree))
     return out;
   const double aspect = double(spec_.render.width) /
@@ -562,9 +561,7 @@ std::vector<std::string> CameraFraming::hiddenWarnings() const {
 void CameraFraming::findHiddenSpans() {
   if (!extent_.surface)
     return;
-  const auto *sphere =
-      dynamic_cast<const geometry::Sphere *>(model_.surface.get());
-  if (sphere && sphere->side() == geometry::Side::Inside)
+  if (model_.surface && model_.surface->look().cutAwayTowardEye)
     return; // cut open towards the eye
   const motion::FrameClock clock = motion::clipClock(spec_, model_);
   const long long frames = clock.frameCount();
@@ -676,9 +673,9 @@ render::View CameraFraming::ballCamera(int x, int y, int w, int h, double s,
         farPlane);
   }
   glm::vec3 up(0, 0, 1);
-  if (const auto *plane =
-          dynamic_cast<const geometry::Plane *>(model_.surface.get())) {
-    up = toGlm(plane->normal());
+  if (const geometry::SurfaceLook look = model_.surface ? model_.surface->look() : geometry::SurfaceLook{};
+      look.orientedByUp) {
+    up = toGlm(look.up);
     // A wall: light from the ceiling as well as from in front, so that the
     // ball's shadow falls below it on the wall, where it reads as a shadow,
     // not straight behind it as a dark rim around the ball.

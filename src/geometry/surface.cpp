@@ -60,6 +60,10 @@ std::string Plane::parameterNames() const { return "(u, v): coordinates along e1
 
 Vec3 Plane::normalAt(const Vec3& /*point*/) const { return normal_; }
 
+SurfaceLook Plane::look() const {
+  return {.mesh = SurfaceLook::Mesh::Board, .up = normal_, .orientedByUp = true, .canHideBall = false};
+}
+
 double Plane::distance(const Vec3& point) const { return normal_.dot(point); }
 
 std::string Plane::describe() const {
@@ -106,6 +110,15 @@ double Sphere::distance(const Vec3& point) const { return point.norm() - radius_
 std::string Sphere::describe() const {
   return std::string("sphere of radius ") + std::to_string(radius_) +
          (side_ == Side::Outside ? " (outside)" : " (inside)");
+}
+
+Vec3 Sphere::defaultStart() const {
+  constexpr double kSixtyDegrees = 60.0 * (std::numbers::pi / 180.0);
+  return Vec3(radius_ * Vec3(std::sin(kSixtyDegrees), 0.0, std::cos(kSixtyDegrees)));
+}
+
+SurfaceLook Sphere::look() const {
+  return {.mesh = SurfaceLook::Mesh::Sphere, .radius = radius_, .cutAwayTowardEye = side_ == Side::Inside};
 }
 
 }  // namespace rollspin::geometry

@@ -50,6 +50,24 @@ struct SurfaceShape {
   double maxCurvature = 0.0, minCurvature = 0.0;  // k1 ≥ k2; k > 0 curves towards the ball
 };
 
+// How a picture shows the surface, for draw/ (no GL here): which mesh it
+// gets, what is "up" for the camera and the light, and whether a cap facing
+// the eye is cut away. Every surface answers (Surface::look); draw/ never
+// asks which class it is.
+struct SurfaceLook {
+  enum class Mesh {
+    Chart,   // x(u, v) over the parameter box the path visits, padded by ~3R
+    Board,   // a flat square board under the path (a plane)
+    Sphere,  // the whole sphere of radius `radius` about the origin
+  };
+  Mesh mesh = Mesh::Chart;
+  Vec3 up = Vec3::UnitZ();      // Board: the plane's normal (walls and ceilings are framed and lit by it)
+  bool orientedByUp = false;    // the camera's default angles and the key light follow `up`
+  double radius = 0.0;          // Sphere: r
+  bool cutAwayTowardEye = false;  // the ball rolls inside: the cap facing the eye is cut away, the whole surface framed
+  bool canHideBall = true;      // the surface can stand between the eye and the ball (a board under it cannot)
+};
+
 class Surface {
  public:
   virtual ~Surface() = default;
@@ -75,6 +93,11 @@ class Surface {
   [[nodiscard]] virtual std::optional<Vec2> parametersOf(const Vec3& point) const = 0;
   // What u and v are, for messages and documentation.
   [[nodiscard]] virtual std::string parameterNames() const = 0;
+  // Where a geodesic starts when the scene names no point: x(0, 0) unless the
+  // chart degenerates there.
+  [[nodiscard]] virtual Vec3 defaultStart() const { return position(Vec2(0.0, 0.0)); }
+  // How a picture shows it (mesh, up, cut-away).
+  [[nodiscard]] virtual SurfaceLook look() const { return {}; }
 };
 
 // Fundamental forms, H, K and principal curvatures at (u, v).
@@ -96,6 +119,7 @@ class Plane final : public Surface {
   [[nodiscard]] std::string parameterNames() const override;
   [[nodiscard]] const Vec3& axisU() const { return e1_; }
   [[nodiscard]] const Vec3& axisV() const { return e2_; }
+  [[nodiscard]] SurfaceLook look() const override;
 
  private:
   Vec3 normal_, e1_, e2_;
@@ -121,6 +145,9 @@ class Sphere final : public Surface {
   [[nodiscard]] ParameterDomain domain() const override;
   [[nodiscard]] std::optional<Vec2> parametersOf(const Vec3& point) const override;
   [[nodiscard]] std::string parameterNames() const override;
+  // r (sin 60°, 0, cos 60°): the pole (θ = 0) has no chart.
+  [[nodiscard]] Vec3 defaultStart() const override;
+  [[nodiscard]] SurfaceLook look() const override;
 
  private:
   double radius_;

@@ -50,6 +50,8 @@ class Torus final : public Surface {
   [[nodiscard]] std::optional<Vec2> parametersOf(const Vec3& point) const override;
   [[nodiscard]] std::string parameterNames() const override;
   [[nodiscard]] ParameterDomain domain() const override;
+  // (A + a, 0, 0), the outer equator at φ = 0.
+  [[nodiscard]] Vec3 defaultStart() const override { return Vec3(major_ + minor_, 0.0, 0.0); }
   [[nodiscard]] double majorRadius() const { return major_; }
   [[nodiscard]] double minorRadius() const { return minor_; }
 

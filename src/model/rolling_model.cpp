@@ -7,9 +7,8 @@
 
 #include "model/surface_kinds.hpp"
 #include "model/surface_model.hpp"
-#include "geometry/analytic_paths.hpp"
-#include "geometry/clothoid_path.hpp"
 #include "geometry/joined_path.hpp"
+#include "geometry/surface_kinds.hpp"
 #include "spin/field.hpp"
 
 namespace rollspin::model {
@@ -30,20 +29,29 @@ RollingModel buildPathModel(const scene::SceneSpec& spec, const Placement& place
   model.ballRadius = spec.ball.radius;
   const double R = model.ballRadius;
 
+  // The closed-form paths are laid by the surface kind's own row.
+  model.surface = buildSurface(spec);
+  const geometry::SurfaceKindRow& kindRow = *scene::surfaceKindRow(spec.surface.kind).geometry;
+  auto closedForm = [&](geometry::ClosedFormCurve curve, const geometry::ClosedFormRequest& request) {
+    return kindRow.closedForm(model.surface, curve, request);
+  };
+  geometry::ClosedFormRequest c;
+  c.turns = spec.path.turns;
+  c.counterClockwise = spec.path.counterClockwise;
+  c.length = spec.path.length;
   if (spec.surface.kind == scene::SurfaceKind::Plane) {
-    // The analytic paths need the concrete surface: the kind says which it is.
-    auto plane = std::static_pointer_cast<const geometry::Plane>(buildSurface(spec));
-    model.surface = plane;
+    const geometry::Vec3 n = model.surface->normalAt(geometry::Vec3::Zero());  // the plane's normal
     const geometry::Vec3 e1 = place.heading                ? *place.heading
                               : spec.path.directionVector ? toVec(*spec.path.directionVector)
-                                                          : geometry::defaultTangentFor(plane->normal());
+                                                          : geometry::defaultTangentFor(n);
+    c.start = place.start;
+    c.direction = e1;
     switch (spec.path.kind) {
-      case scene::PathKind::Line:
-        model.path = std::make_unique<geometry::PlaneLinePath>(plane, place.start, e1, spec.path.length);
-        break;
+      case scene::PathKind::Line: model.path = closedForm(geometry::ClosedFormCurve::Line, c); break;
       case scene::PathKind::Clothoid:
-        model.path = std::make_unique<geometry::PlaneClothoidPath>(plane, place.start, e1, spec.path.curvatureStart,
-                                                                   spec.path.curvatureRate, spec.path.length);
+        c.curvatureStart = spec.path.curvatureStart;
+        c.curvatureRate = spec.path.curvatureRate;
+        model.path = closedForm(geometry::ClosedFormCurve::Clothoid, c);
         break;
       case scene::PathKind::Circle: {
         double radius = spec.path.radius;
@@ -53,7 +61,7 @@ RollingModel buildPathModel(const scene::SceneSpec& spec, const Placement& place
           // point's velocity relative to the contact point's; on a plane the
           // ratio is 2, so the contact circle has radius R1 / ratio.
           geometry::DarbouxSample probe;  // any contact frame on this plane
-          probe.normal = plane->normal();
+          probe.normal = n;
           probe.tangent = e1;
           probe.tangentNormal = probe.normal.cross(probe.tangent);
           PlateModel plate;
@@ -62,28 +70,28 @@ RollingModel buildPathModel(const scene::SceneSpec& spec, const Placement& place
           radius = plate.radius / plate.contactSpeedRatio;
           model.plate = plate;
         }
+        c.radius = radius;
         if (place.heading) {
           // Start at the given point moving along the heading h: the circle
           // starts at centre + r e1 moving along σ n × e1, so e1 = σ h × n.
           const double sense = spec.path.counterClockwise ? 1.0 : -1.0;
-          const geometry::Vec3 radial = sense * place.heading->cross(plane->normal());
-          model.path = std::make_unique<geometry::PlaneCirclePath>(plane, place.start - radius * radial, radial,
-                                                                   radius, spec.path.turns, spec.path.counterClockwise);
+          const geometry::Vec3 radial = sense * place.heading->cross(n);
+          c.start = place.start - radius * radial;
+          c.direction = radial;
+          model.path = closedForm(geometry::ClosedFormCurve::Circle, c);
           break;
         }
-        model.path = std::make_unique<geometry::PlaneCirclePath>(plane, geometry::Vec3::Zero(), e1, radius,
-                                                                 spec.path.turns, spec.path.counterClockwise);
-        if (model.plate) model.plate->initialTopPoint = model.path->point(0.0) + 2.0 * R * plane->normal();
+        c.start = geometry::Vec3::Zero();
+        model.path = closedForm(geometry::ClosedFormCurve::Circle, c);
+        if (model.plate) model.plate->initialTopPoint = model.path->point(0.0) + 2.0 * R * n;
         break;
       }
       default: break;  // not on a plane: isAnalyticScene sent it to buildSurfaceModel
     }
   } else {
-    auto sphere = std::static_pointer_cast<const geometry::Sphere>(buildSurface(spec));
-    model.surface = sphere;
-    model.path = std::make_unique<geometry::SphereParallelPath>(
-        sphere, spec.path.colatitudeDeg * std::numbers::pi / 180.0, spec.path.turns, spec.path.counterClockwise,
-        spec.path.startAzimuthDeg * std::numbers::pi / 180.0);
+    c.colatitude = spec.path.colatitudeDeg * std::numbers::pi / 180.0;
+    c.startAzimuth = spec.path.startAzimuthDeg * std::numbers::pi / 180.0;
+    model.path = closedForm(geometry::ClosedFormCurve::Parallel, c);
   }
   return model;
 }

@@ -1,8 +1,7 @@
-// Surface factories: one row per scene::SurfaceKind (the scene's table in
-// scene/surface_kinds.hpp holds the names and keys), each building the
-// geometry::Surface from [surface] and naming where a geodesic starts when the
-// scene gives no start point. A new kind: its geometry class, its row in the
-// scene's table and its row here.
+// [surface] → its geometry::Surface, through the kind's row of geometry's
+// table (geometry/surface_kinds.hpp), whose factory reads the kind's own keys;
+// nothing here names a kind. Also the scene's expressions, compiled with their
+// parse errors at the scene's file:line:col.
 #pragma once
 
 #include <memory>
@@ -23,9 +22,6 @@ namespace rollspin::model {
 
 // [surface] → its geometry; throws BadInput (surface.z that does not parse).
 [[nodiscard]] std::shared_ptr<const geometry::Surface> buildSurface(const scene::SceneSpec& spec);
-
-// A point on the surface to start a geodesic from when the scene gives none.
-[[nodiscard]] geometry::Vec3 defaultGeodesicStart(const scene::SceneSpec& spec, const geometry::Surface& surface);
 
 // Parses an expression of `variables`; a parse error is BadInput at `key`,
 // pointing into the TOML string itself (column of the opening quote + 1 +

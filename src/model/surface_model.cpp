@@ -2,6 +2,7 @@
 
 #include <numbers>
 
+#include "geometry/surface_kinds.hpp"
 #include "geometry/surface_paths.hpp"
 #include "model/surface_kinds.hpp"
 
@@ -23,44 +24,42 @@ Vec2 parametersOf(const scene::SceneSpec& spec, const geometry::Surface& surface
 std::unique_ptr<geometry::SurfaceCurvePath> buildPath(const scene::SceneSpec& spec,
                                                       const std::shared_ptr<const geometry::Surface>& surface) {
   using scene::PathKind;
-  using scene::SurfaceKind;
   const scene::PathSpec& p = spec.path;
-  const SurfaceKind sk = spec.surface.kind;
-  auto sphere = std::dynamic_pointer_cast<const geometry::Sphere>(surface);
-  auto cylinder = std::dynamic_pointer_cast<const geometry::Cylinder>(surface);
-  auto torus = std::dynamic_pointer_cast<const geometry::Torus>(surface);
-  auto field = std::dynamic_pointer_cast<const geometry::HeightField>(surface);
+  const scene::SurfaceKind sk = spec.surface.kind;
+  // The named curves (parallel, meridian, helix, loxodrome) are laid by the
+  // surface kind's own row; nullptr where the kind has no such curve.
+  auto named = [&](geometry::CurveFamily family) {
+    geometry::CurveRequest c;
+    c.turns = p.turns;
+    c.counterClockwise = p.counterClockwise;
+    c.height = p.height;
+    c.tubeAngle = radians(p.tubeAngleDeg);
+    c.radius = p.radius;
+    c.azimuth = radians(p.azimuthDeg);
+    c.colatitudeStart = radians(p.colatitudeStartDeg);
+    c.colatitudeEnd = radians(p.colatitudeEndDeg);
+    c.length = p.length;
+    c.pitchAngle = radians(p.pitchAngleDeg);
+    c.heading = radians(p.headingDeg);
+    c.startAzimuth = radians(p.startAzimuthDeg);
+    const geometry::SurfaceKindRow& row = *scene::surfaceKindRow(sk).geometry;
+    return row.curve ? row.curve(surface, family, c) : nullptr;
+  };
   switch (p.kind) {
     case PathKind::Parallel:
-      if (cylinder)
-        return geometry::cylinderParallel(cylinder, p.height, p.turns, p.counterClockwise, radians(p.startAzimuthDeg));
-      if (torus)
-        return geometry::torusParallel(torus, radians(p.tubeAngleDeg), p.turns, p.counterClockwise,
-                                       radians(p.startAzimuthDeg));
-      if (field)
-        return geometry::heightFieldParallel(field, p.radius, p.turns, p.counterClockwise, radians(p.startAzimuthDeg));
+      if (auto path = named(geometry::CurveFamily::Parallel)) return path;
       break;
     case PathKind::Meridian:
-      if (sphere)
-        return geometry::sphereMeridian(sphere, radians(p.azimuthDeg), radians(p.colatitudeStartDeg),
-                                        radians(p.colatitudeEndDeg));
-      if (torus)
-        return geometry::torusMeridian(torus, radians(p.azimuthDeg), radians(p.tubeAngleDeg), p.turns,
-                                       p.counterClockwise);
-      if (cylinder) return geometry::cylinderMeridian(cylinder, radians(p.azimuthDeg), p.height, p.length);
-      if (field) return geometry::heightFieldMeridian(field, radians(p.azimuthDeg), p.length);
+      if (auto path = named(geometry::CurveFamily::Meridian)) return path;
       break;
     case PathKind::Helix:
-      if (cylinder)
-        return geometry::cylinderHelix(cylinder, radians(p.pitchAngleDeg), p.height, p.turns, p.counterClockwise);
+      if (auto path = named(geometry::CurveFamily::Helix)) return path;
       break;
     case PathKind::Loxodrome:
-      if (sphere)
-        return geometry::sphereLoxodrome(sphere, radians(p.headingDeg), radians(p.azimuthDeg),
-                                         radians(p.colatitudeStartDeg), radians(p.colatitudeEndDeg));
+      if (auto path = named(geometry::CurveFamily::Loxodrome)) return path;
       break;
     case PathKind::Geodesic: {
-      const Vec3 start = p.startPoint ? toVec(*p.startPoint) : defaultGeodesicStart(spec, *surface);
+      const Vec3 start = p.startPoint ? toVec(*p.startPoint) : surface->defaultStart();
       const Vec2 uv = parametersOf(spec, *surface, start, "path.start_point");
       Vec3 direction = p.directionVector ? toVec(*p.directionVector) : Vec3(0.0, 1.0, 0.0);
       const Vec3 n = surface->normal(uv);

@@ -129,7 +129,7 @@ SceneFacts::SceneFacts(const scene::SceneSpec& spec, const RollingModel& model, 
     DeltaFact d;
     d.measured = rollingSum_.back().norm();
     d.onSphere = onSphere;
-    d.closedForm = turnsOfPath * (onSphere ? closed_form::sphereParallelDelta(spec.surface.radius,
+    d.closedForm = turnsOfPath * (onSphere ? closed_form::sphereParallelDelta(spec.surface.number("radius"),
                                                                               spec.path.colatitudeDeg * kPi / 180.0, R)
                                            : closed_form::planeCircleDelta(planeCircleRadius(model), R));
     d.labAngle = spin::rotationAngleAxis(gridU_.back()).angle;
@@ -139,8 +139,11 @@ SceneFacts::SceneFacts(const scene::SceneSpec& spec, const RollingModel& model, 
   }
   if (shows(Fact::Turns)) {
     turns = TurnsFact{labSum_.back().dot(revolutionAxis_), frameSum_.back().dot(revolutionAxis_)};
-    turns->paperPenny = spec.surface.side == scene::SurfaceSide::Inside &&
-                        std::abs(spec.surface.radius - 3.0 * R) <= 1e-9 * R && std::abs(turnsOfPath - 1.0) < 1e-12;
+    // The paper's penny: one turn inside a sphere of radius 3R.
+    const scene::SurfaceSpec& surface = spec.surface;
+    turns->paperPenny = surface.params.has("side") && surface.params.text("side") == "inside" &&
+                        surface.params.has("radius") && std::abs(surface.number("radius") - 3.0 * R) <= 1e-9 * R &&
+                        std::abs(turnsOfPath - 1.0) < 1e-12;
   }
   if (shows(Fact::Marks)) {
     MarksFact m;

@@ -100,7 +100,7 @@ std::vector<Fact> resolveFacts(const SceneSpec& spec) {
   if (planeCircle(spec)) return {Fact::Delta};
   if (sphereParallel(spec)) {
     if (onEquator(spec)) return {Fact::Turns};
-    if (spec.ball.radius <= 0.1 * spec.surface.radius && wholeTurns(spec.path.turns)) return {Fact::PhaseSplit};
+    if (spec.ball.radius <= 0.1 * spec.surface.number("radius") && wholeTurns(spec.path.turns)) return {Fact::PhaseSplit};
     return {Fact::Delta};
   }
   return {};

@@ -25,19 +25,12 @@ struct BallSpec {
   std::optional<Vec3> marker;  // body point whose direction is the tracked Bloch vector; default: the top n(0)
 };
 
-// Height fields (paraboloid, saddle, height) say "above" / "below": stored as Outside / Inside.
-enum class SurfaceSide { Outside, Inside };
-
+// [surface]: its kind and the kind's own keys, read and printed from the
+// kind's declarations (geometry/surface_kinds.hpp), never named here.
 struct SurfaceSpec {
   SurfaceKind kind = SurfaceKind::Plane;
-  Vec3 normal{0.0, 0.0, 1.0};  // plane: unit normal on the ball's side (normalised on load)
-  double radius = 3.0;          // sphere: r; cylinder: a
-  SurfaceSide side = SurfaceSide::Outside;
-  Vec3 axis{0.0, 0.0, 1.0};     // cylinder: axis through the origin (normalised on load)
-  double majorRadius = 3.0;     // torus: A (about the z axis)
-  double minorRadius = 1.0;     // torus: tube radius a
-  double a = 4.0, b = 4.0;      // paraboloid / saddle: z = (x²/a ± y²/b)/2
-  std::string z = "0";          // height: z = f(x, y), a muparser expression
+  ParamSet params = ParamSet(surfaceKeyDecls(SurfaceKind::Plane));  // every key of the kind: given or default
+  [[nodiscard]] double number(const std::string& key) const { return params.number(key); }
 };
 
 struct PathSpec {

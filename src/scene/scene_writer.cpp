@@ -161,21 +161,15 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
 
   w.section("surface");
   w.key("kind", quoted(toString(sk)));
-  const bool heightField = surfaceKindRow(sk).heightField;
-  for (const auto& key : allSurfaceKeys()) {
-    if (!surfaceKeyRule(key, sk).applies) continue;
-    const SurfaceSpec& s = spec.surface;
-    if (key == "normal") w.key(key, vec(s.normal));
-    else if (key == "radius") w.key(key, number(s.radius));
-    else if (key == "side") {
-      const bool outside = s.side == SurfaceSide::Outside;
-      w.key(key, quoted(heightField ? (outside ? "above" : "below") : (outside ? "outside" : "inside")));
-    } else if (key == "axis") w.key(key, vec(s.axis));
-    else if (key == "major_radius") w.key(key, number(s.majorRadius));
-    else if (key == "minor_radius") w.key(key, number(s.minorRadius));
-    else if (key == "a") w.key(key, number(s.a));
-    else if (key == "b") w.key(key, number(s.b));
-    else if (key == "z") w.key(key, quoted(s.z));
+  // The kind's own keys in its declaration order, each printed by its type.
+  for (const ParamDecl& decl : surfaceKeyDecls(sk)) {
+    const ParamValue& value = spec.surface.params.at(decl.key);
+    switch (decl.type) {
+      case ParamType::Number: w.key(decl.key, number(std::get<double>(value))); break;
+      case ParamType::Direction: w.key(decl.key, vec(std::get<std::array<double, 3>>(value))); break;
+      case ParamType::Choice:
+      case ParamType::Expression: w.key(decl.key, quoted(std::get<std::string>(value))); break;
+    }
   }
 
   if (spec.plate) {

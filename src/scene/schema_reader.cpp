@@ -276,13 +276,14 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
     const double len = norm3(*dv);
     if (len < 1e-12) failAt(prefix + ".direction_vector", "expected a non-zero vector, got [0, 0, 0]");
     const Vec3 d = unitVector(*dv, len);
-    const Vec3& n = spec_.surface.normal;
-    const double along = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
-    if (sk == SurfaceKind::Plane && std::abs(along) > 1e-9) {
-      failAt(prefix + ".direction_vector",
-             fmt::format("the {} leaves the surface: its direction has a component {:.6g} along the plane "
-                         "normal [{}, {}, {}]; expected a vector in the plane",
-                         pkName, along, n[0], n[1], n[2]));
+    if (sk == SurfaceKind::Plane) {
+      const Vec3& n = spec_.surface.params.vector("normal");
+      const double along = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+      if (std::abs(along) > 1e-9)
+        failAt(prefix + ".direction_vector",
+               fmt::format("the {} leaves the surface: its direction has a component {:.6g} along the plane "
+                           "normal [{}, {}, {}]; expected a vector in the plane",
+                           pkName, along, n[0], n[1], n[2]));
     }
     target.directionVector = d;
   }
@@ -290,12 +291,13 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
     if (*r <= 0.0) failAt(prefix + ".radius", fmt::format("expected a radius > 0, got {}", *r));
     target.radius = *r;
   }
-  if (pk == PathKind::Parallel && sk == SurfaceKind::Paraboloid) {
-    if (spec_.surface.a != spec_.surface.b)
-      failAt(pathKindGiven ? (prefix + ".kind") : "surface.a",
-             fmt::format("a parallel needs a surface of revolution; this paraboloid has a = {} != b = {}",
-                         spec_.surface.a, spec_.surface.b));
-    if (!spec_.locations.contains(prefix + ".radius")) target.radius = 2.0;
+  if (pk == PathKind::Parallel) {
+    const geometry::SurfaceKindRow& surfaceRow = *surfaceKindRow(sk).geometry;
+    if (surfaceRow.revolutionProblem)
+      if (auto problem = surfaceRow.revolutionProblem(spec_.surface.params))
+        failAt(pathKindGiven ? (prefix + ".kind") : blamedKey(*problem), problem->message);
+    if (surfaceRow.parallelRadius && !spec_.locations.contains(prefix + ".radius"))
+      target.radius = *surfaceRow.parallelRadius;
   }
   auto colatitude = [&](const std::string& key, double& out) {
     if (auto th = number(path, prefix, key)) {
@@ -394,7 +396,6 @@ SceneSpec Reader::read() {
       if (row.name == *kind) spec_.surface.kind = row.kind;
   const SurfaceKind sk = spec_.surface.kind;
   const std::string skName = toString(sk);
-  const bool heightField = surfaceKindRow(sk).heightField;
   auto surfaceOnly = [&](const std::string& key, bool applies, const std::string& kinds) {
     if (!applies) forbid(surface, "surface", key, "applies to kind = " + kinds + " only; this surface is a " + skName);
   };
@@ -402,58 +403,40 @@ SceneSpec Reader::read() {
     const KeyRule rule = surfaceKeyRule(key, sk);
     surfaceOnly(key, rule.applies, rule.kinds);
   }
-  auto positive = [&](const std::string& key, double& target) {
-    if (auto r = number(surface, "surface", key)) {
-      if (*r <= 0.0) failAt("surface." + key, fmt::format("expected a value > 0, got {}", *r));
-      target = *r;
+  // The kind's own keys, each read and checked as its declaration says.
+  const SurfaceKindRow& kindRow = surfaceKindRow(sk);
+  spec_.surface.params = ParamSet(kindRow.geometry->params);
+  for (const ParamDecl& decl : kindRow.geometry->params) {
+    const std::string full = "surface." + decl.key;
+    switch (decl.type) {
+      case ParamType::Number:
+        if (auto v = number(surface, "surface", decl.key)) {
+          if (!(*v > decl.lowerBound))
+            failAt(full, fmt::format("expected {} > {}, got {}", decl.noun, decl.lowerBound, *v));
+          spec_.surface.params.set(decl.key, *v);
+        }
+        break;
+      case ParamType::Direction:
+        if (auto v = vector(surface, "surface", decl.key)) {
+          const double len = norm3(*v);
+          if (len < 1e-12) failAt(full, "expected a non-zero vector, got [0, 0, 0]");
+          spec_.surface.params.set(decl.key, unitVector(*v, len));
+        }
+        break;
+      case ParamType::Choice:
+        if (auto v = text(surface, "surface", decl.key, {decl.choices.begin(), decl.choices.end()}))
+          spec_.surface.params.set(decl.key, *v);
+        break;
+      case ParamType::Expression:
+        if (auto v = expression(surface, "surface", decl.key)) spec_.surface.params.set(decl.key, *v);
+        break;
     }
-  };
-  if (auto n = vector(surface, "surface", "normal")) {
-    const double len = norm3(*n);
-    if (len < 1e-12) failAt("surface.normal", "expected a non-zero vector, got [0, 0, 0]");
-    spec_.surface.normal = unitVector(*n, len);
   }
-  if (auto r = number(surface, "surface", "radius")) {
-    if (*r <= 0.0) failAt("surface.radius", fmt::format("expected a radius > 0, got {}", *r));
-    spec_.surface.radius = *r;
-  }
-  if (heightField) {
-    if (auto side = text(surface, "surface", "side", {"above", "below"}))
-      spec_.surface.side = *side == "above" ? SurfaceSide::Outside : SurfaceSide::Inside;
-  } else if (auto side = text(surface, "surface", "side", {"outside", "inside"})) {
-    spec_.surface.side = *side == "outside" ? SurfaceSide::Outside : SurfaceSide::Inside;
-  }
-  if (auto ax = vector(surface, "surface", "axis")) {
-    const double len = norm3(*ax);
-    if (len < 1e-12) failAt("surface.axis", "expected a non-zero vector, got [0, 0, 0]");
-    spec_.surface.axis = unitVector(*ax, len);
-  }
-  positive("major_radius", spec_.surface.majorRadius);
-  positive("minor_radius", spec_.surface.minorRadius);
-  positive("a", spec_.surface.a);
-  positive("b", spec_.surface.b);
-  if (auto z = expression(surface, "surface", "z")) spec_.surface.z = *z;
 
-  // Does the ball fit? (Along the path, app/ checks the curvature everywhere.)
-  const bool inside = spec_.surface.side == SurfaceSide::Inside;
-  auto mustFit = [&](double limit, const std::string& what, const std::string& surfaceKey) {
-    if (R < limit) return;
-    const std::string key = spec_.locations.contains("ball.radius") ? "ball.radius" : surfaceKey;
-    failAt(key, fmt::format("a ball of radius {} does not fit inside {} (needs ball.radius < {})", R, what, limit));
-  };
-  if (sk == SurfaceKind::Sphere && inside)
-    mustFit(spec_.surface.radius, fmt::format("a sphere of radius {}", spec_.surface.radius), "surface.radius");
-  if (sk == SurfaceKind::Cylinder && inside)
-    mustFit(spec_.surface.radius, fmt::format("a cylinder of radius {}", spec_.surface.radius), "surface.radius");
-  if (sk == SurfaceKind::Torus) {
-    if (!(spec_.surface.minorRadius < spec_.surface.majorRadius))
-      failAt(spec_.locations.contains("surface.minor_radius") ? "surface.minor_radius" : "surface.major_radius",
-             fmt::format("expected minor_radius < major_radius (a ring torus), got {} and {}",
-                         spec_.surface.minorRadius, spec_.surface.majorRadius));
-    if (inside)
-      mustFit(spec_.surface.minorRadius, fmt::format("a torus tube of radius {}", spec_.surface.minorRadius),
-              "surface.minor_radius");
-  }
+  // Values the kind refuses (a ball that does not fit inside, a torus that
+  // is not a ring); along the path, app/ checks the curvature everywhere.
+  if (kindRow.geometry->check)
+    if (auto problem = kindRow.geometry->check(spec_.surface.params, R)) failAt(blamedKey(*problem), problem->message);
 
   // [plate] — Brockett's upper plate; the contact path is then derived.
   const toml::table* plate = section("plate", keysOf("plate"));

@@ -77,6 +77,12 @@ class Reader {
   [[noreturn]] void failAt(const std::string& key, const std::string& message) const {
     throw badInput(where(key), "{}: {}", key, message);
   }
+  // The first of a kind's blamed keys that the scene gave, else the last.
+  std::string blamedKey(const geometry::SurfaceProblem& problem) const {
+    for (std::size_t i = 0; i + 1 < problem.keys.size(); ++i)
+      if (spec_.locations.contains(problem.keys[i])) return problem.keys[i];
+    return problem.keys.back();
+  }
   SourceLoc where(const std::string& key) const {
     if (auto it = spec_.locations.find(key); it != spec_.locations.end()) return it->second;
     return fileLoc();

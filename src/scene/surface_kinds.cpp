@@ -8,21 +8,24 @@
 namespace rollspin::scene {
 
 namespace {
-SurfaceKindRow kindRow(std::string_view name, std::vector<std::string> keys, bool ofRevolution, bool heightField,
-                       PathKind defaultPath) {
-  return {SurfaceKind{name}, name, std::move(keys), ofRevolution, heightField, defaultPath};
+PathKind pathKindNamed(std::string_view name) {
+  for (const auto& row : pathKinds())
+    if (row.name == name) return row.kind;
+  assert(false && "a surface kind's default path is a path kind");
+  return PathKind::Circle;
 }
 
+// geometry's rows, with their names as SurfaceKinds and their default paths as PathKinds.
 const std::vector<SurfaceKindRow>& surfaceTable() {
-  static const std::vector<SurfaceKindRow> rows{
-      kindRow("plane", {"normal"}, false, false, PathKind::Circle),
-      kindRow("sphere", {"radius", "side"}, true, false, PathKind::Parallel),
-      kindRow("cylinder", {"radius", "side", "axis"}, true, false, PathKind::Parallel),
-      kindRow("torus", {"side", "major_radius", "minor_radius"}, true, false, PathKind::Parallel),
-      kindRow("paraboloid", {"side", "a", "b"}, true, true, PathKind::Parallel),
-      kindRow("saddle", {"side", "a", "b"}, false, true, PathKind::Meridian),
-      kindRow("height", {"side", "z"}, false, true, PathKind::Meridian),
-  };
+  static const std::vector<SurfaceKindRow> rows = [] {
+    std::vector<SurfaceKindRow> out;
+    for (const geometry::SurfaceKindRow& g : geometry::surfaceKindTable()) {
+      std::vector<std::string> keys;
+      for (const ParamDecl& d : g.params) keys.push_back(d.key);
+      out.push_back({SurfaceKind{g.name}, g.name, std::move(keys), g.ofRevolution, pathKindNamed(g.defaultPath), &g});
+    }
+    return out;
+  }();
   return rows;
 }
 }  // namespace
@@ -46,5 +49,7 @@ const std::vector<std::string>& allSurfaceKeys() {
   }();
   return keys;
 }
+
+const std::vector<ParamDecl>& surfaceKeyDecls(SurfaceKind kind) { return surfaceKindRow(kind).geometry->params; }
 
 }  // namespace rollspin::scene

@@ -1,15 +1,16 @@
-// Surface kinds: the one table of what a scene's [surface] can be — each
-// kind's name, the kind-specific keys it accepts, its flags (of revolution,
-// a height field) and the path it gets when [path] names no kind. The loader,
-// the printer and the messages read this table; model/surface_kinds.cpp
-// holds the matching geometry factories. A new kind touches three files: its
-// geometry class, a row here (surface_kinds.cpp) and a factory row there.
+// Surface kinds as the scene sees them: geometry's table
+// (geometry/surface_kinds.hpp: each kind's name, its own keys with type,
+// default, range, units and meaning, and its factory) with the path a kind
+// gets when [path] names none as a PathKind. The loader, the printer and the
+// messages read this; a new kind adds no line here (its row is geometry's).
 #pragma once
 
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "geometry/surface_kinds.hpp"
 
 namespace rollspin::scene {
 
@@ -43,13 +44,16 @@ struct SurfaceKindRow {
   std::string_view name;  // kind.name()
   std::vector<std::string> keys;  // its own keys of [surface] (besides kind)
   bool ofRevolution;              // parallels lie on it (a paraboloid only when a = b)
-  bool heightField;               // side is "above" | "below" (else "outside" | "inside")
   PathKind defaultPath;           // [path] without a kind
+  const geometry::SurfaceKindRow* geometry;  // its keys' declarations and its factory
 };
 
 [[nodiscard]] std::span<const SurfaceKindRow> surfaceKinds();
 [[nodiscard]] const SurfaceKindRow& surfaceKindRow(SurfaceKind kind);
 // Every kind-specific key of any kind, in the table's order (no duplicates).
 [[nodiscard]] const std::vector<std::string>& allSurfaceKeys();
+// The declarations (type, default, range, units, meaning) of a kind's own
+// keys, e.g. for `rollspin keys`.
+[[nodiscard]] const std::vector<ParamDecl>& surfaceKeyDecls(SurfaceKind kind);
 
 }  // namespace rollspin::scene

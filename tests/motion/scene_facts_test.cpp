@@ -101,7 +101,7 @@ TEST(SceneFacts, SphereDeltaIsTheDerivedFormulaInsideAndOut) {
   for (const char* name : {"sphere-outside", "sphere-inside"}) {
     const Loaded l = load(name);
     const SceneFacts f(l.spec, l.model, {Fact::Delta});
-    const double th = l.spec.path.colatitudeDeg * kPi / 180, rho = l.spec.surface.radius * std::sin(th);
+    const double th = l.spec.path.colatitudeDeg * kPi / 180, rho = l.spec.surface.number("radius") * std::sin(th);
     const double R = l.spec.ball.radius;
     EXPECT_NEAR(f.delta->measured, 2 * kPi * std::sqrt(rho * rho / (R * R) + std::cos(th) * std::cos(th)), 1e-9) << name;
     const kinematics::RollingKinematics kin(*l.model.path, R, {40000, 0.0});

@@ -53,6 +53,59 @@ TEST(KindTables, EverySurfaceKindIsReachableBuildsAndRoundTrips) {
   }
 }
 
+// Every surface key is declared with a default inside its own range, units
+// and a meaning (what `rollspin keys` lists), and a scene that sets it to its
+// default prints it back unchanged.
+TEST(KindTables, EverySurfaceKeyIsDeclaredWithAValidDefault) {
+  for (const SurfaceKindRow& row : surfaceKinds()) {
+    ASSERT_EQ(surfaceKeyDecls(row.kind).size(), row.keys.size());
+    for (const ParamDecl& decl : surfaceKeyDecls(row.kind)) {
+      SCOPED_TRACE(std::string(row.name) + "." + decl.key);
+      EXPECT_FALSE(decl.meaning.empty());
+      EXPECT_FALSE(decl.range().empty());
+      switch (decl.type) {
+        case ParamType::Number:
+          EXPECT_GT(std::get<double>(decl.defaultValue), decl.lowerBound);
+          EXPECT_FALSE(decl.units.empty());
+          break;
+        case ParamType::Choice:
+          ASSERT_FALSE(decl.choices.empty());
+          EXPECT_EQ(std::get<std::string>(decl.defaultValue), decl.choices.front());
+          break;
+        case ParamType::Direction: {
+          const auto& v = std::get<std::array<double, 3>>(decl.defaultValue);
+          EXPECT_DOUBLE_EQ(v[0] * v[0] + v[1] * v[1] + v[2] * v[2], 1.0);
+          break;
+        }
+        case ParamType::Expression: EXPECT_FALSE(decl.variables.empty()); break;
+      }
+      const SceneSpec spec = loadSceneText("[surface]\nkind = \"" + std::string(row.name) + "\"\n", "<table>");
+      EXPECT_EQ(spec.surface.params.at(decl.key), decl.defaultValue);
+      EXPECT_NE(writeScene(spec).find("\n" + decl.key + " = "), std::string::npos);
+    }
+  }
+}
+
+// A value below a number key's range is refused at its file:line:col, naming
+// the key and the range.
+TEST(KindTables, ANumberKeyBelowItsRangeIsRefusedAtItsLocation) {
+  for (const SurfaceKindRow& row : surfaceKinds())
+    for (const ParamDecl& decl : surfaceKeyDecls(row.kind)) {
+      if (decl.type != ParamType::Number) continue;
+      SCOPED_TRACE(std::string(row.name) + "." + decl.key);
+      const std::string text = "[surface]\nkind = \"" + std::string(row.name) + "\"\n" + decl.key + " = " +
+                               std::to_string(decl.lowerBound - 1.0) + "\n";
+      try {
+        (void)loadSceneText(text, "bad.toml");
+        ADD_FAILURE() << "accepted";
+      } catch (const Error& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("bad.toml:3:"), std::string::npos) << m;
+        EXPECT_NE(m.find("surface." + decl.key + ": expected " + decl.noun + " > "), std::string::npos) << m;
+      }
+    }
+}
+
 TEST(KindTables, EveryPathKindIsReachableOnEachSurfaceItLiesOnAndRoundTrips) {
   for (const PathKindRow& path : pathKinds()) {
     int surfaces = 0;

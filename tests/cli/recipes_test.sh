@@ -2,7 +2,7 @@
 # The README's "Rendering on many machines" recipes, run as written on tiny
 # clips (160x90, 30 frames):
 #   scripts/render_parallel.sh on this machine, and over SSH to two pretend
-#     hosts (tests/app/fake_ssh.sh as GNU parallel's ssh: each host is a
+#     hosts (tests/cli/fake_ssh.sh as GNU parallel's ssh: each host is a
 #     folder of its own, files really go there and back with rsync);
 #   scripts/slurm/*.sbatch run by hand with SLURM_ARRAY_TASK_ID/COUNT set as
 #     Slurm would (Slurm is not installed), and submit.sh against a pretend
@@ -10,7 +10,7 @@
 #   scripts/sweep_sphere_inside.sh on a small grid, against its closed form.
 # Each joined clip is probed with ffprobe: 30 frames, tagged as frames 0-29.
 #
-#   bash tests/app/recipes_test.sh BUILD/rollspin WORK_FOLDER
+#   bash tests/cli/recipes_test.sh BUILD/rollspin WORK_FOLDER
 set -euo pipefail
 
 rollspin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
@@ -50,7 +50,7 @@ check_clip local/clip.mp4
 [ "$(ls local)" = "clip.mp4" ] || fail "parts left beside local/clip.mp4: $(ls local)"
 
 echo "== GNU parallel over SSH (two pretend hosts and this machine)"
-export FAKE_SSH_ROOT=$work/fake-hosts FAKE_SSH_BIN=$work/remote-bin PARALLEL_SSH=$src/tests/app/fake_ssh.sh
+export FAKE_SSH_ROOT=$work/fake-hosts FAKE_SSH_BIN=$work/remote-bin PARALLEL_SSH=$src/tests/cli/fake_ssh.sh
 mkdir -p "$FAKE_SSH_ROOT" "$FAKE_SSH_BIN"
 # The hosts' `rollspin` in PATH: logs which host ran it (its HOME), then runs.
 printf '#!/bin/sh\necho "$(basename "$HOME") $*" >> "%s"\nexec "%s" "$@"\n' "$work/ran.log" "$rollspin" \

@@ -3,6 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
+#include <type_traits>
+#include <variant>
 #include <map>
 #include <stdexcept>
 
@@ -11,6 +14,7 @@
 #include "media/output_format.hpp"
 #include "render/gl_context.hpp"
 #include "scene/scene_spec.hpp"
+#include "scene/surface_kinds.hpp"
 #include "spin/propagator.hpp"
 
 namespace rollspin::scene {
@@ -42,32 +46,62 @@ KeyInfo info(std::string section, std::string key, Row r, std::string appliesTo 
           std::move(r.meaning), std::move(appliesTo)};
 }
 
-// [surface]: which keys exist and on which kinds comes from the surface kind
-// table (surface_kinds.cpp); this is the one place that reads it, so that a
-// kind table with parameter descriptors can replace it.
+// [surface]: each kind declares its own keys (geometry/surface_kinds.cpp,
+// ParamDecl: type, default, range, units, meaning); the reference lists each
+// key once, with the kinds it applies to and, where kinds differ, each one's
+// default and meaning.
+std::string declDefault(const ParamDecl& decl) {
+  return std::visit(
+      [](const auto& v) -> std::string {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, double>) return num(v);
+        else if constexpr (std::is_same_v<T, std::string>) return inQuotes(v);
+        else return vectorText(Vec3(v[0], v[1], v[2]));
+      },
+      decl.defaultValue);
+}
+
+std::string declType(ParamType type) {
+  switch (type) {
+    case ParamType::Number: return "number";
+    case ParamType::Direction: return "[x, y, z]";
+    case ParamType::Choice: return "string";
+    case ParamType::Expression: return "expression";
+  }
+  return "?";
+}
+
 std::vector<KeyInfo> surfaceKeyInfos(const SurfaceSpec& d) {
   std::vector<std::string> kindNames;
   for (const auto& row : surfaceKinds()) kindNames.emplace_back(row.name);
   std::vector<KeyInfo> out{info("surface", "kind",
                                 {"string", inQuotes(toString(d.kind)), {}, kindNames, "", "",
                                  "the surface the ball rolls on"})};
-  const std::map<std::string, Row> rows{
-      {"normal", {"[x, y, z]", vectorText(d.normal), {}, {}, "non-zero; normalised", "", "the plane's unit normal, on the ball's side"}},
-      {"radius", {"number", num(d.radius), above(0), {}, "", "length", "sphere: its radius r; cylinder: its radius a"}},
-      {"side",
-       {"string", "\"outside\" (height fields: \"above\")", {}, {"outside", "inside", "above", "below"},
-        "\"outside\" | \"inside\"; on paraboloid, saddle, height: \"above\" | \"below\"", "",
-        "which side of the surface the ball rolls on"}},
-      {"axis", {"[x, y, z]", vectorText(d.axis), {}, {}, "non-zero; normalised", "", "the cylinder's axis, through the origin"}},
-      {"major_radius", {"number", num(d.majorRadius), above(0), {}, "> minor_radius", "length", "the torus's ring radius A (about the z axis)"}},
-      {"minor_radius", {"number", num(d.minorRadius), above(0), {}, "", "length", "the torus's tube radius a"}},
-      {"a", {"number", num(d.a), above(0), {}, "", "length", "z = (x²/a ± y²/b)/2: the curvature scale along x"}},
-      {"b", {"number", num(d.b), above(0), {}, "", "length", "z = (x²/a ± y²/b)/2: the curvature scale along y (saddle: minus)"}},
-      {"z", {"expression", inQuotes(d.z), {}, {}, "muparser syntax in x, y", "length", "the height field z = f(x, y)"}},
-  };
   for (const std::string& key : allSurfaceKeys()) {
-    const auto it = rows.find(key);
-    const Row row = it != rows.end() ? it->second : Row{"?", "", {}, {}, "", "", "(undocumented surface key)"};
+    // (kind, declaration) for every kind that declares the key.
+    std::vector<std::pair<std::string, const ParamDecl*>> decls;
+    for (const auto& row : surfaceKinds())
+      for (const ParamDecl& decl : surfaceKeyDecls(row.kind))
+        if (decl.key == key) decls.emplace_back(std::string(row.name), &decl);
+    const ParamDecl& first = *decls.front().second;
+    auto perKind = [&](auto field) {
+      std::string joined;
+      bool differ = false;
+      for (const auto& [kind, decl] : decls) differ = differ || field(*decl) != field(first);
+      if (!differ) return field(first);
+      for (const auto& [kind, decl] : decls) joined += (joined.empty() ? "" : "; ") + kind + ": " + field(*decl);
+      return joined;
+    };
+    Row row{declType(first.type), perKind(declDefault), {}, {}, "", first.units,
+            perKind([](const ParamDecl& decl) { return decl.meaning; })};
+    if (first.type == ParamType::Number && first.lowerBound > -std::numeric_limits<double>::infinity())
+      row.bounds = above(first.lowerBound);
+    for (const auto& [kind, decl] : decls)
+      for (const std::string& choice : decl->choices)
+        if (std::find(row.choices.begin(), row.choices.end(), choice) == row.choices.end())
+          row.choices.push_back(choice);
+    if (first.type != ParamType::Number && first.type != ParamType::Choice)
+      row.rangeNote = perKind([](const ParamDecl& decl) { return decl.range(); });
     out.push_back(info("surface", key, row, "kind = " + surfaceKeyRule(key, d.kind).kinds));
   }
   return out;
@@ -91,6 +125,7 @@ std::vector<KeyInfo> pathKeyInfos(const PathSpec& d) {
       {"tube_angle_deg", {"number", num(d.tubeAngleDeg), {}, {}, "", "degrees", "the angle ψ up the torus tube (0 = outer equator)"}},
       {"height", {"number", num(d.height), {}, {}, "", "length", "the start height along the cylinder's axis"}},
       {"azimuth_deg", {"number", num(d.azimuthDeg), {}, {}, "", "degrees", "the start azimuth φ0"}},
+      {"start_azimuth_deg", {"number", num(d.startAzimuthDeg), {}, {}, "", "degrees", "the azimuth a parallel starts at (0: see Conventions)"}},
       {"colatitude_start_deg", {"number", num(d.colatitudeStartDeg), openRange(0, 180), {}, "", "degrees", "the start colatitude θ0"}},
       {"colatitude_end_deg", {"number", num(d.colatitudeEndDeg), openRange(0, 180), {}, "!= colatitude_start_deg", "degrees", "the end colatitude θ1"}},
       {"pitch_angle_deg", {"number", num(d.pitchAngleDeg), openRange(-90, 90), {}, "", "degrees", "the helix's angle β from the parallels"}},

@@ -3,6 +3,7 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <fstream>
 #include <limits>
@@ -57,6 +58,49 @@ void writeJpeg(const std::filesystem::path& file, const ImageView& image, int qu
   out.commit();
 }
 
+namespace {
+
+// Debian 12's stb_image (2.27) writes past its 257-entry size list when a
+// JPEG's Huffman table (DHT) counts more than 256 codes (found by
+// fuzz_image; upstream checks since 2.28). Such a table is refused here
+// first: the markers are walked as stb_image walks them (each segment by its
+// length, entropy-coded data up to the next 0xFF that is not stuffing or a
+// restart), and each DHT table's 16 counts are added up.
+bool jpegHuffmanTablesFit(std::string_view bytes) {
+  const auto at = [&](std::size_t k) -> unsigned { return k < bytes.size() ? static_cast<unsigned char>(bytes[k]) : 0U; };
+  if (at(0) != 0xFF || at(1) != 0xD8) return true;  // not a JPEG
+  std::size_t pos = 2;
+  while (pos + 1 < bytes.size()) {
+    const unsigned marker = at(pos + 1);
+    if (at(pos) != 0xFF || marker == 0xFF) {  // entropy-coded data, or a fill byte
+      ++pos;
+      continue;
+    }
+    if (marker == 0x00 || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD8)) {  // stuffing, TEM, RSTn, SOI
+      pos += 2;
+      continue;
+    }
+    if (marker == 0xD9) break;  // EOI
+    const std::size_t length = (at(pos + 2) << 8) | at(pos + 3);
+    if (marker == 0xC4) {
+      // stb_image reads tables while the segment has bytes left (zeros past the end).
+      long left = static_cast<long>(length) - 2;
+      std::size_t q = pos + 4;
+      while (left > 0 && q < bytes.size()) {
+        unsigned codes = 0;
+        for (std::size_t i = 0; i < 16; ++i) codes += at(q + 1 + i);
+        if (codes > 256) return false;
+        q += 17 + codes;
+        left -= static_cast<long>(17 + codes);
+      }
+    }
+    pos += 2 + std::max<std::size_t>(length, 2);
+  }
+  return true;
+}
+
+}  // namespace
+
 Image loadImage(const std::filesystem::path& file, const SourceLoc& where) {
   std::ifstream in(file, std::ios::binary);
   std::error_code ec;
@@ -71,6 +115,9 @@ Image decodeImage(std::string_view bytes, const std::string& name, const SourceL
     throw badInput(where, "'{}' is larger than the 2 GiB an image file may have", name);
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int size = static_cast<int>(bytes.size());
+  // Before any stb_image call: reading the header builds the tables too.
+  if (!jpegHuffmanTablesFit(bytes))
+    throw badInput(where, "'{}' is not a readable PNG or JPG image (a Huffman table of more than 256 codes)", name);
   int w = 0, h = 0, comp = 0;
   // The header first: a few bytes may claim an image of gigabytes, which
   // would be allocated before the data is found missing.

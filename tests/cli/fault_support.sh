@@ -64,3 +64,14 @@ frames_tag() { ffprobe -v error -show_entries format_tags=rollspin_frames -of cs
 # Files left in folder $1 (names, sorted, one line), hidden ones included,
 # the test's own stderr files left out.
 left_in() { (cd "$1" && ls -A | grep -v '^stderr' | sort | tr '\n' ' '); }
+
+# The fault tests' start, from their arguments ROLLSPIN WORKDIR: $rollspin,
+# $work (emptied), $scenes, $small (a 160x90 render); tmpfs mounts are
+# undone on exit.
+fault_test_setup() {
+  rollspin=$(realpath "$1") work=$2
+  scenes=$(realpath "$(dirname "${BASH_SOURCE[0]}")/../../scenes")
+  rm -rf "$work" && mkdir -p "$work"
+  trap umount_all EXIT
+  small=(--set render.width=160 --set render.height=90)
+}

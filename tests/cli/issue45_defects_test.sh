@@ -12,12 +12,8 @@
 #   set-*, memory     the out-of-range number, the list syntax, the way out
 # Usage: issue45_defects_test.sh ROLLSPIN WORKDIR (run by ctest, label faults).
 set -uo pipefail
-rollspin=$(realpath "$1") work=$2
 source "$(dirname "$0")/fault_support.sh"
-scenes=$(realpath "$(dirname "$0")/../../scenes")
-rm -rf "$work" && mkdir -p "$work"
-trap umount_all EXIT
-small=(--set render.width=160 --set render.height=90)
+fault_test_setup "$@"
 
 # --- WebM on a full disk (and the other videos, which already failed cleanly)
 disk=$work/full

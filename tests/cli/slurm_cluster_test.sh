@@ -29,6 +29,7 @@ tmp=$(mktemp -d /tmp/rollspin-slurm.XXXXXX)
 chmod 755 "$tmp"
 stop_cluster() {
   local pidfile pid
+  kill "${watchdog:-}" 2>/dev/null
   for pidfile in "$tmp/slurmd.pid" "$tmp/slurmctld.pid" "$tmp/munged.pid"; do
     [ -s "$pidfile" ] || continue
     pid=$(cat "$pidfile")
@@ -39,15 +40,21 @@ stop_cluster() {
   rm -rf "$tmp"
 }
 trap stop_cluster EXIT
-# Slurm's own processes (job steps) must not outlive the test either.
-trap 'exit 1' INT TERM
+trap 'echo "slurm_cluster_test: stopped (signal or the 240 s limit)"; exit 1' INT TERM
+# A hard limit below ctest's 300 s, so that the daemons are always stopped
+# by the trap above rather than left running by ctest's kill.
+( trap 'kill $nap 2>/dev/null; exit 0' TERM; sleep 240 & nap=$!; wait $nap && kill -TERM $$ ) 2>/dev/null &
+watchdog=$!
 
 # --- munge: a key of its own and a socket in the folder
 dd if=/dev/urandom of="$tmp/munge.key" bs=1024 count=1 status=none
 chmod 400 "$tmp/munge.key"
 mkdir -p "$tmp/munge"
 chmod 700 "$tmp/munge"
-munged --force --key-file="$tmp/munge.key" --socket="$tmp/munge/munge.socket" --pid-file="$tmp/munged.pid" \
+# The daemons start without the sanitizer pass's LD_PRELOAD (a GL driver
+# for the ASan build of rollspin): they have nothing to do with it.
+daemon() { env -u LD_PRELOAD "$@"; }
+daemon munged --force --key-file="$tmp/munge.key" --socket="$tmp/munge/munge.socket" --pid-file="$tmp/munged.pid" \
   --seed-file="$tmp/munge/seed" --log-file="$tmp/munged.log" --num-threads=2 ||
   skip_all "munged would not start here: $(tail -n 2 "$tmp/munged.log" 2>/dev/null)"
 
@@ -86,8 +93,8 @@ NodeName=localhost NodeAddr=127.0.0.1 CPUs=$((2 * cpus)) State=UNKNOWN
 PartitionName=test Nodes=localhost Default=YES MaxTime=INFINITE State=UP
 EOF
 export SLURM_CONF=$tmp/slurm.conf
-slurmctld -i -f "$SLURM_CONF" || skip_all "slurmctld would not start here: $(tail -n 3 "$tmp/slurmctld.log")"
-slurmd -f "$SLURM_CONF" -N localhost || skip_all "slurmd would not start here: $(tail -n 3 "$tmp/slurmd.log")"
+daemon slurmctld -i -f "$SLURM_CONF" || skip_all "slurmctld would not start here: $(tail -n 3 "$tmp/slurmctld.log")"
+daemon slurmd -f "$SLURM_CONF" -N localhost || skip_all "slurmd would not start here: $(tail -n 3 "$tmp/slurmd.log")"
 if ! wait_for "sinfo -h -o %t 2>/dev/null | grep -qE '^(idle|mix|alloc)'" 30; then
   echo "slurmctld.log:"; tail -n 15 "$tmp/slurmctld.log"; echo "slurmd.log:"; tail -n 15 "$tmp/slurmd.log"
   fail cluster-up "the node did not come up: $(sinfo 2>&1 | tail -n 2)"

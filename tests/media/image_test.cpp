@@ -70,6 +70,40 @@ TEST(ImageIo, MissingAndCorruptFilesAreBadInput) {
   EXPECT_THROW((void)loadImage(dir / "corrupt.png", {}), Error);
 }
 
+// Found by fuzz_image: a JPEG whose Huffman table counts 734 codes made
+// Debian's stb_image (2.27) write past its 257-entry size list, in the
+// header read that loading and the size check both do. Refused first.
+TEST(ImageIo, JpegWithAnOversizedHuffmanTableIsBadInput) {
+  const auto path = test::sourceDir() / "tests/fuzz/seeds/image/crash-dht-overflow.jpg";
+  try {
+    (void)loadImage(path, SourceLoc{"ball.texture"});
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.exitCode(), 2);
+    EXPECT_NE(std::string(e.what()).find("Huffman table of more than 256 codes"), std::string::npos) << e.what();
+  }
+}
+
+// A header may claim far more pixels than the file holds: refused before
+// anything is allocated for them (20000 x 20000 grey: 400 MB, within the
+// 1 GiB stb_image itself accepts, and 1.6 GB once expanded to RGBA).
+TEST(ImageIo, HugeClaimedSizeIsRefusedBeforeDecoding) {
+  std::string png = test::readFile(test::sourceDir() / "tests/fuzz/seeds/image/gray.png");
+  ASSERT_GT(png.size(), 24u);
+  for (const int offset : {16, 20}) {  // IHDR width and height, big-endian
+    png[offset] = 0;
+    png[offset + 1] = 0;
+    png[offset + 2] = '\x4e';  // 20000 = 0x4e20
+    png[offset + 3] = '\x20';
+  }
+  try {
+    (void)decodeImage(png, "huge.png", SourceLoc{"huge.png"});
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("claims 20000x20000 pixels"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ImageCompare, IdenticalImagesHaveNoDifference) {
   const Image img = gradient(8, 8);
   const ImageDifference d = compareImages(img.view(), img.view());

@@ -56,7 +56,7 @@ std::string declDefault(const ParamDecl& decl) {
         using T = std::decay_t<decltype(v)>;
         if constexpr (std::is_same_v<T, double>) return num(v);
         else if constexpr (std::is_same_v<T, std::string>) return inQuotes(v);
-        else return vectorText(Vec3(v[0], v[1], v[2]));
+        else return vectorText(v);
       },
       decl.defaultValue);
 }

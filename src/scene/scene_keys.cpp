@@ -84,12 +84,18 @@ std::vector<KeyInfo> surfaceKeyInfos(const SurfaceSpec& d) {
       for (const ParamDecl& decl : surfaceKeyDecls(row.kind))
         if (decl.key == key) decls.emplace_back(std::string(row.name), &decl);
     const ParamDecl& first = *decls.front().second;
+    // One value when every kind agrees, else "k1, k2: value; k3: other".
     auto perKind = [&](auto field) {
+      std::vector<std::pair<std::string, std::string>> groups;  // (value, kinds)
+      for (const auto& [kind, decl] : decls) {
+        const std::string value = field(*decl);
+        auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == value; });
+        if (it == groups.end()) groups.emplace_back(value, kind);
+        else it->second += ", " + kind;
+      }
+      if (groups.size() == 1) return groups.front().first;
       std::string joined;
-      bool differ = false;
-      for (const auto& [kind, decl] : decls) differ = differ || field(*decl) != field(first);
-      if (!differ) return field(first);
-      for (const auto& [kind, decl] : decls) joined += (joined.empty() ? "" : "; ") + kind + ": " + field(*decl);
+      for (const auto& [value, kinds] : groups) joined += (joined.empty() ? "" : "; ") + kinds + ": " + value;
       return joined;
     };
     Row row{declType(first.type), perKind(declDefault), {}, {}, "", first.units,

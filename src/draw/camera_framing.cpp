@@ -284,12 +284,12 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(OrbitAngles base, double s
     if (out.orbits) return out;
   }
   // Last, a camera that turns as the ball goes (round a torus's tube no
-  // still view sees it all): view directions at 17 places along [s0, s1],
+  // still view sees it all): view directions at 33 places along [s0, s1],
   // each seeing the ball there, chosen (dynamic programming) for the least
   // sum of squared turns from the given view and between places; the
   // camera turns between them with s.
   if (mayOrbit && azimuthFree && elevationFree && s1 > s0) {
-    constexpr int kPlaces = 17;
+    constexpr int kPlaces = 33;
     std::vector<OrbitAngles> directions;
     for (const double turn : {0.0, 30.0, -30.0, 60.0, -60.0, 90.0, -90.0, 120.0, -120.0, 150.0, -150.0, 180.0})
       for (const double degrees : {70.0, 50.0, 30.0, 10.0, -10.0, -30.0, -50.0})

@@ -186,7 +186,7 @@ double turnDeg(const OrbitAngles &a, const OrbitAngles &b) {
 // already sees in.
 CameraFraming::Unhidden CameraFraming::unhiddenAngles(OrbitAngles base, double s0, double s1, bool azimuthFree,
                                                       bool elevationFree, bool mayOrbit, double maxTurnDeg,
-                                                      bool mayLower) const {
+                                                      bool mayLower, bool follow) const {
   Unhidden out{base, false, 0.0};
   const auto *sphere = dynamic_cast<const geometry::Sphere *>(model_.surface.get());
   const bool cutOpen = sphere && sphere->side() == geometry::Side::Inside;
@@ -196,6 +196,11 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(OrbitAngles base, double s
   auto stillEye = [&](const OrbitAngles &a) {
     const auto [target, distance] = fitPoints(extent_.points, R, a, spec_.render.fovDeg, aspect);
     return Vec3(target + spec_.render.distance.value_or(distance) * towardEye(a));
+  };
+  // A camera that follows the ball stands fitDistance(4R) from it.
+  const double followDistance = fitDistance(4.0 * R, spec_.render.fovDeg, aspect);
+  auto eyeFor = [&](const OrbitAngles& a, double s, const Vec3& still) {
+    return follow ? Vec3(model_.path->at(s).centre(R) + followDistance * towardEye(a)) : still;
   };
 
   struct Candidate {
@@ -234,7 +239,7 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(OrbitAngles base, double s
   double bestShare = -1.0;
   for (const Candidate &c : candidates) {
     const Vec3 eye = stillEye(c.angles);
-    auto eyeAt = [&](double) { return eye; };
+    auto eyeAt = [&](double s) { return eyeFor(c.angles, s, eye); };
     const double share = leastVisibleShare(model_, *extent_.surface, eyeAt, s0, s1, std::min(0.9, bestShare));
     if (share > bestShare + 1e-9) {
       bestShare = share;
@@ -273,7 +278,10 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(OrbitAngles base, double s
       if (degrees != 0.0 && !elevationFree) break;
       const double elevation = below * std::max(below * base.elevation, degrees * kDeg);
       if (turnDeg({base.azimuth, elevation}, base) > maxTurnDeg) continue;
-      auto eyeAt = [&](double s) { return stillEye({longitude(s) + offset, elevation}); };
+      auto eyeAt = [&](double s) {
+        const OrbitAngles a{longitude(s) + offset, elevation};
+        return follow ? eyeFor(a, s, Vec3::Zero()) : stillEye(a);
+      };
       const double share = leastVisibleShare(model_, *extent_.surface, eyeAt, s0, s1);
       if (share > bestShare + 1e-9) {
         out = {{base.azimuth, elevation}, true, offset, share};
@@ -303,7 +311,7 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(OrbitAngles base, double s
       const double s = s0 + (s1 - s0) * i / double(kPlaces - 1);
       const Vec3 centre = model_.path->at(s).centre(R);
       for (std::size_t j = 0; j < n; ++j) {
-        if (extent_.surface->visibleShare(eyes[j], centre, R) < 0.95) continue;
+        if (extent_.surface->visibleShare(eyeFor(directions[j], s, eyes[j]), centre, R) < 0.95) continue;
         if (i == 0) {
           cost[0][j] = std::pow(turnDeg(base, directions[j]), 2);
           continue;
@@ -407,7 +415,7 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
       shot.follow = false;
     }
     shot.moveSeconds = kCameraMove;
-    if (freeCamera(shot)) {
+    if (!(shot.target && shot.distance)) {  // follow: the angles are still free
       model::SegmentSpan span = model.segments[k];
       // A hold looks ahead: its camera moves (while the ball rests) to the
       // view the next motion wants, where that segment adds no keys.
@@ -418,9 +426,10 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
       }
       const OrbitAngles base{shot.azimuth, shot.elevation};
       Unhidden u = unhiddenAngles(base, span.start, span.end, !azimuthGiven, !elevationGiven, true,
-                                  k == 0 ? 360.0 : kMaxFreeMoveDeg);
+                                  k == 0 ? 360.0 : kMaxFreeMoveDeg, false, shot.follow);
       if (k > 0 && u.share < 0.9)
-        u = unhiddenAngles(base, span.start, span.end, !azimuthGiven, !elevationGiven, true, 360.0);
+        u = unhiddenAngles(base, span.start, span.end, !azimuthGiven, !elevationGiven, true, 360.0, false,
+                           shot.follow);
       shot.azimuth = u.angles.azimuth;
       shot.elevation = u.angles.elevation;
       shot.orbits = u.orbits;
@@ -429,7 +438,7 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
       // A turn larger than kMaxFreeMoveDeg takes longer than a second.
       if (k > 0) shot.moveSeconds = std::max(kCameraMove, turnDeg(previous, u.angles) / kMaxFreeMoveDeg);
     }
-    shot.keyed = !freeCamera(shot) || azimuthGiven || elevationGiven;
+    shot.keyed = (shot.target && shot.distance) || azimuthGiven || elevationGiven;
     shots_.push_back(shot);
   }
   findHiddenSpans();

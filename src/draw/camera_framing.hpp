@@ -152,7 +152,8 @@ class CameraFraming {
   // mayOrbit, a view that orbits with the ball's longitude where no still
   // view sees it; maxTurnDeg bounds the turn away from `base`.
   [[nodiscard]] Unhidden unhiddenAngles(OrbitAngles base, double s0, double s1, bool azimuthFree, bool elevationFree,
-                                        bool mayOrbit, double maxTurnDeg, bool mayLower = false) const;
+                                        bool mayOrbit, double maxTurnDeg, bool mayLower = false,
+                                        bool follow = false) const;
   void findHiddenSpans();
 
   const scene::SceneSpec &spec_;

@@ -311,7 +311,16 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(OrbitAngles base, double s
       const double s = s0 + (s1 - s0) * i / double(kPlaces - 1);
       const Vec3 centre = model_.path->at(s).centre(R);
       for (std::size_t j = 0; j < n; ++j) {
-        if (extent_.surface->visibleShare(eyeFor(directions[j], s, eyes[j]), centre, R) < 0.95) continue;
+        // Seen here and half-way to each neighbouring place: the camera
+        // passes between two places' directions there.
+        bool seenAround = true;
+        for (const double ds : {0.0, -0.5, 0.5}) {
+          const double sa = std::clamp(s + ds * (s1 - s0) / double(kPlaces - 1), s0, s1);
+          const Vec3 c = ds == 0.0 ? centre : Vec3(model_.path->at(sa).centre(R));
+          if (extent_.surface->visibleShare(eyeFor(directions[j], sa, eyes[j]), c, R) < 0.95) seenAround = false;
+          if (!seenAround) break;
+        }
+        if (!seenAround) continue;
         if (i == 0) {
           cost[0][j] = std::pow(turnDeg(base, directions[j]), 2);
           continue;

@@ -35,8 +35,8 @@ namespace {
 
 // The axis and pole labels stay off the arrows (the strobe's Bloch vectors
 // reach the sphere, where the labels sit): each label whose box, padded by
-// a quarter em, crosses a projected arrow (or a label placed before it)
-// moves to the nearest of a ring of offsets, up to 2.5 em away, that is
+// a quarter em, crosses a projected arrow (or a label placed before it,
+// or the view's edge) moves to the nearest of a ring of offsets, up to 2.5 em away, that is
 // clear; it stays where it was when none is.
 void keepLabelsOffArrows(render::DrawList& list, int view, std::size_t first) {
   const render::View& v = list.views[std::size_t(view)];
@@ -66,6 +66,7 @@ void keepLabelsOffArrows(render::DrawList& list, int view, std::size_t first) {
   };
   std::vector<Box> placed;
   auto hits = [&](const Box& box) {
+    if (box.lo.x < 0.0f || box.lo.y < 0.0f || box.hi.x > float(v.width) || box.hi.y > float(v.height)) return true;
     for (const Segment& s : arrows) {
       // The segment meets the box when it passes within its half-diagonal
       // of the centre, sampled along the box (boxes are a few ems wide).

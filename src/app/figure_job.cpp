@@ -1,5 +1,7 @@
 #include "app/figure_job.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -50,8 +52,23 @@ void checkFigureSpec(const scene::SceneSpec& spec) {
   const auto available = availableMemoryBytes();
   if (available && needed > *available)
     throw badInput(spec.where(spec.locations.contains("render.dpi") ? "render.dpi" : "figure.width_mm"),
-                   "a {}x{} figure raster ({} dpi over {} mm) needs about {} MiB, but only {} MiB are available",
-                   width, height, spec.render.dpi, spec.figure.widthMm, needed >> 20, *available >> 20);
+                   "a {}x{} figure raster ({} dpi over {} mm) needs about {} MiB, but only {} MiB are available", width,
+                   height, spec.render.dpi, spec.figure.widthMm, needed >> 20, *available >> 20);
+}
+
+double figureTextPt(const scene::SceneSpec& spec) { return spec.figure.fontSizePt.value_or(kDefaultFigureTextPt); }
+
+// unit: points per DrawList pixel. The body label's pixel height is its
+// ascent + descent, so at the figure font's ratio it prints at the body size.
+void fitTextToFigure(scene::SceneSpec& spec) {
+  const double unit = spec.figure.widthMm / 25.4 * 72.0 / double(spec.render.width);
+  const double bodyPx = figureTextPt(spec) * render::figureFontHeightPerEm(spec.figure.font) / unit;
+  const double atScaleOne = draw::bodyTextPx(int(spec.render.width), int(spec.render.height), 1.0);
+  spec.render.fontScale = bodyPx / atScaleOne;
+  if (StageLog::instance().echo())
+    fmt::print(stderr, "figure: {:.0f} mm wide, body text {:.1f} pt in {} ({:.1f} px of the {}x{} layout)\n",
+               spec.figure.widthMm, figureTextPt(spec), spec.figure.font, bodyPx, spec.render.width,
+               spec.render.height);
 }
 
 void writeFigureStill(const scene::SceneSpec& spec, const render::DrawList& list, const std::filesystem::path& out,
@@ -82,7 +99,7 @@ void writeFigureStill(const scene::SceneSpec& spec, const render::DrawList& list
   render::FigureStyle style;
   style.widthPt = spec.figure.widthMm / 25.4 * 72.0;
   style.font = spec.figure.font;
-  style.bodyTextPt = spec.figure.fontSizePt;
+  style.bodyTextPt = figureTextPt(spec);
   // The drawing's own body text size: figure.font_size_pt is set for that one.
   style.bodyTextPx = draw::bodyTextPx(list.width, list.height, spec.render.fontScale);
   style.transparent = spec.figure.transparent;

@@ -22,6 +22,17 @@ namespace rollspin::app {
 // raster fits the renderer's limit) before anything is solved.
 void checkFigureSpec(const scene::SceneSpec& spec);
 
+// The body text size of a figure: figure.font_size_pt, else kDefaultFigureTextPt.
+inline constexpr double kDefaultFigureTextPt = 8.0;
+[[nodiscard]] double figureTextPt(const scene::SceneSpec& spec);
+
+// Lays the still's text out for the figure's physical size: sets
+// render.font_scale so that the body text, in the DrawList's pixels, is
+// figureTextPt at figure.width_mm over render.width (plates, line steps and
+// the free slots then follow the printed size). With --verbose, prints the
+// size.
+void fitTextToFigure(scene::SceneSpec& spec);
+
 // Renders the raster parts with GL (only when the list has meshes) and
 // writes the figure to `out`.
 void writeFigureStill(const scene::SceneSpec& spec, const render::DrawList& list, const std::filesystem::path& out,

@@ -146,12 +146,18 @@ FrameOrientations stillFrame(const DrawJob& job, double s) {
 }
 
 std::filesystem::path renderStill(const StillOptions& o) {
-  const DrawJob job = prepareDrawJob({o.scenePath, o.overrides, {}, o.width, o.height, o.transparent, o.output,
-                                      media::OutputUse::Still});
-  const scene::SceneSpec& spec = job.spec;
+  DrawJob job = prepareDrawJob({o.scenePath, o.overrides, {}, o.width, o.height, o.transparent, o.output,
+                                media::OutputUse::Still});
   const media::OutputFormat& format = *job.format;
   const auto figure = figureFormatOf(format);  // PDF/SVG: drawn by the vector backend (figure_job.hpp)
-  if (figure) checkFigureSpec(spec);
+  if (figure) checkFigureSpec(job.spec);
+  // A figure's text is laid out for its printed size; a PNG still of a
+  // scene that sets [figure] keys keeps the same composition, scaled.
+  const bool figureKeys = std::any_of(job.spec.locations.begin(), job.spec.locations.end(), [](const auto& entry) {
+    return entry.first.rfind("figure.", 0) == 0 && entry.second.line > 0;
+  });
+  if (figure || figureKeys) fitTextToFigure(job.spec);
+  const scene::SceneSpec& spec = job.spec;
   const double s = stillArcLength(job, o.at);
 
   std::filesystem::path out = o.output;

@@ -1,15 +1,14 @@
 #include "draw/camera_framing.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <numbers>
-
 #include <glm/gtc/matrix_transform.hpp>
+#include <numbers>
 
 #include "draw/draw_style.hpp"
 #include "motion/frame_clock.hpp"
-
-#include <fmt/format.h>
 
 namespace rollspin::draw {
 
@@ -17,67 +16,51 @@ using geometry::Vec3;
 using motion::StoryPlace;
 
 Vec3 towardEye(const OrbitAngles &a) {
-  return {std::cos(a.elevation) * std::cos(a.azimuth),
-          std::cos(a.elevation) * std::sin(a.azimuth), std::sin(a.elevation)};
+  return {std::cos(a.elevation) * std::cos(a.azimuth), std::cos(a.elevation) * std::sin(a.azimuth),
+          std::sin(a.elevation)};
 }
 
-render::Light keyLight(const glm::vec3 &up, const glm::vec3 &eyeDirection,
-                       const glm::vec3 &centre, float radius) {
+render::Light keyLight(const glm::vec3 &up, const glm::vec3 &eyeDirection, const glm::vec3 &centre, float radius) {
   render::Light light;
-  const glm::vec3 side = glm::normalize(
-      glm::cross(glm::vec3(0, 0, 1), eyeDirection) + glm::vec3(1e-6f, 0, 0));
+  const glm::vec3 side = glm::normalize(glm::cross(glm::vec3(0, 0, 1), eyeDirection) + glm::vec3(1e-6f, 0, 0));
   // Upper left, slightly in front of the subject: a classic key light.
-  light.towardLight =
-      glm::normalize(up * 1.0f + eyeDirection * 0.35f - side * 0.5f);
+  light.towardLight = glm::normalize(up * 1.0f + eyeDirection * 0.35f - side * 0.5f);
   light.shadowCenter = centre;
   light.shadowRadius = radius;
   return light;
 }
 
-render::View orbitView(int x, int y, int w, int h, const glm::vec3 &target,
-                       double distance, const OrbitAngles &a, double fovDeg,
-                       double sceneRadius) {
+render::View orbitView(int x, int y, int w, int h, const glm::vec3 &target, double distance, const OrbitAngles &a,
+                       double fovDeg, double sceneRadius) {
   render::View v;
   v.x = x;
   v.y = y;
   v.width = w;
   v.height = h;
   const glm::vec3 dir(float(std::cos(a.elevation) * std::cos(a.azimuth)),
-                      float(std::cos(a.elevation) * std::sin(a.azimuth)),
-                      float(std::sin(a.elevation)));
+                      float(std::cos(a.elevation) * std::sin(a.azimuth)), float(std::sin(a.elevation)));
   const glm::vec3 eye = target + float(distance) * dir;
   v.camera.position = eye;
   v.camera.viewFromWorld = glm::lookAt(eye, target, glm::vec3(0, 0, 1));
-  const float nearPlane =
-      float(std::max(0.02 * distance, distance - 2.5 * sceneRadius));
+  const float nearPlane = float(std::max(0.02 * distance, distance - 2.5 * sceneRadius));
   const float farPlane = float(distance + 4.0 * sceneRadius);
-  v.camera.clipFromView =
-      glm::perspective(float(fovDeg * kDeg), float(w) / float(std::max(h, 1)),
-                       nearPlane, farPlane);
+  v.camera.clipFromView = glm::perspective(float(fovDeg * kDeg), float(w) / float(std::max(h, 1)), nearPlane, farPlane);
   return v;
 }
 
 Lens windowLens(const NdcWindow &window, double fovDeg, double aspect) {
   const double tanV = std::tan(0.5 * fovDeg * kDeg), tanH = tanV * aspect;
-  const double windowTanV = 0.5 * (window.y1 - window.y0) * tanV,
-               windowTanH = 0.5 * (window.x1 - window.x0) * tanH;
+  const double windowTanV = 0.5 * (window.y1 - window.y0) * tanV, windowTanH = 0.5 * (window.x1 - window.x0) * tanH;
   return {2.0 * std::atan(windowTanV) / kDeg, windowTanH / windowTanV};
 }
 
-bool isWholeView(const NdcWindow &w) {
-  return w.x0 == -1.0 && w.x1 == 1.0 && w.y0 == -1.0 && w.y1 == 1.0;
-}
+bool isWholeView(const NdcWindow &w) { return w.x0 == -1.0 && w.x1 == 1.0 && w.y0 == -1.0 && w.y1 == 1.0; }
 
-glm::mat4 offAxisProjection(const NdcWindow &window, double fovDeg,
-                            double aspect, float nearPlane, float farPlane) {
+glm::mat4 offAxisProjection(const NdcWindow &window, double fovDeg, double aspect, float nearPlane, float farPlane) {
   const double tanV = std::tan(0.5 * fovDeg * kDeg), tanH = tanV * aspect;
-  const double cx = 0.5 * (window.x0 + window.x1),
-               cy = 0.5 * (window.y0 + window.y1);
-  return glm::frustum(float((-1.0 - cx) * tanH) * nearPlane,
-                      float((1.0 - cx) * tanH) * nearPlane,
-                      float((-1.0 - cy) * tanV) * nearPlane,
-                      float((1.0 - cy) * tanV) * nearPlane, nearPlane,
-                      farPlane);
+  const double cx = 0.5 * (window.x0 + window.x1), cy = 0.5 * (window.y0 + window.y1);
+  return glm::frustum(float((-1.0 - cx) * tanH) * nearPlane, float((1.0 - cx) * tanH) * nearPlane,
+                      float((-1.0 - cy) * tanV) * nearPlane, float((1.0 - cy) * tanV) * nearPlane, nearPlane, farPlane);
 }
 
 // Distance at which a sphere of radius r fills the smaller field of view.
@@ -90,11 +73,9 @@ double fitDistance(double radius, double fovDeg, double aspect) {
 // Target and distance that keep every point (padded by `pad`) inside the
 // field of view, seen from the orbit direction: each point needs
 // D ≥ depth + |offset| / tan(half-angle) along both image axes.
-std::pair<Vec3, double> fitPoints(const std::vector<Vec3> &points, double pad,
-                                  const OrbitAngles &a, double fovDeg,
+std::pair<Vec3, double> fitPoints(const std::vector<Vec3> &points, double pad, const OrbitAngles &a, double fovDeg,
                                   double aspect) {
-  const Vec3 toEye(std::cos(a.elevation) * std::cos(a.azimuth),
-                   std::cos(a.elevation) * std::sin(a.azimuth),
+  const Vec3 toEye(std::cos(a.elevation) * std::cos(a.azimuth), std::cos(a.elevation) * std::sin(a.azimuth),
                    std::sin(a.elevation));
   const Vec3 right = Vec3::UnitZ().cross(toEye).normalized();
   const Vec3 up = toEye.cross(right);
@@ -115,9 +96,8 @@ std::pair<Vec3, double> fitPoints(const std::vector<Vec3> &points, double pad,
     for (const Vec3 &p : points) {
       const Vec3 d = p - target;
       const double depth = d.dot(toEye) + pad;
-      distance =
-          std::max({distance, depth + (std::abs(d.dot(right)) + pad) / tanH,
-                    depth + (std::abs(d.dot(up)) + pad) / tanV});
+      distance = std::max(
+          {distance, depth + (std::abs(d.dot(right)) + pad) / tanH, depth + (std::abs(d.dot(up)) + pad) / tanV});
     }
     double xLo = 1e300, xHi = -1e300, yLo = 1e300, yHi = -1e300;
     for (const Vec3 &p : points) {
@@ -133,8 +113,7 @@ std::pair<Vec3, double> fitPoints(const std::vector<Vec3> &points, double pad,
   return {target, distance * 1.03};
 }
 
-OrbitAngles orbitAngles(const scene::SceneSpec &spec,
-                        const model::RollingModel &model) {
+OrbitAngles orbitAngles(const scene::SceneSpec &spec, const model::RollingModel &model) {
   OrbitAngles a{spec.render.azimuthDeg * kDeg, spec.render.elevationDeg * kDeg};
   const bool azimuthGiven = spec.locations.contains("render.azimuth_deg");
   const bool elevationGiven = spec.locations.contains("render.elevation_deg");
@@ -143,17 +122,15 @@ OrbitAngles orbitAngles(const scene::SceneSpec &spec,
     const Vec3 n = look.up;
     if (std::abs(n.z()) < 0.5) {
       // A wall: look at it from its side, a little from above.
-      if (!azimuthGiven)
-        a.azimuth = std::atan2(n.y(), n.x()) - 25.0 * kDeg;
-      if (!elevationGiven)
-        a.elevation = 14.0 * kDeg;
+      if (!azimuthGiven) a.azimuth = std::atan2(n.y(), n.x()) - 25.0 * kDeg;
+      if (!elevationGiven) a.elevation = 14.0 * kDeg;
     } else if (spec.render.strobe > 1 && !elevationGiven) {
       // From high up: seen at 40° the positions on the far and near sides of
       // a circle overlap (eight around the lollipop circle are 2.4R apart,
       // foreshortened to 1.5R); at 70° they stand apart.
       a.elevation = 70.0 * kDeg;
     } else if (n.z() < 0.0 && !elevationGiven) {
-      a.elevation = -a.elevation; // a ceiling: look from below
+      a.elevation = -a.elevation;  // a ceiling: look from below
     }
   }
   return a;
@@ -165,16 +142,14 @@ namespace {
 // the surface as drawn (or any share below `useless`, once it is clear the
 // least is that low). eyeAt(s): the eye at arc length s.
 template <typename EyeAt>
-double leastVisibleShare(const model::RollingModel &model,
-                         const SightLines &surface, const EyeAt &eyeAt,
-                         double s0, double s1, double useless = 0.0) {
+double leastVisibleShare(const model::RollingModel &model, const SightLines &surface, const EyeAt &eyeAt, double s0,
+                         double s1, double useless = 0.0) {
   const double R = model.ballRadius;
   double least = 1.0;
   const int steps = s1 > s0 ? 48 : 0;
   for (int i = 0; i <= steps && least >= useless && least > 0.0; ++i) {
     const double s = steps == 0 ? s0 : s0 + (s1 - s0) * i / double(steps);
-    least = std::min(
-        least, surface.visibleShare(eyeAt(s), model.path->at(s).centre(R), R));
+    least = std::min(least, surface.visibleShare(eyeAt(s), model.path->at(s).centre(R), R));
   }
   return least;
 }
@@ -182,27 +157,24 @@ double leastVisibleShare(const model::RollingModel &model,
 // The share of the contact path on [s0, s1] the eye sees (points lifted a
 // little off the surface, so that the mesh's chords under them do not count).
 template <typename EyeAt>
-double visiblePathShare(const model::RollingModel &model,
-                        const SightLines &surface, const EyeAt &eyeAt,
-                        double s0, double s1) {
+double visiblePathShare(const model::RollingModel &model, const SightLines &surface, const EyeAt &eyeAt, double s0,
+                        double s1) {
   const double R = model.ballRadius;
   int seen = 0;
   for (int i = 0; i <= 96; ++i) {
     const double s = s0 + (s1 - s0) * i / 96.0;
     const geometry::DarbouxSample f = model.path->at(s);
-    if (!surface.blocked(eyeAt(s), f.point + 0.05 * R * f.normal, 0.05 * R))
-      ++seen;
+    if (!surface.blocked(eyeAt(s), f.point + 0.05 * R * f.normal, 0.05 * R)) ++seen;
   }
   return seen / 97.0;
 }
 
 // The angle between two view directions, in degrees.
 double turnDeg(const OrbitAngles &a, const OrbitAngles &b) {
-  return std::acos(std::clamp(towardEye(a).dot(towardEye(b)), -1.0, 1.0)) /
-         kDeg;
+  return std::acos(std::clamp(towardEye(a).dot(towardEye(b)), -1.0, 1.0)) / kDeg;
 }
 
-} // namespace
+}  // namespace
 
 // The default camera keeps the ball in sight: where the scene leaves the
 // orbit angles free, try views round the given one (each step of turn
@@ -213,9 +185,9 @@ double turnDeg(const OrbitAngles &a, const OrbitAngles &b) {
 // that orbits with the ball's longitude, starting from the given azimuth.
 // An inside sphere is cut open towards the eye (BallView), so its view
 // already sees in.
-CameraFraming::Unhidden CameraFraming::unhiddenAngles(
-    OrbitAngles base, double s0, double s1, bool azimuthFree,
-    bool elevationFree, bool mayOrbit, double maxTurnDeg, bool mayLower) const {
+CameraFraming::Unhidden CameraFraming::unhiddenAngles(OrbitAngles base, double s0, double s1, bool azimuthFree,
+                                                      bool elevationFree, bool mayOrbit, double maxTurnDeg,
+                                                      bool mayLower, bool follow) const {
   Unhidden out{base, false, 0.0};
   const bool cutOpen =
       model_.surface && model_.surface->look().cutAwayTowardEye;
@@ -225,10 +197,13 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(
                         double(std::max<long long>(spec_.render.height, 1));
   const double R = model_.ballRadius;
   auto stillEye = [&](const OrbitAngles &a) {
-    const auto [target, distance] =
-        fitPoints(extent_.points, R, a, spec_.render.fovDeg, aspect);
-    return Vec3(target +
-                spec_.render.distance.value_or(distance) * towardEye(a));
+    const auto [target, distance] = fitPoints(extent_.points, R, a, spec_.render.fovDeg, aspect);
+    return Vec3(target + spec_.render.distance.value_or(distance) * towardEye(a));
+  };
+  // A camera that follows the ball stands fitDistance(4R) from it.
+  const double followDistance = fitDistance(4.0 * R, spec_.render.fovDeg, aspect);
+  auto eyeFor = [&](const OrbitAngles& a, double s, const Vec3& still) {
+    return follow ? Vec3(model_.path->at(s).centre(R) + followDistance * towardEye(a)) : still;
   };
 
   struct Candidate {
@@ -236,38 +211,25 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(
     double cost;
   };
   std::vector<Candidate> candidates;
-  const double below =
-      base.elevation < 0.0 ? -1.0 : 1.0; // a view from below stays below
-  for (const double turn :
-       {0.0, 30.0, -30.0, 60.0, -60.0, 90.0, -90.0, 135.0, -135.0, 180.0}) {
-    if (turn != 0.0 && !azimuthFree)
-      break;
+  const double below = base.elevation < 0.0 ? -1.0 : 1.0;  // a view from below stays below
+  for (const double turn : {0.0, 30.0, -30.0, 60.0, -60.0, 90.0, -90.0, 135.0, -135.0, 180.0}) {
+    if (turn != 0.0 && !azimuthFree) break;
     // (A storyboard's segment may also look from lower down: round a
     // torus's tube or down a sphere's meridian the ball passes under the
     // rim a high view sees.)
-    for (const double degrees :
-         {0.0, 35.0, 45.0, 55.0, 65.0, 75.0, -15.0, -5.0}) {
-      if (degrees != 0.0 && !elevationFree)
-        break;
-      if (degrees < 0.0 && !mayLower)
-        break;
-      const double elevation =
-          degrees < 0.0
-              ? below * std::min(below * base.elevation, -degrees * kDeg)
-              : below * std::max(below * base.elevation, degrees * kDeg);
-      if (degrees != 0.0 && elevation == base.elevation)
-        continue;
+    for (const double degrees : {0.0, 35.0, 45.0, 55.0, 65.0, 75.0, -15.0, -5.0}) {
+      if (degrees != 0.0 && !elevationFree) break;
+      if (degrees < 0.0 && !mayLower) break;
+      const double elevation = degrees < 0.0 ? below * std::min(below * base.elevation, -degrees * kDeg)
+                                             : below * std::max(below * base.elevation, degrees * kDeg);
+      if (degrees != 0.0 && elevation == base.elevation) continue;
       const OrbitAngles angles{base.azimuth + turn * kDeg, elevation};
-      if (turnDeg(angles, base) > maxTurnDeg)
-        continue;
-      candidates.push_back(
-          {angles, std::abs(turn) / 30.0 +
-                       std::abs(elevation - base.elevation) / kDeg / 10.0});
+      if (turnDeg(angles, base) > maxTurnDeg) continue;
+      candidates.push_back({angles, std::abs(turn) / 30.0 + std::abs(elevation - base.elevation) / kDeg / 10.0});
     }
   }
-  std::stable_sort(
-      candidates.begin(), candidates.end(),
-      [](const Candidate &x, const Candidate &y) { return x.cost < y.cost; });
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Candidate &x, const Candidate &y) { return x.cost < y.cost; });
   // The share is sampled (25 rays, 49 places) for a full-view lens; the
   // text layout narrows the lens later and moves the eye a little, so a view
   // that sees ≥ 96 % is preferred to one that only just sees 90 %.
@@ -280,28 +242,21 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(
   double bestShare = -1.0;
   for (const Candidate &c : candidates) {
     const Vec3 eye = stillEye(c.angles);
-    auto eyeAt = [&](double) { return eye; };
-    const double share = leastVisibleShare(model_, *extent_.surface, eyeAt, s0,
-                                           s1, std::min(0.9, bestShare));
+    auto eyeAt = [&](double s) { return eyeFor(c.angles, s, eye); };
+    const double share = leastVisibleShare(model_, *extent_.surface, eyeAt, s0, s1, std::min(0.9, bestShare));
     if (share > bestShare + 1e-9) {
       bestShare = share;
       leastHidden = &c;
     }
     if (share >= 0.9)
-      seen.push_back(
-          {&c, share,
-           visiblePathShare(model_, *extent_.surface, eyeAt, s0, s1) -
-               0.05 * c.cost});
-    if (share >= 0.96 && c.cost == 0.0)
-      break; // the given view sees it all
+      seen.push_back({&c, share, visiblePathShare(model_, *extent_.surface, eyeAt, s0, s1) - 0.05 * c.cost});
+    if (share >= 0.96 && c.cost == 0.0) break;  // the given view sees it all
   }
   out.share = bestShare;
   for (const double enough : {0.96, 0.9}) {
     const Seen *chosen = nullptr;
     for (const Seen &v : seen)
-      if (v.share >= enough &&
-          (chosen == nullptr || v.score > chosen->score + 1e-9))
-        chosen = &v;
+      if (v.share >= enough && (chosen == nullptr || v.score > chosen->score + 1e-9)) chosen = &v;
     if (chosen) {
       out.angles = chosen->candidate->angles;
       out.share = chosen->share;
@@ -323,114 +278,102 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(
   if (azimuthFree && mayOrbit && offAxis && s1 > s0) {
     const double offset = base.azimuth - longitude(s0);
     for (const double degrees : {0.0, 35.0, 45.0, 55.0, 65.0, 75.0}) {
-      if (degrees != 0.0 && !elevationFree)
-        break;
-      const double elevation =
-          below * std::max(below * base.elevation, degrees * kDeg);
-      if (turnDeg({base.azimuth, elevation}, base) > maxTurnDeg)
-        continue;
+      if (degrees != 0.0 && !elevationFree) break;
+      const double elevation = below * std::max(below * base.elevation, degrees * kDeg);
+      if (turnDeg({base.azimuth, elevation}, base) > maxTurnDeg) continue;
       auto eyeAt = [&](double s) {
-        return stillEye({longitude(s) + offset, elevation});
+        const OrbitAngles a{longitude(s) + offset, elevation};
+        return follow ? eyeFor(a, s, Vec3::Zero()) : stillEye(a);
       };
-      const double share =
-          leastVisibleShare(model_, *extent_.surface, eyeAt, s0, s1);
+      const double share = leastVisibleShare(model_, *extent_.surface, eyeAt, s0, s1);
       if (share > bestShare + 1e-9) {
         out = {{base.azimuth, elevation}, true, offset, share};
         bestShare = share;
       }
-      if (share >= 0.9)
-        return out;
+      if (share >= 0.9) return out;
     }
-    if (out.orbits)
-      return out;
+    if (out.orbits) return out;
   }
   // Last, a camera that turns as the ball goes (round a torus's tube no
-  // still view sees it all): view directions at 17 places along [s0, s1],
+  // still view sees it all): view directions at 33 places along [s0, s1],
   // each seeing the ball there, chosen (dynamic programming) for the least
   // sum of squared turns from the given view and between places; the
   // camera turns between them with s.
   if (mayOrbit && azimuthFree && elevationFree && s1 > s0) {
-    constexpr int kPlaces = 17;
+    constexpr int kPlaces = 33;
     std::vector<OrbitAngles> directions;
-    for (const double turn : {0.0, 30.0, -30.0, 60.0, -60.0, 90.0, -90.0, 120.0,
-                              -120.0, 150.0, -150.0, 180.0})
-      for (const double degrees : {80.0, 60.0, 35.0, 10.0, -10.0, -35.0, -60.0})
+    for (const double turn : {0.0, 30.0, -30.0, 60.0, -60.0, 90.0, -90.0, 120.0, -120.0, 150.0, -150.0, 180.0})
+      for (const double degrees : {70.0, 50.0, 30.0, 10.0, -10.0, -30.0, -50.0})
         directions.push_back({base.azimuth + turn * kDeg, degrees * kDeg});
     std::vector<Vec3> eyes;
-    for (const OrbitAngles &d : directions)
-      eyes.push_back(stillEye(d));
+    for (const OrbitAngles &d : directions) eyes.push_back(stillEye(d));
     const std::size_t n = directions.size();
-    std::vector<std::vector<double>> cost(kPlaces,
-                                          std::vector<double>(n, 1e300));
-    std::vector<std::vector<std::size_t>> from(kPlaces,
-                                               std::vector<std::size_t>(n, 0));
-    for (int i = 0; i < kPlaces; ++i) {
-      const double s = s0 + (s1 - s0) * i / double(kPlaces - 1);
-      const Vec3 centre = model_.path->at(s).centre(R);
-      for (std::size_t j = 0; j < n; ++j) {
-        if (extent_.surface->visibleShare(eyes[j], centre, R) < 0.95)
-          continue;
-        if (i == 0) {
-          cost[0][j] = std::pow(turnDeg(base, directions[j]), 2);
-          continue;
-        }
-        for (std::size_t k = 0; k < n; ++k) {
-          const double c = cost[i - 1][k] +
-                           std::pow(turnDeg(directions[k], directions[j]), 2);
-          if (c < cost[i][j]) {
-            cost[i][j] = c;
-            from[i][j] = k;
+    // All 25 sight lines clear where that can be had, else 95 % of them.
+    for (const double enough : {0.99, 0.95}) {
+      std::vector<std::vector<double>> cost(kPlaces, std::vector<double>(n, 1e300));
+      std::vector<std::vector<std::size_t>> from(kPlaces, std::vector<std::size_t>(n, 0));
+      for (int i = 0; i < kPlaces; ++i) {
+        const double s = s0 + (s1 - s0) * i / double(kPlaces - 1);
+        const Vec3 centre = model_.path->at(s).centre(R);
+        for (std::size_t j = 0; j < n; ++j) {
+          // Seen here and half-way to each neighbouring place: the camera
+          // passes between two places' directions there.
+          bool seenAround = true;
+          for (const double ds : {0.0, -0.5, 0.5}) {
+            const double sa = std::clamp(s + ds * (s1 - s0) / double(kPlaces - 1), s0, s1);
+            const Vec3 c = ds == 0.0 ? centre : Vec3(model_.path->at(sa).centre(R));
+            if (extent_.surface->visibleShare(eyeFor(directions[j], sa, eyes[j]), c, R) < enough) seenAround = false;
+            if (!seenAround) break;
+          }
+          if (!seenAround) continue;
+          if (i == 0) {
+            cost[0][j] = std::pow(turnDeg(base, directions[j]), 2);
+            continue;
+          }
+          for (std::size_t k = 0; k < n; ++k) {
+            const double c = cost[i - 1][k] + std::pow(turnDeg(directions[k], directions[j]), 2);
+            if (c < cost[i][j]) {
+              cost[i][j] = c;
+              from[i][j] = k;
+            }
           }
         }
       }
-    }
-    std::size_t last = 0;
-    for (std::size_t j = 1; j < n; ++j)
-      if (cost[kPlaces - 1][j] < cost[kPlaces - 1][last])
-        last = j;
-    if (cost[kPlaces - 1][last] < 1e299) {
-      std::vector<Keyframe> keys(kPlaces);
-      for (int i = kPlaces - 1; i >= 0; --i) {
-        keys[std::size_t(i)] = {s0 + (s1 - s0) * i / double(kPlaces - 1),
-                                directions[last]};
-        last = from[std::size_t(i)][last];
+      std::size_t last = 0;
+      for (std::size_t j = 1; j < n; ++j)
+        if (cost[kPlaces - 1][j] < cost[kPlaces - 1][last]) last = j;
+      if (cost[kPlaces - 1][last] < 1e299) {
+        std::vector<Keyframe> keys(kPlaces);
+        for (int i = kPlaces - 1; i >= 0; --i) {
+          keys[std::size_t(i)] = {s0 + (s1 - s0) * i / double(kPlaces - 1), directions[last]};
+          last = from[std::size_t(i)][last];
+        }
+        out = {keys.front().angles, false, 0.0, 0.9};
+        out.keys = std::move(keys);
+        return out;
       }
-      out = {keys.front().angles, false, 0.0, 0.9};
-      out.keys = std::move(keys);
-      return out;
     }
   }
-  if (leastHidden)
-    out.angles = leastHidden->angles;
+  if (leastHidden) out.angles = leastHidden->angles;
   return out;
 }
 
 OrbitAngles CameraFraming::along(const std::vector<Keyframe> &keys, double s) {
-  if (s <= keys.front().s)
-    return keys.front().angles;
-  if (s >= keys.back().s)
-    return keys.back().angles;
+  if (s <= keys.front().s) return keys.front().angles;
+  if (s >= keys.back().s) return keys.back().angles;
   std::size_t i = 0;
-  while (i + 2 < keys.size() && s > keys[i + 1].s)
-    ++i;
+  while (i + 2 < keys.size() && s > keys[i + 1].s) ++i;
   // Between two places, the view direction turns the short way (its unit
   // vectors mixed, then normalised): no spin about the vertical.
   const double t = (s - keys[i].s) / std::max(keys[i + 1].s - keys[i].s, 1e-12);
-  const Vec3 d = ((1.0 - t) * towardEye(keys[i].angles) +
-                  t * towardEye(keys[i + 1].angles))
-                     .normalized();
-  const double azimuth = std::hypot(d.x(), d.y()) > 1e-9
-                             ? std::atan2(d.y(), d.x())
-                             : keys[i].angles.azimuth;
+  const Vec3 d = ((1.0 - t) * towardEye(keys[i].angles) + t * towardEye(keys[i + 1].angles)).normalized();
+  const double azimuth = std::hypot(d.x(), d.y()) > 1e-9 ? std::atan2(d.y(), d.x()) : keys[i].angles.azimuth;
   // The azimuth stays near the keys' own (no 2π jump).
   const double near = keys[i].angles.azimuth;
-  return {near + std::remainder(azimuth - near, 2.0 * std::numbers::pi),
-          std::asin(std::clamp(d.z(), -1.0, 1.0))};
+  return {near + std::remainder(azimuth - near, 2.0 * std::numbers::pi), std::asin(std::clamp(d.z(), -1.0, 1.0))};
 }
 
-CameraFraming::CameraFraming(const scene::SceneSpec &spec,
-                             const model::RollingModel &model,
-                             FrameExtent extent)
+CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingModel &model, FrameExtent extent)
     : spec_(spec), model_(model), extent_(std::move(extent)) {
   const OrbitAngles sceneAngles = orbitAngles(spec, model);
   bool azimuthGiven = spec.locations.contains("render.azimuth_deg");
@@ -438,16 +381,12 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec,
   Shot shot{sceneAngles.azimuth, sceneAngles.elevation, spec.render.fovDeg,
             std::nullopt,        spec.render.distance,  spec.render.follow};
   if (spec.render.target)
-    shot.target = Vec3((*spec.render.target)[0], (*spec.render.target)[1],
-                       (*spec.render.target)[2]);
-  auto freeCamera = [](const Shot &sh) {
-    return !sh.follow && !(sh.target && sh.distance);
-  };
+    shot.target = Vec3((*spec.render.target)[0], (*spec.render.target)[1], (*spec.render.target)[2]);
+  auto freeCamera = [](const Shot &sh) { return !sh.follow && !(sh.target && sh.distance); };
   if (spec.segments.empty()) {
     if (freeCamera(shot)) {
       const Unhidden u =
-          unhiddenAngles(sceneAngles, 0.0, model.path->length(), !azimuthGiven,
-                         !elevationGiven, true, 360.0);
+          unhiddenAngles(sceneAngles, 0.0, model.path->length(), !azimuthGiven, !elevationGiven, true, 360.0);
       shot.azimuth = u.angles.azimuth;
       shot.elevation = u.angles.elevation;
       shot.orbits = u.orbits;
@@ -472,88 +411,72 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec,
     }
     shot.azimuth = previous.azimuth;
     shot.elevation = previous.elevation;
-    if (!shot.keys.empty() && k > 0)
-      previous = along(shot.keys, model.segments[k].start);
+    if (!shot.keys.empty() && k > 0) previous = along(shot.keys, model.segments[k].start);
     shot.azimuth = previous.azimuth;
     shot.elevation = previous.elevation;
     shot.orbits = false;
     shot.orbitOffset = 0.0;
     shot.keys.clear();
-    if (c.azimuthDeg)
-      shot.azimuth = *c.azimuthDeg * kDeg;
-    if (c.elevationDeg)
-      shot.elevation = *c.elevationDeg * kDeg;
+    if (c.azimuthDeg) shot.azimuth = *c.azimuthDeg * kDeg;
+    if (c.elevationDeg) shot.elevation = *c.elevationDeg * kDeg;
     azimuthGiven = azimuthGiven || c.azimuthDeg.has_value();
     elevationGiven = elevationGiven || c.elevationDeg.has_value();
-    if (c.fovDeg)
-      shot.fovDeg = *c.fovDeg;
-    if (c.distance)
-      shot.distance = *c.distance;
-    if (c.follow)
-      shot.follow = *c.follow;
-    if (c.follow && *c.follow)
-      shot.target.reset();
+    if (c.fovDeg) shot.fovDeg = *c.fovDeg;
+    if (c.distance) shot.distance = *c.distance;
+    if (c.follow) shot.follow = *c.follow;
+    if (c.follow && *c.follow) shot.target.reset();
     if (c.target) {
       shot.target = Vec3((*c.target)[0], (*c.target)[1], (*c.target)[2]);
       shot.follow = false;
     }
     shot.moveSeconds = kCameraMove;
-    if (freeCamera(shot)) {
+    if (!(shot.target && shot.distance)) {  // follow: the angles are still free
       model::SegmentSpan span = model.segments[k];
       // A hold looks ahead: its camera moves (while the ball rests) to the
       // view the next motion wants, where that segment adds no keys.
       if (span.end == span.start && k + 1 < spec.segments.size()) {
         const scene::CameraSpec &next = spec.segments[k + 1].camera;
-        if (!next.azimuthDeg && !next.elevationDeg && !next.follow &&
-            !next.target && !next.distance && !next.fovDeg)
+        if (!next.azimuthDeg && !next.elevationDeg && !next.follow && !next.target && !next.distance && !next.fovDeg)
           span = model.segments[k + 1];
       }
       const OrbitAngles base{shot.azimuth, shot.elevation};
-      Unhidden u = unhiddenAngles(base, span.start, span.end, !azimuthGiven,
-                                  !elevationGiven, true,
-                                  k == 0 ? 360.0 : kMaxFreeMoveDeg, true);
+      Unhidden u = unhiddenAngles(base, span.start, span.end, !azimuthGiven, !elevationGiven, true,
+                                  k == 0 ? 360.0 : kMaxFreeMoveDeg, false, shot.follow);
       if (k > 0 && u.share < 0.9)
-        u = unhiddenAngles(base, span.start, span.end, !azimuthGiven,
-                           !elevationGiven, true, 360.0, true);
+        u = unhiddenAngles(base, span.start, span.end, !azimuthGiven, !elevationGiven, true, 360.0, false,
+                           shot.follow);
       shot.azimuth = u.angles.azimuth;
       shot.elevation = u.angles.elevation;
       shot.orbits = u.orbits;
       shot.orbitOffset = u.orbitOffset;
       shot.keys = u.keys;
       // A turn larger than kMaxFreeMoveDeg takes longer than a second.
-      if (k > 0)
-        shot.moveSeconds = std::max(kCameraMove, turnDeg(previous, u.angles) /
-                                                     kMaxFreeMoveDeg);
+      if (k > 0) shot.moveSeconds = std::max(kCameraMove, turnDeg(previous, u.angles) / kMaxFreeMoveDeg);
     }
-    shot.keyed = !freeCamera(shot) || azimuthGiven || elevationGiven;
+    shot.keyed = (shot.target && shot.distance) || azimuthGiven || elevationGiven;
     shots_.push_back(shot);
   }
   findHiddenSpans();
 }
 
 bool CameraFraming::fixedByScene() const {
-  return std::all_of(shots_.begin(), shots_.end(),
-                     [](const Shot &s) { return s.target && s.distance; });
+  return std::all_of(shots_.begin(), shots_.end(), [](const Shot &s) { return s.target && s.distance; });
 }
 
 bool CameraFraming::orbits() const {
-  return std::any_of(shots_.begin(), shots_.end(),
-                     [](const Shot &s) { return s.orbits; });
+  return std::any_of(shots_.begin(), shots_.end(), [](const Shot &s) { return s.orbits; });
 }
 
 bool CameraFraming::moving(const StoryPlace &story) const {
   const std::size_t k = std::min(story.segment, shots_.size() - 1);
-  return k > 0 &&
-         story.seconds < std::min(shots_[k].moveSeconds, story.duration);
+  return k > 0 && story.seconds < std::min(shots_[k].moveSeconds, story.duration);
 }
 
 bool CameraFraming::follows(const StoryPlace &story) const {
   return shots_[std::min(story.segment, shots_.size() - 1)].follow;
 }
 
-std::vector<std::string> CameraFraming::hiddenWarnings() const {
-  return hiddenWarnings_;
-}
+std::vector<std::string> CameraFraming::hiddenWarnings() const { return hiddenWarnings_; }
 
 // Where the scene's own keys fix the camera, check it against the sight
 // lines at the clip's frames (every frame, or about 600 spread over a long
@@ -577,100 +500,80 @@ void CameraFraming::findHiddenSpans() {
     const StoryPlace story = clock.place(frame);
     const double s = clock.arcLength(frame);
     const Aim aim = aimAt(story, w, h, s);
-    const Vec3 eye =
-        aim.target + aim.distance * towardEye({aim.azimuth, aim.elevation});
-    if (extent_.surface->visibleShare(eye, model_.path->at(s).centre(R), R) >=
-        0.9)
-      continue;
+    const Vec3 eye = aim.target + aim.distance * towardEye({aim.azimuth, aim.elevation});
+    if (extent_.surface->visibleShare(eye, model_.path->at(s).centre(R), R) >= 0.9) continue;
     Span &span = spans[std::min(story.segment, spans.size() - 1)];
     const double t = double(frame) / fps;
-    if (span.from < 0.0)
-      span.from = t;
+    if (span.from < 0.0) span.from = t;
     span.to = t + double(step) / fps;
   }
   for (std::size_t k = 0; k < spans.size(); ++k) {
-    if (spans[k].from < 0.0)
-      continue;
-    const std::string who = spec_.segments.empty()
-                                ? std::string("the scene")
-                                : scene::SceneSpec::segmentKey(k);
-    hiddenWarnings_.push_back(fmt::format(
-        "warning: {}: the camera hides the ball behind the surface (under 90 % "
-        "of it seen) from {:.2f} s to {:.2f} s "
-        "of the clip; {}",
-        who, spans[k].from, spans[k].to,
-        shots_[k].keyed ? "the scene's own camera keys fix this view (leave "
-                          "azimuth_deg / elevation_deg, target and "
-                          "follow out to let rollspin choose one)"
-                        : "no view rollspin tried keeps it in sight (set the "
-                          "camera keys of this segment)"));
+    if (spans[k].from < 0.0) continue;
+    const std::string who = spec_.segments.empty() ? std::string("the scene") : scene::SceneSpec::segmentKey(k);
+    hiddenWarnings_.push_back(
+        fmt::format("warning: {}: the camera hides the ball behind the surface (under 90 % "
+                    "of it seen) from {:.2f} s to {:.2f} s "
+                    "of the clip; {}",
+                    who, spans[k].from, spans[k].to,
+                    shots_[k].keyed ? "the scene's own camera keys fix this view (leave "
+                                      "azimuth_deg / elevation_deg, target and "
+                                      "follow out to let rollspin choose one)"
+                                    : "no view rollspin tried keeps it in sight (set the "
+                                      "camera keys of this segment)"));
   }
 }
 
-CameraFraming::Aim CameraFraming::aimOf(const Shot &shot, int w, int h,
-                                        double s) const {
+CameraFraming::Aim CameraFraming::aimOf(const Shot &shot, int w, int h, double s) const {
   OrbitAngles a{shot.azimuth, shot.elevation};
-  if (shot.orbits) { // with the ball round the z axis (see the constructor)
+  if (shot.orbits) {  // with the ball round the z axis (see the constructor)
     const Vec3 p = model_.path->at(s).point;
     a.azimuth = std::atan2(p.y(), p.x()) + shot.orbitOffset;
   }
-  if (!shot.keys.empty())
-    a = along(shot.keys, s);
+  if (!shot.keys.empty()) a = along(shot.keys, s);
   const double R = model_.ballRadius;
   // Fit into the window: a narrower field of view about its centre (the
   // projection is shifted off axis to put that centre there, ballCamera).
-  const Lens lens =
-      windowLens(window_, shot.fovDeg, double(w) / double(std::max(h, 1)));
+  const Lens lens = windowLens(window_, shot.fovDeg, double(w) / double(std::max(h, 1)));
   const double fovDeg = lens.fovDeg, aspect = lens.aspect;
   auto [target, distance] = fitPoints(extent_.points, R, a, fovDeg, aspect);
   if (shot.follow) {
     target = model_.path->at(s).centre(R);
     distance = fitDistance(4.0 * R, fovDeg, aspect);
   }
-  if (shot.target)
-    target = *shot.target;
-  if (shot.distance)
-    distance = *shot.distance;
+  if (shot.target) target = *shot.target;
+  if (shot.distance) distance = *shot.distance;
   return {target, distance, a.azimuth, a.elevation, shot.fovDeg};
 }
 
-CameraFraming::Aim CameraFraming::aimAt(const StoryPlace &story, int w, int h,
-                                        double s) const {
+CameraFraming::Aim CameraFraming::aimAt(const StoryPlace &story, int w, int h, double s) const {
   const std::size_t k = std::min(story.segment, shots_.size() - 1);
   const Aim to = aimOf(shots_[k], w, h, s);
   const double move = std::min(shots_[k].moveSeconds, story.duration);
-  if (k == 0 || !(story.seconds < move))
-    return to;
+  if (k == 0 || !(story.seconds < move)) return to;
   // On the way from the previous segment's camera: eased, the azimuth the
   // short way round. Equal cameras blend to themselves exactly.
   const Aim from = aimOf(shots_[k - 1], w, h, s);
   const double x = motion::ease(scene::Easing::Smooth, story.seconds / move);
   auto mix = [x](double a, double b) { return a + (b - a) * x; };
-  const double turn =
-      std::remainder(to.azimuth - from.azimuth, 2.0 * std::numbers::pi);
-  return {from.target + (to.target - from.target) * x,
-          mix(from.distance, to.distance), from.azimuth + turn * x,
+  const double turn = std::remainder(to.azimuth - from.azimuth, 2.0 * std::numbers::pi);
+  return {from.target + (to.target - from.target) * x, mix(from.distance, to.distance), from.azimuth + turn * x,
           mix(from.elevation, to.elevation), mix(from.fovDeg, to.fovDeg)};
 }
 
-render::View CameraFraming::ballCamera(int x, int y, int w, int h, double s,
-                                       const StoryPlace &story) const {
+render::View CameraFraming::ballCamera(int x, int y, int w, int h, double s, const StoryPlace &story) const {
   const Aim aim = aimAt(story, w, h, s);
   const OrbitAngles a{aim.azimuth, aim.elevation};
   const double R = model_.ballRadius;
   const Vec3 target = aim.target;
   const double sceneRadius = extent_.radius + 3.0 * R;
-  render::View v = orbitView(x, y, w, h, toGlm(target), aim.distance, a,
-                             aim.fovDeg, sceneRadius);
+  render::View v = orbitView(x, y, w, h, toGlm(target), aim.distance, a, aim.fovDeg, sceneRadius);
   if (!isWholeView(window_)) {
     // Off axis: the view's axis (through the target) meets the image at the
     // window's centre, not the view's.
-    const float nearPlane =
-        float(std::max(0.02 * aim.distance, aim.distance - 2.5 * sceneRadius));
+    const float nearPlane = float(std::max(0.02 * aim.distance, aim.distance - 2.5 * sceneRadius));
     const float farPlane = float(aim.distance + 4.0 * sceneRadius);
-    v.camera.clipFromView = offAxisProjection(
-        window_, aim.fovDeg, double(w) / double(std::max(h, 1)), nearPlane,
-        farPlane);
+    v.camera.clipFromView =
+        offAxisProjection(window_, aim.fovDeg, double(w) / double(std::max(h, 1)), nearPlane, farPlane);
   }
   glm::vec3 up(0, 0, 1);
   if (const geometry::SurfaceLook look = model_.surface ? model_.surface->look() : geometry::SurfaceLook{};
@@ -679,21 +582,18 @@ render::View CameraFraming::ballCamera(int x, int y, int w, int h, double s,
     // A wall: light from the ceiling as well as from in front, so that the
     // ball's shadow falls below it on the wall, where it reads as a shadow,
     // not straight behind it as a dark rim around the ball.
-    if (std::abs(up.z) < 0.7f)
-      up = glm::normalize(up + glm::vec3(0.0f, 0.0f, 1.5f));
+    if (std::abs(up.z) < 0.7f) up = glm::normalize(up + glm::vec3(0.0f, 0.0f, 1.5f));
   }
   const glm::vec3 eyeDir = glm::normalize(v.camera.position - toGlm(target));
   // The shadow box hugs the ball (a strobe: all of them), see render::Light.
   if (spec_.render.strobe > 1) {
-    v.light =
-        keyLight(up, eyeDir, toGlm(extent_.centre), float(extent_.radius + R));
+    v.light = keyLight(up, eyeDir, toGlm(extent_.centre), float(extent_.radius + R));
   } else {
-    v.light = keyLight(up, eyeDir, toGlm(model_.path->at(s).centre(R)),
-                       float(1.8 * R));
+    v.light = keyLight(up, eyeDir, toGlm(model_.path->at(s).centre(R)), float(1.8 * R));
   }
   v.light.shadowSoftness = float(0.12 * R);
   v.light.shadow = spec_.render.shadow;
   return v;
 }
 
-} // namespace rollspin::draw
+}  // namespace rollspin::draw

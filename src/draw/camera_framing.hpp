@@ -22,7 +22,7 @@
 namespace rollspin::draw {
 
 struct OrbitAngles {
-  double azimuth = 0.0, elevation = 0.0; // radians
+  double azimuth = 0.0, elevation = 0.0;  // radians
 };
 
 // The unit vector from the target towards the eye.
@@ -31,19 +31,16 @@ geometry::Vec3 towardEye(const OrbitAngles &a);
 // render.azimuth_deg / elevation_deg, with the defaults a surface asks for
 // where the scene leaves them out (a wall from its side, a ceiling from
 // below, a strobe from high up).
-OrbitAngles orbitAngles(const scene::SceneSpec &spec,
-                        const model::RollingModel &model);
+OrbitAngles orbitAngles(const scene::SceneSpec &spec, const model::RollingModel &model);
 
 // A key light from the upper left, slightly in front of the subject; its
 // shadow map covers the sphere (centre, radius).
-render::Light keyLight(const glm::vec3 &up, const glm::vec3 &eyeDirection,
-                       const glm::vec3 &centre, float radius);
+render::Light keyLight(const glm::vec3 &up, const glm::vec3 &eyeDirection, const glm::vec3 &centre, float radius);
 
 // A view of the rectangle (x, y, w, h) looking at `target` from `distance`
 // along the orbit angles, z up; near/far planes enclose sceneRadius.
-render::View orbitView(int x, int y, int w, int h, const glm::vec3 &target,
-                       double distance, const OrbitAngles &a, double fovDeg,
-                       double sceneRadius);
+render::View orbitView(int x, int y, int w, int h, const glm::vec3 &target, double distance, const OrbitAngles &a,
+                       double fovDeg, double sceneRadius);
 
 // The narrower lens that frames a subject into `window` of a view seen with
 // (fovDeg, aspect), and the off-axis projection that puts that lens's axis
@@ -53,30 +50,28 @@ struct Lens {
 };
 Lens windowLens(const NdcWindow &window, double fovDeg, double aspect);
 bool isWholeView(const NdcWindow &window);
-glm::mat4 offAxisProjection(const NdcWindow &window, double fovDeg,
-                            double aspect, float nearPlane, float farPlane);
+glm::mat4 offAxisProjection(const NdcWindow &window, double fovDeg, double aspect, float nearPlane, float farPlane);
 
 // Distance at which a sphere of radius r fills the smaller field of view.
 double fitDistance(double radius, double fovDeg, double aspect);
 
 // Target and distance that keep every point (padded by `pad`) inside the
 // field of view, seen from the orbit direction.
-std::pair<geometry::Vec3, double>
-fitPoints(const std::vector<geometry::Vec3> &points, double pad,
-          const OrbitAngles &a, double fovDeg, double aspect);
+std::pair<geometry::Vec3, double> fitPoints(const std::vector<geometry::Vec3> &points, double pad, const OrbitAngles &a,
+                                            double fovDeg, double aspect);
 
 // What the default camera keeps in view: sample points (each padded by the
 // ball's radius when framed) and the bounding sphere of all that moves; and
 // the drawn surface, which can hide the ball (none for a plane).
 struct FrameExtent {
   std::vector<geometry::Vec3> points;
-  geometry::Vec3 centre = geometry::Vec3::Zero(); // shadow-map centre
+  geometry::Vec3 centre = geometry::Vec3::Zero();  // shadow-map centre
   double radius = 1.0;
   std::shared_ptr<const SightLines> surface;
 };
 
 class CameraFraming {
-public:
+ public:
   // A camera change between segments moves smoothly (3x² − 2x³) over this
   // many seconds (or the whole segment, when it is shorter).
   static constexpr double kCameraMove = 1.0;
@@ -88,16 +83,13 @@ public:
 
   // Cameras: [render]'s (with the defaults orbitAngles derives), then each
   // segment's keys laid over the previous segment's camera.
-  CameraFraming(const scene::SceneSpec &spec, const model::RollingModel &model,
-                FrameExtent extent);
+  CameraFraming(const scene::SceneSpec &spec, const model::RollingModel &model, FrameExtent extent);
 
   // The camera of a frame: its segment's, or on the way there from the
   // previous segment's during the first kCameraMove seconds.
-  [[nodiscard]] Aim aimAt(const motion::StoryPlace &story, int w, int h,
-                          double s) const;
+  [[nodiscard]] Aim aimAt(const motion::StoryPlace &story, int w, int h, double s) const;
   // The ball view's camera and key light for the rectangle (x, y, w, h).
-  [[nodiscard]] render::View ballCamera(int x, int y, int w, int h, double s,
-                                        const motion::StoryPlace &story) const;
+  [[nodiscard]] render::View ballCamera(int x, int y, int w, int h, double s, const motion::StoryPlace &story) const;
 
   // Frame the subject into this part of the ball view (the rest is left to
   // text); the full view by default. Explicit distance/target keys ignore it.
@@ -124,7 +116,7 @@ public:
   // a larger turn takes longer than kCameraMove.
   static constexpr double kMaxFreeMoveDeg = 40.0;
 
-private:
+ private:
   // A view direction the camera passes through at arc length s.
   struct Keyframe {
     double s = 0.0;
@@ -132,48 +124,44 @@ private:
   };
   struct Shot {
     double azimuth = 0.0, elevation = 0.0,
-           fovDeg = 32.0; // radians, radians, degrees
+           fovDeg = 32.0;  // radians, radians, degrees
     std::optional<geometry::Vec3> target;
     std::optional<double> distance;
     bool follow = false;
-    bool orbits = false; // the azimuth follows the ball's longitude (a path
-                         // round the z axis)
-    double orbitOffset = 0.0; // ... plus this
-    double moveSeconds =
-        kCameraMove;    // the move here from the previous segment's camera
-    bool keyed = false; // the scene's keys fix (part of) this camera
-    std::vector<Keyframe> keys; // non-empty: the view direction turns with s
-                                // through these (unhiddenAngles)
+    bool orbits = false;               // the azimuth follows the ball's longitude (a path
+                                       // round the z axis)
+    double orbitOffset = 0.0;          // ... plus this
+    double moveSeconds = kCameraMove;  // the move here from the previous segment's camera
+    bool keyed = false;                // the scene's keys fix (part of) this camera
+    std::vector<Keyframe> keys;        // non-empty: the view direction turns with s
+                                       // through these (unhiddenAngles)
   };
   // A view chosen to keep the ball in sight over [s0, s1].
   struct Unhidden {
     OrbitAngles angles;
     bool orbits = false;
     double orbitOffset = 0.0;
-    double share = 1.0; // the least share of the ball seen (sight lines)
-    std::vector<Keyframe> keys; // see Shot
+    double share = 1.0;          // the least share of the ball seen (sight lines)
+    std::vector<Keyframe> keys;  // see Shot
   };
   // The view direction at s through keyframes (mixed between neighbours).
-  [[nodiscard]] static OrbitAngles along(const std::vector<Keyframe> &keys,
-                                         double s);
+  [[nodiscard]] static OrbitAngles along(const std::vector<Keyframe> &keys, double s);
   [[nodiscard]] Aim aimOf(const Shot &shot, int w, int h, double s) const;
   // The orbit angles `base`, turned where the surface would hide the ball on
   // [s0, s1] (azimuthFree/elevationFree: which the scene leaves open); with
   // mayOrbit, a view that orbits with the ball's longitude where no still
   // view sees it; maxTurnDeg bounds the turn away from `base`.
-  [[nodiscard]] Unhidden unhiddenAngles(OrbitAngles base, double s0, double s1,
-                                        bool azimuthFree, bool elevationFree,
-                                        bool mayOrbit, double maxTurnDeg,
-                                        bool mayLower = false) const;
+  [[nodiscard]] Unhidden unhiddenAngles(OrbitAngles base, double s0, double s1, bool azimuthFree, bool elevationFree,
+                                        bool mayOrbit, double maxTurnDeg, bool mayLower = false,
+                                        bool follow = false) const;
   void findHiddenSpans();
 
   const scene::SceneSpec &spec_;
   const model::RollingModel &model_;
   FrameExtent extent_;
   NdcWindow window_;
-  std::vector<Shot>
-      shots_; // one per storyboard segment (one for a scene without segments)
+  std::vector<Shot> shots_;  // one per storyboard segment (one for a scene without segments)
   std::vector<std::string> hiddenWarnings_;
 };
 
-} // namespace rollspin::draw
+}  // namespace rollspin::draw

@@ -409,6 +409,15 @@ void drawLabel(cairo_t* cr, FigureFonts& fonts, const LabelItem& label, const gl
   cairo_new_path(cr);
 }
 
+}  // namespace
+
+double figureFontHeightPerEm(const std::string& family) {
+  FigureFonts fonts(family);
+  return fonts.face(false, false).heightPerEm;
+}
+
+namespace {
+
 bool overlap(const View& a, const View& b) {
   return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
 }

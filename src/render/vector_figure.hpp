@@ -57,6 +57,10 @@ enum class MeshLayer {
 void hideBehindOpaque(media::Image& translucent, const std::vector<float>& translucentDepth,
                       const std::vector<float>& opaqueDepth);
 
+// The figure font's ascent + descent per em (regular face): a label of
+// sizePx pixels is set at sizePx / this em.
+[[nodiscard]] double figureFontHeightPerEm(const std::string& family);
+
 // BadInput at `where` when fontconfig has no font of that family.
 void checkFigureFont(const std::string& family, const SourceLoc& where);
 

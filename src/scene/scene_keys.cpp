@@ -213,10 +213,11 @@ std::vector<KeyInfo> buildRegistry() {
   add("render", "device", {"integer or string", "ROLLSPIN_EGL_DEVICE", {}, {}, "an EGL device index >= 0 or a DRM path \"/dev/dri/…\"", "", "the GPU an EGL render uses"});
 
   const FigureSpec& f = d.figure;
+  add("figure", "width", {"string", "(width_mm)", {}, {"column", "page"}, "not with width_mm or width_in", "", "a preset width: \"column\" = 85 mm, \"page\" = 175 mm"});
   add("figure", "width_mm", {"number", num(f.widthMm), closed(10, 2000), {}, "", "mm", "the figure's printed width"});
   add("figure", "width_in", {"number", "(width_mm)", closed(10 / 25.4, 2000 / 25.4), {}, "not with width_mm", "inches", "the width in inches instead"});
   add("figure", "font", {"string", inQuotes(f.font), {}, {}, "non-empty", "", "the labels' font family (fontconfig name)"});
-  add("figure", "font_size_pt", {"number", "the still's proportions", closed(2, 72), {}, "", "pt", "the body text size"});
+  add("figure", "font_size_pt", {"number", "8", closed(2, 72), {}, "", "pt", "the body text size"});
   add("figure", "transparent", {"boolean", f.transparent ? "true" : "false", {}, {}, "", "", "a transparent page (false: the views' backdrops)"});
 
   std::string facts;

@@ -186,6 +186,12 @@ void Reader::readFigure() {
   const auto mm = number(figure, "figure", "width_mm");
   const auto in = number(figure, "figure", "width_in");
   if (mm && in) failAt("figure.width_in", "conflicts with figure.width_mm: give the width once");
+  // The journals' two widths by name: a column (85 mm) or the page's text
+  // block (175 mm).
+  if (auto preset = text(figure, "figure", "width", {"column", "page"})) {
+    if (mm || in) failAt("figure.width", fmt::format("conflicts with figure.{}: give the width once", mm ? "width_mm" : "width_in"));
+    f.widthMm = *preset == "column" ? 85.0 : 175.0;
+  }
   if (mm || in) {
     const double widthMm = mm ? *mm : *in * 25.4;
     if (!(widthMm >= 10.0 && widthMm <= 2000.0))

@@ -9,12 +9,11 @@
 // between the two are the ball seen (label gl).
 #include <gtest/gtest.h>
 
-#include <glm/glm.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <glm/glm.hpp>
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,7 +32,7 @@ using namespace rollspin::model;
 using namespace rollspin::motion;
 
 struct Disc {
-  glm::vec2 centre; // view pixels, y down
+  glm::vec2 centre;  // view pixels, y down
   float radius;
 };
 
@@ -41,24 +40,17 @@ struct Disc {
 // (its centre's projection is close enough to the ellipse's for a test at
 // this field of view; the radius is the cone's, measured on the image plane).
 Disc projectedDisc(const render::View &v, const render::MeshItem &ball) {
-  const glm::mat4 clipFromWorld =
-      v.camera.clipFromView * v.camera.viewFromWorld;
-  const glm::vec4 c =
-      clipFromWorld * glm::vec4(glm::vec3(ball.worldFromModel[3]), 1.0f);
+  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+  const glm::vec4 c = clipFromWorld * glm::vec4(glm::vec3(ball.worldFromModel[3]), 1.0f);
   const float R = glm::length(glm::vec3(ball.worldFromModel[0]));
-  const float radius = R * 0.5f * float(v.height) *
-                       v.camera.clipFromView[1][1] /
-                       std::sqrt(c.w * c.w - R * R);
-  return {{(c.x / c.w * 0.5f + 0.5f) * float(v.width),
-           (0.5f - c.y / c.w * 0.5f) * float(v.height)},
-          radius};
+  const float radius = R * 0.5f * float(v.height) * v.camera.clipFromView[1][1] / std::sqrt(c.w * c.w - R * R);
+  return {{(c.x / c.w * 0.5f + 0.5f) * float(v.width), (0.5f - c.y / c.w * 0.5f) * float(v.height)}, radius};
 }
 
 class BallInSight : public ::testing::Test {
-protected:
+ protected:
   static void SetUpTestSuite() {
-    context_ =
-        render::createContext().release(); // ROLLSPIN_GL chooses the backend
+    context_ = render::createContext().release();  // ROLLSPIN_GL chooses the backend
     renderer_ = new render::Renderer(*context_, render::ShaderLibrary{});
   }
   static void TearDownTestSuite() {
@@ -70,19 +62,14 @@ protected:
 
   // Measures every scene in `scenes` at 16:9 and 9:16; counts the balls
   // checked and those seen under 90 %.
-  static void measure(const std::vector<std::filesystem::path> &scenes,
-                      int &checked, int &hiddenSomewhere) {
+  static void measure(const std::vector<std::filesystem::path> &scenes, int &checked, int &hiddenSomewhere) {
     for (const auto &file : scenes) {
-      for (const auto &[width, height] :
-           {std::pair{480, 270}, std::pair{270, 480}}) {
+      for (const auto &[width, height] : {std::pair{480, 270}, std::pair{270, 480}}) {
         const scene::SceneSpec spec = loadScene(
-            file.string(), {"render.width=" + std::to_string(width),
-                            "render.height=" + std::to_string(height)});
-        if (spec.render.layout == scene::RenderLayout::Twin)
-          continue; // no ball to see
+            file.string(), {"render.width=" + std::to_string(width), "render.height=" + std::to_string(height)});
+        if (spec.render.layout == scene::RenderLayout::Twin) continue;  // no ball to see
         const RollingModel model = buildSceneModel(spec);
-        const SceneDrawer drawer(spec, model, nullptr,
-                                 makeSceneFacts(spec, model));
+        const SceneDrawer drawer(spec, model, nullptr, makeSceneFacts(spec, model));
         const double L = model.path->length();
         // A single path: seven places along it. A storyboard: its clip's
         // frames every quarter second (holds and camera moves included).
@@ -93,13 +80,11 @@ protected:
         std::vector<Place> places;
         if (spec.isStoryboard()) {
           const FrameClock clock = clipClock(spec, model);
-          const long long step =
-              std::max<long long>(1, std::llround(clock.fps().value() / 4.0));
+          const long long step = std::max<long long>(1, std::llround(clock.fps().value() / 4.0));
           for (long long f = 0; f < clock.frameCount(); f += step)
             places.push_back({clock.arcLength(f), clock.place(f)});
         } else {
-          for (int k = 0; k <= 6; ++k)
-            places.push_back({L * k / 6.0, storyPlaceAt(model, L * k / 6.0)});
+          for (int k = 0; k <= 6; ++k) places.push_back({L * k / 6.0, storyPlaceAt(model, L * k / 6.0)});
         }
         for (const auto &[s, story] : places) {
           FrameOrientations frame = solveFrame(spec, model, s);
@@ -111,14 +96,11 @@ protected:
           surfaceOnly.labels.clear();
           surfaceOnly.arrows.clear();
           surfaceOnly.meshes.clear();
-          for (render::View &v : surfaceOnly.views)
-            v.light.shadow = false;
+          for (render::View &v : surfaceOnly.views) v.light.shadow = false;
           std::vector<const render::MeshItem *> balls;
           for (const render::MeshItem &m : list.meshes) {
-            if (m.material.pattern == render::Pattern::Checker)
-              surfaceOnly.meshes.push_back(m);
-            if (m.material.pattern == render::Pattern::Texture)
-              balls.push_back(&m);
+            if (m.material.pattern == render::Pattern::Checker) surfaceOnly.meshes.push_back(m);
+            if (m.material.pattern == render::Pattern::Texture) balls.push_back(&m);
           }
           ASSERT_FALSE(balls.empty()) << file.stem();
           const media::Image without = renderer_->render(surfaceOnly);
@@ -130,35 +112,23 @@ protected:
             const Disc disc = projectedDisc(v, *ball);
             int area = 0, seen = 0;
             const int r = int(std::ceil(disc.radius)) + 1;
-            for (int y = int(disc.centre.y) - r; y <= int(disc.centre.y) + r;
-                 ++y)
-              for (int x = int(disc.centre.x) - r; x <= int(disc.centre.x) + r;
-                   ++x) {
-                if (glm::length(glm::vec2(float(x) + 0.5f, float(y) + 0.5f) -
-                                disc.centre) > disc.radius)
-                  continue;
+            for (int y = int(disc.centre.y) - r; y <= int(disc.centre.y) + r; ++y)
+              for (int x = int(disc.centre.x) - r; x <= int(disc.centre.x) + r; ++x) {
+                if (glm::length(glm::vec2(float(x) + 0.5f, float(y) + 0.5f) - disc.centre) > disc.radius) continue;
                 ++area;
-                if (x < 0 || y < 0 || x >= v.width || y >= v.height)
-                  continue; // outside the frame: not seen
+                if (x < 0 || y < 0 || x >= v.width || y >= v.height) continue;  // outside the frame: not seen
                 const int px = v.x + x, py = v.y + y;
                 int difference = 0;
                 for (int c = 0; c < 3; ++c)
-                  difference += std::abs(int(with.pixel(px, py)[c]) -
-                                         int(without.pixel(px, py)[c]));
-                if (difference > 6)
-                  ++seen;
+                  difference += std::abs(int(with.pixel(px, py)[c]) - int(without.pixel(px, py)[c]));
+                if (difference > 6) ++seen;
               }
-            ASSERT_GT(area, 20)
-                << file.stem() << ": the ball is too small to measure";
+            ASSERT_GT(area, 20) << file.stem() << ": the ball is too small to measure";
             const double share = double(seen) / area;
-            EXPECT_GE(share, 0.9)
-                << file.stem() << " " << width << "x" << height
-                << " at s = " << s << " of " << L << " (segment "
-                << story.segment + 1 << ", " << story.seconds << " s in)"
-                << ": " << seen << " of " << area
-                << " pixels of the ball's disc seen";
-            if (share < 0.9)
-              ++hiddenSomewhere;
+            EXPECT_GE(share, 0.9) << file.stem() << " " << width << "x" << height << " at s = " << s << " of " << L
+                                  << " (segment " << story.segment + 1 << ", " << story.seconds << " s in)"
+                                  << ": " << seen << " of " << area << " pixels of the ball's disc seen";
+            if (share < 0.9) ++hiddenSomewhere;
             ++checked;
           }
         }
@@ -169,13 +139,10 @@ protected:
 render::GlContext *BallInSight::context_ = nullptr;
 render::Renderer *BallInSight::renderer_ = nullptr;
 
-TEST_F(BallInSight,
-       EveryScenesDefaultCameraSeesNineTenthsOfTheBallAtEverySampledFrame) {
+TEST_F(BallInSight, EveryScenesDefaultCameraSeesNineTenthsOfTheBallAtEverySampledFrame) {
   std::vector<std::filesystem::path> scenes;
-  for (const auto &e :
-       std::filesystem::directory_iterator(test::sourceDir() / "scenes"))
-    if (e.path().extension() == ".toml")
-      scenes.push_back(e.path());
+  for (const auto &e : std::filesystem::directory_iterator(test::sourceDir() / "scenes"))
+    if (e.path().extension() == ".toml") scenes.push_back(e.path());
   std::sort(scenes.begin(), scenes.end());
   ASSERT_GE(scenes.size(), 21u);
   int checked = 0, hiddenSomewhere = 0;
@@ -187,10 +154,8 @@ TEST_F(BallInSight,
 // Storyboards written for the test, beyond those in scenes/: other segment
 // kinds on each curved surface, a partial camera key (elevation only), a
 // view from below, segments without holds between them.
-TEST_F(BallInSight,
-       StoryboardsWrittenForTheTestKeepTheBallInEveryQuarterSecond) {
-  const std::filesystem::path dir =
-      test::freshTempDir("ball_in_sight_storyboards");
+TEST_F(BallInSight, StoryboardsWrittenForTheTestKeepTheBallInEveryQuarterSecond) {
+  const std::filesystem::path dir = test::freshTempDir("ball_in_sight_storyboards");
   const std::vector<std::pair<std::string, std::string>> boards{
       {"cylinder-meridian-helix",
        "[ball]\nradius = 0.8\n[surface]\nkind = \"cylinder\"\nradius = 2.5\n"
@@ -234,5 +199,5 @@ TEST_F(BallInSight,
   EXPECT_EQ(hiddenSomewhere, 0);
 }
 
-} // namespace
-} // namespace rollspin::draw
+}  // namespace
+}  // namespace rollspin::draw

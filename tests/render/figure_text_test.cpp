@@ -1,0 +1,120 @@
+// Figures at journal sizes: for every scene in scenes/ (a still at its
+// middle, the lollipop also as an 8-position strobe) at 60, 85, 120 and 175
+// mm and at 6, 8 and 10 pt, the PDF's own text boxes (pdftotext -bbox) stay
+// on the page and no two lines overlap; the default body text is 7–9 pt
+// (--verbose). Subprocess runs of the CLI (label gl); needs poppler-utils.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "support/cli_runner.hpp"
+
+namespace rollspin {
+namespace {
+
+struct Word {
+  double x0, y0, x1, y1;
+  std::string text;
+};
+
+struct Page {
+  double width = 0.0, height = 0.0;
+  std::vector<Word> words;
+};
+
+// pdftotext -bbox writes XHTML: <page width=".." height=".."> and one
+// <word xMin=".." yMin=".." xMax=".." yMax="..">text</word> per word.
+Page readBoxes(const std::filesystem::path& pdf) {
+  const std::filesystem::path html = pdf.string() + ".html";
+  const std::string command = "pdftotext -bbox '" + pdf.string() + "' '" + html.string() + "'";
+  EXPECT_EQ(std::system(command.c_str()), 0) << command;
+  const std::string text = test::readFile(html);
+  Page page;
+  std::smatch m;
+  if (std::regex_search(text, m, std::regex(R"re(<page width="([0-9.]+)" height="([0-9.]+)")re"))) {
+    page.width = std::stod(m[1]);
+    page.height = std::stod(m[2]);
+  }
+  const std::regex word(
+      R"re(<word xMin="([0-9.\-]+)" yMin="([0-9.\-]+)" xMax="([0-9.\-]+)" yMax="([0-9.\-]+)">([^<]*)</word>)re");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it)
+    page.words.push_back({std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3]), std::stod((*it)[4]), (*it)[5]});
+  return page;
+}
+
+// Words of different lines overlap when their boxes share more than a
+// sliver (the font's boxes include the ascent and descent: lines a line
+// step apart touch at most).
+bool overlapping(const Word& a, const Word& b) {
+  const double w = std::min(a.x1, b.x1) - std::max(a.x0, b.x0), h = std::min(a.y1, b.y1) - std::max(a.y0, b.y0);
+  return w > 0.3 && h > 0.25 * std::min(a.y1 - a.y0, b.y1 - b.y0);
+}
+
+TEST(FigureText, EveryScenesFigureKeepsItsTextApartAndOnThePageAtJournalSizes) {
+  if (std::system("command -v pdftotext > /dev/null") != 0) GTEST_SKIP() << "pdftotext (poppler-utils) missing";
+  const std::filesystem::path dir = test::freshTempDir("figure_text");
+  std::vector<std::pair<std::string, std::vector<std::string>>> cases;
+  for (const auto& e : std::filesystem::directory_iterator(test::sourceDir() / "scenes"))
+    if (e.path().extension() == ".toml") cases.push_back({e.path().string(), {}});
+  std::sort(cases.begin(), cases.end());
+  cases.push_back({test::shippedScenePath("lollipop"), {"--set", "render.strobe=8"}});
+  int figures = 0;
+  for (const auto& [scene, extra] : cases)
+    for (const double mm : {60.0, 85.0, 120.0, 175.0})
+      for (const double pt : {6.0, 8.0, 10.0}) {
+        // Every scene at a column and 8 pt; the strobe at every size.
+        if (extra.empty() && !(mm == 85.0 && pt == 8.0)) continue;
+        const std::filesystem::path pdf = dir / ("f" + std::to_string(figures++) + ".pdf");
+        std::vector<std::string> args{"render", scene, "--still", "-o", pdf.string(), "--quiet", "--set",
+                                      "figure.width_mm=" + std::to_string(mm), "--set",
+                                      "figure.font_size_pt=" + std::to_string(pt), "--set",
+                                      "figure.font=Latin Modern Roman"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const test::CliResult r = test::runRollspin(args);
+        ASSERT_EQ(r.exitCode, 0) << scene << " " << mm << " mm " << pt << " pt: " << r.err;
+        const Page page = readBoxes(pdf);
+        const std::string where = std::filesystem::path(scene).stem().string() + " at " + std::to_string(int(mm)) +
+                                  " mm, " + std::to_string(int(pt)) + " pt";
+        ASSERT_GT(page.width, 0.0) << where;
+        ASSERT_FALSE(page.words.empty()) << where;
+        for (const Word& w : page.words) {
+          EXPECT_TRUE(w.x0 >= -0.5 && w.y0 >= -0.5 && w.x1 <= page.width + 0.5 && w.y1 <= page.height + 0.5)
+              << where << ": \"" << w.text << "\" leaves the page";
+        }
+        for (std::size_t i = 0; i < page.words.size(); ++i)
+          for (std::size_t j = i + 1; j < page.words.size(); ++j)
+            EXPECT_FALSE(overlapping(page.words[i], page.words[j]))
+                << where << ": \"" << page.words[i].text << "\" and \"" << page.words[j].text << "\" overlap";
+      }
+}
+
+TEST(FigureText, TheDefaultBodyTextIsBetweenSevenAndNinePointsAtAnyWidth) {
+  const std::filesystem::path dir = test::freshTempDir("figure_text_default");
+  for (const std::string width : {"figure.width_mm=60", "figure.width=column", "figure.width_mm=120", "figure.width=page"}) {
+    const test::CliResult r = test::runRollspin({"--verbose", "render", test::shippedScenePath("lollipop"), "--still",
+                                                 "-o", (dir / "f.pdf").string(), "--set", width});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.err, m, std::regex(R"(figure: ([0-9]+) mm wide, body text ([0-9.]+) pt)"))) << r.err;
+    const double pt = std::stod(m[2]);
+    EXPECT_GE(pt, 7.0) << width;
+    EXPECT_LE(pt, 9.0) << width;
+  }
+  // The presets are the journals' widths, and a preset with a width conflicts.
+  const test::CliResult column = test::runRollspin({"--verbose", "render", test::shippedScenePath("lollipop"), "--still",
+                                                    "-o", (dir / "c.pdf").string(), "--set", "figure.width=column"});
+  EXPECT_NE(column.err.find("figure: 85 mm wide"), std::string::npos) << column.err;
+  const test::CliResult both =
+      test::runRollspin({"render", test::shippedScenePath("lollipop"), "--still", "-o", (dir / "b.pdf").string(),
+                         "--set", "figure.width=page", "--set", "figure.width_mm=100"});
+  EXPECT_EQ(both.exitCode, 2);
+  EXPECT_NE(both.err.find("figure.width"), std::string::npos) << both.err;
+}
+
+}  // namespace
+}  // namespace rollspin

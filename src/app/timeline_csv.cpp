@@ -15,9 +15,15 @@ using namespace rollspin::model;
 using namespace rollspin::motion;
 
 spin::SolveStats writeTimelineCsv(const std::filesystem::path& out, const RollingModel& model,
-                                  const SolverChoice& choice, const spin::SampleArcLengths& sampleS) {
+                                  const SolverChoice& choice, const spin::SampleArcLengths& sampleS,
+                                  const spin::SolveStats& solved) {
   AtomicFile file(out);
   fmt::memory_buffer buffer;
+  fmt::format_to(std::back_inserter(buffer),
+                 "# rollspin timeline: {} with {} steps; error estimate of U(L) {:.2g} rad ({}; took {:.3g} s, "
+                 "the solve {:.3g} s)\n",
+                 spin::methodName(choice.method), solved.steps, solved.errorEstimate, solved.errorEstimateBasis,
+                 solved.errorEstimateSeconds, solved.seconds);
   // A storyboard adds the number of the segment each row is in (from 1).
   std::vector<std::pair<double, std::size_t>> motions;  // (start s, segment index) of each motion
   for (std::size_t k = 0; k < model.segments.size(); ++k)

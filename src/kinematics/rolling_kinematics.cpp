@@ -42,26 +42,30 @@ RollingKinematics::RollingKinematics(const geometry::ContactPath& path, double b
   for (double b : path_.breakpoints())
     if (b > 0.0 && b < path_.length()) cuts_.push_back(b);
   cuts_.push_back(path_.length());
-  if (settings_.fdStep <= 0.0) {
-    // Balance truncation (h⁸ C⁽⁹⁾) against round-off (ε|C|/h): about 1e-2 of
-    // the shortest length scale — R, the shortest segment, and the radii on
-    // which P and n turn. Those radii are estimated from P and n themselves
-    // (second and first differences on a coarse grid), never from κ.
-    double shortest = path_.length();
-    for (std::size_t i = 0; i + 1 < cuts_.size(); ++i) shortest = std::min(shortest, cuts_[i + 1] - cuts_[i]);
+  // Per segment: balance truncation (h⁸ C⁽⁹⁾) against round-off (ε|C|/h)
+  // with a spacing of about 1e-2 of the segment's shortest length scale — R,
+  // the segment's length, and the radii on which P and n turn there. Those
+  // radii are estimated from P and n themselves (second and first
+  // differences on a coarse grid), never from κ. Per segment, so that a tiny
+  // corner arc does not shrink the spacing (and grow the round-off) on the
+  // long straight pieces.
+  const double length = path_.length();
+  for (std::size_t seg = 0; seg + 1 < cuts_.size(); ++seg) {
+    const double a = cuts_[seg], b = cuts_[seg + 1], d = (b - a) / 512.0;
     double turning = 0.0;  // max |P''| and |n'| seen
-    for (std::size_t seg = 0; seg + 1 < cuts_.size(); ++seg) {
-      const double a = cuts_[seg], b = cuts_[seg + 1], d = (b - a) / 512.0;
-      for (int k = 1; k < 512; k += 4) {
-        const double s = a + k * d;
-        const Vec3 p0 = path_.point(s - d), p1 = path_.point(s), p2 = path_.point(s + d);
-        turning = std::max(turning, (p2 - 2.0 * p1 + p0).norm() / (d * d));
-        turning = std::max(turning, (path_.normal(s + d) - path_.normal(s - d)).norm() / (2.0 * d));
-      }
+    for (int k = 1; k < 512; k += 4) {
+      const double s = a + k * d;
+      const Vec3 p0 = path_.point(s - d), p1 = path_.point(s), p2 = path_.point(s + d);
+      turning = std::max(turning, (p2 - 2.0 * p1 + p0).norm() / (d * d));
+      turning = std::max(turning, (path_.normal(s + d) - path_.normal(s - d)).norm() / (2.0 * d));
     }
-    double scale = std::min(ballRadius_, shortest / 8.0);
+    double scale = std::min(ballRadius_, (b - a) / 8.0);
     if (turning > 0.0 && std::isfinite(turning)) scale = std::min(scale, 1.0 / turning);
-    settings_.fdStep = 1e-2 * scale;
+    fdSteps_.push_back(settings_.fdStep > 0.0 ? settings_.fdStep : 1e-2 * scale);
+    const double byLength = static_cast<double>(settings_.steps) * (b - a) / std::max(length, 1e-300);
+    const double byTurn =
+        settings_.minStepsPerRadian * (b - a) * ((std::isfinite(turning) ? turning : 0.0) + 1.0 / ballRadius_);
+    segmentSteps_.push_back(std::max<long long>(1, std::llround(std::max(byLength, std::ceil(byTurn)))));
   }
 }
 
@@ -76,7 +80,7 @@ Vec3 RollingKinematics::centreVelocity(double s) const {
 }
 
 Vec3 RollingKinematics::centreVelocity(double s, std::size_t seg) const {
-  const double a = cuts_[seg], b = cuts_[seg + 1], h = settings_.fdStep;
+  const double a = cuts_[seg], b = cuts_[seg + 1], h = fdSteps_[seg];
   // 9 nodes, centred when possible, shifted to stay inside [a, b]: 8th order.
   double first = s - 4.0 * h;
   if (first < a) first = a;
@@ -112,8 +116,7 @@ std::vector<Mat3> RollingKinematics::orientations(std::span<const double> sample
   std::size_t next = 0;
   for (std::size_t seg = 0; seg + 1 < cuts_.size(); ++seg) {
     const double a = cuts_[seg], b = cuts_[seg + 1];
-    const long long n = std::max<long long>(
-        1, std::llround(static_cast<double>(settings_.steps) * (b - a) / std::max(length, 1e-300)));
+    const long long n = segmentSteps_[seg];
     const double h = (b - a) / static_cast<double>(n);
     for (long long k = 0; k < n; ++k) {
       const double s = a + static_cast<double>(k) * h;

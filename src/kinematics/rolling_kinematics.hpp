@@ -21,8 +21,13 @@ using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 
 struct KinematicSettings {
-  long long steps = 20000;  // RK4 steps over the whole path
-  double fdStep = 0.0;      // finite-difference spacing; 0 → automatic
+  long long steps = 20000;  // RK4 steps over the whole path, shared by length
+  double fdStep = 0.0;      // finite-difference spacing; 0 → automatic, per segment
+  // At least this many steps per radian that ω turns or the ball rolls in a
+  // segment (length · (max|P''|, |n'| seen + 1/R)): a corner arc of radius
+  // r ≪ R turns ω through its whole angle in a length ∝ r, which a share by
+  // length leaves to one step. 0: by length only.
+  double minStepsPerRadian = 0.0;
 };
 
 class RollingKinematics {
@@ -49,6 +54,8 @@ class RollingKinematics {
   double ballRadius_;
   KinematicSettings settings_;
   std::vector<double> cuts_;  // 0, breakpoints, L
+  std::vector<double> fdSteps_;         // finite-difference spacing per segment
+  std::vector<long long> segmentSteps_;  // RK4 steps per segment
 };
 
 // Fornberg's weights for the first derivative at x0 from values at nodes x.

@@ -61,7 +61,7 @@ RollingKinematics::RollingKinematics(const geometry::ContactPath& path, double b
     }
     double scale = std::min(ballRadius_, (b - a) / 8.0);
     if (turning > 0.0 && std::isfinite(turning)) scale = std::min(scale, 1.0 / turning);
-    fdSteps_.push_back(settings_.fdStep > 0.0 ? settings_.fdStep : 1e-2 * scale);
+    fdSteps_.push_back(settings_.fdStep > 0.0 ? settings_.fdStep : settings_.fdFraction * scale);
     const double byLength = static_cast<double>(settings_.steps) * (b - a) / std::max(length, 1e-300);
     const double byTurn =
         settings_.minStepsPerRadian * (b - a) * ((std::isfinite(turning) ? turning : 0.0) + 1.0 / ballRadius_);
@@ -99,20 +99,24 @@ Vec3 RollingKinematics::omega(double s, std::size_t seg) const {
   return path_.normal(s).cross(centreVelocity(s, seg)) / ballRadius_;
 }
 
-Mat3 RollingKinematics::rk4Step(const Mat3& q, double s, double h, std::size_t seg) const {
+Mat3 RollingKinematics::rk4Increment(const Mat3& q, double s, double h, std::size_t seg) const {
   const Mat3 wa = skew(omega(s, seg)), wb = skew(omega(s + 0.5 * h, seg)), wc = skew(omega(s + h, seg));
   const Mat3 k1 = wa * q;
   const Mat3 k2 = wb * (q + 0.5 * h * k1);
   const Mat3 k3 = wb * (q + 0.5 * h * k2);
   const Mat3 k4 = wc * (q + h * k3);
-  return q + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+  return (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
 }
 
 std::vector<Mat3> RollingKinematics::orientations(std::span<const double> sampleS) const {
   std::vector<Mat3> out;
   out.reserve(sampleS.size());
   const double length = path_.length();
-  Mat3 q = Mat3::Identity();
+  // Q accumulates small increments over tens of thousands of steps: each
+  // addition rounds by ε|Q|, which summed to ~1e-12 rad at 20,000 steps (and
+  // grew with more). Compensated (Kahan) summation carries the lost low
+  // bits, so the oracle's floor is its truncation and differences, not N ε.
+  Mat3 q = Mat3::Identity(), carry = Mat3::Zero();
   std::size_t next = 0;
   for (std::size_t seg = 0; seg + 1 < cuts_.size(); ++seg) {
     const double a = cuts_[seg], b = cuts_[seg + 1];
@@ -123,10 +127,13 @@ std::vector<Mat3> RollingKinematics::orientations(std::span<const double> sample
       const double sNext = (k + 1 == n) ? b : s + h;
       while (next < sampleS.size() && sampleS[next] < sNext) {
         const double dh = std::max(0.0, sampleS[next] - s);
-        out.push_back(dh == 0.0 ? q : rk4Step(q, s, dh, seg));
+        out.push_back(dh == 0.0 ? q : Mat3(q + rk4Increment(q, s, dh, seg)));
         ++next;
       }
-      q = rk4Step(q, s, sNext - s, seg);
+      const Mat3 increment = rk4Increment(q, s, sNext - s, seg) - carry;
+      const Mat3 sum = q + increment;
+      carry = (sum - q) - increment;
+      q = sum;
     }
   }
   while (next < sampleS.size()) {

@@ -28,6 +28,10 @@ struct KinematicSettings {
   // r ≪ R turns ω through its whole angle in a length ∝ r, which a share by
   // length leaves to one step. 0: by length only.
   double minStepsPerRadian = 0.0;
+  // Automatic spacing as a fraction of the segment's shortest length scale.
+  // 1e-2 leaves a round-off of ~ε|C|/(1e-2 scale) in dC/ds; near 4e-2 the
+  // 8th-order truncation and the round-off balance, about 10× lower.
+  double fdFraction = 1e-2;
 };
 
 class RollingKinematics {
@@ -45,9 +49,10 @@ class RollingKinematics {
   [[nodiscard]] Mat3 finalOrientation() const;
 
  private:
-  // One RK4 step inside segment `seg` (its end node, on the cut, is
-  // differentiated from this segment's side: at a corner dC/ds jumps).
-  [[nodiscard]] Mat3 rk4Step(const Mat3& q, double s, double h, std::size_t seg) const;
+  // One RK4 step's increment Q(s + h) − Q(s) inside segment `seg` (its end
+  // node, on the cut, is differentiated from this segment's side: at a
+  // corner dC/ds jumps).
+  [[nodiscard]] Mat3 rk4Increment(const Mat3& q, double s, double h, std::size_t seg) const;
   [[nodiscard]] Vec3 centreVelocity(double s, std::size_t seg) const;
   [[nodiscard]] Vec3 omega(double s, std::size_t seg) const;
   const geometry::ContactPath& path_;

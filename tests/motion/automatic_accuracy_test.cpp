@@ -4,8 +4,9 @@
 // `rollspin solve` solves them (motion::chooseSolver + solveScene), must come
 // within 1e-10 rad of the independent kinematic oracle (src/kinematics: SO(3)
 // from point(s) and normal(s) only, no curvature, no spinor). The same runs
-// check the error estimate: true ≤ 3 × estimate + 1e-13, and the estimate at
-// most 1000× the true error where that is above 1e-12.
+// check the error estimate: error ≤ 3 × estimate + 1e-13, and the estimate at
+// most 1000× the error where that is above 1e-12 — the error taken against a
+// finer spinor reference, since the oracle's own floor is ~1e-11.
 //
 // ROLLSPIN_ACCURACY_CASES=n sets the number of random scenes per family
 // (default 6; the sanitizer build runs 2, see tests/CMakeLists.txt);
@@ -22,6 +23,7 @@
 #include "model/rolling_model.hpp"
 #include "motion/solve_job.hpp"
 #include "scene/scene_loader.hpp"
+#include "spin/propagator.hpp"
 #include "spin/su2.hpp"
 
 using namespace rollspin;
@@ -38,7 +40,8 @@ int casesPerFamily() {
 }
 
 struct Outcome {
-  double trueError = 0.0, estimate = 0.0;
+  double trueError = 0.0, estimate = 0.0;  // against the oracle; a posteriori
+  double referenceToOracle = 0.0, errorToReference = 0.0;
   long long steps = 0;
 };
 
@@ -61,22 +64,32 @@ Outcome solveAndJudge(const std::string& toml, const std::string& name) {
   const Eigen::Matrix3d q = kinematics::RollingKinematics(*model.path, model.ballRadius, settings).finalOrientation();
   const Eigen::Quaterniond oq(q);
   const spin::Su2 oracle{oq.w(), oq.x(), oq.y(), oq.z()};
+  // The oracle's own floor is ~1e-11 here (its finite differences' round-off:
+  // 4× its steps moves it by up to 1.6e-11), enough to judge 1e-10 but not an
+  // estimate of 1e-14. The estimate is judged against a spinor reference an
+  // order finer — magnus6 at 4× the steps, itself held to the oracle — whose
+  // own error is far below the estimates tested.
+  const spin::Su2 reference =
+      spin::Propagator(*model.path, model.ballRadius, spin::Method::Magnus6, 4 * stats.steps).solveFinal().final;
   Outcome out;
   out.trueError = spin::rotationDistance(stats.final, oracle);
+  out.referenceToOracle = spin::rotationDistance(reference, oracle);
+  out.errorToReference = spin::rotationDistance(stats.final, reference);
   out.estimate = stats.errorEstimate;
   out.steps = stats.steps;
   worstTrue = std::max(worstTrue, out.trueError);
-  worstRatio = std::max(worstRatio, out.trueError / std::max(out.estimate, 1e-300));
+  worstRatio = std::max(worstRatio, out.errorToReference / std::max(out.estimate, 1e-300));
   if (std::getenv("ROLLSPIN_VERBOSE"))
-    std::printf("%-40s %9lld steps  true %.2e  estimate %.2e  (%s)\n", name.c_str(), out.steps, out.trueError,
-                out.estimate, stats.errorEstimateBasis.c_str());
+    std::printf("%-40s %9lld steps  vs oracle %.2e  vs reference %.2e  estimate %.2e  (%s)\n", name.c_str(),
+                out.steps, out.trueError, out.errorToReference, out.estimate, stats.errorEstimateBasis.c_str());
   return out;
 }
 
 void expectAccurateAndEstimated(const Outcome& o, const std::string& what) {
   EXPECT_LE(o.trueError, 1e-10) << what;
-  EXPECT_LE(o.trueError, 3.0 * o.estimate + 1e-13) << what << " estimate " << o.estimate;
-  if (o.trueError > 1e-12) EXPECT_LE(o.estimate, 1000.0 * o.trueError) << what;
+  EXPECT_LE(o.referenceToOracle, 1e-10) << what;
+  EXPECT_LE(o.errorToReference, 3.0 * o.estimate + 1e-13) << what << " estimate " << o.estimate;
+  if (o.errorToReference > 1e-12) EXPECT_LE(o.estimate, 1000.0 * o.errorToReference) << what;
 }
 
 // A random walk of `count` points in the plane spanned by e1, e2 (steps 1.5
@@ -191,7 +204,8 @@ TEST(AutomaticAccuracy, RandomStoryboards) {
     expectAccurateAndEstimated(solveAndJudge(toml, fmt::format("storyboard {} (R {:.2f})", c, R)), toml);
   }
   if (std::getenv("ROLLSPIN_VERBOSE"))
-    std::printf("worst true error %.2e rad, worst true/estimate %.3g (this binary so far)\n", worstTrue, worstRatio);
+    std::printf("worst error against the oracle %.2e rad, worst error/estimate %.3g (this binary so far)\n",
+                worstTrue, worstRatio);
 }
 
 }  // namespace

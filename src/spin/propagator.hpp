@@ -205,6 +205,12 @@ class Propagator {
 //               (2ᵖ − 1)× the error of U_N in the asymptotic range, so it
 //               over-states by ~15 (order 4) to ~63 (order 6), never under;
 //   adaptive    the same method at 32× the tolerance (about half the steps);
+//   either      at twice the steps or 1/32 of the tolerance instead when the
+//               coarser grid came out (nearly) the same (one step per
+//               breakpoint segment already); rk4 and rk45, whose raw march
+//               drifts by ~ε a step in both solves alike, add steps × ε;
+//               every stepping method adds the shared round-off floor
+//               ε ∫(|ω| + |d|) ds;
 //   exact       the round-off bound 8ε(1 + ∫(|ω| + |d|) ds) of the closed form.
 // The second solve costs about half the first. A failed second solve leaves
 // the estimate infinite.

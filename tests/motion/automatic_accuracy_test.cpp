@@ -89,7 +89,9 @@ void expectAccurateAndEstimated(const Outcome& o, const std::string& what) {
   EXPECT_LE(o.trueError, 1e-10) << what;
   EXPECT_LE(o.referenceToOracle, 1e-10) << what;
   EXPECT_LE(o.errorToReference, 3.0 * o.estimate + 1e-13) << what << " estimate " << o.estimate;
-  if (o.errorToReference > 1e-12) EXPECT_LE(o.estimate, 1000.0 * o.errorToReference) << what;
+  if (o.errorToReference > 1e-12) {
+    EXPECT_LE(o.estimate, 1000.0 * o.errorToReference) << what;
+  }
 }
 
 // A random walk of `count` points in the plane spanned by e1, e2 (steps 1.5

@@ -209,7 +209,7 @@ class Propagator {
 //               coarser grid came out (nearly) the same (one step per
 //               breakpoint segment already); rk4 and rk45, whose raw march
 //               drifts by ~ε a step in both solves alike, add steps × ε;
-//               every stepping method adds the shared round-off floor
+//               every stepping method adds 48× the shared round-off floor
 //               ε ∫(|ω| + |d|) ds;
 //   exact       the round-off bound 8ε(1 + ∫(|ω| + |d|) ds) of the closed form.
 // The second solve costs about half the first. A failed second solve leaves

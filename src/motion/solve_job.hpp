@@ -48,5 +48,11 @@ inline constexpr double kAutomaticEstimateTarget = 1e-10;
 // `choice.steps` becomes the count used.
 [[nodiscard]] spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model,
                                           SolverChoice& choice);
+// The same, for a caller that does not need the count used.
+[[nodiscard]] inline spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model,
+                                                 const SolverChoice& choice) {
+  SolverChoice used = choice;
+  return solveScene(spec, model, used);
+}
 
 }  // namespace rollspin::motion

@@ -213,8 +213,8 @@ class Scene:
         if tolerance is not None:
             overrides.append(_override("solver.tolerance", tolerance))
         core = self._with(overrides)
-        quaternion, method_name, step_count, seconds, length, unitarity, rotation = core.solve()
-        return Solution(quaternion, rotation, length, method_name, step_count, seconds, unitarity)
+        quaternion, method_name, step_count, seconds, length, unitarity, rotation, estimate, basis = core.solve()
+        return Solution(quaternion, rotation, length, method_name, step_count, seconds, unitarity, estimate, basis)
 
     def timeline(self, samples: Optional[int] = None) -> "Timeline":
         """The orientation timeline (``rollspin timeline``) as numpy columns.
@@ -308,16 +308,21 @@ class Scene:
 class Solution:
     """The end of a solve: U(L) and how it was found."""
 
-    __slots__ = ("quaternion", "rotation_matrix", "length", "method", "steps", "seconds", "unitarity_error")
+    __slots__ = ("quaternion", "rotation_matrix", "length", "method", "steps", "seconds", "unitarity_error",
+                 "error_estimate", "error_estimate_basis")
 
     def __init__(self, quaternion: "np.ndarray", rotation_matrix: "np.ndarray", length: float, method: str, steps: int,
-                 seconds: float, unitarity_error: float) -> None:
+                 seconds: float, unitarity_error: float, error_estimate: float = float("nan"),
+                 error_estimate_basis: str = "") -> None:
         self.quaternion = quaternion            #: (4,) qw, qx, qy, qz of U = qw·1 − i(q·σ); the sign is kept
         self.rotation_matrix = rotation_matrix  #: (3, 3) R(U), worldFromBody
         self.length = length                    #: the path's length L
         self.method = method                    #: the solver method used
         self.steps = steps                      #: its steps (0 for the closed form)
         self.seconds = seconds                  #: the solve's wall time
+        #: a posteriori estimate of the rotation error of U(L), radians (docs/solver.md)
+        self.error_estimate = error_estimate
+        self.error_estimate_basis = error_estimate_basis  #: how it was estimated
         self.unitarity_error = unitarity_error
 
     @property

@@ -122,7 +122,8 @@ class Scene {
     return app::resolvedSceneText(source_.name, spec_);
   }
 
-  // (quaternion (4,), method, steps, seconds, length, unitarity error, rotation matrix (3,3)).
+  // (quaternion (4,), method, steps, seconds, length, unitarity error, rotation matrix (3,3),
+  //  error estimate of U(L) in radians, its basis).
   [[nodiscard]] py::tuple solve() const {
     spin::SolveStats stats;
     motion::SolverChoice choice;
@@ -140,7 +141,8 @@ class Scene {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) rotation.mutable_at(i, j) = m(i, j);
     return py::make_tuple(quaternion, std::string(spin::methodName(choice.method)), stats.steps, stats.seconds,
-                          model_.path->length(), stats.unitarityError, rotation);
+                          model_.path->length(), stats.unitarityError, rotation, stats.errorEstimate,
+                          stats.errorEstimateBasis);
   }
 
   // (column names, values (columns × rows), segment numbers or None, method, steps, seconds).
@@ -158,6 +160,9 @@ class Scene {
     {
       py::gil_scoped_release release;
       choice = motion::chooseSolver(spec_, model_);
+      // The step count the solve settles on (refined until its error
+      // estimate is met), as `rollspin timeline` samples with.
+      (void)motion::solveScene(spec_, model_, choice);
       stats = app::sampleTimeline(model_, choice, samples, [&](std::size_t index, const app::TimelineRow& row) {
         for (py::ssize_t c = 0; c < columns; ++c) out[c * rows + static_cast<py::ssize_t>(index)] = row.values[c];
         if (segmented) segmentOut[index] = static_cast<long long>(row.segment);

@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -40,10 +41,13 @@ std::filesystem::path defaultOutput(const scene::SceneSpec& spec, const std::str
   return std::filesystem::path("output") / (spec.name + extension);
 }
 
+// JSON has no inf or NaN: an estimate that could not be made is null.
+std::string jsonNumber(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "null"; }
+
 int runSolve(const SolveOptions& o) {
   const scene::SceneSpec spec = loadScene(o.scenePath, o.overrides);
   const RollingModel model = buildSceneModel(spec);
-  const SolverChoice choice = chooseSolver(spec, model);
+  SolverChoice choice = chooseSolver(spec, model);
   StageLog::instance().record("solver");
   const spin::SolveStats stats = solveScene(spec, model, choice);
   const spin::AngleAxis aa = spin::rotationAngleAxis(stats.final);
@@ -54,9 +58,12 @@ int runSolve(const SolveOptions& o) {
         "{{\n  \"scene\": \"{}\",\n  \"length\": {:.17g},\n  \"method\": \"{}\",\n  \"steps\": {},\n"
         "  \"quaternion\": [{:.17g}, {:.17g}, {:.17g}, {:.17g}],\n  \"angle\": {:.17g},\n"
         "  \"axis\": [{:.17g}, {:.17g}, {:.17g}],\n  \"spinor_angle\": {:.17g},\n"
-        "  \"unitarity_error\": {:.6g},\n  \"solve_seconds\": {:.6g}\n}}\n",
+        "  \"unitarity_error\": {:.6g},\n  \"solve_seconds\": {:.6g},\n"
+        "  \"error_estimate\": {},\n  \"error_estimate_basis\": \"{}\",\n"
+        "  \"error_estimate_seconds\": {:.6g}\n}}\n",
         spec.name, model.path->length(), spin::methodName(choice.method), stats.steps, q.w, q.x, q.y, q.z, aa.angle,
-        aa.axis.x(), aa.axis.y(), aa.axis.z(), psi, stats.unitarityError, stats.seconds);
+        aa.axis.x(), aa.axis.y(), aa.axis.z(), psi, stats.unitarityError, stats.seconds, jsonNumber(stats.errorEstimate),
+        stats.errorEstimateBasis, stats.errorEstimateSeconds);
     return 0;
   }
   constexpr double deg = 180.0 / std::numbers::pi;
@@ -77,6 +84,8 @@ int runSolve(const SolveOptions& o) {
              spin::onNegativeSheet(q) ? "negative (U ~ -1)" : "positive");
   fmt::print("unitarity error  {:.3g}\n", stats.unitarityError);
   fmt::print("solve time       {:.3g} s\n", stats.seconds);
+  fmt::print("error estimate   {:.2g} rad  ({}; took {:.3g} s)\n", stats.errorEstimate, stats.errorEstimateBasis,
+             stats.errorEstimateSeconds);
   return 0;
 }
 
@@ -84,12 +93,13 @@ int runTimeline(const SolveOptions& o) {
   if (!o.output.empty()) checkOutputFile(o.output, {"-o " + o.output});  // before the solve, not after
   const scene::SceneSpec spec = loadScene(o.scenePath, o.overrides);
   const RollingModel model = buildSceneModel(spec);
-  const SolverChoice choice = chooseSolver(spec, model);
+  SolverChoice choice = chooseSolver(spec, model);
   StageLog::instance().record("solver");
+  const spin::SolveStats solved = solveScene(spec, model, choice);
   StageLog::instance().record("timeline-csv");
   const spin::SampleArcLengths samples = timelineArcLengths(spec, model);
   const std::filesystem::path out = o.output.empty() ? defaultOutput(spec, ".csv") : std::filesystem::path(o.output);
-  const spin::SolveStats stats = writeTimelineCsv(out, model, choice, samples);
+  const spin::SolveStats stats = writeTimelineCsv(out, model, choice, samples, solved);
   std::fprintf(stderr, "rollspin: wrote %zu samples to %s (%s, %lld steps, %.3g s)\n", samples.size(),
                out.string().c_str(), std::string(spin::methodName(choice.method)).c_str(), stats.steps, stats.seconds);
   return 0;

@@ -59,9 +59,15 @@ spin::SolveStats sampleTimeline(const RollingModel& model, const SolverChoice& c
 }
 
 spin::SolveStats writeTimelineCsv(const std::filesystem::path& out, const RollingModel& model,
-                                  const SolverChoice& choice, const spin::SampleArcLengths& sampleS) {
+                                  const SolverChoice& choice, const spin::SampleArcLengths& sampleS,
+                                  const spin::SolveStats& solved) {
   AtomicFile file(out);
   fmt::memory_buffer buffer;
+  fmt::format_to(std::back_inserter(buffer),
+                 "# rollspin timeline: {} with {} steps; error estimate of U(L) {:.2g} rad ({}; took {:.3g} s, "
+                 "the solve {:.3g} s)\n",
+                 spin::methodName(choice.method), solved.steps, solved.errorEstimate, solved.errorEstimateBasis,
+                 solved.errorEstimateSeconds, solved.seconds);
   const bool segments = timelineHasSegments(model);
   fmt::format_to(std::back_inserter(buffer), "{}{}\n", fmt::join(kTimelineColumns, ","), segments ? ",segment" : "");
   // Rows are formatted into a buffer and handed to the file in ~1 MiB chunks.

@@ -7,6 +7,10 @@
 // sign-normalised), Bx,By,Bz (field B = −ω), tx,ty,tz (tangent t),
 // kappa_n, kappa_g, tau_g; a storyboard adds `segment`, the number (from 1)
 // of the segment whose motion the row is in.
+// Above the column names, one comment line (starting with '#') names the
+// method and steps and gives the a posteriori error estimate of U(L)
+// (spin::estimateError) with its basis and cost; read with
+// pandas.read_csv(..., comment='#') or skip lines starting with '#'.
 #pragma once
 
 #include <array>
@@ -46,7 +50,10 @@ spin::SolveStats sampleTimeline(const RollingModel& model, const SolverChoice& c
 // Whether `model` is a storyboard, i.e. rows carry a segment number.
 [[nodiscard]] bool timelineHasSegments(const RollingModel& model);
 
+// `solved`: the scene's solve of U(L) with its error estimate
+// (motion::solveScene, whose refined step count `choice` carries).
 [[nodiscard]] spin::SolveStats writeTimelineCsv(const std::filesystem::path& out, const RollingModel& model,
-                                                const SolverChoice& choice, const spin::SampleArcLengths& sampleS);
+                                                const SolverChoice& choice, const spin::SampleArcLengths& sampleS,
+                                                const spin::SolveStats& solved);
 
 }  // namespace rollspin::app

@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <complex>
 #include <numbers>
 
 namespace rollspin::geometry {
@@ -161,6 +162,47 @@ State rk4(const Surface& surface, const State& y, double h) {
 }
 }  // namespace
 
+namespace {
+// A geodesic on a sphere is a great circle, in closed form: with a the unit
+// start point and b the unit start tangent, p(σ)/r = cos t a + sin t b,
+// t = σ/r, so θ = acos(p_z/r) and, writing p_xy = A cos t + B sin t = P e^{it}
+// + Q e^{−it} (complex, P = (A − iB)/2, Q = (A + iB)/2), the azimuth is
+// arg P + t + atan(k sin(γ − 2t)/(1 + k cos(γ − 2t))), k e^{iγ} = Q/P, when
+// |P| > |Q| (else the same with P, Q and t, −t swapped): continuous, no
+// unwrapping. Its curvatures are constant (κ_g = 0, κ_n = ∓1/r, τ_g = 0), so
+// `exact` applies. |P| = |Q| is a circle through a pole, where the azimuth
+// is undefined: it leaves the parameter domain.
+std::unique_ptr<SurfaceCurvePath> greatCircle(std::shared_ptr<const Sphere> sphere, const Vec2& startUv,
+                                              const Vec3& unitDirection, double length) {
+  const double r = sphere->radius();
+  const Vec3 a = sphere->jet(startUv).x / r, b = unitDirection;
+  const std::complex<double> A(a.x(), a.y()), B(b.x(), b.y()), I(0.0, 1.0);
+  const std::complex<double> P = 0.5 * (A - I * B), Q = 0.5 * (A + I * B);
+  if (!(std::abs(std::abs(P) - std::abs(Q)) > 1e-9))
+    throw GeometryError("the geodesic (a great circle) passes through a pole of the sphere, where the azimuth "
+                        "is undefined");
+  const bool forward = std::abs(P) > std::abs(Q);
+  const std::complex<double> lead = forward ? P : Q, ratio = forward ? Q / P : P / Q;
+  const double k = std::abs(ratio), gamma = std::arg(ratio), base = std::arg(lead), sense = forward ? 1.0 : -1.0;
+  auto azimuth = [=](const Jet& t) {
+    const Jet phase = gamma - 2.0 * sense * t;
+    return base + sense * t + atan(k * sin(phase) / (1.0 + k * cos(phase)));
+  };
+  // Start on the caller's sheet of the azimuth (it may lie outside [−π, π]).
+  const double turnsOff = std::round((startUv.y() - azimuth(Jet(0.0)).v) / (2.0 * kPi));
+  const double offset = 2.0 * kPi * turnsOff;
+  SurfaceCurveOptions options;
+  options.constantCurvatures = true;
+  return wrap(
+      sphere,
+      [=](const Jet& sigma) {
+        const Jet t = sigma / r;
+        return std::array<Jet, 2>{acos(a.z() * cos(t) + b.z() * sin(t)), azimuth(t) + offset};
+      },
+      0.0, length, "geodesic (great circle) of length " + describeNumber(length), options);
+}
+}  // namespace
+
 std::unique_ptr<SurfaceCurvePath> geodesicPath(std::shared_ptr<const Surface> surface, const Vec2& startUv,
                                                const Vec3& direction, double length) {
   const SurfaceJet j0 = surface->jet(startUv);
@@ -171,6 +213,7 @@ std::unique_ptr<SurfaceCurvePath> geodesicPath(std::shared_ptr<const Surface> su
   Eigen::Matrix2d metric;
   metric << j0.xu.dot(j0.xu), j0.xu.dot(j0.xv), j0.xu.dot(j0.xv), j0.xv.dot(j0.xv);
   const Vec3 unit = w.normalized();
+  if (auto sphere = std::dynamic_pointer_cast<const Sphere>(surface)) return greatCircle(sphere, startUv, unit, length);
   const Vec2 rate = metric.inverse() * Vec2(j0.xu.dot(unit), j0.xv.dot(unit));
 
   // Integrate on a fine uniform grid, keeping every node (dense output by one

@@ -21,8 +21,17 @@ using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 
 struct KinematicSettings {
-  long long steps = 20000;  // RK4 steps over the whole path
-  double fdStep = 0.0;      // finite-difference spacing; 0 → automatic
+  long long steps = 20000;  // RK4 steps over the whole path, shared by length
+  double fdStep = 0.0;      // finite-difference spacing; 0 → automatic, per segment
+  // At least this many steps per radian that ω turns or the ball rolls in a
+  // segment (length · (max|P''|, |n'| seen + 1/R)): a corner arc of radius
+  // r ≪ R turns ω through its whole angle in a length ∝ r, which a share by
+  // length leaves to one step. 0: by length only.
+  double minStepsPerRadian = 0.0;
+  // Automatic spacing as a fraction of the segment's shortest length scale.
+  // 1e-2 leaves a round-off of ~ε|C|/(1e-2 scale) in dC/ds; near 4e-2 the
+  // 8th-order truncation and the round-off balance, about 10× lower.
+  double fdFraction = 1e-2;
 };
 
 class RollingKinematics {
@@ -40,15 +49,18 @@ class RollingKinematics {
   [[nodiscard]] Mat3 finalOrientation() const;
 
  private:
-  // One RK4 step inside segment `seg` (its end node, on the cut, is
-  // differentiated from this segment's side: at a corner dC/ds jumps).
-  [[nodiscard]] Mat3 rk4Step(const Mat3& q, double s, double h, std::size_t seg) const;
+  // One RK4 step's increment Q(s + h) − Q(s) inside segment `seg` (its end
+  // node, on the cut, is differentiated from this segment's side: at a
+  // corner dC/ds jumps).
+  [[nodiscard]] Mat3 rk4Increment(const Mat3& q, double s, double h, std::size_t seg) const;
   [[nodiscard]] Vec3 centreVelocity(double s, std::size_t seg) const;
   [[nodiscard]] Vec3 omega(double s, std::size_t seg) const;
   const geometry::ContactPath& path_;
   double ballRadius_;
   KinematicSettings settings_;
   std::vector<double> cuts_;  // 0, breakpoints, L
+  std::vector<double> fdSteps_;         // finite-difference spacing per segment
+  std::vector<long long> segmentSteps_;  // RK4 steps per segment
 };
 
 // Fornberg's weights for the first derivative at x0 from values at nodes x.

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "spin/field.hpp"
 
 namespace rollspin::motion {
@@ -114,11 +116,40 @@ spin::SampleArcLengths timelineArcLengths(const scene::SceneSpec& spec, const Ro
   return spin::SampleArcLengths::uniform(model.path->length(), static_cast<std::size_t>(count));
 }
 
-spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model, const SolverChoice& choice) {
-  const spin::Propagator propagator(*model.path, model.ballRadius, choice.method, choice.steps, choice.tolerance);
-  spin::SolveStats stats = propagator.solveFinal();
-  if (stats.status != spin::SolveStatus::Ok) {
-    throw runtimeError(spec.where("solver.method"), "solver failed: {}", spin::statusMessage(stats.status));
+spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model, SolverChoice& choice) {
+  auto solve = [&](long long steps) {
+    spin::SolveStats stats =
+        spin::Propagator(*model.path, model.ballRadius, choice.method, steps, choice.tolerance).solveFinal();
+    if (stats.status != spin::SolveStatus::Ok) {
+      throw runtimeError(spec.where("solver.method"), "solver failed: {}", spin::statusMessage(stats.status));
+    }
+    return stats;
+  };
+  long long steps = choice.steps;
+  spin::SolveStats stats = solve(steps);
+  spin::estimateError(*model.path, model.ballRadius, choice.method, steps, choice.tolerance, stats);
+  // Automatic steps: refine while the estimate says the a priori count fell
+  // short. Each doubling reuses the previous solve as its coarse one, so the
+  // estimate stays "against half the steps". It stops when the estimate no
+  // longer falls (round-off dominates) or the step limit is near.
+  if (choice.automaticSteps && choice.method != spin::Method::Exact) {
+    double seconds = stats.seconds, estimateSeconds = stats.errorEstimateSeconds;
+    for (int round = 0; round < 4 && stats.errorEstimate > kAutomaticEstimateTarget &&
+                        steps <= scene::kMaxSolverSteps / 2;
+         ++round) {
+      spin::SolveStats finer = solve(2 * steps);
+      finer.errorEstimate = spin::rotationDistance(finer.final, stats.final);
+      finer.errorEstimateBasis =
+          fmt::format("difference to {} at half the steps ({})", spin::methodName(choice.method), steps);
+      estimateSeconds += seconds;
+      seconds = finer.seconds;
+      const bool falling = finer.errorEstimate < 0.5 * stats.errorEstimate;
+      steps *= 2;
+      stats = finer;
+      if (!falling) break;
+    }
+    stats.errorEstimateSeconds = estimateSeconds;
+    choice.steps = steps;
   }
   return stats;
 }

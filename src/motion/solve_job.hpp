@@ -25,7 +25,9 @@ struct SolverChoice {
 [[nodiscard]] SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& model);
 
 // Automatic step count: 400 per unit of ∫(|ω| + |d|) ds, so that magnus4
-// reaches ~1e-13 on the foundation's paths (see README, "Solver").
+// reaches ~1e-13 per radian on smooth paths; the propagator shares them
+// among breakpoint segments by the same integral, so corner arcs of any
+// radius get the steps their turn needs (docs/solver.md).
 [[nodiscard]] long long automaticSteps(const RollingModel& model, spin::Method method);
 // The unclamped automatic step count (may exceed the limit, or be inf/NaN).
 [[nodiscard]] double requiredAutomaticSteps(const RollingModel& model);
@@ -35,9 +37,22 @@ struct SolverChoice {
 [[nodiscard]] long long defaultSampleCount(const RollingModel& model);
 [[nodiscard]] spin::SampleArcLengths timelineArcLengths(const scene::SceneSpec& spec, const RollingModel& model);
 
-// Runs the solver once for its final value and statistics; throws Runtime on
-// a non-finite result.
+// Runs the solver for its final value and statistics, with the a
+// posteriori error estimate (spin::estimateError: stats.errorEstimate,
+// errorEstimateBasis, errorEstimateSeconds). With automatic steps the count
+// is doubled (up to 4 times, the previous solve serving as the coarse one)
+// while the estimate exceeds kAutomaticEstimateTarget and keeps falling, so
+// "automatic" is accurate even where the a priori count falls short.
+// Throws Runtime on a non-finite result.
+inline constexpr double kAutomaticEstimateTarget = 1e-10;
+// `choice.steps` becomes the count used.
 [[nodiscard]] spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model,
-                                          const SolverChoice& choice);
+                                          SolverChoice& choice);
+// The same, for a caller that does not need the count used.
+[[nodiscard]] inline spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model,
+                                                 const SolverChoice& choice) {
+  SolverChoice used = choice;
+  return solveScene(spec, model, used);
+}
 
 }  // namespace rollspin::motion

@@ -6,6 +6,8 @@
 // 1 − κ_n R → 0 simply gives ω → 0; nothing divides by it.
 #pragma once
 
+#include <vector>
+
 #include "geometry/contact_path.hpp"
 #include "spin/su2.hpp"
 
@@ -25,6 +27,11 @@ namespace rollspin::spin {
 // ∫₀ᴸ (|ω| + |d|) ds, d the Darboux vector: how far the field turns as well
 // as how strong it is; sets the automatic step count.
 [[nodiscard]] double integratedStepBudget(const geometry::ContactPath& path, double ballRadius);
+// The same integral per breakpoint segment (0, breakpoints, L in order): a
+// fixed-step march gives each segment steps in proportion, so a corner arc
+// of radius r, whose ∫|d| ds is its turn angle whatever r, gets as many steps
+// as its turn needs rather than as its (tiny) length would give.
+[[nodiscard]] std::vector<double> segmentStepBudgets(const geometry::ContactPath& path, double ballRadius);
 
 }  // namespace rollspin::spin
 

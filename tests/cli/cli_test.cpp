@@ -20,6 +20,7 @@ std::vector<std::vector<std::string>> readCsv(const std::filesystem::path& p) {
   std::vector<std::vector<std::string>> rows;
   std::string line;
   while (std::getline(in, line)) {
+    if (line.starts_with('#')) continue;  // the header comment (method, steps, error estimate)
     std::vector<std::string> cells;
     std::stringstream ss(line);
     std::string cell;

@@ -72,6 +72,8 @@ TEST(StoryboardCli, TimelineRunsOnThroughTheSegmentsAndNamesEachRowsSegment) {
   std::istringstream csv(rollspin::test::readFile(out));
   std::string line;
   std::getline(csv, line);
+  EXPECT_TRUE(line.starts_with("# rollspin timeline:")) << line;  // method, steps, error estimate
+  std::getline(csv, line);
   EXPECT_EQ(line.substr(line.size() - 13), "tau_g,segment");
   std::vector<int> seen;
   double s = -1.0, lastS = 0.0;

@@ -15,6 +15,9 @@ def test_solve_is_the_cli_solve(lollipop):
     assert sol.quaternion.tolist() == cli["quaternion"]  # %.17g round-trips: the same doubles
     assert (sol.method, sol.steps, sol.length) == (cli["method"], cli["steps"], cli["length"])
     assert sol.seconds >= 0.0
+    # The same a posteriori estimate as the CLI's (its basis named), and small: automatic means accurate.
+    assert sol.error_estimate_basis == cli["error_estimate_basis"]
+    assert 0.0 <= sol.error_estimate < 1e-10 and sol.error_estimate == pytest.approx(cli["error_estimate"], rel=1e-6)
 
 
 def test_sign_is_kept():
@@ -50,8 +53,10 @@ def test_timeline_is_the_cli_csv(tmp_path):
         path = SCENES / f"{name}.toml"
         csv = tmp_path / f"{name}.csv"
         run_cli("timeline", path, "-o", csv, "--set", "timeline.samples=157")
-        header = csv.read_text().split("\n", 1)[0].split(",")
-        table = np.loadtxt(csv, delimiter=",", skiprows=1)
+        lines = csv.read_text().split("\n")
+        assert lines[0].startswith("# rollspin timeline:") and "error estimate" in lines[0]
+        header = lines[1].split(",")
+        table = np.loadtxt(csv, delimiter=",", skiprows=2)
         t = rollspin.load(path).timeline(samples=157)
         assert t.columns == header and len(t) == 157 == table.shape[0]
         for k, column in enumerate(header):

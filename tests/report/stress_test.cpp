@@ -7,6 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
 
 #include "geometry/clothoid_path.hpp"
 #include "kinematics/rolling_kinematics.hpp"
@@ -77,5 +81,35 @@ TEST(Clothoid, LandauZenerProbabilityApproachesTheAsymptoteLikeOneOverS) {
     const auto st = spin::Propagator(*path, R, Method::Frame6a, 0, 1e-10).solveFinal();
     ASSERT_EQ(st.status, spin::SolveStatus::Ok);
     EXPECT_LT(std::abs(report::stayProbability(st.final) - pLz), 0.5 / S) << S;  // measured S·|ΔP| ≤ 0.21
+  }
+}
+
+// The a posteriori estimate (spin::estimateError) on the stress suite: the
+// error against the case's reference is at most 3× the estimate + 1e-13, and
+// the estimate at most 1000× the error where that is above 1e-12. For the
+// methods the suite expects to resolve each case: frame4 on the case's grid
+// and frame6a at its tolerance everywhere, exact where the curvatures are
+// constant, magnus4 on the case's grid where it is not stiff.
+TEST(Stress, ErrorEstimateIsConservativeAndNotWildlyPessimistic) {
+  for (const report::StressCase& c : report::stressCases()) {
+    const spin::Su2 ref = reference(c);
+    std::vector<std::pair<Method, bool>> runs{{Method::Frame4, false}, {Method::Frame6a, true}};
+    if (c.path->hasConstantCurvatures() && c.path->pieces().empty()) runs.push_back({Method::Exact, false});
+    if (!c.stiff) runs.push_back({Method::Magnus4, false});
+    for (const auto& [method, adaptive] : runs) {
+      const long long steps = adaptive ? 0 : c.fixedSteps;
+      const double tolerance = adaptive ? c.tolerance : 0.0;
+      spin::SolveStats st = spin::Propagator(*c.path, c.ballRadius, method, steps, tolerance).solveFinal();
+      ASSERT_EQ(st.status, spin::SolveStatus::Ok) << c.name;
+      spin::estimateError(*c.path, c.ballRadius, method, steps, tolerance, st);
+      const double error = spin::rotationDistance(st.final, ref);
+      if (std::getenv("ROLLSPIN_VERBOSE"))
+        std::printf("%-28s %-8s error %.2e estimate %.2e\n", c.name.c_str(), std::string(spin::methodName(method)).c_str(),
+                    error, st.errorEstimate);
+      EXPECT_LE(error, 3.0 * st.errorEstimate + 1e-13) << c.name << " " << spin::methodName(method);
+      if (error > 1e-12) {
+        EXPECT_LE(st.errorEstimate, 1000.0 * error) << c.name << " " << spin::methodName(method);
+      }
+    }
   }
 }

@@ -450,8 +450,10 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
       shot.orbits = u.orbits;
       shot.orbitOffset = u.orbitOffset;
       shot.keys = u.keys;
-      // A turn larger than kMaxFreeMoveDeg takes longer than a second.
-      if (k > 0) shot.moveSeconds = std::max(kCameraMove, turnDeg(previous, u.angles) / kMaxFreeMoveDeg);
+      // A turn larger than kMaxFreeMoveDeg takes longer than a second, where
+      // rollspin chose the view; a move to angles the scene gives takes the
+      // documented second.
+      if (k > 0 && !(azimuthGiven && elevationGiven)) shot.moveSeconds = std::max(kCameraMove, turnDeg(previous, u.angles) / kMaxFreeMoveDeg);
     }
     shot.keyed = (shot.target && shot.distance) || azimuthGiven || elevationGiven;
     shots_.push_back(shot);

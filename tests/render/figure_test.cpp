@@ -108,9 +108,16 @@ TEST(FigureCli, PdfAndSvgRasterizedMatchThePngStill) {
   const fs::path dir = test::freshTempDir("figure_match");
   const std::vector<std::string> size{"--width", "640", "--height", "360"};
   for (const std::string name : {"lollipop", "sphere-inside"}) {
-    renderStill(name, dir / (name + ".png"), size);
     std::vector<std::string> opaque = size;
-    opaque.insert(opaque.end(), {"--set", "figure.transparent=false"});  // the views' backdrops, as in the PNG
+    // The views' backdrops, as in the PNG. 5 pt over 120 mm gives the text
+    // about the share of the image it had before figures were laid out at
+    // their printed size, so the bounds below keep their meaning (FreeType
+    // and stb_truetype text differ on every glyph: at the default 8 pt the
+    // mean is 4.7 levels from the text alone).
+    opaque.insert(opaque.end(), {"--set", "figure.transparent=false", "--set", "figure.font_size_pt=5"});
+    // A PNG still of a scene that sets a [figure] key is laid out as the
+    // figure is (its text at the printed size): the same composition.
+    renderStill(name, dir / (name + ".png"), opaque);
     renderStill(name, dir / (name + ".pdf"), opaque);
     renderStill(name, dir / (name + ".svg"), opaque);
     const std::string pdfPng = (dir / (name + "_pdf")).string();
@@ -129,8 +136,10 @@ TEST(FigureCli, PdfAndSvgRasterizedMatchThePngStill) {
 
 TEST(FigureCli, TransparentByDefaultWithoutARasterBackground) {
   const fs::path dir = test::freshTempDir("figure_transparent");
-  const std::vector<std::string> size{"--width", "640", "--height", "360"};
-  renderStill("lollipop", dir / "still.png", {"--width", "640", "--height", "360", "--transparent"});
+  // 5 pt: the text's share of the image as in PdfAndSvgRasterizedMatchThePngStill.
+  const std::vector<std::string> size{"--width", "640", "--height", "360", "--set", "figure.font_size_pt=5"};
+  renderStill("lollipop", dir / "still.png",
+              {"--width", "640", "--height", "360", "--transparent", "--set", "figure.font_size_pt=5"});
   renderStill("lollipop", dir / "fig.svg", size);
   int status = 0;
   run("rsvg-convert -w 640 -h 360 -o " + (dir / "fig.png").string() + " " + (dir / "fig.svg").string(), &status);

@@ -68,8 +68,13 @@ namespace {
 // restart), and each DHT table's 16 counts are added up.
 bool jpegHuffmanTablesFit(std::string_view bytes) {
   const auto at = [&](std::size_t k) -> unsigned { return k < bytes.size() ? static_cast<unsigned char>(bytes[k]) : 0U; };
-  if (at(0) != 0xFF || at(1) != 0xD8) return true;  // not a JPEG
-  std::size_t pos = 2;
+  // stb_image skips fill bytes (0xFF) before every marker, SOI included:
+  // "FF FF D8" is a JPEG to it (found by fuzz_image), so it is one here.
+  if (at(0) != 0xFF) return true;  // not a JPEG
+  std::size_t start = 1;
+  while (start < bytes.size() && at(start) == 0xFF) ++start;
+  if (at(start) != 0xD8) return true;  // not a JPEG
+  std::size_t pos = start + 1;
   while (pos + 1 < bytes.size()) {
     const unsigned marker = at(pos + 1);
     if (at(pos) != 0xFF || marker == 0xFF) {  // entropy-coded data, or a fill byte

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # On a lent GPU machine (after scripts/device_unpack.sh): times video renders
 # of the lollipop with rollspin's bundled binary against a reference binary,
-# in turn, and says where the pipeline waits. What the README's "Video speed"
-# (On a GPU) table came from.
+# in turn, and says where the pipeline waits. Where the "On a GPU" table came
+# from (docs/speed-history.md#video-speed-scriptsbench_videosh-as-the-readme-had-it).
 #   bash scripts/device_video_check.sh REFERENCE_ROLLSPIN [LOG]
 # REFERENCE_ROLLSPIN: an older build (same libraries), carried beside the
 # bundle. (b) is the ffmpeg tool with bench_video.sh's (b) command, on frames

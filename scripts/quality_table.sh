@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The README's antialiasing quality table ("Render speed", "Quality"): for
+# The antialiasing quality table ("Quality" under
+# docs/speed-history.md#render-speed-bench_render-as-the-readme-had-it): for
 # each scene, the mean absolute difference (0-255 levels, mean of R, G, B) of
 # a 640x360 still against a 16-sample reference, the same still at 2560x1440
 # with render.msaa = 1, box-filtered down (ffmpeg scale, flags=area).

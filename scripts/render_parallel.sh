@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # One clip rendered in N shards by GNU parallel, on this machine or over SSH,
-# then joined (README, "Rendering on many machines").
+# then joined (README, "A render across machines"; docs/cluster.md).
 #
 #   bash scripts/render_parallel.sh SCENE OUT.mp4 [options] [-- render options]
 #

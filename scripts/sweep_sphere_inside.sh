@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# A parameter sweep with GNU parallel (README, "Rendering on many machines"):
+# A parameter sweep with GNU parallel (README, "A parameter sweep"):
 # `solve --json` for a ball of radius R rolling once round a parallel at
 # colatitude θ inside a sphere of radius r = 3, over a grid of R and θ,
-# collected into one CSV beside the closed form (README, "Notes on the paper")
+# collected into one CSV beside the closed form (docs/solver.md#notes-on-the-paper)
 #   δ = 2π √(ρ²/R² + cos²θ),  ρ = r sin θ,
 # folded like the solver's net angle into [0, π].
 #
@@ -26,8 +26,8 @@ read -r -a radii <<< "${RADII:-0.1 0.25 0.5 0.75 1 1.25 1.5 1.75 2 2.25 2.5 2.75
 read -r -a colatitudes <<< "${COLATITUDES:-30 45 60 75 90}"
 sphere=3
 
-# One grid point → one CSV row. The solver's JSON keys are listed in the
-# README ("Commands"); jq adds the closed form.
+# One grid point → one CSV row. The solver's JSON keys are listed in
+# docs/getting-started.md#commands; jq adds the closed form.
 solve_one() {
   local R=$1 theta=$2
   "$ROLLSPIN_SWEEP" solve "$SCENE_SWEEP" --json --set "ball.radius=$R" --set "path.colatitude_deg=$theta" \

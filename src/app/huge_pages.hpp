@@ -2,8 +2,9 @@
 // transparent huge pages (2 MiB) for its large blocks when
 // GLIBC_TUNABLES holds glibc.malloc.hugetlb=1. llvmpipe zeroes every buffer
 // it allocates, and each 4 KiB page is a fault; with 2 MiB pages a 1080p
-// still took 0.73 s instead of 0.86, a 4K one 1.04 instead of 2.29 (README,
-// "Render speed"). glibc reads the variable only when a process
+// still took 0.73 s instead of 0.86, a 4K one 1.04 instead of 2.29
+// (docs/speed-history.md#render-speed-bench_render-as-the-readme-had-it,
+// "Huge pages"). glibc reads the variable only when a process
 // starts, so a render restarts itself (execv of its own binary, same pid,
 // same arguments) with it set.
 #pragma once

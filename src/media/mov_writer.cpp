@@ -5,7 +5,7 @@
 // The encoder is prores_aw, not prores_ks: at 1080p it takes about a third
 // of prores_ks's CPU a frame, and its 422 HQ is closer to the frames (PSNR
 // 49.2 against 48.0 dB on lollipop frames); its 4444 is 58 dB against 62,
-// both far below a level of error (README "Animations", MOV row).
+// both far below a level of error (docs/rendering.md#animations, the mov row).
 #include <fmt/format.h>
 
 #include "media/sink_factory.hpp"

@@ -30,7 +30,7 @@ using model::SegmentSpan;
 struct DeltaFact {
   double measured = 0.0;      // rad, unwrapped rotation relative to the rolling frame after the path
   double closedForm = 0.0;    // rad
-  bool onSphere = false;      // which closed form (the derived one on a sphere, README "Notes on the paper")
+  bool onSphere = false;      // which closed form (the derived one on a sphere, docs/solver.md#notes-on-the-paper)
   double labAngle = 0.0;      // the lab rotation angle of U(L) in [0, π]
   double closedFormMod = 0.0; // |remainder(closedForm, 2π)|: what labAngle must be after whole circuits
   bool wholeCircuits = true;  // else the frame's own turn is in U(L) too, and labAngle ≠ closedFormMod

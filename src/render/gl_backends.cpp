@@ -140,7 +140,7 @@ std::unique_ptr<GlContext> createAuto(Choice& c) {
   std::string reasons;
   for (const auto& f : failures) reasons += (reasons.empty() ? "" : " | ") + f;
   throw runtimeError({}, "no GL backend could make an OpenGL 4.5 core context (render.backend = \"auto\"): {} "
-                         "(README \"GL backends\" explains each message)",
+                         "(docs/gl-backends.md explains each message)",
                      reasons);
 }
 

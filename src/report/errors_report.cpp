@@ -72,7 +72,7 @@ std::vector<Point> sweep(const ReportScene& sc, spin::Method m, const Reference&
   return points;
 }
 
-// The README's number: magnus4 against rk45 at 1e-11 (final orientation) on
+// The number docs/solver.md#reports quotes: magnus4 against rk45 at 1e-11 (final orientation) on
 // one lollipop revolution (R = 1, r = 3), both timed here in the same run.
 struct SpeedRatio {
   long long magnusSteps = 0;

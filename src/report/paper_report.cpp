@@ -198,7 +198,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
   {
     Claim c{"sphere-inside", "Inside: δ₋ = 2π √(1 + sin²θ (r − 3R)(r − R)/R²)",
             "rotating-frame rotation −U(L): spinor angle against δ₋"};
-    c.note = "README, Notes on the paper: the paper keeps the outside u = −e_θ inside, where u = +e_θ; the "
+    c.note = "docs/solver.md#notes-on-the-paper: the paper keeps the outside u = −e_θ inside, where u = +e_θ; the "
              "kinematics gives δ = 2π√(ρ²/R² + cos²θ), ρ = r sin θ, on both sides (claim sphere-inside-derived)";
     Claim d{"sphere-inside-derived", "(rollspin's derivation, not the paper's) inside: δ = 2π √(ρ²/R² + cos²θ)",
             "as sphere-inside"};
@@ -221,7 +221,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
   {
     Claim c{"sphere-inside-r=3R", "Inside with r = 3R the rotation is 2π regardless of latitude",
             "U(L) against +1"};
-    c.note = "follows from the inside formula (README); at the equator 2π and the kinematic 6π are the same spinor";
+    c.note = "follows from the inside formula (docs/solver.md#notes-on-the-paper); at the equator 2π and the kinematic 6π are the same spinor";
     for (double th : thetas) {
       const double t = th * pi / 180;
       c.rows.push_back(spinorRow(fmt::format("θ = {:g}°", th), parallel(3 * R, false, t), R,
@@ -261,7 +261,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
               "spinor angle of −U(L) against Δφ₊, R/r = 1e-1 … 1e-4 (r = 1): the deviation must vanish"};
     Claim in{"adiabatic-inside", "R ≪ r, inside: Δφ₋ = 2π r sin θ / R − 4π sin θ (a geometric phase twice the spin's)",
              "as adiabatic-outside"};
-    in.note = "README: with the inside u the kinematic δ expands to 2πρ/R + O(R/ρ) on both sides; "
+    in.note = "docs/solver.md#notes-on-the-paper: with the inside u the kinematic δ expands to 2πρ/R + O(R/ρ) on both sides; "
               "the −4π sin θ rests on the paper's sign of u (`report stress` shows the dynamic − geometric split "
               "holding inside and out)";
     out.asymptotic = in.asymptotic = true;
@@ -318,7 +318,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
     rotRow.measured = fmt::format("{:.9f} turns", rolling / (2 * pi));
     rotRow.deviation = std::abs(rolling - 2 * pi);
     c.rows = {labRow, rotRow};
-    c.note = "README: ∫|g| ds = 6πR · (1/R) = 6π, three turns relative to the frame; the lab count agrees";
+    c.note = "docs/solver.md#notes-on-the-paper: ∫|g| ds = 6πR · (1/R) = 6π, three turns relative to the frame; the lab count agrees";
     claims.push_back(std::move(c));
   }
 
@@ -352,7 +352,7 @@ ReportOutcome paperReport(const ReportOptions& options) {
                    "solver (frame6a, tolerance 1e-12). Closed-form claims agree when every deviation is ≤ 1e-8 rad; "
                    "asymptotic ones when the deviation falls like R/r (by ≥ 500) as R/r goes from 1e-1 to 1e-4. The last column "
                    "is the independent kinematic oracle against the solver at the claim's worst point, or the worst "
-                   "one the oracle can afford (∫|B| ds ≤ 2000; SO(3) distance). Derivations of the disagreements: README.md, \"Notes on the paper\".\n\n"
+                   "one the oracle can afford (∫|B| ds ≤ 2000; SO(3) distance). Derivations of the disagreements: docs/solver.md#notes-on-the-paper.\n\n"
                    "| claim | verdict | largest deviation (rad) | where | solver vs kinematics there |\n"
                    "| --- | --- | --- | --- | --- |\n";
   std::string details;

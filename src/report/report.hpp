@@ -34,7 +34,7 @@ struct ReportOptions {
   std::filesystem::path outDir = "output/report";
   // Progress lines for the user (the report itself never prints).
   std::function<void(const std::string&)> progress;
-  // report errors: the README's magnus4-vs-rk45 lollipop section; off for a
+  // report errors: the magnus4-vs-rk45 lollipop section (docs/solver.md#reports); off for a
   // report on the user's own scenes, where it would be beside the point.
   bool lollipopSpeedRatio = true;
 };

@@ -23,7 +23,7 @@ void applyOverride(toml::table& root, const std::string& arg, std::map<std::stri
     start = dot + 1;
   }
   // A part may name an entry of an array of tables, counted from 1:
-  // segment[2].path.radius (README "Storyboards").
+  // segment[2].path.radius (docs/scenes.md#storyboards).
   std::vector<std::size_t> index(parts.size(), 0);  // 0: not an array entry
   for (std::size_t i = 0; i < parts.size(); ++i) {
     std::string& p = parts[i];

@@ -1,5 +1,5 @@
 // SceneSpec — what a scene file asks for, as plain structs. Every default
-// lives here, in the member initialisers, and README.md documents the same
+// lives here, in the member initialisers, and docs/scene-reference.md shows the same
 // values. Each key that was given remembers where (file:line:col or the --set
 // argument) through SceneSpec::where().
 #pragma once
@@ -38,11 +38,11 @@ struct PathSpec {
   double turns = 1.0;                 // circle, parallel
   bool counterClockwise = true;       // direction = "ccw" | "cw"
   double length = 10.0;               // line
-  std::optional<Vec3> directionVector;  // line; default: horizontal in the plane (see README)
+  std::optional<Vec3> directionVector;  // line; default: horizontal in the plane (docs/scenes.md#the-file-format)
   double radius = 3.0;                // circle: contact circle radius r
   double colatitudeDeg = 60.0;        // parallel: θ in degrees
   double startAzimuthDeg = 0.0;       // parallel: the azimuth φ at s = 0 (docs/conventions.md)
-  // Curved surfaces (issue 3). Angles in degrees; see README "Curves".
+  // Curved surfaces (issue 3). Angles in degrees; docs/scenes.md#curved-surfaces-and-curves.
   double tubeAngleDeg = 0.0;          // torus parallel / meridian start: ψ (0 = outer equator)
   double height = 0.0;                // cylinder parallel / helix / meridian: start height along the axis
   double azimuthDeg = 0.0;            // meridian, loxodrome: φ0
@@ -65,13 +65,13 @@ struct PlateSpec {
   double radius = 0.0;  // R1: radius of the circle each plate point describes
 };
 
-// Limits (README, "Limits and errors").
+// Limits (docs/getting-started.md#limits-and-errors).
 inline constexpr long long kMaxSolverSteps = 100'000'000'000LL;  // ~10 min of magnus4
 inline constexpr long long kMaxTimelineSamples = 100'000'000LL;
 
 struct SolverSpec {
   std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4 | frame4 | cf4 | magnus6 | rk45 | frame6a
-  std::optional<long long> steps;  // default: automatic (see README)
+  std::optional<long long> steps;  // default: automatic (docs/solver.md#how-many-steps-and-how-accurate)
   std::optional<double> tolerance;  // adaptive methods; default kDefaultTolerance; alone → frame6a
   static constexpr double kDefaultTolerance = 1e-10;
 };
@@ -106,7 +106,7 @@ struct RenderSpec {
   std::optional<std::string> format;
   long long jpegQuality = 92;  // JPEG stills, 1 … 100
   double dpi = 300.0;  // vector figures: resolution of their raster parts (the shaded ball and surfaces)
-  double fontScale = 1.0;   // text size × this (README "Rendering"); body line ≥ 1/28 of the height at 1
+  double fontScale = 1.0;   // text size × this (docs/rendering.md#stills-and-images); body line ≥ 1/28 of the height at 1
   bool twinCameraFixed = true;  // twin_camera: "fixed" (the first shot's view throughout) or "linked"
   // GL context (render/gl_backends.cpp): "auto" or a backend of the table, and
   // for EGL a device index or DRM path; unset: ROLLSPIN_GL / ROLLSPIN_EGL_DEVICE.
@@ -114,8 +114,8 @@ struct RenderSpec {
   std::optional<std::string> device;
 };
 
-// [figure]: a still as a publication figure (PDF/SVG, README "Figures for
-// papers"): its physical width, the labels' font and size, the page.
+// [figure]: a still as a publication figure (PDF/SVG, docs/figures.md): its
+// physical width, the labels' font and size, the page.
 struct FigureSpec {
   double widthMm = 120.0;                // figure.width_mm, or figure.width_in × 25.4
   std::string font = "DejaVu Sans";      // a fontconfig family name
@@ -160,7 +160,7 @@ struct CameraSpec {
 inline const std::vector<std::string> kCameraKeys{"azimuth_deg", "elevation_deg", "distance", "target", "follow",
                                                   "fov_deg"};
 
-// [[segment]]: one step of a storyboard (README "Storyboards"): a motion
+// [[segment]]: one step of a storyboard (docs/scenes.md#storyboards): a motion
 // along its own path, or a hold; with its caption, title and camera.
 struct SegmentSpec {
   std::optional<PathSpec> path;    // a motion; absent: a hold

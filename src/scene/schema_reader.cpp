@@ -113,7 +113,7 @@ std::optional<long long> Reader::integer(const toml::table* t, const std::string
   const toml::node* node = get(t, section, key);
   if (node == nullptr) return std::nullopt;
   const std::string full = section + "." + key;
-  // 1e5 is how the README writes limits: a float that is exactly an integer counts as one.
+  // 1e5 is how docs/getting-started.md#limits-and-errors writes limits: a float that is exactly an integer counts as one.
   if (const auto* f = node->as_floating_point()) {
     const double v = f->get();
     if (std::isfinite(v) && v == std::trunc(v) && std::fabs(v) < 9.2e18) return static_cast<long long>(v);

@@ -27,7 +27,7 @@ CameraSpec Reader::readCamera(const toml::table* t, const std::string& section) 
   return c;
 }
 
-// [[segment]] — a storyboard (README "Storyboards"). Each entry moves along
+// [[segment]] — a storyboard (docs/scenes.md#storyboards). Each entry moves along
 // its own path (the [path] keys, validated the same way) or holds; timing,
 // caption, title and camera are per segment. Keys are named segment[k].…
 // with k counted from 1.
@@ -95,7 +95,7 @@ void Reader::readSegments() {
     spec_.segments.push_back(std::move(seg));
   }
   // A segment's camera target stops a follow, and follow = true drops a
-  // target (README "Storyboards"); one table giving both is contradictory.
+  // target (docs/scenes.md#storyboards); one table giving both is contradictory.
   for (std::size_t i = 0; i < spec_.segments.size(); ++i) {
     const CameraSpec& c = spec_.segments[i].camera;
     if (c.target && c.follow && *c.follow)
@@ -179,7 +179,7 @@ void Reader::readGlContext(const toml::table* table) {
   }
 }
 
-// [figure] — a still as a PDF/SVG figure (README "Figures for papers").
+// [figure] — a still as a PDF/SVG figure (docs/figures.md).
 void Reader::readFigure() {
   const toml::table* figure = section("figure", keysOf("figure"));
   FigureSpec& f = spec_.figure;

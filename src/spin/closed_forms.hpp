@@ -5,8 +5,8 @@
 //   δ on a plane:     a ball of radius R once round a circle of radius r turns
 //                     by δ = 2π √(1 + (r/R)²) about the stick (Rojo–Bloch eq. delta1).
 //   δ on a sphere:    along a parallel at colatitude θ (ρ = r sin θ), outside
-//                     or inside, δ = 2π √(ρ²/R² + cos²θ) (the kinematics; README
-//                     "Notes on the paper" on why the paper's δ₋ differs).
+//                     or inside, δ = 2π √(ρ²/R² + cos²θ) (the kinematics;
+//                     docs/solver.md#notes-on-the-paper: why the paper's δ₋ differs).
 //   the paper's δ₊:   2π cos θ √(1 + (r tan θ / R)²) (equal to the above outside).
 //   the paper's δ₋:   2π √(1 + sin²θ (r − 3R)(r − R)/R²) (the printed, refuted, inside form).
 //   Brockett's plate: a plate whose points describe circles of radius R1 drives

@@ -71,7 +71,7 @@ struct AngleAxis {
 
 // Which sheet q is on: w < −kHalfTurnBand. |w| ≤ kHalfTurnBand (a net angle
 // of π up to round-off) counts as w = 0 on the positive sheet, so every method
-// reports the same ψ = π and axis at an exact half turn (README Conventions).
+// reports the same ψ = π and axis at an exact half turn (docs/conventions.md#frames-and-the-spinor).
 inline constexpr double kHalfTurnBand = 1e-12;
 [[nodiscard]] bool onNegativeSheet(const Su2& q);
 

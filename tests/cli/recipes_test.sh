@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The README's "Rendering on many machines" recipes, run as written on tiny
+# The recipes of docs/cluster.md, run as written on tiny
 # clips (160x90, 30 frames):
 #   scripts/render_parallel.sh on this machine, and over SSH to two pretend
 #     hosts (tests/cli/fake_ssh.sh as GNU parallel's ssh: each host is a

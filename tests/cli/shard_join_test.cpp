@@ -1,4 +1,4 @@
-// A render split across processes the way the README's recipe does it: three
+// A render split across processes as the README's "A render across machines" does it: three
 // `render --shard K/3` run by GNU parallel, then `rollspin join`. The joined
 // clip is decoded and checked against a full render's PNG frames (every
 // frame, PSNR), its timestamps and tags read back, and it is decoded by the
@@ -86,7 +86,7 @@ std::vector<std::string> filesIn(const fs::path& dir) {
 class ShardJoin : public ::testing::Test {
  protected:
   // Rendered once for the suite: three shards run by GNU parallel, as the
-  // README's one-machine recipe does.
+  // README's "A render across machines" does on one machine.
   static void SetUpTestSuite() {
     dir_ = new fs::path(test::freshTempDir("shard_join"));
     std::string command = "parallel --will-cite -q --halt now,fail=1 -j3 " + shellQuote(test::binaryPath().string());

@@ -1,6 +1,6 @@
 // Choosing a GL backend as a user meets it: render.backend / ROLLSPIN_GL and
 // their precedence, how auto falls back when a library is missing or broken,
-// and the message and exit code of each failure (README "GL backends").
+// and the message and exit code of each failure (docs/gl-backends.md).
 // Missing libraries are simulated with the loaders' documented overrides
 // (ROLLSPIN_OSMESA_LIBRARY, ROLLSPIN_EGL_LIBRARY) and Mesa's and glvnd's own
 // variables.

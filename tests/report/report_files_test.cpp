@@ -1,7 +1,7 @@
 // The reports as files: the errors report on one small scene writes its CSV,
 // Markdown (and the PNG when gnuplot is there) atomically, with no NaN
-// printed as a number; the paper report's verdicts are the ones the README
-// documents.
+// printed as a number; the paper report's verdicts are the ones
+// docs/solver.md#notes-on-the-paper documents.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -68,7 +68,7 @@ TEST(ReportFiles, PaperReportVerdicts) {
 
 // On the user's own scene the report says how to use its finding — the exact
 // --set options, which `solve` accepts as printed — and leaves out the
-// README's lollipop magnus4-vs-rk45 section.
+// lollipop magnus4-vs-rk45 section (docs/solver.md#reports).
 TEST(ReportFiles, ErrorsReportOnAUserSceneGivesTheSettingsToUse) {
   const std::filesystem::path dir = freshDir("report_user_scene");
   const std::string scene = (test::sourceDir() / "scenes" / "cornu.toml").string();

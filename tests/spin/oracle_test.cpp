@@ -2,7 +2,7 @@
 // checked against the independent SO(3) integration of the rolling
 // constraint (kinematics/), and only then used to judge the spinor solvers.
 // Where the paper's printed formula disagrees with the kinematics, the test
-// says so and follows the kinematics (README, "Notes on the paper").
+// says so and follows the kinematics (docs/solver.md#notes-on-the-paper).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -138,7 +138,7 @@ struct ParallelCase {
   bool outside;
 };
 
-// Derived (README): Q(L) = Rot(d₀, 2π·turns) Rot(e₀, L|e₀|), e₀ = u₀/R − κ_g n₀,
+// Derived (docs/solver.md#notes-on-the-paper): Q(L) = Rot(d₀, 2π·turns) Rot(e₀, L|e₀|), e₀ = u₀/R − κ_g n₀,
 // so one circuit turns the ball by δ = 2π√(ρ²/R² + cos²θ) (ρ = r sin θ), on
 // either side, and the spinor carries the −1 of the frame's 2π.
 Su2 parallelOracle(const geometry::ContactPath& path, double R) {

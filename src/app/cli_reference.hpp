@@ -13,7 +13,7 @@ namespace rollspin::app {
 [[nodiscard]] std::string manPage(const CLI::App& cli, const std::string& version);
 // share/bash-completion/completions/rollspin: commands, options, scene names and files.
 [[nodiscard]] std::string bashCompletion(const CLI::App& cli);
-// share/zsh/vendor-completions/_rollspin.
+// share/zsh/site-functions/_rollspin (vendor-completions under /usr).
 [[nodiscard]] std::string zshCompletion(const CLI::App& cli);
 
 }  // namespace rollspin::app

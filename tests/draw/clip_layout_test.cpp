@@ -23,6 +23,7 @@
 #include "draw/scene_drawer.hpp"
 #include "model/rolling_model.hpp"
 #include "support/cli_runner.hpp"
+#include "support/sweep.hpp"
 
 namespace rollspin::draw {
 namespace {
@@ -82,13 +83,9 @@ struct Aspect {
 TEST(ClipLayout, NoTextOverTheBallThePathOrTheTrailsAndNoneCutByTheFrame) {
   const Aspect aspects[] = {{960, 540, "16:9"}, {720, 540, "4:3"}, {600, 600, "1:1"}, {540, 960, "9:16"},
                             {960, 540, "16:9 inset", "inset"}};
-  std::vector<std::filesystem::path> scenes;
-  for (const auto& e : std::filesystem::directory_iterator(test::sourceDir() / "scenes"))
-    if (e.path().extension() == ".toml") scenes.push_back(e.path());
-  std::sort(scenes.begin(), scenes.end());
-  ASSERT_GE(scenes.size(), 15u);
+  ASSERT_GE(test::bundledSceneFiles().size(), 15u);
   int checkedLabels = 0, checkedBalls = 0;
-  for (const auto& file : scenes) {
+  for (const auto& file : test::sweep(test::bundledSceneFiles())) {
     for (const Aspect& a : aspects) {
       std::vector<std::string> overrides{"render.width=" + std::to_string(a.width),
                                          "render.height=" + std::to_string(a.height), "render.labels=true"};
@@ -180,8 +177,9 @@ TEST(ClipLayout, NoTextOverTheBallThePathOrTheTrailsAndNoneCutByTheFrame) {
       }
     }
   }
-  EXPECT_GT(checkedLabels, 1000);
-  EXPECT_GE(checkedBalls, 300);  // one per frame at least (a strobe: more)
+  const int share = test::sweepSampled() ? int(test::kSweepStride) : 1;
+  EXPECT_GT(checkedLabels, 1000 / share);
+  EXPECT_GE(checkedBalls, 300 / share);  // one per frame at least (a strobe: more)
 }
 
 // Type for a lecture hall: at 16:9, 4:3, 1:1 and 9:16 the body text's line

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "support/cli_runner.hpp"
+#include "support/sweep.hpp"
 
 namespace rollspin {
 namespace {
@@ -59,9 +60,7 @@ TEST(FigureText, EveryScenesFigureKeepsItsTextApartAndOnThePageAtJournalSizes) {
   if (std::system("command -v pdftotext > /dev/null") != 0) GTEST_SKIP() << "pdftotext (poppler-utils) missing";
   const std::filesystem::path dir = test::freshTempDir("figure_text");
   std::vector<std::pair<std::string, std::vector<std::string>>> cases;
-  for (const auto& e : std::filesystem::directory_iterator(test::sourceDir() / "scenes"))
-    if (e.path().extension() == ".toml") cases.push_back({e.path().string(), {}});
-  std::sort(cases.begin(), cases.end());
+  for (const auto& file : test::sweep(test::bundledSceneFiles())) cases.push_back({file.string(), {}});
   cases.push_back({test::shippedScenePath("lollipop"), {"--set", "render.strobe=8"}});
   int figures = 0;
   for (const auto& [scene, extra] : cases)

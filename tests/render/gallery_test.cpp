@@ -12,25 +12,17 @@
 #include "media/image_io.hpp"
 #include "render/font_atlas.hpp"
 #include "support/cli_runner.hpp"
+#include "support/sweep.hpp"
 
 namespace rollspin {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<fs::path> galleryScenes() {
-  std::vector<fs::path> out;
-  for (const auto& e : fs::directory_iterator(test::sourceDir() / "scenes"))
-    if (e.path().extension() == ".toml") out.push_back(e.path());
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 TEST(Gallery, EverySceneRendersAStill) {
-  const auto scenes = galleryScenes();
-  ASSERT_GE(scenes.size(), 14u);
+  ASSERT_GE(test::bundledSceneFiles().size(), 14u);
   const fs::path dir = test::freshTempDir("gallery");
-  for (const fs::path& file : scenes) {
+  for (const fs::path& file : test::sweep(test::bundledSceneFiles())) {
     const std::string name = file.stem().string();
     const fs::path out = dir / (name + ".png");
     const auto r = test::runRollspin({"render", file.string(), "--still", "--width", "192", "--height", "108",
@@ -72,7 +64,7 @@ TEST(Gallery, FactsAreComputedOnlyWhenTheImageShowsThem) {
 TEST(Gallery, FactLabelsUseOnlyGlyphsTheAtlasHas) {
   const render::FontAtlas atlas(render::defaultFontFile(false), 16.0f);
   int scenesWithFacts = 0;
-  for (const fs::path& file : galleryScenes()) {
+  for (const fs::path& file : test::bundledSceneFiles()) {
     const scene::SceneSpec spec = model::loadScene(file.string(), {});
     const model::RollingModel model = model::buildSceneModel(spec);
     const auto facts = motion::makeSceneFacts(spec, model);
@@ -94,7 +86,7 @@ TEST(Gallery, FactLabelsUseOnlyGlyphsTheAtlasHas) {
 // jumps); a still has no later frame, so it prints them, in the same lines.
 TEST(Gallery, StillsPrintTheCircuitsValuesWhereAClipWaits) {
   int scenesThatWait = 0;
-  for (const fs::path& file : galleryScenes()) {
+  for (const fs::path& file : test::bundledSceneFiles()) {
     const scene::SceneSpec spec = model::loadScene(file.string(), {});
     const model::RollingModel model = model::buildSceneModel(spec);
     const auto facts = motion::makeSceneFacts(spec, model);

@@ -11,8 +11,10 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -26,10 +28,13 @@
 #include <tuple>
 #include <vector>
 
+#include <malloc.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include "app/animation_job.hpp"
 #include "app/figure_job.hpp"
+#include "app/huge_pages.hpp"
 #include "app/job_setup.hpp"
 #include "app/render_jobs.hpp"
 #include "app/scene_print.hpp"
@@ -66,6 +71,61 @@ struct StillJob {
   std::unique_ptr<draw::SceneDrawer> drawer;
 };
 
+// Huge pages for the buffers of the first GL context, as the CLI gets them
+// (app/huge_pages.hpp) but without its restart: an interpreter is running
+// already, and glibc reads GLIBC_TUNABLES only at a process's start.
+// llvmpipe allocates and zeroes its frame buffers and textures (about 60 MiB
+// for a 960×540 still); with 4 KiB pages each page is a fault, and a fresh
+// still through Python cost 1.2× the CLI's (docs/performance.md). glibc's
+// malloc (mallopt(3)): freeing a block it had mmapped raises its mmap
+// threshold to that block's size and its trim threshold to twice that; below
+// the threshold blocks come from the heap's top, which free() then keeps.
+// So: raise the threshold, take two blocks from the heap, mark them for huge
+// pages (MADV_HUGEPAGE, what glibc.malloc.hugetlb=1 does to each new heap
+// extent) and give them back; llvmpipe's buffers are then carved from marked
+// memory. Where it does not apply (a sanitizer's or valgrind's malloc, the
+// kernel's mode is not "madvise", the user set glibc.malloc.hugetlb) nothing
+// is done. Returns the bytes marked, once per process; the pixels are the same.
+std::size_t markHeapForHugePages() {
+#if defined(__GLIBC__)
+  static const std::size_t marked = []() -> std::size_t {
+    if (!app::hugePagesTunables(app::readHugePagesFacts())) return 0;
+    constexpr std::size_t kMiB = std::size_t{1} << 20;
+    constexpr std::size_t kHugePage = 2 * kMiB;
+    constexpr std::size_t kMmapThresholdMax = 32 * kMiB;  // glibc's DEFAULT_MMAP_THRESHOLD_MAX on 64 bits
+    constexpr std::size_t kBlock = 30 * kMiB;             // two: under the trim threshold (~64 MiB) together
+    void* volatile probe = std::malloc(kMmapThresholdMax - 64 * 1024);
+    std::free(probe);
+    void* volatile first = std::malloc(kBlock);
+    void* volatile second = std::malloc(kBlock);
+    std::size_t total = 0;
+    auto mark = [&](std::uintptr_t begin, std::uintptr_t end) {
+      begin = (begin + kHugePage - 1) & ~(kHugePage - 1);
+      end &= ~(std::uintptr_t{4096} - 1);
+      if (end > begin && ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE) == 0)
+        total += end - begin;
+    };
+    if (first != nullptr && second != nullptr) {
+      const auto a = reinterpret_cast<std::uintptr_t>(static_cast<void*>(first));
+      const auto b = reinterpret_cast<std::uintptr_t>(static_cast<void*>(second));
+      const std::uintptr_t low = std::min(a, b), high = std::max(a, b) + kBlock;
+      if (high - low <= 2 * kBlock + 64 * 1024) {  // adjacent (the heap's top): one range
+        mark(low, high);
+      } else {
+        mark(a, a + kBlock);
+        mark(b, b + kBlock);
+      }
+    }
+    std::free(first);
+    std::free(second);
+    return total;
+  }();
+  return marked;
+#else
+  return 0;
+#endif
+}
+
 // The GL renderer every still shares: one context for the process (a context
 // is current on one thread, and the animation and figure jobs make their
 // own, so it is dropped before they run and made again after).
@@ -89,6 +149,7 @@ app::GlRenderer& stillRenderer(const scene::SceneSpec& spec) {
   const std::string key = spec.render.backend.value_or("") + "|" + spec.render.device.value_or("");
   if (!s.gl || s.thread != std::this_thread::get_id() || s.key != key) {
     dropSharedGl();
+    (void)markHeapForHugePages();
     s.gl = std::make_unique<app::GlRenderer>(spec, fs::path{});
     s.thread = std::this_thread::get_id();
     s.key = key;
@@ -297,6 +358,7 @@ py::tuple renderClip(const std::shared_ptr<const Scene>& scene, const fs::path& 
     py::gil_scoped_release release;
     const std::lock_guard lock(sharedGl().mutex);
     dropSharedGl();  // the animation job makes its own context
+    (void)markHeapForHugePages();
     result = app::renderAnimation(o);
   }
   return py::make_tuple(result.written.string(), result.framesWritten, result.framesRequested, result.interruptedBy);
@@ -375,4 +437,6 @@ PYBIND11_MODULE(_rollspin, m) {
           dropSharedGl();
         },
         "Destroy the shared still renderer's GL context (a fresh one is made by the next still).");
+  m.def("huge_pages_marked", [] { return markHeapForHugePages(); },
+        "Bytes of malloc's heap marked for huge pages before the first GL context (0: not applicable here).");
 }

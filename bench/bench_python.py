@@ -39,8 +39,8 @@ def timed_run(cmd, env):
 
 
 def huge_pages_marked(env):
-    """What the package did about huge pages in a fresh interpreter (python/src: markHeapForHugePages)."""
-    code = "import rollspin, rollspin._rollspin as c; rollspin.load('lollipop').still(width=96, height=54); " \
+    """What the package marked for huge pages in a fresh interpreter before a 960×540 still (markHeapForHugePages)."""
+    code = "import rollspin, rollspin._rollspin as c; rollspin.load('lollipop').still(width=960, height=540); " \
            "print(c.huge_pages_marked() >> 20)"
     out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
     return f"{out.stdout.strip()} MiB"

@@ -67,6 +67,7 @@ struct SceneSource {
 // applied, model) and its drawer, kept between stills so that a second still
 // costs a solve to s, a DrawList and a GL frame — not a fresh start.
 struct StillJob {
+  app::DrawJobRequest request;
   app::DrawJob job;
   std::unique_ptr<draw::SceneDrawer> drawer;
 };
@@ -284,8 +285,11 @@ class Scene {
     auto found = stills_.find(key);
     if (found != stills_.end()) return *found->second;
     auto still = std::make_unique<StillJob>();
-    still->job = app::prepareDrawJob({source_.name, source_.overrides, {}, width, height, transparent, {},
-                                      media::OutputUse::Still, 0, source_.text});
+    still->request = {source_.name, source_.overrides, {}, width, height, transparent, {},
+                      media::OutputUse::Still, 0, source_.text};
+    still->job = app::prepareDrawJob(still->request);
+    // As `render --still`: a scene with [figure] keys keeps the figure's composition.
+    if (app::setsFigureKeys(still->job.spec)) app::fitTextToFigure(still->job.spec);
     still->drawer = app::makeDrawer(still->job);
     return *stills_.emplace(key, std::move(still)).first->second;
   }
@@ -301,12 +305,11 @@ class Scene {
   mutable std::map<std::tuple<long long, long long, bool>, std::unique_ptr<StillJob>> stills_;
 };
 
-// A still: its pixels, and what drew them (the scene, kept alive, and the
-// DrawList), so that save() can also write a PDF/SVG figure of it.
+// A still: its pixels, and what drew them (the scene, kept alive, its still
+// job and s), so that save() can also draw a PDF/SVG figure of it.
 struct Image {
   std::shared_ptr<const Scene> scene;
   const StillJob* still = nullptr;
-  render::DrawList list;
   media::Image pixels;
   double s = 0.0;
 
@@ -316,9 +319,14 @@ struct Image {
     const media::OutputFormat& format = app::chooseOutputFormat(spec, path, media::OutputUse::Still);
     if (const auto figure = app::figureFormatOf(format)) {
       app::checkFigureSpec(spec);
+      // Drawn again as `render --still` draws a figure: the text laid out
+      // for the printed size, not the pixels'.
+      app::DrawJob job = app::prepareDrawJob(still->request);
+      app::fitTextToFigure(job.spec);
+      const render::DrawList figureList = app::makeDrawer(job)->draw(app::stillFrame(job, s));
       const std::lock_guard lock(sharedGl().mutex);
       dropSharedGl();  // the figure job makes its own context
-      app::writeFigureStill(spec, list, path, *figure, {});
+      app::writeFigureStill(job.spec, figureList, path, *figure, {});
       return path;
     }
     const auto sink = media::openSink(format, app::sinkOptions(spec, path));
@@ -353,8 +361,8 @@ std::shared_ptr<Image> renderStillImage(const std::shared_ptr<const Scene>& scen
   const StillJob& still = scene->stillJob(width, height, transparent);
   image->still = &still;
   image->s = app::stillArcLength(still.job, at);
-  image->list = still.drawer->draw(app::stillFrame(still.job, image->s));
-  stillRenderer(still.job.spec).renderer.render(image->list, image->pixels);
+  const render::DrawList list = still.drawer->draw(app::stillFrame(still.job, image->s));
+  stillRenderer(still.job.spec).renderer.render(list, image->pixels);
   return image;
 }
 

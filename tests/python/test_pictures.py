@@ -1,5 +1,6 @@
 """Stills, clips and the notebook magic through Python: the CLI's pixels and files."""
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -110,3 +111,21 @@ def test_huge_pages_as_the_cli_without_a_restart(tmp_path):
     kept, small = _fresh_still(tmp_path, "small.png", "glibc.malloc.hugetlb=0")
     assert kept == 0
     assert huge == small and huge.startswith(b"\x89PNG")
+
+
+def test_figure_stills_are_the_cli_figures(lollipop, tmp_path):
+    # An SVG is drawn as `render --still` draws a figure (its text laid out
+    # for the printed size), and a PNG still of a scene with [figure] keys
+    # keeps that composition: the same bytes as the CLI's.
+    run_cli("render", SCENES / "lollipop.toml", "--still", "--width", 320, "--height", 180, "-o", tmp_path / "cli.svg",
+            "--quiet")
+    lollipop.still(width=320, height=180).save(tmp_path / "py.svg")
+
+    def numbered_ids_as_n(svg):  # cairo numbers its images over the process's life
+        return re.sub(rb'((?:id="|#)[A-Za-z_-]+)\d+', rb"\1N", svg.read_bytes())
+
+    assert numbered_ids_as_n(tmp_path / "py.svg") == numbered_ids_as_n(tmp_path / "cli.svg")
+    run_cli("render", SCENES / "lollipop.toml", "--still", "--width", 320, "--height", 180, "--set",
+            'figure.width="column"', "-o", tmp_path / "cli.png", "--quiet")
+    lollipop.set("figure.width", "column").still(width=320, height=180).save(tmp_path / "py.png")
+    assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli.png").read_bytes()

@@ -28,7 +28,6 @@
 #include <tuple>
 #include <vector>
 
-#include <malloc.h>
 #include <sys/mman.h>
 #include <unistd.h>
 
@@ -104,7 +103,7 @@ std::size_t markHeapForHugePages(long long width, long long height) {
   constexpr std::uintptr_t kHugePage = 2 * kMiB;
   constexpr std::size_t kMmapThresholdMax = 32 * kMiB;  // glibc's DEFAULT_MMAP_THRESHOLD_MAX on 64 bits
   constexpr std::size_t kBlock = 30 * kMiB;
-  // The textures and the rest (about 30 MiB), and 128 bytes a pixel for the
+  // The textures and the rest (32 MiB), and 128 bytes a pixel for the
   // multisampled and single targets; at most 1 GiB of address space.
   const auto frameBytes = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 128;
   const std::size_t blocks = std::min<std::size_t>((32 * kMiB + frameBytes) / kBlock + 1, 1024 * kMiB / kBlock);

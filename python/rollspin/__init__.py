@@ -16,12 +16,13 @@ docs/python.md for the whole API.
 """
 from __future__ import annotations
 
-# Imports are few and cheap here (numpy, pathlib, base64 come when first
-# used): a script that renders one still starts about as fast as the CLI.
+# Imports are few and cheap here: numpy, pathlib, base64 come when first
+# used, and typing (with re, which it imports) only for type checkers, since
+# the annotations are never evaluated (the __future__ import). A script that
+# renders one still starts about as fast as the CLI (bench/bench_python.py).
 import math
 import os
 import sys
-from typing import TYPE_CHECKING, Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
 from . import _rollspin as _core
 from ._errors import RenderError, RollspinError, SceneError
@@ -29,12 +30,14 @@ from ._errors import RenderError, RollspinError, SceneError
 __all__ = ["load", "loads", "Scene", "Solution", "Timeline", "Image", "Clip", "SceneError", "RenderError",
            "RollspinError", "scene_dirs", "load_ipython_extension"]
 
+TYPE_CHECKING = False  # mypy and pyright take any `if TYPE_CHECKING:` as true
 if TYPE_CHECKING:
     from pathlib import Path
+    from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
     import numpy as np
 
-PathLike = Union[str, "os.PathLike[str]"]
+    PathLike = Union[str, "os.PathLike[str]"]
 
 
 def _numpy() -> Any:

@@ -7,7 +7,9 @@ RenderError, a RuntimeError. str(error) is the message the CLI prints after
 """
 from __future__ import annotations
 
-from typing import Optional
+TYPE_CHECKING = False  # typing only for type checkers: `import rollspin` stays cheap
+if TYPE_CHECKING:
+    from typing import Optional
 
 __all__ = ["RollspinError", "SceneError", "RenderError"]
 

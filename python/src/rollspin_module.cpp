@@ -11,8 +11,10 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -26,10 +28,12 @@
 #include <tuple>
 #include <vector>
 
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include "app/animation_job.hpp"
 #include "app/figure_job.hpp"
+#include "app/huge_pages.hpp"
 #include "app/job_setup.hpp"
 #include "app/render_jobs.hpp"
 #include "app/scene_print.hpp"
@@ -62,9 +66,88 @@ struct SceneSource {
 // applied, model) and its drawer, kept between stills so that a second still
 // costs a solve to s, a DrawList and a GL frame — not a fresh start.
 struct StillJob {
+  app::DrawJobRequest request;
   app::DrawJob job;
   std::unique_ptr<draw::SceneDrawer> drawer;
 };
+
+// Huge pages for the buffers of the first GL context, as the CLI gets them
+// (app/huge_pages.hpp) but without its restart: an interpreter is running
+// already, and glibc reads GLIBC_TUNABLES only at a process's start.
+// llvmpipe allocates and zeroes its frame buffers and textures (about 75 MiB
+// for a 960×540 still, four times the frame's part at 1920×1080); with
+// 4 KiB pages each page is a fault, and a fresh still through Python cost
+// 1.3× the CLI's (docs/python.md, "Tests and speed"). glibc's malloc
+// (mallopt(3)): freeing a block it had mmapped raises its mmap threshold to
+// that block's size (32 MiB at most); below the threshold blocks come from
+// the heap. So: raise the threshold, take the memory the first frame will
+// need from the heap in blocks under it, mark them for huge pages
+// (MADV_HUGEPAGE, what glibc.malloc.hugetlb=1 does to each new heap extent),
+// and free them behind a small block kept at their end, so that free() does
+// not give them back to the kernel (the heap's top would be trimmed);
+// llvmpipe's buffers are then carved from marked memory. Untouched, the
+// reserve is address space, not memory. Nothing is done where the CLI would
+// not restart either (a sanitizer's or valgrind's malloc, the kernel's mode
+// is not "madvise", the user named glibc.malloc.hugetlb). Once per process;
+// returns the bytes marked. The pixels are the same.
+std::size_t markHeapForHugePages(long long width, long long height) {
+#if defined(__GLIBC__)
+  static std::mutex mutex;
+  static std::optional<std::size_t> marked;
+  const std::lock_guard lock(mutex);
+  if (marked) return *marked;
+  if (width <= 0 || height <= 0) return 0;  // asked before the first context: nothing yet
+  marked = 0;
+  if (!app::hugePagesTunables(app::readHugePagesFacts())) return 0;
+  constexpr std::size_t kMiB = std::size_t{1} << 20;
+  constexpr std::uintptr_t kHugePage = 2 * kMiB;
+  constexpr std::size_t kMmapThresholdMax = 32 * kMiB;  // glibc's DEFAULT_MMAP_THRESHOLD_MAX on 64 bits
+  constexpr std::size_t kBlock = 30 * kMiB;
+  // The textures and the rest (32 MiB), and 128 bytes a pixel for the
+  // multisampled and single targets; at most 1 GiB of address space.
+  const auto frameBytes = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 128;
+  const std::size_t blocks = std::min<std::size_t>((32 * kMiB + frameBytes) / kBlock + 1, 1024 * kMiB / kBlock);
+  void* volatile probe = std::malloc(kMmapThresholdMax - 64 * 1024);
+  std::free(probe);
+  std::vector<std::uintptr_t> taken;
+  taken.reserve(blocks + 1);
+  for (std::size_t k = 0; k <= blocks; ++k) {  // the last one becomes the fence
+    void* block = std::malloc(kBlock);
+    if (block == nullptr) break;
+    taken.push_back(reinterpret_cast<std::uintptr_t>(block));
+  }
+  if (taken.size() < 2) {
+    for (const std::uintptr_t block : taken) std::free(reinterpret_cast<void*>(block));
+    return 0;
+  }
+  // The fence: the last block shrunk in place; what it gave up joins the top.
+  void* fence = std::realloc(reinterpret_cast<void*>(taken.back()), 64);
+  (void)fence;  // kept for the process's life (64 bytes)
+  taken.pop_back();
+  // Adjacent blocks (one chunk header apart) are marked as one range.
+  std::sort(taken.begin(), taken.end());
+  auto mark = [&](std::uintptr_t begin, std::uintptr_t end) {
+    begin = (begin + kHugePage - 1) & ~(kHugePage - 1);
+    end &= ~std::uintptr_t{4095};
+    if (end > begin && ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE) == 0)
+      *marked += end - begin;
+  };
+  std::uintptr_t runBegin = taken.front(), runEnd = taken.front() + kBlock;
+  for (std::size_t k = 1; k < taken.size(); ++k) {
+    if (taken[k] - runEnd > 64) {
+      mark(runBegin, runEnd);
+      runBegin = taken[k];
+    }
+    runEnd = taken[k] + kBlock;
+  }
+  mark(runBegin, runEnd);
+  for (const std::uintptr_t block : taken) std::free(reinterpret_cast<void*>(block));
+  return *marked;
+#else
+  (void)width, (void)height;
+  return 0;
+#endif
+}
 
 // The GL renderer every still shares: one context for the process (a context
 // is current on one thread, and the animation and figure jobs make their
@@ -89,6 +172,7 @@ app::GlRenderer& stillRenderer(const scene::SceneSpec& spec) {
   const std::string key = spec.render.backend.value_or("") + "|" + spec.render.device.value_or("");
   if (!s.gl || s.thread != std::this_thread::get_id() || s.key != key) {
     dropSharedGl();
+    (void)markHeapForHugePages(spec.render.width, spec.render.height);
     s.gl = std::make_unique<app::GlRenderer>(spec, fs::path{});
     s.thread = std::this_thread::get_id();
     s.key = key;
@@ -200,8 +284,11 @@ class Scene {
     auto found = stills_.find(key);
     if (found != stills_.end()) return *found->second;
     auto still = std::make_unique<StillJob>();
-    still->job = app::prepareDrawJob({source_.name, source_.overrides, {}, width, height, transparent, {},
-                                      media::OutputUse::Still, 0, source_.text});
+    still->request = {source_.name, source_.overrides, {}, width, height, transparent, {},
+                      media::OutputUse::Still, 0, source_.text};
+    still->job = app::prepareDrawJob(still->request);
+    // As `render --still`: a scene with [figure] keys keeps the figure's composition.
+    if (app::setsFigureKeys(still->job.spec)) app::fitTextToFigure(still->job.spec);
     still->drawer = app::makeDrawer(still->job);
     return *stills_.emplace(key, std::move(still)).first->second;
   }
@@ -217,12 +304,11 @@ class Scene {
   mutable std::map<std::tuple<long long, long long, bool>, std::unique_ptr<StillJob>> stills_;
 };
 
-// A still: its pixels, and what drew them (the scene, kept alive, and the
-// DrawList), so that save() can also write a PDF/SVG figure of it.
+// A still: its pixels, and what drew them (the scene, kept alive, its still
+// job and s), so that save() can also draw a PDF/SVG figure of it.
 struct Image {
   std::shared_ptr<const Scene> scene;
   const StillJob* still = nullptr;
-  render::DrawList list;
   media::Image pixels;
   double s = 0.0;
 
@@ -232,9 +318,14 @@ struct Image {
     const media::OutputFormat& format = app::chooseOutputFormat(spec, path, media::OutputUse::Still);
     if (const auto figure = app::figureFormatOf(format)) {
       app::checkFigureSpec(spec);
+      // Drawn again as `render --still` draws a figure: the text laid out
+      // for the printed size, not the pixels'.
+      app::DrawJob job = app::prepareDrawJob(still->request);
+      app::fitTextToFigure(job.spec);
+      const render::DrawList figureList = app::makeDrawer(job)->draw(app::stillFrame(job, s));
       const std::lock_guard lock(sharedGl().mutex);
       dropSharedGl();  // the figure job makes its own context
-      app::writeFigureStill(spec, list, path, *figure, {});
+      app::writeFigureStill(job.spec, figureList, path, *figure, {});
       return path;
     }
     const auto sink = media::openSink(format, app::sinkOptions(spec, path));
@@ -269,8 +360,8 @@ std::shared_ptr<Image> renderStillImage(const std::shared_ptr<const Scene>& scen
   const StillJob& still = scene->stillJob(width, height, transparent);
   image->still = &still;
   image->s = app::stillArcLength(still.job, at);
-  image->list = still.drawer->draw(app::stillFrame(still.job, image->s));
-  stillRenderer(still.job.spec).renderer.render(image->list, image->pixels);
+  const render::DrawList list = still.drawer->draw(app::stillFrame(still.job, image->s));
+  stillRenderer(still.job.spec).renderer.render(list, image->pixels);
   return image;
 }
 
@@ -297,6 +388,7 @@ py::tuple renderClip(const std::shared_ptr<const Scene>& scene, const fs::path& 
     py::gil_scoped_release release;
     const std::lock_guard lock(sharedGl().mutex);
     dropSharedGl();  // the animation job makes its own context
+    (void)markHeapForHugePages(width.value_or(scene->spec().render.width), height.value_or(scene->spec().render.height));
     result = app::renderAnimation(o);
   }
   return py::make_tuple(result.written.string(), result.framesWritten, result.framesRequested, result.interruptedBy);
@@ -375,4 +467,6 @@ PYBIND11_MODULE(_rollspin, m) {
           dropSharedGl();
         },
         "Destroy the shared still renderer's GL context (a fresh one is made by the next still).");
+  m.def("huge_pages_marked", [] { return markHeapForHugePages(0, 0); },
+        "Bytes of malloc's heap marked for huge pages before the first GL context (0: not applicable here).");
 }

@@ -60,6 +60,11 @@ double figureTextPt(const scene::SceneSpec& spec) { return spec.figure.fontSizeP
 
 // unit: points per DrawList pixel. The body label's pixel height is its
 // ascent + descent, so at the figure font's ratio it prints at the body size.
+bool setsFigureKeys(const scene::SceneSpec& spec) {
+  return std::any_of(spec.locations.begin(), spec.locations.end(),
+                     [](const auto& entry) { return entry.first.rfind("figure.", 0) == 0; });
+}
+
 void fitTextToFigure(scene::SceneSpec& spec) {
   const double unit = spec.figure.widthMm / 25.4 * 72.0 / double(spec.render.width);
   const double bodyPx = figureTextPt(spec) * render::figureFontHeightPerEm(spec.figure.font) / unit;

@@ -26,6 +26,10 @@ void checkFigureSpec(const scene::SceneSpec& spec);
 inline constexpr double kDefaultFigureTextPt = 8.0;
 [[nodiscard]] double figureTextPt(const scene::SceneSpec& spec);
 
+// True when the scene sets a [figure] key: its PNG still then keeps the
+// figure's composition (fitTextToFigure), scaled.
+[[nodiscard]] bool setsFigureKeys(const scene::SceneSpec& spec);
+
 // Lays the still's text out for the figure's physical size: sets
 // render.font_scale so that the body text, in the DrawList's pixels, is
 // figureTextPt at figure.width_mm over render.width (plates, line steps and

@@ -30,7 +30,7 @@ std::optional<std::string> hugePagesTunables(const HugePagesFacts& facts) {
   return *facts.tunables + ":glibc.malloc.hugetlb=1";
 }
 
-void restartWithHugePages(char** argv) {
+HugePagesFacts readHugePagesFacts() {
   HugePagesFacts facts;
   facts.tunables = environmentValue("GLIBC_TUNABLES");
   facts.ldPreload = environmentValue("LD_PRELOAD");
@@ -39,6 +39,11 @@ void restartWithHugePages(char** argv) {
 #if defined(__SANITIZE_ADDRESS__)
   facts.sanitized = true;
 #endif
+  return facts;
+}
+
+void restartWithHugePages(char** argv) {
+  const HugePagesFacts facts = readHugePagesFacts();
   const std::optional<std::string> tunables = hugePagesTunables(facts);
   if (!tunables) return;
   // The binary's own path, not /proc/self/exe: the kernel names a process

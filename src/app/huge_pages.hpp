@@ -22,6 +22,9 @@ struct HugePagesFacts {
   bool sanitized = false;                // AddressSanitizer replaces malloc
 };
 
+// The facts of this process (its environment, the kernel's mode, this build).
+[[nodiscard]] HugePagesFacts readHugePagesFacts();
+
 // The GLIBC_TUNABLES value to restart with, or nothing when a restart would
 // not help: the kernel's mode is not "madvise" ("always" gives huge pages
 // already, "never" none), the variable already names glibc.malloc.hugetlb

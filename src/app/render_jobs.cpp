@@ -153,10 +153,7 @@ std::filesystem::path renderStill(const StillOptions& o) {
   if (figure) checkFigureSpec(job.spec);
   // A figure's text is laid out for its printed size; a PNG still of a
   // scene that sets [figure] keys keeps the same composition, scaled.
-  const bool figureKeys = std::any_of(job.spec.locations.begin(), job.spec.locations.end(), [](const auto& entry) {
-    return entry.first.rfind("figure.", 0) == 0;
-  });
-  if (figure || figureKeys) fitTextToFigure(job.spec);
+  if (figure || setsFigureKeys(job.spec)) fitTextToFigure(job.spec);
   const scene::SceneSpec& spec = job.spec;
   const double s = stillArcLength(job, o.at);
 

@@ -1,6 +1,10 @@
 """Stills, clips and the notebook magic through Python: the CLI's pixels and files."""
 import os
+import re
 import signal
+import subprocess
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -79,3 +83,49 @@ def test_magic_renders_the_cell(tmp_path, monkeypatch):
     assert (tmp_path / "still.png").read_bytes().startswith(b"\x89PNG")
     shell.run_cell_magic("rollspin", "--width 48 --height 32 --set animation.duration=0.25 -o clip.mp4", cell)
     assert (tmp_path / "clip.mp4").stat().st_size > 0
+
+
+def _fresh_still(tmp_path, name, tunables):
+    """A still in a fresh interpreter; what it marked for huge pages (bytes)."""
+    out = tmp_path / name
+    code = ("import sys, rollspin, rollspin._rollspin as core; "
+            "rollspin.load(sys.argv[1]).still(width=160, height=90).save(sys.argv[2]); "
+            "print(core.huge_pages_marked())")
+    env = dict(os.environ, GLIBC_TUNABLES=tunables)
+    done = subprocess.run([sys.executable, "-c", code, str(SCENES / "lollipop.toml"), str(out)], env=env,
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    return int(done.stdout), out.read_bytes()
+
+
+def test_huge_pages_as_the_cli_without_a_restart(tmp_path):
+    # The first GL context's buffers come from heap memory marked for huge
+    # pages, as the CLI's restart with glibc.malloc.hugetlb=1 gives them; a
+    # user's own setting wins, and the pixels do not depend on it.
+    if "[madvise]" not in Path("/sys/kernel/mm/transparent_hugepage/enabled").read_text():
+        pytest.skip("transparent huge pages are not in madvise mode here")
+    if "vgpreload" in os.environ.get("LD_PRELOAD", "") or "asan" in os.environ.get("LD_PRELOAD", ""):
+        pytest.skip("malloc is not glibc's here")
+    marked, huge = _fresh_still(tmp_path, "huge.png", "")
+    assert marked >= 32 << 20
+    kept, small = _fresh_still(tmp_path, "small.png", "glibc.malloc.hugetlb=0")
+    assert kept == 0
+    assert huge == small and huge.startswith(b"\x89PNG")
+
+
+def test_figure_stills_are_the_cli_figures(lollipop, tmp_path):
+    # An SVG is drawn as `render --still` draws a figure (its text laid out
+    # for the printed size), and a PNG still of a scene with [figure] keys
+    # keeps that composition: the same bytes as the CLI's.
+    run_cli("render", SCENES / "lollipop.toml", "--still", "--width", 320, "--height", 180, "-o", tmp_path / "cli.svg",
+            "--quiet")
+    lollipop.still(width=320, height=180).save(tmp_path / "py.svg")
+
+    def numbered_ids_as_n(svg):  # cairo numbers its images over the process's life
+        return re.sub(rb'((?:id="|#)[A-Za-z_-]+)\d+', rb"\1N", svg.read_bytes())
+
+    assert numbered_ids_as_n(tmp_path / "py.svg") == numbered_ids_as_n(tmp_path / "cli.svg")
+    run_cli("render", SCENES / "lollipop.toml", "--still", "--width", 320, "--height", 180, "--set",
+            'figure.width="column"', "-o", tmp_path / "cli.png", "--quiet")
+    lollipop.set("figure.width", "column").still(width=320, height=180).save(tmp_path / "py.png")
+    assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli.png").read_bytes()

@@ -127,3 +127,19 @@ def test_wrong_types_raise_type_error(lollipop):
         lollipop.set("ball.radius", object())
     with pytest.raises(TypeError):
         lollipop.set(3, 1)
+
+
+def test_import_loads_no_heavy_module():
+    # A script that renders one still starts about as fast as the CLI
+    # (bench/bench_python.py): numpy, pandas, QuTiP, IPython, matplotlib,
+    # typing and re load when first used, not with `import rollspin`.
+    import sys
+    heavy = {"numpy", "pandas", "qutip", "IPython", "matplotlib", "ipywidgets", "typing", "re", "pathlib"}
+
+    def modules(code):
+        done = subprocess.run([sys.executable, "-c", code + "; print(' '.join(sys.modules))"], capture_output=True,
+                              text=True, check=True)
+        return set(done.stdout.split())
+
+    added = modules("import sys, rollspin") - modules("import sys")  # a site hook may load some anyway
+    assert heavy.isdisjoint(added), heavy & added

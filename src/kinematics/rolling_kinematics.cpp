@@ -1,6 +1,7 @@
 #include "kinematics/rolling_kinematics.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 
@@ -14,26 +15,37 @@ Mat3 skew(const Vec3& w) {
 }
 }  // namespace
 
-std::vector<double> firstDerivativeWeights(std::span<const double> nodes, double x0) {
+void firstDerivativeWeights(std::span<const double> nodes, double x0, std::span<double> weights) {
   // Fornberg (1988), "Generation of finite difference formulas on arbitrarily
-  // spaced grids", specialised to derivative orders 0 and 1.
+  // spaced grids", specialised to derivative orders 0 and 1. Row i of the
+  // tables needs only row i − 1: two rows each, on the stack (the same
+  // operations in the same order as the full tables, so the same bits).
   const std::size_t n = nodes.size();
-  std::vector<std::vector<double>> c0(n, std::vector<double>(n, 0.0)), c1 = c0;
-  c0[0][0] = 1.0;
+  assert(n >= 1 && n <= kMaxDerivativeNodes && weights.size() == n);
+  std::array<double, kMaxDerivativeNodes> c0prev{}, c1prev{}, c0{}, c1{};
+  c0[0] = 1.0;
   double c1prod = 1.0;
   for (std::size_t i = 1; i < n; ++i) {
+    c0prev = c0;
+    c1prev = c1;
     double c2 = 1.0;
     for (std::size_t j = 0; j < i; ++j) {
       const double c3 = nodes[i] - nodes[j];
       c2 *= c3;
-      c1[i][j] = ((nodes[i] - x0) * c1[i - 1][j] - c0[i - 1][j]) / c3;
-      c0[i][j] = ((nodes[i] - x0) * c0[i - 1][j]) / c3;
+      c1[j] = ((nodes[i] - x0) * c1prev[j] - c0prev[j]) / c3;
+      c0[j] = ((nodes[i] - x0) * c0prev[j]) / c3;
     }
-    c1[i][i] = c1prod / c2 * (c0[i - 1][i - 1] - (nodes[i - 1] - x0) * c1[i - 1][i - 1]);
-    c0[i][i] = -c1prod / c2 * (nodes[i - 1] - x0) * c0[i - 1][i - 1];
+    c1[i] = c1prod / c2 * (c0prev[i - 1] - (nodes[i - 1] - x0) * c1prev[i - 1]);
+    c0[i] = -c1prod / c2 * (nodes[i - 1] - x0) * c0prev[i - 1];
     c1prod = c2;
   }
-  return c1[n - 1];
+  std::copy_n(c1.begin(), n, weights.begin());
+}
+
+std::vector<double> firstDerivativeWeights(std::span<const double> nodes, double x0) {
+  std::vector<double> weights(nodes.size());
+  firstDerivativeWeights(nodes, x0, weights);
+  return weights;
 }
 
 RollingKinematics::RollingKinematics(const geometry::ContactPath& path, double ballRadius, KinematicSettings settings)
@@ -87,7 +99,8 @@ Vec3 RollingKinematics::centreVelocity(double s, std::size_t seg) const {
   if (first + 8.0 * h > b) first = std::max(a, b - 8.0 * h);
   double nodes[9];
   for (int k = 0; k < 9; ++k) nodes[k] = first + k * h;
-  const std::vector<double> w = firstDerivativeWeights(nodes, s);
+  double w[9];
+  firstDerivativeWeights(nodes, s, w);
   Vec3 v = Vec3::Zero();
   for (int k = 0; k < 9; ++k) v += w[k] * centre(nodes[k]);
   return v;
@@ -111,7 +124,6 @@ Mat3 RollingKinematics::rk4Increment(const Mat3& q, double s, double h, std::siz
 std::vector<Mat3> RollingKinematics::orientations(std::span<const double> sampleS) const {
   std::vector<Mat3> out;
   out.reserve(sampleS.size());
-  const double length = path_.length();
   // Q accumulates small increments over tens of thousands of steps: each
   // addition rounds by ε|Q|, which summed to ~1e-12 rad at 20,000 steps (and
   // grew with more). Compensated (Kahan) summation carries the lost low

@@ -64,6 +64,11 @@ class RollingKinematics {
 };
 
 // Fornberg's weights for the first derivative at x0 from values at nodes x.
+// The span form writes them into `weights` (nodes.size() of them, at most
+// kMaxDerivativeNodes) without touching the heap: the march calls it three
+// times a step.
+inline constexpr std::size_t kMaxDerivativeNodes = 16;
+void firstDerivativeWeights(std::span<const double> nodes, double x0, std::span<double> weights);
 [[nodiscard]] std::vector<double> firstDerivativeWeights(std::span<const double> nodes, double x0);
 
 }  // namespace rollspin::kinematics

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -39,6 +40,8 @@ void throwIfTheBallIsTooSmall(const scene::SceneSpec& spec, const RollingModel& 
                  model.ballRadius, needed, fits);
 }
 
+bool solverMethodGiven(const scene::SceneSpec& spec) { return spec.locations.contains("solver.method"); }
+
 }  // namespace
 
 SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& model) {
@@ -47,17 +50,31 @@ SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& mode
   if (!method)  // a SceneSpec built in code, not by the loader
     throw badInput(spec.where("solver.method"), "solver.method: unknown method \"{}\"", spec.solver.method);
   choice.method = *method;
-  // A storyboard is solved piece by piece: exact needs each piece constant.
+  // A storyboard is solved piece by piece: exact needs each piece constant,
+  // and the message names the first segment that is not.
   const auto pieces = model.path->pieces();
-  const bool constant = pieces.empty() ? model.path->hasConstantCurvatures()
-                                       : std::all_of(pieces.begin(), pieces.end(), [](const geometry::PathPiece& p) {
-                                           return p.path->hasConstantCurvatures();
-                                         });
-  if (choice.method == spin::Method::Exact && !constant) {
+  if (choice.method == spin::Method::Exact && pieces.empty() && !model.path->hasConstantCurvatures()) {
     throw badInput(spec.where("solver.method"),
                    "solver.method: \"exact\" needs a path with constant curvatures, but this path is a {}; "
                    "use \"magnus4\"",
                    model.path->describe());
+  }
+  for (std::size_t p = 0; choice.method == spin::Method::Exact && p < pieces.size(); ++p) {
+    if (pieces[p].path->hasConstantCurvatures()) continue;
+    // The piece's segment: the p-th motion (start < end; holds have no piece).
+    std::size_t segment = 0, motions = 0;
+    for (std::size_t k = 0; k < model.segments.size(); ++k) {
+      if (!(model.segments[k].end > model.segments[k].start)) continue;
+      if (motions++ == p) {
+        segment = k;
+        break;
+      }
+    }
+    const std::string key = scene::SceneSpec::segmentKey(segment) + ".path";
+    throw badInput(spec.where(solverMethodGiven(spec) ? "solver.method" : key),
+                   "solver.method: \"exact\" needs constant curvatures in every segment, but {} is a {}, whose "
+                   "curvatures vary; use \"magnus4\" (or \"frame6a\")",
+                   key, pieces[p].path->describe());
   }
   const double length = model.path->length();
   if (!(std::isfinite(length) && length > 0.0)) {
@@ -127,6 +144,14 @@ spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& mo
   };
   long long steps = choice.steps;
   spin::SolveStats stats = solve(steps);
+  // solver.error_estimate = false: no second solve, so no estimate and no
+  // refinement on it; the a priori count stands (docs/solver.md).
+  if (!spec.solver.errorEstimate) {
+    stats.errorEstimate = std::numeric_limits<double>::quiet_NaN();
+    stats.errorEstimateBasis = std::string(kEstimateSkipped);
+    stats.errorEstimateSeconds = 0.0;
+    return stats;
+  }
   spin::estimateError(*model.path, model.ballRadius, choice.method, steps, choice.tolerance, stats);
   // Automatic steps: refine while the estimate says the a priori count fell
   // short. Each doubling reuses the previous solve as its coarse one, so the

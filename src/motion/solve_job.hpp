@@ -2,6 +2,7 @@
 // unless the scene sets solver.steps) and the timeline's sample arc lengths.
 #pragma once
 
+#include <string_view>
 #include <vector>
 
 #include "model/rolling_model.hpp"
@@ -45,7 +46,10 @@ struct SolverChoice {
 // "automatic" is accurate even where the a priori count falls short.
 // Throws Runtime on a non-finite result.
 inline constexpr double kAutomaticEstimateTarget = 1e-10;
-// `choice.steps` becomes the count used.
+// `choice.steps` becomes the count used. With solver.error_estimate = false
+// no estimate is made (errorEstimate NaN, basis kEstimateSkipped, no
+// refinement).
+inline constexpr std::string_view kEstimateSkipped = "skipped (solver.error_estimate = false)";
 [[nodiscard]] spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model,
                                           SolverChoice& choice);
 // The same, for a caller that does not need the count used.

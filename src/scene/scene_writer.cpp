@@ -187,6 +187,7 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   if (spec.solver.steps) w.key("steps", std::to_string(*spec.solver.steps));
   else w.computed("steps", "automatic");
   if (spec.solver.tolerance) w.key("tolerance", number(*spec.solver.tolerance));
+  w.key("error_estimate", boolean(spec.solver.errorEstimate));
 
   w.section("timeline");
   if (spec.timeline.samples) w.key("samples", std::to_string(*spec.timeline.samples));

@@ -25,7 +25,7 @@ std::pair<std::string, SourceLoc> pathSizeKey(const scene::SceneSpec& spec) {
 // budget falls monotonically as R grows).
 void throwIfTheBallIsTooSmall(const scene::SceneSpec& spec, const RollingModel& model, double needed) {
   const double limit = static_cast<double>(scene::kMaxSolverSteps);
-  auto stepsFor = [&](double radius) { return 400.0 * spin::integratedStepBudget(*model.path, radius); };
+  auto stepsFor = [&](double radius) { return kAutomaticStepsPerRadian * spin::integratedStepBudget(*model.path, radius); };
   const double length = model.path->length();
   double fits = std::max(length, model.ballRadius);
   if (!(stepsFor(fits) <= limit)) return;  // the path itself is too long or too curved
@@ -38,6 +38,12 @@ void throwIfTheBallIsTooSmall(const scene::SceneSpec& spec, const RollingModel& 
                  "ball.radius = {:g}: automatic stepping would need {:.3g} steps on this path (400 per radian the "
                  "ball turns), above the limit of 1e11; ball.radius must be at least {:.3g} here, or set solver.steps",
                  model.ballRadius, needed, fits);
+}
+
+// The clamped count for `needed` steps: at least 64, at most the limit (NaN too).
+long long automaticCount(double needed) {
+  if (!(needed <= static_cast<double>(scene::kMaxSolverSteps))) return scene::kMaxSolverSteps;
+  return std::max<long long>(64, static_cast<long long>(std::ceil(needed)));
 }
 
 bool solverMethodGiven(const scene::SceneSpec& spec) { return spec.locations.contains("solver.method"); }
@@ -82,6 +88,8 @@ SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& mode
     throw badInput(loc, "{}: the path's length {} is not a finite positive number", key, length);
   }
   choice.automaticSteps = !spec.solver.steps.has_value();
+  // ∫(|ω| + |d|) ds once: the automatic count and the estimate's round-off floor.
+  choice.stepBudget = spin::integratedStepBudget(*model.path, model.ballRadius);
   if (spin::isAdaptive(choice.method)) {
     choice.automaticSteps = false;
     choice.tolerance = spec.solver.tolerance.value_or(scene::SolverSpec::kDefaultTolerance);
@@ -90,7 +98,7 @@ SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& mode
   if (spec.solver.steps) {
     choice.steps = *spec.solver.steps;
   } else if (choice.method != spin::Method::Exact) {
-    const double needed = requiredAutomaticSteps(model);
+    const double needed = kAutomaticStepsPerRadian * choice.stepBudget;
     if (!(needed <= static_cast<double>(scene::kMaxSolverSteps))) {
       throwIfTheBallIsTooSmall(spec, model, needed);
       const auto [key, loc] = pathSizeKey(spec);
@@ -99,13 +107,13 @@ SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& mode
                      "path or set solver.steps",
                      key, needed);
     }
-    choice.steps = automaticSteps(model, choice.method);
+    choice.steps = automaticCount(needed);
   }
   return choice;
 }
 
 double requiredAutomaticSteps(const RollingModel& model) {
-  return 400.0 * spin::integratedStepBudget(*model.path, model.ballRadius);
+  return kAutomaticStepsPerRadian * spin::integratedStepBudget(*model.path, model.ballRadius);
 }
 
 long long automaticSteps(const RollingModel& model, spin::Method method) {
@@ -115,9 +123,7 @@ long long automaticSteps(const RollingModel& model, spin::Method method) {
   // near 1e-13 per radian of rotation on the foundation's scenes (measured:
   // lollipop 5e-14, see tests). Other methods get the same grid: they are
   // baselines, and a user studying them sets solver.steps.
-  const double needed = requiredAutomaticSteps(model);
-  if (!(needed <= static_cast<double>(scene::kMaxSolverSteps))) return scene::kMaxSolverSteps;  // NaN too
-  return std::max<long long>(64, static_cast<long long>(std::ceil(needed)));
+  return automaticCount(requiredAutomaticSteps(model));
 }
 
 long long defaultSampleCount(const RollingModel& model) {
@@ -134,9 +140,11 @@ spin::SampleArcLengths timelineArcLengths(const scene::SceneSpec& spec, const Ro
 }
 
 spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model, SolverChoice& choice) {
+  // One propagator; the refinement's finer ones and the estimate's coarse one
+  // share its segment budgets (withSteps: no second quadrature).
+  const spin::Propagator first(*model.path, model.ballRadius, choice.method, choice.steps, choice.tolerance);
   auto solve = [&](long long steps) {
-    spin::SolveStats stats =
-        spin::Propagator(*model.path, model.ballRadius, choice.method, steps, choice.tolerance).solveFinal();
+    spin::SolveStats stats = (steps == choice.steps ? first.solveFinal() : first.withSteps(steps).solveFinal());
     if (stats.status != spin::SolveStatus::Ok) {
       throw runtimeError(spec.where("solver.method"), "solver failed: {}", spin::statusMessage(stats.status));
     }
@@ -152,7 +160,9 @@ spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& mo
     stats.errorEstimateSeconds = 0.0;
     return stats;
   }
-  spin::estimateError(*model.path, model.ballRadius, choice.method, steps, choice.tolerance, stats);
+  const double budget = std::isfinite(choice.stepBudget) ? choice.stepBudget
+                                                          : spin::integratedStepBudget(*model.path, model.ballRadius);
+  spin::estimateError(first, stats, budget);
   // Automatic steps: refine while the estimate says the a priori count fell
   // short. Each doubling reuses the previous solve as its coarse one, so the
   // estimate stays "against half the steps". It stops when the estimate no

@@ -2,6 +2,7 @@
 // unless the scene sets solver.steps) and the timeline's sample arc lengths.
 #pragma once
 
+#include <limits>
 #include <string_view>
 #include <vector>
 
@@ -19,7 +20,13 @@ struct SolverChoice {
   long long steps = 0;
   bool automaticSteps = true;
   double tolerance = 0.0;  // adaptive methods (rk45, frame6a)
+  // ∫(|ω| + |d|) ds along the path (spin::integratedStepBudget), computed
+  // once by chooseSolver: the automatic count and the estimate's floor.
+  double stepBudget = std::numeric_limits<double>::quiet_NaN();
 };
+
+// Automatic steps per radian of ∫(|ω| + |d|) ds.
+inline constexpr double kAutomaticStepsPerRadian = 400.0;
 
 // Throws BadInput (at solver.method) when 'exact' is asked for a path with
 // varying curvatures.

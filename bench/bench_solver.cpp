@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
 
 #include "geometry/analytic_paths.hpp"
 #include "model/rolling_model.hpp"
@@ -107,3 +108,42 @@ static void BM_LollipopScene_Solve(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_LollipopScene_Solve)->Unit(benchmark::kMicrosecond);
+
+// A polyline with tight corners (issue 43: corner radius 0.002, R = 1.5),
+// solved as `rollspin solve` does it: the automatic count, shared among the
+// corner arcs by their ∫(|ω| + |d|) ds, and the error estimate. Paired with
+// BM_LollipopScene_Solve in docs/speed-history.md (2026-11-27) against the
+// commit before the per-segment allocation.
+namespace {
+constexpr const char* kPolylineCorners =
+    "[ball]\nradius = 1.5\n[surface]\nkind = \"plane\"\n[path]\nkind = \"points\"\ninterpolation = \"polyline\"\n"
+    "corner_radius = 0.002\npoints = [[0, 0, 0], [3, 0.5, 0], [3.5, 3, 0], [0.5, 4, 0], [-1, 2, 0]]\n";
+void runScene(benchmark::State& state, const scene::SceneSpec& spec) {
+  const model::RollingModel model = model::buildModel(spec);
+  long long steps = 0;
+  for (auto _ : state) {
+    motion::SolverChoice choice = motion::chooseSolver(spec, model);
+    const spin::SolveStats stats = motion::solveScene(spec, model, choice);
+    steps = stats.steps;
+    benchmark::DoNotOptimize(stats.final);
+  }
+  state.counters["steps"] = static_cast<double>(steps);
+}
+}  // namespace
+static void BM_PolylineScene_Solve(benchmark::State& state) {
+  runScene(state, scene::loadSceneText(kPolylineCorners, "polyline-corners"));
+}
+BENCHMARK(BM_PolylineScene_Solve)->Unit(benchmark::kMicrosecond);
+
+// The same two scenes without the error estimate (solver.error_estimate =
+// false): the solve alone, so that the estimate's cost is the difference.
+static void BM_LollipopScene_SolveWithoutEstimate(benchmark::State& state) {
+  const std::string off[] = {"solver.error_estimate=false"};
+  runScene(state, scene::loadSceneFile(ROLLSPIN_SOURCE_DIR "/scenes/lollipop.toml", off));
+}
+BENCHMARK(BM_LollipopScene_SolveWithoutEstimate)->Unit(benchmark::kMicrosecond);
+static void BM_PolylineScene_SolveWithoutEstimate(benchmark::State& state) {
+  const std::string off[] = {"solver.error_estimate=false"};
+  runScene(state, scene::loadSceneText(kPolylineCorners, "polyline-corners", off));
+}
+BENCHMARK(BM_PolylineScene_SolveWithoutEstimate)->Unit(benchmark::kMicrosecond);

@@ -60,10 +60,10 @@ int runSolve(const SolveOptions& o) {
         "  \"axis\": [{:.17g}, {:.17g}, {:.17g}],\n  \"spinor_angle\": {:.17g},\n"
         "  \"unitarity_error\": {:.6g},\n  \"solve_seconds\": {:.6g},\n"
         "  \"error_estimate\": {},\n  \"error_estimate_basis\": \"{}\",\n"
-        "  \"error_estimate_seconds\": {:.6g}\n}}\n",
+        "  \"error_estimate_seconds\": {:.6g},\n  \"error_estimate_skipped\": {}\n}}\n",
         spec.name, model.path->length(), spin::methodName(choice.method), stats.steps, q.w, q.x, q.y, q.z, aa.angle,
         aa.axis.x(), aa.axis.y(), aa.axis.z(), psi, stats.unitarityError, stats.seconds, jsonNumber(stats.errorEstimate),
-        stats.errorEstimateBasis, stats.errorEstimateSeconds);
+        stats.errorEstimateBasis, stats.errorEstimateSeconds, spec.solver.errorEstimate ? "false" : "true");
     return 0;
   }
   constexpr double deg = 180.0 / std::numbers::pi;
@@ -84,8 +84,11 @@ int runSolve(const SolveOptions& o) {
              spin::onNegativeSheet(q) ? "negative (U ~ -1)" : "positive");
   fmt::print("unitarity error  {:.3g}\n", stats.unitarityError);
   fmt::print("solve time       {:.3g} s\n", stats.seconds);
-  fmt::print("error estimate   {:.2g} rad  ({}; took {:.3g} s)\n", stats.errorEstimate, stats.errorEstimateBasis,
-             stats.errorEstimateSeconds);
+  if (spec.solver.errorEstimate)
+    fmt::print("error estimate   {:.2g} rad  ({}; took {:.3g} s)\n", stats.errorEstimate, stats.errorEstimateBasis,
+               stats.errorEstimateSeconds);
+  else
+    fmt::print("error estimate   {}\n", stats.errorEstimateBasis);
   return 0;
 }
 

@@ -1,5 +1,7 @@
 #include "app/timeline_csv.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -63,11 +65,16 @@ spin::SolveStats writeTimelineCsv(const std::filesystem::path& out, const Rollin
                                   const spin::SolveStats& solved) {
   AtomicFile file(out);
   fmt::memory_buffer buffer;
-  fmt::format_to(std::back_inserter(buffer),
-                 "# rollspin timeline: {} with {} steps; error estimate of U(L) {:.2g} rad ({}; took {:.3g} s, "
-                 "the solve {:.3g} s)\n",
-                 spin::methodName(choice.method), solved.steps, solved.errorEstimate, solved.errorEstimateBasis,
-                 solved.errorEstimateSeconds, solved.seconds);
+  // A skipped estimate (solver.error_estimate = false) is NaN: say so, not "nan rad".
+  if (std::isnan(solved.errorEstimate))
+    fmt::format_to(std::back_inserter(buffer), "# rollspin timeline: {} with {} steps; error estimate of U(L) {} (the solve {:.3g} s)\n",
+                   spin::methodName(choice.method), solved.steps, solved.errorEstimateBasis, solved.seconds);
+  else
+    fmt::format_to(std::back_inserter(buffer),
+                   "# rollspin timeline: {} with {} steps; error estimate of U(L) {:.2g} rad ({}; took {:.3g} s, "
+                   "the solve {:.3g} s)\n",
+                   spin::methodName(choice.method), solved.steps, solved.errorEstimate, solved.errorEstimateBasis,
+                   solved.errorEstimateSeconds, solved.seconds);
   const bool segments = timelineHasSegments(model);
   fmt::format_to(std::back_inserter(buffer), "{}{}\n", fmt::join(kTimelineColumns, ","), segments ? ",segment" : "");
   // Rows are formatted into a buffer and handed to the file in ~1 MiB chunks.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -24,7 +25,7 @@ std::pair<std::string, SourceLoc> pathSizeKey(const scene::SceneSpec& spec) {
 // budget falls monotonically as R grows).
 void throwIfTheBallIsTooSmall(const scene::SceneSpec& spec, const RollingModel& model, double needed) {
   const double limit = static_cast<double>(scene::kMaxSolverSteps);
-  auto stepsFor = [&](double radius) { return 400.0 * spin::integratedStepBudget(*model.path, radius); };
+  auto stepsFor = [&](double radius) { return kAutomaticStepsPerRadian * spin::integratedStepBudget(*model.path, radius); };
   const double length = model.path->length();
   double fits = std::max(length, model.ballRadius);
   if (!(stepsFor(fits) <= limit)) return;  // the path itself is too long or too curved
@@ -39,6 +40,14 @@ void throwIfTheBallIsTooSmall(const scene::SceneSpec& spec, const RollingModel& 
                  model.ballRadius, needed, fits);
 }
 
+// The clamped count for `needed` steps: at least 64, at most the limit (NaN too).
+long long automaticCount(double needed) {
+  if (!(needed <= static_cast<double>(scene::kMaxSolverSteps))) return scene::kMaxSolverSteps;
+  return std::max<long long>(64, static_cast<long long>(std::ceil(needed)));
+}
+
+bool solverMethodGiven(const scene::SceneSpec& spec) { return spec.locations.contains("solver.method"); }
+
 }  // namespace
 
 SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& model) {
@@ -47,17 +56,31 @@ SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& mode
   if (!method)  // a SceneSpec built in code, not by the loader
     throw badInput(spec.where("solver.method"), "solver.method: unknown method \"{}\"", spec.solver.method);
   choice.method = *method;
-  // A storyboard is solved piece by piece: exact needs each piece constant.
+  // A storyboard is solved piece by piece: exact needs each piece constant,
+  // and the message names the first segment that is not.
   const auto pieces = model.path->pieces();
-  const bool constant = pieces.empty() ? model.path->hasConstantCurvatures()
-                                       : std::all_of(pieces.begin(), pieces.end(), [](const geometry::PathPiece& p) {
-                                           return p.path->hasConstantCurvatures();
-                                         });
-  if (choice.method == spin::Method::Exact && !constant) {
+  if (choice.method == spin::Method::Exact && pieces.empty() && !model.path->hasConstantCurvatures()) {
     throw badInput(spec.where("solver.method"),
                    "solver.method: \"exact\" needs a path with constant curvatures, but this path is a {}; "
                    "use \"magnus4\"",
                    model.path->describe());
+  }
+  for (std::size_t p = 0; choice.method == spin::Method::Exact && p < pieces.size(); ++p) {
+    if (pieces[p].path->hasConstantCurvatures()) continue;
+    // The piece's segment: the p-th motion (start < end; holds have no piece).
+    std::size_t segment = 0, motions = 0;
+    for (std::size_t k = 0; k < model.segments.size(); ++k) {
+      if (!(model.segments[k].end > model.segments[k].start)) continue;
+      if (motions++ == p) {
+        segment = k;
+        break;
+      }
+    }
+    const std::string key = scene::SceneSpec::segmentKey(segment) + ".path";
+    throw badInput(spec.where(solverMethodGiven(spec) ? "solver.method" : key),
+                   "solver.method: \"exact\" needs constant curvatures in every segment, but {} is a {}, whose "
+                   "curvatures vary; use \"magnus4\" (or \"frame6a\")",
+                   key, pieces[p].path->describe());
   }
   const double length = model.path->length();
   if (!(std::isfinite(length) && length > 0.0)) {
@@ -65,6 +88,8 @@ SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& mode
     throw badInput(loc, "{}: the path's length {} is not a finite positive number", key, length);
   }
   choice.automaticSteps = !spec.solver.steps.has_value();
+  // ∫(|ω| + |d|) ds once: the automatic count and the estimate's round-off floor.
+  choice.stepBudget = spin::integratedStepBudget(*model.path, model.ballRadius);
   if (spin::isAdaptive(choice.method)) {
     choice.automaticSteps = false;
     choice.tolerance = spec.solver.tolerance.value_or(scene::SolverSpec::kDefaultTolerance);
@@ -73,7 +98,7 @@ SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& mode
   if (spec.solver.steps) {
     choice.steps = *spec.solver.steps;
   } else if (choice.method != spin::Method::Exact) {
-    const double needed = requiredAutomaticSteps(model);
+    const double needed = kAutomaticStepsPerRadian * choice.stepBudget;
     if (!(needed <= static_cast<double>(scene::kMaxSolverSteps))) {
       throwIfTheBallIsTooSmall(spec, model, needed);
       const auto [key, loc] = pathSizeKey(spec);
@@ -82,13 +107,13 @@ SolverChoice chooseSolver(const scene::SceneSpec& spec, const RollingModel& mode
                      "path or set solver.steps",
                      key, needed);
     }
-    choice.steps = automaticSteps(model, choice.method);
+    choice.steps = automaticCount(needed);
   }
   return choice;
 }
 
 double requiredAutomaticSteps(const RollingModel& model) {
-  return 400.0 * spin::integratedStepBudget(*model.path, model.ballRadius);
+  return kAutomaticStepsPerRadian * spin::integratedStepBudget(*model.path, model.ballRadius);
 }
 
 long long automaticSteps(const RollingModel& model, spin::Method method) {
@@ -98,9 +123,7 @@ long long automaticSteps(const RollingModel& model, spin::Method method) {
   // near 1e-13 per radian of rotation on the foundation's scenes (measured:
   // lollipop 5e-14, see tests). Other methods get the same grid: they are
   // baselines, and a user studying them sets solver.steps.
-  const double needed = requiredAutomaticSteps(model);
-  if (!(needed <= static_cast<double>(scene::kMaxSolverSteps))) return scene::kMaxSolverSteps;  // NaN too
-  return std::max<long long>(64, static_cast<long long>(std::ceil(needed)));
+  return automaticCount(requiredAutomaticSteps(model));
 }
 
 long long defaultSampleCount(const RollingModel& model) {
@@ -117,9 +140,11 @@ spin::SampleArcLengths timelineArcLengths(const scene::SceneSpec& spec, const Ro
 }
 
 spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model, SolverChoice& choice) {
+  // One propagator; the refinement's finer ones and the estimate's coarse one
+  // share its segment budgets (withSteps: no second quadrature).
+  const spin::Propagator first(*model.path, model.ballRadius, choice.method, choice.steps, choice.tolerance);
   auto solve = [&](long long steps) {
-    spin::SolveStats stats =
-        spin::Propagator(*model.path, model.ballRadius, choice.method, steps, choice.tolerance).solveFinal();
+    spin::SolveStats stats = (steps == choice.steps ? first.solveFinal() : first.withSteps(steps).solveFinal());
     if (stats.status != spin::SolveStatus::Ok) {
       throw runtimeError(spec.where("solver.method"), "solver failed: {}", spin::statusMessage(stats.status));
     }
@@ -127,7 +152,17 @@ spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& mo
   };
   long long steps = choice.steps;
   spin::SolveStats stats = solve(steps);
-  spin::estimateError(*model.path, model.ballRadius, choice.method, steps, choice.tolerance, stats);
+  // solver.error_estimate = false: no second solve, so no estimate and no
+  // refinement on it; the a priori count stands (docs/solver.md).
+  if (!spec.solver.errorEstimate) {
+    stats.errorEstimate = std::numeric_limits<double>::quiet_NaN();
+    stats.errorEstimateBasis = std::string(kEstimateSkipped);
+    stats.errorEstimateSeconds = 0.0;
+    return stats;
+  }
+  const double budget = std::isfinite(choice.stepBudget) ? choice.stepBudget
+                                                          : spin::integratedStepBudget(*model.path, model.ballRadius);
+  spin::estimateError(first, stats, budget);
   // Automatic steps: refine while the estimate says the a priori count fell
   // short. Each doubling reuses the previous solve as its coarse one, so the
   // estimate stays "against half the steps". It stops when the estimate no

@@ -2,6 +2,8 @@
 // unless the scene sets solver.steps) and the timeline's sample arc lengths.
 #pragma once
 
+#include <limits>
+#include <string_view>
 #include <vector>
 
 #include "model/rolling_model.hpp"
@@ -18,7 +20,13 @@ struct SolverChoice {
   long long steps = 0;
   bool automaticSteps = true;
   double tolerance = 0.0;  // adaptive methods (rk45, frame6a)
+  // ∫(|ω| + |d|) ds along the path (spin::integratedStepBudget), computed
+  // once by chooseSolver: the automatic count and the estimate's floor.
+  double stepBudget = std::numeric_limits<double>::quiet_NaN();
 };
+
+// Automatic steps per radian of ∫(|ω| + |d|) ds.
+inline constexpr double kAutomaticStepsPerRadian = 400.0;
 
 // Throws BadInput (at solver.method) when 'exact' is asked for a path with
 // varying curvatures.
@@ -45,7 +53,10 @@ struct SolverChoice {
 // "automatic" is accurate even where the a priori count falls short.
 // Throws Runtime on a non-finite result.
 inline constexpr double kAutomaticEstimateTarget = 1e-10;
-// `choice.steps` becomes the count used.
+// `choice.steps` becomes the count used. With solver.error_estimate = false
+// no estimate is made (errorEstimate NaN, basis kEstimateSkipped, no
+// refinement).
+inline constexpr std::string_view kEstimateSkipped = "skipped (solver.error_estimate = false)";
 [[nodiscard]] spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model,
                                           SolverChoice& choice);
 // The same, for a caller that does not need the count used.

@@ -186,6 +186,7 @@ std::vector<KeyInfo> buildRegistry() {
   keys.push_back(info("solver", "method", {"string", inQuotes(d.solver.method) + " (frame6a with only a tolerance)", {}, methods, "", "", "the propagator"}));
   keys.push_back(info("solver", "steps", {"integer", "automatic", closed(1, double(kMaxSolverSteps)), {}, "fixed-step methods only", "", "the number of steps"}));
   keys.push_back(info("solver", "tolerance", {"number", num(SolverSpec::kDefaultTolerance), closed(1e-15, 1), {}, "adaptive methods only", "", "the adaptive methods' error per unit length"}));
+  keys.push_back(info("solver", "error_estimate", {"boolean", d.solver.errorEstimate ? "true" : "false", {}, {}, "", "", "the a posteriori error estimate of U(L), a second solve (docs/solver.md); false skips it and its cost (and automatic steps' refinement)"}));
   keys.push_back(info("timeline", "samples", {"integer", "60 per turn, + 1", closed(2, double(kMaxTimelineSamples)), {}, "", "", "rows of `rollspin timeline`'s CSV"}));
 
   const RenderSpec& r = d.render;

@@ -73,6 +73,7 @@ struct SolverSpec {
   std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4 | frame4 | cf4 | magnus6 | rk45 | frame6a
   std::optional<long long> steps;  // default: automatic (docs/solver.md#how-many-steps-and-how-accurate)
   std::optional<double> tolerance;  // adaptive methods; default kDefaultTolerance; alone → frame6a
+  bool errorEstimate = true;        // the a posteriori estimate of U(L) (a second solve); false skips it
   static constexpr double kDefaultTolerance = 1e-10;
 };
 

@@ -187,6 +187,9 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   if (spec.solver.steps) w.key("steps", std::to_string(*spec.solver.steps));
   else w.computed("steps", "automatic");
   if (spec.solver.tolerance) w.key("tolerance", number(*spec.solver.tolerance));
+  // Only when off: the resolved text (and the hash of it in a video's
+  // metadata) of every scene that keeps the default stays as it was.
+  if (!spec.solver.errorEstimate) w.key("error_estimate", boolean(false));
 
   w.section("timeline");
   if (spec.timeline.samples) w.key("samples", std::to_string(*spec.timeline.samples));

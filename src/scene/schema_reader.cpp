@@ -481,6 +481,7 @@ SceneSpec Reader::read() {
       failAt("solver.tolerance", fmt::format("expected a tolerance in [1e-15, 1], got {}", *tol));
     spec_.solver.tolerance = *tol;
   }
+  if (auto estimate = boolean(solver, "solver", "error_estimate")) spec_.solver.errorEstimate = *estimate;
   // A tolerance and no step count: the adaptive geometric method by default.
   // Steps and tolerance each belong to one kind of method.
   const bool methodGiven = spec_.locations.contains("solver.method");

@@ -89,19 +89,44 @@ std::string_view statusMessage(SolveStatus s) {
 
 Propagator::Propagator(const geometry::ContactPath& path, double ballRadius, Method method, long long steps,
                        double tolerance)
-    : path_(path), ballRadius_(ballRadius), method_(method), steps_(steps), tolerance_(tolerance) {
-  if (const auto pieces = path_.pieces(); !pieces.empty() && method_ != Method::Exact && !isAdaptive(method_)) {
+    : Propagator(path, ballRadius, method, steps, tolerance, nullptr) {}
+
+Propagator::Propagator(const geometry::ContactPath& path, double ballRadius, Method method, long long steps,
+                       double tolerance, std::shared_ptr<const SegmentBudgets> budgets)
+    : path_(path), ballRadius_(ballRadius), method_(method), steps_(steps), tolerance_(tolerance),
+      budgets_(std::move(budgets)) {
+  const bool fixedStep = method_ != Method::Exact && !isAdaptive(method_);
+  const auto pieces = path_.pieces();
+  // ∫(|ω| + |d|) ds per breakpoint segment (per piece of a joined path), by
+  // quadrature once: a propagator made by withSteps shares them.
+  if (fixedStep && !budgets_) {
+    auto computed = std::make_shared<SegmentBudgets>();
+    if (!pieces.empty()) {
+      for (const auto& piece : pieces) computed->push_back(segmentStepBudgets(*piece.path, ballRadius_));
+    } else {
+      // One segment needs no quadrature (all its steps are its own).
+      std::size_t inside = 0;
+      for (double b : path_.breakpoints()) inside += b > 0.0 && b < path_.length();
+      computed->push_back(inside > 0 ? segmentStepBudgets(path_, ballRadius_) : std::vector<double>{});
+    }
+    budgets_ = std::move(computed);
+  }
+  if (!pieces.empty() && fixedStep) {
     // Steps go where the rotation and the frame's turning are: a tight
     // circle gets more of them than a line of the same length.
     std::vector<double> budget;
     double total = 0.0;
-    for (const auto& piece : pieces) total += budget.emplace_back(integratedStepBudget(*piece.path, ballRadius_));
+    for (const std::vector<double>& perSegment : *budgets_) {
+      double sum = 0.0;  // in segment order from 0, as integratedStepBudget sums them
+      for (double b : perSegment) sum += b;
+      total += budget.emplace_back(sum);
+    }
     for (double b : budget) {
       const double share = total > 0.0 ? b / total : 1.0 / static_cast<double>(pieces.size());
       pieceSteps_.push_back(std::max<long long>(1, std::llround(static_cast<double>(steps_) * share)));
     }
   }
-  if (path_.pieces().empty() && method_ != Method::Exact && !isAdaptive(method_) && steps_ >= 1) {
+  if (pieces.empty() && fixedStep && steps_ >= 1) {
     // Breakpoint segments get steps by ∫(|ω| + |d|) ds, not by length: on a
     // polyline a corner arc of radius r turns the frame by its whole angle
     // in a length ∝ r, and a share by length left it a step or two (1e-7
@@ -114,7 +139,7 @@ Propagator::Propagator(const geometry::ContactPath& path, double ballRadius, Met
     if (cuts_.size() == 2) {
       segmentSteps_.push_back(steps_);
     } else {
-      const std::vector<double> budget = segmentStepBudgets(path_, ballRadius_);
+      const std::vector<double>& budget = budgets_->front();
       double total = 0.0;
       for (double b : budget) total += b;
       for (std::size_t k = 0; k + 1 < cuts_.size(); ++k) {
@@ -129,6 +154,10 @@ Propagator::Propagator(const geometry::ContactPath& path, double ballRadius, Met
     d0_ = geometry::darbouxVector(f0);
     e0_ = angularVelocity(f0, ballRadius_) - d0_;
   }
+}
+
+Propagator Propagator::withSteps(long long steps) const {
+  return Propagator(path_, ballRadius_, method_, steps, tolerance_, budgets_);
 }
 
 Vec3 Propagator::omega(double s) const { return angularVelocity(path_.at(s), ballRadius_); }
@@ -255,7 +284,9 @@ SolveStats Propagator::runPieces(const SampleArcLengths& sampleS, const SampleSi
         sampleS.slice(next, end - next, pieces[k].start, pieceLength, last ? INFINITY : pieces[k + 1].start);
     const long long steps = pieceSteps_.empty() ? 0 : pieceSteps_[k];
     const double tolerance = tolerance_ * pieceLength / std::max(path_.length(), 1e-300);
-    Propagator sub(piece, ballRadius_, method_, steps, tolerance);
+    // The piece's segment budgets were computed once (the constructor).
+    Propagator sub(piece, ballRadius_, method_, steps, tolerance,
+                   budgets_ ? std::make_shared<const SegmentBudgets>(1, (*budgets_)[k]) : nullptr);
     sub.setStepLimit(stepLimit_);
     // A forward-only slice ends at the first sample of a later piece: the
     // run stops there (its U is this piece's U(L_k), that sample reading as
@@ -439,19 +470,32 @@ SolveStats Propagator::run(const SampleArcLengths& sampleS, const SampleSink& si
 
 void estimateError(const geometry::ContactPath& path, double ballRadius, Method method, long long steps,
                    double tolerance, SolveStats& stats) {
+  const auto start = std::chrono::steady_clock::now();
+  estimateError(Propagator(path, ballRadius, method, steps, tolerance), stats);
+  stats.errorEstimateSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void estimateError(const Propagator& solved, SolveStats& stats, double stepBudget) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
+  const geometry::ContactPath& path = solved.path();
+  const double ballRadius = solved.ballRadius(), tolerance = solved.tolerance();
+  const Method method = solved.method();
+  const long long steps = solved.steps();
+  if (!std::isfinite(stepBudget)) stepBudget = integratedStepBudget(path, ballRadius);
   if (method == Method::Exact) {
     // No grid to halve: the closed form's error is the rounding of its two
     // exponentials' angles, at most a few ε per radian they turn.
     stats.errorEstimate =
-        8.0 * std::numeric_limits<double>::epsilon() * (1.0 + integratedStepBudget(path, ballRadius));
+        8.0 * std::numeric_limits<double>::epsilon() * (1.0 + stepBudget);
     stats.errorEstimateBasis = "round-off bound of the closed form, 8 eps (1 + integral of |w| + |d| ds)";
   } else {
     const bool adaptive = isAdaptive(method);
     long long otherSteps = std::max<long long>(1, steps / 2);
     double otherTolerance = 32.0 * tolerance;
-    SolveStats other = Propagator(path, ballRadius, method, otherSteps, otherTolerance).solveFinal();
+    // Fixed steps: the same segment budgets, no second quadrature.
+    SolveStats other = adaptive ? Propagator(path, ballRadius, method, 0, otherTolerance).solveFinal()
+                                : solved.withSteps(otherSteps).solveFinal();
     const char* which = adaptive ? "32x the tolerance" : "half the steps";
     // A grid that could not coarsen (each breakpoint segment already down to
     // one step, or an adaptive march held by something other than its
@@ -459,7 +503,8 @@ void estimateError(const geometry::ContactPath& path, double ballRadius, Method 
     if (other.status == SolveStatus::Ok && 4 * other.steps > 3 * stats.steps) {
       otherSteps = 2 * steps;
       otherTolerance = tolerance / 32.0;
-      other = Propagator(path, ballRadius, method, otherSteps, otherTolerance).solveFinal();
+      other = adaptive ? Propagator(path, ballRadius, method, 0, otherTolerance).solveFinal()
+                     : solved.withSteps(otherSteps).solveFinal();
       which = adaptive ? "1/32 of the tolerance" : "twice the steps";
     }
     stats.errorEstimate = other.status == SolveStatus::Ok ? rotationDistance(stats.final, other.final)
@@ -479,8 +524,11 @@ void estimateError(const geometry::ContactPath& path, double ballRadius, Method 
     // 48ε: the stress suite's tight turns (κ_g = 1e4) leave magnus4 1.3e-12
     // off with a difference of 1.3e-13 and a floor of 7e-15 (needs ≥ 37ε),
     // while frame6a on the plane at R/r = 1e-6 is 7.9e-11 off with a floor
-    // of 1.4e-9 (the 1000× bound allows ≤ 56ε).
-    stats.errorEstimate += 48.0 * std::numeric_limits<double>::epsilon() * integratedStepBudget(path, ballRadius);
+    // of 1.4e-9 (the 1000× bound allows ≤ 56ε). On the random default
+    // solves of tests/motion/automatic_accuracy_test.cpp (errors 1e-14 to
+    // 4e-13) this term is a sizeable share of the estimate, error/estimate
+    // ≤ 0.06 there (docs/solver.md).
+    stats.errorEstimate += 48.0 * std::numeric_limits<double>::epsilon() * stepBudget;
     stats.errorEstimateBasis += " + the round-off floor 48 eps x integral(|w| + |d|) ds";
   }
   stats.errorEstimateSeconds = std::chrono::duration<double>(Clock::now() - start).count();

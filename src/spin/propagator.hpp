@@ -40,6 +40,7 @@
 #include <algorithm>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <string>
 #include <optional>
 #include <span>
@@ -176,17 +177,31 @@ class Propagator {
   [[nodiscard]] Vec3 omega(double s) const;
 
   [[nodiscard]] Method method() const { return method_; }
+  [[nodiscard]] long long steps() const { return steps_; }
+  [[nodiscard]] double tolerance() const { return tolerance_; }
+  [[nodiscard]] const geometry::ContactPath& path() const { return path_; }
+  [[nodiscard]] double ballRadius() const { return ballRadius_; }
+  // The same march at another step count, sharing this one's segment
+  // budgets (no second quadrature): the error estimate's coarse solve and
+  // the automatic count's refinement.
+  [[nodiscard]] Propagator withSteps(long long steps) const;
   // Adaptive methods stop with StepLimit after this many attempted steps
   // (default 2e9): a report can bound a hopeless cell's cost.
   void setStepLimit(long long attempts) { stepLimit_ = attempts; }
 
  private:
+  // ∫(|ω| + |d|) ds per breakpoint segment, one list per piece (one list
+  // for a plain path, empty when it is one segment); fixed-step methods only.
+  using SegmentBudgets = std::vector<std::vector<double>>;
+  Propagator(const geometry::ContactPath& path, double ballRadius, Method method, long long steps, double tolerance,
+             std::shared_ptr<const SegmentBudgets> budgets);
   const geometry::ContactPath& path_;
   double ballRadius_;
   Method method_;
   long long steps_;
   double tolerance_;
   long long stepLimit_ = 2'000'000'000;
+  std::shared_ptr<const SegmentBudgets> budgets_;  // shared by withSteps copies
   // A joined path (ContactPath::pieces): one propagator per piece, the steps
   // shared by each piece's ∫(|ω| + |d|) ds, the tolerance by its length.
   [[nodiscard]] SolveStats runPieces(const SampleArcLengths& sampleS, const SampleSink& sink) const;
@@ -216,6 +231,11 @@ class Propagator {
 // the estimate infinite.
 void estimateError(const geometry::ContactPath& path, double ballRadius, Method method, long long steps,
                    double tolerance, SolveStats& stats);
+// The same for a solve by `solved`, whose segment budgets the coarse solve
+// shares; `stepBudget` = ∫(|ω| + |d|) ds when the caller has it (NaN:
+// computed here).
+void estimateError(const Propagator& solved, SolveStats& stats,
+                   double stepBudget = std::numeric_limits<double>::quiet_NaN());
 
 // Fractions c ∈ [0, 1] of a step at which a stepping method samples ω.
 inline constexpr std::size_t kMaxNodes = 3;

@@ -163,3 +163,35 @@ TEST(ScenePrint, GlContextKeysRoundTrip) {
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_NE(bad.err.find("render.device"), std::string::npos) << bad.err;
 }
+
+// solver.error_estimate = false skips the second solve: JSON says so (null,
+// skipped), the text and the timeline's header comment say "skipped"; the
+// solve itself is unchanged, bit for bit.
+TEST(Cli, ErrorEstimateCanBeSkippedByItsKey) {
+  const auto with = runRollspin({"solve", scenePath("lollipop.toml"), "--json"});
+  const auto without =
+      runRollspin({"solve", scenePath("lollipop.toml"), "--json", "--set", "solver.error_estimate=false"});
+  ASSERT_EQ(with.exitCode, 0) << with.err;
+  ASSERT_EQ(without.exitCode, 0) << without.err;
+  EXPECT_NE(with.out.find("\"error_estimate_skipped\": false"), std::string::npos) << with.out;
+  EXPECT_GT(jsonNumber(with.out, "error_estimate"), 0.0);
+  EXPECT_NE(without.out.find("\"error_estimate\": null"), std::string::npos) << without.out;
+  EXPECT_NE(without.out.find("\"error_estimate_skipped\": true"), std::string::npos) << without.out;
+  EXPECT_EQ(jsonNumber(without.out, "error_estimate_seconds"), 0.0);
+  auto quaternion = [](const std::string& json) { return json.substr(json.find("\"quaternion\"")).substr(0, 120); };
+  EXPECT_EQ(quaternion(with.out), quaternion(without.out));
+  const auto text = runRollspin({"solve", scenePath("lollipop.toml"), "--set", "solver.error_estimate=false"});
+  EXPECT_NE(text.out.find("error estimate   skipped (solver.error_estimate = false)"), std::string::npos) << text.out;
+  const auto dir = freshTempDir("no-estimate");
+  const auto out = dir / "t.csv";
+  const auto tl = runRollspin({"timeline", scenePath("lollipop.toml"), "-o", out.string(), "--set",
+                               "solver.error_estimate=false"});
+  ASSERT_EQ(tl.exitCode, 0) << tl.err;
+  std::ifstream in(out);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_NE(header.find("error estimate of U(L) skipped"), std::string::npos) << header;
+  const auto bad = runRollspin({"solve", scenePath("lollipop.toml"), "--set", "solver.error_estimate=1"});
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("solver.error_estimate"), std::string::npos) << bad.err;
+}

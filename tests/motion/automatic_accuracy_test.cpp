@@ -1,6 +1,7 @@
 // "Automatic means accurate": scenes with no solver.* key — random polylines
 // on tilted planes (corner radii spread over four decades down to 1e-4 R),
-// polylines on a sphere and a paraboloid, and random storyboards — solved as
+// polylines on a sphere and a paraboloid, on a cylinder, torus, saddle and
+// height field (in their parameters), and random storyboards — solved as
 // `rollspin solve` solves them (motion::chooseSolver + solveScene), must come
 // within 1e-10 rad of the independent kinematic oracle (src/kinematics: SO(3)
 // from point(s) and normal(s) only, no curvature, no spinor). The same runs
@@ -159,6 +160,41 @@ TEST(AutomaticAccuracy, RandomPolylinesOnCurvedSurfaces) {
         R, surface, r, points);
     expectAccurateAndEstimated(
         solveAndJudge(toml, fmt::format("{} polyline {} (R {:.2f}, r {:.1e})", sphere ? "sphere" : "paraboloid", c, R, r)),
+        toml);
+  }
+}
+
+// Polylines in each remaining surface's own parameters (u, v) — cylinder
+// (φ, z), torus (φ, ψ), saddle and height field (x, y) — with corner radii
+// over four decades (in those parameters, docs/conventions.md).
+TEST(AutomaticAccuracy, RandomPolylinesOnEveryOtherSurfaceKind) {
+  std::mt19937 rng(434343434);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const char* surfaces[] = {
+      "kind = \"cylinder\"\nradius = 2\naxis = [0, 0, 1]\nside = \"outside\"",
+      "kind = \"torus\"\nmajor_radius = 4\nminor_radius = 1.5\nside = \"outside\"",
+      "kind = \"saddle\"\na = 4\nb = 3\nside = \"above\"",
+      "kind = \"height\"\nz = \"0.3*sin(x)*cos(0.7*y)\"\nside = \"above\"",
+  };
+  const char* names[] = {"cylinder", "torus", "saddle", "height"};
+  for (int c = 0; c < casesPerFamily(); ++c) {
+    const int kind = c % 4;
+    const double R = 0.2 + 0.4 * unit(rng), r = cornerRadius(rng, 0.25);
+    // A rough quadrilateral in (u, v): radians on the cylinder's and torus's
+    // angles (the torus kept to its outer half, ψ within ±0.9), lengths elsewhere.
+    const double scaleU = kind == 0 ? 0.8 : kind == 1 ? 0.6 : 1.5, scaleV = kind == 1 ? 0.6 : 1.5;
+    std::string points;
+    for (int i = 0; i < 4; ++i) {
+      const double angle = 1.5708 * i + 0.5 * (unit(rng) - 0.5), spread = 1.0 + 0.4 * unit(rng);
+      points += fmt::format("{}[{:.17g}, {:.17g}]", i ? ", " : "", scaleU * spread * std::cos(angle),
+                            scaleV * spread * std::sin(angle));
+    }
+    const std::string toml = fmt::format(
+        "[ball]\nradius = {:.17g}\n[surface]\n{}\n[path]\nkind = \"points\"\ninterpolation = \"polyline\"\n"
+        "corner_radius = {:.17g}\npoints = [{}]\n",
+        R, surfaces[kind], r, points);
+    expectAccurateAndEstimated(
+        solveAndJudge(toml, fmt::format("{} polyline {} (R {:.2f}, r {:.1e})", names[kind], c, R, r)),
         toml);
   }
 }

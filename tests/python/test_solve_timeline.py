@@ -20,6 +20,14 @@ def test_solve_is_the_cli_solve(lollipop):
     assert 0.0 <= sol.error_estimate < 1e-10 and sol.error_estimate == pytest.approx(cli["error_estimate"], rel=1e-6)
 
 
+def test_error_estimate_can_be_skipped_by_its_key(lollipop):
+    # solver.error_estimate = false: no second solve; the estimate is NaN, the basis says why, U(L) is unchanged.
+    sol = lollipop.set("solver.error_estimate", False).solve()
+    assert np.isnan(sol.error_estimate)
+    assert sol.error_estimate_basis == "skipped (solver.error_estimate = false)"
+    assert sol.quaternion.tolist() == lollipop.solve().quaternion.tolist()
+
+
 def test_sign_is_kept():
     # r = √3 R: δ = 4π and U = −1 exactly (scenes/lollipop.toml's comment).
     sol = rollspin.load(SCENES / "lollipop.toml").set("path.radius", 3 ** 0.5).solve()

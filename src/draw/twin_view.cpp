@@ -45,7 +45,10 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
   // no less than half the window) rather than push its labels off the view
   // or onto its arrows.
   const double windowPx = 0.25 * std::min((window_.x1 - window_.x0) * v.width, (window_.y1 - window_.y0) * v.height);
-  const double labelRoom = spec_.render.labels ? std::min(0.5, 1.2 * text / std::max(windowPx, 1.0)) : 0.0;
+  // (Only for text set larger than an image's own share, as a figure's at
+  // a narrow width: a plain still keeps its framing.)
+  const bool largeText = spec_.render.labels && spec_.render.fontScale > 1.0;
+  const double labelRoom = largeText ? std::min(0.5, 1.2 * text / std::max(windowPx, 1.0)) : 0.0;
   const double sceneRadius = std::max(1.42, 1.3 / (1.0 - labelRoom));
   // Framed into the window the text leaves free (the whole view by default).
   const Lens lens = windowLens(window_, aim.fovDeg, aspect);

@@ -101,6 +101,10 @@ void writeFigureStill(const scene::SceneSpec& spec, const render::DrawList& list
     }
   }
   StageLog::instance().record("figure");
+  render::writeFigure(out, format, list, rasters, figureStyleOf(spec, list));
+}
+
+render::FigureStyle figureStyleOf(const scene::SceneSpec& spec, const render::DrawList& list) {
   render::FigureStyle style;
   style.widthPt = spec.figure.widthMm / 25.4 * 72.0;
   style.font = spec.figure.font;
@@ -108,7 +112,7 @@ void writeFigureStill(const scene::SceneSpec& spec, const render::DrawList& list
   // The drawing's own body text size: figure.font_size_pt is set for that one.
   style.bodyTextPx = draw::bodyTextPx(list.width, list.height, spec.render.fontScale);
   style.transparent = spec.figure.transparent;
-  render::writeFigure(out, format, list, rasters, style);
+  return style;
 }
 
 }  // namespace rollspin::app

@@ -37,6 +37,10 @@ inline constexpr double kDefaultFigureTextPt = 8.0;
 // size.
 void fitTextToFigure(scene::SceneSpec& spec);
 
+// The vector backend's style for the still's list: the page width, the
+// font and the body size the list was laid out for.
+[[nodiscard]] render::FigureStyle figureStyleOf(const scene::SceneSpec& spec, const render::DrawList& list);
+
 // Renders the raster parts with GL (only when the list has meshes) and
 // writes the figure to `out`.
 void writeFigureStill(const scene::SceneSpec& spec, const render::DrawList& list, const std::filesystem::path& out,

@@ -35,7 +35,7 @@ struct RenderCliOptions {
 
 // Without --still: an animation (animation_job.hpp); 128 + signal when interrupted.
 int runAnimation(const RenderCliOptions& o, const CLI::App& command) {
-  for (const char* stillOnly : {"--at"})
+  for (const char* stillOnly : {"--at", "--layout-json"})
     if (command.count(stillOnly) > 0) throw badInput({stillOnly}, "applies to --still only");
   AnimationOptions a;
   a.scenePath = o.still.scenePath;
@@ -284,6 +284,9 @@ void registerRenderCommands(CLI::App& cli, CommandHandler& handler) {
   render->add_flag("--transparent", options->still.transparent, "No background: alpha in a PNG still or PNG frames, a WebM (VP9) or MOV "
                                                          "(ProRes 4444) clip, a PDF/SVG figure; GIF: 1-bit");
   render->add_option("--set", options->still.overrides, "Override a scene key: --set key.sub=value (repeatable)");
+  render->add_option("--layout-json", options->still.layoutJson,
+                     "With --still and a PDF/SVG figure: also write its layout (text boxes, plates, arrows, paths; "
+                     "page points) as JSON");
   render->add_option("--shader-dir", options->shaderDir, "Read shaders from this folder instead of the built-in copies");
   render->callback([options, render, &handler] {
     handler = [options, render] { return runRender(*options, *render); };

@@ -1,5 +1,6 @@
 #include "app/render_jobs.hpp"
 
+#include "core/atomic_file.hpp"
 #include "core/memory_budget.hpp"
 #include "core/output_path.hpp"
 #include "core/stage_log.hpp"
@@ -145,27 +146,36 @@ FrameOrientations stillFrame(const DrawJob& job, double s) {
   return frame;
 }
 
+render::DrawList drawStill(const DrawJob& job, const std::optional<std::string>& at) {
+  return makeDrawer(job)->draw(stillFrame(job, stillArcLength(job, at)));
+}
+
 std::filesystem::path renderStill(const StillOptions& o) {
   DrawJob job = prepareDrawJob({o.scenePath, o.overrides, {}, o.width, o.height, o.transparent, o.output,
                                 media::OutputUse::Still});
   const media::OutputFormat& format = *job.format;
   const auto figure = figureFormatOf(format);  // PDF/SVG: drawn by the vector backend (figure_job.hpp)
   if (figure) checkFigureSpec(job.spec);
+  if (!o.layoutJson.empty() && !figure)
+    throw badInput({"--layout-json"}, "applies to a figure (-o FILE.pdf or FILE.svg) only");
   // A figure's text is laid out for its printed size; a PNG still of a
   // scene that sets [figure] keys keeps the same composition, scaled.
   if (figure || setsFigureKeys(job.spec)) fitTextToFigure(job.spec);
   const scene::SceneSpec& spec = job.spec;
-  const double s = stillArcLength(job, o.at);
 
   std::filesystem::path out = o.output;
   if (out.empty()) {
     std::filesystem::create_directories("output");
     out = std::filesystem::path("output") / (spec.name + format.defaultExtension());
   }
-  const FrameOrientations frame = stillFrame(job, s);
-  const render::DrawList list = makeDrawer(job)->draw(frame);
+  const render::DrawList list = drawStill(job, o.at);
   if (figure) {
     writeFigureStill(spec, list, out, *figure, o.shaderDir);
+    if (!o.layoutJson.empty()) {
+      AtomicFile json(o.layoutJson);
+      json.write(render::figureLayoutJson(render::figureLayout(list, figureStyleOf(spec, list))));
+      json.commit();
+    }
     return out;
   }
 

@@ -45,6 +45,9 @@ struct StillOptions {
   std::optional<long long> width, height;
   bool transparent = false;
   std::filesystem::path shaderDir;
+  // With a figure output: also writes its layout (render::figureLayoutJson:
+  // plates, text boxes, arrows and paths in page points) to this file.
+  std::filesystem::path layoutJson;
 };
 
 // Renders one still and writes it; returns the path written.
@@ -69,6 +72,12 @@ void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerP
 [[nodiscard]] media::SinkOptions sinkOptions(const scene::SceneSpec& spec, const std::filesystem::path& path);
 
 std::filesystem::path renderStill(const StillOptions& options);
+
+struct DrawJob;
+// The still's DrawList at `at` (default: the middle, the end for a strobe),
+// as renderStill draws it: no GL. A figure's layout follows the job's spec
+// (fitTextToFigure first).
+[[nodiscard]] render::DrawList drawStill(const DrawJob& job, const std::optional<std::string>& at);
 
 struct DrawJob;  // job_setup.hpp
 // The arc length a still shows: `at` ("s=…" | "fraction=…"), else the middle

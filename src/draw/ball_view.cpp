@@ -258,6 +258,7 @@ void BallView::add(render::DrawList& list, const FrameOrientations& frame, int v
   travelled.color = kTravelledColor;
   travelled.widthPx = std::max(2.5f, float(list.height) / 200.0f);
   full.view = travelled.view = view;
+  full.labelsKeepOff = travelled.labelsKeepOff = true;
   for (std::size_t i = 0; i < pathS_.size(); ++i) {
     const Vec3 p = pathPoints_[i] + 0.004 * R * model_.path->normal(pathS_[i]);
     full.points.push_back(toGlm(p));
@@ -306,6 +307,7 @@ void BallView::add(render::DrawList& list, const FrameOrientations& frame, int v
     markerTrail.color = kMarkerTrailColor;
     markerTrail.widthPx = std::max(1.5f, float(list.height) / 360.0f);  // no hairline: ~3 px at 1080p
     markerTrail.view = view;
+    markerTrail.labelsKeepOff = true;
     for (const auto& t : frame.trail)
       markerTrail.points.push_back(toGlm(model_.path->at(t.s).centre(R) + R * t.q.rotate(markerBody_)));
     // All its points but the last lie on the trail grid.
@@ -352,6 +354,7 @@ void BallView::add(render::DrawList& list, const FrameOrientations& frame, int v
     plateTrail.color = kPlateTrailColor;
     plateTrail.widthPx = std::max(1.2f, float(list.height) / 450.0f);
     plateTrail.view = view;
+    plateTrail.labelsKeepOff = true;
     for (std::size_t i = 0; i < pathS_.size(); ++i) {
       if (pathS_[i] > s) break;
       plateTrail.points.push_back(toGlm(platePoint(pathS_[i], thickness * 1.05)));

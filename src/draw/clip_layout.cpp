@@ -343,6 +343,7 @@ void addTextBlock(render::DrawList& list, const TextBlock& block, glm::vec2 orig
     plate.specular = 0.0f;
     plate.cull = render::Cull::None;
     list.meshes.push_back({quad, worldFromModel, plate, view});
+    list.meshes.back().textPlate = true;
   }
   const float pad = kBlockPad * block.lines.front().sizePx;
   float y = origin.y + pad;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "draw/draw_style.hpp"
+#include "draw/label_placement.hpp"
 #include "draw/text_blocks.hpp"
 #include "render/mesh_builders.hpp"
 
@@ -231,12 +232,18 @@ void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& fram
       addTextBlock(list, blocks[i], layout.origins[i], view);
     }
   };
+  // A still (a strobe) is read at leisure: its world-anchored labels (axis
+  // and pole labels, the marks' numbers) move off the arrows, the paths and
+  // the text (label_placement.hpp); in a clip they keep their places.
+  const bool still = frame.still || !frame.strobe.empty();
   if (r.ball.width > 0) {
     render::View v = camera_->ballCamera(r.ball.x, r.ball.y, r.ball.width, r.ball.height, s, frame.story);
     list.views.push_back(v);
     const int view = int(list.views.size()) - 1;
+    const std::size_t firstLabel = list.labels.size();
     ball_->add(list, frame, view);
     place(ballBlocks(frame, float(r.ball.width)), ballReserved_, ballLayout_, view);
+    if (still) keepLabelsClear(list, view, firstLabel);
   }
   if (twin_) {
     render::View twin;
@@ -251,9 +258,11 @@ void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& fram
     // marker and the Bloch arrow point the same way on screen; "fixed": the
     // first shot's direction (at s = 0) for the whole clip.
     const StoryPlace story = spec_.render.twinCameraFixed ? StoryPlace{} : frame.story;
+    const std::size_t firstLabel = list.labels.size();
     twin_->add(list, frame, view,
                camera_->aimAt(story, twin.width, twin.height, spec_.render.twinCameraFixed ? 0.0 : s));
     place(twinBlocks(frame, float(twin.width), r.inset), twinReserved_, twinLayout_, view);
+    if (still) keepLabelsClear(list, view, firstLabel);
   }
 }
 

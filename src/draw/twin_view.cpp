@@ -31,84 +31,6 @@ TwinView::TwinView(const scene::SceneSpec& spec, const model::RollingModel& mode
   if (facts && facts->phaseSplit) fieldConeMesh_ = coneMesh(facts->phaseSplit->fieldLoop);
 }
 
-namespace {
-
-// The axis and pole labels stay off the arrows (the strobe's Bloch vectors
-// reach the sphere, where the labels sit): each label whose box, padded by
-// a quarter em, crosses a projected arrow (or a label placed before it,
-// or the view's edge) moves to the nearest of a ring of offsets, up to 2.5 em away, that is
-// clear; it stays where it was when none is.
-void keepLabelsOffArrows(render::DrawList& list, int view, std::size_t first) {
-  const render::View& v = list.views[std::size_t(view)];
-  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
-  auto project = [&](const glm::vec3& p) {
-    const glm::vec4 c = clipFromWorld * glm::vec4(p, 1.0f);
-    return glm::vec2((c.x / c.w * 0.5f + 0.5f) * float(v.width), (0.5f - c.y / c.w * 0.5f) * float(v.height));
-  };
-  struct Segment {
-    glm::vec2 a, b;
-    float half;
-  };
-  std::vector<Segment> arrows;
-  const float focal = 0.5f * float(v.height) * v.camera.clipFromView[1][1];
-  for (const render::ArrowItem& a : list.arrows)
-    if (a.view == view) {
-      const float depth = glm::length(v.camera.position - a.tip);
-      arrows.push_back({project(a.origin), project(a.tip), 2.5f * a.shaftRadius * focal / std::max(depth, 1e-3f) + 1.0f});
-    }
-  auto distanceToSegment = [](glm::vec2 p, const Segment& s) {
-    const glm::vec2 d = s.b - s.a;
-    const float t = glm::clamp(glm::dot(p - s.a, d) / std::max(glm::dot(d, d), 1e-6f), 0.0f, 1.0f);
-    return glm::length(p - (s.a + t * d));
-  };
-  struct Box {
-    glm::vec2 lo, hi;
-  };
-  std::vector<Box> placed;
-  auto hits = [&](const Box& box) {
-    if (box.lo.x < 0.0f || box.lo.y < 0.0f || box.hi.x > float(v.width) || box.hi.y > float(v.height)) return true;
-    for (const Segment& s : arrows) {
-      // The segment meets the box when it passes within its half-diagonal
-      // of the centre, sampled along the box (boxes are a few ems wide).
-      const glm::vec2 half = 0.5f * (box.hi - box.lo);
-      for (int k = 0; k <= 4; ++k) {
-        const glm::vec2 p(box.lo.x + (box.hi.x - box.lo.x) * float(k) / 4.0f, 0.5f * (box.lo.y + box.hi.y));
-        if (distanceToSegment(p, s) < half.y + s.half) return true;
-      }
-    }
-    for (const Box& b : placed)
-      if (box.lo.x < b.hi.x && b.lo.x < box.hi.x && box.lo.y < b.hi.y && b.lo.y < box.hi.y) return true;
-    return false;
-  };
-  for (std::size_t i = first; i < list.labels.size(); ++i) {
-    render::LabelItem& l = list.labels[i];
-    if (l.view != view || !l.worldAnchored) continue;
-    const glm::vec2 anchor = project(l.anchor);
-    const float width = textWidthPx(l.text, l.sizePx, l.bold), pad = 0.25f * l.sizePx;
-    auto boxAt = [&](glm::vec2 offset) {
-      const glm::vec2 c = anchor + offset;
-      return Box{c - glm::vec2(0.5f * width + pad, 0.5f * l.sizePx + pad), c + glm::vec2(0.5f * width + pad, 0.5f * l.sizePx + pad)};
-    };
-    glm::vec2 best = l.offsetPx;
-    if (hits(boxAt(l.offsetPx))) {
-      bool found = false;
-      for (float radius = 0.5f; radius <= 2.5f && !found; radius += 0.5f)
-        for (int k = 0; k < 16 && !found; ++k) {
-          const float angle = 2.0f * 3.14159265f * float(k) / 16.0f;
-          const glm::vec2 offset = l.offsetPx + radius * l.sizePx * glm::vec2(std::cos(angle), std::sin(angle));
-          if (!hits(boxAt(offset))) {
-            best = offset;
-            found = true;
-          }
-        }
-    }
-    l.offsetPx = best;
-    placed.push_back(boxAt(best));
-  }
-}
-
-}  // namespace
-
 void TwinView::add(render::DrawList& list, const motion::FrameOrientations& frame, int view,
                    const CameraFraming::Aim& aim) const {
   render::View& v = list.views[static_cast<std::size_t>(view)];
@@ -117,7 +39,17 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
   // and the Bloch arrow point the same way on screen.
   const OrbitAngles a{aim.azimuth, aim.elevation};
   const double aspect = double(v.width) / double(std::max(v.height, 1));
-  const double sceneRadius = 1.42;
+  // The sphere, its axes and the labels at 1.3 of the origin fit with room
+  // for a label (about 1.2 em) beyond them: at a figure's printed size the
+  // text can be large beside a small view, and the sphere then shrinks (to
+  // no less than half the window) rather than push its labels off the view
+  // or onto its arrows.
+  const double windowPx = 0.25 * std::min((window_.x1 - window_.x0) * v.width, (window_.y1 - window_.y0) * v.height);
+  // (Only for text set larger than an image's own share, as a figure's at
+  // a narrow width: a plain still keeps its framing.)
+  const bool largeText = spec_.render.labels && spec_.render.fontScale > 1.0;
+  const double labelRoom = largeText ? std::min(0.5, 1.2 * text / std::max(windowPx, 1.0)) : 0.0;
+  const double sceneRadius = std::max(1.42, 1.3 / (1.0 - labelRoom));
   // Framed into the window the text leaves free (the whole view by default).
   const Lens lens = windowLens(window_, aim.fovDeg, aspect);
   const double distance = fitDistance(sceneRadius, lens.fovDeg, lens.aspect);
@@ -181,6 +113,7 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
   fieldTrail.color = kFieldTrailColor;
   blochTrail.widthPx = fieldTrail.widthPx = std::max(1.5f, float(list.height) / 360.0f);
   blochTrail.view = fieldTrail.view = view;
+  blochTrail.labelsKeepOff = fieldTrail.labelsKeepOff = true;
   // The trail's points but the last lie on the trail grid (frame_sampling.hpp).
   const std::size_t settled = settledPoints(frame.trail.size() - std::min<std::size_t>(1, frame.trail.size()),
                                             trailGridCount_);
@@ -232,8 +165,6 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
     worldLabel("|1⟩", glm::vec3(0, 0, -1.0f), text, kTextColor);
     list.labels.back().offsetPx = glm::vec2(1.6f * text, 0.0f);
     list.labels[list.labels.size() - 2].offsetPx = glm::vec2(1.6f * text, 0.0f);
-    // A still (a strobe) is read at leisure; in a clip the labels keep their places.
-    if (frame.still || !frame.strobe.empty()) keepLabelsOffArrows(list, view, list.labels.size() - 5);
 
   }
 }

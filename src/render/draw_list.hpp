@@ -77,6 +77,9 @@ struct MeshItem {
   // per pixel with analytic edge coverage instead of drawing its triangles;
   // a shadow map takes its depth ray-cast per texel.
   bool sphere = false;
+  // The backing plate of a text block (a screen-aligned quad): drawn as any
+  // translucent mesh; a figure's layout (figureLayout) reports its rectangle.
+  bool textPlate = false;
   bool dynamic = false;
   bool operator==(const MeshItem&) const = default;
 };
@@ -99,6 +102,9 @@ struct PolylineItem {
   glm::vec4 color{0.0f, 0.0f, 0.0f, 1.0f};
   float widthPx = 2.0f;
   bool depthTested = true;
+  // The contact path or a trail, not a grid, axis or rim line: labels keep
+  // off it (draw/ places them so; a figure's layout reports it).
+  bool labelsKeepOff = false;
   int view = 0;
   bool dynamic = false;
   bool operator==(const PolylineItem&) const = default;

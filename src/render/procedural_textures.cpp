@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <numbers>
 #include <vector>
 
 namespace rollspin::render {
 
-std::shared_ptr<const TextureImage> tennisBallTexture(int width) {
+namespace {
+
+std::shared_ptr<const TextureImage> drawTennisBall(int width) {
   const int height = width / 2;
   // The classic seam: (a cos t + b cos 3t, a sin t − b sin 3t, 2√(ab) sin 2t)
   // has constant norm a + b = 1 — a closed curve on the unit sphere that
@@ -59,6 +63,19 @@ std::shared_ptr<const TextureImage> tennisBallTexture(int width) {
     }
   }
   return tex;
+}
+
+}  // namespace
+
+// Drawn once per width and shared (the image is immutable): a process that
+// makes a drawer per figure size or per clip does not pay for it again.
+std::shared_ptr<const TextureImage> tennisBallTexture(int width) {
+  static std::mutex mutex;
+  static std::map<int, std::shared_ptr<const TextureImage>> drawn;
+  const std::lock_guard<std::mutex> lock(mutex);
+  auto& texture = drawn[width];
+  if (!texture) texture = drawTennisBall(width);
+  return texture;
 }
 
 }  // namespace rollspin::render

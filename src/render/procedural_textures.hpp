@@ -10,6 +10,7 @@
 
 namespace rollspin::render {
 
+// Drawn once per width in a process, then shared.
 [[nodiscard]] std::shared_ptr<const TextureImage> tennisBallTexture(int width = 1024);
 
 }  // namespace rollspin::render

@@ -5,6 +5,7 @@
 #include <cairo-svg.h>
 #include <cairo.h>
 #include <fontconfig/fontconfig.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -280,12 +281,17 @@ std::vector<glm::dvec2> convexHull(std::vector<glm::dvec2> pts) {
 }
 
 // An arrow as the renderer builds it (cylinder to the neck, cone to the tip;
-// renderer drawablesOf), drawn as the outlines of its two solids: the convex
-// hull of each one's projected rims, right for any viewing direction.
-void drawArrow(cairo_t* cr, const ArrowItem& a, const ViewProjection& project) {
+// renderer drawablesOf), projected: its shaft's two rims and its head's rim
+// with the apex, and the projected axis of each. Empty when a point is behind
+// the camera.
+struct ProjectedArrow {
+  std::vector<glm::dvec2> shaft, head;
+  glm::dvec2 origin{0.0}, neck{0.0}, tip{0.0};
+};
+std::optional<ProjectedArrow> projectArrow(const ArrowItem& a, const ViewProjection& project) {
   const glm::dvec3 origin(a.origin), tip(a.tip);
   const double len = glm::length(tip - origin);
-  if (len <= 0.0) return;
+  if (len <= 0.0) return std::nullopt;
   const double r = a.shaftRadius;
   const double headLength = std::min(len * 0.35, r * 6.0);
   const glm::dvec3 dir = (tip - origin) / len;
@@ -301,12 +307,23 @@ void drawArrow(cairo_t* cr, const ArrowItem& a, const ViewProjection& project) {
     }
     return true;
   };
-  std::vector<glm::dvec2> shaft, head;
-  const Projected apex = project(tip);
-  if (!rim(origin, r, shaft) || !rim(neck, r, shaft) || !rim(neck, r * 2.6, head) || !apex.valid) return;
-  head.push_back(apex.xy);
+  ProjectedArrow out;
+  const Projected apex = project(tip), o = project(origin), n = project(neck);
+  if (!rim(origin, r, out.shaft) || !rim(neck, r, out.shaft) || !rim(neck, r * 2.6, out.head) || !apex.valid ||
+      !o.valid || !n.valid)
+    return std::nullopt;
+  out.head.push_back(apex.xy);
+  out.origin = o.xy, out.neck = n.xy, out.tip = apex.xy;
+  return out;
+}
+
+// Drawn as the outlines of its two solids: the convex hull of each one's
+// projected rims, right for any viewing direction.
+void drawArrow(cairo_t* cr, const ArrowItem& a, const ViewProjection& project) {
+  const auto arrow = projectArrow(a, project);
+  if (!arrow) return;
   setColor(cr, a.color, 1.0f);
-  for (const auto* solid : {&shaft, &head}) {
+  for (const auto* solid : {&arrow->shaft, &arrow->head}) {
     const std::vector<glm::dvec2> hull = convexHull(*solid);
     for (std::size_t k = 0; k < hull.size(); ++k)
       (k == 0 ? cairo_move_to : cairo_line_to)(cr, hull[k].x, hull[k].y);
@@ -375,38 +392,94 @@ void paintRaster(cairo_t* cr, const media::Image& image, const PixelRect& rect, 
   cairo_surface_destroy(surface);
 }
 
+// A cairo context on a 1x1 surface with the figure's font options, for
+// measuring text where nothing is drawn (figureLayout).
+struct ScratchContext {
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1);
+  cairo_t* cr = cairo_create(surface);
+  ScratchContext() {
+    cairo_font_options_t* options = cairo_font_options_create();
+    cairo_font_options_set_hint_style(options, CAIRO_HINT_STYLE_NONE);
+    cairo_font_options_set_hint_metrics(options, CAIRO_HINT_METRICS_OFF);
+    cairo_set_font_options(cr, options);
+    cairo_font_options_destroy(options);
+  }
+  ~ScratchContext() {
+    cairo_destroy(cr);
+    cairo_surface_destroy(surface);
+  }
+  ScratchContext(const ScratchContext&) = delete;
+  ScratchContext& operator=(const ScratchContext&) = delete;
+};
+
 // A label placed as the GL renderer places it (drawLabel): anchor, offset,
 // alignment by the advance width, baseline 0.36 of the size below the anchor.
-void drawLabel(cairo_t* cr, FigureFonts& fonts, const LabelItem& label, const glm::dvec2& origin,
-               const ViewProjection* project, double fontScale) {
-  glm::dvec2 pen = origin + glm::dvec2(label.anchor.x, label.anchor.y);
+struct PlacedLabel {
+  bool valid = false;
+  glm::dvec2 anchor{0.0};  // projected, before the offset
+  glm::dvec2 pen{0.0};     // the baseline's start
+  double width = 0.0, em = 0.0, ascent = 0.0, descent = 0.0;
+  std::vector<FigureFonts::Run> runs;
+};
+PlacedLabel placeLabel(cairo_t* cr, FigureFonts& fonts, const LabelItem& label, const glm::dvec2& origin,
+                       const ViewProjection* project, double fontScale) {
+  PlacedLabel placed;
+  placed.anchor = origin + glm::dvec2(label.anchor.x, label.anchor.y);
   if (label.worldAnchored && project != nullptr) {
     const Projected q = (*project)(glm::dvec3(label.anchor));
-    if (!q.valid) return;
-    pen = q.xy;
+    if (!q.valid) return placed;
+    placed.anchor = q.xy;
   }
-  pen += glm::dvec2(label.offsetPx);
+  glm::dvec2 pen = placed.anchor + glm::dvec2(label.offsetPx);
   const double px = label.sizePx * fontScale;
-  const std::vector<FigureFonts::Run> runs = fonts.runs(label.text, label.bold);
-  const double em = px / fonts.face(label.bold, false).heightPerEm;
-  double width = 0.0;
-  for (const auto& run : runs) {
+  placed.runs = fonts.runs(label.text, label.bold);
+  placed.em = px / fonts.face(label.bold, false).heightPerEm;
+  for (const auto& run : placed.runs) {
     cairo_set_font_face(cr, run.face->face);
-    cairo_set_font_size(cr, em);
+    cairo_set_font_size(cr, placed.em);
     cairo_text_extents_t e;
     cairo_text_extents(cr, run.utf8.c_str(), &e);
-    width += e.x_advance;
+    placed.width += e.x_advance;
+    cairo_font_extents_t f;
+    cairo_font_extents(cr, &f);
+    placed.ascent = std::max(placed.ascent, f.ascent);
+    placed.descent = std::max(placed.descent, f.descent);
   }
-  if (label.align == Align::Center) pen.x -= 0.5 * width;
-  if (label.align == Align::Right) pen.x -= width;
+  if (label.align == Align::Center) pen.x -= 0.5 * placed.width;
+  if (label.align == Align::Right) pen.x -= placed.width;
+  placed.pen = pen + glm::dvec2(0.0, 0.36 * px);
+  placed.valid = true;
+  return placed;
+}
+
+void drawLabel(cairo_t* cr, FigureFonts& fonts, const LabelItem& label, const glm::dvec2& origin,
+               const ViewProjection* project, double fontScale) {
+  const PlacedLabel placed = placeLabel(cr, fonts, label, origin, project, fontScale);
+  if (!placed.valid) return;
   setColor(cr, glm::vec3(label.color), label.color.a);
-  cairo_move_to(cr, pen.x, pen.y + 0.36 * px);
-  for (const auto& run : runs) {
+  cairo_move_to(cr, placed.pen.x, placed.pen.y);
+  for (const auto& run : placed.runs) {
     cairo_set_font_face(cr, run.face->face);
-    cairo_set_font_size(cr, em);
+    cairo_set_font_size(cr, placed.em);
     cairo_show_text(cr, run.utf8.c_str());  // advances the current point
   }
   cairo_new_path(cr);
+}
+
+// figure.font_size_pt is the body text's em size, as LaTeX's 10pt is; the
+// labels' sizePx is their ascent + descent (the GL labels' pixel height).
+double labelScale(FigureFonts& fonts, const FigureStyle& style, double unit) {
+  return style.bodyTextPt
+             ? (*style.bodyTextPt * fonts.face(false, false).heightPerEm / unit) / std::max(1.0f, style.bodyTextPx)
+             : 1.0;
+}
+
+ViewProjection projectionOf(const View& v) {
+  ViewProjection project;
+  project.clipFromWorld = glm::dmat4(v.camera.clipFromView * v.camera.viewFromWorld);
+  project.origin = glm::dvec2(v.x, v.y);
+  project.size = glm::dvec2(v.width, v.height);
+  return project;
 }
 
 }  // namespace
@@ -515,12 +588,7 @@ void writeFigure(const std::filesystem::path& out, FigureFormat format, const Dr
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
 
   FigureFonts fonts(style.font);
-  // figure.font_size_pt is the body text's em size, as LaTeX's 10pt is; the
-  // labels' sizePx is their ascent + descent (the GL labels' pixel height).
-  const double fontScale =
-      style.bodyTextPt
-          ? (*style.bodyTextPt * fonts.face(false, false).heightPerEm / unit) / std::max(1.0f, style.bodyTextPx)
-          : 1.0;
+  const double fontScale = labelScale(fonts, style, unit);
   const DepthTest depth{&rasters.opaqueDepth, rasters.width, rasters.height, kx, ky};
   for (std::size_t i = 0; i < list.views.size(); ++i) {
     const View& v = list.views[i];
@@ -552,10 +620,7 @@ void writeFigure(const std::filesystem::path& out, FigureFormat format, const Dr
       cairo_pattern_destroy(g);
     }
 
-    ViewProjection project;
-    project.clipFromWorld = glm::dmat4(v.camera.clipFromView * v.camera.viewFromWorld);
-    project.origin = glm::dvec2(v.x, v.y);
-    project.size = glm::dvec2(v.width, v.height);
+    const ViewProjection project = projectionOf(v);
     const PixelRect rasterRect = scaledRect(v, kx, ky);
 
     // The GL renderer's order: opaque meshes (image, then the marks),
@@ -609,6 +674,124 @@ void writeFigure(const std::filesystem::path& out, FigureFormat format, const Dr
   if (status != CAIRO_STATUS_SUCCESS)
     throw runtimeError({out.string()}, "cairo could not write the figure: {}", cairo_status_to_string(status));
   file.commit();
+}
+
+namespace {
+
+double distanceToSegment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
+  const glm::dvec2 d = b - a;
+  const double t = glm::clamp(glm::dot(p - a, d) / std::max(glm::dot(d, d), 1e-12), 0.0, 1.0);
+  return glm::length(p - (a + t * d));
+}
+
+// A solid's points as a segment along its axis a → b, as wide as its widest
+// point is from the axis.
+FigureLayout::Segment alongAxis(const glm::dvec2& a, const glm::dvec2& b, const std::vector<glm::dvec2>& points,
+                                double unit) {
+  double half = 0.0;
+  for (const glm::dvec2& p : points) half = std::max(half, distanceToSegment(p, a, b));
+  return {a * unit, b * unit, half * unit};
+}
+
+}  // namespace
+
+FigureLayout figureLayout(const DrawList& list, const FigureStyle& style) {
+  const double unit = style.widthPt / list.width;  // page points per DrawList pixel
+  FigureLayout layout;
+  layout.widthPt = style.widthPt;
+  layout.heightPt = unit * list.height;
+  FigureFonts fonts(style.font);
+  const double fontScale = labelScale(fonts, style, unit);
+  ScratchContext scratch;
+  auto box = [&](glm::dvec2 lo, glm::dvec2 hi) { return FigureBox{lo.x * unit, lo.y * unit, hi.x * unit, hi.y * unit}; };
+  auto addText = [&](const LabelItem& l, const ViewProjection* project, const glm::dvec2& origin) {
+    const PlacedLabel placed = placeLabel(scratch.cr, fonts, l, origin, project, fontScale);
+    if (!placed.valid || l.text.empty()) return;
+    FigureLayout::Text t;
+    t.text = l.text;
+    t.box = box(placed.pen - glm::dvec2(0.0, placed.ascent), placed.pen + glm::dvec2(placed.width, placed.descent));
+    t.anchor = placed.anchor * unit;
+    t.free = l.worldAnchored;
+    t.view = l.view;
+    layout.texts.push_back(t);
+  };
+  for (std::size_t i = 0; i < list.views.size(); ++i) {
+    const View& v = list.views[i];
+    const int index = static_cast<int>(i);
+    const ViewProjection project = projectionOf(v);
+    layout.views.push_back(box({v.x, v.y}, {v.x + v.width, v.y + v.height}));
+    // A view that draws nothing but text (the title's band) is its text's plate.
+    const bool textOnly = std::none_of(list.meshes.begin(), list.meshes.end(), [&](const MeshItem& m) { return m.view == index; }) &&
+                          std::none_of(list.arrows.begin(), list.arrows.end(), [&](const ArrowItem& a) { return a.view == index; }) &&
+                          std::none_of(list.polylines.begin(), list.polylines.end(), [&](const PolylineItem& p) { return p.view == index; });
+    if (textOnly) layout.plates.push_back(layout.views.back());
+    for (const MeshItem& m : list.meshes) {
+      if (m.view != index || !m.textPlate || !m.mesh) continue;
+      glm::dvec2 lo(1e300), hi(-1e300);
+      for (const Vertex& vertex : m.mesh->vertices) {
+        const Projected q = project(glm::dvec3(m.worldFromModel * glm::vec4(vertex.position, 1.0f)));
+        lo = glm::min(lo, q.xy), hi = glm::max(hi, q.xy);
+      }
+      layout.plates.push_back(box(lo, hi));
+    }
+    for (const ArrowItem& a : list.arrows) {
+      if (a.view != index) continue;
+      if (const auto arrow = projectArrow(a, project)) {
+        layout.arrows.push_back(alongAxis(arrow->origin, arrow->neck, arrow->shaft, unit));
+        layout.arrows.push_back(alongAxis(arrow->neck, arrow->tip, arrow->head, unit));
+      }
+    }
+    for (const PolylineItem& p : list.polylines) {
+      if (p.view != index || !p.labelsKeepOff) continue;
+      for (std::size_t k = 0; k + 1 < p.points.size(); ++k) {
+        const Projected a = project(glm::dvec3(p.points[k])), b = project(glm::dvec3(p.points[k + 1]));
+        if (a.valid && b.valid) layout.paths.push_back({a.xy * unit, b.xy * unit, 0.5 * p.widthPx * unit});
+      }
+    }
+    for (const LabelItem& l : list.labels)
+      if (l.view == index) addText(l, &project, project.origin);
+  }
+  for (const LabelItem& l : list.labels)
+    if (l.view < 0) addText(l, nullptr, glm::dvec2(0.0));
+  return layout;
+}
+
+std::string figureLayoutJson(const FigureLayout& layout) {
+  std::string out = fmt::format("{{\n  \"width_pt\": {:.3f}, \"height_pt\": {:.3f},\n", layout.widthPt, layout.heightPt);
+  auto boxes = [&](const char* name, const std::vector<FigureBox>& list) {
+    out += fmt::format("  \"{}\": [", name);
+    for (std::size_t i = 0; i < list.size(); ++i)
+      out += fmt::format("{}[{:.3f}, {:.3f}, {:.3f}, {:.3f}]", i ? ", " : "", list[i].x0, list[i].y0, list[i].x1,
+                         list[i].y1);
+    out += "],\n";
+  };
+  auto segments = [&](const char* name, const std::vector<FigureLayout::Segment>& list, bool last) {
+    out += fmt::format("  \"{}\": [", name);
+    for (std::size_t i = 0; i < list.size(); ++i)
+      out += fmt::format("{}[{:.3f}, {:.3f}, {:.3f}, {:.3f}, {:.3f}]", i ? ", " : "", list[i].a.x, list[i].a.y,
+                         list[i].b.x, list[i].b.y, list[i].halfWidth);
+    out += last ? "]\n" : "],\n";
+  };
+  boxes("views", layout.views);
+  boxes("plates", layout.plates);
+  out += "  \"texts\": [\n";
+  for (std::size_t i = 0; i < layout.texts.size(); ++i) {
+    const FigureLayout::Text& t = layout.texts[i];
+    std::string escaped;
+    for (const char c : t.text) {
+      if (c == '"' || c == '\\') escaped += '\\';
+      escaped += c;
+    }
+    out += fmt::format("    {{\"text\": \"{}\", \"box\": [{:.3f}, {:.3f}, {:.3f}, {:.3f}], \"anchor\": [{:.3f}, {:.3f}], "
+                       "\"free\": {}, \"view\": {}}}{}\n",
+                       escaped, t.box.x0, t.box.y0, t.box.x1, t.box.y1, t.anchor.x, t.anchor.y, t.free, t.view,
+                       i + 1 < layout.texts.size() ? "," : "");
+  }
+  out += "  ],\n";
+  segments("arrows", layout.arrows, false);
+  segments("paths", layout.paths, true);
+  out += "}\n";
+  return out;
 }
 
 }  // namespace rollspin::render

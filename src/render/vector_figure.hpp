@@ -64,6 +64,36 @@ void hideBehindOpaque(media::Image& translucent, const std::vector<float>& trans
 // BadInput at `where` when fontconfig has no font of that family.
 void checkFigureFont(const std::string& family, const SourceLoc& where);
 
+// What a figure's layout puts where, in page points (origin top left, y
+// down), from the same placement as writeFigure: for checking that text stays
+// on its plate and labels off arrows and paths (tests, `--layout-json`).
+struct FigureBox {
+  double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
+};
+struct FigureLayout {
+  double widthPt = 0.0, heightPt = 0.0;
+  struct Text {
+    std::string text;
+    FigureBox box;       // advance width × the font's ascent + descent
+    glm::dvec2 anchor{0.0};  // the label's anchor (projected), before its offset
+    bool free = false;   // a world-anchored label (axis, pole, mark number): on no plate
+    int view = -1;
+  };
+  // A segment with the half width of what is drawn along it.
+  struct Segment {
+    glm::dvec2 a{0.0}, b{0.0};
+    double halfWidth = 0.0;
+  };
+  std::vector<FigureBox> views;
+  std::vector<FigureBox> plates;  // the text blocks' plates, and a view that draws only text (the title's band)
+  std::vector<Text> texts;
+  std::vector<Segment> arrows;  // each arrow as its shaft and its head
+  std::vector<Segment> paths;   // the polylines labels keep off (PolylineItem::labelsKeepOff)
+};
+[[nodiscard]] FigureLayout figureLayout(const DrawList& list, const FigureStyle& style);
+// The layout as JSON (one object; boxes as [x0, y0, x1, y1]).
+[[nodiscard]] std::string figureLayoutJson(const FigureLayout& layout);
+
 // Writes the figure (temporary name, then rename). Runtime error when cairo
 // cannot write it.
 void writeFigure(const std::filesystem::path& out, FigureFormat format, const DrawList& list,

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <regex>
 #include <string>
 
 #include "media/image_io.hpp"
@@ -131,6 +132,61 @@ TEST(FigureCli, PdfAndSvgRasterizedMatchThePngStill) {
     const media::Image still = media::loadImage(dir / (name + ".png"), {});
     expectMatches(still, overWhite(media::loadImage(pdfPng + ".png", {})), name + ".pdf (poppler)");
     expectMatches(still, overWhite(media::loadImage(dir / (name + "_svg.png"), {})), name + ".svg (librsvg)");
+  }
+}
+
+// At a journal column and the default 8 pt, the PNG still of the same
+// aspect shows the figure's composition scaled: outside the text boxes the
+// figure's layout reports (render --layout-json), the rasterized PDF
+// matches the PNG within the bounds above; inside each box the PNG has ink
+// (its text is where the figure's is). The text itself is compared only by
+// place: FreeType outlines against stb_truetype bitmaps differ on every
+// glyph, 4.7 levels of mean at this size from the text alone.
+TEST(FigureCli, ThePngStillKeepsTheFiguresCompositionAtAColumnAtEightPoints) {
+  const fs::path dir = test::freshTempDir("figure_column");
+  const std::vector<std::string> keys{"--width", "640", "--height", "360", "--set", "figure.transparent=false",
+                                      "--set", "figure.width=column", "--set", "figure.font_size_pt=8"};
+  for (const std::string name : {"lollipop", "sphere-inside"}) {
+    renderStill(name, dir / (name + ".png"), keys);
+    std::vector<std::string> figureArgs = keys;
+    figureArgs.insert(figureArgs.end(), {"--layout-json", (dir / (name + ".json")).string()});
+    renderStill(name, dir / (name + ".pdf"), figureArgs);
+    const std::string pdfPng = (dir / (name + "_pdf")).string();
+    int status = 0;
+    run("pdftoppm -png -scale-to-x 640 -scale-to-y 360 -singlefile " + (dir / (name + ".pdf")).string() + " " + pdfPng,
+        &status);
+    ASSERT_EQ(status, 0) << "pdftoppm (poppler-utils) failed";
+    const media::Image still = media::loadImage(dir / (name + ".png"), {});
+    media::Image figure = overWhite(media::loadImage(pdfPng + ".png", {}));
+    ASSERT_EQ(figure.width, still.width);
+    // The text boxes, in page points, scaled to the 640-pixel images.
+    const std::string json = test::readFile(dir / (name + ".json"));
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(json, m, std::regex(R"("width_pt": ([0-9.]+))")));
+    const double scale = 640.0 / std::stod(m[1]);
+    const std::regex boxPattern(R"re("text": "[^"]*", "box": \[([0-9.\-]+), ([0-9.\-]+), ([0-9.\-]+), ([0-9.\-]+)\])re");
+    media::Image stillMasked = still;
+    int boxes = 0, inked = 0;
+    for (auto it = std::sregex_iterator(json.begin(), json.end(), boxPattern); it != std::sregex_iterator(); ++it) {
+      ++boxes;
+      // A pixel of slack round each box: the rasterizers' anti-aliasing.
+      const int x0 = std::max(0, int(std::floor(std::stod((*it)[1]) * scale)) - 1);
+      const int y0 = std::max(0, int(std::floor(std::stod((*it)[2]) * scale)) - 1);
+      const int x1 = std::min(still.width - 1, int(std::ceil(std::stod((*it)[3]) * scale)) + 1);
+      const int y1 = std::min(still.height - 1, int(std::ceil(std::stod((*it)[4]) * scale)) + 1);
+      int darkest = 255;
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+          std::uint8_t* a = &stillMasked.rgba[(std::size_t(y) * still.width + x) * 4];
+          std::uint8_t* b = &figure.rgba[(std::size_t(y) * still.width + x) * 4];
+          darkest = std::min({darkest, int(a[0]), int(a[1]), int(a[2])});
+          for (int c = 0; c < 3; ++c) a[c] = b[c] = 255;
+        }
+      inked += darkest < 128 ? 1 : 0;
+    }
+    EXPECT_GE(boxes, 8) << name;
+    EXPECT_EQ(inked, boxes) << name << ": a text box of the figure's layout holds no text in the PNG still";
+    expectMatches(stillMasked, figure, name + " at 85 mm, 8 pt, outside the text");
   }
 }
 

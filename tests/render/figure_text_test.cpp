@@ -12,49 +12,15 @@
 #include <string>
 #include <vector>
 
+#include "pdf_text_boxes.hpp"
 #include "support/cli_runner.hpp"
 #include "support/sweep.hpp"
 
 namespace rollspin {
 namespace {
 
-struct Word {
-  double x0, y0, x1, y1;
-  std::string text;
-};
-
-struct Page {
-  double width = 0.0, height = 0.0;
-  std::vector<Word> words;
-};
-
-// pdftotext -bbox writes XHTML: <page width=".." height=".."> and one
-// <word xMin=".." yMin=".." xMax=".." yMax="..">text</word> per word.
-Page readBoxes(const std::filesystem::path& pdf) {
-  const std::filesystem::path html = pdf.string() + ".html";
-  const std::string command = "pdftotext -bbox '" + pdf.string() + "' '" + html.string() + "'";
-  EXPECT_EQ(std::system(command.c_str()), 0) << command;
-  const std::string text = test::readFile(html);
-  Page page;
-  std::smatch m;
-  if (std::regex_search(text, m, std::regex(R"re(<page width="([0-9.]+)" height="([0-9.]+)")re"))) {
-    page.width = std::stod(m[1]);
-    page.height = std::stod(m[2]);
-  }
-  const std::regex word(
-      R"re(<word xMin="([0-9.\-]+)" yMin="([0-9.\-]+)" xMax="([0-9.\-]+)" yMax="([0-9.\-]+)">([^<]*)</word>)re");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it)
-    page.words.push_back({std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3]), std::stod((*it)[4]), (*it)[5]});
-  return page;
-}
-
-// Words of different lines overlap when their boxes share more than a
-// sliver (the font's boxes include the ascent and descent: lines a line
-// step apart touch at most).
-bool overlapping(const Word& a, const Word& b) {
-  const double w = std::min(a.x1, b.x1) - std::max(a.x0, b.x0), h = std::min(a.y1, b.y1) - std::max(a.y0, b.y0);
-  return w > 0.3 && h > 0.25 * std::min(a.y1 - a.y0, b.y1 - b.y0);
-}
+using test::PdfPage;
+using test::PdfWord;
 
 TEST(FigureText, EveryScenesFigureKeepsItsTextApartAndOnThePageAtJournalSizes) {
   if (std::system("command -v pdftotext > /dev/null") != 0) GTEST_SKIP() << "pdftotext (poppler-utils) missing";
@@ -76,18 +42,18 @@ TEST(FigureText, EveryScenesFigureKeepsItsTextApartAndOnThePageAtJournalSizes) {
         args.insert(args.end(), extra.begin(), extra.end());
         const test::CliResult r = test::runRollspin(args);
         ASSERT_EQ(r.exitCode, 0) << scene << " " << mm << " mm " << pt << " pt: " << r.err;
-        const Page page = readBoxes(pdf);
+        const PdfPage page = test::readPdfWords(pdf);
         const std::string where = std::filesystem::path(scene).stem().string() + " at " + std::to_string(int(mm)) +
                                   " mm, " + std::to_string(int(pt)) + " pt";
         ASSERT_GT(page.width, 0.0) << where;
         ASSERT_FALSE(page.words.empty()) << where;
-        for (const Word& w : page.words) {
+        for (const PdfWord& w : page.words) {
           EXPECT_TRUE(w.x0 >= -0.5 && w.y0 >= -0.5 && w.x1 <= page.width + 0.5 && w.y1 <= page.height + 0.5)
               << where << ": \"" << w.text << "\" leaves the page";
         }
         for (std::size_t i = 0; i < page.words.size(); ++i)
           for (std::size_t j = i + 1; j < page.words.size(); ++j)
-            EXPECT_FALSE(overlapping(page.words[i], page.words[j]))
+            EXPECT_FALSE(test::wordsOverlap(page.words[i], page.words[j]))
                 << where << ": \"" << page.words[i].text << "\" and \"" << page.words[j].text << "\" overlap";
       }
 }

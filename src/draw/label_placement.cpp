@@ -1,0 +1,189 @@
+#include "draw/label_placement.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "draw/clip_layout.hpp"
+
+namespace rollspin::draw {
+
+namespace {
+
+struct Segment {
+  glm::vec2 a, b;
+  float half;  // half the width drawn along it, in pixels
+};
+
+struct Box {
+  glm::vec2 lo, hi;
+};
+
+float distanceToSegment(glm::vec2 p, const Segment& s) {
+  const glm::vec2 d = s.b - s.a;
+  const float t = glm::clamp(glm::dot(p - s.a, d) / std::max(glm::dot(d, d), 1e-6f), 0.0f, 1.0f);
+  return glm::length(p - (s.a + t * d));
+}
+
+bool inside(glm::vec2 p, const Box& b) { return p.x >= b.lo.x && p.x <= b.hi.x && p.y >= b.lo.y && p.y <= b.hi.y; }
+
+// Whether the segments a–b and c–d cross.
+bool crossing(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d) {
+  auto side = [](glm::vec2 o, glm::vec2 p, glm::vec2 q) { return (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x); };
+  const float d1 = side(c, d, a), d2 = side(c, d, b), d3 = side(a, b, c), d4 = side(a, b, d);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
+}
+
+// The distance between a box and a segment is below `half` when the
+// segment enters the box, or a box corner is near the segment, or a
+// segment end is near the box.
+bool meets(const Box& box, const Segment& s) {
+  if (inside(s.a, box) || inside(s.b, box)) return true;
+  const glm::vec2 corners[4] = {box.lo, {box.hi.x, box.lo.y}, box.hi, {box.lo.x, box.hi.y}};
+  for (int k = 0; k < 4; ++k) {
+    if (crossing(s.a, s.b, corners[k], corners[(k + 1) % 4])) return true;
+    if (distanceToSegment(corners[k], s) < s.half) return true;
+  }
+  for (const glm::vec2 end : {s.a, s.b}) {
+    const glm::vec2 nearest = glm::clamp(end, box.lo, box.hi);
+    if (glm::length(end - nearest) < s.half) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void keepLabelsClear(render::DrawList& list, int view, std::size_t first) {
+  const render::View& v = list.views[std::size_t(view)];
+  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+  auto project = [&](const glm::vec3& p, float& w) {
+    const glm::vec4 c = clipFromWorld * glm::vec4(p, 1.0f);
+    w = c.w;
+    return glm::vec2((c.x / c.w * 0.5f + 0.5f) * float(v.width), (0.5f - c.y / c.w * 0.5f) * float(v.height));
+  };
+  // The arrows as the renderer builds them (shaft to the neck, a head 2.6
+  // shaft radii wide; render/vector_figure), their radii projected at their
+  // depth.
+  std::vector<Segment> obstacles;
+  const float focal = 0.5f * float(v.height) * v.camera.clipFromView[1][1];
+  for (const render::ArrowItem& a : list.arrows) {
+    if (a.view != view) continue;
+    const float length = glm::length(a.tip - a.origin);
+    if (length <= 0.0f) continue;
+    const glm::vec3 neck = a.tip - (a.tip - a.origin) / length * std::min(0.35f * length, 6.0f * a.shaftRadius);
+    float wo = 1.0f, wn = 1.0f, wt = 1.0f;
+    const glm::vec2 o = project(a.origin, wo), n = project(neck, wn), t = project(a.tip, wt);
+    if (wo <= 1e-4f || wn <= 1e-4f || wt <= 1e-4f) continue;
+    const float nearest = std::min({wo, wn, wt});
+    obstacles.push_back({o, n, a.shaftRadius * focal / nearest + 1.0f});
+    obstacles.push_back({n, t, 2.6f * a.shaftRadius * focal / nearest + 1.0f});
+  }
+  for (const render::PolylineItem& p : list.polylines) {
+    if (p.view != view || !p.labelsKeepOff) continue;
+    for (std::size_t k = 0; k + 1 < p.points.size(); ++k) {
+      float wa = 1.0f, wb = 1.0f;
+      const glm::vec2 a = project(p.points[k], wa), b = project(p.points[k + 1], wb);
+      if (wa > 1e-4f && wb > 1e-4f) obstacles.push_back({a, b, 0.5f * p.widthPx + 1.0f});
+    }
+  }
+
+  // The text blocks' plates and their lines (placed before: the layout is
+  // decided per clip) are taken like labels already placed.
+  std::vector<Box> placed;
+  for (const render::MeshItem& m : list.meshes) {
+    if (m.view != view || !m.textPlate || !m.mesh) continue;
+    Box b{glm::vec2(1e30f), glm::vec2(-1e30f)};
+    for (const render::Vertex& vertex : m.mesh->vertices) {
+      float w = 1.0f;
+      const glm::vec2 q = project(glm::vec3(m.worldFromModel * glm::vec4(vertex.position, 1.0f)), w);
+      b.lo = glm::min(b.lo, q), b.hi = glm::max(b.hi, q);
+    }
+    placed.push_back(b);
+  }
+  // How many things a box meets (the view's edge and another label count
+  // as many as every segment together: a label must stay whole and apart).
+  auto cost = [&](const Box& box) {
+    const int heavy = int(obstacles.size()) + 1;
+    int n = 0;
+    if (box.lo.x < 0.0f || box.lo.y < 0.0f || box.hi.x > float(v.width) || box.hi.y > float(v.height)) n += heavy;
+    for (const Box& b : placed)
+      if (box.lo.x < b.hi.x && b.lo.x < box.hi.x && box.lo.y < b.hi.y && b.lo.y < box.hi.y) n += heavy;
+    for (const Segment& s : obstacles)
+      if (meets(box, s)) ++n;
+    return n;
+  };
+  struct Leader {
+    std::size_t label;
+    glm::vec2 anchor;
+    Box box;
+  };
+  std::vector<Leader> leaders;
+  // Last first: the pole labels before the axis names (z says what |0⟩
+  // says), so where there is no room it is an axis name that goes.
+  for (std::size_t i = list.labels.size(); i-- > first;) {
+    render::LabelItem& l = list.labels[i];
+    if (l.view != view || !l.worldAnchored) continue;
+    float w = 1.0f;
+    const glm::vec2 anchor = project(l.anchor, w);
+    if (w <= 1e-4f) continue;
+    const float width = textWidthPx(l.text, l.sizePx, l.bold), pad = 0.25f * l.sizePx;
+    const float shift = l.align == render::Align::Left ? 0.5f * width : l.align == render::Align::Right ? -0.5f * width : 0.0f;
+    auto boxAt = [&](glm::vec2 offset) {
+      const glm::vec2 c = anchor + offset + glm::vec2(shift, 0.0f);
+      return Box{c - glm::vec2(0.5f * width + pad, 0.5f * l.sizePx + pad), c + glm::vec2(0.5f * width + pad, 0.5f * l.sizePx + pad)};
+    };
+    // Its own place first, then rings half an em apart out to 6 em: the
+    // nearest clear place, so a label stays by what it names.
+    glm::vec2 best = l.offsetPx;
+    int bestCost = cost(boxAt(best));
+    for (float radius = 0.5f; radius <= 6.0f && bestCost > 0; radius += 0.5f)
+      for (int k = 0; k < 24 && bestCost > 0; ++k) {
+        const float angle = 2.0f * std::numbers::pi_v<float> * float(k) / 24.0f;
+        const glm::vec2 offset = l.offsetPx + radius * l.sizePx * glm::vec2(std::cos(angle), std::sin(angle));
+        const int c = cost(boxAt(offset));
+        if (c < bestCost) {
+          best = offset;
+          bestCost = c;
+        }
+      }
+    if (bestCost > 0) {
+      // Nowhere clear within 6 em (a large text size beside a small view):
+      // the label is left out rather than laid over a line or a label.
+      l.text.clear();
+      continue;
+    }
+    const glm::vec2 moved = best - l.offsetPx;
+    l.offsetPx = best;
+    placed.push_back(boxAt(best));
+    // Moved far from what it names: a thin leader line from its anchor to
+    // the box's edge (drawn over everything, at the anchor's depth).
+    if (glm::length(moved) > 2.0f * l.sizePx) leaders.push_back({i, anchor, boxAt(best)});
+  }
+  const glm::mat4 worldFromClip = glm::inverse(clipFromWorld);
+  for (const Leader& leader : leaders) {
+    const render::LabelItem& l = list.labels[leader.label];
+    const glm::vec4 anchorClip = clipFromWorld * glm::vec4(l.anchor, 1.0f);
+    const glm::vec2 centre = 0.5f * (leader.box.lo + leader.box.hi);
+    // Where the line from the anchor to the box's centre enters the box.
+    const glm::vec2 d = centre - leader.anchor;
+    const glm::vec2 half = 0.5f * (leader.box.hi - leader.box.lo);
+    const float t = 1.0f - std::min(half.x / std::max(std::abs(d.x), 1e-3f), half.y / std::max(std::abs(d.y), 1e-3f));
+    const glm::vec2 start = leader.anchor + 0.25f * l.sizePx * glm::normalize(d), end = leader.anchor + std::max(t, 0.0f) * d;
+    auto unproject = [&](glm::vec2 px) {
+      const glm::vec4 p = worldFromClip * glm::vec4(2.0f * px.x / float(v.width) - 1.0f, 1.0f - 2.0f * px.y / float(v.height),
+                                                    anchorClip.z / anchorClip.w, 1.0f);
+      return glm::vec3(p) / p.w;
+    };
+    render::PolylineItem line;
+    line.points = {unproject(start), unproject(end)};
+    line.color = glm::vec4(glm::vec3(l.color) * 0.5f + 0.5f * glm::vec3(0.45f), 0.9f);
+    line.widthPx = std::max(1.0f, 0.06f * l.sizePx);
+    line.depthTested = false;
+    line.view = view;
+    list.polylines.push_back(line);
+  }
+}
+
+}  // namespace rollspin::draw

@@ -1,0 +1,201 @@
+// Figures at journal sizes, against the layout the code computes
+// (render::figureLayout: the plates, the labels' boxes and anchors, the
+// projected arrows and paths): every word of the PDF (pdftotext -bbox) lies
+// inside a text plate, or is a free label (axis, pole, mark number) whose
+// box clears every arrow and every path (the title's band is its plate);
+// words stay on the page and apart. Every scene in scenes/ (and the
+// lollipop as an 8-position strobe), at 60, 85, 120 and 175 mm, in Latin
+// Modern at 6–10 pt. In process and without GL: the text and the vectors of
+// a figure do not depend on its raster images, which are left out here.
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/figure_job.hpp"
+#include "app/job_setup.hpp"
+#include "app/render_jobs.hpp"
+#include "pdf_text_boxes.hpp"
+#include "render/vector_figure.hpp"
+#include "support/cli_runner.hpp"
+
+namespace rollspin {
+namespace {
+
+namespace fs = std::filesystem;
+using render::FigureBox;
+using render::FigureLayout;
+using test::PdfWord;
+
+constexpr std::array<double, 4> kWidthsMm{60.0, 85.0, 120.0, 175.0};
+constexpr std::array<double, 5> kSizesPt{6.0, 7.0, 8.0, 9.0, 10.0};
+
+// The text size a scene is drawn at, at the width with index w: one of the
+// five, turning with the scene's index, so that across the scenes (more
+// than five) every width meets every size. Drawing every scene at every
+// size costs five times the time (a drawer lays its text out per size).
+double sizeFor(std::size_t scene, std::size_t w) { return kSizesPt[(scene + w) % kSizesPt.size()]; }
+
+bool inside(const PdfWord& w, const FigureBox& b, double slack) {
+  return w.x0 >= b.x0 - slack && w.y0 >= b.y0 - slack && w.x1 <= b.x1 + slack && w.y1 <= b.y1 + slack;
+}
+
+double distanceToSegment(glm::dvec2 p, const FigureLayout::Segment& s) {
+  const glm::dvec2 d = s.b - s.a;
+  const double t = glm::clamp(glm::dot(p - s.a, d) / std::max(glm::dot(d, d), 1e-12), 0.0, 1.0);
+  return glm::length(p - (s.a + t * d));
+}
+
+// The distance from a word's box to a segment (0 where they meet).
+double distance(const PdfWord& w, const FigureLayout::Segment& s) {
+  auto in = [&](glm::dvec2 p) { return p.x >= w.x0 && p.x <= w.x1 && p.y >= w.y0 && p.y <= w.y1; };
+  if (in(s.a) || in(s.b)) return 0.0;
+  const glm::dvec2 corners[4] = {{w.x0, w.y0}, {w.x1, w.y0}, {w.x1, w.y1}, {w.x0, w.y1}};
+  auto side = [](glm::dvec2 o, glm::dvec2 p, glm::dvec2 q) { return (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x); };
+  double best = 1e300;
+  for (int k = 0; k < 4; ++k) {
+    const glm::dvec2 c = corners[k], e = corners[(k + 1) % 4];
+    if ((side(c, e, s.a) > 0) != (side(c, e, s.b) > 0) && (side(s.a, s.b, c) > 0) != (side(s.a, s.b, e) > 0)) return 0.0;
+    best = std::min(best, distanceToSegment(c, s));
+  }
+  for (const glm::dvec2 end : {s.a, s.b})
+    best = std::min(best, glm::length(end - glm::clamp(end, glm::dvec2(w.x0, w.y0), glm::dvec2(w.x1, w.y1))));
+  return best;
+}
+
+struct Figure {
+  FigureLayout layout;
+  test::PdfPage page;
+};
+
+// The figure of `job` at a width and a text size, as `render --still -o
+// FILE.pdf` writes it but for its raster images; its layout and its words.
+Figure figureOf(app::DrawJob& job, double mm, double pt, const fs::path& pdf) {
+  job.spec.figure.widthMm = mm;
+  job.spec.figure.fontSizePt = pt;
+  app::fitTextToFigure(job.spec);
+  const render::DrawList list = app::drawStill(job, std::nullopt);
+  const render::FigureStyle style = app::figureStyleOf(job.spec, list);
+  render::writeFigure(pdf, render::FigureFormat::Pdf, list, render::FigureRasters{}, style);
+  return {render::figureLayout(list, style), test::readPdfWords(pdf)};
+}
+
+void checkFigure(const Figure& f, const std::string& where) {
+  const FigureLayout& layout = f.layout;
+  ASSERT_NEAR(f.page.width, layout.widthPt, 0.01) << where;
+  ASSERT_FALSE(f.page.words.empty()) << where;
+  // The free labels' boxes in the layout are the font's ascent and descent
+  // over the advance, where poppler's are the glyphs' font box: a word
+  // belongs to the label whose box holds its centre.
+  auto freeLabelOf = [&](const PdfWord& w) -> const FigureLayout::Text* {
+    const glm::dvec2 c(0.5 * (w.x0 + w.x1), 0.5 * (w.y0 + w.y1));
+    for (const FigureLayout::Text& t : layout.texts)
+      if (t.free && c.x >= t.box.x0 - 0.5 && c.x <= t.box.x1 + 0.5 && c.y >= t.box.y0 - 0.5 && c.y <= t.box.y1 + 0.5)
+        return &t;
+    return nullptr;
+  };
+  for (const PdfWord& w : f.page.words) {
+    const std::string word = where + ": \"" + w.text + "\"";
+    EXPECT_TRUE(w.x0 >= -0.5 && w.y0 >= -0.5 && w.x1 <= f.page.width + 0.5 && w.y1 <= f.page.height + 0.5)
+        << word << " leaves the page";
+    // Poppler's box is the font's (its ascent and descent, a little more
+    // than the layout's for a fallback face): a quarter point of slack.
+    const bool onPlate = std::any_of(layout.plates.begin(), layout.plates.end(),
+                                     [&](const FigureBox& b) { return inside(w, b, 0.25); });
+    if (onPlate) continue;
+    if (const FigureLayout::Text* label = freeLabelOf(w)) {
+      for (const auto* segments : {&layout.arrows, &layout.paths})
+        for (const FigureLayout::Segment& s : *segments)
+          EXPECT_GT(distance(w, s), s.halfWidth)
+              << word << " (label \"" << label->text << "\") sits on " << (segments == &layout.arrows ? "an arrow" : "a path")
+              << " from (" << s.a.x << ", " << s.a.y << ") to (" << s.b.x << ", " << s.b.y << ")";
+      continue;
+    }
+    ADD_FAILURE() << word << " at (" << w.x0 << ", " << w.y0 << ")–(" << w.x1 << ", " << w.y1 << ") leaves its plate";
+  }
+  for (std::size_t i = 0; i < f.page.words.size(); ++i)
+    for (std::size_t j = i + 1; j < f.page.words.size(); ++j)
+      EXPECT_FALSE(test::wordsOverlap(f.page.words[i], f.page.words[j]))
+          << where << ": \"" << f.page.words[i].text << "\" and \"" << f.page.words[j].text << "\" overlap";
+}
+
+TEST(FigureLayout, TextStaysOnItsPlateAndLabelsOffArrowsAndPathsAtJournalSizes) {
+  if (std::system("command -v pdftotext > /dev/null") != 0) GTEST_SKIP() << "pdftotext (poppler-utils) missing";
+  const fs::path dir = test::freshTempDir("figure_layout");
+  std::vector<std::pair<std::string, std::vector<std::string>>> cases;
+  for (const auto& e : fs::directory_iterator(test::sourceDir() / "scenes"))
+    if (e.path().extension() == ".toml") cases.push_back({e.path().string(), {}});
+  std::sort(cases.begin(), cases.end());
+  cases.push_back({test::shippedScenePath("lollipop"), {"render.strobe=8"}});
+  int figures = 0;
+  std::array<std::array<int, 5>, 4> covered{};
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const auto& [scene, extra] = cases[i];
+    std::vector<std::string> overrides{"figure.font=Latin Modern Roman"};
+    overrides.insert(overrides.end(), extra.begin(), extra.end());
+    const fs::path pdf = dir / ("f" + std::to_string(i) + ".pdf");
+    app::DrawJob job = app::prepareDrawJob({scene, overrides, {}, {}, {}, false, pdf, media::OutputUse::Still, 0, {}});
+    for (std::size_t w = 0; w < kWidthsMm.size(); ++w) {
+      const double pt = sizeFor(i, w);
+      const std::string where = fs::path(scene).stem().string() + (extra.empty() ? "" : " (strobe)") + " at " +
+                                std::to_string(int(kWidthsMm[w])) + " mm, " + std::to_string(int(pt)) + " pt";
+      checkFigure(figureOf(job, kWidthsMm[w], pt, pdf), where);
+      ++covered[w][std::size_t(pt) - 6];
+      ++figures;
+    }
+  }
+  for (std::size_t w = 0; w < kWidthsMm.size(); ++w)
+    for (std::size_t p = 0; p < kSizesPt.size(); ++p)
+      EXPECT_GT(covered[w][p], 0) << kWidthsMm[w] << " mm at " << kSizesPt[p] << " pt is never drawn";
+  std::printf("%d figures checked\n", figures);
+}
+
+// The layout is what the figure draws: its text boxes hold the PDF's words
+// (a label moved by the layout is found where the layout says), and
+// `render --layout-json` writes the same layout from the CLI.
+TEST(FigureLayout, TheLayoutHoldsThePdfsWordsAndTheCliWritesIt) {
+  if (std::system("command -v pdftotext > /dev/null") != 0) GTEST_SKIP() << "pdftotext (poppler-utils) missing";
+  const fs::path dir = test::freshTempDir("figure_layout_json");
+  const fs::path pdf = dir / "fig.pdf";
+  app::DrawJob job = app::prepareDrawJob({test::shippedScenePath("lollipop"), {"render.strobe=8"}, {}, {}, {}, false,
+                                          pdf, media::OutputUse::Still, 0, {}});
+  const Figure f = figureOf(job, 85.0, 8.0, pdf);
+  int found = 0;
+  for (const FigureLayout::Text& t : f.layout.texts) {
+    const bool held = std::any_of(f.page.words.begin(), f.page.words.end(), [&](const PdfWord& w) {
+      return w.x0 >= t.box.x0 - 0.5 && w.x1 <= t.box.x1 + 0.5 && 0.5 * (w.y0 + w.y1) > t.box.y0 &&
+             0.5 * (w.y0 + w.y1) < t.box.y1;
+    });
+    EXPECT_TRUE(held) << "\"" << t.text << "\" is not where the layout puts it";
+    found += held ? 1 : 0;
+  }
+  EXPECT_GE(found, 10);  // the facts, the axis and pole labels, the legend
+  EXPECT_FALSE(f.layout.plates.empty());
+  EXPECT_GE(f.layout.arrows.size(), 2u * 9u);  // the spin, the field and the 8 strobe spins... at least 9
+  EXPECT_FALSE(f.layout.paths.empty());
+
+  const test::CliResult r =
+      test::runRollspin({"render", test::shippedScenePath("lollipop"), "--still", "-o", (dir / "cli.pdf").string(),
+                         "--quiet", "--set", "render.strobe=8", "--set", "figure.width=column", "--layout-json",
+                         (dir / "layout.json").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string json = test::readFile(dir / "layout.json");
+  for (const char* key : {"\"width_pt\": 240.945", "\"plates\"", "\"texts\"", "\"arrows\"", "\"paths\"", "\"|0⟩\""})
+    EXPECT_NE(json.find(key), std::string::npos) << key << " not in " << json.substr(0, 400);
+  // Only for a figure still.
+  const test::CliResult png = test::runRollspin({"render", test::shippedScenePath("lollipop"), "--still", "-o",
+                                                 (dir / "still.png").string(), "--layout-json", (dir / "x.json").string()});
+  EXPECT_EQ(png.exitCode, 2) << png.err;
+  EXPECT_NE(png.err.find("--layout-json"), std::string::npos) << png.err;
+  EXPECT_FALSE(fs::exists(dir / "x.json"));
+}
+
+}  // namespace
+}  // namespace rollspin

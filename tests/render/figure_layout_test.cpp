@@ -25,6 +25,7 @@
 #include "pdf_text_boxes.hpp"
 #include "render/vector_figure.hpp"
 #include "support/cli_runner.hpp"
+#include "support/sweep.hpp"
 
 namespace rollspin {
 namespace {
@@ -130,13 +131,11 @@ TEST(FigureLayout, TextStaysOnItsPlateAndLabelsOffArrowsAndPathsAtJournalSizes) 
   if (std::system("command -v pdftotext > /dev/null") != 0) GTEST_SKIP() << "pdftotext (poppler-utils) missing";
   const fs::path dir = test::freshTempDir("figure_layout");
   std::vector<std::pair<std::string, std::vector<std::string>>> cases;
-  for (const auto& e : fs::directory_iterator(test::sourceDir() / "scenes"))
-    if (e.path().extension() == ".toml") cases.push_back({e.path().string(), {}});
-  std::sort(cases.begin(), cases.end());
+  for (const auto& file : test::bundledSceneFiles()) cases.push_back({file.string(), {}});
   cases.push_back({test::shippedScenePath("lollipop"), {"render.strobe=8"}});
   int figures = 0;
   std::array<std::array<int, 5>, 4> covered{};
-  for (std::size_t i = 0; i < cases.size(); ++i) {
+  for (const std::size_t i : test::sweepIndices(cases.size())) {
     const auto& [scene, extra] = cases[i];
     std::vector<std::string> overrides{"figure.font=Latin Modern Roman"};
     overrides.insert(overrides.end(), extra.begin(), extra.end());
@@ -152,7 +151,7 @@ TEST(FigureLayout, TextStaysOnItsPlateAndLabelsOffArrowsAndPathsAtJournalSizes) 
     }
   }
   for (std::size_t w = 0; w < kWidthsMm.size(); ++w)
-    for (std::size_t p = 0; p < kSizesPt.size(); ++p)
+    for (std::size_t p = 0; p < kSizesPt.size() && !test::sweepSampled(); ++p)
       EXPECT_GT(covered[w][p], 0) << kWidthsMm[w] << " mm at " << kSizesPt[p] << " pt is never drawn";
   std::printf("%d figures checked\n", figures);
 }

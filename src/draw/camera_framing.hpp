@@ -115,6 +115,11 @@ class CameraFraming {
   // storyboard.toml asks for turn it by up to about 36° in their second):
   // a larger turn takes longer than kCameraMove.
   static constexpr double kMaxFreeMoveDeg = 40.0;
+  // The fastest the view direction turns where the scene leaves the camera
+  // free: the peak of a kMaxFreeMoveDeg move eased over a second
+  // (3x² − 2x³ peaks at 1.5 times its mean rate). A camera that orbits with
+  // the ball or turns with s (round a torus's tube) keeps under it too.
+  static constexpr double kMaxTurnRateDeg = 1.5 * kMaxFreeMoveDeg;
 
  private:
   // A view direction the camera passes through at arc length s.
@@ -150,9 +155,10 @@ class CameraFraming {
   // The orbit angles `base`, turned where the surface would hide the ball on
   // [s0, s1] (azimuthFree/elevationFree: which the scene leaves open); with
   // mayOrbit, a view that orbits with the ball's longitude where no still
-  // view sees it; maxTurnDeg bounds the turn away from `base`.
+  // view sees it, else one that turns with s; maxTurnDeg bounds the turn
+  // away from `base`; the motion over [s0, s1] lasts `seconds`.
   [[nodiscard]] Unhidden unhiddenAngles(OrbitAngles base, double s0, double s1, bool azimuthFree, bool elevationFree,
-                                        bool mayOrbit, double maxTurnDeg, bool mayLower = false,
+                                        bool mayOrbit, double maxTurnDeg, double seconds, bool mayLower = false,
                                         bool follow = false) const;
   void findHiddenSpans();
 

@@ -257,4 +257,10 @@ void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& fram
   }
 }
 
+render::View SceneDrawer::ballCamera(const StoryPlace& story, double s) const {
+  const Rects r = rects();
+  if (r.ball.width <= 0) return {};
+  return camera_->ballCamera(r.ball.x, r.ball.y, r.ball.width, r.ball.height, s, story);
+}
+
 }  // namespace rollspin::draw

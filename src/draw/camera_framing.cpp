@@ -590,6 +590,7 @@ CameraFraming::Aim CameraFraming::aimOf(const Shot &shot, int w, int h, double s
   const Lens lens = windowLens(window_, shot.fovDeg, double(w) / double(std::max(h, 1)));
   const double fovDeg = lens.fovDeg, aspect = lens.aspect;
   auto [target, distance] = fitPoints(extent_.points, R, a, fovDeg, aspect);
+  if (!shot.follow && !shot.target) holdOutline(target, distance, a, fovDeg, aspect);
   if (shot.follow) {
     target = model_.path->at(s).centre(R);
     distance = fitDistance(4.0 * R, fovDeg, aspect);
@@ -597,6 +598,64 @@ CameraFraming::Aim CameraFraming::aimOf(const Shot &shot, int w, int h, double s
   if (shot.target) target = *shot.target;
   if (shot.distance) distance = *shot.distance;
   return {target, distance, a.azimuth, a.elevation, shot.fovDeg};
+}
+
+// In the window's own NDC the subject's points (padded by R) must stay in
+// [-1, 1]; the view's edge lies at (±1 − centre) / half-width of the
+// window. The shift is continuous in the angles (maxima over points), so a
+// turning camera pans smoothly.
+void CameraFraming::holdOutline(Vec3 &target, double &distance, const OrbitAngles &a, double fovDeg,
+                                double aspect) const {
+  if (extent_.outline.empty()) return;
+  const double R = model_.ballRadius;
+  const Vec3 toEye = towardEye(a);
+  const Vec3 right = Vec3::UnitZ().cross(toEye).normalized();
+  const Vec3 up = toEye.cross(right);
+  const double tanV = std::tan(0.5 * fovDeg * kDeg), tanH = tanV * aspect;
+  const Vec3 axes[2] = {right, up};
+  const double tans[2] = {tanH, tanV};
+  const double centres[2] = {0.5 * (window_.x0 + window_.x1), 0.5 * (window_.y0 + window_.y1)};
+  const double halves[2] = {0.5 * (window_.x1 - window_.x0), 0.5 * (window_.y1 - window_.y0)};
+  const bool lowInner[2] = {innerEdges_.left, innerEdges_.bottom}, highInner[2] = {innerEdges_.right, innerEdges_.top};
+  for (int axis = 0; axis < 2; ++axis) {
+    if (lowInner[axis] == highInner[axis]) continue;  // none, or both sides: panning cannot help
+    for (int pass = 0; pass < 2; ++pass) {
+      auto ndc = [&](const Vec3 &p, double pad) {
+        const Vec3 d = p - target;
+        const double w = std::max(distance - d.dot(toEye), 1e-9);
+        return std::pair{(d.dot(axes[axis]) - pad) / (w * tans[axis]), (d.dot(axes[axis]) + pad) / (w * tans[axis])};
+      };
+      double subjectLo = 1e300, subjectHi = -1e300, outlineLo = 1e300, outlineHi = -1e300;
+      for (const Vec3 &p : extent_.points) {
+        const auto [lo, hi] = ndc(p, R);
+        subjectLo = std::min(subjectLo, lo);
+        subjectHi = std::max(subjectHi, hi);
+      }
+      for (const Vec3 &p : extent_.outline) {
+        const auto [lo, hi] = ndc(p, 0.0);
+        outlineLo = std::min(outlineLo, lo);
+        outlineHi = std::max(outlineHi, hi);
+      }
+      // The inner edge and how far the outline reaches, both measured away
+      // from the window's centre towards that edge.
+      // (A margin of 3 % of the window: the outline is sampled, and a
+      // surface that just touches the seam reads as cut.)
+      const double edge =
+          (highInner[axis] ? (1.0 - centres[axis]) / halves[axis] : (1.0 + centres[axis]) / halves[axis]) - 0.03;
+      const double reach = highInner[axis] ? outlineHi : -outlineLo;
+      if (pass == 0) {
+        // Pan the picture away from the edge, as far as the subject keeps
+        // inside the window on the other side.
+        const double room = std::max(0.0, highInner[axis] ? subjectLo + 1.0 : 1.0 - subjectHi);
+        const double shift = std::clamp(reach - edge, 0.0, room) * (highInner[axis] ? -1.0 : 1.0);
+        target -= shift * distance * tans[axis] * axes[axis];
+      } else if (reach > edge && edge > 0.0) {
+        // Still cut: step back, by up to kOutlineStepBack (the reach over
+        // the edge shrinks with the distance).
+        distance *= std::min(reach / edge, kOutlineStepBack);
+      }
+    }
+  }
 }
 
 CameraFraming::Aim CameraFraming::aimAt(const StoryPlace &story, int w, int h, double s) const {
@@ -664,3 +723,5 @@ render::View CameraFraming::ballCamera(int x, int y, int w, int h, double s, con
 }
 
 }  // namespace rollspin::draw
+
+

@@ -68,6 +68,11 @@ struct FrameExtent {
   geometry::Vec3 centre = geometry::Vec3::Zero();  // shadow-map centre
   double radius = 1.0;
   std::shared_ptr<const SightLines> surface;
+  // The drawn surface's outline on the path's side (an outside sphere: its
+  // half under the path): a view's edge inside the frame (the seam to the
+  // twin view, the title band) must not cut it where panning the subject
+  // away from that edge, within the room the window leaves, holds it.
+  std::vector<geometry::Vec3> outline;
 };
 
 class CameraFraming {
@@ -94,6 +99,12 @@ class CameraFraming {
   // Frame the subject into this part of the ball view (the rest is left to
   // text); the full view by default. Explicit distance/target keys ignore it.
   void setWindow(const NdcWindow &window) { window_ = window; }
+  // Which edges of the ball view lie inside the frame (next to another view
+  // or the title band), where the surface's outline must not be cut.
+  struct InnerEdges {
+    bool left = false, right = false, bottom = false, top = false;
+  };
+  void setInnerEdges(const InnerEdges &edges) { innerEdges_ = edges; }
   // Whether the scene fixes the camera itself (target and distance, or
   // follow), so that the framing cannot make room for text.
   [[nodiscard]] bool fixedByScene() const;
@@ -152,6 +163,13 @@ class CameraFraming {
   // The view direction at s through keyframes (mixed between neighbours).
   [[nodiscard]] static OrbitAngles along(const std::vector<Keyframe> &keys, double s);
   [[nodiscard]] Aim aimOf(const Shot &shot, int w, int h, double s) const;
+  // Moves `target` across the view so that the outline stays inside the
+  // inner edges, as far as the subject's points stay inside the window,
+  // then steps back by up to kOutlineStepBack where it is still cut.
+  void holdOutline(geometry::Vec3 &target, double &distance, const OrbitAngles &a, double fovDeg,
+                   double aspect) const;
+  // How far back holdOutline may step (a slightly wider framing).
+  static constexpr double kOutlineStepBack = 1.2;
   // The orbit angles `base`, turned where the surface would hide the ball on
   // [s0, s1] (azimuthFree/elevationFree: which the scene leaves open); with
   // mayOrbit, a view that orbits with the ball's longitude where no still
@@ -166,6 +184,7 @@ class CameraFraming {
   const model::RollingModel &model_;
   FrameExtent extent_;
   NdcWindow window_;
+  InnerEdges innerEdges_;
   std::vector<Shot> shots_;  // one per storyboard segment (one for a scene without segments)
   std::vector<std::string> hiddenWarnings_;
 };

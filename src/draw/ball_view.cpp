@@ -121,6 +121,21 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
         const double th = c0 + (c1 - c0) * i / 8, phi = 2.0 * std::numbers::pi * k / 16;
         extent_.points.push_back(r * Vec3(std::sin(th) * std::cos(phi), std::sin(th) * std::sin(phi), std::cos(th)));
       }
+    // Outside, the half of the sphere the path lies on, where a slightly
+    // wider framing holds it: its rim is the sphere's widest outline seen
+    // from the path's side, which a view's edge would otherwise cut in the
+    // middle of the frame (a small path on a big sphere).
+    Vec3 pathSide = Vec3::Zero();
+    for (const Vec3& p : pathPoints_) pathSide += p;
+    if (pathSide.norm() > 1e-9 * r * double(pathPoints_.size()) && !look.cutAwayTowardEye) {
+      pathSide.normalize();
+      for (int i = 0; i <= 12; ++i)
+        for (int k = 0; k < 24; ++k) {
+          const double th = std::numbers::pi * i / 12, phi = 2.0 * std::numbers::pi * k / 24;
+          const Vec3 d(std::sin(th) * std::cos(phi), std::sin(th) * std::sin(phi), std::cos(th));
+          if (d.dot(pathSide) >= -0.05) extent_.outline.push_back(r * d);
+        }
+    }
     for (int k = 0; k < 3; ++k) {
       lo[k] = std::min(lo[k], -r);
       hi[k] = std::max(hi[k], r);
@@ -185,17 +200,30 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
       // The drawn patch's edge near the path (a cylinder's top and bottom
       // rims) is framed too, so that the frame does not cut the surface
       // just past the ball; far corners (a paraboloid's rising rim) are not.
+      // Text keeps off these framed stretches of edge too (markImportant).
       const std::size_t pathFramePoints = extent_.points.size();
+      std::vector<Vec3> runs[4];
+      auto endRun = [&](std::vector<Vec3>& run) {
+        if (run.size() > 1) framedEdges_.push_back(run);
+        run.clear();
+      };
       for (int k = 0; k <= 32; ++k) {
         const double t = k / 32.0;
-        for (const geometry::Vec2 uv : {geometry::Vec2(u0 + (u1 - u0) * t, v0), geometry::Vec2(u0 + (u1 - u0) * t, v1),
-                                        geometry::Vec2(u0, v0 + (v1 - v0) * t), geometry::Vec2(u1, v0 + (v1 - v0) * t)}) {
-          const Vec3 p = surface.position(uv);
+        const geometry::Vec2 edges[4] = {geometry::Vec2(u0 + (u1 - u0) * t, v0), geometry::Vec2(u0 + (u1 - u0) * t, v1),
+                                         geometry::Vec2(u0, v0 + (v1 - v0) * t), geometry::Vec2(u1, v0 + (v1 - v0) * t)};
+        for (int e = 0; e < 4; ++e) {
+          const Vec3 p = surface.position(edges[e]);
           double nearest = 1e300;
           for (std::size_t i = 0; i < pathFramePoints; ++i) nearest = std::min(nearest, (extent_.points[i] - p).norm());
-          if (nearest <= 4.5 * R) extent_.points.push_back(p);
+          if (nearest <= 4.5 * R) {
+            extent_.points.push_back(p);
+            runs[e].push_back(p);
+          } else {
+            endRun(runs[e]);
+          }
         }
       }
+      for (std::vector<Vec3>& run : runs) endRun(run);
     }
   }
   if (model.plate) {
@@ -508,6 +536,10 @@ void BallView::markImportant(Occupancy& occupancy, const render::View& v, double
       havePrevious = true;
     }
   };
+  // The surface's edge the framing holds (a cylinder's rims): text would
+  // hide where the surface ends.
+  for (const std::vector<geometry::Vec3>& edge : framedEdges_)
+    markCurve([&](std::size_t i) { return edge[i]; }, edge.size());
   const std::size_t step = std::max<std::size_t>(1, pathPoints_.size() / 400);
   if (withPath) markCurve([&](std::size_t i) { return pathPoints_[std::min(i * step, pathPoints_.size() - 1)]; },
                           (pathPoints_.size() + step - 1) / step + 1);

@@ -58,7 +58,8 @@ class BallView {
   std::shared_ptr<render::MeshData> sphereMesh_, dotMesh_, surfaceMesh_, discMesh_;
   render::Material surfaceMaterial_;
   geometry::Vec3 plateCircleCentre_ = geometry::Vec3::Zero();
-  std::vector<geometry::Vec3> cutRim_;  // inside a sphere: the edge of the cut-away
+  std::vector<geometry::Vec3> cutRim_;
+  std::vector<std::vector<geometry::Vec3>> framedEdges_;  // stretches of the surface's edge the framing holds  // inside a sphere: the edge of the cut-away
 };
 
 }  // namespace rollspin::draw

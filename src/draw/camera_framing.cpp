@@ -187,7 +187,7 @@ double turnDeg(const OrbitAngles &a, const OrbitAngles &b) {
 // already sees in.
 CameraFraming::Unhidden CameraFraming::unhiddenAngles(OrbitAngles base, double s0, double s1, bool azimuthFree,
                                                       bool elevationFree, bool mayOrbit, double maxTurnDeg,
-                                                      bool mayLower, bool follow) const {
+                                                      double seconds, bool mayLower, bool follow) const {
   Unhidden out{base, false, 0.0};
   const bool cutOpen =
       model_.surface && model_.surface->look().cutAwayTowardEye;
@@ -253,107 +253,149 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(OrbitAngles base, double s
     if (share >= 0.96 && c.cost == 0.0) break;  // the given view sees it all
   }
   out.share = bestShare;
-  for (const double enough : {0.96, 0.9}) {
+  auto pickStill = [&](double enough) {
     const Seen *chosen = nullptr;
     for (const Seen &v : seen)
       if (v.share >= enough && (chosen == nullptr || v.score > chosen->score + 1e-9)) chosen = &v;
     if (chosen) {
       out.angles = chosen->candidate->angles;
       out.share = chosen->share;
-      return out;
     }
-  }
+    return chosen != nullptr;
+  };
+  if (pickStill(0.96)) return out;
 
   // The ball's longitude about the z axis at s; an orbit only makes sense
-  // where the path keeps away from the axis (else the view would spin).
+  // where the path keeps away from the axis (else the view would spin) and
+  // the ball goes round slowly enough: the view turns by the longitude's
+  // rate times cos(elevation), at most kMaxTurnRateDeg a second.
   auto longitude = [&](double s) {
     const Vec3 p = model_.path->at(s).point;
     return std::atan2(p.y(), p.x());
   };
   bool offAxis = true;
+  double longitudeRate = 0.0;  // the fastest, degrees a second
   for (int i = 0; i <= 48 && offAxis; ++i) {
-    const Vec3 p = model_.path->at(s0 + (s1 - s0) * i / 48.0).point;
+    const double sa = s0 + (s1 - s0) * motion::ease(spec_.animation.easing, i / 48.0);
+    const Vec3 p = model_.path->at(sa).point;
     offAxis = std::hypot(p.x(), p.y()) > 0.5 * R;
+    if (i > 0) {
+      const double sb = s0 + (s1 - s0) * motion::ease(spec_.animation.easing, (i - 1) / 48.0);
+      const double turn = std::abs(std::remainder(longitude(sa) - longitude(sb), 2.0 * std::numbers::pi)) / kDeg;
+      longitudeRate = std::max(longitudeRate, turn / (seconds / 48.0));
+    }
   }
+  // An orbit that sees ≥ 96 % is preferred to a still view that sees 90 %.
+  Unhidden orbit{base, false, 0.0, -1.0};
   if (azimuthFree && mayOrbit && offAxis && s1 > s0) {
     const double offset = base.azimuth - longitude(s0);
     for (const double degrees : {0.0, 35.0, 45.0, 55.0, 65.0, 75.0}) {
       if (degrees != 0.0 && !elevationFree) break;
       const double elevation = below * std::max(below * base.elevation, degrees * kDeg);
       if (turnDeg({base.azimuth, elevation}, base) > maxTurnDeg) continue;
+      if (longitudeRate * std::cos(elevation) > kMaxTurnRateDeg) continue;
       auto eyeAt = [&](double s) {
         const OrbitAngles a{longitude(s) + offset, elevation};
         return follow ? eyeFor(a, s, Vec3::Zero()) : stillEye(a);
       };
       const double share = leastVisibleShare(model_, *extent_.surface, eyeAt, s0, s1);
-      if (share > bestShare + 1e-9) {
-        out = {{base.azimuth, elevation}, true, offset, share};
-        bestShare = share;
-      }
-      if (share >= 0.9) return out;
+      if (share > orbit.share + 1e-9) orbit = {{base.azimuth, elevation}, true, offset, share};
+      if (share >= 0.96) break;
     }
-    if (out.orbits) return out;
   }
+  if (orbit.share >= 0.96) return orbit;
+  if (pickStill(0.9)) return out;
+  if (orbit.share >= 0.9) return orbit;
   // Last, a camera that turns as the ball goes (round a torus's tube no
-  // still view sees it all): view directions at 33 places along [s0, s1],
-  // each seeing the ball there, chosen (dynamic programming) for the least
-  // sum of squared turns from the given view and between places; the
-  // camera turns between them with s.
+  // still view sees it all): view directions at places evenly spread in time
+  // over the motion's `seconds` (its easing undone), on a grid of 10° of
+  // azimuth by 7.5° of elevation, each seeing the ball there and a third and
+  // two thirds of the way to the next place (the camera turns between two
+  // places' directions there), turned from one place to the next by at most
+  // kMaxFreeMoveDeg a second, chosen (dynamic programming) for the least sum
+  // of squared turns from the given view and between places.
+  // Within a gentle turn of the previous segment's view (maxTurnDeg under
+  // 360°), the turning camera starts from that view itself.
+  const bool anchored = maxTurnDeg < 360.0;
   if (mayOrbit && azimuthFree && elevationFree && s1 > s0) {
-    constexpr int kPlaces = 33;
-    std::vector<OrbitAngles> directions;
-    for (const double turn : {0.0, 30.0, -30.0, 60.0, -60.0, 90.0, -90.0, 120.0, -120.0, 150.0, -150.0, 180.0})
-      for (const double degrees : {70.0, 50.0, 30.0, 10.0, -10.0, -30.0, -50.0})
-        directions.push_back({base.azimuth + turn * kDeg, degrees * kDeg});
-    std::vector<Vec3> eyes;
-    for (const OrbitAngles &d : directions) eyes.push_back(stillEye(d));
+    constexpr double kAzimuthStep = 10.0, kElevationStep = 7.5;
+    // A step of the grid (its diagonal at the horizon) must fit the turn a
+    // place-to-place time allows: places at least this far apart in time.
+    const double minStepSeconds = std::hypot(kAzimuthStep, kElevationStep) / kMaxFreeMoveDeg;
+    const int intervals = std::clamp(int(std::floor(seconds / minStepSeconds)), 1, 40);
+    const double maxStepDeg = kMaxFreeMoveDeg * seconds / intervals;
+    const int places = intervals + 1;
+    std::vector<OrbitAngles> directions{base};
+    const int azimuths = int(std::lround(360.0 / kAzimuthStep));
+    for (int a = 0; a < azimuths; ++a)
+      for (double degrees = -75.0; degrees <= 75.0 + 1e-9; degrees += kElevationStep)
+        directions.push_back({base.azimuth + std::remainder(a * kAzimuthStep, 360.0) * kDeg, degrees * kDeg});
     const std::size_t n = directions.size();
-    // All 25 sight lines clear where that can be had, else 95 % of them.
+    std::vector<Vec3> eyes, toward;
+    for (const OrbitAngles &d : directions) {
+      eyes.push_back(stillEye(d));
+      toward.push_back(towardEye(d));
+    }
+    // Each direction's neighbours within one step's turn.
+    const double maxStepCos = std::cos(maxStepDeg * kDeg);
+    std::vector<std::vector<std::size_t>> near(n);
+    for (std::size_t j = 0; j < n; ++j)
+      for (std::size_t k = 0; k < n; ++k)
+        if (toward[j].dot(toward[k]) >= maxStepCos - 1e-12) near[j].push_back(k);
+    const scene::Easing easing = spec_.animation.easing;
+    auto placeS = [&](double i) { return s0 + (s1 - s0) * motion::ease(easing, i / intervals); };
+    // seen[i][j]: direction j sees the ball at place i and on the way to
+    // place i + 1 (a third and two thirds of the time there).
     for (const double enough : {0.99, 0.95}) {
-      std::vector<std::vector<double>> cost(kPlaces, std::vector<double>(n, 1e300));
-      std::vector<std::vector<std::size_t>> from(kPlaces, std::vector<std::size_t>(n, 0));
-      for (int i = 0; i < kPlaces; ++i) {
-        const double s = s0 + (s1 - s0) * i / double(kPlaces - 1);
-        const Vec3 centre = model_.path->at(s).centre(R);
+      std::vector<std::vector<char>> seen(std::size_t(places), std::vector<char>(n, 0));
+      for (int i = 0; i < places; ++i)
         for (std::size_t j = 0; j < n; ++j) {
-          // Seen here and half-way to each neighbouring place: the camera
-          // passes between two places' directions there.
-          bool seenAround = true;
-          for (const double ds : {0.0, -0.5, 0.5}) {
-            const double sa = std::clamp(s + ds * (s1 - s0) / double(kPlaces - 1), s0, s1);
-            const Vec3 c = ds == 0.0 ? centre : Vec3(model_.path->at(sa).centre(R));
-            if (extent_.surface->visibleShare(eyeFor(directions[j], sa, eyes[j]), c, R) < enough) seenAround = false;
-            if (!seenAround) break;
+          bool all = true;
+          for (const double part : {0.0, 1.0 / 3.0, 2.0 / 3.0}) {
+            if (i == intervals && part > 0.0) break;
+            const double s = placeS(i + part);
+            if (extent_.surface->visibleShare(eyeFor(directions[j], s, eyes[j]), model_.path->at(s).centre(R), R) <
+                enough) {
+              all = false;
+              break;
+            }
           }
-          if (!seenAround) continue;
-          if (i == 0) {
-            cost[0][j] = std::pow(turnDeg(base, directions[j]), 2);
-            continue;
-          }
-          for (std::size_t k = 0; k < n; ++k) {
-            const double c = cost[i - 1][k] + std::pow(turnDeg(directions[k], directions[j]), 2);
-            if (c < cost[i][j]) {
-              cost[i][j] = c;
-              from[i][j] = k;
+          seen[std::size_t(i)][j] = all;
+        }
+      // On the way from place i − 1 to i the camera passes between the two
+      // directions: both must see the ball on that stretch.
+      std::vector<std::vector<double>> cost(std::size_t(places), std::vector<double>(n, 1e300));
+      std::vector<std::vector<std::size_t>> from(std::size_t(places), std::vector<std::size_t>(n, 0));
+      // Anchored: the camera starts where the previous segment's left off
+      // (the grid's first direction is `base`) and needs no move there.
+      for (std::size_t j = 0; j < n; ++j)
+        if (seen[0][j] && (!anchored || j == 0)) cost[0][j] = std::pow(turnDeg(base, directions[j]), 2);
+      for (int i = 1; i < places; ++i)
+        for (std::size_t j = 0; j < n; ++j) {
+          if (!seen[std::size_t(i)][j] || !seen[std::size_t(i - 1)][j]) continue;
+          for (const std::size_t k : near[j]) {
+            const double c = cost[std::size_t(i - 1)][k] + std::pow(turnDeg(directions[k], directions[j]), 2);
+            if (c < cost[std::size_t(i)][j]) {
+              cost[std::size_t(i)][j] = c;
+              from[std::size_t(i)][j] = k;
             }
           }
         }
-      }
-      std::size_t last = 0;
-      for (std::size_t j = 1; j < n; ++j)
-        if (cost[kPlaces - 1][j] < cost[kPlaces - 1][last]) last = j;
-      if (cost[kPlaces - 1][last] < 1e299) {
-        std::vector<Keyframe> keys(kPlaces);
-        for (int i = kPlaces - 1; i >= 0; --i) {
-          keys[std::size_t(i)] = {s0 + (s1 - s0) * i / double(kPlaces - 1), directions[last]};
-          last = from[std::size_t(i)][last];
+      const std::vector<double> &lastCost = cost.back();
+      const std::size_t last = std::size_t(std::min_element(lastCost.begin(), lastCost.end()) - lastCost.begin());
+      if (lastCost[last] < 1e299) {
+        std::vector<Keyframe> keys(static_cast<std::size_t>(places));
+        for (std::size_t j = last, i = std::size_t(places); i-- > 0;) {
+          keys[i] = {placeS(double(i)), directions[j]};
+          j = from[i][j];
         }
-        out = {keys.front().angles, false, 0.0, 0.9};
+        out = {keys.front().angles, false, 0.0, enough};
         out.keys = std::move(keys);
         return out;
       }
     }
   }
+  if (orbit.share > bestShare) return orbit;
   if (leastHidden) out.angles = leastHidden->angles;
   return out;
 }
@@ -385,8 +427,10 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
   auto freeCamera = [](const Shot &sh) { return !sh.follow && !(sh.target && sh.distance); };
   if (spec.segments.empty()) {
     if (freeCamera(shot)) {
-      const Unhidden u =
-          unhiddenAngles(sceneAngles, 0.0, model.path->length(), !azimuthGiven, !elevationGiven, true, 360.0);
+      const motion::FrameClock clock(model.path->length(), spec);
+      const double seconds = double(clock.motionFrames()) / clock.fps().value();
+      const Unhidden u = unhiddenAngles(sceneAngles, 0.0, model.path->length(), !azimuthGiven, !elevationGiven, true,
+                                        360.0, seconds);
       shot.azimuth = u.angles.azimuth;
       shot.elevation = u.angles.elevation;
       shot.orbits = u.orbits;
@@ -401,6 +445,7 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
   // previous segment's view by at most kMaxFreeMoveDeg where one such does
   // (so that the one-second move between them stays as gentle as the
   // scene-given ones), and orbiting with the ball where no still view does.
+  const std::vector<double> segmentSeconds = motion::FrameClock::segmentSeconds(model.segments, spec);
   for (std::size_t k = 0; k < spec.segments.size(); ++k) {
     const scene::CameraSpec &c = spec.segments[k].camera;
     // Where the previous segment's camera left off: the next one starts there.
@@ -432,18 +477,21 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
     shot.moveSeconds = kCameraMove;
     if (!(shot.target && shot.distance)) {  // follow: the angles are still free
       model::SegmentSpan span = model.segments[k];
+      double seconds = segmentSeconds[k];
       // A hold looks ahead: its camera moves (while the ball rests) to the
       // view the next motion wants, where that segment adds no keys.
       if (span.end == span.start && k + 1 < spec.segments.size()) {
         const scene::CameraSpec &next = spec.segments[k + 1].camera;
-        if (!next.azimuthDeg && !next.elevationDeg && !next.follow && !next.target && !next.distance && !next.fovDeg)
+        if (!next.azimuthDeg && !next.elevationDeg && !next.follow && !next.target && !next.distance && !next.fovDeg) {
           span = model.segments[k + 1];
+          seconds = segmentSeconds[k + 1];
+        }
       }
       const OrbitAngles base{shot.azimuth, shot.elevation};
       Unhidden u = unhiddenAngles(base, span.start, span.end, !azimuthGiven, !elevationGiven, true,
-                                  k == 0 ? 360.0 : kMaxFreeMoveDeg, false, shot.follow);
+                                  k == 0 ? 360.0 : kMaxFreeMoveDeg, seconds, false, shot.follow);
       if (k > 0 && u.share < 0.9)
-        u = unhiddenAngles(base, span.start, span.end, !azimuthGiven, !elevationGiven, true, 360.0, false,
+        u = unhiddenAngles(base, span.start, span.end, !azimuthGiven, !elevationGiven, true, 360.0, seconds, false,
                            shot.follow);
       shot.azimuth = u.angles.azimuth;
       shot.elevation = u.angles.elevation;
@@ -453,7 +501,11 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
       // A turn larger than kMaxFreeMoveDeg takes longer than a second, where
       // rollspin chose the view; a move to angles the scene gives takes the
       // documented second.
-      if (k > 0 && !(azimuthGiven && elevationGiven)) shot.moveSeconds = std::max(kCameraMove, turnDeg(previous, u.angles) / kMaxFreeMoveDeg);
+      if (k > 0 && !(azimuthGiven && elevationGiven))
+        shot.moveSeconds = std::max(kCameraMove, turnDeg(previous, u.angles) / kMaxFreeMoveDeg);
+      // A camera that turns with s from where the previous one left off
+      // needs no move.
+      if (k > 0 && !u.keys.empty() && turnDeg(previous, u.keys.front().angles) < 1e-6) shot.moveSeconds = 0.0;
     }
     shot.keyed = (shot.target && shot.distance) || azimuthGiven || elevationGiven;
     shots_.push_back(shot);
@@ -538,6 +590,7 @@ CameraFraming::Aim CameraFraming::aimOf(const Shot &shot, int w, int h, double s
   const Lens lens = windowLens(window_, shot.fovDeg, double(w) / double(std::max(h, 1)));
   const double fovDeg = lens.fovDeg, aspect = lens.aspect;
   auto [target, distance] = fitPoints(extent_.points, R, a, fovDeg, aspect);
+  if (!shot.follow && !shot.target) holdOutline(target, distance, a, fovDeg, aspect);
   if (shot.follow) {
     target = model_.path->at(s).centre(R);
     distance = fitDistance(4.0 * R, fovDeg, aspect);
@@ -547,19 +600,90 @@ CameraFraming::Aim CameraFraming::aimOf(const Shot &shot, int w, int h, double s
   return {target, distance, a.azimuth, a.elevation, shot.fovDeg};
 }
 
+// In the window's own NDC the subject's points (padded by R) must stay in
+// [-1, 1]; the view's edge lies at (±1 − centre) / half-width of the
+// window. The shift is continuous in the angles (maxima over points), so a
+// turning camera pans smoothly.
+void CameraFraming::holdOutline(Vec3 &target, double &distance, const OrbitAngles &a, double fovDeg,
+                                double aspect) const {
+  if (extent_.outline.empty()) return;
+  const double R = model_.ballRadius;
+  const Vec3 toEye = towardEye(a);
+  const Vec3 right = Vec3::UnitZ().cross(toEye).normalized();
+  const Vec3 up = toEye.cross(right);
+  const double tanV = std::tan(0.5 * fovDeg * kDeg), tanH = tanV * aspect;
+  const Vec3 axes[2] = {right, up};
+  const double tans[2] = {tanH, tanV};
+  const double centres[2] = {0.5 * (window_.x0 + window_.x1), 0.5 * (window_.y0 + window_.y1)};
+  const double halves[2] = {0.5 * (window_.x1 - window_.x0), 0.5 * (window_.y1 - window_.y0)};
+  const bool lowInner[2] = {innerEdges_.left, innerEdges_.bottom}, highInner[2] = {innerEdges_.right, innerEdges_.top};
+  for (int axis = 0; axis < 2; ++axis) {
+    if (lowInner[axis] == highInner[axis]) continue;  // none, or both sides: panning cannot help
+    for (int pass = 0; pass < 2; ++pass) {
+      auto ndc = [&](const Vec3 &p, double pad) {
+        const Vec3 d = p - target;
+        const double w = std::max(distance - d.dot(toEye), 1e-9);
+        return std::pair{(d.dot(axes[axis]) - pad) / (w * tans[axis]), (d.dot(axes[axis]) + pad) / (w * tans[axis])};
+      };
+      double subjectLo = 1e300, subjectHi = -1e300, outlineLo = 1e300, outlineHi = -1e300;
+      for (const Vec3 &p : extent_.points) {
+        const auto [lo, hi] = ndc(p, R);
+        subjectLo = std::min(subjectLo, lo);
+        subjectHi = std::max(subjectHi, hi);
+      }
+      for (const Vec3 &p : extent_.outline) {
+        const auto [lo, hi] = ndc(p, 0.0);
+        outlineLo = std::min(outlineLo, lo);
+        outlineHi = std::max(outlineHi, hi);
+      }
+      // The inner edge and how far the outline reaches, both measured away
+      // from the window's centre towards that edge.
+      // (A margin of 3 % of the window: the outline is sampled, and a
+      // surface that just touches the seam reads as cut.)
+      const double edge =
+          (highInner[axis] ? (1.0 - centres[axis]) / halves[axis] : (1.0 + centres[axis]) / halves[axis]) - 0.03;
+      const double reach = highInner[axis] ? outlineHi : -outlineLo;
+      if (pass == 0) {
+        // Pan the picture away from the edge, as far as the subject keeps
+        // inside the window on the other side.
+        const double room = std::max(0.0, highInner[axis] ? subjectLo + 1.0 : 1.0 - subjectHi);
+        const double shift = std::clamp(reach - edge, 0.0, room) * (highInner[axis] ? -1.0 : 1.0);
+        target -= shift * distance * tans[axis] * axes[axis];
+      } else if (reach > edge && edge > 0.0) {
+        // Still cut: step back, by up to kOutlineStepBack (the reach over
+        // the edge shrinks with the distance).
+        distance *= std::min(reach / edge, kOutlineStepBack);
+      }
+    }
+  }
+}
+
 CameraFraming::Aim CameraFraming::aimAt(const StoryPlace &story, int w, int h, double s) const {
   const std::size_t k = std::min(story.segment, shots_.size() - 1);
   const Aim to = aimOf(shots_[k], w, h, s);
   const double move = std::min(shots_[k].moveSeconds, story.duration);
   if (k == 0 || !(story.seconds < move)) return to;
-  // On the way from the previous segment's camera: eased, the azimuth the
-  // short way round. Equal cameras blend to themselves exactly.
-  const Aim from = aimOf(shots_[k - 1], w, h, s);
+  // On the way from the previous segment's camera where it left off (an
+  // orbiting one no longer follows the ball): eased, the azimuth the short
+  // way round. Equal cameras blend to themselves exactly.
+  const Aim from = aimOf(shots_[k - 1], w, h, k < model_.segments.size() ? model_.segments[k].start : s);
   const double x = motion::ease(scene::Easing::Smooth, story.seconds / move);
   auto mix = [x](double a, double b) { return a + (b - a) * x; };
-  const double turn = std::remainder(to.azimuth - from.azimuth, 2.0 * std::numbers::pi);
-  return {from.target + (to.target - from.target) * x, mix(from.distance, to.distance), from.azimuth + turn * x,
-          mix(from.elevation, to.elevation), mix(from.fovDeg, to.fovDeg)};
+  // The view direction turns along the great circle between the two (at
+  // an even rate: the turn is the move's angle, not the sum of an azimuth
+  // and an elevation turn); straight up or down keeps the azimuth mixed.
+  const Vec3 a = towardEye({from.azimuth, from.elevation}), b = towardEye({to.azimuth, to.elevation});
+  const double angle = std::acos(std::clamp(a.dot(b), -1.0, 1.0));
+  double azimuth = from.azimuth + std::remainder(to.azimuth - from.azimuth, 2.0 * std::numbers::pi) * x;
+  double elevation = mix(from.elevation, to.elevation);
+  if (angle > 1e-9 && angle < std::numbers::pi - 1e-6) {
+    const Vec3 d = (std::sin((1.0 - x) * angle) * a + std::sin(x * angle) * b) / std::sin(angle);
+    if (std::hypot(d.x(), d.y()) > 1e-9)
+      azimuth = from.azimuth + std::remainder(std::atan2(d.y(), d.x()) - from.azimuth, 2.0 * std::numbers::pi);
+    elevation = std::asin(std::clamp(d.z(), -1.0, 1.0));
+  }
+  return {from.target + (to.target - from.target) * x, mix(from.distance, to.distance), azimuth, elevation,
+          mix(from.fovDeg, to.fovDeg)};
 }
 
 render::View CameraFraming::ballCamera(int x, int y, int w, int h, double s, const StoryPlace &story) const {
@@ -599,3 +723,5 @@ render::View CameraFraming::ballCamera(int x, int y, int w, int h, double s, con
 }
 
 }  // namespace rollspin::draw
+
+

@@ -68,6 +68,11 @@ struct FrameExtent {
   geometry::Vec3 centre = geometry::Vec3::Zero();  // shadow-map centre
   double radius = 1.0;
   std::shared_ptr<const SightLines> surface;
+  // The drawn surface's outline on the path's side (an outside sphere: its
+  // half under the path): a view's edge inside the frame (the seam to the
+  // twin view, the title band) must not cut it where panning the subject
+  // away from that edge, within the room the window leaves, holds it.
+  std::vector<geometry::Vec3> outline;
 };
 
 class CameraFraming {
@@ -94,6 +99,12 @@ class CameraFraming {
   // Frame the subject into this part of the ball view (the rest is left to
   // text); the full view by default. Explicit distance/target keys ignore it.
   void setWindow(const NdcWindow &window) { window_ = window; }
+  // Which edges of the ball view lie inside the frame (next to another view
+  // or the title band), where the surface's outline must not be cut.
+  struct InnerEdges {
+    bool left = false, right = false, bottom = false, top = false;
+  };
+  void setInnerEdges(const InnerEdges &edges) { innerEdges_ = edges; }
   // Whether the scene fixes the camera itself (target and distance, or
   // follow), so that the framing cannot make room for text.
   [[nodiscard]] bool fixedByScene() const;
@@ -115,6 +126,11 @@ class CameraFraming {
   // storyboard.toml asks for turn it by up to about 36° in their second):
   // a larger turn takes longer than kCameraMove.
   static constexpr double kMaxFreeMoveDeg = 40.0;
+  // The fastest the view direction turns where the scene leaves the camera
+  // free: the peak of a kMaxFreeMoveDeg move eased over a second
+  // (3x² − 2x³ peaks at 1.5 times its mean rate). A camera that orbits with
+  // the ball or turns with s (round a torus's tube) keeps under it too.
+  static constexpr double kMaxTurnRateDeg = 1.5 * kMaxFreeMoveDeg;
 
  private:
   // A view direction the camera passes through at arc length s.
@@ -147,12 +163,20 @@ class CameraFraming {
   // The view direction at s through keyframes (mixed between neighbours).
   [[nodiscard]] static OrbitAngles along(const std::vector<Keyframe> &keys, double s);
   [[nodiscard]] Aim aimOf(const Shot &shot, int w, int h, double s) const;
+  // Moves `target` across the view so that the outline stays inside the
+  // inner edges, as far as the subject's points stay inside the window,
+  // then steps back by up to kOutlineStepBack where it is still cut.
+  void holdOutline(geometry::Vec3 &target, double &distance, const OrbitAngles &a, double fovDeg,
+                   double aspect) const;
+  // How far back holdOutline may step (a slightly wider framing).
+  static constexpr double kOutlineStepBack = 1.2;
   // The orbit angles `base`, turned where the surface would hide the ball on
   // [s0, s1] (azimuthFree/elevationFree: which the scene leaves open); with
   // mayOrbit, a view that orbits with the ball's longitude where no still
-  // view sees it; maxTurnDeg bounds the turn away from `base`.
+  // view sees it, else one that turns with s; maxTurnDeg bounds the turn
+  // away from `base`; the motion over [s0, s1] lasts `seconds`.
   [[nodiscard]] Unhidden unhiddenAngles(OrbitAngles base, double s0, double s1, bool azimuthFree, bool elevationFree,
-                                        bool mayOrbit, double maxTurnDeg, bool mayLower = false,
+                                        bool mayOrbit, double maxTurnDeg, double seconds, bool mayLower = false,
                                         bool follow = false) const;
   void findHiddenSpans();
 
@@ -160,6 +184,7 @@ class CameraFraming {
   const model::RollingModel &model_;
   FrameExtent extent_;
   NdcWindow window_;
+  InnerEdges innerEdges_;
   std::vector<Shot> shots_;  // one per storyboard segment (one for a scene without segments)
   std::vector<std::string> hiddenWarnings_;
 };

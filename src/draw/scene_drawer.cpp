@@ -149,6 +149,11 @@ void SceneDrawer::layOut(const RollingModel& model) {
   // A camera that orbits with the ball sweeps the path across the view: as
   // many samples as the budget allows.
   const int count = camera_->orbits() ? 480 : int(std::clamp(std::ceil(L / (0.5 * model.ballRadius)), 48.0, 240.0));
+  // The ball view's edges inside the frame (an inset lies over the view,
+  // not beside it).
+  if (r.ball.width > 0 && !r.inset)
+    camera_->setInnerEdges({r.ball.x > 0, r.ball.x + r.ball.width < int(spec_.render.width),
+                            r.ball.y + r.ball.height < int(spec_.render.height), r.ball.y > 0});
   if (r.ball.width > 0) {
     const std::vector<TextBlock> blocks = reserve([&](const FrameOrientations& f) { return ballBlocks(f, float(r.ball.width)); }, float(r.ball.width));
     for (const TextBlock& b : blocks) ballReserved_.push_back(b.minSize);
@@ -264,6 +269,12 @@ void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& fram
     place(twinBlocks(frame, float(twin.width), r.inset), twinReserved_, twinLayout_, view);
     if (still) keepLabelsClear(list, view, firstLabel);
   }
+}
+
+render::View SceneDrawer::ballCamera(const StoryPlace& story, double s) const {
+  const Rects r = rects();
+  if (r.ball.width <= 0) return {};
+  return camera_->ballCamera(r.ball.x, r.ball.y, r.ball.width, r.ball.height, s, story);
 }
 
 }  // namespace rollspin::draw

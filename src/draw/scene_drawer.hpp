@@ -51,6 +51,10 @@ class SceneDrawer {
   // segment's (a held frame must be drawn again).
   [[nodiscard]] bool cameraMoving(const StoryPlace& story) const { return camera_->moving(story); }
 
+  // The ball view's camera at a place of the clip, as draw() sets it (no
+  // solve needed); a default View where the layout shows no ball view.
+  [[nodiscard]] render::View ballCamera(const StoryPlace& story, double s) const;
+
   // Where the scene's own camera keys hide the ball: one warning line per
   // segment, with the seconds (CameraFraming::hiddenWarnings).
   [[nodiscard]] std::vector<std::string> cameraWarnings() const { return camera_->hiddenWarnings(); }

@@ -220,5 +220,44 @@ TEST(ClipLayout, ALiveLinesLeadingWordsEndBeforeItsFirstNumber) {
   EXPECT_EQ(wordsBeforeTheFirstNumber("x=1"), 0u);                   // no space before it
 }
 
+// A view's edge inside the frame (the seam to the twin view) does not cut a
+// big sphere in the middle of the frame where panning or a slightly wider
+// framing holds it: for a small ball on a large sphere (berry) at 16:9, at
+// five places along the clip, the sphere's outline (dense points over it,
+// projected with the ball view's camera) on the rows the view shows stays
+// left of the seam.
+TEST(ClipLayout, ALargeSpheresOutlineIsNotCutByTheSeamToTheTwinView) {
+  for (const auto& [width, height] : {std::pair{1920, 1080}, std::pair{960, 540}, std::pair{640, 360}}) {
+    const auto file = test::sourceDir() / "scenes/berry.toml";
+    const scene::SceneSpec spec =
+        loadScene(file.string(), {"render.width=" + std::to_string(width), "render.height=" + std::to_string(height)});
+    const RollingModel model = buildSceneModel(spec);
+    const auto* sphere = dynamic_cast<const geometry::Sphere*>(model.surface.get());
+    ASSERT_NE(sphere, nullptr);
+    const SceneDrawer drawer(spec, model, nullptr, makeSceneFacts(spec, model));
+    const double L = model.path->length();
+    for (const double fraction : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+      const double s = L * fraction;
+      const render::View v = drawer.ballCamera(storyPlaceAt(model, s), s);
+      ASSERT_LT(v.x + v.width, width) << "the ball view ends at a seam";
+      const Screen screen(v);
+      const glm::vec3 eye = v.camera.position;
+      float rightmost = -1e9f;
+      for (int i = 0; i <= 360; ++i)
+        for (int k = 0; k < 720; ++k) {
+          const double th = M_PI * i / 360, phi = 2.0 * M_PI * k / 720;
+          const glm::vec3 d(float(std::sin(th) * std::cos(phi)), float(std::sin(th) * std::sin(phi)), float(std::cos(th)));
+          const glm::vec3 p = float(sphere->radius()) * d;
+          if (glm::dot(p - eye, d) > 0.0f) continue;  // the far side: inside the outline anyway
+          const glm::vec3 q = screen.project(p);
+          if (q.z > 0.0f && q.y >= 0.0f && q.y <= float(v.height)) rightmost = std::max(rightmost, q.x);
+        }
+      EXPECT_LE(rightmost, float(v.width))
+          << width << "x" << height << " s = " << s << ": the seam cuts the sphere at x = " << v.width
+          << " (its outline reaches " << rightmost << ")";
+    }
+  }
+}
+
 }  // namespace
 }  // namespace rollspin::draw

@@ -27,6 +27,8 @@ struct OrbitAngles {
 
 // The unit vector from the target towards the eye.
 geometry::Vec3 towardEye(const OrbitAngles &a);
+// The angle between two view directions, in degrees.
+double turnDeg(const OrbitAngles &a, const OrbitAngles &b);
 
 // render.azimuth_deg / elevation_deg, with the defaults a surface asks for
 // where the scene leaves them out (a wall from its side, a ceiling from

@@ -17,6 +17,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/text.hpp"
+#include "render/figure_fonts.hpp"
 #include "render/font_atlas.hpp"
 
 namespace rollspin::render {
@@ -48,128 +49,6 @@ double encodeSrgb(float linear) {
 void setColor(cairo_t* cr, const glm::vec3& rgb, float alpha) {
   cairo_set_source_rgba(cr, encodeSrgb(rgb.r), encodeSrgb(rgb.g), encodeSrgb(rgb.b), alpha);
 }
-
-std::string encodeUtf8(const std::u32string& text) {
-  std::string out;
-  for (char32_t c : text) {
-    if (c < 0x80) {
-      out += static_cast<char>(c);
-    } else if (c < 0x800) {
-      out += static_cast<char>(0xC0 | (c >> 6));
-      out += static_cast<char>(0x80 | (c & 0x3F));
-    } else if (c < 0x10000) {
-      out += static_cast<char>(0xE0 | (c >> 12));
-      out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-      out += static_cast<char>(0x80 | (c & 0x3F));
-    } else {
-      out += static_cast<char>(0xF0 | (c >> 18));
-      out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
-      out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-      out += static_cast<char>(0x80 | (c & 0x3F));
-    }
-  }
-  return out;
-}
-
-// fontconfig's best match for a family at a weight (the caller owns it).
-FcPattern* matchFont(const std::string& family, bool bold) {
-  FcPattern* pattern = FcPatternCreate();
-  FcPatternAddString(pattern, FC_FAMILY, reinterpret_cast<const FcChar8*>(family.c_str()));
-  FcPatternAddInteger(pattern, FC_WEIGHT, bold ? FC_WEIGHT_BOLD : FC_WEIGHT_REGULAR);
-  FcPatternAddInteger(pattern, FC_SLANT, FC_SLANT_ROMAN);
-  FcConfigSubstitute(nullptr, pattern, FcMatchPattern);
-  FcDefaultSubstitute(pattern);
-  FcResult result = FcResultNoMatch;
-  FcPattern* match = FcFontMatch(nullptr, pattern, &result);
-  FcPatternDestroy(pattern);
-  return match;
-}
-
-bool sameFamily(FcPattern* match, const std::string& family) {
-  FcChar8* name = nullptr;
-  for (int i = 0; FcPatternGetString(match, FC_FAMILY, i, &name) == FcResultMatch; ++i)
-    if (asciiLowercase(reinterpret_cast<const char*>(name)) == asciiLowercase(family)) return true;
-  return false;
-}
-
-// The labels' fonts through fontconfig and FreeType: the figure's family,
-// and DejaVu Sans for any character it lacks (Latin Modern has no ⟩), so
-// that a label never shows a missing-glyph box. Per weight.
-class FigureFonts {
- public:
-  explicit FigureFonts(std::string family) : family_(std::move(family)) {}
-  ~FigureFonts() {
-    for (auto& [key, f] : faces_) {
-      cairo_font_face_destroy(f.face);
-      FcPatternDestroy(f.pattern);
-    }
-  }
-  FigureFonts(const FigureFonts&) = delete;
-  FigureFonts& operator=(const FigureFonts&) = delete;
-
-  struct Face {
-    FcPattern* pattern = nullptr;
-    cairo_font_face_t* face = nullptr;
-    FcCharSet* charset = nullptr;  // owned by pattern
-    double heightPerEm = 1.0;      // ascent + descent at size 1
-  };
-
-  const Face& face(bool bold, bool fallback) {
-    const auto key = std::make_pair(bold, fallback);
-    auto it = faces_.find(key);
-    if (it != faces_.end()) return it->second;
-    Face f;
-    f.pattern = matchFont(fallback ? "DejaVu Sans" : family_, bold);
-    if (f.pattern == nullptr) throw runtimeError({family_}, "fontconfig found no font for the figure's labels");
-    f.face = cairo_ft_font_face_create_for_pattern(f.pattern);
-    FcPatternGetCharSet(f.pattern, FC_CHARSET, 0, &f.charset);
-    // The GL labels size text by stb_truetype's "pixel height" (ascent −
-    // descent); the same metric here keeps the figure's text the same size.
-    cairo_surface_t* scratch = cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1);
-    cairo_t* cr = cairo_create(scratch);
-    cairo_font_options_t* unhinted = cairo_font_options_create();
-    cairo_font_options_set_hint_metrics(unhinted, CAIRO_HINT_METRICS_OFF);  // else rounded to whole units
-    cairo_set_font_options(cr, unhinted);
-    cairo_font_options_destroy(unhinted);
-    cairo_set_font_face(cr, f.face);
-    constexpr double kProbe = 1000.0;
-    cairo_set_font_size(cr, kProbe);
-    cairo_font_extents_t e;
-    cairo_font_extents(cr, &e);
-    if (e.ascent + e.descent > 0.0) f.heightPerEm = (e.ascent + e.descent) / kProbe;
-    cairo_destroy(cr);
-    cairo_surface_destroy(scratch);
-    return faces_.emplace(key, f).first->second;
-  }
-
-  // The text split into runs, each in the first face that has its characters.
-  struct Run {
-    const Face* face;
-    std::string utf8;
-  };
-  std::vector<Run> runs(const std::string& text, bool bold) {
-    const Face& primary = face(bold, false);
-    std::vector<Run> out;
-    std::u32string current;
-    const Face* currentFace = nullptr;
-    for (char32_t c : decodeUtf8(text)) {
-      const bool has = primary.charset == nullptr || FcCharSetHasChar(primary.charset, c) || c == U' ';
-      const Face* f = has ? &primary : &face(bold, true);
-      if (f != currentFace && !current.empty()) {
-        out.push_back({currentFace, encodeUtf8(current)});
-        current.clear();
-      }
-      currentFace = f;
-      current += c;
-    }
-    if (!current.empty()) out.push_back({currentFace, encodeUtf8(current)});
-    return out;
-  }
-
- private:
-  std::string family_;
-  std::map<std::pair<bool, bool>, Face> faces_;
-};
 
 // A view's projection into figure units (= DrawList pixels), with the GL
 // window depth of the line shader (its depth bias included).
@@ -482,15 +361,6 @@ ViewProjection projectionOf(const View& v) {
   return project;
 }
 
-}  // namespace
-
-double figureFontHeightPerEm(const std::string& family) {
-  FigureFonts fonts(family);
-  return fonts.face(false, false).heightPerEm;
-}
-
-namespace {
-
 bool overlap(const View& a, const View& b) {
   return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
 }
@@ -552,14 +422,6 @@ void hideBehindOpaque(media::Image& translucent, const std::vector<float>& trans
     if (opaqueDepth[i] < translucentDepth[i]) translucent.rgba[4 * i + 3] = 0;
 }
 
-void checkFigureFont(const std::string& family, const SourceLoc& where) {
-  FcPattern* match = matchFont(family, false);
-  const bool found = match != nullptr && sameFamily(match, family);
-  if (match != nullptr) FcPatternDestroy(match);
-  if (!found)
-    throw badInput(where, "figure.font: no font family '{}' is installed (`fc-list : family` lists them; "
-                          "Debian's fonts-lmodern gives \"Latin Modern Roman\")", family);
-}
 
 void writeFigure(const std::filesystem::path& out, FigureFormat format, const DrawList& list,
                  const FigureRasters& rasters, const FigureStyle& style) {

@@ -8,7 +8,6 @@
 #include <filesystem>
 
 #include "support/cli_runner.hpp"
-#include "support/test_paths.hpp"
 
 namespace {
 

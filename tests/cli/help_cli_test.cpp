@@ -10,7 +10,6 @@
 #include <fstream>
 
 #include "support/cli_runner.hpp"
-#include "support/test_paths.hpp"
 
 namespace {
 

@@ -12,7 +12,6 @@
 #include <string>
 
 #include "support/cli_runner.hpp"
-#include "support/test_paths.hpp"
 
 namespace {
 

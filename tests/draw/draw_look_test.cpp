@@ -16,9 +16,9 @@
 
 #include "draw/draw_style.hpp"
 #include "draw/scene_drawer.hpp"
-#include "app/render_jobs.hpp"
 #include "model/rolling_model.hpp"
-#include "support/cli_runner.hpp"
+#include "motion/frame_sampling.hpp"
+#include "support/test_files.hpp"
 
 namespace rollspin::draw {
 namespace {

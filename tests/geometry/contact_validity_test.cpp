@@ -1,6 +1,7 @@
 // Physical validity along a path: the ball touches at one point only while
 // R k1 < 1 (k1 the largest principal curvature towards the ball); the first
-// failing s is reported with the numbers. 1 − κ_n R → 0 stays finite.
+// failing s is reported with the numbers (that the solver stays finite as
+// 1 − κ_n R → 0 is tests/spin/surface_solver_test.cpp).
 // Curves that leave the domain, stop, or have corners are refused.
 #include <gtest/gtest.h>
 
@@ -8,7 +9,8 @@
 #include <numbers>
 
 #include "support/numbers.hpp"
-#include "surface_support.hpp"
+#include "geometry/surface_paths.hpp"
+#include "support/surface_cases.hpp"
 
 using namespace rollspin;
 using namespace rollspin::geometry;
@@ -50,21 +52,6 @@ TEST(ContactValidity, InsideTheTorusTube) {
   const auto path = torusMeridian(torus, 0.0, 0.0, 1.0, true);
   EXPECT_TRUE(checkSingleContact(*path, 1.45).ok);
   EXPECT_FALSE(checkSingleContact(*path, 1.55).ok);
-}
-
-TEST(ContactValidity, OmegaVanishingIsFiniteAndCorrect) {
-  // Inside a cylinder of radius a with R → a: 1 − κ_n R = 1 − R/a → 0 on a
-  // parallel, so ω → τ_g t = 0; nothing divides by it.
-  const double a = 2.0, R = a * (1.0 - 1e-13);
-  auto cyl = std::make_shared<const Cylinder>(a, Vec3(0, 0, 1), Side::Inside);
-  const auto path = cylinderParallel(cyl, 0.0, 1.0, true);
-  ASSERT_TRUE(checkSingleContact(*path, R).ok);
-  for (auto m : {spin::Method::Exact, spin::Method::Magnus4, spin::Method::Frame4}) {
-    const spin::SolveStats st = spin::Propagator(*path, R, m, 400).solveFinal();
-    ASSERT_EQ(st.status, spin::SolveStatus::Ok);
-    // |ω| L = 2πa (1/R − 1/a) ≈ 2π·1e-13: the ball barely turns.
-    EXPECT_LE(spin::rotationAngleAxis(st.final).angle, 1e-11) << spin::methodName(m);
-  }
 }
 
 TEST(CurveErrors, LeavingTheDomainIsReported) {

@@ -1,7 +1,8 @@
 // Geometry of curves on surfaces: κ_n, κ_g, τ_g against closed forms, the
 // identity τ_g² + κ_n² − 2Hκ_n + K = 0 at every sample of every case, the
 // Darboux frame against finite differences of the surface's own point and
-// normal, arc length, and the torsion term's effect on the rolling.
+// normal, and arc length. (The torsion term's effect on the rolling is a
+// solver test: tests/spin/surface_solver_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,9 +11,9 @@
 #include <numbers>
 
 #include "geometry/analytic_paths.hpp"
-#include "kinematics/rolling_kinematics.hpp"
+#include "geometry/surface_paths.hpp"
 #include "support/numbers.hpp"
-#include "surface_support.hpp"
+#include "support/surface_cases.hpp"
 
 using namespace rollspin;
 using namespace rollspin::geometry;
@@ -176,42 +177,6 @@ TEST(ArcLength, InverseMapIsExactToRoundOff) {
       worst = std::max(worst, std::abs(curve->arcLengthAt(curve->parameterAt(s)) - s) / (1.0 + s));
     EXPECT_LE(worst, 1e-13) << c.name;
   }
-}
-
-// The helix is not a line of curvature, so τ_g ≠ 0 enters ω. Dropping it
-// changes the rolling by far more than 1e-3; keeping it matches the kinematics.
-class WithoutTorsion final : public ContactPath {
- public:
-  explicit WithoutTorsion(const ContactPath& p) : p_(p) {}
-  double length() const override { return p_.length(); }
-  DarbouxSample at(double s) const override {
-    DarbouxSample f = p_.at(s);
-    f.geodesicTorsion = 0.0;
-    return f;
-  }
-  Vec3 point(double s) const override { return p_.point(s); }
-  Vec3 normal(double s) const override { return p_.normal(s); }
-  bool hasConstantCurvatures() const override { return p_.hasConstantCurvatures(); }
-  std::string describe() const override { return p_.describe() + " (τ dropped)"; }
-
- private:
-  const ContactPath& p_;
-};
-
-TEST(Torsion, DroppingItOnAHelixChangesTheResult) {
-  auto cyl = std::make_shared<const Cylinder>(2.0, Vec3(0, 0, 1), Side::Outside);
-  const auto helix = cylinderHelix(cyl, 30 * kDeg, 0.0, 1.0, true);
-  const double R = 1.0;
-  const Eigen::Matrix3d truth = kinematics::RollingKinematics(*helix, R, {40000, 0.0}).finalOrientation();
-  const spin::Su2 with = spin::Propagator(*helix, R, spin::Method::Magnus4, 8000).solveFinal().final;
-  const WithoutTorsion dropped(*helix);
-  const spin::Su2 without = spin::Propagator(dropped, R, spin::Method::Magnus4, 8000).solveFinal().final;
-  const double gapWith = rotationGap(with, truth), gapWithout = rotationGap(without, truth);
-  EXPECT_LE(gapWith, 1e-10);
-  EXPECT_GT(gapWithout, 1e-3);
-  if (std::getenv("ROLLSPIN_VERBOSE")) std::printf("helix: with τ_g %.2e, without %.3e rad\n", gapWith, gapWithout);
-  RecordProperty("gap_with_torsion", std::to_string(gapWith));
-  RecordProperty("gap_without_torsion", std::to_string(gapWithout));
 }
 
 }  // namespace

@@ -13,7 +13,7 @@
 #include "media/image_io.hpp"
 #include "media/sink_factory.hpp"
 #include "media/video_probe.hpp"
-#include "support/cli_runner.hpp"
+#include "support/test_files.hpp"
 
 namespace rollspin {
 namespace {

@@ -9,7 +9,7 @@
 #include "core/error.hpp"
 #include "media/image_compare.hpp"
 #include "media/image_io.hpp"
-#include "support/cli_runner.hpp"
+#include "support/test_files.hpp"
 
 namespace rollspin::media {
 namespace {

@@ -15,7 +15,7 @@
 
 #include "core/error.hpp"
 #include "media/video_probe.hpp"
-#include "support/cli_runner.hpp"
+#include "support/test_files.hpp"
 
 namespace rollspin {
 namespace {

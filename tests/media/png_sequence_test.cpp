@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "media/png_sequence.hpp"
-#include "support/cli_runner.hpp"
+#include "support/test_files.hpp"
 
 namespace rollspin::media {
 namespace {

@@ -9,8 +9,9 @@
 #include <cmath>
 
 #include "motion/frame_poses.hpp"
-#include "app/render_jobs.hpp"
-#include "support/cli_runner.hpp"
+#include "model/rolling_model.hpp"
+#include "motion/frame_sampling.hpp"
+#include "support/test_files.hpp"
 
 namespace rollspin::motion {
 namespace {

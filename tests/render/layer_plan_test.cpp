@@ -11,25 +11,14 @@
 #include <vector>
 
 #include "render/layer_plan.hpp"
+#include "two_views.hpp"
 
 namespace rollspin::render {
 namespace {
 
-// Two views side by side, 320×160 each, looking down at z = 0.
+// Two views side by side (two_views.hpp) and one short static line.
 DrawList twoViews() {
-  DrawList list;
-  list.width = 640;
-  list.height = 160;
-  for (int i = 0; i < 2; ++i) {
-    View v;
-    v.x = 320 * i;
-    v.width = 320;
-    v.height = 160;
-    v.camera.position = {0, 0, 5};
-    v.camera.viewFromWorld = glm::lookAt(v.camera.position, glm::vec3(0), glm::vec3(0, 1, 0));
-    v.camera.clipFromView = glm::ortho(-4.0f, 4.0f, -2.0f, 2.0f, 0.1f, 20.0f);
-    list.views.push_back(v);
-  }
+  DrawList list = test::twoViewsLookingDown();
   PolylineItem line;
   line.points = {{-3.5f, -1.5f, 0}, {-3.0f, -1.5f, 0}};
   list.polylines.push_back(line);

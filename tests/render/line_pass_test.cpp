@@ -16,7 +16,7 @@
 #include "render/layer_key.hpp"
 #include "render/screen_bounds.hpp"
 #include "renderer_fixture.hpp"
-#include "support/cli_runner.hpp"
+#include "support/test_files.hpp"
 
 namespace rollspin::render {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 #include "render/shader_library.hpp"
-#include "support/cli_runner.hpp"
+#include "support/test_files.hpp"
 
 namespace rollspin::render {
 namespace {

@@ -20,13 +20,6 @@ extern char** environ;
 
 namespace rollspin::test {
 
-std::string readFile(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 void expectBadScene(const BadScene& c) {
   const auto dir = freshTempDir("bad_scene");
   const auto scene = dir / "scene.toml";
@@ -43,19 +36,7 @@ void expectBadScene(const BadScene& c) {
   std::filesystem::remove_all(dir);
 }
 
-std::filesystem::path sourceDir() { return ROLLSPIN_SOURCE_DIR; }
-std::string shippedScenePath(const std::string& name) { return (sourceDir() / "scenes" / (name + ".toml")).string(); }
-std::string renderTestScenePath(const std::string& name) {
-  return (sourceDir() / "tests/render/scenes" / (name + ".toml")).string();
-}
 std::filesystem::path binaryPath() { return ROLLSPIN_BINARY; }
-
-std::filesystem::path freshTempDir(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(ROLLSPIN_TEST_TMP) / (name + "." + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 CliResult runRollspin(const std::vector<std::string>& args, const std::filesystem::path& cwd,
                       std::uint64_t addressSpaceLimit, const std::vector<std::string>& environment) {

@@ -1,11 +1,14 @@
 // Runs the built rollspin binary as a subprocess (no shell), capturing exit
-// code, stdout and stderr: the CLI is tested the way a user meets it.
+// code, stdout and stderr: the CLI is tested the way a user meets it. The
+// file helpers (support/test_files.hpp) come with it.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include "support/test_files.hpp"
 
 namespace rollspin::test {
 
@@ -46,17 +49,6 @@ class SpawnedRollspin {
   bool reaped_ = false;
   int status_ = 0;
 };
-
-// A fresh empty directory under the build tree for one test.
-std::filesystem::path freshTempDir(const std::string& name);
-
-std::filesystem::path sourceDir();
-// A scene shipped in scenes/ by name ("lollipop"), as a path string for a command line.
-std::string shippedScenePath(const std::string& name);
-// A scene of the renderer's tests (tests/render/scenes) by name ("twin_only").
-std::string renderTestScenePath(const std::string& name);
-// A file's bytes ("" when it cannot be read).
-std::string readFile(const std::filesystem::path& p);
 
 // A malformed scene file: `timeline` on it must exit 2, name `key`, the
 // file followed by `where` (":line:col:" or ":line:") and `hint`, and leave

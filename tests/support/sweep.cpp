@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "support/cli_runner.hpp"
+#include "support/test_files.hpp"
 
 namespace rollspin::test {
 

@@ -1,5 +1,6 @@
-// Shared by the geometry suites: a table of surface × curve cases, the
-// spinor-versus-kinematics comparison and the rolling-constraint residuals.
+// Shared by the spin suites on curved surfaces: the spinor-versus-kinematics
+// comparison and the rolling-constraint residuals (the surface × curve cases
+// are support/surface_cases.hpp).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -16,17 +17,9 @@
 #include "kinematics/rolling_kinematics.hpp"
 #include "spin/propagator.hpp"
 #include "spin/su2.hpp"
+#include "support/surface_cases.hpp"
 
 namespace rollspin::test {
-
-struct SurfaceCase {
-  std::string name;
-  std::function<std::unique_ptr<geometry::ContactPath>()> make;
-  double R;
-};
-
-// Every surface × curve kind, at sizes where the ball touches at one point.
-std::vector<SurfaceCase> allSurfaceCases();
 
 // The oracle's finite-difference spacing for dC/ds. Its automatic choice,
 // 1e-2 min(R, segment/8), ignores the path's own curvature: on a curve with

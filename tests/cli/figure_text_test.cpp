@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "pdf_text_boxes.hpp"
+#include "support/pdf_text_boxes.hpp"
 #include "support/cli_runner.hpp"
 #include "support/sweep.hpp"
 

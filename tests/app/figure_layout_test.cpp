@@ -22,7 +22,7 @@
 #include "app/figure_job.hpp"
 #include "app/job_setup.hpp"
 #include "app/render_jobs.hpp"
-#include "pdf_text_boxes.hpp"
+#include "support/pdf_text_boxes.hpp"
 #include "render/vector_figure.hpp"
 #include "support/cli_runner.hpp"
 #include "support/sweep.hpp"

@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <string>
 
-#include "app/render_jobs.hpp"
+#include "model/rolling_model.hpp"
 #include "render/font_atlas.hpp"
-#include "support/cli_runner.hpp"
+#include "support/test_files.hpp"
 
 namespace rollspin {
 namespace {

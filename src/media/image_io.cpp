@@ -2,8 +2,10 @@
 
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
+#include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <fstream>
 #include <limits>
@@ -61,20 +63,28 @@ void writeJpeg(const std::filesystem::path& file, const ImageView& image, int qu
 namespace {
 
 // Debian 12's stb_image (2.27) writes past its 257-entry size list when a
-// JPEG's Huffman table (DHT) counts more than 256 codes (found by
-// fuzz_image; upstream checks since 2.28). Such a table is refused here
-// first: the markers are walked as stb_image walks them (each segment by its
-// length, entropy-coded data up to the next 0xFF that is not stuffing or a
-// restart), and each DHT table's 16 counts are added up.
-bool jpegHuffmanTablesFit(std::string_view bytes) {
+// JPEG's Huffman table (DHT) counts more than 256 codes (upstream checks
+// since 2.28), and decodes a scan with a table that no DHT defined: its
+// tables live in a malloc'ed struct, so it then reads symbol ids from
+// uninitialised memory, millions of entries outside the list (both found by
+// fuzz_image). Such files are refused here first: the markers are walked as
+// stb_image walks them (each segment by its length, entropy-coded data up to
+// the next 0xFF that is not stuffing or a restart), each DHT table's 16
+// counts are added up, and each scan's tables must have been defined (a
+// baseline scan uses its DC and AC tables; a progressive one its DC table
+// in a first DC scan, its AC table in an AC scan). The reason, or nothing
+// when every table fits (or it is not a JPEG).
+std::string jpegHuffmanTableFault(std::string_view bytes) {
   const auto at = [&](std::size_t k) -> unsigned { return k < bytes.size() ? static_cast<unsigned char>(bytes[k]) : 0U; };
   // stb_image skips fill bytes (0xFF) before every marker, SOI included:
   // "FF FF D8" is a JPEG to it (found by fuzz_image), so it is one here.
-  if (at(0) != 0xFF) return true;  // not a JPEG
+  if (at(0) != 0xFF) return {};  // not a JPEG
   std::size_t start = 1;
   while (start < bytes.size() && at(start) == 0xFF) ++start;
-  if (at(start) != 0xD8) return true;  // not a JPEG
+  if (at(start) != 0xD8) return {};  // not a JPEG
   std::size_t pos = start + 1;
+  unsigned definedDc = 0, definedAc = 0;  // bit k: table k defined
+  bool progressive = false;
   while (pos + 1 < bytes.size()) {
     const unsigned marker = at(pos + 1);
     if (at(pos) != 0xFF || marker == 0xFF) {  // entropy-coded data, or a fill byte
@@ -87,6 +97,17 @@ bool jpegHuffmanTablesFit(std::string_view bytes) {
     }
     if (marker == 0xD9) break;  // EOI
     const std::size_t length = (at(pos + 2) << 8) | at(pos + 3);
+    if (marker == 0xC2) progressive = true;  // SOF2
+    if (marker == 0xDA) {  // SOS: Ns, then (Cs, Td << 4 | Ta) per component, Ss, Se, Ah << 4 | Al
+      const std::size_t components = at(pos + 4);
+      const unsigned ss = at(pos + 5 + 2 * components), ah = at(pos + 7 + 2 * components) >> 4;
+      const bool usesDc = !progressive || (ss == 0 && ah == 0), usesAc = !progressive || ss > 0;
+      for (std::size_t c = 0; c < components; ++c) {
+        const unsigned tables = at(pos + 6 + 2 * c), dc = tables >> 4, ac = tables & 15;
+        if ((usesDc && dc < 4 && !(definedDc & (1u << dc))) || (usesAc && ac < 4 && !(definedAc & (1u << ac))))
+          return "a scan that uses a Huffman table no DHT segment defined";
+      }
+    }
     if (marker == 0xC4) {
       // stb_image reads tables while the segment has bytes left (zeros past the end).
       long left = static_cast<long>(length) - 2;
@@ -94,14 +115,43 @@ bool jpegHuffmanTablesFit(std::string_view bytes) {
       while (left > 0 && q < bytes.size()) {
         unsigned codes = 0;
         for (std::size_t i = 0; i < 16; ++i) codes += at(q + 1 + i);
-        if (codes > 256) return false;
+        if (codes > 256) return "a Huffman table of more than 256 codes";
+        const unsigned tableClass = at(q) >> 4, index = at(q) & 15;
+        if (index < 4) (tableClass == 0 ? definedDc : definedAc) |= 1u << index;
         q += 17 + codes;
         left -= static_cast<long>(17 + codes);
       }
     }
     pos += 2 + std::max<std::size_t>(length, 2);
   }
-  return true;
+  return {};
+}
+
+// stb_image (2.27) collects a PNG's IDAT chunks in a buffer that it grows
+// to each chunk's claimed length, up to 1 GiB, before reading the data: a
+// file of a few hundred bytes could make it allocate 2 GiB (found by
+// fuzz_image). A chunk whose data runs past the end of the file is refused
+// here first; a valid PNG never has one. The name of the first such chunk,
+// its claim and what is left, or nothing when every chunk fits (or it is not
+// a PNG).
+std::string pngChunkPastTheEnd(std::string_view bytes) {
+  constexpr std::string_view kSignature("\x89PNG\r\n\x1a\n", 8);
+  if (bytes.substr(0, 8) != kSignature) return {};
+  std::size_t pos = 8;
+  while (pos + 8 <= bytes.size()) {
+    std::uint64_t length = 0;
+    for (std::size_t i = 0; i < 4; ++i) length = (length << 8) | static_cast<unsigned char>(bytes[pos + i]);
+    const std::string_view type = bytes.substr(pos + 4, 4);
+    const std::size_t left = bytes.size() - (pos + 8);
+    if (length > left) {
+      std::string printable;
+      for (const char c : type) printable += (c >= 0x20 && c < 0x7f) ? c : '?';
+      return fmt::format("its '{}' chunk claims {} bytes, {} are left", printable, length, left);
+    }
+    if (type == "IEND") break;
+    pos += 8 + static_cast<std::size_t>(length) + 4;  // the data and its CRC
+  }
+  return {};
 }
 
 }  // namespace
@@ -115,20 +165,22 @@ Image loadImage(const std::filesystem::path& file, const SourceLoc& where) {
   return decodeImage(bytes, file.string(), where);
 }
 
-Image decodeImage(std::string_view bytes, const std::string& name, const SourceLoc& where) {
+Image decodeImage(std::string_view bytes, const std::string& name, const SourceLoc& where, std::int64_t maxPixels) {
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     throw badInput(where, "'{}' is larger than the 2 GiB an image file may have", name);
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int size = static_cast<int>(bytes.size());
   // Before any stb_image call: reading the header builds the tables too.
-  if (!jpegHuffmanTablesFit(bytes))
-    throw badInput(where, "'{}' is not a readable PNG or JPG image (a Huffman table of more than 256 codes)", name);
+  if (const std::string fault = jpegHuffmanTableFault(bytes); !fault.empty())
+    throw badInput(where, "'{}' is not a readable PNG or JPG image ({})", name, fault);
+  if (const std::string past = pngChunkPastTheEnd(bytes); !past.empty())
+    throw badInput(where, "'{}' is not a readable PNG or JPG image ({})", name, past);
   int w = 0, h = 0, comp = 0;
   // The header first: a few bytes may claim an image of gigabytes, which
   // would be allocated before the data is found missing.
   if (stbi_info_from_memory(data, size, &w, &h, &comp) != 0 &&
-      static_cast<std::int64_t>(w) * h > kMaxImagePixels)
-    throw badInput(where, "'{}' claims {}x{} pixels, more than the {} an image may have", name, w, h, kMaxImagePixels);
+      static_cast<std::int64_t>(w) * h > maxPixels)
+    throw badInput(where, "'{}' claims {}x{} pixels, more than the {} an image may have", name, w, h, maxPixels);
   stbi_uc* pixels = stbi_load_from_memory(data, size, &w, &h, &comp, 4);
   if (pixels == nullptr)
     throw badInput(where, "'{}' is not a readable PNG or JPG image ({})", name, stbi_failure_reason());

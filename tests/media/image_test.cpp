@@ -1,6 +1,9 @@
 // media/: PNG round trips, row order, comparison metrics and the heat map.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <iterator>
+
 #include <algorithm>
 #include <cmath>
 
@@ -88,6 +91,87 @@ TEST(ImageIo, JpegWithAnOversizedHuffmanTableIsBadInput) {
           << seed << ": " << e.what();
     }
   }
+}
+
+// Found by CI's fuzz_image run: a 12x8 PNG whose first IDAT chunk is empty
+// made stb_image (2.27) call memcpy with a null buffer and a length of 0
+// (undefined, harmless; its implementation file is built without that one
+// check, src/media/CMakeLists.txt). What follows the empty chunk is not a
+// chunk stb_image knows: the file is bad input, refused with its name.
+TEST(ImageIo, PngWithAnEmptyFirstIdatChunkIsBadInput) {
+  const auto path = test::sourceDir() / "tests/fuzz/seeds/image/crash-empty-idat.png";
+  try {
+    (void)loadImage(path, SourceLoc{"ball.texture"});
+    ADD_FAILURE() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.exitCode(), 2);
+    EXPECT_NE(std::string(e.what()).find("crash-empty-idat.png"), std::string::npos) << e.what();
+  }
+}
+
+// Found by CI's fuzz_image run: a 200-byte PNG whose second IDAT chunk
+// claims more bytes than the file has made stb_image (2.27) grow its data
+// buffer to 2 GiB before reading. Refused first, naming the chunk; a PNG
+// whose chunks all fit still loads (the seeds' own PNGs).
+TEST(ImageIo, PngChunkLongerThanTheFileIsBadInput) {
+  const auto path = test::sourceDir() / "tests/fuzz/seeds/image/oom-idat-longer-than-file.png";
+  try {
+    (void)loadImage(path, SourceLoc{"ball.texture"});
+    ADD_FAILURE() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.exitCode(), 2);
+    EXPECT_NE(std::string(e.what()).find("chunk claims"), std::string::npos) << e.what();
+  }
+  for (const char* seed : {"rgba.png", "pal8.png", "rgb48be.png"}) {
+    const Image img = loadImage(test::sourceDir() / "tests/fuzz/seeds/image" / seed, SourceLoc{"ball.texture"});
+    EXPECT_GT(img.width, 0) << seed;
+  }
+}
+
+// Found by fuzz_image: a JPEG whose scan uses an AC table that no DHT
+// segment defined made stb_image (2.27) decode with uninitialised tables and
+// read a symbol id of -16711698 far outside its list. Refused first; the
+// JPEG files ffmpeg and rollspin itself write still load.
+TEST(ImageIo, JpegScanWithAnUndefinedHuffmanTableIsBadInput) {
+  const auto seeds = test::sourceDir() / "tests/fuzz/seeds/image";
+  try {
+    (void)loadImage(seeds / "crash-scan-undefined-huffman-table.jpg", SourceLoc{"ball.texture"});
+    ADD_FAILURE() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.exitCode(), 2);
+    EXPECT_NE(std::string(e.what()).find("a Huffman table no DHT segment defined"), std::string::npos) << e.what();
+  }
+  for (const char* seed : {"gray.jpg", "yuv420.jpg", "yuv444.jpg"})
+    EXPECT_GT(loadImage(seeds / seed, SourceLoc{"ball.texture"}).width, 0) << seed;
+  const auto dir = test::freshTempDir("media_jpeg_guard");
+  Image img(33, 17);
+  for (std::size_t k = 0; k < img.rgba.size(); ++k) img.rgba[k] = static_cast<std::uint8_t>(k * 7);
+  writeJpeg(dir / "own.jpg", img.view(), 90);
+  EXPECT_EQ(loadImage(dir / "own.jpg", {}).width, 33);
+}
+
+// Every input the image fuzzer keeps (tests/fuzz/seeds/image: the kinds
+// stb_image reads and every file that once crashed it) loads or is bad
+// input, here too: under scripts/sanitize.sh this runs with ASan and UBSan.
+// At the fuzzer's 2048 x 2048 limit, as fuzz_image decodes them (a seed
+// claims 16384 x 16384, which a texture may have, and is 1 GiB to decode).
+TEST(ImageIo, EveryFuzzSeedLoadsOrIsBadInput) {
+  int loaded = 0, refused = 0;
+  for (const auto& e : std::filesystem::directory_iterator(test::sourceDir() / "tests/fuzz/seeds/image")) {
+    std::ifstream in(e.path(), std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    try {
+      const Image img = decodeImage(bytes, e.path().filename().string(), SourceLoc{"ball.texture"},
+                                    std::int64_t{2048} * 2048);
+      EXPECT_GT(img.width, 0) << e.path().filename();
+      ++loaded;
+    } catch (const Error& err) {
+      EXPECT_EQ(err.exitCode(), 2) << e.path().filename() << ": " << err.what();
+      ++refused;
+    }
+  }
+  EXPECT_GE(loaded, 11);
+  EXPECT_GE(refused, 6);
 }
 
 // A header may claim far more pixels than the file holds: refused before

@@ -1,12 +1,9 @@
 // media/: PNG round trips, row order, comparison metrics and the heat map.
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <iterator>
-
 #include <algorithm>
 #include <cmath>
-
+#include <filesystem>
 #include <fstream>
 
 #include "core/error.hpp"
@@ -158,8 +155,7 @@ TEST(ImageIo, JpegScanWithAnUndefinedHuffmanTableIsBadInput) {
 TEST(ImageIo, EveryFuzzSeedLoadsOrIsBadInput) {
   int loaded = 0, refused = 0;
   for (const auto& e : std::filesystem::directory_iterator(test::sourceDir() / "tests/fuzz/seeds/image")) {
-    std::ifstream in(e.path(), std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string bytes = test::readFile(e.path());
     try {
       const Image img = decodeImage(bytes, e.path().filename().string(), SourceLoc{"ball.texture"},
                                     std::int64_t{2048} * 2048);

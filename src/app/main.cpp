@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "app/address_space.hpp"
 #include "app/cli_messages.hpp"
 #include "app/commands.hpp"
 #include "app/huge_pages.hpp"
@@ -85,6 +86,8 @@ int main(int argc, char** argv) {
                  "(GLIBC_TUNABLES=glibc.malloc.hugetlb=0 keeps small pages)\n",
                  tunables != nullptr ? tunables : "");
   rollspin::StageLog::instance().setEcho(verbose);
+  // Under ulimit -v: need less address space (see app/address_space.hpp).
+  rollspin::app::fitToAddressSpaceLimit(verbose);
   // Ctrl-C or SIGTERM: remove unfinished outputs, say so, exit 128 + signal.
   rollspin::installInterruptCleanup();
   // A crash (glibc's heap checks included) says where, with a backtrace.

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/address_space.hpp"
 #include "app/figure_job.hpp"
 #include "app/flag_overrides.hpp"
 #include "app/job_setup.hpp"
@@ -86,13 +87,17 @@ std::uint64_t rendererBytes(std::uint64_t pixels, int msaa) {
 void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerPixel) {
   // Refused before a context is created when it cannot fit.
   const std::uint64_t pixels = static_cast<std::uint64_t>(spec.render.width) * spec.render.height;
-  const std::uint64_t needed = rendererBytes(pixels, spec.render.msaa) + pixels * extraBytesPerPixel;
+  std::uint64_t needed = rendererBytes(pixels, spec.render.msaa) + pixels * extraBytesPerPixel;
+  // Under ulimit -v the driver's own reservations count too.
+  if (addressSpaceLimitBytes()) needed += glDriverAddressSpaceBytes();
   const auto available = availableMemoryBytes();
   if (available && needed > *available) {
     const std::string key = spec.locations.contains("render.height") ? "render.height" : "render.width";
-    throw badInput(spec.where(key), "{}x{} with {}x MSAA needs about {} MiB for its frame buffers, but only {} MiB "
-                                    "are available (out of memory)",
-                   spec.render.width, spec.render.height, spec.render.msaa, needed >> 20, *available >> 20);
+    throw badInput(spec.where(key), "{}x{} with {}x MSAA needs about {} MiB for its frame buffers{}, but "
+                                    "only {} MiB are available (out of memory)",
+                   spec.render.width, spec.render.height, spec.render.msaa, needed >> 20,
+                   addressSpaceLimitBytes() ? " and, under ulimit -v, the GL driver's own address space" : "",
+                   *available >> 20);
   }
 }
 

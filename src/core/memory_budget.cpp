@@ -1,12 +1,26 @@
 #include "core/memory_budget.hpp"
 
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <fstream>
 #include <string>
 
 namespace rollspin {
+
+std::optional<std::uint64_t> addressSpaceLimitBytes() {
+  rlimit limit{};
+  if (getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return std::nullopt;
+  return static_cast<std::uint64_t>(limit.rlim_cur);
+}
+
+std::optional<std::uint64_t> mappedBytes() {
+  std::ifstream statm("/proc/self/statm");
+  std::uint64_t pages = 0;
+  if (!(statm >> pages)) return std::nullopt;
+  return pages * static_cast<std::uint64_t>(sysconf(_SC_PAGESIZE));
+}
 
 std::optional<std::uint64_t> availableMemoryBytes() {
   std::optional<std::uint64_t> available;
@@ -20,10 +34,12 @@ std::optional<std::uint64_t> availableMemoryBytes() {
       break;
     }
   }
-  rlimit limit{};
-  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
-    const auto cap = static_cast<std::uint64_t>(limit.rlim_cur);
-    available = available ? std::min(*available, cap) : cap;
+  // Under ulimit -v what counts is address space, and part of it is mapped
+  // already (the binary, its libraries, the GL driver once loaded).
+  if (const auto limit = addressSpaceLimitBytes()) {
+    const std::uint64_t mapped = mappedBytes().value_or(0);
+    const std::uint64_t left = *limit > mapped ? *limit - mapped : 0;
+    available = available ? std::min(*available, left) : left;
   }
   return available;
 }

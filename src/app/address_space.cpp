@@ -1,0 +1,58 @@
+#include "app/address_space.hpp"
+
+#include <malloc.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <thread>
+
+#include "core/memory_budget.hpp"
+
+namespace rollspin::app {
+
+namespace {
+constexpr std::uint64_t kMiB = 1ULL << 20;
+constexpr std::uint64_t kBytesPerLlvmpipeThread = 32 * kMiB;
+}  // namespace
+
+AddressSpacePlan planForAddressSpace(std::optional<std::uint64_t> limitBytes, unsigned cores, bool userChoseThreads) {
+  AddressSpacePlan plan;
+  if (!limitBytes) return plan;
+  plan.oneArena = true;
+  const unsigned usable = std::clamp(cores, 1U, 32U);
+  const auto fit = static_cast<unsigned>(std::clamp<std::uint64_t>(*limitBytes / 4 / kBytesPerLlvmpipeThread, 1, 32));
+  if (!userChoseThreads && fit < usable) plan.llvmpipeThreads = static_cast<int>(fit);
+  return plan;
+}
+
+void fitToAddressSpaceLimit(bool verbose) {
+  const auto limit = addressSpaceLimitBytes();
+  const AddressSpacePlan plan =
+      planForAddressSpace(limit, std::thread::hardware_concurrency(), std::getenv("LP_NUM_THREADS") != nullptr);
+  if (plan.oneArena) mallopt(M_ARENA_MAX, 1);
+  if (plan.llvmpipeThreads) setenv("LP_NUM_THREADS", std::to_string(*plan.llvmpipeThreads).c_str(), 1);
+  if (verbose && limit)
+    std::fprintf(stderr,
+                 "rollspin: memory: address space limited to %llu MiB (ulimit -v): one malloc arena%s\n",
+                 static_cast<unsigned long long>(*limit / kMiB),
+                 plan.llvmpipeThreads
+                     ? (", llvmpipe threads " + std::to_string(*plan.llvmpipeThreads) + " (LP_NUM_THREADS)").c_str()
+                     : "");
+}
+
+std::uint64_t glDriverAddressSpaceBytes() {
+  // Measured with one arena: a 320x180 still peaks at 275 MB of address
+  // space plus 17 MB a llvmpipe thread, of which the process had mapped
+  // about 20 MB before the driver was loaded, and the frame buffers
+  // (rendererBytes) count about 100 MB; the rest is the driver's own: its
+  // code, its compiler's heaps, its threads. Rounded up, so that a render
+  // the check lets through does not run out inside the driver.
+  const char* threads = std::getenv("LP_NUM_THREADS");
+  const std::uint64_t count = threads != nullptr ? std::uint64_t(std::clamp(std::strtol(threads, nullptr, 10), 1L, 32L))
+                                                : std::clamp(std::thread::hardware_concurrency(), 1U, 32U);
+  return 180 * kMiB + count * 20 * kMiB;
+}
+
+}  // namespace rollspin::app

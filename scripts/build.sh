@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
-# Configure and build Release into build/ (2 parallel jobs: the reference
-# machine has 2 cores).
+# Configure and build Release into build/ (one job a core, memory allowing:
+# scripts/jobs.sh; 2 on the reference machine).
 #   bash scripts/build.sh            # everything: rollspin, tests, benchmarks
 #   bash scripts/build.sh rollspin   # only these targets (the quick start)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/compiler_cache.sh
+source scripts/jobs.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${cache_flags[@]}"
 if [ $# -gt 0 ]; then
-  cmake --build build -j2 --target "$@"
+  cmake --build build -j"$jobs" --target "$@"
 else
-  cmake --build build -j2
+  cmake --build build -j"$jobs"
 fi

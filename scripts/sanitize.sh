@@ -4,13 +4,14 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/compiler_cache.sh
+source scripts/jobs.sh
 # src/ optimised as a release is (-O2: the suite's numerics stay fast; the
 # test programs at -O1, see tests/CMakeLists.txt), with the asserts on: this
 # pass is where the broken-invariant checks run, as a release build compiles
 # them out (NDEBUG).
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2" \
   -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2" -DROLLSPIN_SANITIZE=ON -DROLLSPIN_BUILD_BENCHMARKS=OFF "${cache_flags[@]}" >/dev/null
-cmake --build build-asan -j2
+cmake --build build-asan -j"$jobs"
 # Mesa's llvmpipe keeps some allocations for the life of the process (its
 # LLVM JIT and screen caches): suppress leaks from inside the GL stack only.
 export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0"
@@ -52,4 +53,4 @@ cd build-asan
 # The Slurm cluster test checks the recipe, not memory (its daemons are
 # Debian's, not ours), and the docs site has no code: both ran in the
 # Release pass. Everything else, the fault matrix included, runs again here.
-ctest --output-on-failure -j2 -LE 'cluster|docs'
+ctest --output-on-failure -j"$jobs" -LE 'cluster|docs'

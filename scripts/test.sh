@@ -6,12 +6,13 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
+source scripts/jobs.sh
 cd build
 # A failed pass is run again, failed tests only, so that their output is the
 # last thing printed (CI keeps only the tail of a log), and so that the log
 # tells a flaky test (passes the second time) from a broken one.
 pass() {
-  "$@" --output-on-failure -j2 && return 0
+  "$@" --output-on-failure -j"$jobs" && return 0
   echo "test.sh: some tests failed; running those again for their output:" >&2
   "$@" --rerun-failed --output-on-failure -j1 || true
   return 1

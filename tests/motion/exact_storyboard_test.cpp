@@ -19,6 +19,7 @@
 #include "scene/scene_loader.hpp"
 #include "spin/propagator.hpp"
 #include "spin/su2.hpp"
+#include "support/sweep.hpp"
 
 using namespace rollspin;
 
@@ -48,7 +49,7 @@ double exactAgainstOracle(const std::string& toml, const std::string& name) {
 TEST(ExactStoryboard, AgreesWithTheKinematicsOnEverySurfaceWithConstantCurvatures) {
   std::mt19937 rng(4301);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  for (int c = 0; c < 3; ++c) {
+  for (const std::size_t c : test::sweepIndices(3)) {
     const double R = 0.3 + 0.7 * unit(rng);
     // Sphere (outside, then inside): a parallel, a great-circle geodesic from
     // its end, another geodesic; then a parallel and a meridian from its end.

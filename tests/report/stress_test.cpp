@@ -17,6 +17,7 @@
 #include "report/report_support.hpp"
 #include "report/stress_cases.hpp"
 #include "spin/field.hpp"
+#include "support/sweep.hpp"
 
 using namespace rollspin;
 using spin::Method;
@@ -91,7 +92,7 @@ TEST(Clothoid, LandauZenerProbabilityApproachesTheAsymptoteLikeOneOverS) {
 // and frame6a at its tolerance everywhere, exact where the curvatures are
 // constant, magnus4 on the case's grid where it is not stiff.
 TEST(Stress, ErrorEstimateIsConservativeAndNotWildlyPessimistic) {
-  for (const report::StressCase& c : report::stressCases()) {
+  for (const report::StressCase& c : test::sweep(report::stressCases())) {
     const spin::Su2 ref = reference(c);
     std::vector<std::pair<Method, bool>> runs{{Method::Frame4, false}, {Method::Frame6a, true}};
     if (c.path->hasConstantCurvatures() && c.path->pieces().empty()) runs.push_back({Method::Exact, false});

@@ -5,10 +5,13 @@
 # Every case ends in pass NAME, fail NAME WHY or skip NAME WHY; finish prints
 # "N passed, N failed, N skipped" and exits 1 on any failure.
 
-passed=0 failed=0 skipped=0
-pass() { passed=$((passed + 1)); echo "ok      $1"; }
-fail() { failed=$((failed + 1)); echo "FAILED  $1: $2"; }
-skip() { skipped=$((skipped + 1)); echo "skipped: $1: $2"; }
+# Each result line ends with the seconds since the previous one, so that a
+# slow case shows in the log (the sanitizer pass times them all).
+passed=0 failed=0 skipped=0 case_start=$SECONDS took=
+case_took() { took="$((SECONDS - case_start)) s" case_start=$SECONDS; }
+pass() { passed=$((passed + 1)); case_took; echo "ok      $1 ($took)"; }
+fail() { failed=$((failed + 1)); case_took; echo "FAILED  $1: $2 ($took)"; }
+skip() { skipped=$((skipped + 1)); case_took; echo "skipped: $1: $2 ($took)"; }
 finish() {
   echo "$passed passed, $failed failed, $skipped skipped"
   [ "$failed" -eq 0 ]

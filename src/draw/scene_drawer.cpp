@@ -18,7 +18,7 @@ const glm::vec4 kCaptionColor{0.55f, 0.12f, 0.02f, 1.0f};
 
 // A segment's caption: the lecturer's own text, so it shows even with
 // render.labels = false; top centre, else bottom centre.
-TextBlock captionBlock(const std::string& caption, float text, float viewWidth) {
+TextBlock captionBlock(const std::string& caption, float text, float leastPx, float viewWidth) {
   TextBlock block;
   block.slots = {Slot::TopCentre, Slot::BottomCentre};
   block.centred = true;
@@ -27,7 +27,7 @@ TextBlock captionBlock(const std::string& caption, float text, float viewWidth) 
   // stay on one, else the body size broken onto more (ballBlocks).
   const float preferred = text * 1.2f, room = 0.94f * viewWidth - 2.0f * kBlockPad * preferred;
   const float width = textWidthPx(caption, preferred, true);
-  const float size = width <= room ? preferred : std::max(text, preferred * room / width);
+  const float size = width <= room ? preferred : std::max({text, leastPx, preferred * room / width});
   block.lines.push_back({caption, size, true, kCaptionColor, false});  // changes only between storyboard steps
   return block;
 }
@@ -103,7 +103,7 @@ float SceneDrawer::text() const { return bodyTextPx(int(spec_.render.width), int
 
 std::vector<TextBlock> SceneDrawer::ballBlocks(const FrameOrientations& frame, float viewWidth) const {
   std::vector<TextBlock> blocks = ball_->textBlocks(frame, text());
-  blocks.push_back(captionBlock(captionAt(frame.story), text(), viewWidth));
+  blocks.push_back(captionBlock(captionAt(frame.story), text(), leastText(), viewWidth));
   for (TextBlock& b : blocks) {
     wrapToWidth(b, 0.94f * viewWidth, leastText());
     b.bandOnly = compactText(int(spec_.render.width), int(spec_.render.height));  // a column leaves no subject
@@ -114,7 +114,7 @@ std::vector<TextBlock> SceneDrawer::ballBlocks(const FrameOrientations& frame, f
 std::vector<TextBlock> SceneDrawer::twinBlocks(const FrameOrientations& frame, float viewWidth, bool inset) const {
   std::vector<TextBlock> blocks = twin_->textBlocks(inset, text(), 0.94f * viewWidth);
   if (spec_.render.layout == scene::RenderLayout::Twin)
-    blocks.push_back(captionBlock(captionAt(frame.story), text(), viewWidth));
+    blocks.push_back(captionBlock(captionAt(frame.story), text(), leastText(), viewWidth));
   for (TextBlock& b : blocks) {
     wrapToWidth(b, 0.94f * viewWidth, leastText());
     b.bandOnly = compactText(int(spec_.render.width), int(spec_.render.height));

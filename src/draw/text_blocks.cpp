@@ -9,12 +9,12 @@
 namespace rollspin::draw {
 
 TitleLines titleLines(const std::string& title, float text, float width, float leastPx) {
-  const float room = 0.94f * width, preferred = text * 1.35f;
+  const float room = 0.94f * width, preferred = text * 1.35f, least = std::max(text, leastPx);
   const float atPreferred = textWidthPx(title, preferred, true);
   if (atPreferred <= room) return {preferred, {title}};
   // Down to the body size on one line before it breaks.
-  if (atPreferred * text / preferred <= room) return {preferred * room / atPreferred, {title}};
-  TitleLines out{text, wrapText(title, text, true, room, true)};
+  if (atPreferred * least / preferred <= room) return {preferred * room / atPreferred, {title}};
+  TitleLines out{least, wrapText(title, least, true, room, true)};
   for (const std::string& line : out.lines) {
     const float w = textWidthPx(line, out.sizePx, true);
     if (w > room) out.sizePx = std::max(std::min(out.sizePx, leastPx), out.sizePx * room / w);

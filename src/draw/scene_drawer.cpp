@@ -48,7 +48,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
   // The band is as tall as the longest title of the clip needs.
   auto countLines = [&](const std::string& title) {
     if (title.empty()) return;
-    titleLines_ = std::max(titleLines_, draw::titleLines(title, text(), float(spec.render.width), leastText()).lines.size());
+    titleLines_ = std::max(titleLines_, draw::titleLines(title, text(), float(spec.render.width), float(spec.render.height), leastText()).lines.size());
   };
   countLines(spec.render.title);
   for (const scene::SegmentSpec& seg : spec.segments)

@@ -8,13 +8,19 @@
 
 namespace rollspin::draw {
 
-TitleLines titleLines(const std::string& title, float text, float width, float leastPx) {
+TitleLines titleLines(const std::string& title, float text, float width, float height, float leastPx) {
   const float room = 0.94f * width, preferred = text * 1.35f, least = std::max(text, leastPx);
   const float atPreferred = textWidthPx(title, preferred, true);
   if (atPreferred <= room) return {preferred, {title}};
   // Down to the body size on one line before it breaks.
   if (atPreferred * least / preferred <= room) return {preferred * room / atPreferred, {title}};
   TitleLines out{least, wrapText(title, least, true, room, true)};
+  // The band takes at most a quarter of the image: past that, one line
+  // shrunk to fit (a thumbnail).
+  if (float(titleBandHeight(out.lines.size(), text)) > 0.25f * height) {
+    const float atLeast = textWidthPx(title, least, true);
+    return {std::max(std::min(least, leastPx), least * room / atLeast), {title}};
+  }
   for (const std::string& line : out.lines) {
     const float w = textWidthPx(line, out.sizePx, true);
     if (w > room) out.sizePx = std::max(std::min(out.sizePx, leastPx), out.sizePx * room / w);
@@ -37,7 +43,7 @@ int addTitleBand(render::DrawList& list, const std::string& titleText, float tex
   list.views.push_back(band);
   if (titleText.empty()) return top;
   // Never cut by the frame: a long title takes a smaller size, then more lines.
-  const TitleLines title = titleLines(titleText, text, float(list.width), leastPx);
+  const TitleLines title = titleLines(titleText, text, float(list.width), float(list.height), leastPx);
   const float step = 1.4f * title.sizePx;
   for (std::size_t k = 0; k < title.lines.size(); ++k) {
     render::LabelItem line;

@@ -15,12 +15,13 @@ namespace rollspin::draw {
 // The title's size and lines in an image `width` wide: 1.35 em on one line
 // where it fits, else as small as 1 em to stay on one line, else broken at
 // spaces at 1 em (shrunk further only for one word wider than the image,
-// never under leastPx).
+// never under leastPx); where the band would take over a quarter of the
+// image's height, one line shrunk to fit.
 struct TitleLines {
   float sizePx = 0.0f;
   std::vector<std::string> lines;
 };
-TitleLines titleLines(const std::string& title, float text, float width, float leastPx);
+TitleLines titleLines(const std::string& title, float text, float width, float height, float leastPx);
 
 // The band's height for `lines` lines of title: 2.4 em for one, 1.4 em
 // more for each further line.

@@ -54,15 +54,20 @@ bool meets(const Box& box, const Segment& s) {
   return false;
 }
 
-// The view's projected arrows and paths (PolylineItem::labelsKeepOff).
-std::vector<Segment> obstaclesOf(const render::DrawList& list, int view) {
-  const render::View& v = list.views[std::size_t(view)];
-  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
-  auto project = [&](const glm::vec3& p, float& w) {
+// A view's projection into its pixels (y down), with the clip w.
+auto projectorOf(const render::View& v, const glm::mat4& clipFromWorld) {
+  return [&v, clipFromWorld](const glm::vec3& p, float& w) {
     const glm::vec4 c = clipFromWorld * glm::vec4(p, 1.0f);
     w = c.w;
     return glm::vec2((c.x / c.w * 0.5f + 0.5f) * float(v.width), (0.5f - c.y / c.w * 0.5f) * float(v.height));
   };
+}
+
+// The view's projected arrows and paths (PolylineItem::labelsKeepOff).
+std::vector<Segment> obstaclesOf(const render::DrawList& list, int view) {
+  const render::View& v = list.views[std::size_t(view)];
+  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+  const auto project = projectorOf(v, clipFromWorld);
   // The arrows as the renderer builds them (shaft to the neck, a head 2.6
   // shaft radii wide; render/vector_figure), their radii projected at their
   // depth.
@@ -97,11 +102,7 @@ std::vector<Segment> obstaclesOf(const render::DrawList& list, int view) {
 void keepLabelsClear(render::DrawList& list, int view, std::size_t first) {
   const render::View& v = list.views[std::size_t(view)];
   const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
-  auto project = [&](const glm::vec3& p, float& w) {
-    const glm::vec4 c = clipFromWorld * glm::vec4(p, 1.0f);
-    w = c.w;
-    return glm::vec2((c.x / c.w * 0.5f + 0.5f) * float(v.width), (0.5f - c.y / c.w * 0.5f) * float(v.height));
-  };
+  const auto project = projectorOf(v, clipFromWorld);
   std::vector<Segment> obstacles = obstaclesOf(list, view);
 
   // The text blocks' plates and their lines (placed before: the layout is

@@ -15,11 +15,17 @@ TitleLines titleLines(const std::string& title, float text, float width, float h
   // Down to the body size on one line before it breaks.
   if (atPreferred * least / preferred <= room) return {preferred * room / atPreferred, {title}};
   TitleLines out{least, wrapText(title, least, true, room, true)};
-  // The band takes at most a quarter of the image: past that, one line
-  // shrunk to fit (a thumbnail).
-  if (float(titleBandHeight(out.lines.size(), text)) > 0.25f * height) {
-    const float atLeast = textWidthPx(title, least, true);
-    return {std::max(std::min(least, leastPx), least * room / atLeast), {title}};
+  // The band takes at most 60 % of the image (a thumbnail, a tiny figure at
+  // a large size): past that, as many lines as fit, set smaller.
+  std::size_t most = 1;
+  while (float(titleBandHeight(most + 1, text)) <= 0.6f * height) ++most;
+  while (out.lines.size() > most && out.sizePx > std::min(least, leastPx)) {
+    out.sizePx = std::max(std::min(least, leastPx), 0.95f * out.sizePx);
+    out.lines = wrapText(title, out.sizePx, true, room, true);
+  }
+  if (out.lines.size() > most) {
+    const float atSize = textWidthPx(title, out.sizePx, true);
+    return {std::max(std::min(out.sizePx, leastPx), out.sizePx * room / atSize), {title}};
   }
   for (const std::string& line : out.lines) {
     const float w = textWidthPx(line, out.sizePx, true);

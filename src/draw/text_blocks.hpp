@@ -15,8 +15,8 @@ namespace rollspin::draw {
 // The title's size and lines in an image `width` wide: 1.35 em on one line
 // where it fits, else as small as 1 em to stay on one line, else broken at
 // spaces at 1 em (shrunk further only for one word wider than the image,
-// never under leastPx); where the band would take over a quarter of the
-// image's height, one line shrunk to fit.
+// never under leastPx); where the band would take over 60 % of the image's
+// height, as many lines as fit, set smaller (one line at the least size).
 struct TitleLines {
   float sizePx = 0.0f;
   std::vector<std::string> lines;

@@ -72,6 +72,9 @@ void fitTextToFigure(scene::SceneSpec& spec) {
   const double bodyPx = figureTextPt(spec) * render::figureFontHeightPerEm(spec.figure.font) / unit;
   const double atScaleOne = draw::bodyTextPx(int(spec.render.width), int(spec.render.height), 1.0);
   spec.render.fontScale = bodyPx / atScaleOne;
+  // The sizes are ascent + descent; a bold face's is up to 2 % more per em,
+  // so the floor keeps that much above 6 pt.
+  spec.render.leastTextScale = 1.02 * kLeastFigureTextPt / figureTextPt(spec);
   if (StageLog::instance().echo())
     fmt::print(stderr, "figure: {:.0f} mm wide, body text {:.1f} pt in {} ({:.1f} px of the {}x{} layout)\n",
                spec.figure.widthMm, figureTextPt(spec), spec.figure.font, bodyPx, spec.render.width,

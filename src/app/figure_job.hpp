@@ -24,6 +24,8 @@ void checkFigureSpec(const scene::SceneSpec& spec);
 
 // The body text size of a figure: figure.font_size_pt, else kDefaultFigureTextPt.
 inline constexpr double kDefaultFigureTextPt = 8.0;
+// No text of a figure prints smaller (journals print 6–7 pt at least).
+inline constexpr double kLeastFigureTextPt = 6.0;
 [[nodiscard]] double figureTextPt(const scene::SceneSpec& spec);
 
 // True when the scene sets a [figure] key: its PNG still then keeps the

@@ -457,7 +457,7 @@ void BallView::addMarks(render::DrawList& list, double s, bool plateShown, int v
     number.anchor = toGlm(onPath - std::copysign(0.4 * R, f.geodesicCurvature) * f.tangentNormal);
     number.worldAnchored = true;
     number.align = render::Align::Center;
-    number.sizePx = text * 0.9f;
+    number.sizePx = std::max(text * 0.9f, text * float(spec_.render.leastTextScale));  // a figure's 6 pt at least
     number.bold = true;
     number.color = done ? kTextColor : glm::vec4(0.12f, 0.13f, 0.16f, 1.0f);
     list.labels.push_back(number);

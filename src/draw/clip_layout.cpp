@@ -77,10 +77,70 @@ float textWidthPx(const std::string& text, float sizePx, bool bold) {
   return atlas[k]->layout(text, 0.0f, 0.0f, nullptr) * sizePx / 64.0f * 1.02f;
 }
 
-void fitWidth(TextBlock& block, float maxWidth) {
-  const float width = blockSize(block).x;
-  if (width <= maxWidth) return;
-  for (TextLine& l : block.lines) l.sizePx *= maxWidth / width;
+std::vector<std::string> wrapText(const std::string& text, float sizePx, bool bold, float maxWidth, bool balanced) {
+  std::vector<std::string> words;
+  for (std::size_t start = 0; start <= text.size();) {
+    const std::size_t space = std::min(text.find(' ', start), text.size());
+    if (space > start) words.push_back(text.substr(start, space - start));
+    start = space + 1;
+  }
+  if (words.size() < 2) return {text};
+  // Greedy: each line takes words while they fit.
+  auto greedy = [&](float width) {
+    std::vector<std::string> lines{words.front()};
+    for (std::size_t k = 1; k < words.size(); ++k) {
+      const std::string longer = lines.back() + " " + words[k];
+      if (textWidthPx(longer, sizePx, bold) <= width) lines.back() = longer;
+      else lines.push_back(words[k]);
+    }
+    return lines;
+  };
+  std::vector<std::string> lines = greedy(maxWidth);
+  if (!balanced || lines.size() < 2) return lines;
+  // The narrowest width that keeps the count: lines of even length.
+  float lo = 0.0f, hi = maxWidth;
+  for (int i = 0; i < 12; ++i) {
+    const float mid = 0.5f * (lo + hi);
+    (greedy(mid).size() > lines.size() ? lo : hi) = mid;
+  }
+  return greedy(hi);
+}
+
+void wrapToWidth(TextBlock& block, float maxWidth, float minSizePx) {
+  if (block.lines.empty()) return;
+  const float room = maxWidth - 2.0f * kBlockPad * block.lines.front().sizePx;
+  // A running value is measured with every digit an 8 and one more digit.
+  auto widest = [](const TextLine& l) {
+    if (!l.live) return textWidthPx(l.text, l.sizePx, l.bold);
+    std::string t = l.text;
+    for (char& c : t)
+      if (c >= '0' && c <= '9') c = '8';
+    return textWidthPx(t + "8", l.sizePx, l.bold);
+  };
+  std::vector<TextLine> lines;
+  std::size_t keep = block.keep;
+  for (std::size_t i = 0; i < block.lines.size(); ++i) {
+    const TextLine& line = block.lines[i];
+    if (widest(line) <= room) {
+      lines.push_back(line);
+      continue;
+    }
+    // The slack a running value needs comes off the room it breaks in.
+    const float slack = widest(line) - textWidthPx(line.text, line.sizePx, line.bold);
+    const std::vector<std::string> parts = wrapText(line.text, line.sizePx, line.bold, room - slack, block.centred);
+    for (const std::string& part : parts) {
+      TextLine piece = line;
+      piece.continued = &part != &parts.front();
+      piece.text = part;
+      // One word wider than the view: the last resort is a smaller size.
+      const float width = widest(piece);
+      if (width > room) piece.sizePx = std::max(std::min(piece.sizePx, minSizePx), piece.sizePx * room / width);
+      lines.push_back(piece);
+    }
+    if (i < block.keep) keep += parts.size() - 1;
+  }
+  block.keep = keep;
+  block.lines = std::move(lines);
 }
 
 glm::vec2 blockSize(const TextBlock& block) {
@@ -172,8 +232,13 @@ ViewLayout layOutBlocks(int w, int h, const std::vector<TextBlock>& given,
     }
     if (i == blocks.size()) return false;
     TextBlock& b = blocks[i];
-    const float step = kLineStep * b.lines.back().sizePx;
-    b.lines.pop_back();
+    // A broken line goes whole (its pieces are continued lines).
+    float step = 0.0f;
+    for (bool piece = true; piece && !b.lines.empty();) {
+      piece = b.lines.back().continued;
+      step += kLineStep * b.lines.back().sizePx;
+      b.lines.pop_back();
+    }
     sizes[i] = b.lines.empty() ? glm::vec2(0.0f) : glm::vec2(sizes[i].x, sizes[i].y - step);
     layout.window = NdcWindow{};
     return true;
@@ -299,6 +364,20 @@ ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
   // lines that must stay find no room, allow the narrowest window.
   constexpr double kNarrowest = 0.6;
   if (!clear && minWindow > kNarrowest) layout = layOutBlocks(w, h, blocks, occupancyFor, fixedWindow, kNarrowest, clear);
+  // Still no room (large text in a small figure): the lines each block
+  // keeps give way too, down to its first (a heading, a caption's first
+  // line with the rest of it), rather than lie over the subject.
+  if (!clear) {
+    std::vector<TextBlock> fewer = blocks;
+    for (TextBlock& b : fewer) {
+      std::size_t first = b.lines.empty() ? 0 : 1;
+      while (first < b.lines.size() && b.lines[first].continued) ++first;
+      b.keep = std::min(b.keep, first);
+    }
+    bool fewerClear = false;
+    ViewLayout relaxed = layOutBlocks(w, h, fewer, occupancyFor, fixedWindow, kNarrowest, fewerClear);
+    if (fewerClear) layout = relaxed;
+  }
   return layout;
 }
 

@@ -56,6 +56,7 @@ struct TextLine {
   bool bold = false;
   glm::vec4 color{0.0f, 0.0f, 0.0f, 1.0f};
   bool live = true;  // its text may change every frame; false: the same over a span of frames (a retained layer keeps it)
+  bool continued = false;  // the rest of the line above, broken to fit (they stay or go together)
 };
 
 enum class Slot { TopLeft, TopRight, BottomLeft, BottomRight, TopCentre, BottomCentre };
@@ -73,8 +74,16 @@ struct TextBlock {
 
 // Advance width in pixels of `text` at `sizePx` in the label font.
 float textWidthPx(const std::string& text, float sizePx, bool bold);
-// Scales the block's type down (never up) until it is at most maxWidth wide.
-void fitWidth(TextBlock& block, float maxWidth);
+// Lines of `text` at sizePx at most maxWidth wide, broken at spaces (a
+// word wider than maxWidth alone on its line); `balanced`: as many lines
+// as the greedy break, each as short as that allows (a caption).
+std::vector<std::string> wrapText(const std::string& text, float sizePx, bool bold, float maxWidth, bool balanced);
+// Makes the block at most maxWidth wide, padding included: a line too
+// wide breaks at spaces onto more lines at its own size; only a line that
+// is still too wide (one long word) shrinks, never below minSizePx. A
+// running value's line is measured with its digits at their widest, so the
+// breaks hold from frame to frame. `keep` counts the broken lines.
+void wrapToWidth(TextBlock& block, float maxWidth, float minSizePx = 0.0f);
 // The block's size in pixels (padding included).
 glm::vec2 blockSize(const TextBlock& block);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include "draw/clip_layout.hpp"
@@ -53,16 +54,20 @@ bool meets(const Box& box, const Segment& s) {
   return false;
 }
 
-}  // namespace
-
-void keepLabelsClear(render::DrawList& list, int view, std::size_t first) {
-  const render::View& v = list.views[std::size_t(view)];
-  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
-  auto project = [&](const glm::vec3& p, float& w) {
+// A view's projection into its pixels (y down), with the clip w.
+auto projectorOf(const render::View& v, const glm::mat4& clipFromWorld) {
+  return [&v, clipFromWorld](const glm::vec3& p, float& w) {
     const glm::vec4 c = clipFromWorld * glm::vec4(p, 1.0f);
     w = c.w;
     return glm::vec2((c.x / c.w * 0.5f + 0.5f) * float(v.width), (0.5f - c.y / c.w * 0.5f) * float(v.height));
   };
+}
+
+// The view's projected arrows and paths (PolylineItem::labelsKeepOff).
+std::vector<Segment> obstaclesOf(const render::DrawList& list, int view) {
+  const render::View& v = list.views[std::size_t(view)];
+  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+  const auto project = projectorOf(v, clipFromWorld);
   // The arrows as the renderer builds them (shaft to the neck, a head 2.6
   // shaft radii wide; render/vector_figure), their radii projected at their
   // depth.
@@ -88,6 +93,17 @@ void keepLabelsClear(render::DrawList& list, int view, std::size_t first) {
       if (wa > 1e-4f && wb > 1e-4f) obstacles.push_back({a, b, 0.5f * p.widthPx + 1.0f});
     }
   }
+
+  return obstacles;
+}
+
+}  // namespace
+
+void keepLabelsClear(render::DrawList& list, int view, std::size_t first) {
+  const render::View& v = list.views[std::size_t(view)];
+  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+  const auto project = projectorOf(v, clipFromWorld);
+  std::vector<Segment> obstacles = obstaclesOf(list, view);
 
   // The text blocks' plates and their lines (placed before: the layout is
   // decided per clip) are taken like labels already placed.
@@ -184,6 +200,66 @@ void keepLabelsClear(render::DrawList& list, int view, std::size_t first) {
     line.view = view;
     list.polylines.push_back(line);
   }
+}
+
+std::vector<glm::vec2> keepBlocksClear(const render::DrawList& list, int view, std::vector<TextBlock>& blocks,
+                                       std::vector<glm::vec2> origins, const Occupancy& subject) {
+  const render::View& v = list.views[std::size_t(view)];
+  const std::vector<Segment> obstacles = obstaclesOf(list, view);
+  std::vector<Box> placed;
+  auto clear = [&](const Box& box, float gap) {
+    if (box.lo.x < 0.0f || box.lo.y < 0.0f || box.hi.x > float(v.width) || box.hi.y > float(v.height)) return false;
+    const Box padded{box.lo - glm::vec2(gap), box.hi + glm::vec2(gap)};
+    for (const Box& b : placed)
+      if (padded.lo.x < b.hi.x && b.lo.x < padded.hi.x && padded.lo.y < b.hi.y && b.lo.y < padded.hi.y) return false;
+    if (subject.anyIn(padded.lo, padded.hi)) return false;
+    return std::none_of(obstacles.begin(), obstacles.end(), [&](const Segment& s) { return meets(padded, s); });
+  };
+  for (std::size_t i = 0; i < blocks.size() && i < origins.size(); ++i) {
+    TextBlock& block = blocks[i];
+    block.minSize = glm::vec2(0.0f);  // a still's digits stay: the plate fits its lines
+    while (!block.lines.empty()) {
+      const glm::vec2 size = blockSize(block);
+      const float gap = 0.25f * block.lines.front().sizePx, step = 0.5f * block.lines.front().sizePx;
+      // Where the layout put it, else the nearest clear place on a grid
+      // half an em fine.
+      std::optional<glm::vec2> best;
+      if (clear({origins[i], origins[i] + size}, gap)) best = origins[i];
+      float bestDistance = std::numeric_limits<float>::max();
+      for (float y = gap; !best && y + size.y + gap <= float(v.height); y += step)
+        for (float x = gap; x + size.x + gap <= float(v.width); x += step) {
+          const float d = glm::length(glm::vec2(x, y) - origins[i]);
+          if (d < bestDistance && clear({{x, y}, glm::vec2(x, y) + size}, gap)) {
+            bestDistance = d;
+            origins[i] = {x, y};
+          }
+        }
+      if (best || bestDistance < std::numeric_limits<float>::max()) {
+        placed.push_back({origins[i], origins[i] + size});
+        break;
+      }
+      // Nowhere clear: narrower, on more lines (down to a quarter of the
+      // view), then its last line (a broken line whole) gives way.
+      const float narrower = 0.75f * size.x;
+      if (narrower >= float(v.width) / 4.0f) {
+        TextBlock joined = block;
+        joined.lines.clear();
+        for (const TextLine& line : block.lines)
+          if (line.continued && !joined.lines.empty()) joined.lines.back().text += " " + line.text;
+          else joined.lines.push_back(line);
+        wrapToWidth(joined, narrower, std::numeric_limits<float>::max());
+        if (blockSize(joined).x < size.x) {
+          block = joined;
+          continue;
+        }
+      }
+      for (bool piece = true; piece && !block.lines.empty();) {
+        piece = block.lines.back().continued;
+        block.lines.pop_back();
+      }
+    }
+  }
+  return origins;
 }
 
 }  // namespace rollspin::draw

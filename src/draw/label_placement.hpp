@@ -9,6 +9,7 @@
 
 #include <cstddef>
 
+#include "draw/clip_layout.hpp"
 #include "render/draw_list.hpp"
 
 namespace rollspin::draw {
@@ -18,5 +19,14 @@ namespace rollspin::draw {
 // and one with no clear place within 6 em is left out (its text emptied).
 // The text blocks' plates must be placed already: labels keep off them.
 void keepLabelsClear(render::DrawList& list, int view, std::size_t first);
+
+// A still's text blocks (of `view`, whose arrows and paths are drawn
+// already) kept off its arrows, its paths, the `subject` (the ball) and
+// each other: a block whose plate meets one moves to the nearest clear
+// place (half-em grid); with none, it breaks onto more, narrower lines
+// (down to a quarter of the view), then gives up its last lines (a broken
+// line whole), and with no line left it is not drawn. Returns the origins.
+std::vector<glm::vec2> keepBlocksClear(const render::DrawList& list, int view, std::vector<TextBlock>& blocks,
+                                       std::vector<glm::vec2> origins, const Occupancy& subject);
 
 }  // namespace rollspin::draw

@@ -18,13 +18,16 @@ const glm::vec4 kCaptionColor{0.55f, 0.12f, 0.02f, 1.0f};
 
 // A segment's caption: the lecturer's own text, so it shows even with
 // render.labels = false; top centre, else bottom centre.
-TextBlock captionBlock(const std::string& caption, float text, float viewWidth) {
+TextBlock captionBlock(const std::string& caption, float text, float leastPx, float viewWidth) {
   TextBlock block;
   block.slots = {Slot::TopCentre, Slot::BottomCentre};
   block.centred = true;
   if (caption.empty()) return block;
-  const float preferred = text * 1.2f, width = textWidthPx(caption, preferred, true);
-  const float size = width > 0.9f * viewWidth ? preferred * 0.9f * viewWidth / width : preferred;
+  // 1.2 em on one line where it fits, else as small as the body size to
+  // stay on one, else the body size broken onto more (ballBlocks).
+  const float preferred = text * 1.2f, room = 0.94f * viewWidth - 2.0f * kBlockPad * preferred;
+  const float width = textWidthPx(caption, preferred, true);
+  const float size = width <= room ? preferred : std::max({text, leastPx, preferred * room / width});
   block.lines.push_back({caption, size, true, kCaptionColor, false});  // changes only between storyboard steps
   return block;
 }
@@ -42,6 +45,14 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
   titleBand_ = !spec.render.title.empty();
   for (const scene::SegmentSpec& seg : spec.segments)
     if (seg.title && !seg.title->empty()) titleBand_ = true;
+  // The band is as tall as the longest title of the clip needs.
+  auto countLines = [&](const std::string& title) {
+    if (title.empty()) return;
+    titleLines_ = std::max(titleLines_, draw::titleLines(title, text(), float(spec.render.width), float(spec.render.height), leastText()).lines.size());
+  };
+  countLines(spec.render.title);
+  for (const scene::SegmentSpec& seg : spec.segments)
+    if (seg.title) countLines(*seg.title);
 
   auto dotMesh = render::uvSphere(24, 12);  // small dots need few triangles
   if (spec.render.layout != scene::RenderLayout::Ball)
@@ -54,7 +65,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
 // The views' rectangles, as addViews cuts the image.
 SceneDrawer::Rects SceneDrawer::rects() const {
   const int W = int(spec_.render.width), H = int(spec_.render.height);
-  const int top = titleBand_ ? static_cast<int>(std::lround(text() * 2.4f)) : 0;
+  const int top = titleBand_ ? titleBandHeight(titleLines_, text()) : 0;
   const int bodyHeight = H - top;
   Rects r;
   switch (spec_.render.layout) {
@@ -84,24 +95,28 @@ SceneDrawer::Rects SceneDrawer::rects() const {
   return r;
 }
 
+// A figure's text never prints under 6 pt (figure_job sets the scale);
+// a clip's has no such floor.
+float SceneDrawer::leastText() const { return text() * float(spec_.render.leastTextScale); }
+
 float SceneDrawer::text() const { return bodyTextPx(int(spec_.render.width), int(spec_.render.height), spec_.render.fontScale); }
 
 std::vector<TextBlock> SceneDrawer::ballBlocks(const FrameOrientations& frame, float viewWidth) const {
   std::vector<TextBlock> blocks = ball_->textBlocks(frame, text());
-  blocks.push_back(captionBlock(captionAt(frame.story), text(), viewWidth));
+  blocks.push_back(captionBlock(captionAt(frame.story), text(), leastText(), viewWidth));
   for (TextBlock& b : blocks) {
-    fitWidth(b, 0.94f * viewWidth);
+    wrapToWidth(b, 0.94f * viewWidth, leastText());
     b.bandOnly = compactText(int(spec_.render.width), int(spec_.render.height));  // a column leaves no subject
   }
   return blocks;
 }
 
 std::vector<TextBlock> SceneDrawer::twinBlocks(const FrameOrientations& frame, float viewWidth, bool inset) const {
-  std::vector<TextBlock> blocks = twin_->textBlocks(inset, text());
+  std::vector<TextBlock> blocks = twin_->textBlocks(inset, text(), 0.94f * viewWidth);
   if (spec_.render.layout == scene::RenderLayout::Twin)
-    blocks.push_back(captionBlock(captionAt(frame.story), text(), viewWidth));
+    blocks.push_back(captionBlock(captionAt(frame.story), text(), leastText(), viewWidth));
   for (TextBlock& b : blocks) {
-    fitWidth(b, 0.94f * viewWidth);
+    wrapToWidth(b, 0.94f * viewWidth, leastText());
     b.bandOnly = compactText(int(spec_.render.width), int(spec_.render.height));
   }
   return blocks;
@@ -221,7 +236,8 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
   // for the whole clip when any title is set, so the views never jump.
   const scene::SegmentSpec* segment =
       spec_.segments.empty() ? nullptr : &spec_.segments[std::min(frame.story.segment, spec_.segments.size() - 1)];
-  if (titleBand_) addTitleBand(list, segment && segment->title ? *segment->title : rs.title, text());
+  if (titleBand_)
+    addTitleBand(list, segment && segment->title ? *segment->title : rs.title, text(), titleLines_, leastText());
   addViews(list, frame);
   return list;
 }
@@ -229,13 +245,19 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
 void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& frame) const {
   const Rects r = rects();
   const double s = frame.current.s;
+  // A still's blocks keep off what this frame draws (the layout, made for
+  // the whole clip, may have found no room for them).
   auto place = [&](std::vector<TextBlock> blocks, const std::vector<glm::vec2>& reserved, const ViewLayout& layout,
-                   int view) {
-    for (std::size_t i = 0; i < blocks.size() && i < layout.origins.size(); ++i) {
+                   int view, const Occupancy* subject) {
+    const std::size_t n = std::min(blocks.size(), layout.origins.size());
+    blocks.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
       if (blocks[i].lines.size() > layout.lines[i]) blocks[i].lines.resize(layout.lines[i]);
       blocks[i].minSize = glm::vec2(reserved[i].x, blockSize(blocks[i]).y);
-      addTextBlock(list, blocks[i], layout.origins[i], view);
     }
+    const std::vector<glm::vec2> origins =
+        subject ? keepBlocksClear(list, view, blocks, layout.origins, *subject) : layout.origins;
+    for (std::size_t i = 0; i < n; ++i) addTextBlock(list, blocks[i], origins[i], view);
   };
   // A still (a strobe) is read at leisure: its world-anchored labels (axis
   // and pole labels, the marks' numbers) move off the arrows, the paths and
@@ -247,7 +269,9 @@ void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& fram
     const int view = int(list.views.size()) - 1;
     const std::size_t firstLabel = list.labels.size();
     ball_->add(list, frame, view);
-    place(ballBlocks(frame, float(r.ball.width)), ballReserved_, ballLayout_, view);
+    Occupancy ball(v.width, v.height);
+    if (still) ball_->markImportant(ball, v, s, false);
+    place(ballBlocks(frame, float(r.ball.width)), ballReserved_, ballLayout_, view, still ? &ball : nullptr);
     if (still) keepLabelsClear(list, view, firstLabel);
   }
   if (twin_) {
@@ -266,7 +290,9 @@ void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& fram
     const std::size_t firstLabel = list.labels.size();
     twin_->add(list, frame, view,
                camera_->aimAt(story, twin.width, twin.height, spec_.render.twinCameraFixed ? 0.0 : s));
-    place(twinBlocks(frame, float(twin.width), r.inset), twinReserved_, twinLayout_, view);
+    Occupancy sphere(twin.width, twin.height);
+    if (still) twin_->markImportant(sphere, list.views[std::size_t(view)]);
+    place(twinBlocks(frame, float(twin.width), r.inset), twinReserved_, twinLayout_, view, still ? &sphere : nullptr);
     if (still) keepLabelsClear(list, view, firstLabel);
   }
 }

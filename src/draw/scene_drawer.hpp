@@ -72,6 +72,7 @@ class SceneDrawer {
   };
   [[nodiscard]] Rects rects() const;
   [[nodiscard]] float text() const;  // body text size in pixels
+  [[nodiscard]] float leastText() const;  // the least text size in pixels (a figure's 6 pt; 0 in a clip)
   [[nodiscard]] const std::string& captionAt(const StoryPlace& story) const;
   [[nodiscard]] std::vector<TextBlock> ballBlocks(const FrameOrientations& frame, float viewWidth) const;
   [[nodiscard]] std::vector<TextBlock> twinBlocks(const FrameOrientations& frame, float viewWidth, bool inset) const;
@@ -81,6 +82,7 @@ class SceneDrawer {
   const scene::SceneSpec& spec_;
   geometry::Vec3 markerBody_;
   bool titleBand_ = false;  // render.title or any segment's title: the band is kept for the whole clip
+  std::size_t titleLines_ = 1;  // the lines the longest title takes (text_blocks: titleLines)
   std::unique_ptr<TwinView> twin_;  // null when the layout shows no twin
   std::unique_ptr<BallView> ball_;  // with layout = "twin", only its path samples (for the framing)
   std::unique_ptr<CameraFraming> camera_;

@@ -8,24 +8,60 @@
 
 namespace rollspin::draw {
 
-int addTitleBand(render::DrawList& list, const std::string& titleText, float text) {
-  const int top = static_cast<int>(std::lround(text * 2.4f));
+TitleLines titleLines(const std::string& title, float text, float width, float height, float leastPx) {
+  const float room = 0.94f * width, preferred = text * 1.35f, least = std::max(text, leastPx);
+  const float atPreferred = textWidthPx(title, preferred, true);
+  if (atPreferred <= room) return {preferred, {title}};
+  // Down to the body size on one line before it breaks.
+  if (atPreferred * least / preferred <= room) return {preferred * room / atPreferred, {title}};
+  TitleLines out{least, wrapText(title, least, true, room, true)};
+  // The band takes at most 60 % of the image (a thumbnail, a tiny figure at
+  // a large size): past that, as many lines as fit, set smaller.
+  std::size_t most = 1;
+  while (float(titleBandHeight(most + 1, text)) <= 0.6f * height) ++most;
+  while (out.lines.size() > most && out.sizePx > std::min(least, leastPx)) {
+    out.sizePx = std::max(std::min(least, leastPx), 0.95f * out.sizePx);
+    out.lines = wrapText(title, out.sizePx, true, room, true);
+  }
+  if (out.lines.size() > most) {
+    const float atSize = textWidthPx(title, out.sizePx, true);
+    return {std::max(std::min(out.sizePx, leastPx), out.sizePx * room / atSize), {title}};
+  }
+  for (const std::string& line : out.lines) {
+    const float w = textWidthPx(line, out.sizePx, true);
+    if (w > room) out.sizePx = std::max(std::min(out.sizePx, leastPx), out.sizePx * room / w);
+  }
+  return out;
+}
+
+int titleBandHeight(std::size_t lines, float text) {
+  return static_cast<int>(std::lround(text * (2.4f + 1.4f * float(std::max<std::size_t>(lines, 1) - 1))));
+}
+
+int addTitleBand(render::DrawList& list, const std::string& titleText, float text, std::size_t bandLines,
+                 float leastPx) {
+  const int top = titleBandHeight(bandLines, text);
   render::View band;
   band.width = list.width;
   band.height = top;
   band.backgroundBottom = band.backgroundTop;  // continues the views' top colour
   band.light.shadow = false;
   list.views.push_back(band);
-  render::LabelItem title;
-  title.text = titleText;
-  title.anchor = glm::vec3(0.5f * list.width, 0.5f * top, 0.0f);
-  title.align = render::Align::Center;
-  // Shrunk to fit the width when it is long: never cut by the frame.
-  const float preferred = text * 1.35f, width = textWidthPx(titleText, preferred, true);
-  title.sizePx = width > 0.94f * float(list.width) ? preferred * 0.94f * float(list.width) / width : preferred;
-  title.bold = true;
-  title.color = kTextColor;
-  if (!titleText.empty()) list.labels.push_back(title);
+  if (titleText.empty()) return top;
+  // Never cut by the frame: a long title takes a smaller size, then more lines.
+  const TitleLines title = titleLines(titleText, text, float(list.width), float(list.height), leastPx);
+  const float step = 1.4f * title.sizePx;
+  for (std::size_t k = 0; k < title.lines.size(); ++k) {
+    render::LabelItem line;
+    line.text = title.lines[k];
+    line.anchor = glm::vec3(0.5f * list.width,
+                            0.5f * top + (float(k) - 0.5f * float(title.lines.size() - 1)) * step, 0.0f);
+    line.align = render::Align::Center;
+    line.sizePx = title.sizePx;
+    line.bold = true;
+    line.color = kTextColor;
+    list.labels.push_back(line);
+  }
   return top;
 }
 

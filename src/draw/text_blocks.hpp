@@ -12,8 +12,25 @@
 
 namespace rollspin::draw {
 
-// A band across the top of the image holding the (centred) title; returns
-// its height in pixels. An empty title keeps the band (views never jump).
-int addTitleBand(render::DrawList& list, const std::string& title, float text);
+// The title's size and lines in an image `width` wide: 1.35 em on one line
+// where it fits, else as small as 1 em to stay on one line, else broken at
+// spaces at 1 em (shrunk further only for one word wider than the image,
+// never under leastPx); where the band would take over 60 % of the image's
+// height, as many lines as fit, set smaller (one line at the least size).
+struct TitleLines {
+  float sizePx = 0.0f;
+  std::vector<std::string> lines;
+};
+TitleLines titleLines(const std::string& title, float text, float width, float height, float leastPx);
+
+// The band's height for `lines` lines of title: 2.4 em for one, 1.4 em
+// more for each further line.
+int titleBandHeight(std::size_t lines, float text);
+
+// A band across the top of the image holding the (centred) title, as tall
+// as `bandLines` lines (the most any title of the clip takes, so the views
+// never jump); returns its height in pixels. An empty title keeps the band.
+int addTitleBand(render::DrawList& list, const std::string& title, float text, std::size_t bandLines = 1,
+                 float leastPx = 0.0f);
 
 }  // namespace rollspin::draw

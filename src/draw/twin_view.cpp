@@ -169,7 +169,7 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
   }
 }
 
-std::vector<TextBlock> TwinView::textBlocks(bool inset, float text) const {
+std::vector<TextBlock> TwinView::textBlocks(bool inset, float text, float maxWidth) const {
   std::vector<TextBlock> blocks(2);
   if (!spec_.render.labels || inset) return blocks;  // an inset is too small for a heading or a legend
   blocks[0].slots = {Slot::TopLeft, Slot::TopRight};
@@ -189,7 +189,10 @@ std::vector<TextBlock> TwinView::textBlocks(bool inset, float text) const {
     blocks.push_back(field);
     return blocks;
   }
-  blocks[1].lines.push_back({"● spin  X(s) = Q(s) X(0)", text, false, glm::vec4(kMarkerColor, 1.0f), false});
+  // The spin's formula where a line holds it, else its name alone.
+  const std::string spin = "● spin  X(s) = Q(s) X(0)";
+  const bool formula = textWidthPx(spin, text, false) + 2.0f * kBlockPad * text <= maxWidth;
+  blocks[1].lines.push_back({formula ? spin : "● spin X(s)", text, false, glm::vec4(kMarkerColor, 1.0f), false});
   blocks[1].lines.push_back({"● field  B/|B|", text, false, glm::vec4(kFieldColor, 1.0f), false});
   return blocks;
 }

@@ -26,7 +26,8 @@ class TwinView {
   void add(render::DrawList& list, const motion::FrameOrientations& frame, int view,
            const CameraFraming::Aim& aim) const;
   // {heading, legend}: empty for an inset or with labels off.
-  [[nodiscard]] std::vector<TextBlock> textBlocks(bool inset, float text) const;
+  // maxWidth: the widest line the view holds (a narrower one names the spin without its formula).
+  [[nodiscard]] std::vector<TextBlock> textBlocks(bool inset, float text, float maxWidth = 1e9f) const;
   // Marks the disc the twin's sphere, arrows, trails and axis labels cover.
   void markImportant(Occupancy& occupancy, const render::View& v) const;
   void setWindow(const NdcWindow& window) { window_ = window; }

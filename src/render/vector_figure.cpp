@@ -575,6 +575,7 @@ FigureLayout figureLayout(const DrawList& list, const FigureStyle& style) {
     t.anchor = placed.anchor * unit;
     t.free = l.worldAnchored;
     t.view = l.view;
+    t.sizePt = placed.em * unit;
     layout.texts.push_back(t);
   };
   for (std::size_t i = 0; i < list.views.size(); ++i) {
@@ -645,8 +646,8 @@ std::string figureLayoutJson(const FigureLayout& layout) {
       escaped += c;
     }
     out += fmt::format("    {{\"text\": \"{}\", \"box\": [{:.3f}, {:.3f}, {:.3f}, {:.3f}], \"anchor\": [{:.3f}, {:.3f}], "
-                       "\"free\": {}, \"view\": {}}}{}\n",
-                       escaped, t.box.x0, t.box.y0, t.box.x1, t.box.y1, t.anchor.x, t.anchor.y, t.free, t.view,
+                       "\"free\": {}, \"view\": {}, \"size_pt\": {:.2f}}}{}\n",
+                       escaped, t.box.x0, t.box.y0, t.box.x1, t.box.y1, t.anchor.x, t.anchor.y, t.free, t.view, t.sizePt,
                        i + 1 < layout.texts.size() ? "," : "");
   }
   out += "  ],\n";

@@ -78,6 +78,7 @@ struct FigureLayout {
     glm::dvec2 anchor{0.0};  // the label's anchor (projected), before its offset
     bool free = false;   // a world-anchored label (axis, pole, mark number): on no plate
     int view = -1;
+    double sizePt = 0.0;  // the printed em size (figure.font_size_pt for body text)
   };
   // A segment with the half width of what is drawn along it.
   struct Segment {

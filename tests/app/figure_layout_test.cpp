@@ -3,7 +3,8 @@
 // projected arrows and paths): every word of the PDF (pdftotext -bbox) lies
 // inside a text plate, or is a free label (axis, pole, mark number) whose
 // box clears every arrow and every path (the title's band is its plate);
-// words stay on the page and apart. Every scene in scenes/ (and the
+// words stay on the page and apart; every text prints at the size asked
+// for (a long line wraps) and at least 6 pt; no plate covers a path. Every scene in scenes/ (and the
 // lollipop as an 8-position strobe), at 60, 85, 120 and 175 mm, in Latin
 // Modern at 6–10 pt. In process and without GL: the text and the vectors of
 // a figure do not depend on its raster images, which are left out here.
@@ -88,10 +89,28 @@ Figure figureOf(app::DrawJob& job, double mm, double pt, const fs::path& pdf) {
   return {render::figureLayout(list, style), test::readPdfWords(pdf)};
 }
 
-void checkFigure(const Figure& f, const std::string& where) {
+// The distance from a box to a segment (0 where they meet).
+double distance(const FigureBox& b, const FigureLayout::Segment& s) {
+  return distance(PdfWord{b.x0, b.y0, b.x1, b.y1, ""}, s);
+}
+
+void checkFigure(const Figure& f, const std::string& where, double requestedPt) {
   const FigureLayout& layout = f.layout;
   ASSERT_NEAR(f.page.width, layout.widthPt, 0.01) << where;
   ASSERT_FALSE(f.page.words.empty()) << where;
+  // Text prints at the size asked for: a line too long for its view breaks
+  // onto more lines instead of shrinking (the bold heading and title face
+  // measures a little smaller: 1 %), and nothing prints under 6 pt.
+  for (const FigureLayout::Text& t : layout.texts) {
+    EXPECT_GE(t.sizePt, 6.0 - 1e-6) << where << ": \"" << t.text << "\" prints at " << t.sizePt << " pt";
+    if (!t.free) EXPECT_GE(t.sizePt, 0.99 * requestedPt) << where << ": \"" << t.text << "\" shrunk to " << t.sizePt << " pt";
+  }
+  // No text plate lies over a path (the title's band holds none).
+  for (const FigureBox& plate : layout.plates)
+    for (const FigureLayout::Segment& s : layout.paths)
+      EXPECT_GT(distance(plate, s), s.halfWidth)
+          << where << ": the plate (" << plate.x0 << ", " << plate.y0 << ")–(" << plate.x1 << ", " << plate.y1
+          << ") covers the path from (" << s.a.x << ", " << s.a.y << ") to (" << s.b.x << ", " << s.b.y << ")";
   // The free labels' boxes in the layout are the font's ascent and descent
   // over the advance, where poppler's are the glyphs' font box: a word
   // belongs to the label whose box holds its centre.
@@ -145,7 +164,7 @@ TEST(FigureLayout, TextStaysOnItsPlateAndLabelsOffArrowsAndPathsAtJournalSizes) 
       const double pt = sizeFor(i, w);
       const std::string where = fs::path(scene).stem().string() + (extra.empty() ? "" : " (strobe)") + " at " +
                                 std::to_string(int(kWidthsMm[w])) + " mm, " + std::to_string(int(pt)) + " pt";
-      checkFigure(figureOf(job, kWidthsMm[w], pt, pdf), where);
+      checkFigure(figureOf(job, kWidthsMm[w], pt, pdf), where, pt);
       ++covered[w][std::size_t(pt) - 6];
       ++figures;
     }

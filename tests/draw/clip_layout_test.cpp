@@ -220,6 +220,55 @@ TEST(ClipLayout, ALiveLinesLeadingWordsEndBeforeItsFirstNumber) {
   EXPECT_EQ(wordsBeforeTheFirstNumber("x=1"), 0u);                   // no space before it
 }
 
+// A line too wide for its view breaks at spaces at its own size (not
+// shrunk), its pieces marked as one line (they give way together), and the
+// lines a block keeps count the pieces; only a single word wider than the
+// view shrinks, and not below the least size.
+TEST(ClipLayout, ALineTooWideWrapsAtItsSizeAndOnlyALongWordShrinks) {
+  const float size = 20.0f;
+  const std::string fact = "dynamic (1/2)∫B·X ds = 50.494171 and more words after it";
+  const float wide = textWidthPx(fact, size, false);
+  TextBlock block;
+  block.lines = {{"rolling ball", size * 1.1f, true, {}, false}, {fact, size, false, {}, false}};
+  block.keep = 2;
+  const float maxWidth = 0.45f * wide;
+  wrapToWidth(block, maxWidth, 12.0f);
+  ASSERT_GE(block.lines.size(), 4u);
+  EXPECT_FALSE(block.lines[1].continued);
+  std::string joined;
+  for (std::size_t i = 1; i < block.lines.size(); ++i) {
+    EXPECT_EQ(block.lines[i].sizePx, size) << block.lines[i].text;
+    EXPECT_EQ(block.lines[i].continued, i > 1) << block.lines[i].text;
+    joined += (i > 1 ? " " : "") + block.lines[i].text;
+  }
+  EXPECT_EQ(joined, fact);
+  EXPECT_EQ(block.keep, block.lines.size());
+  EXPECT_LE(blockSize(block).x, maxWidth + 0.5f);
+
+  // One word wider than the view: smaller, to the least size at most.
+  TextBlock word;
+  word.lines = {{"Sehr_langes_Wort_ohne_Leerzeichen", size, false, {}, false}};
+  const float wordWidth = textWidthPx(word.lines[0].text, size, false);
+  wrapToWidth(word, 0.8f * wordWidth, 12.0f);
+  ASSERT_EQ(word.lines.size(), 1u);
+  EXPECT_LT(word.lines[0].sizePx, size);
+  EXPECT_GT(word.lines[0].sizePx, 12.0f);
+  TextBlock tooLong;
+  tooLong.lines = word.lines;
+  tooLong.lines[0].sizePx = size;
+  wrapToWidth(tooLong, 0.2f * wordWidth, 12.0f);
+  EXPECT_EQ(tooLong.lines[0].sizePx, 12.0f);
+
+  // A running value breaks where its widest digits would not fit either,
+  // so the break holds from frame to frame.
+  const std::string live = "lab rotation angle = 1.0°";
+  TextBlock running;
+  running.lines = {{live, size, false, {}, true}};
+  const float room = textWidthPx(live, size, false) + 2.0f * kBlockPad * size + 1.0f;  // fits as written
+  wrapToWidth(running, room, 12.0f);
+  EXPECT_GT(running.lines.size(), 1u) << "a line that fits only with its digits as they are now";
+}
+
 // A view's edge inside the frame (the seam to the twin view) does not cut a
 // big sphere in the middle of the frame where panning or a slightly wider
 // framing holds it: for a small ball on a large sphere (berry) at 16:9, at

@@ -175,6 +175,7 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
       shot.elevation = u.angles.elevation;
       shot.orbits = u.orbits;
       shot.orbitOffset = u.orbitOffset;
+      shot.cutsAway = u.cutAway;
     }
     shot.keyed = !freeCamera(shot) || azimuthGiven || elevationGiven;
     shots_.push_back(shot);
@@ -202,6 +203,7 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
     shot.orbits = false;
     shot.orbitOffset = 0.0;
     shot.keys.clear();
+    shot.cutsAway = false;
     if (c.azimuthDeg) shot.azimuth = *c.azimuthDeg * kDeg;
     if (c.elevationDeg) shot.elevation = *c.elevationDeg * kDeg;
     azimuthGiven = azimuthGiven || c.azimuthDeg.has_value();
@@ -238,6 +240,7 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
       shot.orbits = u.orbits;
       shot.orbitOffset = u.orbitOffset;
       shot.keys = u.keys;
+      shot.cutsAway = u.cutAway;
       // A turn larger than kMaxFreeMoveDeg takes longer than a second, where
       // rollspin chose the view; a move to angles the scene gives takes the
       // documented second.
@@ -270,6 +273,11 @@ bool CameraFraming::follows(const StoryPlace &story) const {
   return shots_[std::min(story.segment, shots_.size() - 1)].follow;
 }
 
+bool CameraFraming::cutsAway(const StoryPlace &story) const {
+  const std::size_t k = std::min(story.segment, shots_.size() - 1);
+  return shots_[k].cutsAway || (moving(story) && shots_[k - 1].cutsAway);
+}
+
 std::vector<std::string> CameraFraming::hiddenWarnings() const { return hiddenWarnings_; }
 
 // Where the scene's own keys fix the camera, check it against the sight
@@ -292,6 +300,7 @@ void CameraFraming::findHiddenSpans() {
   std::vector<Span> spans(shots_.size());
   for (long long frame = 0; frame < frames; frame += step) {
     const StoryPlace story = clock.place(frame);
+    if (cutsAway(story)) continue;  // the surface opens where it hides the ball
     const double s = clock.arcLength(frame);
     const Aim aim = aimAt(story, w, h, s);
     const Vec3 eye = aim.target + aim.distance * towardEye({aim.azimuth, aim.elevation});

@@ -246,7 +246,10 @@ void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& fram
     list.views.push_back(v);
     const int view = int(list.views.size()) - 1;
     const std::size_t firstLabel = list.labels.size();
-    ball_->add(list, frame, view);
+    const glm::vec3 eye = v.camera.position;
+    ball_->add(list, frame, view,
+               camera_->cutsAway(frame.story) ? std::optional<geometry::Vec3>(geometry::Vec3(eye.x, eye.y, eye.z))
+                                               : std::nullopt);
     place(ballBlocks(frame, float(r.ball.width)), ballReserved_, ballLayout_, view);
     if (still) keepLabelsClear(list, view, firstLabel);
   }

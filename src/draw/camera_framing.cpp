@@ -340,6 +340,7 @@ CameraFraming::Aim CameraFraming::aimOf(const Shot &shot, int w, int h, double s
   const double fovDeg = lens.fovDeg, aspect = lens.aspect;
   auto [target, distance] = fitPoints(extent_.points, R, a, fovDeg, aspect);
   if (!shot.follow && !shot.target) holdOutline(target, distance, a, fovDeg, aspect);
+  if (!shot.follow && !shot.target) keepOffViewEdges(target, distance, a, fovDeg, aspect);
   if (shot.follow) {
     target = model_.path->at(s).centre(R);
     distance = fitDistance(4.0 * R, fovDeg, aspect);
@@ -395,7 +396,9 @@ void CameraFraming::holdOutline(Vec3 &target, double &distance, const OrbitAngle
       if (pass == 0) {
         // Pan the picture away from the edge, as far as the subject keeps
         // inside the window on the other side.
-        const double room = std::max(0.0, highInner[axis] ? subjectLo + 1.0 : 1.0 - subjectHi);
+        // (Short of the view's edge by kEdgeMargin: keepOffViewEdges.)
+        const double keep = kEdgeMargin / halves[axis];
+        const double room = std::max(0.0, highInner[axis] ? subjectLo + 1.0 - keep : 1.0 - keep - subjectHi);
         const double shift = std::clamp(reach - edge, 0.0, room) * (highInner[axis] ? -1.0 : 1.0);
         target -= shift * distance * tans[axis] * axes[axis];
       } else if (reach > edge && edge > 0.0) {
@@ -404,6 +407,46 @@ void CameraFraming::holdOutline(Vec3 &target, double &distance, const OrbitAngle
         distance *= std::min(reach / edge, kOutlineStepBack);
       }
     }
+  }
+}
+
+// In the window's NDC a padded point's reach scales with 1/w, w its depth
+// from the eye: stepping back from `distance` to k · distance shrinks it
+// by about w / (w + (k − 1) distance). One step with the largest ratio
+// needed, then a second for what that approximation leaves; continuous in
+// the angles (maxima over points), so a turning camera stays smooth.
+void CameraFraming::keepOffViewEdges(const Vec3 &target, double &distance, const OrbitAngles &a, double fovDeg,
+                                     double aspect) const {
+  const double R = model_.ballRadius;
+  const Vec3 toEye = towardEye(a);
+  const Vec3 right = Vec3::UnitZ().cross(toEye).normalized();
+  const Vec3 up = toEye.cross(right);
+  const double tanV = std::tan(0.5 * fovDeg * kDeg), tanH = tanV * aspect;
+  const Vec3 axes[2] = {right, up};
+  const double tans[2] = {tanH, tanV};
+  const double los[2] = {window_.x0, window_.y0}, his[2] = {window_.x1, window_.y1};
+  for (int pass = 0; pass < 2; ++pass) {
+    double factor = 1.0;
+    for (int axis = 0; axis < 2; ++axis) {
+      const double half = 0.5 * (his[axis] - los[axis]);
+      if (half <= 0.0) continue;
+      // The window NDC the subject may reach on each side: 1 where the
+      // window's edge lies inside the view (text beyond it), else short of
+      // the view's edge by kEdgeMargin.
+      const double limitHi = his[axis] >= 1.0 - 1e-9 ? 1.0 - kEdgeMargin / half : 1.0;
+      const double limitLo = los[axis] <= -1.0 + 1e-9 ? 1.0 - kEdgeMargin / half : 1.0;
+      for (const Vec3 &p : extent_.points) {
+        const Vec3 d = p - target;
+        const double w = std::max(distance - d.dot(toEye), 1e-9);
+        const double hi = (d.dot(axes[axis]) + R) / (w * tans[axis]), lo = -(d.dot(axes[axis]) - R) / (w * tans[axis]);
+        for (const auto &[reach, limit] : {std::pair{hi, limitHi}, std::pair{lo, limitLo}}) {
+          if (reach <= limit || limit <= 0.0) continue;
+          // reach · w / (w + (k − 1) distance) = limit
+          factor = std::max(factor, 1.0 + (reach / limit - 1.0) * w / distance);
+        }
+      }
+    }
+    distance *= factor;
   }
 }
 

@@ -179,6 +179,15 @@ class CameraFraming {
                    double aspect) const;
   // How far back holdOutline may step (a slightly wider framing).
   static constexpr double kOutlineStepBack = 1.2;
+  // Steps back where the subject's points (padded by R) come closer than
+  // kEdgeMargin to an edge of the view that the window reaches (a window
+  // narrowed for text leaves fitPoints' margin, a share of the window,
+  // smaller there), so that the frame does not touch the ball.
+  void keepOffViewEdges(const geometry::Vec3 &target, double &distance, const OrbitAngles &a, double fovDeg,
+                        double aspect) const;
+  // The least room between the subject and the view's edge, in the view's
+  // NDC (3 % of its width or height).
+  static constexpr double kEdgeMargin = 0.06;
   // The orbit angles `base`, turned where the surface would hide the ball on
   // [s0, s1] (azimuthFree/elevationFree: which the scene leaves open); with
   // mayOrbit, a view that orbits with the ball's longitude where no still

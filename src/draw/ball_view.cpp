@@ -268,15 +268,15 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
 
 namespace {
 
-// Where the plane dot(n, p) + w = 0 crosses a mesh: the crossings of its
-// triangles chained into polylines through the edges they share (a
-// parametric patch's seam, whose vertices are doubled, ends a polyline).
-std::vector<std::vector<Vec3>> planeSection(const render::MeshData& mesh, const Eigen::Vector4d& plane) {
+// Where the scalar field `value` (given per vertex, linear along edges)
+// is zero on a mesh: its crossings of the triangles chained into polylines
+// through the edges they share (a parametric patch's seam, whose vertices
+// are doubled, ends a polyline).
+std::vector<std::vector<Vec3>> zeroSet(const render::MeshData& mesh, const std::vector<double>& value) {
   auto at = [&](std::uint32_t i) {
     const glm::vec3& p = mesh.vertices[i].position;
     return Vec3(p.x, p.y, p.z);
   };
-  auto side = [&](std::uint32_t i) { return plane.head<3>().dot(at(i)) + plane.w(); };
   struct Crossing {
     std::uint64_t edge[2];
     Vec3 point[2];
@@ -288,10 +288,10 @@ std::vector<std::vector<Vec3>> planeSection(const render::MeshData& mesh, const 
     int found = 0;
     for (int e = 0; e < 3; ++e) {
       const std::uint32_t a = mesh.indices[t + std::size_t(e)], b = mesh.indices[t + std::size_t((e + 1) % 3)];
-      const double da = side(a), db = side(b);
-      if ((da < 0.0) == (db < 0.0) || found == 2) continue;
+      const double va = value[a], vb = value[b];
+      if ((va < 0.0) == (vb < 0.0) || found == 2) continue;
       c.edge[found] = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-      c.point[found] = at(a) + (da / (da - db)) * (at(b) - at(a));
+      c.point[found] = at(a) + (va / (va - vb)) * (at(b) - at(a));
       ++found;
     }
     if (found != 2) continue;
@@ -306,19 +306,17 @@ std::vector<std::vector<Vec3>> planeSection(const render::MeshData& mesh, const 
     used[first] = 1;
     std::vector<Vec3> halves[2];
     for (int way = 0; way < 2; ++way) {
-      std::size_t at_ = first;
       std::uint64_t edge = crossings[first].edge[way];
       halves[way].push_back(crossings[first].point[way]);
       for (;;) {
         std::size_t next = crossings.size();
         for (const std::size_t k : byEdge[edge])
-          if (!used[k] && k != at_) next = k;
+          if (!used[k]) next = k;
         if (next == crossings.size()) break;
         used[next] = 1;
         const int exit = crossings[next].edge[0] == edge ? 1 : 0;
         edge = crossings[next].edge[exit];
         halves[way].push_back(crossings[next].point[exit]);
-        at_ = next;
       }
     }
     std::vector<Vec3> line(halves[0].rbegin(), halves[0].rend());
@@ -330,28 +328,37 @@ std::vector<std::vector<Vec3>> planeSection(const render::MeshData& mesh, const 
 
 }  // namespace
 
-// The cut opens as the sight lines (finer than the camera search's, so
-// that it opens smoothly) find the ball hidden: from 99.5 % of its disc
-// seen, with a plane across the view that sweeps in from the surface's far
-// side towards the eye, to the plane through the ball's centre at 93 %
-// seen, where nothing nearer the eye than the ball is left to hide it.
+// The porthole opens as the sight lines (finer than the camera search's,
+// so that it opens smoothly) find the ball hidden: from 99.5 % of its disc
+// seen, where it starts as a point, to 93 % seen, where its radius at the
+// ball is kPortholeRadius R (the ball's whole disc, and a ring of what lies
+// behind it); seen from the eye it is a disc about the ball.
 render::Material BallView::cutTowardEye(const Vec3& eye, const Vec3& centre,
                                         std::vector<std::vector<Vec3>>& rim) const {
   render::Material material = surfaceMaterial_;
   if (!extent_.surface || !surfaceMesh_) return material;
-  const double share = extent_.surface->visibleShare(eye, centre, model_.ballRadius, 97);
+  const double R = model_.ballRadius;
+  const double share = extent_.surface->visibleShare(eye, centre, R, 97);
   const double x = std::clamp((0.995 - share) / (0.995 - 0.93), 0.0, 1.0);
   const double open = x * x * (3.0 - 2.0 * x);
   if (open <= 0.0) return material;
-  const Vec3 toEye = (eye - centre).normalized();
-  double reach = 0.0;  // how far the surface reaches from the ball towards the eye
-  for (const render::Vertex& v : surfaceMesh_->vertices)
-    reach = std::max(reach, (Vec3(v.position.x, v.position.y, v.position.z) - centre).dot(toEye));
-  // Keep dot(-toEye, p) + toEye·centre + offset >= 0: what lies no further
-  // than `offset` from the ball towards the eye.
-  const Eigen::Vector4d plane(-toEye.x(), -toEye.y(), -toEye.z(), toEye.dot(centre) + (1.0 - open) * reach);
-  material.cutPlane = glm::vec4(float(plane.x()), float(plane.y()), float(plane.z()), float(plane.w()));
-  rim = planeSection(*surfaceMesh_, plane);
+  constexpr double kPortholeRadius = 1.8;
+  const double radius = open * kPortholeRadius * R;
+  material.cutCone = glm::vec4(toGlm(centre), float(radius));
+  // Its rim: where max(distance inside the cone's wall, depth past the
+  // ball's centre) is zero on the surface (mesh.frag cuts where both are
+  // negative).
+  const Vec3 axis = centre - eye;
+  const double length = axis.norm();
+  std::vector<double> value(surfaceMesh_->vertices.size());
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const glm::vec3& p = surfaceMesh_->vertices[i].position;
+    const Vec3 q = Vec3(p.x, p.y, p.z) - eye;
+    const double along = q.dot(axis) / length;
+    const double inside = (q - along * axis / length).norm() - radius * along / length;
+    value[i] = std::max(inside, along - length);
+  }
+  rim = zeroSet(*surfaceMesh_, value);
   return material;
 }
 

@@ -88,11 +88,20 @@ float SceneDrawer::text() const { return bodyTextPx(int(spec_.render.width), int
 
 std::vector<TextBlock> SceneDrawer::ballBlocks(const FrameOrientations& frame, float viewWidth) const {
   std::vector<TextBlock> blocks = ball_->textBlocks(frame, text());
+  // With a view beside it on the right (the Bloch sphere), the ball view's
+  // top right corner is the middle of the frame's top: the view's heading
+  // keeps to its own top left corner, where the framing makes room for it.
+  // It makes room with a band across the top: a column at the left would
+  // push the subject towards the seam, where the view's edge would cut it.
+  const Rects r = rects();
+  const bool viewOnTheRight = !r.inset && r.ball.x + r.ball.width < int(spec_.render.width) && !blocks.empty();
+  if (viewOnTheRight) std::erase(blocks[0].slots, Slot::TopRight);
   blocks.push_back(captionBlock(captionAt(frame.story), text(), viewWidth));
   for (TextBlock& b : blocks) {
     fitWidth(b, 0.94f * viewWidth);
     b.bandOnly = compactText(int(spec_.render.width), int(spec_.render.height));  // a column leaves no subject
   }
+  if (viewOnTheRight) blocks[0].bandOnly = true;
   return blocks;
 }
 

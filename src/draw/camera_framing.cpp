@@ -350,6 +350,24 @@ CameraFraming::Aim CameraFraming::aimOf(const Shot &shot, int w, int h, double s
   return {target, distance, a.azimuth, a.elevation, shot.fovDeg};
 }
 
+namespace {
+
+// The view's right and up directions and the tangents of its half angles
+// across them, for a camera looking along the orbit angles `a`.
+struct ScreenAxes {
+  Vec3 toEye;
+  Vec3 axes[2];
+  double tans[2];
+};
+ScreenAxes screenAxes(const OrbitAngles &a, double fovDeg, double aspect) {
+  const Vec3 toEye = towardEye(a);
+  const Vec3 right = Vec3::UnitZ().cross(toEye).normalized();
+  const double tanV = std::tan(0.5 * fovDeg * kDeg);
+  return {toEye, {right, toEye.cross(right)}, {tanV * aspect, tanV}};
+}
+
+}  // namespace
+
 // In the window's own NDC the subject's points (padded by R) must stay in
 // [-1, 1]; the view's edge lies at (±1 − centre) / half-width of the
 // window. The shift is continuous in the angles (maxima over points), so a
@@ -358,12 +376,10 @@ void CameraFraming::holdOutline(Vec3 &target, double &distance, const OrbitAngle
                                 double aspect) const {
   if (extent_.outline.empty()) return;
   const double R = model_.ballRadius;
-  const Vec3 toEye = towardEye(a);
-  const Vec3 right = Vec3::UnitZ().cross(toEye).normalized();
-  const Vec3 up = toEye.cross(right);
-  const double tanV = std::tan(0.5 * fovDeg * kDeg), tanH = tanV * aspect;
-  const Vec3 axes[2] = {right, up};
-  const double tans[2] = {tanH, tanV};
+  const ScreenAxes screen = screenAxes(a, fovDeg, aspect);
+  const Vec3 &toEye = screen.toEye;
+  const Vec3(&axes)[2] = screen.axes;
+  const double(&tans)[2] = screen.tans;
   const double centres[2] = {0.5 * (window_.x0 + window_.x1), 0.5 * (window_.y0 + window_.y1)};
   const double halves[2] = {0.5 * (window_.x1 - window_.x0), 0.5 * (window_.y1 - window_.y0)};
   const bool lowInner[2] = {innerEdges_.left, innerEdges_.bottom}, highInner[2] = {innerEdges_.right, innerEdges_.top};
@@ -418,12 +434,10 @@ void CameraFraming::holdOutline(Vec3 &target, double &distance, const OrbitAngle
 void CameraFraming::keepOffViewEdges(const Vec3 &target, double &distance, const OrbitAngles &a, double fovDeg,
                                      double aspect) const {
   const double R = model_.ballRadius;
-  const Vec3 toEye = towardEye(a);
-  const Vec3 right = Vec3::UnitZ().cross(toEye).normalized();
-  const Vec3 up = toEye.cross(right);
-  const double tanV = std::tan(0.5 * fovDeg * kDeg), tanH = tanV * aspect;
-  const Vec3 axes[2] = {right, up};
-  const double tans[2] = {tanH, tanV};
+  const ScreenAxes screen = screenAxes(a, fovDeg, aspect);
+  const Vec3 &toEye = screen.toEye;
+  const Vec3(&axes)[2] = screen.axes;
+  const double(&tans)[2] = screen.tans;
   const double los[2] = {window_.x0, window_.y0}, his[2] = {window_.x1, window_.y1};
   for (int pass = 0; pass < 2; ++pass) {
     double factor = 1.0;

@@ -19,6 +19,7 @@
 //               sphere's far depth, so llvmpipe tests it before shading)
 //   CAPTURE  1: IMPOSTOR 1 drawn into a capture (the renderer's
 //               SphereCapture), which keeps the depth it gives a pixel too
+//   CONE_CUT 1: the material's porthole (cutCone) is discarded
 #ifndef PATTERN
 #define PATTERN 0
 #endif
@@ -39,6 +40,9 @@
 #endif
 #ifndef CAPTURE
 #define CAPTURE 0
+#endif
+#ifndef CONE_CUT
+#define CONE_CUT 0
 #endif
 
 #if IMPOSTOR
@@ -74,6 +78,11 @@ uniform vec3 lightColor;
 uniform float ambient;
 uniform vec3 cameraPosition;
 uniform bool twoSided;  // light the side that faces the camera
+#if CONE_CUT
+// A porthole towards a hidden point: the cone from the eye through the
+// sphere (xyz, radius w), nearer the eye than its centre, is cut away.
+uniform vec4 cutCone;
+#endif
 #if LIT && !SPECULAR && !IMPOSTOR
 centroid in vec3 vAmbient;
 centroid in float vNdl;
@@ -256,5 +265,14 @@ void main() {
 #if IMPOSTOR == 2
   fragColor.rgb *= fragColor.a;  // blended under what is drawn (see the renderer)
 #endif
+#endif
+#if CONE_CUT && !IMPOSTOR
+  // The porthole, discarded last (as above) so that every pixel of a 2×2
+  // quad has run the checker's derivatives.
+  vec3 axis = cutCone.xyz - cameraPosition;
+  float axisLength = length(axis);
+  vec3 q = vWorldPosition - cameraPosition;
+  float along = dot(q, axis) / axisLength;
+  if (along < axisLength && length(q - along * axis / axisLength) < cutCone.w * along / axisLength) discard;
 #endif
 }

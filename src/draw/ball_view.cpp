@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <unordered_map>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -265,11 +266,122 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
   }
 }
 
-void BallView::add(render::DrawList& list, const FrameOrientations& frame, int view) const {
+namespace {
+
+// Where the scalar field `value` (given per vertex, linear along edges)
+// is zero on a mesh: its crossings of the triangles chained into polylines
+// through the edges they share (a parametric patch's seam, whose vertices
+// are doubled, ends a polyline).
+std::vector<std::vector<Vec3>> zeroSet(const render::MeshData& mesh, const std::vector<double>& value) {
+  auto at = [&](std::uint32_t i) {
+    const glm::vec3& p = mesh.vertices[i].position;
+    return Vec3(p.x, p.y, p.z);
+  };
+  struct Crossing {
+    std::uint64_t edge[2];
+    Vec3 point[2];
+  };
+  std::vector<Crossing> crossings;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> byEdge;
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    Crossing c{};
+    int found = 0;
+    for (int e = 0; e < 3; ++e) {
+      const std::uint32_t a = mesh.indices[t + std::size_t(e)], b = mesh.indices[t + std::size_t((e + 1) % 3)];
+      const double va = value[a], vb = value[b];
+      if ((va < 0.0) == (vb < 0.0) || found == 2) continue;
+      c.edge[found] = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+      c.point[found] = at(a) + (va / (va - vb)) * (at(b) - at(a));
+      ++found;
+    }
+    if (found != 2) continue;
+    for (const std::uint64_t e : c.edge) byEdge[e].push_back(crossings.size());
+    crossings.push_back(c);
+  }
+  // Walk from each unused crossing both ways along shared edges.
+  std::vector<char> used(crossings.size(), 0);
+  std::vector<std::vector<Vec3>> lines;
+  for (std::size_t first = 0; first < crossings.size(); ++first) {
+    if (used[first]) continue;
+    used[first] = 1;
+    std::vector<Vec3> halves[2];
+    for (int way = 0; way < 2; ++way) {
+      std::uint64_t edge = crossings[first].edge[way];
+      halves[way].push_back(crossings[first].point[way]);
+      for (;;) {
+        std::size_t next = crossings.size();
+        for (const std::size_t k : byEdge[edge])
+          if (!used[k]) next = k;
+        if (next == crossings.size()) break;
+        used[next] = 1;
+        const int exit = crossings[next].edge[0] == edge ? 1 : 0;
+        edge = crossings[next].edge[exit];
+        halves[way].push_back(crossings[next].point[exit]);
+      }
+    }
+    std::vector<Vec3> line(halves[0].rbegin(), halves[0].rend());
+    line.insert(line.end(), halves[1].begin(), halves[1].end());
+    lines.push_back(std::move(line));
+  }
+  return lines;
+}
+
+}  // namespace
+
+// The porthole opens as the sight lines (finer than the camera search's,
+// so that it opens smoothly) find the ball hidden: from 99.5 % of its disc
+// seen, where it starts as a point, to 93 % seen, where its radius at the
+// ball is kPortholeRadius R (the ball's whole disc, and a ring of what lies
+// behind it); seen from the eye it is a disc about the ball.
+render::Material BallView::cutTowardEye(const Vec3& eye, const Vec3& centre,
+                                        std::vector<std::vector<Vec3>>& rim) const {
+  render::Material material = surfaceMaterial_;
+  if (!extent_.surface || !surfaceMesh_) return material;
+  const double R = model_.ballRadius;
+  const double share = extent_.surface->visibleShare(eye, centre, R, 97);
+  const double x = std::clamp((0.995 - share) / (0.995 - 0.93), 0.0, 1.0);
+  const double open = x * x * (3.0 - 2.0 * x);
+  if (open <= 0.0) return material;
+  constexpr double kPortholeRadius = 1.8;
+  const double radius = open * kPortholeRadius * R;
+  material.cutCone = glm::vec4(toGlm(centre), float(radius));
+  // Its rim: where max(distance inside the cone's wall, depth past the
+  // ball's centre) is zero on the surface (mesh.frag cuts where both are
+  // negative).
+  const Vec3 axis = centre - eye;
+  const double length = axis.norm();
+  std::vector<double> value(surfaceMesh_->vertices.size());
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const glm::vec3& p = surfaceMesh_->vertices[i].position;
+    const Vec3 q = Vec3(p.x, p.y, p.z) - eye;
+    const double along = q.dot(axis) / length;
+    const double inside = (q - along * axis / length).norm() - radius * along / length;
+    value[i] = std::max(inside, along - length);
+  }
+  rim = zeroSet(*surfaceMesh_, value);
+  return material;
+}
+
+void BallView::add(render::DrawList& list, const FrameOrientations& frame, int view,
+                   const std::optional<Vec3>& cutAwayFrom) const {
   const double R = model_.ballRadius;
   const double s = frame.current.s;
 
-  if (surfaceMesh_) list.meshes.push_back({surfaceMesh_, glm::mat4(1.0f), surfaceMaterial_, view});
+  if (surfaceMesh_) {
+    std::vector<std::vector<Vec3>> rims;
+    const render::Material material =
+        cutAwayFrom ? cutTowardEye(*cutAwayFrom, model_.path->at(s).centre(R), rims) : surfaceMaterial_;
+    list.meshes.push_back({surfaceMesh_, glm::mat4(1.0f), material, view});
+    for (const std::vector<Vec3>& line : rims) {
+      render::PolylineItem rim;  // the cut's edge, as inside a sphere
+      rim.color = glm::vec4(0.25f, 0.27f, 0.30f, 1.0f);
+      rim.widthPx = std::max(1.2f, float(list.height) / 450.0f);
+      rim.view = view;
+      rim.dynamic = true;
+      for (const Vec3& p : line) rim.points.push_back(toGlm(p));
+      list.polylines.push_back(std::move(rim));
+    }
+  }
   if (!cutRim_.empty()) {
     render::PolylineItem rim;
     rim.color = glm::vec4(0.25f, 0.27f, 0.30f, 1.0f);

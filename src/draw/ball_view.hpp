@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -29,7 +30,11 @@ class BallView {
   // What the default camera must keep in view.
   [[nodiscard]] const FrameExtent& extent() const { return extent_; }
 
-  void add(render::DrawList& list, const motion::FrameOrientations& frame, int view) const;
+  // `cutAwayFrom`: the eye of a view that cannot see the ball past the
+  // surface (CameraFraming::cutsAway): where the surface hides the ball
+  // from there, its part nearer the eye is cut away, with a rim line.
+  void add(render::DrawList& list, const motion::FrameOrientations& frame, int view,
+           const std::optional<geometry::Vec3>& cutAwayFrom = std::nullopt) const;
   // The view's text for this frame: {heading and facts, running values}
   // (empty blocks when labels are off); `text` is the body size in pixels.
   [[nodiscard]] std::vector<TextBlock> textBlocks(const motion::FrameOrientations& frame, float text) const;
@@ -39,6 +44,11 @@ class BallView {
 
  private:
   void addMarks(render::DrawList& list, double s, bool plateShown, int view) const;
+  // The surface's material for a frame whose eye is `eye` with the ball at
+  // `centre`, cut away towards the eye as far as the ball is hidden, and
+  // the cut's rim (empty where nothing is cut).
+  render::Material cutTowardEye(const geometry::Vec3& eye, const geometry::Vec3& centre,
+                                std::vector<std::vector<geometry::Vec3>>& rim) const;
   // Brockett's plate: the point of the plate above the contact point P(s),
   // lifted by `lift` above the ball's top.
   geometry::Vec3 platePoint(double s, double lift) const;

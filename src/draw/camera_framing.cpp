@@ -175,6 +175,7 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
       shot.elevation = u.angles.elevation;
       shot.orbits = u.orbits;
       shot.orbitOffset = u.orbitOffset;
+      shot.cutsAway = u.cutAway;
     }
     shot.keyed = !freeCamera(shot) || azimuthGiven || elevationGiven;
     shots_.push_back(shot);
@@ -202,6 +203,7 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
     shot.orbits = false;
     shot.orbitOffset = 0.0;
     shot.keys.clear();
+    shot.cutsAway = false;
     if (c.azimuthDeg) shot.azimuth = *c.azimuthDeg * kDeg;
     if (c.elevationDeg) shot.elevation = *c.elevationDeg * kDeg;
     azimuthGiven = azimuthGiven || c.azimuthDeg.has_value();
@@ -238,6 +240,7 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
       shot.orbits = u.orbits;
       shot.orbitOffset = u.orbitOffset;
       shot.keys = u.keys;
+      shot.cutsAway = u.cutAway;
       // A turn larger than kMaxFreeMoveDeg takes longer than a second, where
       // rollspin chose the view; a move to angles the scene gives takes the
       // documented second.
@@ -270,6 +273,11 @@ bool CameraFraming::follows(const StoryPlace &story) const {
   return shots_[std::min(story.segment, shots_.size() - 1)].follow;
 }
 
+bool CameraFraming::cutsAway(const StoryPlace &story) const {
+  const std::size_t k = std::min(story.segment, shots_.size() - 1);
+  return shots_[k].cutsAway || (moving(story) && shots_[k - 1].cutsAway);
+}
+
 std::vector<std::string> CameraFraming::hiddenWarnings() const { return hiddenWarnings_; }
 
 // Where the scene's own keys fix the camera, check it against the sight
@@ -292,6 +300,7 @@ void CameraFraming::findHiddenSpans() {
   std::vector<Span> spans(shots_.size());
   for (long long frame = 0; frame < frames; frame += step) {
     const StoryPlace story = clock.place(frame);
+    if (cutsAway(story)) continue;  // the surface opens where it hides the ball
     const double s = clock.arcLength(frame);
     const Aim aim = aimAt(story, w, h, s);
     const Vec3 eye = aim.target + aim.distance * towardEye({aim.azimuth, aim.elevation});
@@ -331,6 +340,7 @@ CameraFraming::Aim CameraFraming::aimOf(const Shot &shot, int w, int h, double s
   const double fovDeg = lens.fovDeg, aspect = lens.aspect;
   auto [target, distance] = fitPoints(extent_.points, R, a, fovDeg, aspect);
   if (!shot.follow && !shot.target) holdOutline(target, distance, a, fovDeg, aspect);
+  if (!shot.follow && !shot.target) keepOffViewEdges(target, distance, a, fovDeg, aspect);
   if (shot.follow) {
     target = model_.path->at(s).centre(R);
     distance = fitDistance(4.0 * R, fovDeg, aspect);
@@ -340,6 +350,24 @@ CameraFraming::Aim CameraFraming::aimOf(const Shot &shot, int w, int h, double s
   return {target, distance, a.azimuth, a.elevation, shot.fovDeg};
 }
 
+namespace {
+
+// The view's right and up directions and the tangents of its half angles
+// across them, for a camera looking along the orbit angles `a`.
+struct ScreenAxes {
+  Vec3 toEye;
+  Vec3 axes[2];
+  double tans[2];
+};
+ScreenAxes screenAxes(const OrbitAngles &a, double fovDeg, double aspect) {
+  const Vec3 toEye = towardEye(a);
+  const Vec3 right = Vec3::UnitZ().cross(toEye).normalized();
+  const double tanV = std::tan(0.5 * fovDeg * kDeg);
+  return {toEye, {right, toEye.cross(right)}, {tanV * aspect, tanV}};
+}
+
+}  // namespace
+
 // In the window's own NDC the subject's points (padded by R) must stay in
 // [-1, 1]; the view's edge lies at (±1 − centre) / half-width of the
 // window. The shift is continuous in the angles (maxima over points), so a
@@ -348,12 +376,10 @@ void CameraFraming::holdOutline(Vec3 &target, double &distance, const OrbitAngle
                                 double aspect) const {
   if (extent_.outline.empty()) return;
   const double R = model_.ballRadius;
-  const Vec3 toEye = towardEye(a);
-  const Vec3 right = Vec3::UnitZ().cross(toEye).normalized();
-  const Vec3 up = toEye.cross(right);
-  const double tanV = std::tan(0.5 * fovDeg * kDeg), tanH = tanV * aspect;
-  const Vec3 axes[2] = {right, up};
-  const double tans[2] = {tanH, tanV};
+  const ScreenAxes screen = screenAxes(a, fovDeg, aspect);
+  const Vec3 &toEye = screen.toEye;
+  const Vec3(&axes)[2] = screen.axes;
+  const double(&tans)[2] = screen.tans;
   const double centres[2] = {0.5 * (window_.x0 + window_.x1), 0.5 * (window_.y0 + window_.y1)};
   const double halves[2] = {0.5 * (window_.x1 - window_.x0), 0.5 * (window_.y1 - window_.y0)};
   const bool lowInner[2] = {innerEdges_.left, innerEdges_.bottom}, highInner[2] = {innerEdges_.right, innerEdges_.top};
@@ -386,7 +412,9 @@ void CameraFraming::holdOutline(Vec3 &target, double &distance, const OrbitAngle
       if (pass == 0) {
         // Pan the picture away from the edge, as far as the subject keeps
         // inside the window on the other side.
-        const double room = std::max(0.0, highInner[axis] ? subjectLo + 1.0 : 1.0 - subjectHi);
+        // (Short of the view's edge by kEdgeMargin: keepOffViewEdges.)
+        const double keep = kEdgeMargin / halves[axis];
+        const double room = std::max(0.0, highInner[axis] ? subjectLo + 1.0 - keep : 1.0 - keep - subjectHi);
         const double shift = std::clamp(reach - edge, 0.0, room) * (highInner[axis] ? -1.0 : 1.0);
         target -= shift * distance * tans[axis] * axes[axis];
       } else if (reach > edge && edge > 0.0) {
@@ -395,6 +423,44 @@ void CameraFraming::holdOutline(Vec3 &target, double &distance, const OrbitAngle
         distance *= std::min(reach / edge, kOutlineStepBack);
       }
     }
+  }
+}
+
+// In the window's NDC a padded point's reach scales with 1/w, w its depth
+// from the eye: stepping back from `distance` to k · distance shrinks it
+// by about w / (w + (k − 1) distance). One step with the largest ratio
+// needed, then a second for what that approximation leaves; continuous in
+// the angles (maxima over points), so a turning camera stays smooth.
+void CameraFraming::keepOffViewEdges(const Vec3 &target, double &distance, const OrbitAngles &a, double fovDeg,
+                                     double aspect) const {
+  const double R = model_.ballRadius;
+  const ScreenAxes screen = screenAxes(a, fovDeg, aspect);
+  const Vec3 &toEye = screen.toEye;
+  const Vec3(&axes)[2] = screen.axes;
+  const double(&tans)[2] = screen.tans;
+  const double los[2] = {window_.x0, window_.y0}, his[2] = {window_.x1, window_.y1};
+  for (int pass = 0; pass < 2; ++pass) {
+    double factor = 1.0;
+    for (int axis = 0; axis < 2; ++axis) {
+      const double half = 0.5 * (his[axis] - los[axis]);
+      if (half <= 0.0) continue;
+      // The window NDC the subject may reach on each side: 1 where the
+      // window's edge lies inside the view (text beyond it), else short of
+      // the view's edge by kEdgeMargin.
+      const double limitHi = his[axis] >= 1.0 - 1e-9 ? 1.0 - kEdgeMargin / half : 1.0;
+      const double limitLo = los[axis] <= -1.0 + 1e-9 ? 1.0 - kEdgeMargin / half : 1.0;
+      for (const Vec3 &p : extent_.points) {
+        const Vec3 d = p - target;
+        const double w = std::max(distance - d.dot(toEye), 1e-9);
+        const double hi = (d.dot(axes[axis]) + R) / (w * tans[axis]), lo = -(d.dot(axes[axis]) - R) / (w * tans[axis]);
+        for (const auto &[reach, limit] : {std::pair{hi, limitHi}, std::pair{lo, limitLo}}) {
+          if (reach <= limit || limit <= 0.0) continue;
+          // reach · w / (w + (k − 1) distance) = limit
+          factor = std::max(factor, 1.0 + (reach / limit - 1.0) * w / distance);
+        }
+      }
+    }
+    distance *= factor;
   }
 }
 

@@ -117,6 +117,11 @@ class CameraFraming {
   [[nodiscard]] bool moving(const motion::StoryPlace &story) const;
   // Whether the camera of this place moves with the ball (follow).
   [[nodiscard]] bool follows(const motion::StoryPlace &story) const;
+  // Whether the surface is cut away towards the eye at this place where it
+  // hides the ball (BallView): where the scene leaves the view free and no
+  // view rollspin tried keeps the ball in sight past the surface (once round
+  // a torus's tube), also while the camera moves into or out of that segment.
+  [[nodiscard]] bool cutsAway(const motion::StoryPlace &story) const;
 
   // Where the scene's own camera keys force a view that hides the ball
   // (< 90 % of its disc seen past the surface): one line per segment, naming
@@ -151,6 +156,7 @@ class CameraFraming {
     double orbitOffset = 0.0;          // ... plus this
     double moveSeconds = kCameraMove;  // the move here from the previous segment's camera
     bool keyed = false;                // the scene's keys fix (part of) this camera
+    bool cutsAway = false;             // the surface is cut away where it hides the ball
     std::vector<Keyframe> keys;        // non-empty: the view direction turns with s
                                        // through these (unhiddenAngles)
   };
@@ -160,6 +166,7 @@ class CameraFraming {
     bool orbits = false;
     double orbitOffset = 0.0;
     double share = 1.0;          // the least share of the ball seen (sight lines)
+    bool cutAway = false;        // none sees it: cut the surface away towards the eye
     std::vector<Keyframe> keys;  // see Shot
   };
   // The view direction at s through keyframes (mixed between neighbours).
@@ -172,6 +179,15 @@ class CameraFraming {
                    double aspect) const;
   // How far back holdOutline may step (a slightly wider framing).
   static constexpr double kOutlineStepBack = 1.2;
+  // Steps back where the subject's points (padded by R) come closer than
+  // kEdgeMargin to an edge of the view that the window reaches (a window
+  // narrowed for text leaves fitPoints' margin, a share of the window,
+  // smaller there), so that the frame does not touch the ball.
+  void keepOffViewEdges(const geometry::Vec3 &target, double &distance, const OrbitAngles &a, double fovDeg,
+                        double aspect) const;
+  // The least room between the subject and the view's edge, in the view's
+  // NDC (3 % of its width or height).
+  static constexpr double kEdgeMargin = 0.06;
   // The orbit angles `base`, turned where the surface would hide the ball on
   // [s0, s1] (azimuthFree/elevationFree: which the scene leaves open); with
   // mayOrbit, a view that orbits with the ball's longitude where no still

@@ -270,8 +270,12 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(OrbitAngles base, double s
       }
     }
   }
-  if (orbit.share > bestShare) return orbit;
+  // No view keeps the ball in sight past the surface (round a torus's tube
+  // the inner side is hidden from every view outside the hole that a gentle
+  // turn reaches): the calmest one, the still view that hides it least, and
+  // the surface cut away towards the eye where it hides the ball (BallView).
   if (leastHidden) out.angles = leastHidden->angles;
+  out.cutAway = true;
   return out;
 }
 

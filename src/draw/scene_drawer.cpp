@@ -103,11 +103,20 @@ float SceneDrawer::text() const { return bodyTextPx(int(spec_.render.width), int
 
 std::vector<TextBlock> SceneDrawer::ballBlocks(const FrameOrientations& frame, float viewWidth) const {
   std::vector<TextBlock> blocks = ball_->textBlocks(frame, text());
+  // With a view beside it on the right (the Bloch sphere), the ball view's
+  // top right corner is the middle of the frame's top: the view's heading
+  // keeps to its own top left corner, where the framing makes room for it.
+  // It makes room with a band across the top: a column at the left would
+  // push the subject towards the seam, where the view's edge would cut it.
+  const Rects r = rects();
+  const bool viewOnTheRight = !r.inset && r.ball.x + r.ball.width < int(spec_.render.width) && !blocks.empty();
+  if (viewOnTheRight) std::erase(blocks[0].slots, Slot::TopRight);
   blocks.push_back(captionBlock(captionAt(frame.story), text(), leastText(), viewWidth));
   for (TextBlock& b : blocks) {
     wrapToWidth(b, 0.94f * viewWidth, leastText());
     b.bandOnly = compactText(int(spec_.render.width), int(spec_.render.height));  // a column leaves no subject
   }
+  if (viewOnTheRight) blocks[0].bandOnly = true;
   return blocks;
 }
 
@@ -268,7 +277,10 @@ void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& fram
     list.views.push_back(v);
     const int view = int(list.views.size()) - 1;
     const std::size_t firstLabel = list.labels.size();
-    ball_->add(list, frame, view);
+    const glm::vec3 eye = v.camera.position;
+    ball_->add(list, frame, view,
+               camera_->cutsAway(frame.story) ? std::optional<geometry::Vec3>(geometry::Vec3(eye.x, eye.y, eye.z))
+                                              : std::nullopt);
     Occupancy ball(v.width, v.height);
     if (still) ball_->markImportant(ball, v, s, false);
     place(ballBlocks(frame, float(r.ball.width)), ballReserved_, ballLayout_, view, still ? &ball : nullptr);

@@ -55,6 +55,10 @@ struct Material {
   // Keep only the part with dot(cutPlane, (p, 1)) >= 0 (world p): a
   // cut-away, e.g. the near half of a sphere the ball rolls inside.
   glm::vec4 cutPlane{0.0f, 0.0f, 0.0f, 1.0f};
+  // A porthole towards a point a surface hides (w > 0): drop the part inside
+  // the cone from the view's eye through the sphere (xyz, radius w) that
+  // lies nearer the eye than its centre (draw/ marks its rim with a line).
+  glm::vec4 cutCone{0.0f};
   bool operator==(const Material&) const = default;
 };
 

@@ -72,6 +72,7 @@ void setMeshUniforms(Program& mesh, const Drawable& d, const DrawScope& scope, b
   mesh.set("shadowMap", 1);
   mesh.set("shadowFilterRadius", scope.shadow.filterRadius);
   mesh.set("cutPlane", m.cutPlane);
+  mesh.set("cutCone", m.cutCone);
   mesh.set("twoSided", m.cull == Cull::None ? 1 : 0);
   mesh.set("backFacesShown", m.cull == Cull::Front ? 1 : 0);
   mesh.set("worldFromModel", d.worldFromModel);
@@ -122,9 +123,13 @@ void Renderer::Impl::drawMesh(const Drawable& d, const DrawScope& scope, bool sh
   const std::optional<PixelRect> impostor = impostorRect(d, scope, clipToShadowBox);
   // Depth alone (drawOpaqueAtCentres) needs no shading; a ray-cast
   // sphere's depth comes from its fragment stage.
-  Program& mesh = scope.depthOnly && !impostor ? programs.depth
-                                               : programs.mesh(pattern, shadowOn && m.lit, m.lit, m.specular > 0.0f,
-                                                               impostor ? 1 : 0, d.litPerVertex);
+  // (A porthole is cut in the depth pass too: the shading program, whose
+  // colour the pass does not write.)
+  const bool coneCut = m.cutCone.w > 0.0f && !impostor;
+  Program& mesh = scope.depthOnly && !impostor && !coneCut
+                      ? programs.depth
+                      : programs.mesh(pattern, shadowOn && m.lit, m.lit, m.specular > 0.0f, impostor ? 1 : 0,
+                                      d.litPerVertex, false, coneCut);
   mesh.use();
   setMeshUniforms(mesh, d, scope, clipToShadowBox);
   if (impostor) {

@@ -14,15 +14,16 @@ Programs::Programs(const ShaderLibrary& lib)
       library_(lib) {}
 
 Program& Programs::mesh(int pattern, bool shadowed, bool lit, bool specular, int impostor, bool vertexLit,
-                        bool capture) {
-  const int key = (capture ? 256 : 0) + (vertexLit ? 128 : 0) + impostor * 32 + pattern * 8 + (shadowed ? 4 : 0) +
-                  (lit ? 2 : 0) + (specular ? 1 : 0);
+                        bool capture, bool coneCut) {
+  const int key = (coneCut ? 512 : 0) + (capture ? 256 : 0) + (vertexLit ? 128 : 0) + impostor * 32 + pattern * 8 +
+                  (shadowed ? 4 : 0) + (lit ? 2 : 0) + (specular ? 1 : 0);
   auto it = meshVariants_.find(key);
   if (it == meshVariants_.end()) {
     const std::string defines = fmt::format(
         "#define PATTERN {}\n#define SHADOWED {}\n#define LIT {}\n#define SPECULAR {}\n#define IMPOSTOR {}\n"
-        "#define VERTEX_LIT {}\n#define CAPTURE {}\n",
-        pattern, shadowed ? 1 : 0, lit ? 1 : 0, specular ? 1 : 0, impostor, vertexLit ? 1 : 0, capture ? 1 : 0);
+        "#define VERTEX_LIT {}\n#define CAPTURE {}\n#define CONE_CUT {}\n",
+        pattern, shadowed ? 1 : 0, lit ? 1 : 0, specular ? 1 : 0, impostor, vertexLit ? 1 : 0, capture ? 1 : 0,
+        coneCut ? 1 : 0);
     it = meshVariants_
              .emplace(key, Program(library_, impostor != 0 ? "impostor.vert" : "mesh.vert", "mesh.frag", {}, defines))
              .first;

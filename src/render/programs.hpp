@@ -20,8 +20,9 @@ class Programs {
   // under what is drawn (see drawImpostor); see mesh.frag.
   // `vertexLit`: lit per vertex with the highlight (an arrow's own meshes).
   // `capture`: a translucent sphere's capture (see glass_capture.hpp).
+  // `coneCut`: the material's porthole (Material::cutCone) is cut out.
   Program& mesh(int pattern, bool shadowed, bool lit, bool specular, int impostor = 0, bool vertexLit = false,
-                bool capture = false);
+                bool capture = false, bool coneCut = false);
   // resolve.frag for `samples` (made again when that changes).
   Program& resolve(int samples);
 

@@ -125,6 +125,16 @@ void wrapToWidth(TextBlock& block, float maxWidth, float minSizePx) {
       lines.push_back(line);
       continue;
     }
+    // A view's heading is a name of two words ("rolling ball"): broken in
+    // two it reads as two lines of text, so it shrinks to fit (to the least
+    // size) rather than wrap. Longer bold lines (captions) wrap.
+    if (line.bold && std::count(line.text.begin(), line.text.end(), ' ') <= 1 &&
+        line.sizePx * room / widest(line) >= minSizePx) {
+      TextLine smaller = line;
+      smaller.sizePx = line.sizePx * room / widest(line);
+      lines.push_back(smaller);
+      continue;
+    }
     // The slack a running value needs comes off the room it breaks in.
     const float slack = widest(line) - textWidthPx(line.text, line.sizePx, line.bold);
     const std::vector<std::string> parts = wrapText(line.text, line.sizePx, line.bold, room - slack, block.centred);

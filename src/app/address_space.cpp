@@ -14,15 +14,27 @@ namespace rollspin::app {
 
 namespace {
 constexpr std::uint64_t kMiB = 1ULL << 20;
+constexpr unsigned kLlvmpipeMaxThreads = 32;  // LP_MAX_THREADS
+// Planned per thread (stack and heap, with room to spare) ...
 constexpr std::uint64_t kBytesPerLlvmpipeThread = 32 * kMiB;
+// ... and counted by the memory check (measured 17 MB, rounded up).
+constexpr std::uint64_t kDriverBaseBytes = 180 * kMiB, kDriverBytesPerThread = 20 * kMiB;
+
+// The threads llvmpipe will start: LP_NUM_THREADS, else one a core.
+unsigned llvmpipeThreads() {
+  if (const char* chosen = std::getenv("LP_NUM_THREADS"))
+    return unsigned(std::clamp(std::strtol(chosen, nullptr, 10), 1L, long(kLlvmpipeMaxThreads)));
+  return std::clamp(std::thread::hardware_concurrency(), 1U, kLlvmpipeMaxThreads);
+}
 }  // namespace
 
 AddressSpacePlan planForAddressSpace(std::optional<std::uint64_t> limitBytes, unsigned cores, bool userChoseThreads) {
   AddressSpacePlan plan;
   if (!limitBytes) return plan;
   plan.oneArena = true;
-  const unsigned usable = std::clamp(cores, 1U, 32U);
-  const auto fit = static_cast<unsigned>(std::clamp<std::uint64_t>(*limitBytes / 4 / kBytesPerLlvmpipeThread, 1, 32));
+  const unsigned usable = std::clamp(cores, 1U, kLlvmpipeMaxThreads);
+  const auto fit =
+      unsigned(std::clamp<std::uint64_t>(*limitBytes / 4 / kBytesPerLlvmpipeThread, 1, kLlvmpipeMaxThreads));
   if (!userChoseThreads && fit < usable) plan.llvmpipeThreads = static_cast<int>(fit);
   return plan;
 }
@@ -49,10 +61,7 @@ std::uint64_t glDriverAddressSpaceBytes() {
   // (rendererBytes) count about 100 MB; the rest is the driver's own: its
   // code, its compiler's heaps, its threads. Rounded up, so that a render
   // the check lets through does not run out inside the driver.
-  const char* threads = std::getenv("LP_NUM_THREADS");
-  const std::uint64_t count = threads != nullptr ? std::uint64_t(std::clamp(std::strtol(threads, nullptr, 10), 1L, 32L))
-                                                : std::clamp(std::thread::hardware_concurrency(), 1U, 32U);
-  return 180 * kMiB + count * 20 * kMiB;
+  return kDriverBaseBytes + llvmpipeThreads() * kDriverBytesPerThread;
 }
 
 }  // namespace rollspin::app

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <string>
 
-#include "app/address_space.hpp"
 #include "app/job_setup.hpp"
 #include "app/render_jobs.hpp"
 #include "core/error.hpp"
@@ -49,8 +48,7 @@ void checkFigureSpec(const scene::SceneSpec& spec) {
   // still's) plus the two images and two depth buffers the figure keeps
   // (16 bytes per pixel).
   const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
-  std::uint64_t needed = rendererBytes(pixels, spec.render.msaa) + pixels * 16ULL;
-  if (addressSpaceLimitBytes()) needed += glDriverAddressSpaceBytes();
+  const std::uint64_t needed = rendererBytes(pixels, spec.render.msaa) + pixels * 16ULL;
   const auto available = availableMemoryBytes();
   if (available && needed > *available)
     throw badInput(spec.where(spec.locations.contains("render.dpi") ? "render.dpi" : "figure.width_mm"),

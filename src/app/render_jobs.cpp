@@ -80,16 +80,15 @@ std::uint64_t rendererBytes(std::uint64_t pixels, int msaa) {
   // one-sample scene's colour and depth, the rows read back (composited on
   // the CPU), the retained layer's image, the image and the PNG rows (4
   // bytes each); plus a fixed 96 MiB for the shadow map, the GL stack and
-  // the meshes.
-  return pixels * (8ULL * static_cast<std::uint64_t>(msaa) + 24ULL) + (96ULL << 20);
+  // the meshes; under ulimit -v, the driver's own reservations too.
+  const std::uint64_t driver = addressSpaceLimitBytes() ? glDriverAddressSpaceBytes() : 0;
+  return pixels * (8ULL * static_cast<std::uint64_t>(msaa) + 24ULL) + (96ULL << 20) + driver;
 }
 
 void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerPixel) {
   // Refused before a context is created when it cannot fit.
   const std::uint64_t pixels = static_cast<std::uint64_t>(spec.render.width) * spec.render.height;
-  std::uint64_t needed = rendererBytes(pixels, spec.render.msaa) + pixels * extraBytesPerPixel;
-  // Under ulimit -v the driver's own reservations count too.
-  if (addressSpaceLimitBytes()) needed += glDriverAddressSpaceBytes();
+  const std::uint64_t needed = rendererBytes(pixels, spec.render.msaa) + pixels * extraBytesPerPixel;
   const auto available = availableMemoryBytes();
   if (available && needed > *available) {
     const std::string key = spec.locations.contains("render.height") ? "render.height" : "render.width";

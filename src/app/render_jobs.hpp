@@ -57,7 +57,8 @@ struct StillOptions {
 // animation's frame queue, colour conversion and x264's look-ahead).
 void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerPixel = 0);
 // What the renderer's buffers take for `pixels` pixels at `msaa` samples,
-// as checkFrameMemory counts them.
+// as checkFrameMemory counts them, and under ulimit -v the GL driver's own
+// address space (app/address_space.hpp).
 [[nodiscard]] std::uint64_t rendererBytes(std::uint64_t pixels, int msaa);
 
 // The job's output format (media/output_format.hpp: render.format, the -o

@@ -25,13 +25,41 @@ void Occupancy::disc(glm::vec2 c, float r) {
   const int x0 = int(std::floor((c.x - r) / cell_)), x1 = int(std::floor((c.x + r) / cell_));
   const int y0 = int(std::floor((c.y - r) / cell_)), y1 = int(std::floor((c.y + r) / cell_));
   if (x1 < 0 || y1 < 0 || x0 >= cellsX_ || y0 >= cellsY_) return;
-  for (int y = std::max(y0, 0); y <= std::min(y1, cellsY_ - 1); ++y)
-    for (int x = std::max(x0, 0); x <= std::min(x1, cellsX_ - 1); ++x) {
-      // The cell's nearest point to the centre.
+  const int xMin = std::max(x0, 0), xMax = std::min(x1, cellsX_ - 1);
+  const float r2 = r * r;
+  for (int y = std::max(y0, 0); y <= std::min(y1, cellsY_ - 1); ++y) {
+    // A cell is marked when its nearest point to the centre lies within r.
+    const float ny = std::clamp(c.y, float(y) * cell_, float(y + 1) * cell_);
+    const float dy2 = (ny - c.y) * (ny - c.y);
+    if (dy2 > r2) continue;
+    auto inside = [&](int x) {
       const float nx = std::clamp(c.x, float(x) * cell_, float(x + 1) * cell_);
-      const float ny = std::clamp(c.y, float(y) * cell_, float(y + 1) * cell_);
-      if ((nx - c.x) * (nx - c.x) + (ny - c.y) * (ny - c.y) <= r * r) mark(x, y);
+      return (nx - c.x) * (nx - c.x) + dy2 <= r2;
+    };
+    // The marked cells of a row are one run (the distance grows away from
+    // the centre's cell): its ends from the chord's half-width, then moved
+    // to where the test itself flips, so the run is exactly the cells the
+    // test accepts, found in a few tests rather than one per cell (a disc
+    // as wide as the ball spans hundreds of cells, and the layout marks
+    // thousands of them for every window it tries).
+    const float half = std::sqrt(std::max(0.0f, r2 - dy2));
+    int lo = std::clamp(int(std::ceil((c.x - half) / cell_)) - 1, xMin, xMax);
+    int hi = std::clamp(int(std::floor((c.x + half) / cell_)), xMin, xMax);
+    if (lo > hi) std::swap(lo, hi);
+    while (lo > xMin && inside(lo - 1)) --lo;
+    while (lo <= hi && !inside(lo)) ++lo;
+    while (hi < xMax && inside(hi + 1)) ++hi;
+    while (hi >= lo && !inside(hi)) --hi;
+    if (lo > hi) {
+      // The estimate missed a run of a cell or two (rounding at a chord
+      // shorter than a cell): test the row's cells one by one.
+      for (int x = xMin; x <= xMax; ++x)
+        if (inside(x)) mark(x, y);
+      continue;
     }
+    std::fill_n(cells_.begin() + std::ptrdiff_t(std::size_t(y) * std::size_t(cellsX_) + std::size_t(lo)), hi - lo + 1,
+                static_cast<unsigned char>(1));
+  }
 }
 
 void Occupancy::rect(glm::vec2 lo, glm::vec2 hi) {
@@ -368,12 +396,23 @@ ViewLayout layOutBlocks(int w, int h, const std::vector<TextBlock>& given,
 ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
                       const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow,
                       double minWindow) {
+  // The passes below try the same windows again (each starts from the
+  // whole view; a dropped line starts over): each window's occupancy is
+  // computed once. It is a function of the window alone, and costly (the
+  // ball, its trail and the path as seen from every camera of the clip).
+  std::vector<std::pair<NdcWindow, Occupancy>> seen;
+  const std::function<Occupancy(const NdcWindow&)> occupancyOnce = [&](const NdcWindow& window) {
+    for (const auto& [known, occupancy] : seen)
+      if (sameWindow(known, window)) return occupancy;
+    seen.emplace_back(window, occupancyFor(window));
+    return seen.back().second;
+  };
   bool clear = false;
-  ViewLayout layout = layOutBlocks(w, h, blocks, occupancyFor, fixedWindow, minWindow, clear);
+  ViewLayout layout = layOutBlocks(w, h, blocks, occupancyOnce, fixedWindow, minWindow, clear);
   // Text over the subject is worse than a smaller subject: where even the
   // lines that must stay find no room, allow the narrowest window.
   constexpr double kNarrowest = 0.6;
-  if (!clear && minWindow > kNarrowest) layout = layOutBlocks(w, h, blocks, occupancyFor, fixedWindow, kNarrowest, clear);
+  if (!clear && minWindow > kNarrowest) layout = layOutBlocks(w, h, blocks, occupancyOnce, fixedWindow, kNarrowest, clear);
   // Still no room (large text in a small figure): the lines each block
   // keeps give way too, down to its first (a heading, a caption's first
   // line with the rest of it), rather than lie over the subject.
@@ -385,7 +424,7 @@ ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
       b.keep = std::min(b.keep, first);
     }
     bool fewerClear = false;
-    ViewLayout relaxed = layOutBlocks(w, h, fewer, occupancyFor, fixedWindow, kNarrowest, fewerClear);
+    ViewLayout relaxed = layOutBlocks(w, h, fewer, occupancyOnce, fixedWindow, kNarrowest, fewerClear);
     if (fewerClear) layout = relaxed;
   }
   return layout;

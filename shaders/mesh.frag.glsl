@@ -6,7 +6,7 @@
 // Compiled in variants (the renderer prepends the defines): llvmpipe runs
 // both sides of every branch, even on uniforms, so features a draw does not
 // use must be compiled out, not skipped.
-//   PATTERN  0 plain, 1 checker, 2 texture
+//   PATTERN  0 plain, 1 checker, 2 texture, 3 solid checker (world cubes)
 //   SHADOWED 1: sample the shadow map
 //   LIT      0: flat colour (no lighting)
 //   SPECULAR 0: no highlight, and lit per vertex (see mesh.vert)
@@ -101,11 +101,24 @@ layout(location = 1) out float capturedDepth;
 #include "srgb"
 #include "light"
 
-// Box-filtered checker (no aliasing at grazing angles).
+// Box-filtered checker (no aliasing at grazing angles). A box filter still
+// lets through some of a pattern finer than the pixels (its sidelobes beat
+// with the pixel grid: moiré on a steep wall whose cells are stretched), so
+// the contrast fades to the mean as a cell's footprint shrinks from two
+// pixels to one, where no checker can be shown anyway.
 float checker(vec2 p) {
   vec2 w = abs(dFdx(p)) + abs(dFdy(p)) + 0.001;
   vec2 i = 2.0 * (abs(fract((p - 0.5 * w) * 0.5) - 0.5) - abs(fract((p + 0.5 * w) * 0.5) - 0.5)) / w;
-  return 0.5 - 0.5 * i.x * i.y;
+  float contrast = 1.0 - smoothstep(0.5, 1.0, max(w.x, w.y));
+  return 0.5 - 0.5 * i.x * i.y * contrast;
+}
+
+// The same filter in three dimensions: cubes in world space.
+float solidChecker(vec3 p) {
+  vec3 w = abs(dFdx(p)) + abs(dFdy(p)) + 0.001;
+  vec3 i = 2.0 * (abs(fract((p - 0.5 * w) * 0.5) - 0.5) - abs(fract((p + 0.5 * w) * 0.5) - 0.5)) / w;
+  float contrast = 1.0 - smoothstep(0.5, 1.0, max(w.x, max(w.y, w.z)));
+  return 0.5 - 0.5 * i.x * i.y * i.z * contrast;
 }
 
 #if SHADOWED
@@ -204,6 +217,8 @@ void main() {
   float alpha = opacity;
 #if PATTERN == 1
   albedo = mix(color, color2, checker(vUv * patternScale));
+#elif PATTERN == 3
+  albedo = mix(color, color2, solidChecker(vWorldPosition * patternScale.x));
 #elif PATTERN == 2 && IMPOSTOR
   vec4 t = textureGrad(albedoTexture, vUv, seamless(dFdx(vUv), latitudeRadius), seamless(dFdy(vUv), latitudeRadius));
   albedo = t.rgb * color;
@@ -221,11 +236,15 @@ void main() {
   vec3 light = vAmbient + (1.0 - ambient) * lightColor * vNdl * shadowFactor(vNdl);
 #if PATTERN == 1
   vec3 srgb = mix(encodeSrgb(color * light), encodeSrgb(color2 * light), checker(vUv * patternScale));
+#elif PATTERN == 3
+  vec3 srgb = mix(encodeSrgb(color * light), encodeSrgb(color2 * light), solidChecker(vWorldPosition * patternScale.x));
 #else
   vec3 srgb = encodeSrgb(albedo * light);
 #endif
 #elif PATTERN == 1
   vec3 srgb = mix(vLitSrgb, vLitSrgb2, checker(vUv * patternScale));
+#elif PATTERN == 3
+  vec3 srgb = mix(vLitSrgb, vLitSrgb2, solidChecker(vWorldPosition * patternScale.x));
 #elif PATTERN == 2
   vec3 srgb = encodeSrgb(albedo * (vAmbient + (1.0 - ambient) * lightColor * vNdl));
 #else

@@ -19,6 +19,10 @@
 
 namespace rollspin::draw {
 
+// A chart whose cells differ in size by more than this over the meshed box
+// is shown with the world-space checker (see BallView's surface mesh).
+constexpr double kChartStretchForSolidChecker = 4.0;
+
 using geometry::Vec3;
 using motion::FrameOrientations;
 using motion::MarksFact;
@@ -193,6 +197,24 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
           std::clamp(int(cellsU * 4), 16, 256), std::clamp(int(cellsV * 4), 16, 256), glm::vec2(cellsU, cellsV));
       surfaceMaterial_.color = {0.78f, 0.77f, 0.74f};
       surfaceMaterial_.color2 = {0.55f, 0.57f, 0.60f};
+      // The chart's cells are about R where the path runs; where its
+      // stretch varies a lot over the box (a steep height field: an x-cell
+      // on the paraboloid's wall is R/27 across and long down the slope,
+      // fine stripes that beat with the pixels), world cubes of R show
+      // cells of about R everywhere instead.
+      double shortest = 1e300, longest = 0.0;
+      for (int i = 0; i <= 8; ++i)
+        for (int k = 0; k <= 8; ++k) {
+          const geometry::SurfaceJet j = surface.jet(geometry::Vec2(u0 + (u1 - u0) * i / 8.0, v0 + (v1 - v0) * k / 8.0));
+          for (const double edge : {j.xu.norm() * (u1 - u0) / cellsU, j.xv.norm() * (v1 - v0) / cellsV}) {
+            shortest = std::min(shortest, edge);
+            longest = std::max(longest, edge);
+          }
+        }
+      if (longest > kChartStretchForSolidChecker * shortest) {
+        surfaceMaterial_.pattern = render::Pattern::SolidChecker;
+        surfaceMaterial_.patternScale = glm::vec2(float(1.0 / R));
+      }
       for (const auto& v : surfaceMesh_->vertices) {
         const Vec3 p(v.position.x, v.position.y, v.position.z);
         lo = lo.cwiseMin(p);

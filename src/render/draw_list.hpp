@@ -33,7 +33,10 @@ struct TextureImage {
   std::vector<std::uint8_t> rgba;
 };
 
-enum class Pattern { Plain, Checker, Texture };
+// SolidChecker: cubes of 1 / patternScale.x in world space, for a surface
+// whose chart stretches its cells (a steep height field): where the surface
+// meets the cubes, cells of about that size whatever the slope.
+enum class Pattern { Plain, Checker, Texture, SolidChecker };
 enum class Cull { Back, Front, None };
 
 struct Material {
@@ -43,7 +46,7 @@ struct Material {
   float specular = 0.25f;
   float shininess = 48.0f;
   Pattern pattern = Pattern::Plain;
-  glm::vec2 patternScale{1.0f};  // Checker: cells per unit of uv
+  glm::vec2 patternScale{1.0f};  // Checker: cells per unit of uv; SolidChecker: cells per world unit (x)
   std::shared_ptr<const TextureImage> texture;  // Pattern::Texture
   bool lit = true;
   bool castsShadow = true;

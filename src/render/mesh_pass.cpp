@@ -114,7 +114,7 @@ std::vector<Drawable> Renderer::Impl::drawablesOf(const DrawList& list, int view
 void Renderer::Impl::drawMesh(const Drawable& d, const DrawScope& scope, bool shadowOn, Cull cull,
                               bool clipToShadowBox) {
   const Material& m = *d.material;
-  int pattern = m.pattern == Pattern::Checker ? 1 : 0;
+  int pattern = m.pattern == Pattern::Checker ? 1 : m.pattern == Pattern::SolidChecker ? 3 : 0;
   if (m.pattern == Pattern::Texture && m.texture) {
     pattern = 2;
     glActiveTexture(GL_TEXTURE0);

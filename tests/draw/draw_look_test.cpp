@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <set>
 #include <string>
@@ -137,6 +138,60 @@ TEST(BallView, AnglesAreMeshedOnceRound) {
   expectSurfaceMeshedOnce("scenes/torus.toml", [](const render::MeshData&) {
     return 4.0 * std::numbers::pi * std::numbers::pi * 4.0 * 1.5;  // A = 4, a = 1.5
   });
+}
+
+// A curved surface meshed in its own chart shows checker cells of about the
+// ball's radius all over: within a factor 4.5 of R along both chart
+// directions, or, where the chart stretches its cells more than that (the
+// steep paraboloid: an x-cell on its wall was R/27 across, fine stripes
+// with moiré), world-space cubes of R.
+TEST(BallView, ChartCheckerCellsAreAboutTheBallsRadius) {
+  int charts = 0, solid = 0;
+  for (const auto& e : std::filesystem::directory_iterator(test::sourceDir() / "scenes")) {
+    if (e.path().extension() != ".toml") continue;
+    const Loaded l = load(std::filesystem::relative(e.path(), test::sourceDir()).string());
+    if (!l.model.surface || l.model.surface->look().mesh != geometry::SurfaceLook::Mesh::Chart) continue;
+    const SceneDrawer drawer(l.spec, l.model, nullptr);
+    const render::DrawList list = drawer.draw(solveFrame(l.spec, l.model, 0.0));
+    const double R = l.model.ballRadius;
+    const std::string name = e.path().stem().string();
+    const render::MeshItem* surfaceItem = nullptr;
+    for (const render::MeshItem& m : list.meshes)
+      if (m.material.receivesShadow &&
+          (m.material.pattern == render::Pattern::Checker || m.material.pattern == render::Pattern::SolidChecker))
+        surfaceItem = &m;
+    ASSERT_NE(surfaceItem, nullptr) << name;
+    ++charts;
+    if (surfaceItem->material.pattern == render::Pattern::SolidChecker) {
+      ++solid;
+      EXPECT_NEAR(surfaceItem->material.patternScale.x, 1.0 / R, 1e-6 / R) << name;
+      continue;
+    }
+    // Each triangle's cell edges: the chart's Jacobian from its corners
+    // (one unit of uv is one cell).
+    double shortest = 1e300, longest = 0.0;
+    const render::MeshData& mesh = *surfaceItem->mesh;
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+      const render::Vertex& a = mesh.vertices[mesh.indices[t]];
+      const render::Vertex& b = mesh.vertices[mesh.indices[t + 1]];
+      const render::Vertex& c = mesh.vertices[mesh.indices[t + 2]];
+      const glm::dmat2 uvEdges(glm::dvec2(b.uv - a.uv), glm::dvec2(c.uv - a.uv));
+      if (std::abs(glm::determinant(uvEdges)) < 1e-12) continue;
+      const glm::dmat2 inverse = glm::inverse(uvEdges);
+      const glm::dvec3 e1(b.position - a.position), e2(c.position - a.position);
+      for (int k = 0; k < 2; ++k) {
+        // d position / d uv_k = e1 · inverse[k][0] + e2 · inverse[k][1]
+        const double edge = glm::length(e1 * inverse[k][0] + e2 * inverse[k][1]) *
+                            double(k == 0 ? surfaceItem->material.patternScale.x : surfaceItem->material.patternScale.y);
+        shortest = std::min(shortest, edge);
+        longest = std::max(longest, edge);
+      }
+    }
+    EXPECT_GT(shortest, R / 4.5) << name << ": a checker cell is " << shortest / R << " R across";
+    EXPECT_LT(longest, 4.5 * R) << name << ": a checker cell is " << longest / R << " R long";
+  }
+  EXPECT_GE(charts, 8);
+  EXPECT_GE(solid, 1);  // paraboloid-story
 }
 
 // A growing line (trail, travelled path) is drawn as a static settled prefix

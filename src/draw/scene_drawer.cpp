@@ -5,7 +5,6 @@
 
 #include "draw/draw_style.hpp"
 #include "draw/label_placement.hpp"
-#include "draw/occupancy_memo.hpp"
 #include "draw/text_blocks.hpp"
 #include "render/mesh_builders.hpp"
 
@@ -206,9 +205,7 @@ void SceneDrawer::layOut(const RollingModel& model) {
       }
       return occupancy;
     };
-    // (Each window once: the search asks again for windows it has seen.)
-    ballLayout_ = layoutView(r.ball.width, r.ball.height, blocks, OccupancyMemo(occupancyFor), camera_->fixedByScene(),
-                             minWindow);
+    ballLayout_ = layoutView(r.ball.width, r.ball.height, blocks, occupancyFor, camera_->fixedByScene(), minWindow);
     camera_->setWindow(ballLayout_.window);
   }
   if (twin_) {
@@ -231,7 +228,7 @@ void SceneDrawer::layOut(const RollingModel& model) {
       twin_->markImportant(occupancy, scratch.views[0]);
       return occupancy;
     };
-    twinLayout_ = layoutView(r.twin.width, r.twin.height, blocks, OccupancyMemo(occupancyFor), false, minWindow);
+    twinLayout_ = layoutView(r.twin.width, r.twin.height, blocks, occupancyFor, false, minWindow);
     twin_->setWindow(twinLayout_.window);
   }
 }

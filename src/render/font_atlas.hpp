@@ -44,6 +44,21 @@ class FontAtlas {
   float pixelHeight_ = 0.0f, ascent_ = 0.0f;
 };
 
+// The advance widths alone of the glyphs a FontAtlas of the same font and
+// size bakes: what measuring text needs, without rasterising an atlas.
+// width(s) equals FontAtlas::layout(s, 0, 0, nullptr) to the bit (the same
+// glyph set, each advance scale · advanceWidth as stb_truetype packs it,
+// summed in the same order, unknown code points as '?').
+class FontAdvances {
+ public:
+  // Throws Error (Runtime) when the font cannot be read or parsed.
+  FontAdvances(const std::filesystem::path& fontFile, float pixelHeight);
+  [[nodiscard]] float width(std::string_view utf8) const;
+
+ private:
+  std::map<char32_t, float> advances_;
+};
+
 // The default label font (DejaVu Sans from fonts-dejavu-core).
 [[nodiscard]] std::filesystem::path defaultFontFile(bool bold);
 

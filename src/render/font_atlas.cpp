@@ -11,8 +11,11 @@
 #include <stb/stb_truetype.h>
 #pragma GCC diagnostic pop
 
+#include <algorithm>
 #include <fstream>
-#include <iterator>
+#include <map>
+#include <memory>
+#include <mutex>
 
 #include "core/error.hpp"
 
@@ -35,17 +38,14 @@ constexpr Range kRanges[] = {{0x20, 0x7E},     {0xA0, 0xFF},     {0x391, 0x3C9},
 // The font file's bytes and stb_truetype's view of them (which points into
 // the bytes: keep both together).
 struct LoadedFont {
-  std::vector<unsigned char> ttf;
+  std::shared_ptr<const std::vector<unsigned char>> ttf;
   stbtt_fontinfo info{};
 };
 
 void loadFont(const std::filesystem::path& fontFile, LoadedFont& font) {
-  std::ifstream in(fontFile, std::ios::binary);
-  if (!in)
-    throw runtimeError({fontFile.string()}, "cannot read the label font (install fonts-dejavu-core, or turn "
-                                            "labels off with render.labels = false)");
-  font.ttf.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  if (!stbtt_InitFont(&font.info, font.ttf.data(), stbtt_GetFontOffsetForIndex(font.ttf.data(), 0)))
+  font.ttf = fontFileBytes(fontFile);
+  const unsigned char* data = font.ttf->data();
+  if (font.ttf->empty() || !stbtt_InitFont(&font.info, data, stbtt_GetFontOffsetForIndex(data, 0)))
     throw runtimeError({fontFile.string()}, "not a TrueType font");
 }
 
@@ -74,6 +74,29 @@ long long packedArea(const stbtt_fontinfo& info, float scale) {
 }
 }  // namespace
 
+// Read once per process: the measuring advances and every atlas size read
+// the same two files (about 700 KiB each), and a file read through a
+// growing vector is copied over and over.
+std::shared_ptr<const std::vector<unsigned char>> fontFileBytes(const std::filesystem::path& fontFile) {
+  static std::mutex mutex;
+  static std::map<std::filesystem::path, std::shared_ptr<const std::vector<unsigned char>>> read;
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (const auto it = read.find(fontFile); it != read.end()) return it->second;
+  auto unreadable = [&] {
+    return runtimeError({fontFile.string()}, "cannot read the label font (install fonts-dejavu-core, or turn "
+                                             "labels off with render.labels = false)");
+  };
+  // Opened at its end: the size first, then one read into one allocation.
+  std::ifstream in(fontFile, std::ios::binary | std::ios::ate);
+  if (!in) throw unreadable();
+  auto bytes = std::make_shared<std::vector<unsigned char>>(
+      static_cast<std::size_t>(std::max<std::streamoff>(in.tellg(), 0)));
+  in.seekg(0);
+  in.read(reinterpret_cast<char*>(bytes->data()), static_cast<std::streamsize>(bytes->size()));
+  if (!in) throw unreadable();
+  return read.emplace(fontFile, std::move(bytes)).first->second;
+}
+
 std::u32string decodeUtf8(std::string_view s) {
   std::u32string out;
   for (std::size_t i = 0; i < s.size();) {
@@ -100,7 +123,7 @@ std::filesystem::path defaultFontFile(bool bold) {
 FontAtlas::FontAtlas(const std::filesystem::path& fontFile, float pixelHeight) : pixelHeight_(pixelHeight) {
   LoadedFont font;
   loadFont(fontFile, font);
-  const std::vector<unsigned char>& ttf = font.ttf;
+  const std::vector<unsigned char>& ttf = *font.ttf;
   const stbtt_fontinfo& info = font.info;
   int ascent = 0, descent = 0, gap = 0;
   stbtt_GetFontVMetrics(&info, &ascent, &descent, &gap);

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -58,6 +59,11 @@ class FontAdvances {
  private:
   std::map<char32_t, float> advances_;
 };
+
+// A font file's bytes, read on the first call for that path and shared
+// after it (FontAtlas and FontAdvances parse them). Throws Error (Runtime)
+// when the file cannot be read.
+[[nodiscard]] std::shared_ptr<const std::vector<unsigned char>> fontFileBytes(const std::filesystem::path& fontFile);
 
 // The default label font (DejaVu Sans from fonts-dejavu-core).
 [[nodiscard]] std::filesystem::path defaultFontFile(bool bold);

@@ -4,8 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
+#include "core/error.hpp"
 #include "model/rolling_model.hpp"
 #include "render/font_atlas.hpp"
 #include "support/test_files.hpp"
@@ -97,6 +100,21 @@ TEST(FontAdvances, MeasureExactlyAsTheAtlasLaysOut) {
       for (const std::string line : {"s = 3.78 of 18.85", "ψ = −521.5°, ⟨ψ|σ|ψ⟩ ≈ 0.25 ℏ", "Landau–Zener → |1⟩", "\xff?"})
         EXPECT_EQ(advances.width(line), atlas.layout(line, 0.0f, 0.0f, nullptr)) << line;
     }
+}
+
+// The font file is read once per process and its bytes shared: the same
+// bytes as the file, the same buffer on every later call.
+TEST(FontAtlas, ReadsEachFontFileOnce) {
+  const fs::path file = render::defaultFontFile(true);
+  const auto first = render::fontFileBytes(file);
+  const render::FontAtlas atlas(file, 11.0f);
+  const render::FontAdvances advances(file, 64.0f);
+  EXPECT_EQ(render::fontFileBytes(file).get(), first.get());
+  ASSERT_EQ(first->size(), fs::file_size(file));
+  std::ifstream in(file, std::ios::binary);
+  const std::vector<unsigned char> direct((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_TRUE(direct == *first);
+  EXPECT_THROW((void)render::fontFileBytes("/nonexistent/font.ttf"), Error);
 }
 
 // The atlas starts at the first side whose square can hold its glyphs'

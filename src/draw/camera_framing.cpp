@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
+#include <tuple>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <numbers>
@@ -338,9 +340,12 @@ CameraFraming::Aim CameraFraming::aimOf(const Shot &shot, int w, int h, double s
   // projection is shifted off axis to put that centre there, ballCamera).
   const Lens lens = windowLens(window_, shot.fovDeg, double(w) / double(std::max(h, 1)));
   const double fovDeg = lens.fovDeg, aspect = lens.aspect;
-  auto [target, distance] = fitPoints(extent_.points, R, a, fovDeg, aspect);
-  if (!shot.follow && !shot.target) holdOutline(target, distance, a, fovDeg, aspect);
-  if (!shot.follow && !shot.target) keepOffViewEdges(target, distance, a, fovDeg, aspect);
+  // A camera that follows, or one whose target and distance the scene
+  // gives, uses nothing of the fit.
+  Vec3 target = Vec3::Zero();
+  double distance = 0.0;
+  if (!shot.follow && !(shot.target && shot.distance))
+    std::tie(target, distance) = framedFit(a, fovDeg, aspect, !shot.target);
   if (shot.follow) {
     target = model_.path->at(s).centre(R);
     distance = fitDistance(4.0 * R, fovDeg, aspect);
@@ -348,6 +353,26 @@ CameraFraming::Aim CameraFraming::aimOf(const Shot &shot, int w, int h, double s
   if (shot.target) target = *shot.target;
   if (shot.distance) distance = *shot.distance;
   return {target, distance, a.azimuth, a.elevation, shot.fovDeg};
+}
+
+std::pair<Vec3, double> CameraFraming::framedFit(const OrbitAngles &a, double fovDeg, double aspect, bool held) const {
+  const FitKey key{std::bit_cast<std::uint64_t>(a.azimuth), std::bit_cast<std::uint64_t>(a.elevation),
+                   std::bit_cast<std::uint64_t>(fovDeg),    std::bit_cast<std::uint64_t>(aspect),
+                   std::bit_cast<std::uint64_t>(window_.x0), std::bit_cast<std::uint64_t>(window_.x1),
+                   std::bit_cast<std::uint64_t>(window_.y0), std::bit_cast<std::uint64_t>(window_.y1),
+                   (std::uint64_t(innerEdges_.left) << 0) | (std::uint64_t(innerEdges_.right) << 1) |
+                       (std::uint64_t(innerEdges_.bottom) << 2) | (std::uint64_t(innerEdges_.top) << 3) |
+                       (std::uint64_t(held) << 4)};
+  const std::lock_guard<std::mutex> lock(fitsMutex_);
+  if (const auto it = fits_.find(key); it != fits_.end()) return it->second;
+  auto [target, distance] = fitPoints(extent_.points, model_.ballRadius, a, fovDeg, aspect);
+  if (held) {
+    holdOutline(target, distance, a, fovDeg, aspect);
+    keepOffViewEdges(target, distance, a, fovDeg, aspect);
+  }
+  if (fits_.size() >= kMaxFits) fits_.clear();
+  fits_.emplace(key, std::pair{target, distance});
+  return {target, distance};
 }
 
 namespace {

@@ -5,7 +5,11 @@
 // a camera. Plain geometry: no GL.
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <utility>
@@ -172,6 +176,17 @@ class CameraFraming {
   // The view direction at s through keyframes (mixed between neighbours).
   [[nodiscard]] static OrbitAngles along(const std::vector<Keyframe> &keys, double s);
   [[nodiscard]] Aim aimOf(const Shot &shot, int w, int h, double s) const;
+  // fitPoints, then (held: a free camera) holdOutline and keepOffViewEdges,
+  // for the orbit angles and lens: what aimOf frames the subject with. The
+  // same inputs give the same bits, so each distinct set is computed once
+  // (a layout samples the clip with up to 480 cameras of one shot).
+  [[nodiscard]] std::pair<geometry::Vec3, double> framedFit(const OrbitAngles &a, double fovDeg, double aspect,
+                                                            bool held) const;
+  // What framedFit depends on besides the subject, bit for bit: the angles,
+  // the lens, the window, the inner edges and `held`.
+  using FitKey = std::array<std::uint64_t, 9>;
+  // Bounded: a camera that turns with s adds an entry a frame.
+  static constexpr std::size_t kMaxFits = 4096;
   // Moves `target` across the view so that the outline stays inside the
   // inner edges, as far as the subject's points stay inside the window,
   // then steps back by up to kOutlineStepBack where it is still cut.
@@ -205,6 +220,8 @@ class CameraFraming {
   InnerEdges innerEdges_;
   std::vector<Shot> shots_;  // one per storyboard segment (one for a scene without segments)
   std::vector<std::string> hiddenWarnings_;
+  mutable std::mutex fitsMutex_;
+  mutable std::map<FitKey, std::pair<geometry::Vec3, double>> fits_;
 };
 
 }  // namespace rollspin::draw

@@ -96,13 +96,15 @@ bool Occupancy::anyIn(glm::vec2 lo, glm::vec2 hi) const {
 }
 
 // Measured at 64 px once per weight; advances scale with the size (the
-// atlas is not hinted), plus 2 % for rounding at small sizes.
+// atlas is not hinted), plus 2 % for rounding at small sizes. The advances
+// alone: a 64 px atlas's glyphs would be rasterised only to be measured.
 float textWidthPx(const std::string& text, float sizePx, bool bold) {
   static std::once_flag once[2];
-  static std::unique_ptr<render::FontAtlas> atlas[2];
+  static std::unique_ptr<render::FontAdvances> advances[2];
   const int k = bold ? 1 : 0;
-  std::call_once(once[k], [&] { atlas[k] = std::make_unique<render::FontAtlas>(render::defaultFontFile(bold), 64.0f); });
-  return atlas[k]->layout(text, 0.0f, 0.0f, nullptr) * sizePx / 64.0f * 1.02f;
+  std::call_once(once[k],
+                 [&] { advances[k] = std::make_unique<render::FontAdvances>(render::defaultFontFile(bold), 64.0f); });
+  return advances[k]->width(text) * sizePx / 64.0f * 1.02f;
 }
 
 std::vector<std::string> wrapText(const std::string& text, float sizePx, bool bold, float maxWidth, bool balanced) {

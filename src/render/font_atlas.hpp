@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -43,6 +44,26 @@ class FontAtlas {
   int width_ = 0, height_ = 0;
   float pixelHeight_ = 0.0f, ascent_ = 0.0f;
 };
+
+// The advance widths alone of the glyphs a FontAtlas of the same font and
+// size bakes: what measuring text needs, without rasterising an atlas.
+// width(s) equals FontAtlas::layout(s, 0, 0, nullptr) to the bit (the same
+// glyph set, each advance scale · advanceWidth as stb_truetype packs it,
+// summed in the same order, unknown code points as '?').
+class FontAdvances {
+ public:
+  // Throws Error (Runtime) when the font cannot be read or parsed.
+  FontAdvances(const std::filesystem::path& fontFile, float pixelHeight);
+  [[nodiscard]] float width(std::string_view utf8) const;
+
+ private:
+  std::map<char32_t, float> advances_;
+};
+
+// A font file's bytes, read on the first call for that path and shared
+// after it (FontAtlas and FontAdvances parse them). Throws Error (Runtime)
+// when the file cannot be read.
+[[nodiscard]] std::shared_ptr<const std::vector<unsigned char>> fontFileBytes(const std::filesystem::path& fontFile);
 
 // The default label font (DejaVu Sans from fonts-dejavu-core).
 [[nodiscard]] std::filesystem::path defaultFontFile(bool bold);

@@ -16,6 +16,10 @@ namespace {
 
 const glm::vec4 kCaptionColor{0.55f, 0.12f, 0.02f, 1.0f};
 
+// A figure's twin: the room left round its sphere's window for the axis
+// and pole labels, in em.
+constexpr double kTwinLabelMargin = 1.25;
+
 // A segment's caption: the lecturer's own text, so it shows even with
 // render.labels = false; top centre, else bottom centre.
 TextBlock captionBlock(const std::string& caption, float text, float leastPx, float viewWidth) {
@@ -229,6 +233,36 @@ void SceneDrawer::layOut(const RollingModel& model) {
       return occupancy;
     };
     twinLayout_ = layoutView(r.twin.width, r.twin.height, blocks, occupancyFor, false, minWindow);
+    // A figure's sphere fills the room its text leaves: the window grows
+    // from the layout's (which keeps the ball's gap of 2 em) to the largest
+    // rectangle clear of the plates, less a margin of 1.25 em all round
+    // where the axis and pole labels lie against the sphere.
+    if (twin_->closeLabels() && !r.inset) {
+      std::vector<std::pair<glm::vec2, glm::vec2>> plates;
+      bool roomForAll = true;
+      for (std::size_t i = 0; i < blocks.size() && i < twinLayout_.origins.size(); ++i) {
+        TextBlock shown = blocks[i];
+        if (shown.lines.size() > twinLayout_.lines[i]) shown.lines.resize(twinLayout_.lines[i]);
+        if (shown.lines.empty()) continue;
+        const glm::vec2 size(std::max(twinReserved_[i].x, blockSize(shown).x), blockSize(shown).y);
+        plates.emplace_back(twinLayout_.origins[i], twinLayout_.origins[i] + size);
+        // A block the layout found no room for (it lies partly off the
+        // view) finds its place in the still, beside the sphere: the
+        // layout's window stays.
+        if (glm::any(glm::lessThan(plates.back().first, glm::vec2(0.0f))) ||
+            plates.back().second.x > float(r.twin.width) || plates.back().second.y > float(r.twin.height))
+          roomForAll = false;
+      }
+      if (roomForAll) {
+        NdcWindow window = clearWindow(r.twin.width, r.twin.height, plates, 0.25f * text());
+        const double marginX = 2.0 * kTwinLabelMargin * text() / r.twin.width;
+        const double marginY = 2.0 * kTwinLabelMargin * text() / r.twin.height;
+        // (Never under a quarter of the view: a tiny view keeps a sphere.)
+        if (window.x1 - window.x0 - 2.0 * marginX >= 0.5 && window.y1 - window.y0 - 2.0 * marginY >= 0.5)
+          window = {window.x0 + marginX, window.x1 - marginX, window.y0 + marginY, window.y1 - marginY};
+        twinLayout_.window = window;
+      }
+    }
     twin_->setWindow(twinLayout_.window);
   }
 }

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
@@ -23,6 +24,7 @@
 #include "app/figure_job.hpp"
 #include "app/job_setup.hpp"
 #include "app/render_jobs.hpp"
+#include "draw/clip_layout.hpp"
 #include "support/pdf_text_boxes.hpp"
 #include "render/vector_figure.hpp"
 #include "support/cli_runner.hpp"
@@ -173,6 +175,71 @@ TEST(FigureLayout, TextStaysOnItsPlateAndLabelsOffArrowsAndPathsAtJournalSizes) 
     for (std::size_t p = 0; p < kSizesPt.size() && !test::sweepSampled(); ++p)
       EXPECT_GT(covered[w][p], 0) << kWidthsMm[w] << " mm at " << kSizesPt[p] << " pt is never drawn";
   std::printf("%d figures checked\n", figures);
+}
+
+// The Bloch sphere of a figure fills the room its text leaves. Room: the shorter side S
+// of the largest rectangle of the twin view clear of its text plates; the
+// sphere's projected diameter (its silhouette, from the view's camera) is at
+// least 0.8 (S − 3 em): the labels keep about 1.25 em all round it.
+void checkTwin(const render::DrawList& list, const FigureLayout& layout, const std::string& where) {
+  int twin = -1;
+  for (const render::LabelItem& l : list.labels)
+    if (l.worldAnchored && l.text == "|1⟩") twin = l.view;
+  if (twin < 0) {
+    for (const FigureLayout::Text& t : layout.texts) ASSERT_NE(t.text, "|1⟩") << where;
+    return;  // labels off
+  }
+  const render::View& v = list.views[std::size_t(twin)];
+  const double unit = layout.widthPt / double(list.width);  // points per layout pixel
+  const FigureBox& view = layout.views[std::size_t(twin)];
+  std::vector<std::pair<glm::vec2, glm::vec2>> plates;
+  for (const FigureBox& p : layout.plates)
+    if (p.x0 >= view.x0 - 0.5 && p.x1 <= view.x1 + 0.5 && p.y0 >= view.y0 - 0.5 && p.y1 <= view.y1 + 0.5)
+      plates.emplace_back(glm::vec2((p.x0 - view.x0) / unit, (p.y0 - view.y0) / unit),
+                          glm::vec2((p.x1 - view.x0) / unit, (p.y1 - view.y0) / unit));
+  const draw::NdcWindow room = draw::clearWindow(v.width, v.height, plates, 0.0f);
+  const double roomSide = std::min(0.5 * (room.x1 - room.x0) * v.width, 0.5 * (room.y1 - room.y0) * v.height);
+  // The unit sphere's silhouette: its points' projected extent.
+  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+  glm::dvec2 lo(1e30), hi(-1e30);
+  for (int i = 0; i <= 90; ++i)
+    for (int j = 0; j < 180; ++j) {
+      const double theta = M_PI * i / 90.0, phi = 2.0 * M_PI * j / 180.0;
+      const glm::vec4 c = clipFromWorld * glm::vec4(float(std::sin(theta) * std::cos(phi)),
+                                                    float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)), 1.0f);
+      const glm::dvec2 px((c.x / c.w * 0.5 + 0.5) * v.width, (0.5 - c.y / c.w * 0.5) * v.height);
+      lo = glm::min(lo, px), hi = glm::max(hi, px);
+    }
+  const double diameter = std::min(hi.x - lo.x, hi.y - lo.y);
+  float em = 0.0f;  // the labels' size in layout pixels
+  for (const render::LabelItem& l : list.labels)
+    if (l.view == twin && l.worldAnchored) em = std::max(em, l.sizePx);
+  EXPECT_GE(diameter, 0.8 * (roomSide - 3.0 * em))
+      << where << ": the sphere is " << diameter << " px across in a room " << roomSide << " px (em " << em << " px)";
+}
+
+TEST(FigureLayout, TheBlochSphereFillsTheRoomItsTextLeaves) {
+  const fs::path dir = test::freshTempDir("figure_twin");
+  std::vector<std::pair<std::string, std::vector<std::string>>> cases;
+  for (const auto& file : test::bundledSceneFiles()) cases.push_back({file.string(), {}});
+  cases.push_back({test::shippedScenePath("lollipop"), {"render.strobe=8"}});
+  for (const std::size_t i : test::sweepIndices(cases.size())) {
+    const auto& [scene, extra] = cases[i];
+    std::vector<std::string> overrides{"figure.font=Latin Modern Roman"};
+    overrides.insert(overrides.end(), extra.begin(), extra.end());
+    const fs::path pdf = dir / ("t" + std::to_string(i) + ".pdf");
+    app::DrawJob job = app::prepareDrawJob({scene, overrides, {}, {}, {}, false, pdf, media::OutputUse::Still, 0, {}});
+    for (std::size_t w = 0; w < kWidthsMm.size(); ++w) {
+      const double pt = sizeFor(i, w);
+      job.spec.figure.widthMm = kWidthsMm[w];
+      job.spec.figure.fontSizePt = pt;
+      app::fitTextToFigure(job.spec);
+      const render::DrawList list = app::drawStill(job, std::nullopt);
+      const FigureLayout layout = render::figureLayout(list, app::figureStyleOf(job.spec, list));
+      checkTwin(list, layout, fs::path(scene).stem().string() + (extra.empty() ? "" : " (strobe)") + " at " +
+                                  std::to_string(int(kWidthsMm[w])) + " mm, " + std::to_string(int(pt)) + " pt");
+    }
+  }
 }
 
 // The layout is what the figure draws: its text boxes hold the PDF's words

@@ -18,7 +18,7 @@ const glm::vec4 kCaptionColor{0.55f, 0.12f, 0.02f, 1.0f};
 
 // A figure's twin: the room left round its sphere's window for the axis
 // and pole labels, in em.
-constexpr double kTwinLabelMargin = 1.25;
+constexpr double kTwinLabelMargin = 0.9;
 
 // A segment's caption: the lecturer's own text, so it shows even with
 // render.labels = false; top centre, else bottom centre.
@@ -46,13 +46,15 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
   markerBody_ = spec.ball.marker ? Vec3((*spec.ball.marker)[0], (*spec.ball.marker)[1], (*spec.ball.marker)[2])
                                  : start.normal;
   markerBody_.normalize();
-  titleBand_ = !spec.render.title.empty();
+  titleBand_ = !shownTitle(spec.render.title).empty();
   for (const scene::SegmentSpec& seg : spec.segments)
-    if (seg.title && !seg.title->empty()) titleBand_ = true;
+    if (seg.title && !shownTitle(*seg.title).empty()) titleBand_ = true;
   // The band is as tall as the longest title of the clip needs.
   auto countLines = [&](const std::string& title) {
-    if (title.empty()) return;
-    titleLines_ = std::max(titleLines_, draw::titleLines(title, text(), float(spec.render.width), float(spec.render.height), leastText()).lines.size());
+    if (shownTitle(title).empty()) return;
+    titleLines_ = std::max(titleLines_, draw::titleLines(title, text(), float(spec.render.width), float(spec.render.height),
+                                                         leastText(), figure())
+                                            .lines.size());
   };
   countLines(spec.render.title);
   for (const scene::SegmentSpec& seg : spec.segments)
@@ -69,7 +71,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
 // The views' rectangles, as addViews cuts the image.
 SceneDrawer::Rects SceneDrawer::rects() const {
   const int W = int(spec_.render.width), H = int(spec_.render.height);
-  const int top = titleBand_ ? titleBandHeight(titleLines_, text()) : 0;
+  const int top = titleBand_ ? titleBandHeight(titleLines_, text(), figure()) : 0;
   const int bodyHeight = H - top;
   Rects r;
   switch (spec_.render.layout) {
@@ -102,6 +104,16 @@ SceneDrawer::Rects SceneDrawer::rects() const {
 // A figure's text never prints under 6 pt (figure_job sets the scale);
 // a clip's has no such floor.
 float SceneDrawer::leastText() const { return text() * float(spec_.render.leastTextScale); }
+
+bool SceneDrawer::figure() const { return spec_.render.leastTextScale > 0.0; }
+
+// A figure leaves out a title whose band would take over a fifth of its
+// height (a narrow column in large text): its caption says it.
+std::string SceneDrawer::shownTitle(const std::string& title) const {
+  if (title.empty() || !figure()) return title;
+  const bool fits = titleFitsFigure(title, text(), float(spec_.render.width), float(spec_.render.height), leastText());
+  return fits ? title : std::string();
+}
 
 float SceneDrawer::text() const { return bodyTextPx(int(spec_.render.width), int(spec_.render.height), spec_.render.fontScale); }
 
@@ -235,7 +247,7 @@ void SceneDrawer::layOut(const RollingModel& model) {
     twinLayout_ = layoutView(r.twin.width, r.twin.height, blocks, occupancyFor, false, minWindow);
     // A figure's sphere fills the room its text leaves: the window grows
     // from the layout's (which keeps the ball's gap of 2 em) to the largest
-    // rectangle clear of the plates, less a margin of 1.25 em all round
+    // rectangle clear of the plates, less a margin of 0.9 of a line (about 1.3 em) all round
     // where the axis and pole labels lie against the sphere.
     if (twin_->closeLabels() && !r.inset) {
       std::vector<std::pair<glm::vec2, glm::vec2>> plates;
@@ -280,7 +292,8 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
   const scene::SegmentSpec* segment =
       spec_.segments.empty() ? nullptr : &spec_.segments[std::min(frame.story.segment, spec_.segments.size() - 1)];
   if (titleBand_)
-    addTitleBand(list, segment && segment->title ? *segment->title : rs.title, text(), titleLines_, leastText());
+    addTitleBand(list, shownTitle(segment && segment->title ? *segment->title : rs.title), text(), titleLines_,
+                 leastText(), figure());
   addViews(list, frame);
   return list;
 }
@@ -339,7 +352,7 @@ void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& fram
     Occupancy sphere(twin.width, twin.height);
     if (still) twin_->markImportant(sphere, list.views[std::size_t(view)]);
     place(twinBlocks(frame, float(twin.width), r.inset), twinReserved_, twinLayout_, view, still ? &sphere : nullptr);
-    if (still) keepLabelsClear(list, view, firstLabel);
+    if (still) keepLabelsClear(list, view, firstLabel, twin_->closeLabels());
   }
 }
 

@@ -251,21 +251,19 @@ void SceneDrawer::layOut(const RollingModel& model) {
     // where the axis and pole labels lie against the sphere.
     if (twin_->closeLabels() && !r.inset) {
       std::vector<std::pair<glm::vec2, glm::vec2>> plates;
-      bool roomForAll = true;
       for (std::size_t i = 0; i < blocks.size() && i < twinLayout_.origins.size(); ++i) {
         TextBlock shown = blocks[i];
         if (shown.lines.size() > twinLayout_.lines[i]) shown.lines.resize(twinLayout_.lines[i]);
         if (shown.lines.empty()) continue;
         const glm::vec2 size(std::max(twinReserved_[i].x, blockSize(shown).x), blockSize(shown).y);
-        plates.emplace_back(twinLayout_.origins[i], twinLayout_.origins[i] + size);
         // A block the layout found no room for (it lies partly off the
-        // view) finds its place in the still, beside the sphere: the
-        // layout's window stays.
-        if (glm::any(glm::lessThan(plates.back().first, glm::vec2(0.0f))) ||
-            plates.back().second.x > float(r.twin.width) || plates.back().second.y > float(r.twin.height))
-          roomForAll = false;
+        // view) takes none: the still puts it where it is clear of the
+        // sphere, if anywhere (keepBlocksClear).
+        const glm::vec2 lo = twinLayout_.origins[i], hi = lo + size;
+        if (lo.x >= 0.0f && lo.y >= 0.0f && hi.x <= float(r.twin.width) && hi.y <= float(r.twin.height))
+          plates.emplace_back(lo, hi);
       }
-      if (roomForAll) {
+      {
         NdcWindow window = clearWindow(r.twin.width, r.twin.height, plates, 0.25f * text());
         const double marginX = 2.0 * kTwinLabelMargin * text() / r.twin.width;
         const double marginY = 2.0 * kTwinLabelMargin * text() / r.twin.height;

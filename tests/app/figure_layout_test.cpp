@@ -177,18 +177,26 @@ TEST(FigureLayout, TextStaysOnItsPlateAndLabelsOffArrowsAndPathsAtJournalSizes) 
   std::printf("%d figures checked\n", figures);
 }
 
-// The Bloch sphere of a figure fills the room its text leaves. Room: the shorter side S
-// of the largest rectangle of the twin view clear of its text plates; the
+// The Bloch sphere of a figure fills the room its text leaves. Room: the
+// shorter side S of the largest rectangle of the twin view clear of its text plates; the
 // sphere's projected diameter (its silhouette, from the view's camera) is at
-// least 0.8 (S − 3 em): the labels keep about 1.25 em all round it.
-void checkTwin(const render::DrawList& list, const FigureLayout& layout, const std::string& where) {
-  int twin = -1;
-  for (const render::LabelItem& l : list.labels)
-    if (l.worldAnchored && l.text == "|1⟩") twin = l.view;
-  if (twin < 0) {
-    for (const FigureLayout::Text& t : layout.texts) ASSERT_NE(t.text, "|1⟩") << where;
-    return;  // labels off
-  }
+// least 0.8 (S − 3 em, em here the labels' line height): the labels keep
+// about 0.9 of a line all round it.
+// Its labels: each drawn, its box (advance × ascent + descent) within
+// 3.5 em (the printed size) of its anchor (an axis's end, a pole), and
+// nine in ten of them within 1.5 em. A label keeps off the arrows and the
+// trails, which can crowd a pole seen from high above (the lollipop's
+// strobe): there the nearest clear place lies farther.
+constexpr double kCloseLabelEm = 1.5, kFarthestLabelEm = 3.5;
+struct LabelCount {
+  int count = 0, close = 0;
+};
+
+// The twin is the last view (scene_drawer); `labels`: the scene's labels are on.
+void checkTwin(const render::DrawList& list, const FigureLayout& layout, const std::string& where, bool labelsOn,
+               LabelCount& labels) {
+  ASSERT_FALSE(list.views.empty()) << where;
+  const int twin = int(list.views.size()) - 1;
   const render::View& v = list.views[std::size_t(twin)];
   const double unit = layout.widthPt / double(list.width);  // points per layout pixel
   const FigureBox& view = layout.views[std::size_t(twin)];
@@ -216,6 +224,20 @@ void checkTwin(const render::DrawList& list, const FigureLayout& layout, const s
     if (l.view == twin && l.worldAnchored) em = std::max(em, l.sizePx);
   EXPECT_GE(diameter, 0.8 * (roomSide - 3.0 * em))
       << where << ": the sphere is " << diameter << " px across in a room " << roomSide << " px (em " << em << " px)";
+  for (const char* name : {"x", "y", "z", "|0⟩", "|1⟩"}) {
+    if (!labelsOn) break;
+    const auto t = std::find_if(layout.texts.begin(), layout.texts.end(),
+                                [&](const FigureLayout::Text& x) { return x.view == twin && x.free && x.text == name; });
+    if (t == layout.texts.end()) {
+      ADD_FAILURE() << where << ": the label \"" << name << "\" is left out";
+      continue;
+    }
+    const glm::dvec2 nearest = glm::clamp(t->anchor, glm::dvec2(t->box.x0, t->box.y0), glm::dvec2(t->box.x1, t->box.y1));
+    const double ems = glm::length(nearest - t->anchor) / t->sizePt;
+    EXPECT_LE(ems, kFarthestLabelEm) << where << ": \"" << name << "\" lies " << ems << " em from its point";
+    ++labels.count;
+    if (ems <= kCloseLabelEm) ++labels.close;
+  }
 }
 
 TEST(FigureLayout, TheBlochSphereFillsTheRoomItsTextLeaves) {
@@ -223,12 +245,14 @@ TEST(FigureLayout, TheBlochSphereFillsTheRoomItsTextLeaves) {
   std::vector<std::pair<std::string, std::vector<std::string>>> cases;
   for (const auto& file : test::bundledSceneFiles()) cases.push_back({file.string(), {}});
   cases.push_back({test::shippedScenePath("lollipop"), {"render.strobe=8"}});
+  LabelCount labels;
   for (const std::size_t i : test::sweepIndices(cases.size())) {
     const auto& [scene, extra] = cases[i];
     std::vector<std::string> overrides{"figure.font=Latin Modern Roman"};
     overrides.insert(overrides.end(), extra.begin(), extra.end());
     const fs::path pdf = dir / ("t" + std::to_string(i) + ".pdf");
     app::DrawJob job = app::prepareDrawJob({scene, overrides, {}, {}, {}, false, pdf, media::OutputUse::Still, 0, {}});
+    if (job.spec.render.layout == scene::RenderLayout::Ball) continue;  // no sphere
     for (std::size_t w = 0; w < kWidthsMm.size(); ++w) {
       const double pt = sizeFor(i, w);
       job.spec.figure.widthMm = kWidthsMm[w];
@@ -236,10 +260,16 @@ TEST(FigureLayout, TheBlochSphereFillsTheRoomItsTextLeaves) {
       app::fitTextToFigure(job.spec);
       const render::DrawList list = app::drawStill(job, std::nullopt);
       const FigureLayout layout = render::figureLayout(list, app::figureStyleOf(job.spec, list));
-      checkTwin(list, layout, fs::path(scene).stem().string() + (extra.empty() ? "" : " (strobe)") + " at " +
-                                  std::to_string(int(kWidthsMm[w])) + " mm, " + std::to_string(int(pt)) + " pt");
+      checkTwin(list, layout,
+                fs::path(scene).stem().string() + (extra.empty() ? "" : " (strobe)") + " at " +
+                    std::to_string(int(kWidthsMm[w])) + " mm, " + std::to_string(int(pt)) + " pt",
+                job.spec.render.labels, labels);
     }
   }
+  ASSERT_GT(labels.count, 0);
+  EXPECT_GE(labels.close, 0.9 * labels.count) << labels.close << " of " << labels.count << " labels within "
+                                              << kCloseLabelEm << " em of their points";
+  std::printf("%d of %d Bloch labels within %.1f em of their points\n", labels.close, labels.count, kCloseLabelEm);
 }
 
 // The layout is what the figure draws: its text boxes hold the PDF's words

@@ -9,8 +9,9 @@
 namespace rollspin::draw {
 
 TitleLines titleLines(const std::string& title, float text, float width, float height, float leastPx, bool figure) {
-  // A figure's title is set bold at the body size: its caption is the paper's.
-  const float room = 0.94f * width, preferred = text * (figure ? 1.0f : 1.35f), least = std::max(text, leastPx);
+  // A figure's title is set bold at the body size (the least a bold face
+  // may take to print at 6 pt): its caption is the paper's.
+  const float room = 0.94f * width, least = std::max(text, leastPx), preferred = figure ? least : text * 1.35f;
   const float atPreferred = textWidthPx(title, preferred, true);
   if (atPreferred <= room) return {preferred, {title}};
   // Down to the body size on one line before it breaks.

@@ -94,6 +94,8 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
     axis.widthPx = gridWidth;
     axis.view = view;
     axis.points = {-kAxisLength * axes[k], kAxisLength * axes[k]};
+    // A figure's labels, set close, keep off the axes too (not the grid).
+    axis.labelsKeepOff = closeLabels();
     list.polylines.push_back(axis);
   }
 

@@ -17,7 +17,7 @@ namespace {
 const glm::vec4 kCaptionColor{0.55f, 0.12f, 0.02f, 1.0f};
 
 // A figure's twin: the room left round its sphere's window for the axis
-// and pole labels, in em.
+// and pole labels, in lines of body text (a line is about 1.4 em).
 constexpr double kTwinLabelMargin = 0.9;
 
 // A segment's caption: the lecturer's own text, so it shows even with
@@ -247,8 +247,8 @@ void SceneDrawer::layOut(const RollingModel& model) {
     twinLayout_ = layoutView(r.twin.width, r.twin.height, blocks, occupancyFor, false, minWindow);
     // A figure's sphere fills the room its text leaves: the window grows
     // from the layout's (which keeps the ball's gap of 2 em) to the largest
-    // rectangle clear of the plates, less a margin of 0.9 of a line (about 1.3 em) all round
-    // where the axis and pole labels lie against the sphere.
+    // rectangle clear of the plates, less a margin of 0.9 of a line (about
+    // 1.3 em) all round where the axis and pole labels lie against it.
     if (twin_->closeLabels() && !r.inset) {
       std::vector<std::pair<glm::vec2, glm::vec2>> plates;
       for (std::size_t i = 0; i < blocks.size() && i < twinLayout_.origins.size(); ++i) {
@@ -263,15 +263,13 @@ void SceneDrawer::layOut(const RollingModel& model) {
         if (lo.x >= 0.0f && lo.y >= 0.0f && hi.x <= float(r.twin.width) && hi.y <= float(r.twin.height))
           plates.emplace_back(lo, hi);
       }
-      {
-        NdcWindow window = clearWindow(r.twin.width, r.twin.height, plates, 0.25f * text());
-        const double marginX = 2.0 * kTwinLabelMargin * text() / r.twin.width;
-        const double marginY = 2.0 * kTwinLabelMargin * text() / r.twin.height;
-        // (Never under a quarter of the view: a tiny view keeps a sphere.)
-        if (window.x1 - window.x0 - 2.0 * marginX >= 0.5 && window.y1 - window.y0 - 2.0 * marginY >= 0.5)
-          window = {window.x0 + marginX, window.x1 - marginX, window.y0 + marginY, window.y1 - marginY};
-        twinLayout_.window = window;
-      }
+      NdcWindow window = clearWindow(r.twin.width, r.twin.height, plates, 0.25f * text());
+      const double marginX = 2.0 * kTwinLabelMargin * text() / r.twin.width;
+      const double marginY = 2.0 * kTwinLabelMargin * text() / r.twin.height;
+      // (Never under a quarter of the view: a tiny view keeps a sphere.)
+      if (window.x1 - window.x0 - 2.0 * marginX >= 0.5 && window.y1 - window.y0 - 2.0 * marginY >= 0.5)
+        window = {window.x0 + marginX, window.x1 - marginX, window.y0 + marginY, window.y1 - marginY};
+      twinLayout_.window = window;
     }
     twin_->setWindow(twinLayout_.window);
   }

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "app/job_setup.hpp"
 #include "app/render_jobs.hpp"
@@ -13,6 +14,7 @@
 #include "core/memory_budget.hpp"
 #include "core/stage_log.hpp"
 #include "draw/draw_style.hpp"
+#include "draw/text_blocks.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 
@@ -77,6 +79,18 @@ void fitTextToFigure(scene::SceneSpec& spec) {
     fmt::print(stderr, "figure: {:.0f} mm wide, body text {:.1f} pt in {} ({:.1f} px of the {}x{} layout)\n",
                spec.figure.widthMm, figureTextPt(spec), spec.figure.font, bodyPx, spec.render.width,
                spec.render.height);
+  // A title that would take over a fifth of the figure is left out (scene_drawer).
+  if (StageLog::instance().echo()) {
+    std::vector<std::string> titles{spec.render.title};
+    for (const scene::SegmentSpec& segment : spec.segments)
+      if (segment.title) titles.push_back(*segment.title);
+    const float text = draw::bodyTextPx(int(spec.render.width), int(spec.render.height), spec.render.fontScale);
+    for (const std::string& title : titles)
+      if (!title.empty() && !draw::titleFitsFigure(title, text, float(spec.render.width), float(spec.render.height),
+                                                   text * float(spec.render.leastTextScale)))
+        fmt::print(stderr, "figure: the title \"{}\" would take over a fifth of the height at this size: left out "
+                           "(docs/figures.md, The title)\n", title);
+  }
 }
 
 void writeFigureStill(const scene::SceneSpec& spec, const render::DrawList& list, const std::filesystem::path& out,

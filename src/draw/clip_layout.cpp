@@ -432,6 +432,36 @@ ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
   return layout;
 }
 
+NdcWindow clearWindow(int w, int h, const std::vector<std::pair<glm::vec2, glm::vec2>>& boxes, float gap) {
+  // Few boxes (a heading, a legend): every rectangle whose edges are the
+  // view's or a padded box's is tried.
+  std::vector<float> xs{0.0f, float(w)}, ys{0.0f, float(h)};
+  for (const auto& [lo, hi] : boxes) {
+    for (const float x : {lo.x - gap, hi.x + gap})
+      if (x > 0.0f && x < float(w)) xs.push_back(x);
+    for (const float y : {lo.y - gap, hi.y + gap})
+      if (y > 0.0f && y < float(h)) ys.push_back(y);
+  }
+  auto meetsABox = [&](glm::vec2 a, glm::vec2 b) {
+    return std::any_of(boxes.begin(), boxes.end(), [&](const auto& box) {
+      return a.x < box.second.x + gap && box.first.x - gap < b.x && a.y < box.second.y + gap && box.first.y - gap < b.y;
+    });
+  };
+  glm::vec2 bestLo{0.0f, 0.0f}, bestHi{float(w), float(h)};
+  float bestSide = -1.0f, bestArea = -1.0f;
+  for (const float x0 : xs)
+    for (const float x1 : xs)
+      for (const float y0 : ys)
+        for (const float y1 : ys) {
+          if (x1 <= x0 || y1 <= y0) continue;
+          const float side = std::min(x1 - x0, y1 - y0), area = (x1 - x0) * (y1 - y0);
+          if (side < bestSide || (side == bestSide && area <= bestArea) || meetsABox({x0, y0}, {x1, y1})) continue;
+          bestSide = side, bestArea = area;
+          bestLo = {x0, y0}, bestHi = {x1, y1};
+        }
+  return {-1.0 + 2.0 * bestLo.x / w, -1.0 + 2.0 * bestHi.x / w, 1.0 - 2.0 * bestHi.y / h, 1.0 - 2.0 * bestLo.y / h};
+}
+
 std::size_t wordsBeforeTheFirstNumber(const std::string& text) {
   const std::size_t digit = text.find_first_of("0123456789");
   if (digit == std::string::npos || digit == 0) return 0;

@@ -102,6 +102,12 @@ ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
                       const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow,
                       double minWindow = 0.6);
 
+// The largest part of a view w × h clear of `boxes` (pixels, y down; each
+// padded by `gap`), as a window: of the rectangles between the view's edges
+// and the boxes' padded edges that meet no box, the one with the longest
+// shorter side (then the largest). The whole view with no boxes.
+NdcWindow clearWindow(int w, int h, const std::vector<std::pair<glm::vec2, glm::vec2>>& boxes, float gap);
+
 // The length in bytes of a running value's leading words, the text up to
 // the last space before its first digit ("s = " of "s = 3.78 of 18.85",
 // "ψ = " of "ψ = −521.5°": the sign may change); 0 with no digit or no

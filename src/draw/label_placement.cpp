@@ -106,7 +106,7 @@ std::vector<Segment> obstaclesOf(const render::DrawList& list, int view) {
 
 }  // namespace
 
-void keepLabelsClear(render::DrawList& list, int view, std::size_t first) {
+void keepLabelsClear(render::DrawList& list, int view, std::size_t first, bool nearestToAnchor) {
   const render::View& v = list.views[std::size_t(view)];
   const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
   const auto project = projectorOf(v, clipFromWorld);
@@ -151,7 +151,8 @@ void keepLabelsClear(render::DrawList& list, int view, std::size_t first) {
     float w = 1.0f;
     const glm::vec2 anchor = project(l.anchor, w);
     if (w <= 1e-4f) continue;
-    const float width = textWidthPx(l.text, l.sizePx, l.bold), pad = 0.25f * l.sizePx;
+    // (Padded by a quarter em; a figure's Bloch labels, set close, by an eighth.)
+    const float width = textWidthPx(l.text, l.sizePx, l.bold), pad = (nearestToAnchor ? 0.125f : 0.25f) * l.sizePx;
     const float shift = l.align == render::Align::Left ? 0.5f * width : l.align == render::Align::Right ? -0.5f * width : 0.0f;
     auto boxAt = [&](glm::vec2 offset) {
       const glm::vec2 c = anchor + offset + glm::vec2(shift, 0.0f);
@@ -161,6 +162,25 @@ void keepLabelsClear(render::DrawList& list, int view, std::size_t first) {
     // nearest clear place, so a label stays by what it names.
     glm::vec2 best = l.offsetPx;
     int bestCost = cost(boxAt(best));
+    if (nearestToAnchor && bestCost > 0) {
+      // Rings a quarter em apart, tried in the order of their boxes'
+      // distance from the anchor: the clear place whose box is nearest the
+      // point the label names.
+      std::vector<std::pair<float, glm::vec2>> candidates;
+      for (float radius = 0.25f; radius <= 6.0f; radius += 0.25f)
+        for (int k = 0; k < 48; ++k) {
+          const float angle = 2.0f * std::numbers::pi_v<float> * float(k) / 48.0f;
+          const glm::vec2 offset = l.offsetPx + radius * l.sizePx * glm::vec2(std::cos(angle), std::sin(angle));
+          const Box b = boxAt(offset);
+          candidates.emplace_back(glm::length(anchor - glm::clamp(anchor, b.lo, b.hi)) + 0.01f * radius, offset);
+        }
+      std::sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+      for (const auto& [distance, offset] : candidates) {
+        const int c = cost(boxAt(offset));
+        if (c < bestCost) best = offset, bestCost = c;
+        if (bestCost == 0) break;
+      }
+    }
     for (float radius = 0.5f; radius <= 6.0f && bestCost > 0; radius += 0.5f)
       for (int k = 0; k < 24 && bestCost > 0; ++k) {
         const float angle = 2.0f * std::numbers::pi_v<float> * float(k) / 24.0f;

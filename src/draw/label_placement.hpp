@@ -18,7 +18,9 @@ namespace rollspin::draw {
 // first); a label moved over 2 em gets a thin leader line to its anchor,
 // and one with no clear place within 6 em is left out (its text emptied).
 // The text blocks' plates must be placed already: labels keep off them.
-void keepLabelsClear(render::DrawList& list, int view, std::size_t first);
+// nearestToAnchor (a figure's Bloch sphere): of the clear places, the one
+// whose box is nearest the label's anchor, on a finer ring.
+void keepLabelsClear(render::DrawList& list, int view, std::size_t first, bool nearestToAnchor = false);
 
 // A still's text blocks (of `view`, whose arrows and paths are drawn
 // already) kept off its arrows, its paths, the `subject` (the ball) and

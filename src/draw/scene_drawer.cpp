@@ -16,6 +16,10 @@ namespace {
 
 const glm::vec4 kCaptionColor{0.55f, 0.12f, 0.02f, 1.0f};
 
+// A figure's twin: the room left round its sphere's window for the axis
+// and pole labels, in lines of body text (a line is about 1.4 em).
+constexpr double kTwinLabelMargin = 0.9;
+
 // A segment's caption: the lecturer's own text, so it shows even with
 // render.labels = false; top centre, else bottom centre.
 TextBlock captionBlock(const std::string& caption, float text, float leastPx, float viewWidth) {
@@ -42,13 +46,15 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
   markerBody_ = spec.ball.marker ? Vec3((*spec.ball.marker)[0], (*spec.ball.marker)[1], (*spec.ball.marker)[2])
                                  : start.normal;
   markerBody_.normalize();
-  titleBand_ = !spec.render.title.empty();
+  titleBand_ = !shownTitle(spec.render.title).empty();
   for (const scene::SegmentSpec& seg : spec.segments)
-    if (seg.title && !seg.title->empty()) titleBand_ = true;
+    if (seg.title && !shownTitle(*seg.title).empty()) titleBand_ = true;
   // The band is as tall as the longest title of the clip needs.
   auto countLines = [&](const std::string& title) {
-    if (title.empty()) return;
-    titleLines_ = std::max(titleLines_, draw::titleLines(title, text(), float(spec.render.width), float(spec.render.height), leastText()).lines.size());
+    if (shownTitle(title).empty()) return;
+    titleLines_ = std::max(titleLines_, draw::titleLines(title, text(), float(spec.render.width), float(spec.render.height),
+                                                         leastText(), figure())
+                                            .lines.size());
   };
   countLines(spec.render.title);
   for (const scene::SegmentSpec& seg : spec.segments)
@@ -65,7 +71,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
 // The views' rectangles, as addViews cuts the image.
 SceneDrawer::Rects SceneDrawer::rects() const {
   const int W = int(spec_.render.width), H = int(spec_.render.height);
-  const int top = titleBand_ ? titleBandHeight(titleLines_, text()) : 0;
+  const int top = titleBand_ ? titleBandHeight(titleLines_, text(), figure()) : 0;
   const int bodyHeight = H - top;
   Rects r;
   switch (spec_.render.layout) {
@@ -98,6 +104,16 @@ SceneDrawer::Rects SceneDrawer::rects() const {
 // A figure's text never prints under 6 pt (figure_job sets the scale);
 // a clip's has no such floor.
 float SceneDrawer::leastText() const { return text() * float(spec_.render.leastTextScale); }
+
+bool SceneDrawer::figure() const { return spec_.render.leastTextScale > 0.0; }
+
+// A figure leaves out a title whose band would take over a fifth of its
+// height (a narrow column in large text): its caption says it.
+std::string SceneDrawer::shownTitle(const std::string& title) const {
+  if (title.empty() || !figure()) return title;
+  const bool fits = titleFitsFigure(title, text(), float(spec_.render.width), float(spec_.render.height), leastText());
+  return fits ? title : std::string();
+}
 
 float SceneDrawer::text() const { return bodyTextPx(int(spec_.render.width), int(spec_.render.height), spec_.render.fontScale); }
 
@@ -229,6 +245,32 @@ void SceneDrawer::layOut(const RollingModel& model) {
       return occupancy;
     };
     twinLayout_ = layoutView(r.twin.width, r.twin.height, blocks, occupancyFor, false, minWindow);
+    // A figure's sphere fills the room its text leaves: the window grows
+    // from the layout's (which keeps the ball's gap of 2 em) to the largest
+    // rectangle clear of the plates, less a margin of 0.9 of a line (about
+    // 1.3 em) all round where the axis and pole labels lie against it.
+    if (twin_->closeLabels() && !r.inset) {
+      std::vector<std::pair<glm::vec2, glm::vec2>> plates;
+      for (std::size_t i = 0; i < blocks.size() && i < twinLayout_.origins.size(); ++i) {
+        TextBlock shown = blocks[i];
+        if (shown.lines.size() > twinLayout_.lines[i]) shown.lines.resize(twinLayout_.lines[i]);
+        if (shown.lines.empty()) continue;
+        const glm::vec2 size(std::max(twinReserved_[i].x, blockSize(shown).x), blockSize(shown).y);
+        // A block the layout found no room for (it lies partly off the
+        // view) takes none: the still puts it where it is clear of the
+        // sphere, if anywhere (keepBlocksClear).
+        const glm::vec2 lo = twinLayout_.origins[i], hi = lo + size;
+        if (lo.x >= 0.0f && lo.y >= 0.0f && hi.x <= float(r.twin.width) && hi.y <= float(r.twin.height))
+          plates.emplace_back(lo, hi);
+      }
+      NdcWindow window = clearWindow(r.twin.width, r.twin.height, plates, 0.25f * text());
+      const double marginX = 2.0 * kTwinLabelMargin * text() / r.twin.width;
+      const double marginY = 2.0 * kTwinLabelMargin * text() / r.twin.height;
+      // (Never under a quarter of the view: a tiny view keeps a sphere.)
+      if (window.x1 - window.x0 - 2.0 * marginX >= 0.5 && window.y1 - window.y0 - 2.0 * marginY >= 0.5)
+        window = {window.x0 + marginX, window.x1 - marginX, window.y0 + marginY, window.y1 - marginY};
+      twinLayout_.window = window;
+    }
     twin_->setWindow(twinLayout_.window);
   }
 }
@@ -246,7 +288,8 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
   const scene::SegmentSpec* segment =
       spec_.segments.empty() ? nullptr : &spec_.segments[std::min(frame.story.segment, spec_.segments.size() - 1)];
   if (titleBand_)
-    addTitleBand(list, segment && segment->title ? *segment->title : rs.title, text(), titleLines_, leastText());
+    addTitleBand(list, shownTitle(segment && segment->title ? *segment->title : rs.title), text(), titleLines_,
+                 leastText(), figure());
   addViews(list, frame);
   return list;
 }
@@ -305,7 +348,7 @@ void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& fram
     Occupancy sphere(twin.width, twin.height);
     if (still) twin_->markImportant(sphere, list.views[std::size_t(view)]);
     place(twinBlocks(frame, float(twin.width), r.inset), twinReserved_, twinLayout_, view, still ? &sphere : nullptr);
-    if (still) keepLabelsClear(list, view, firstLabel);
+    if (still) keepLabelsClear(list, view, firstLabel, twin_->closeLabels());
   }
 }
 

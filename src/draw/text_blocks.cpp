@@ -8,8 +8,10 @@
 
 namespace rollspin::draw {
 
-TitleLines titleLines(const std::string& title, float text, float width, float height, float leastPx) {
-  const float room = 0.94f * width, preferred = text * 1.35f, least = std::max(text, leastPx);
+TitleLines titleLines(const std::string& title, float text, float width, float height, float leastPx, bool figure) {
+  // A figure's title is set bold at the body size (the least a bold face
+  // may take to print at 6 pt): its caption is the paper's.
+  const float room = 0.94f * width, least = std::max(text, leastPx), preferred = figure ? least : text * 1.35f;
   const float atPreferred = textWidthPx(title, preferred, true);
   if (atPreferred <= room) return {preferred, {title}};
   // Down to the body size on one line before it breaks.
@@ -34,13 +36,19 @@ TitleLines titleLines(const std::string& title, float text, float width, float h
   return out;
 }
 
-int titleBandHeight(std::size_t lines, float text) {
-  return static_cast<int>(std::lround(text * (2.4f + 1.4f * float(std::max<std::size_t>(lines, 1) - 1))));
+int titleBandHeight(std::size_t lines, float text, bool figure) {
+  const float first = figure ? 2.0f : 2.4f;
+  return static_cast<int>(std::lround(text * (first + 1.4f * float(std::max<std::size_t>(lines, 1) - 1))));
+}
+
+bool titleFitsFigure(const std::string& title, float text, float width, float height, float leastPx) {
+  const std::size_t lines = titleLines(title, text, width, height, leastPx, true).lines.size();
+  return float(titleBandHeight(lines, text, true)) <= kFigureTitleShare * height;
 }
 
 int addTitleBand(render::DrawList& list, const std::string& titleText, float text, std::size_t bandLines,
-                 float leastPx) {
-  const int top = titleBandHeight(bandLines, text);
+                 float leastPx, bool figure) {
+  const int top = titleBandHeight(bandLines, text, figure);
   render::View band;
   band.width = list.width;
   band.height = top;
@@ -49,7 +57,7 @@ int addTitleBand(render::DrawList& list, const std::string& titleText, float tex
   list.views.push_back(band);
   if (titleText.empty()) return top;
   // Never cut by the frame: a long title takes a smaller size, then more lines.
-  const TitleLines title = titleLines(titleText, text, float(list.width), float(list.height), leastPx);
+  const TitleLines title = titleLines(titleText, text, float(list.width), float(list.height), leastPx, figure);
   const float step = 1.4f * title.sizePx;
   for (std::size_t k = 0; k < title.lines.size(); ++k) {
     render::LabelItem line;

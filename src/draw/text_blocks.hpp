@@ -17,20 +17,27 @@ namespace rollspin::draw {
 // spaces at 1 em (shrunk further only for one word wider than the image,
 // never under leastPx); where the band would take over 60 % of the image's
 // height, as many lines as fit, set smaller (one line at the least size).
+// A figure's title starts at 1 em (bold at the body size).
 struct TitleLines {
   float sizePx = 0.0f;
   std::vector<std::string> lines;
 };
-TitleLines titleLines(const std::string& title, float text, float width, float height, float leastPx);
+TitleLines titleLines(const std::string& title, float text, float width, float height, float leastPx,
+                      bool figure = false);
 
 // The band's height for `lines` lines of title: 2.4 em for one, 1.4 em
-// more for each further line.
-int titleBandHeight(std::size_t lines, float text);
+// more for each further line (a figure's: 2.0 em for one).
+int titleBandHeight(std::size_t lines, float text, bool figure = false);
+
+// A figure gives its title at most this share of its height; a title that
+// needs more (at a narrow width in large text) is left out of the figure.
+inline constexpr float kFigureTitleShare = 0.2f;
+bool titleFitsFigure(const std::string& title, float text, float width, float height, float leastPx);
 
 // A band across the top of the image holding the (centred) title, as tall
 // as `bandLines` lines (the most any title of the clip takes, so the views
 // never jump); returns its height in pixels. An empty title keeps the band.
 int addTitleBand(render::DrawList& list, const std::string& title, float text, std::size_t bandLines = 1,
-                 float leastPx = 0.0f);
+                 float leastPx = 0.0f, bool figure = false);
 
 }  // namespace rollspin::draw

@@ -39,17 +39,12 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
   // and the Bloch arrow point the same way on screen.
   const OrbitAngles a{aim.azimuth, aim.elevation};
   const double aspect = double(v.width) / double(std::max(v.height, 1));
-  // The sphere, its axes and the labels at 1.3 of the origin fit with room
-  // for a label (about 1.2 em) beyond them: at a figure's printed size the
-  // text can be large beside a small view, and the sphere then shrinks (to
-  // no less than half the window) rather than push its labels off the view
-  // or onto its arrows.
-  const double windowPx = 0.25 * std::min((window_.x1 - window_.x0) * v.width, (window_.y1 - window_.y0) * v.height);
-  // (Only for text set larger than an image's own share, as a figure's at
-  // a narrow width: a plain still keeps its framing.)
-  const bool largeText = spec_.render.labels && spec_.render.fontScale > 1.0;
-  const double labelRoom = largeText ? std::min(0.5, 1.2 * text / std::max(windowPx, 1.0)) : 0.0;
-  const double sceneRadius = std::max(1.42, 1.3 / (1.0 - labelRoom));
+  // A plain image frames the sphere, its axes and the labels at 1.3 of the
+  // origin into the window. A figure (text set at a printed size, or larger
+  // than an image's own share) draws the sphere as large as the window the
+  // text leaves (its axes' ends at its edge) and sets the labels close
+  // against the points they name (label_placement keeps them off the arrows).
+  const double sceneRadius = closeLabels() ? kFigureSceneRadius : 1.42;
   // Framed into the window the text leaves free (the whole view by default).
   const Lens lens = windowLens(window_, aim.fovDeg, aspect);
   const double distance = fitDistance(sceneRadius, lens.fovDeg, lens.aspect);
@@ -98,7 +93,9 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
     axis.color = opaqueLine({0.15f, 0.17f, 0.2f}, 0.9f);
     axis.widthPx = gridWidth;
     axis.view = view;
-    axis.points = {-1.18f * axes[k], 1.18f * axes[k]};
+    axis.points = {-kAxisLength * axes[k], kAxisLength * axes[k]};
+    // A figure's labels, set close, keep off the axes too (not the grid).
+    axis.labelsKeepOff = closeLabels();
     list.polylines.push_back(axis);
   }
 
@@ -160,14 +157,35 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
       l.color = color;
       list.labels.push_back(l);
     };
-    for (int k = 0; k < 3; ++k) worldLabel(axisNames[k], 1.3f * axes[k], text, kTextColor);
+    if (closeLabels()) {
+      // Each axis name at its axis's end, pushed out along the projected
+      // axis by its own half size and a little: against the line's tip.
+      const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+      auto pixel = [&](const glm::vec3& p) {
+        const glm::vec4 c = clipFromWorld * glm::vec4(p, 1.0f);
+        return glm::vec2(c.x / c.w * 0.5f * float(v.width), -c.y / c.w * 0.5f * float(v.height));
+      };
+      for (int k = 0; k < 3; ++k) {
+        const glm::vec3 end = kAxisLength * axes[k];
+        worldLabel(axisNames[k], end, text, kTextColor);
+        const glm::vec2 along = pixel(end) - pixel(glm::vec3(0.0f));
+        const float length = glm::length(along);
+        if (length > 1e-3f) list.labels.back().offsetPx = 0.75f * text * along / length;
+      }
+    } else {
+      for (int k = 0; k < 3; ++k) worldLabel(axisNames[k], 1.3f * axes[k], text, kTextColor);
+    }
+    // The poles' states beside them, to the right.
+    const float poleOffset = closeLabels() ? 1.25f : 1.6f;
     worldLabel("|0⟩", glm::vec3(0, 0, 1.0f), text, kTextColor);
     worldLabel("|1⟩", glm::vec3(0, 0, -1.0f), text, kTextColor);
-    list.labels.back().offsetPx = glm::vec2(1.6f * text, 0.0f);
-    list.labels[list.labels.size() - 2].offsetPx = glm::vec2(1.6f * text, 0.0f);
+    list.labels.back().offsetPx = glm::vec2(poleOffset * text, 0.0f);
+    list.labels[list.labels.size() - 2].offsetPx = glm::vec2(poleOffset * text, 0.0f);
 
   }
 }
+
+bool TwinView::closeLabels() const { return spec_.render.fontScale > 1.0 || spec_.render.leastTextScale > 0.0; }
 
 std::vector<TextBlock> TwinView::textBlocks(bool inset, float text, float maxWidth) const {
   std::vector<TextBlock> blocks(2);
@@ -199,12 +217,15 @@ std::vector<TextBlock> TwinView::textBlocks(bool inset, float text, float maxWid
 
 void TwinView::markImportant(Occupancy& occupancy, const render::View& v) const {
   // Everything the twin shows lies within the axes' labels at 1.3 of the
-  // origin: the sphere, the arrows, the trails, the cone.
+  // origin (a figure's: the axes' ends): the sphere, the arrows, the
+  // trails, the cone.
   const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
   const glm::vec4 c = clipFromWorld * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
   const glm::vec2 centre((c.x / c.w * 0.5f + 0.5f) * float(v.width), (0.5f - c.y / c.w * 0.5f) * float(v.height));
   const float focalPx = 0.5f * float(v.height) * v.camera.clipFromView[1][1];
-  occupancy.disc(centre, 1.3f * focalPx / std::sqrt(c.w * c.w - 1.69f) + 4.0f);
+  // (A figure's labels lie against the axes' ends: the disc the camera frames.)
+  const float reach = closeLabels() ? kAxisLength : 1.3f;
+  occupancy.disc(centre, reach * focalPx / std::sqrt(c.w * c.w - reach * reach) + 4.0f);
 }
 
 }  // namespace rollspin::draw

@@ -31,6 +31,12 @@ class TwinView {
   // Marks the disc the twin's sphere, arrows, trails and axis labels cover.
   void markImportant(Occupancy& occupancy, const render::View& v) const;
   void setWindow(const NdcWindow& window) { window_ = window; }
+  // A figure (or text larger than an image's share): the sphere fills the
+  // window the text leaves and its labels lie against what they name.
+  [[nodiscard]] bool closeLabels() const;
+
+  static constexpr float kAxisLength = 1.18f;         // the drawn axes run from −this to +this
+  static constexpr double kFigureSceneRadius = 1.15;  // framed into a figure's window: the axes' ends at its edge
 
  private:
   const scene::SceneSpec& spec_;

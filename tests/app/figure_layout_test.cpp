@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
@@ -23,6 +24,7 @@
 #include "app/figure_job.hpp"
 #include "app/job_setup.hpp"
 #include "app/render_jobs.hpp"
+#include "draw/clip_layout.hpp"
 #include "support/pdf_text_boxes.hpp"
 #include "render/vector_figure.hpp"
 #include "support/cli_runner.hpp"
@@ -173,6 +175,101 @@ TEST(FigureLayout, TextStaysOnItsPlateAndLabelsOffArrowsAndPathsAtJournalSizes) 
     for (std::size_t p = 0; p < kSizesPt.size() && !test::sweepSampled(); ++p)
       EXPECT_GT(covered[w][p], 0) << kWidthsMm[w] << " mm at " << kSizesPt[p] << " pt is never drawn";
   std::printf("%d figures checked\n", figures);
+}
+
+// The Bloch sphere of a figure fills the room its text leaves. Room: the
+// shorter side S of the largest rectangle of the twin view clear of its text plates; the
+// sphere's projected diameter (its silhouette, from the view's camera) is at
+// least 0.8 (S − 3 em, em here the labels' line height): the labels keep
+// about 0.9 of a line all round it.
+// Its labels: each drawn, its box (advance × ascent + descent) within
+// 4.5 em (the printed size) of its anchor (an axis's end, a pole), and
+// 85 % of them within 1.5 em. A label keeps off the arrows, the axes and
+// the trails, which can crowd a pole seen from high above (the lollipop's
+// strobe): there the nearest clear place lies farther.
+constexpr double kCloseLabelEm = 1.5, kFarthestLabelEm = 4.5, kCloseShare = 0.85;
+struct LabelCount {
+  int count = 0, close = 0;
+};
+
+// The twin is the last view (scene_drawer); `labels`: the scene's labels are on.
+void checkTwin(const render::DrawList& list, const FigureLayout& layout, const std::string& where, bool labelsOn,
+               LabelCount& labels) {
+  ASSERT_FALSE(list.views.empty()) << where;
+  const int twin = int(list.views.size()) - 1;
+  const render::View& v = list.views[std::size_t(twin)];
+  const double unit = layout.widthPt / double(list.width);  // points per layout pixel
+  const FigureBox& view = layout.views[std::size_t(twin)];
+  std::vector<std::pair<glm::vec2, glm::vec2>> plates;
+  for (const FigureBox& p : layout.plates)
+    if (p.x0 >= view.x0 - 0.5 && p.x1 <= view.x1 + 0.5 && p.y0 >= view.y0 - 0.5 && p.y1 <= view.y1 + 0.5)
+      plates.emplace_back(glm::vec2((p.x0 - view.x0) / unit, (p.y0 - view.y0) / unit),
+                          glm::vec2((p.x1 - view.x0) / unit, (p.y1 - view.y0) / unit));
+  const draw::NdcWindow room = draw::clearWindow(v.width, v.height, plates, 0.0f);
+  const double roomSide = std::min(0.5 * (room.x1 - room.x0) * v.width, 0.5 * (room.y1 - room.y0) * v.height);
+  // The unit sphere's silhouette: its points' projected extent.
+  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+  glm::dvec2 lo(1e30), hi(-1e30);
+  for (int i = 0; i <= 90; ++i)
+    for (int j = 0; j < 180; ++j) {
+      const double theta = M_PI * i / 90.0, phi = 2.0 * M_PI * j / 180.0;
+      const glm::vec4 c = clipFromWorld * glm::vec4(float(std::sin(theta) * std::cos(phi)),
+                                                    float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)), 1.0f);
+      const glm::dvec2 px((c.x / c.w * 0.5 + 0.5) * v.width, (0.5 - c.y / c.w * 0.5) * v.height);
+      lo = glm::min(lo, px), hi = glm::max(hi, px);
+    }
+  const double diameter = std::min(hi.x - lo.x, hi.y - lo.y);
+  float em = 0.0f;  // the labels' size in layout pixels
+  for (const render::LabelItem& l : list.labels)
+    if (l.view == twin && l.worldAnchored) em = std::max(em, l.sizePx);
+  EXPECT_GE(diameter, 0.8 * (roomSide - 3.0 * em))
+      << where << ": the sphere is " << diameter << " px across in a room " << roomSide << " px (em " << em << " px)";
+  for (const char* name : {"x", "y", "z", "|0⟩", "|1⟩"}) {
+    if (!labelsOn) break;
+    const auto t = std::find_if(layout.texts.begin(), layout.texts.end(),
+                                [&](const FigureLayout::Text& x) { return x.view == twin && x.free && x.text == name; });
+    if (t == layout.texts.end()) {
+      ADD_FAILURE() << where << ": the label \"" << name << "\" is left out";
+      continue;
+    }
+    const glm::dvec2 nearest = glm::clamp(t->anchor, glm::dvec2(t->box.x0, t->box.y0), glm::dvec2(t->box.x1, t->box.y1));
+    const double ems = glm::length(nearest - t->anchor) / t->sizePt;
+    EXPECT_LE(ems, kFarthestLabelEm) << where << ": \"" << name << "\" lies " << ems << " em from its point";
+    ++labels.count;
+    if (ems <= kCloseLabelEm) ++labels.close;
+  }
+}
+
+TEST(FigureLayout, TheBlochSphereFillsTheRoomItsTextLeaves) {
+  const fs::path dir = test::freshTempDir("figure_twin");
+  std::vector<std::pair<std::string, std::vector<std::string>>> cases;
+  for (const auto& file : test::bundledSceneFiles()) cases.push_back({file.string(), {}});
+  cases.push_back({test::shippedScenePath("lollipop"), {"render.strobe=8"}});
+  LabelCount labels;
+  for (const std::size_t i : test::sweepIndices(cases.size())) {
+    const auto& [scene, extra] = cases[i];
+    std::vector<std::string> overrides{"figure.font=Latin Modern Roman"};
+    overrides.insert(overrides.end(), extra.begin(), extra.end());
+    const fs::path pdf = dir / ("t" + std::to_string(i) + ".pdf");
+    app::DrawJob job = app::prepareDrawJob({scene, overrides, {}, {}, {}, false, pdf, media::OutputUse::Still, 0, {}});
+    if (job.spec.render.layout == scene::RenderLayout::Ball) continue;  // no sphere
+    for (std::size_t w = 0; w < kWidthsMm.size(); ++w) {
+      const double pt = sizeFor(i, w);
+      job.spec.figure.widthMm = kWidthsMm[w];
+      job.spec.figure.fontSizePt = pt;
+      app::fitTextToFigure(job.spec);
+      const render::DrawList list = app::drawStill(job, std::nullopt);
+      const FigureLayout layout = render::figureLayout(list, app::figureStyleOf(job.spec, list));
+      checkTwin(list, layout,
+                fs::path(scene).stem().string() + (extra.empty() ? "" : " (strobe)") + " at " +
+                    std::to_string(int(kWidthsMm[w])) + " mm, " + std::to_string(int(pt)) + " pt",
+                job.spec.render.labels, labels);
+    }
+  }
+  ASSERT_GT(labels.count, 0);
+  EXPECT_GE(labels.close, kCloseShare * labels.count) << labels.close << " of " << labels.count << " labels within "
+                                              << kCloseLabelEm << " em of their points";
+  std::printf("%d of %d Bloch labels within %.1f em of their points\n", labels.close, labels.count, kCloseLabelEm);
 }
 
 // The layout is what the figure draws: its text boxes hold the PDF's words

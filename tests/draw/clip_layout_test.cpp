@@ -20,6 +20,7 @@
 #include "app/render_jobs.hpp"
 #include "draw/clip_layout.hpp"
 #include "draw/draw_style.hpp"
+#include "draw/text_blocks.hpp"
 #include "draw/scene_drawer.hpp"
 #include "model/rolling_model.hpp"
 #include "support/cli_runner.hpp"
@@ -218,6 +219,49 @@ TEST(ClipLayout, ALiveLinesLeadingWordsEndBeforeItsFirstNumber) {
   EXPECT_EQ(wordsBeforeTheFirstNumber("solver at the end: …"), 0u);  // no number
   EXPECT_EQ(wordsBeforeTheFirstNumber("12 turns"), 0u);              // a number first
   EXPECT_EQ(wordsBeforeTheFirstNumber("x=1"), 0u);                   // no space before it
+}
+
+// The room a figure's Bloch sphere is framed into: of the rectangles
+// between the view's edges and the plates, the one with the longest shorter
+// side, in NDC (y up).
+TEST(ClipLayout, TheClearWindowIsTheLargestSquareishRoomBetweenThePlates) {
+  auto near = [](const NdcWindow& w, double x0, double x1, double y0, double y1) {
+    return std::abs(w.x0 - x0) < 1e-6 && std::abs(w.x1 - x1) < 1e-6 && std::abs(w.y0 - y0) < 1e-6 &&
+           std::abs(w.y1 - y1) < 1e-6;
+  };
+  const NdcWindow whole = clearWindow(400, 600, {}, 10.0f);
+  EXPECT_TRUE(near(whole, -1.0, 1.0, -1.0, 1.0));
+  // A legend along the bottom (y 450–580 px, padded by 10): the room above it.
+  const NdcWindow above = clearWindow(400, 600, {{{20.0f, 450.0f}, {300.0f, 580.0f}}}, 10.0f);
+  EXPECT_TRUE(near(above, -1.0, 1.0, 1.0 - 2.0 * 440.0 / 600.0, 1.0))
+      << above.x0 << " " << above.x1 << " " << above.y0 << " " << above.y1;
+  // A heading top left and a legend bottom left in a wide view: the right
+  // part beside both is squarer than the band between them.
+  const NdcWindow beside =
+      clearWindow(800, 400, {{{0.0f, 0.0f}, {300.0f, 60.0f}}, {{0.0f, 340.0f}, {300.0f, 400.0f}}}, 0.0f);
+  EXPECT_TRUE(near(beside, -1.0 + 2.0 * 300.0 / 800.0, 1.0, -1.0, 1.0))
+      << beside.x0 << " " << beside.x1 << " " << beside.y0 << " " << beside.y1;
+}
+
+// A figure's title: bold at the body size (not 1.35 em) where one line
+// holds it, in a band 2 lines tall (2.4 in a clip); one whose band would
+// take over a fifth of the figure's height is left out.
+TEST(ClipLayout, AFiguresTitleIsBodySizedAndLeftOutPastAFifthOfTheHeight) {
+  const std::string title = "On a cylinder: a parallel, then a helix";
+  const float text = 20.0f, width = 1280.0f, height = 720.0f;
+  const TitleLines clip = titleLines(title, text, width, height, 0.0f);
+  const TitleLines figure = titleLines(title, text, width, height, text, true);
+  EXPECT_FLOAT_EQ(clip.sizePx, 1.35f * text);
+  EXPECT_FLOAT_EQ(figure.sizePx, text);
+  EXPECT_EQ(figure.lines.size(), 1u);
+  EXPECT_EQ(titleBandHeight(1, text, true), 40);
+  EXPECT_EQ(titleBandHeight(1, text), 48);
+  EXPECT_TRUE(titleFitsFigure(title, text, width, height, text));
+  // At a size where it breaks onto two lines, 3.4 lines tall: over a fifth.
+  const float large = 1.05f * 0.94f * width / textWidthPx(title, 1.0f, true);
+  ASSERT_EQ(titleLines(title, large, width, height, large, true).lines.size(), 2u);
+  EXPECT_GT(3.4f * large, 0.2f * height);
+  EXPECT_FALSE(titleFitsFigure(title, large, width, height, large));
 }
 
 // A line too wide for its view breaks at spaces at its own size (not

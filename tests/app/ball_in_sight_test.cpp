@@ -128,7 +128,10 @@ class BallInSight : public ::testing::Test {
           for (render::View &v : surfaceOnly.views) v.light.shadow = false;
           std::vector<const render::MeshItem *> balls;
           for (const render::MeshItem &m : list.meshes) {
-            if (m.material.pattern == render::Pattern::Checker) surfaceOnly.meshes.push_back(m);
+            // The surface: a chart's or a board's checker, or the world
+            // cubes of a steep chart.
+            if (m.material.pattern == render::Pattern::Checker || m.material.pattern == render::Pattern::SolidChecker)
+              surfaceOnly.meshes.push_back(m);
             if (m.material.pattern == render::Pattern::Texture) balls.push_back(&m);
           }
           ASSERT_FALSE(balls.empty()) << file.stem();

@@ -54,6 +54,8 @@ export ROLLSPIN_TEST_SWEEP=sample
 # without one, so the two passes together reach both backends. (They were a
 # separate Release pass, 94 s of .ci/run; here they cost nothing extra.)
 export ROLLSPIN_GL=egl
+# One rasterizer thread per GL test, as in scripts/test.sh.
+export LP_NUM_THREADS=${LP_NUM_THREADS:-0}
 cd build-asan
 # ctest starts the longest tests first when it knows their times; a fresh
 # build-asan has none, so the Release pass's measured times (same test names,

@@ -30,18 +30,12 @@ export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0"
 # settings take about an eighth off the pass, and a use after free is still
 # caught while the block is among the last 64 MiB freed.
 export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1:intercept_tls_get_addr=0:quarantine_size_mb=64:malloc_context_size=10"
-# Mesa's EGL driver (swrast_dri.so) is dlopen'ed by libEGL_mesa and dlclose'd
-# again before the leak check: its exit-time allocations then come from an
-# "<unknown module>" that no suppression can name. Preloading it keeps it
-# mapped, so the suppressions for the GL stack apply to EGL as to OSMesa.
-# (ASan's runtime is still loaded first: it is the binaries' own dependency.)
-for driver in /usr/lib/*/dri/swrast_dri.so; do
-  if [ -e "$driver" ]; then
-    export LD_PRELOAD="$driver${LD_PRELOAD:+:$LD_PRELOAD}"
-    ASAN_OPTIONS="$ASAN_OPTIONS:verify_asan_link_order=0"
-    break
-  fi
-done
+# Mesa's EGL driver (swrast_dri.so) is dlopen'ed by libEGL_mesa and
+# dlclose'd again before the leak check: an ASan build of rollspin keeps it
+# mapped itself (render/egl_context.cpp, keepDriversMappedForLeakCheck), so
+# the suppressions for the GL stack apply to EGL as to OSMesa. (Preloading
+# the driver into every process did the same at about 0.1 s of CPU each,
+# ffprobe and pdftotext included: a quarter of the process-heavy tests.)
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # The sweep tests (every scene × aspect × frame; the fault matrix's every
 # command × fault) visit a deterministic quarter of their data here: this

@@ -51,8 +51,8 @@ dd if=/dev/urandom of="$tmp/munge.key" bs=1024 count=1 status=none
 chmod 400 "$tmp/munge.key"
 mkdir -p "$tmp/munge"
 chmod 700 "$tmp/munge"
-# The daemons start without the sanitizer pass's LD_PRELOAD (a GL driver
-# for the ASan build of rollspin): they have nothing to do with it.
+# The daemons start without any LD_PRELOAD of the caller's (a sanitizer
+# runtime or a GL driver is rollspin's business, not theirs).
 daemon() { env -u LD_PRELOAD "$@"; }
 daemon munged --force --key-file="$tmp/munge.key" --socket="$tmp/munge/munge.socket" --pid-file="$tmp/munged.pid" \
   --seed-file="$tmp/munge/seed" --log-file="$tmp/munged.log" --num-threads=2 ||

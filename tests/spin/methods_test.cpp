@@ -11,6 +11,7 @@
 #include "oracle_support.hpp"
 #include "spin/adaptive_march.hpp"
 #include "spin/field.hpp"
+#include "support/sweep.hpp"
 #include "support/test_paths.hpp"
 
 using namespace rollspin;
@@ -139,18 +140,24 @@ TEST(Methods, AdaptiveLandsOnCurvatureJumps) {
 
 TEST(Methods, GeometricMethodsDriftLessThan1e13Per1e6Steps) {
   // A varying field (loxodrome: no rigid kernel) and a rigid one (lollipop:
-  // the vector kernel for magnus2/4), 1e6 steps each.
+  // the vector kernel for magnus2/4), 1e6 steps each (a sweep: the
+  // sanitizer pass runs a sample of the six).
   const auto lolli = lollipopPath(3.0, 100.0);
   auto sphere = std::make_shared<const geometry::Sphere>(2.0, geometry::Side::Outside);
   const auto lox = geometry::sphereLoxodrome(sphere, 1.2, 0.0, 0.4, 2.6);
-  for (Method m : {Method::Magnus2, Method::Magnus4, Method::Cf4, Method::Magnus6}) {
-    const auto st = spin::Propagator(*lolli, 1.0, m, 1'000'000).solveFinal();
-    EXPECT_EQ(st.steps, 1'000'000);
-    EXPECT_LE(st.unitarityError, 1e-13) << spin::methodName(m);
-  }
-  for (Method m : {Method::Magnus4, Method::Frame4}) {
-    const auto st = spin::Propagator(*lox, 0.7, m, 1'000'000).solveFinal();
-    EXPECT_LE(st.unitarityError, 1e-13) << spin::methodName(m);
+  struct Run {
+    const geometry::ContactPath* path;
+    double R;
+    Method method;
+  };
+  const std::vector<Run> runs{{lolli.get(), 1.0, Method::Magnus2}, {lolli.get(), 1.0, Method::Magnus4},
+                              {lolli.get(), 1.0, Method::Cf4},     {lolli.get(), 1.0, Method::Magnus6},
+                              {lox.get(), 0.7, Method::Magnus4},   {lox.get(), 0.7, Method::Frame4}};
+  for (const Run& run : test::sweep(runs)) {
+    const std::string name = std::string(run.path == lolli.get() ? "lollipop " : "loxodrome ") + std::string(spin::methodName(run.method));
+    const auto st = spin::Propagator(*run.path, run.R, run.method, 1'000'000).solveFinal();
+    EXPECT_EQ(st.steps, 1'000'000) << name;
+    EXPECT_LE(st.unitarityError, 1e-13) << name;
   }
 }
 

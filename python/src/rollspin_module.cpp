@@ -52,6 +52,11 @@ namespace py = pybind11;
 namespace fs = std::filesystem;
 using namespace rollspin;
 
+namespace rollspin::python {
+// The source tree's scenes/ (generated into source_scenes.cpp by python/CMakeLists.txt).
+extern const char* const kSourceScenes;
+}  // namespace rollspin::python
+
 namespace {
 
 // Where a scene comes from: a file, or text (loads()), and the --set
@@ -417,7 +422,7 @@ PYBIND11_MODULE(_rollspin, m) {
   m.doc() = "rollspin's C++ core (scene loader, solve, timeline, still, figure and animation jobs); "
             "use the `rollspin` package's API, not this module directly.";
   translateErrors();
-  m.attr("SOURCE_SCENES") = ROLLSPIN_SOURCE_SCENES;
+  m.attr("SOURCE_SCENES") = rollspin::python::kSourceScenes;
 
   py::class_<Scene, std::shared_ptr<Scene>>(m, "Scene")
       .def_static("load", [](const std::string& path, const std::vector<std::string>& overrides) {

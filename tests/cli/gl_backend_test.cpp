@@ -15,6 +15,10 @@
 #include "support/gl_machine.hpp"
 
 namespace rollspin {
+namespace test {
+// The shim's path (generated into egl_shim_path.cpp by tests/cli/CMakeLists.txt).
+std::filesystem::path eglDeviceBaseShimPath();
+}  // namespace test
 namespace {
 
 namespace fs = std::filesystem;
@@ -179,7 +183,7 @@ TEST(GlBackend, ASoftwareDeviceAskedForSaysSo) {
 // they were not, and the GPU was reached only through the surfaceless
 // platform, reported as software. The shim lists the client extensions so.
 TEST(GlBackend, ListsEglDevicesWhereLibEglNamesOnlyDeviceBase) {
-  const std::string shim = std::string("ROLLSPIN_EGL_LIBRARY=") + ROLLSPIN_EGL_DEVICE_BASE_SHIM;
+  const std::string shim = "ROLLSPIN_EGL_LIBRARY=" + test::eglDeviceBaseShimPath().string();
   const auto info = test::runRollspin({"info"}, {}, 0, {shim});
   ASSERT_EQ(info.exitCode, 0) << info.err;
   EXPECT_TRUE(has(info.out, "EGL devices 0: ")) << info.out;

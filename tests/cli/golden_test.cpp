@@ -82,7 +82,7 @@ void expectWithinThresholds(const fs::path& actualPath, const fs::path& expected
   const double share = visiblyDifferingShare(actual, expected);
   const bool ok = d.maxOverall() <= kMaxDelta && d.meanOverall() <= kMeanDelta && share <= kMaxVisibleShare;
   if (!ok) {
-    const fs::path failures = ROLLSPIN_GOLDEN_FAILURE_DIR;
+    const fs::path failures = test::buildDir() / "golden-failures";
     fs::create_directories(failures);
     const fs::path keep = failures / (label + ".actual.png");
     const fs::path diff = failures / (label + ".diff.png");
@@ -98,7 +98,7 @@ void expectWithinThresholds(const fs::path& actualPath, const fs::path& expected
 
 void checkGolden(const std::string& name, const std::vector<std::string>& extra, const std::string& backend) {
   const fs::path actualPath = renderScene(name, extra, backend);
-  const fs::path golden = fs::path(ROLLSPIN_GOLDEN_DIR) / (name + ".png");
+  const fs::path golden = test::sourceDir() / "tests" / "golden" / (name + ".png");
   if (regenerate()) {
     // References come from one backend (the first in the list below).
     if (backend != "osmesa") GTEST_SKIP() << "references are regenerated with osmesa";

@@ -20,7 +20,7 @@ using rollspin::test::freshTempDir;
 
 TEST(Install, LaysOutATool) {
   const fs::path prefix = freshTempDir("install_prefix");
-  const std::string install = std::string("\"") + ROLLSPIN_CMAKE + "\" --install \"" + ROLLSPIN_BUILD_DIR +
+  const std::string install = "\"" + rollspin::test::cmakeCommand() + "\" --install \"" + rollspin::test::buildDir().string() +
                               "\" --prefix \"" + prefix.string() + "\" > \"" + (prefix / "install.log").string() +
                               "\" 2>&1";
   ASSERT_EQ(std::system(install.c_str()), 0) << rollspin::test::readFile(prefix / "install.log");
@@ -55,8 +55,8 @@ TEST(Install, LaysOutATool) {
 // and MTIME is 0), and its text unchanged.
 TEST(Install, UnderUsrLaysOutTheDebianPackage) {
   const fs::path stage = freshTempDir("install_deb_stage");
-  const std::string install = "DESTDIR=\"" + stage.string() + "\" \"" + ROLLSPIN_CMAKE + "\" --install \"" +
-                              ROLLSPIN_BUILD_DIR + "\" --prefix /usr > \"" + (stage / "install.log").string() + "\" 2>&1";
+  const std::string install = "DESTDIR=\"" + stage.string() + "\" \"" + rollspin::test::cmakeCommand() + "\" --install \"" +
+                              rollspin::test::buildDir().string() + "\" --prefix /usr > \"" + (stage / "install.log").string() + "\" 2>&1";
   ASSERT_EQ(std::system(install.c_str()), 0) << rollspin::test::readFile(stage / "install.log");
   const fs::path usr = stage / "usr";
   EXPECT_TRUE(fs::is_regular_file(usr / "share" / "zsh" / "vendor-completions" / "_rollspin"));
@@ -66,7 +66,7 @@ TEST(Install, UnderUsrLaysOutTheDebianPackage) {
   const std::string roff = rollspin::test::readFile(page);
 
   const fs::path script = rollspin::test::sourceDir() / "scripts" / "cpack_deb_man_pages.cmake";
-  const std::string compress = "\"" + std::string(ROLLSPIN_CMAKE) + "\" -DCPACK_GENERATOR=DEB -DCPACK_TEMPORARY_DIRECTORY=\"" +
+  const std::string compress = "\"" + rollspin::test::cmakeCommand() + "\" -DCPACK_GENERATOR=DEB -DCPACK_TEMPORARY_DIRECTORY=\"" +
                                stage.string() + "\" -P \"" + script.string() + "\" > \"" +
                                (stage / "compress.log").string() + "\" 2>&1";
   ASSERT_EQ(std::system(compress.c_str()), 0) << rollspin::test::readFile(stage / "compress.log");

@@ -7,13 +7,14 @@
 #include "motion/solve_job.hpp"
 #include "core/error.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/test_files.hpp"
 #include "support/test_paths.hpp"
 
 using namespace rollspin;
 
 namespace {
 scene::SceneSpec load(const std::vector<std::string>& sets) {
-  return scene::loadSceneFile(std::string(ROLLSPIN_SOURCE_DIR) + "/scenes/lollipop.toml", sets);
+  return scene::loadSceneFile(rollspin::test::shippedScenePath("lollipop"), sets);
 }
 std::string badInputMessage(const std::vector<std::string>& sets) {
   try {

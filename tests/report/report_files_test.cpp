@@ -16,7 +16,7 @@ using namespace rollspin;
 
 namespace {
 std::filesystem::path freshDir(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(ROLLSPIN_TEST_TMP) / name;
+  const std::filesystem::path dir = rollspin::test::testTmpRoot() / name;
   std::filesystem::remove_all(dir);
   return dir;
 }

@@ -36,7 +36,6 @@ void expectBadScene(const BadScene& c) {
   std::filesystem::remove_all(dir);
 }
 
-std::filesystem::path binaryPath() { return ROLLSPIN_BINARY; }
 
 CliResult runRollspin(const std::vector<std::string>& args, const std::filesystem::path& cwd,
                       std::uint64_t addressSpaceLimit, const std::vector<std::string>& environment) {

@@ -14,7 +14,6 @@ std::string readFile(const std::filesystem::path& p) {
   return ss.str();
 }
 
-std::filesystem::path sourceDir() { return ROLLSPIN_SOURCE_DIR; }
 std::string shippedScenePath(const std::string& name) { return (sourceDir() / "scenes" / (name + ".toml")).string(); }
 std::string renderTestScenePath(const std::string& name) {
   return (sourceDir() / "tests/render/scenes" / (name + ".toml")).string();
@@ -23,7 +22,7 @@ std::string renderTestScenePath(const std::string& name) {
 // Named by the process id: two test programs that run at once (ctest -j)
 // never share a directory.
 std::filesystem::path freshTempDir(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(ROLLSPIN_TEST_TMP) / (name + "." + std::to_string(::getpid()));
+  const std::filesystem::path dir = testTmpRoot() / (name + "." + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

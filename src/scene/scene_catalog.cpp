@@ -14,6 +14,13 @@
 
 namespace rollspin::scene {
 
+namespace build_tree {
+// This build tree's rollspin folder and the source's scenes/ (generated into
+// build_tree.cpp by src/scene/CMakeLists.txt).
+extern const char* const kBinaryDir;
+extern const char* const kSourceScenes;
+}  // namespace build_tree
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -45,11 +52,9 @@ std::vector<fs::path> candidateFolders() {
   const fs::path exe = executablePath();
   if (!exe.empty()) {
     out.push_back((exe.parent_path() / ".." / "share" / "rollspin" / "scenes").lexically_normal());
-#if defined(ROLLSPIN_BINARY_DIR) && defined(ROLLSPIN_SOURCE_SCENES)
     // The build tree's binary (build/rollspin) reads the source's scenes/.
     std::error_code ec;
-    if (fs::equivalent(exe.parent_path(), ROLLSPIN_BINARY_DIR, ec)) out.emplace_back(ROLLSPIN_SOURCE_SCENES);
-#endif
+    if (fs::equivalent(exe.parent_path(), build_tree::kBinaryDir, ec)) out.emplace_back(build_tree::kSourceScenes);
   }
   return out;
 }

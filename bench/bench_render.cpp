@@ -25,7 +25,7 @@ namespace {
 // benchmark, for experiments; the lollipop by default.
 std::string benchScenePath() {
   const char* name = std::getenv("ROLLSPIN_BENCH_SCENE");
-  return std::string(ROLLSPIN_SOURCE_DIR "/scenes/") + (name != nullptr && *name != '\0' ? name : "lollipop") + ".toml";
+  return std::string(rollspin::bench::kSceneDir) + "/" + (name != nullptr && *name != '\0' ? name : "lollipop") + ".toml";
 }
 
 std::vector<std::string> sizeOverrides() {

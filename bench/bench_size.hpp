@@ -8,6 +8,9 @@
 
 namespace rollspin::bench {
 
+// The source tree's scenes/ (generated into bench_paths.cpp by bench/CMakeLists.txt).
+extern const char* const kSceneDir;
+
 struct FrameSize {
   int width = 1920;
   int height = 1080;

@@ -14,6 +14,7 @@
 #include "model/rolling_model.hpp"
 #include "motion/solve_job.hpp"
 #include "scene/scene_loader.hpp"
+#include "bench_size.hpp"
 #include "spin/propagator.hpp"
 
 using namespace rollspin;
@@ -100,7 +101,7 @@ BENCHMARK(BM_LollipopRevolution_Exact)->Unit(benchmark::kMicrosecond);
 // the scene chooses, its automatic steps): the C++ side of bench_python.py's
 // Scene.solve() comparison (issue 44: ≤ 1.5× this + 20 µs).
 static void BM_LollipopScene_Solve(benchmark::State& state) {
-  const scene::SceneSpec spec = scene::loadSceneFile(ROLLSPIN_SOURCE_DIR "/scenes/lollipop.toml");
+  const scene::SceneSpec spec = scene::loadSceneFile(std::string(bench::kSceneDir) + "/lollipop.toml");
   const model::RollingModel model = model::buildModel(spec);
   for (auto _ : state) {
     const motion::SolverChoice choice = motion::chooseSolver(spec, model);
@@ -139,7 +140,7 @@ BENCHMARK(BM_PolylineScene_Solve)->Unit(benchmark::kMicrosecond);
 // false): the solve alone, so that the estimate's cost is the difference.
 static void BM_LollipopScene_SolveWithoutEstimate(benchmark::State& state) {
   const std::string off[] = {"solver.error_estimate=false"};
-  runScene(state, scene::loadSceneFile(ROLLSPIN_SOURCE_DIR "/scenes/lollipop.toml", off));
+  runScene(state, scene::loadSceneFile(std::string(bench::kSceneDir) + "/lollipop.toml", off));
 }
 BENCHMARK(BM_LollipopScene_SolveWithoutEstimate)->Unit(benchmark::kMicrosecond);
 static void BM_PolylineScene_SolveWithoutEstimate(benchmark::State& state) {

@@ -39,6 +39,12 @@ std::vector<std::size_t> sweepIndices(std::size_t count) {
   return out;
 }
 
+std::vector<bool> sweepMask(std::size_t count) {
+  std::vector<bool> visited(count, false);
+  for (std::size_t i : sweepIndices(count)) visited[i] = true;
+  return visited;
+}
+
 std::vector<std::filesystem::path> bundledSceneFiles() {
   std::vector<std::filesystem::path> out;
   for (const auto& e : std::filesystem::directory_iterator(sourceDir() / "scenes"))

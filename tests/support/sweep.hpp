@@ -23,6 +23,10 @@ bool sweepSampled();
 inline constexpr std::size_t kSweepStride = 4;
 std::vector<std::size_t> sweepIndices(std::size_t count);
 
+// The same as a mask: visited[i] says whether item i is in the sweep (for a
+// loop that draws every item's random numbers but checks only the sample).
+std::vector<bool> sweepMask(std::size_t count);
+
 template <class T>
 std::vector<T> sweep(const std::vector<T>& items) {
   std::vector<T> kept;

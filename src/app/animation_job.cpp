@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "app/clip_captions.hpp"
 #include "app/flag_overrides.hpp"
 #include "app/interrupt_guard.hpp"
 #include "app/job_setup.hpp"
@@ -160,6 +161,11 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
                   sinkOpts.crf ? fmt::format("{}", *sinkOpts.crf) : std::string("default"),
                   sinkOpts.alpha ? "alpha " : "", width, height, sinkOpts.fpsNum, sinkOpts.fpsDen),
       range.first, range.last, clock.frameCount()});
+  // The captions as text: the part's own cues in its track, the whole
+  // clip's in the sidecars; shown unasked when the pixels leave them out.
+  const media::SubtitleCues cues = clipCaptionCues(spec, clock);
+  sinkOpts.subtitles = media::cuesOfPart(cues, range.first, range.last);
+  sinkOpts.subtitlesByDefault = !spec.render.burnCaptions;
   StageLog::instance().record(folder ? "png-frames" : "encoder");
   const std::unique_ptr<media::FrameSink> sink = media::openSink(format, sinkOpts);
 
@@ -304,7 +310,13 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     return result;
   }
   result.interruptedBy = 0;  // a signal after the last frame changes nothing
+  // Written before the video is finished, renamed into place after it: a
+  // failure on either way leaves neither.
+  std::optional<media::SubtitleSidecars> sidecars;
+  if (sinkOpts.wholeClip && sink->carriesSubtitles())
+    sidecars.emplace(out, o.sidecars, cues, sinkOpts.fpsNum, sinkOpts.fpsDen);
   result.written = sink->finish();
+  if (sidecars) sidecars->commit();
   if (!o.quiet)
     std::fprintf(stderr, "rollspin: wrote %s: %lld frames, %dx%d @ %s fps (%.2f s of video) in %.1f s (%.1f frames/s)\n",
                  result.written.string().c_str(), result.framesWritten, width, height, clock.fps().describe().c_str(),

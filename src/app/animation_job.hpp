@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "media/subtitle_track.hpp"
+
 namespace rollspin::app {
 
 struct AnimationOptions {
@@ -28,6 +30,8 @@ struct AnimationOptions {
   std::optional<long long> width, height;
   bool transparent = false;
   bool quiet = false;
+  // A whole MP4, WebM or MOV clip's captions beside it: NAME.vtt (and NAME.srt).
+  media::SidecarFormats sidecars = media::SidecarFormats::Vtt;
   std::filesystem::path shaderDir;
   std::optional<std::string> sceneText;        // the scene itself (Python's loads()); scenePath names it
   // Called on the rendering thread after each frame is handed on (done, of

@@ -29,7 +29,7 @@ struct RenderCliOptions {
   bool stillFlag = false;
   std::string at, output, shaderDir;
   long long width = 0, height = 0;
-  std::string frames, quality, shard;
+  std::string frames, quality, shard, subtitles;
   bool quiet = false;
 };
 
@@ -44,6 +44,7 @@ int runAnimation(const RenderCliOptions& o, const CLI::App& command) {
   if (command.count("--frames") > 0) a.frames = o.frames;
   if (command.count("--shard") > 0) a.shard = o.shard;
   if (command.count("--quality") > 0) a.quality = o.quality;
+  if (command.count("--subtitles") > 0) a.sidecars = media::parseSidecarFormats(o.subtitles, "--subtitles");
   if (command.count("--width") > 0) a.width = o.width;
   if (command.count("--height") > 0) a.height = o.height;
   a.transparent = o.still.transparent;
@@ -55,7 +56,7 @@ int runAnimation(const RenderCliOptions& o, const CLI::App& command) {
 
 int runRender(RenderCliOptions& o, const CLI::App& command) {
   if (!o.stillFlag) return runAnimation(o, command);
-  for (const char* animationOnly : {"--frames", "--shard", "--quality"})
+  for (const char* animationOnly : {"--frames", "--shard", "--quality", "--subtitles"})
     if (command.count(animationOnly) > 0) throw badInput({animationOnly}, "applies to animations only (without --still)");
   if (command.count("--at") > 0) o.still.at = o.at;
   if (command.count("--width") > 0) o.still.width = o.width;
@@ -278,6 +279,10 @@ void registerRenderCommands(CLI::App& cli, CommandHandler& handler) {
   render->add_option("--quality", options->quality,
                      "Animation size and frame rate: low (854x480@15), medium (1280x720@30), high (1920x1080@60), "
                      "4k (3840x2160@60)");
+  render->add_option("--subtitles", options->subtitles,
+                     "An MP4, WebM or MOV clip's captions and title as files beside it: vtt (NAME.vtt, the "
+                     "default), srt (NAME.vtt and NAME.srt) or none; the clip's subtitle track carries them "
+                     "whatever this says");
   render->add_flag("--quiet", options->quiet, "No progress bar or summary line (a still: no \"wrote FILE\" line)");
   render->add_option("--width", options->width, "Image width in pixels (1..8192)");
   render->add_option("--height", options->height, "Image height in pixels (1..8192)");

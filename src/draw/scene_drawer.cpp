@@ -109,7 +109,10 @@ bool SceneDrawer::figure() const { return spec_.render.leastTextScale > 0.0; }
 
 // A figure leaves out a title whose band would take over a fifth of its
 // height (a narrow column in large text): its caption says it.
+// render.burn_captions = false leaves titles and captions to the subtitle
+// track: none in the pixels, and no title band.
 std::string SceneDrawer::shownTitle(const std::string& title) const {
+  if (!spec_.render.burnCaptions) return {};
   if (title.empty() || !figure()) return title;
   const bool fits = titleFitsFigure(title, text(), float(spec_.render.width), float(spec_.render.height), leastText());
   return fits ? title : std::string();
@@ -149,7 +152,7 @@ std::vector<TextBlock> SceneDrawer::twinBlocks(const FrameOrientations& frame, f
 
 const std::string& SceneDrawer::captionAt(const StoryPlace& story) const {
   static const std::string none;
-  return spec_.segments.empty() ? none : spec_.segments[std::min(story.segment, spec_.segments.size() - 1)].caption;
+  return spec_.segments.empty() || !spec_.render.burnCaptions ? none : spec_.segments[std::min(story.segment, spec_.segments.size() - 1)].caption;
 }
 
 // Before the first frame: every block's size over the clip (measured at its

@@ -36,9 +36,9 @@ extern "C" {
   X(avutil_version) X(av_buffer_create) X(av_dict_free) X(av_dict_get) X(av_dict_set) X(av_frame_alloc) X(av_frame_free)         \
   X(av_frame_get_buffer) X(av_frame_make_writable) X(av_frame_unref) X(av_get_pix_fmt) X(av_hash_alloc)        \
   X(av_hash_final_hex) X(av_hash_freep) X(av_hash_init) X(av_hash_update) X(av_log_set_level) X(av_opt_find)   \
-  X(av_opt_set) X(av_opt_set_int) X(av_opt_set_pixel_fmt) X(av_rescale_q) X(av_strerror)                       \
+  X(av_opt_set) X(av_opt_set_int) X(av_opt_set_pixel_fmt) X(av_rescale_q) X(av_strdup) X(av_strerror)                       \
   /* libavcodec */                                                                                             \
-  X(avcodec_version) X(av_packet_alloc) X(av_packet_free) X(av_packet_rescale_ts) X(av_packet_unref) X(avcodec_alloc_context3)    \
+  X(avcodec_version) X(av_new_packet) X(av_packet_alloc) X(av_packet_free) X(av_packet_rescale_ts) X(av_packet_unref) X(avcodec_alloc_context3) X(avcodec_encode_subtitle) \
   X(avcodec_find_encoder_by_name) X(avcodec_free_context) X(avcodec_get_name) X(avcodec_open2)                 \
   X(avcodec_parameters_alloc) X(avcodec_parameters_copy) X(avcodec_parameters_free)                            \
   X(avcodec_parameters_from_context) X(avcodec_receive_packet) X(avcodec_send_frame)                           \

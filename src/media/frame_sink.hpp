@@ -31,6 +31,9 @@ class FrameSink {
   // One line for --verbose on what the sink did beyond writing frames
   // ("converted 9.1 % of the pixels …"); empty: nothing to say.
   [[nodiscard]] virtual std::string verboseSummary() const { return {}; }
+  // Whether the format has a subtitle track (MP4, WebM, MOV): such a clip
+  // also gets its captions as sidecar files (subtitle_track.hpp).
+  [[nodiscard]] virtual bool carriesSubtitles() const { return false; }
 
   // A sink that must see the clip before writing it (a GIF's palette) names
   // the frames it wants first: indices in [0, count) of the `count` frames it

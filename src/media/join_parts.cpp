@@ -36,6 +36,12 @@ struct ParametersFreer {
 using Input = std::unique_ptr<AVFormatContext, InputCloser>;
 using Packet = std::unique_ptr<AVPacket, PacketFreer>;
 
+// A caption as the part's track holds it: its frames and its packet's bytes.
+struct InBandCue {
+  SubtitleCue cue;
+  std::string payload;
+};
+
 // What pass 1 learns about one part; pass 2 copies its packets.
 struct Part {
   fs::path path;
@@ -43,6 +49,8 @@ struct Part {
   std::string extension;
   ContainerTags tags;
   std::unique_ptr<AVCodecParameters, ParametersFreer> codec;
+  std::unique_ptr<AVCodecParameters, ParametersFreer> subtitleCodec;  // null: no subtitle track
+  std::vector<InBandCue> cues;  // the part's captions, in its own frames
   AVRational timeBase{0, 1}, frameRate{0, 1};
   long long packets = 0;
   std::int64_t firstPts = 0;  // the smallest presentation timestamp
@@ -52,7 +60,8 @@ struct Part {
   [[nodiscard]] std::string range() const { return fmt::format("frames {}-{}", tags.firstFrame, tags.lastFrame); }
 };
 
-// Opens a part and checks it holds exactly one video stream.
+// Opens a part and checks it holds one video stream (stream 0) and at most
+// one subtitle stream (stream 1).
 Input openPart(const fs::path& path, const SourceLoc& loc) {
   AVFormatContext* raw = nullptr;
   // "file:" keeps a colon in a file name from reading as a protocol.
@@ -62,9 +71,10 @@ Input openPart(const fs::path& path, const SourceLoc& loc) {
   Input input(raw);
   if (const int ret = avformat_find_stream_info(input.get(), nullptr); ret < 0)
     throw badInput(loc, "cannot read this part's streams: {}", av::errorText(ret));
-  if (input->nb_streams != 1 || input->streams[0]->codecpar->codec_type != AVMEDIA_TYPE_VIDEO)
-    throw badInput(loc, "expected one video stream (a part rendered by rollspin), found {} stream(s)",
-                   input->nb_streams);
+  const bool subtitles = input->nb_streams == 2 && input->streams[1]->codecpar->codec_type == AVMEDIA_TYPE_SUBTITLE;
+  if ((input->nb_streams != 1 && !subtitles) || input->streams[0]->codecpar->codec_type != AVMEDIA_TYPE_VIDEO)
+    throw badInput(loc, "expected one video stream and at most one subtitle track (a part rendered by rollspin), "
+                   "found {} stream(s)", input->nb_streams);
   return input;
 }
 
@@ -74,6 +84,18 @@ std::map<std::string, std::string> metadataOf(const AVFormatContext& input) {
   // Matroska (WebM) stores tag names in upper case.
   while ((e = av_dict_get(input.metadata, "", e, AV_DICT_IGNORE_SUFFIX)) != nullptr) out[asciiLowercase(e->key)] = e->value;
   return out;
+}
+
+// A subtitle packet's cue, its times in whole frames: cues start and end on
+// frames, so rounding to the nearest frame undoes the container's rounding
+// (WebM keeps milliseconds).
+InBandCue captionOf(const AVPacket& packet, const AVStream& stream, AVRational frameDuration) {
+  InBandCue c;
+  c.payload.assign(reinterpret_cast<const char*>(packet.data), static_cast<std::size_t>(packet.size));
+  c.cue.firstFrame = av_rescale_q(packet.pts, stream.time_base, frameDuration);
+  c.cue.endFrame = av_rescale_q(packet.pts + packet.duration, stream.time_base, frameDuration);
+  c.cue.text = cueTextOfPacket(c.payload, stream.codecpar->codec_id == AV_CODEC_ID_MOV_TEXT);
+  return c;
 }
 
 // Pass 1: the tags, the codec, and every packet's timestamp (no decoding).
@@ -96,11 +118,25 @@ Part inspectPart(const fs::path& path) {
   if (part.frameRate.num <= 0 || part.frameRate.den <= 0)
     throw badInput(part.loc(), "its video stream states no frame rate");
 
+  const AVStream* subtitles = input->nb_streams == 2 ? input->streams[1] : nullptr;
+  if (subtitles != nullptr) {
+    part.subtitleCodec.reset(avcodec_parameters_alloc());
+    if (!part.subtitleCodec || avcodec_parameters_copy(part.subtitleCodec.get(), subtitles->codecpar) < 0)
+      throw std::bad_alloc();
+  }
+  const AVRational frameDuration = av_inv_q(part.frameRate);
+
   std::vector<std::int64_t> pts;
   const Packet packet(av_packet_alloc());
   if (!packet) throw std::bad_alloc();
   int ret = 0;
   while ((ret = av_read_frame(input.get(), packet.get())) >= 0) {
+    if (subtitles != nullptr && packet->stream_index == subtitles->index) {
+      part.cues.push_back(captionOf(*packet, *subtitles, frameDuration));
+      av_packet_unref(packet.get());
+      if (part.cues.back().cue.text.empty()) part.cues.pop_back();  // MP4's filler between captions
+      continue;
+    }
     if (pts.empty()) part.startsWithKeyframe = (packet->flags & AV_PKT_FLAG_KEY) != 0;
     const std::int64_t t = packet->pts;
     av_packet_unref(packet.get());
@@ -114,7 +150,6 @@ Part inspectPart(const fs::path& path) {
   // sit exactly so from its first one, or the joined timeline would not be.
   std::sort(pts.begin(), pts.end());
   part.firstPts = pts.front();
-  const AVRational frameDuration = av_inv_q(part.frameRate);
   for (std::size_t k = 0; k < pts.size(); ++k)
     if (pts[k] - pts.front() != av_rescale_q(static_cast<std::int64_t>(k), frameDuration, part.timeBase))
       throw badInput(part.loc(), "its frame {} is at tick {} of {}/{} s, expected {} (one frame every {}/{} s)", k,
@@ -162,6 +197,33 @@ void expectSameRender(const Part& p, const Part& ref) {
     throw badInput(p.loc(), "its time base {}/{} at {}/{} fps differs from {}'s {}/{} at {}/{} fps", p.timeBase.num,
                    p.timeBase.den, p.frameRate.num, p.frameRate.den, r, ref.timeBase.num, ref.timeBase.den,
                    ref.frameRate.num, ref.frameRate.den);
+}
+
+// Captions: all parts have a subtitle track of one codec, or none has.
+void expectSameCaptions(const Part& p, const Part& ref) {
+  const auto codecName = [](const Part& part) {
+    return part.subtitleCodec ? fmt::format("a {} subtitle track", avcodec_get_name(part.subtitleCodec->codec_id))
+                              : std::string("no subtitle track");
+  };
+  if (codecName(p) != codecName(ref))
+    throw badInput(p.loc(), "has {}, but {} has {}: render every part with one rollspin and scene", codecName(p),
+                   ref.name, codecName(ref));
+}
+
+// The parts' captions on the clip's frames, a cue that a part boundary cut
+// in two made one again.
+std::vector<InBandCue> clipCaptions(const std::vector<const Part*>& sorted) {
+  std::vector<InBandCue> out;
+  for (const Part* part : sorted)
+    for (InBandCue c : part->cues) {
+      c.cue.firstFrame += part->tags.firstFrame;
+      c.cue.endFrame += part->tags.firstFrame;
+      if (!out.empty() && out.back().cue.endFrame == c.cue.firstFrame && out.back().payload == c.payload)
+        out.back().cue.endFrame = c.cue.endFrame;
+      else
+        out.push_back(std::move(c));
+    }
+  return out;
 }
 
 void expectWholePart(const Part& p) {
@@ -242,6 +304,7 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
   const Part& ref = parts.front();
   for (const Part& p : parts) {
     expectSameRender(p, ref);
+    expectSameCaptions(p, ref);
     expectWholePart(p);
   }
   std::vector<const Part*> sorted;
@@ -276,6 +339,16 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
   stream->codecpar->codec_tag = 0;  // let the muxer choose the tag for its container
   stream->time_base = ref.timeBase;
   stream->avg_frame_rate = ref.frameRate;
+  const AVRational frameDuration = av_inv_q(ref.frameRate);
+  const std::vector<InBandCue> captions = clipCaptions(sorted);
+  AVStream* subtitleStream = nullptr;
+  if (ref.subtitleCodec) {
+    subtitleStream = avformat_new_stream(out.format, nullptr);
+    if (subtitleStream == nullptr) throw std::bad_alloc();
+    check(avcodec_parameters_copy(subtitleStream->codecpar, ref.subtitleCodec.get()), "configuring the subtitle stream");
+    subtitleStream->codecpar->codec_tag = 0;
+    subtitleStream->time_base = frameDuration;
+  }
 
   // The joined clip is tagged as the whole render: frames 0 … total − 1.
   ContainerTags whole = ref.tags;
@@ -298,10 +371,24 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
   // Pass 2: copy the packets, each moved to its frame's index in the clip.
   // Decoding timestamps move with their packet and keep the encoder's
   // reorder delay, so they run on across the joins too (checked).
-  const AVRational frameDuration = av_inv_q(ref.frameRate);
   std::int64_t lastDts = std::numeric_limits<std::int64_t>::min();
-  const Packet packet(av_packet_alloc());
-  if (!packet) throw std::bad_alloc();
+  const Packet packet(av_packet_alloc()), cuePacket(av_packet_alloc());
+  if (!packet || !cuePacket) throw std::bad_alloc();
+  // Each caption goes in as the first frame it covers does.
+  std::size_t nextCaption = 0;
+  auto writeCaptionsUpTo = [&](std::int64_t frame) {
+    for (; nextCaption < captions.size() && captions[nextCaption].cue.firstFrame <= frame; ++nextCaption) {
+      const InBandCue& c = captions[nextCaption];
+      check(av_new_packet(cuePacket.get(), static_cast<int>(c.payload.size())), "copying a caption");
+      std::memcpy(cuePacket->data, c.payload.data(), c.payload.size());
+      cuePacket->pts = cuePacket->dts = c.cue.firstFrame;
+      cuePacket->duration = c.cue.endFrame - c.cue.firstFrame;
+      cuePacket->flags |= AV_PKT_FLAG_KEY;
+      cuePacket->stream_index = subtitleStream->index;
+      av_packet_rescale_ts(cuePacket.get(), frameDuration, subtitleStream->time_base);
+      check(av_interleaved_write_frame(out.format, cuePacket.get()), "writing " + out.writePath.string());
+    }
+  };
   for (const Part* part : sorted) {
     const Input input = openPart(part->path, part->loc());
     int ret = 0;
@@ -310,10 +397,15 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
         av_packet_unref(packet.get());
         return {};  // ~Output removes the temporary file
       }
+      if (packet->stream_index != 0) {  // the part's captions: written from `captions`
+        av_packet_unref(packet.get());
+        continue;
+      }
       // The packet's frame in the part, then in the clip, then its tick:
       // exact where a frame is a whole number of ticks (MP4), and rounded
       // as a single render rounds it where not (WebM's milliseconds).
       const std::int64_t frameInPart = av_rescale_q(packet->pts - part->firstPts, ref.timeBase, frameDuration);
+      if (subtitleStream != nullptr) writeCaptionsUpTo(part->tags.firstFrame + frameInPart);
       const std::int64_t pts = av_rescale_q(part->tags.firstFrame + frameInPart, frameDuration, ref.timeBase);
       const std::int64_t shift = pts - packet->pts;
       packet->pts = pts;
@@ -334,6 +426,7 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
     }
     if (ret != AVERROR_EOF) throw runtimeError(part->loc(), "cannot read this part again: {}", av::errorText(ret));
   }
+  if (subtitleStream != nullptr) writeCaptionsUpTo(std::numeric_limits<std::int64_t>::max());
   check(av_write_trailer(out.format), "finishing " + out.writePath.string());
   avio_flush(out.format->pb);
   check(0, "finishing " + out.writePath.string());
@@ -352,6 +445,7 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
   summary.height = ref.codec->height;
   summary.fpsNum = ref.frameRate.num;
   summary.fpsDen = ref.frameRate.den;
+  for (const InBandCue& c : captions) summary.cues.push_back(c.cue);
   return summary;
 }
 

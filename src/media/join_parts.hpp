@@ -11,6 +11,9 @@
 //   (SPS/PPS: a decoder needs one set for the whole stream) and time base;
 //   sorted by first frame the ranges cover 0 … total − 1 with no gap and no
 //   overlap.
+// A subtitle track (captions) is optional, but all parts have one or none,
+// of one codec; each part's track holds its own frames' cues, so a cue that
+// a part boundary cut in two is joined again (same text, touching ends).
 // The timestamps are rewritten into one timeline (frame k at k·den/num s, as
 // a whole render), the joined clip is tagged as frames 0 … total − 1 (so it
 // can itself be joined, or checked, again), MP4/MOV get +faststart, and the
@@ -23,6 +26,8 @@
 #include <functional>
 #include <vector>
 
+#include "media/subtitle_track.hpp"
+
 namespace rollspin::media {
 
 struct JoinSummary {
@@ -30,6 +35,7 @@ struct JoinSummary {
   long long frames = 0;
   int width = 0, height = 0;
   int fpsNum = 0, fpsDen = 0;
+  SubtitleCues cues;  // the joined subtitle track's, in the clip's frames (for its sidecar files)
 };
 
 // `stop` is polled between packets (a Ctrl-C): when it returns true the join

@@ -29,6 +29,9 @@ std::unique_ptr<FrameSink> openMovSink(const SinkOptions& o) {
   v.codecOptions = {{"profile", o.alpha ? "4" : "3"}, {"vendor", "apl0"}, {"threads", "0"}};
   v.muxerOptions = {{"movflags", "+faststart+write_colr"}};
   v.containerMetadata = o.containerMetadata;
+  v.subtitleEncoder = "mov_text";
+  v.subtitles = o.subtitles;
+  v.subtitlesByDefault = o.subtitlesByDefault;
   v.describe = o.alpha ? "ProRes 4444 with alpha" : "ProRes 422 HQ";
   return std::make_unique<VideoWriter>(o.path, v);
 }

@@ -31,6 +31,9 @@ std::unique_ptr<FrameSink> openMp4Sink(const SinkOptions& o) {
   s.preset = o.preset;
   VideoSettings v = mp4VideoSettings(s);
   v.containerMetadata = o.containerMetadata;
+  v.subtitleEncoder = "mov_text";
+  v.subtitles = o.subtitles;
+  v.subtitlesByDefault = o.subtitlesByDefault;
   return std::make_unique<VideoWriter>(o.path, v);
 }
 

@@ -28,6 +28,8 @@ struct SinkOptions {
   long long firstIndex = 0;      // frame folders: the first frame's index in the clip
   bool wholeClip = true;         // frame folders: the whole clip (stale frames go) or a part
   OptionList containerMetadata;  // file-level tags of video containers (VideoSettings)
+  SubtitleCues subtitles;        // MP4, WebM, MOV: the captions' track (VideoSettings), in this file's frames
+  bool subtitlesByDefault = false;  // the track shows unasked (when the pixels carry no captions)
 };
 
 // Opens the sink of `format`. Throws Error like the sink's constructor;

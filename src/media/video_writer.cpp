@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <optional>
 #include <string_view>
 #include <system_error>
@@ -59,6 +60,33 @@ SwsContext* makeConverter(int width, int height, AVPixelFormat to) {
   return sws;
 }
 
+// The subtitle encoders read their default style from an ASS header (the
+// one the ffmpeg tool gives text subtitles): white 16-px sans, bottom centre.
+constexpr const char* kAssHeader =
+    "[Script Info]\nScriptType: v4.00+\nPlayResX: 384\nPlayResY: 288\n\n[V4+ Styles]\n"
+    "Format: Name, Fontname, Fontsize, PrimaryColour, SecondaryColour, OutlineColour, BackColour, Bold, Italic, "
+    "Underline, StrikeOut, ScaleX, ScaleY, Spacing, Angle, BorderStyle, Outline, Shadow, Alignment, MarginL, MarginR, "
+    "MarginV, Encoding\n"
+    "Style: Default,Arial,16,&Hffffff,&Hffffff,&H0,&H0,0,0,0,0,100,100,0,0,1,1,0,2,10,10,10,0\n\n"
+    "[Events]\nFormat: Layer, Start, End, Style, Name, MarginL, MarginR, MarginV, Effect, Text\n";
+
+// A cue's text as an ASS event's: line breaks are \N. ASS has no escape for
+// a brace or a backslash (they open override codes, which the encoders drop),
+// so in the track these become their full-width look-alikes; the sidecar
+// files keep them as written.
+std::string assEventText(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '\n') out += "\\N";
+    else if (c == '\r') continue;
+    else if (c == '{') out += "\xef\xbd\x9b";   // U+FF5B
+    else if (c == '}') out += "\xef\xbd\x9d";   // U+FF5D
+    else if (c == '\\') out += "\xef\xbc\xbc";  // U+FF3C
+    else out += c;
+  }
+  return out;
+}
+
 }  // namespace
 
 struct VideoWriter::Impl {
@@ -69,6 +97,9 @@ struct VideoWriter::Impl {
   AVFormatContext* format = nullptr;
   AVCodecContext* codec = nullptr;
   AVStream* stream = nullptr;
+  AVCodecContext* subtitleCodec = nullptr;  // the captions' encoder and stream, when there are cues
+  AVStream* subtitleStream = nullptr;
+  std::size_t nextCue = 0;
   AVFrame* frame = nullptr;
   AVFrame* source = nullptr;  // the caller's RGBA image, wrapped (never copied) for sws_scale_frame
   AVPacket* packet = nullptr;
@@ -103,6 +134,7 @@ struct VideoWriter::Impl {
     av_frame_free(&frame);
     av_packet_free(&packet);
     avcodec_free_context(&codec);
+    avcodec_free_context(&subtitleCodec);
     if (format != nullptr) {
       if (format->pb != nullptr) avio_closep(&format->pb);
       avformat_free_context(format);
@@ -133,6 +165,58 @@ struct VideoWriter::Impl {
       check(av_interleaved_write_frame(format, packet), "writing " + writePath.string());
     }
     checkIo("writing " + writePath.string());
+  }
+
+  // The subtitle stream, before the header: the encoder makes its
+  // extradata (mov_text's sample description).
+  void openSubtitles(const SourceLoc& where) {
+    if (settings.subtitles.empty() || settings.subtitleEncoder.empty()) return;
+    const AVCodec* encoder = avcodec_find_encoder_by_name(settings.subtitleEncoder.c_str());
+    if (encoder == nullptr)
+      throw runtimeError(where, "this FFmpeg build has no '{}' subtitle encoder", settings.subtitleEncoder);
+    subtitleCodec = avcodec_alloc_context3(encoder);
+    if (subtitleCodec == nullptr) throw runtimeError(where, "out of memory");
+    subtitleCodec->time_base = codec->time_base;
+    // The context frees its header with av_free: it must come from av_malloc.
+    subtitleCodec->subtitle_header = reinterpret_cast<std::uint8_t*>(av_strdup(kAssHeader));
+    if (subtitleCodec->subtitle_header == nullptr) throw runtimeError(where, "out of memory");
+    subtitleCodec->subtitle_header_size = static_cast<int>(std::strlen(kAssHeader));
+    check(avcodec_open2(subtitleCodec, encoder, nullptr), "opening the " + settings.subtitleEncoder + " encoder");
+    subtitleStream = avformat_new_stream(format, nullptr);
+    if (subtitleStream == nullptr) throw runtimeError(where, "out of memory");
+    check(avcodec_parameters_from_context(subtitleStream->codecpar, subtitleCodec), "configuring the subtitle stream");
+    subtitleStream->time_base = codec->time_base;
+    if (settings.subtitlesByDefault) subtitleStream->disposition = AV_DISPOSITION_DEFAULT;
+  }
+
+  // Every cue that starts at or before `frame`, as one packet each.
+  void writeCuesUpTo(long long frame) {
+    for (; subtitleStream != nullptr && nextCue < settings.subtitles.size() &&
+           settings.subtitles[nextCue].firstFrame <= frame;
+         ++nextCue) {
+      const SubtitleCue& cue = settings.subtitles[nextCue];
+      std::string event = "0,0,Default,,0,0,0,," + assEventText(cue.text);
+      AVSubtitleRect rect{};
+      rect.type = SUBTITLE_ASS;
+      rect.ass = event.data();
+      AVSubtitleRect* rects[] = {&rect};
+      AVSubtitle subtitle{};
+      subtitle.num_rects = 1;
+      subtitle.rects = rects;
+      subtitle.format = 1;  // text
+      // Both encoders write the text (escaped: at most a few bytes a byte) and a small header.
+      std::vector<std::uint8_t> bytes(8 * event.size() + 1024);
+      const int size = avcodec_encode_subtitle(subtitleCodec, bytes.data(), static_cast<int>(bytes.size()), &subtitle);
+      check(size, "encoding a caption");
+      check(av_new_packet(packet, size), "encoding a caption");
+      std::memcpy(packet->data, bytes.data(), static_cast<std::size_t>(size));
+      packet->pts = packet->dts = cue.firstFrame;
+      packet->duration = cue.endFrame - cue.firstFrame;
+      packet->flags |= AV_PKT_FLAG_KEY;
+      av_packet_rescale_ts(packet, codec->time_base, subtitleStream->time_base);
+      packet->stream_index = subtitleStream->index;
+      check(av_interleaved_write_frame(format, packet), "writing " + writePath.string());
+    }
   }
 
   void close() {
@@ -222,6 +306,7 @@ VideoWriter::VideoWriter(fs::path finalPath, const VideoSettings& settings) : im
   m.stream->time_base = c->time_base;
   m.stream->avg_frame_rate = c->framerate;
   for (const auto& [key, value] : settings.streamMetadata) av_dict_set(&m.stream->metadata, key.c_str(), value.c_str(), 0);
+  m.openSubtitles(where);
   // File-level metadata: the one place it is set (see VideoSettings).
   for (const auto& [key, value] : settings.containerMetadata)
     av_dict_set(&m.format->metadata, key.c_str(), value.c_str(), 0);
@@ -317,6 +402,7 @@ void VideoWriter::write(const ImageView& image) {
 void VideoWriter::writeConverted(AVFrame* frame) {
   Impl& m = *impl_;
   frame->pts = m.framesWritten;
+  m.writeCuesUpTo(m.framesWritten);
   m.encode(frame);
   ++m.framesWritten;
 }
@@ -362,6 +448,8 @@ fs::path VideoWriter::finishPartial() {
 }
 
 long long VideoWriter::framesWritten() const { return impl_->framesWritten; }
+
+bool VideoWriter::carriesSubtitles() const { return !impl_->settings.subtitleEncoder.empty(); }
 
 std::string VideoWriter::verboseSummary() const {
   const Impl& m = *impl_;

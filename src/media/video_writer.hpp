@@ -11,6 +11,7 @@
 // show the colours that were rendered. 8-bit 4:2:0 (H.264, VP9) goes
 // through Yuv420Converter, which converts only the blocks that changed
 // since the last frame; 4:2:2 and 4:4:4 10-bit (ProRes) through swscale.
+// Captions go in a text subtitle stream beside the video (subtitle_track.hpp).
 // The file is written under a temporary name in the same folder and renamed
 // on finish(); finishPartial() completes what was written as a shorter,
 // playable NAME.partial.EXT; destroyed unfinished, it removes its file. A
@@ -24,6 +25,7 @@
 #include <vector>
 
 #include "media/frame_sink.hpp"
+#include "media/subtitle_track.hpp"
 
 struct AVFrame;  // libavutil: only gif_writer hands frames in directly
 
@@ -46,6 +48,12 @@ struct VideoSettings {
   // before the header is written. The one place for file-level metadata.
   OptionList containerMetadata;
   std::string describe;          // for error messages: "H.264 (libx264, crf 18, preset medium)"
+  // A subtitle track: its libavcodec encoder ("mov_text" for MP4/MOV,
+  // "webvtt" for WebM; "" = none) and its cues, in this file's frames; each
+  // cue is muxed as its first frame is written. No cues: no track.
+  std::string subtitleEncoder;
+  SubtitleCues subtitles;
+  bool subtitlesByDefault = false;  // the track's "default" flag: players show it unasked
 };
 
 class VideoWriter : public FrameSink {
@@ -67,6 +75,7 @@ class VideoWriter : public FrameSink {
   [[nodiscard]] long long framesWritten() const override;
   // With the changed-blocks converter: the share of the pixels it converted.
   [[nodiscard]] std::string verboseSummary() const override;
+  [[nodiscard]] bool carriesSubtitles() const override;
 
  protected:
   // Encodes a frame already in the encoder's pixel format; its pts is set

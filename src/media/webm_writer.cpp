@@ -47,6 +47,9 @@ std::unique_ptr<FrameSink> openWebmSink(const SinkOptions& o) {
                     {"threads", "0"}};  // automatic, as the ffmpeg tool does (libavcodec's default is 1)
   if (o.alpha) v.streamMetadata = {{"alpha_mode", "1"}};
   v.containerMetadata = o.containerMetadata;
+  v.subtitleEncoder = "webvtt";
+  v.subtitles = o.subtitles;
+  v.subtitlesByDefault = o.subtitlesByDefault;
   v.describe = fmt::format("VP9 crf {}, cpu-used {}{}", crf, cpuUsed(o.preset), o.alpha ? ", alpha" : "");
   return std::make_unique<VideoWriter>(o.path, v);
 }

@@ -200,6 +200,7 @@ std::vector<KeyInfo> buildRegistry() {
   add("render", "title", {"string", "\"\" (none)", {}, {}, "", "", "a title over the image"});
   add("render", "labels", {"boolean", r.labels ? "true" : "false", {}, {}, "", "", "axis, pole and live labels (s, angles)"});
   add("render", "transparent", {"boolean", r.transparent ? "true" : "false", {}, {}, "", "", "no background (PNG, WebM, MOV keep the alpha)"});
+  add("render", "burn_captions", {"boolean", r.burnCaptions ? "true" : "false", {}, {}, "", "", "draw the title and the storyboard captions into the pixels (false: only the subtitle track and .vtt carry them)"});
   add("render", "msaa", {"integer", num(double(r.msaa)), closed(1, 4), {}, "1, 2 or 4", "samples", "multisample anti-aliasing"});
   for (KeyInfo& k : cameraKeyInfos("render", r, false)) keys.push_back(std::move(k));
   add("render", "format", {"string", "from the output's extension, else mp4 (a clip) or png (a still)", {}, {formats.begin(), formats.end()}, "", "", "the output format (docs/rendering.md)"});

@@ -95,6 +95,7 @@ struct RenderSpec {
   bool trails = true;    // the marker's and the field's trails
   bool shadow = true;    // the key light's shadow map
   bool transparent = false;
+  bool burnCaptions = true;  // false: title and captions only in the subtitle track and sidecars, not the pixels
   long long msaa = 4;    // 1 | 2 | 4
   double azimuthDeg = -60.0;
   double elevationDeg = 28.0;

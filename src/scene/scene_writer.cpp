@@ -206,6 +206,7 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   w.key("trails", boolean(r.trails));
   w.key("shadow", boolean(r.shadow));
   w.key("transparent", boolean(r.transparent));
+  w.key("burn_captions", boolean(r.burnCaptions));
   w.key("msaa", std::to_string(r.msaa));
   w.key("azimuth_deg", number(r.azimuthDeg));
   w.key("elevation_deg", number(r.elevationDeg));

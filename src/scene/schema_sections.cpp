@@ -129,6 +129,7 @@ void Reader::readRender() {
   if (auto t = anyText(render, "render", "title")) r.title = *t;
   if (auto b = boolean(render, "render", "labels")) r.labels = *b;
   if (auto b = boolean(render, "render", "transparent")) r.transparent = *b;
+  if (auto b = boolean(render, "render", "burn_captions")) r.burnCaptions = *b;
   if (auto n = integer(render, "render", "msaa")) {
     if (*n != 1 && *n != 2 && *n != 4) failAt("render.msaa", fmt::format("expected 1, 2 or 4 samples, got {}", *n));
     r.msaa = *n;

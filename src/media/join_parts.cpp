@@ -226,6 +226,55 @@ std::vector<InBandCue> clipCaptions(const std::vector<const Part*>& sorted) {
   return out;
 }
 
+// The joined clip's subtitle stream (when the parts have one): each caption
+// is written as the first frame it covers is (writeUpTo that frame).
+class CaptionCopier {
+ public:
+  CaptionCopier(AVFormatContext* format, const Part& ref, std::vector<InBandCue> captions, AVRational frameDuration,
+                SourceLoc where)
+      : format_(format), captions_(std::move(captions)), frameDuration_(frameDuration), where_(std::move(where)) {
+    if (!ref.subtitleCodec) return;
+    stream_ = avformat_new_stream(format, nullptr);
+    packet_.reset(av_packet_alloc());
+    if (stream_ == nullptr || !packet_ || avcodec_parameters_copy(stream_->codecpar, ref.subtitleCodec.get()) < 0)
+      throw std::bad_alloc();
+    stream_->codecpar->codec_tag = 0;  // the muxer's tag for its container
+    stream_->time_base = frameDuration;
+  }
+
+  void writeUpTo(std::int64_t frame) {
+    for (; stream_ != nullptr && next_ < captions_.size() && captions_[next_].cue.firstFrame <= frame; ++next_) {
+      const InBandCue& c = captions_[next_];
+      check(av_new_packet(packet_.get(), static_cast<int>(c.payload.size())), "copying a caption");
+      std::memcpy(packet_->data, c.payload.data(), c.payload.size());
+      packet_->pts = packet_->dts = c.cue.firstFrame;
+      packet_->duration = c.cue.endFrame - c.cue.firstFrame;
+      packet_->flags |= AV_PKT_FLAG_KEY;
+      packet_->stream_index = stream_->index;
+      av_packet_rescale_ts(packet_.get(), frameDuration_, stream_->time_base);
+      check(av_interleaved_write_frame(format_, packet_.get()), "writing a caption");
+    }
+  }
+
+  [[nodiscard]] SubtitleCues cues() const {
+    SubtitleCues out;
+    for (const InBandCue& c : captions_) out.push_back(c.cue);
+    return out;
+  }
+
+ private:
+  void check(int ret, const char* what) const {
+    if (ret < 0) throw runtimeError(where_, "{}: {}", what, av::errorText(ret));
+  }
+  AVFormatContext* format_;
+  std::vector<InBandCue> captions_;
+  AVRational frameDuration_;
+  SourceLoc where_;
+  AVStream* stream_ = nullptr;
+  Packet packet_;
+  std::size_t next_ = 0;
+};
+
 void expectWholePart(const Part& p) {
   if (p.packets != p.tags.frameCount())
     throw badInput(p.loc(), "holds {} frames, but its tags say {} ({} frames): an interrupted or damaged part",
@@ -340,15 +389,7 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
   stream->time_base = ref.timeBase;
   stream->avg_frame_rate = ref.frameRate;
   const AVRational frameDuration = av_inv_q(ref.frameRate);
-  const std::vector<InBandCue> captions = clipCaptions(sorted);
-  AVStream* subtitleStream = nullptr;
-  if (ref.subtitleCodec) {
-    subtitleStream = avformat_new_stream(out.format, nullptr);
-    if (subtitleStream == nullptr) throw std::bad_alloc();
-    check(avcodec_parameters_copy(subtitleStream->codecpar, ref.subtitleCodec.get()), "configuring the subtitle stream");
-    subtitleStream->codecpar->codec_tag = 0;
-    subtitleStream->time_base = frameDuration;
-  }
+  CaptionCopier captions(out.format, ref, clipCaptions(sorted), frameDuration, where);
 
   // The joined clip is tagged as the whole render: frames 0 … total − 1.
   ContainerTags whole = ref.tags;
@@ -372,23 +413,8 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
   // Decoding timestamps move with their packet and keep the encoder's
   // reorder delay, so they run on across the joins too (checked).
   std::int64_t lastDts = std::numeric_limits<std::int64_t>::min();
-  const Packet packet(av_packet_alloc()), cuePacket(av_packet_alloc());
-  if (!packet || !cuePacket) throw std::bad_alloc();
-  // Each caption goes in as the first frame it covers does.
-  std::size_t nextCaption = 0;
-  auto writeCaptionsUpTo = [&](std::int64_t frame) {
-    for (; nextCaption < captions.size() && captions[nextCaption].cue.firstFrame <= frame; ++nextCaption) {
-      const InBandCue& c = captions[nextCaption];
-      check(av_new_packet(cuePacket.get(), static_cast<int>(c.payload.size())), "copying a caption");
-      std::memcpy(cuePacket->data, c.payload.data(), c.payload.size());
-      cuePacket->pts = cuePacket->dts = c.cue.firstFrame;
-      cuePacket->duration = c.cue.endFrame - c.cue.firstFrame;
-      cuePacket->flags |= AV_PKT_FLAG_KEY;
-      cuePacket->stream_index = subtitleStream->index;
-      av_packet_rescale_ts(cuePacket.get(), frameDuration, subtitleStream->time_base);
-      check(av_interleaved_write_frame(out.format, cuePacket.get()), "writing " + out.writePath.string());
-    }
-  };
+  const Packet packet(av_packet_alloc());
+  if (!packet) throw std::bad_alloc();
   for (const Part* part : sorted) {
     const Input input = openPart(part->path, part->loc());
     int ret = 0;
@@ -405,7 +431,7 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
       // exact where a frame is a whole number of ticks (MP4), and rounded
       // as a single render rounds it where not (WebM's milliseconds).
       const std::int64_t frameInPart = av_rescale_q(packet->pts - part->firstPts, ref.timeBase, frameDuration);
-      if (subtitleStream != nullptr) writeCaptionsUpTo(part->tags.firstFrame + frameInPart);
+      captions.writeUpTo(part->tags.firstFrame + frameInPart);
       const std::int64_t pts = av_rescale_q(part->tags.firstFrame + frameInPart, frameDuration, ref.timeBase);
       const std::int64_t shift = pts - packet->pts;
       packet->pts = pts;
@@ -426,7 +452,7 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
     }
     if (ret != AVERROR_EOF) throw runtimeError(part->loc(), "cannot read this part again: {}", av::errorText(ret));
   }
-  if (subtitleStream != nullptr) writeCaptionsUpTo(std::numeric_limits<std::int64_t>::max());
+  captions.writeUpTo(std::numeric_limits<std::int64_t>::max());
   check(av_write_trailer(out.format), "finishing " + out.writePath.string());
   avio_flush(out.format->pb);
   check(0, "finishing " + out.writePath.string());
@@ -445,7 +471,7 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
   summary.height = ref.codec->height;
   summary.fpsNum = ref.frameRate.num;
   summary.fpsDen = ref.frameRate.den;
-  for (const InBandCue& c : captions) summary.cues.push_back(c.cue);
+  summary.cues = captions.cues();
   return summary;
 }
 

@@ -70,10 +70,10 @@ constexpr const char* kAssHeader =
     "Style: Default,Arial,16,&Hffffff,&Hffffff,&H0,&H0,0,0,0,0,100,100,0,0,1,1,0,2,10,10,10,0\n\n"
     "[Events]\nFormat: Layer, Start, End, Style, Name, MarginL, MarginR, MarginV, Effect, Text\n";
 
-// A cue's text as an ASS event's: line breaks are \N. ASS has no escape for
-// a brace or a backslash (they open override codes, which the encoders drop),
-// so in the track these become their full-width look-alikes; the sidecar
-// files keep them as written.
+// A cue's text as an ASS event's: line breaks are \N. A brace or a
+// backslash would open an ASS override code (which the encoders read as
+// styling, not text), so in the track these become their full-width
+// look-alikes; the sidecar files keep them as written.
 std::string assEventText(const std::string& text) {
   std::string out;
   for (const char c : text) {

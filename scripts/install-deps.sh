@@ -25,7 +25,7 @@ packages=(
   mkdocs
   libtinygltf-dev nlohmann-json3-dev  # glTF export (tinygltf writes through nlohmann/json)
   chromium  # the web viewer's browser tests (driven by npm playwright-core, no browser download)
-  python3-setuptools python3-venv  # `pip install .` of the Python package into a virtual environment
+  python3-setuptools python3-wheel python3-venv  # `pip install .` of the Python package into a virtual environment
   clang-format
 )
 

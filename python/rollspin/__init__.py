@@ -47,42 +47,59 @@ def _numpy() -> Any:
     return numpy
 
 
-def scene_dirs() -> "List[Path]":
-    """Where a bare scene name (``load("lollipop")``) is looked for, in order.
+def _program_scene_folders() -> "List[str]":
+    """This package's own bundled-scene folders (after ``$ROLLSPIN_SCENE_PATH``)."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    folders = []
+    old = os.environ.get("ROLLSPIN_SCENE_DIR")
+    if old:
+        import warnings
+        warnings.warn("ROLLSPIN_SCENE_DIR is deprecated: use ROLLSPIN_SCENE_PATH (':'-separated folders), "
+                      "as the rollspin program does", FutureWarning, stacklevel=4)
+        folders.append(old)
+    if os.path.basename(os.path.dirname(here)) in ("site-packages", "dist-packages"):
+        # Installed: by pip (the scenes inside the package) or by `cmake --install`
+        # (<prefix>/lib/python3.X/dist-packages/rollspin → <prefix>/share/rollspin/scenes).
+        inside = os.path.join(here, "scenes")
+        prefix = os.path.normpath(os.path.join(here, "..", "..", "..", ".."))
+        folders.append(inside if os.path.isdir(inside) else os.path.join(prefix, "share", "rollspin", "scenes"))
+    else:
+        folders.append(_core.SOURCE_SCENES)  # a build tree's package: the source tree it was built from
+    return folders
 
-    ``$ROLLSPIN_SCENE_DIR``, the source tree's ``scenes/`` (a build tree's
-    package), then ``<prefix>/share/rollspin/scenes`` of the installed package.
+
+def _find_scenes_here() -> None:
+    # The C++ loader's search would otherwise start from /proc/self/exe, python3.
+    _core.set_scene_folders(_program_scene_folders())
+
+
+_find_scenes_here()
+
+
+def scene_dirs() -> "List[Path]":
+    """The folders that hold bundled scenes, in the order a bare name (``load("lollipop")``) is looked for.
+
+    ``$ROLLSPIN_SCENE_PATH`` (':'-separated, as for the rollspin program), then
+    the package's own: its ``scenes/`` once installed by pip,
+    ``<prefix>/share/rollspin/scenes`` once installed by ``cmake --install``, or
+    the source tree's ``scenes/`` for a build tree's package. Existing folders only.
     """
     from pathlib import Path
-    dirs = [Path(os.environ["ROLLSPIN_SCENE_DIR"])] if os.environ.get("ROLLSPIN_SCENE_DIR") else []
-    # Installed: <prefix>/lib/python3.X/dist-packages/rollspin → <prefix>/share/rollspin/scenes.
-    here = Path(__file__).resolve().parent
-    if len(here.parents) > 3:
-        dirs.append(here.parents[3] / "share" / "rollspin" / "scenes")
-    dirs.append(Path(_core.SOURCE_SCENES))  # the source tree this package was built from
-    return dirs
-
-
-def _resolve_scene_path(path: PathLike) -> str:
-    text = os.fspath(path)
-    if os.path.exists(text):
-        return text
-    # A bare name of a bundled scene, as on the command line.
-    if text and os.sep not in text and not text.endswith(".toml"):
-        for folder in scene_dirs():
-            candidate = os.path.join(folder, text + ".toml")
-            if os.path.isfile(candidate):
-                return candidate
-    return text  # the loader says it cannot be read, naming it
+    _find_scenes_here()
+    return [Path(folder) for folder in _core.scene_folders()]
 
 
 def load(path: PathLike) -> "Scene":
-    """A scene from a TOML file, or a bundled scene by name (``"lollipop"``).
+    """A scene from a TOML file, or a bundled scene by name (``"lollipop"``), found as the CLI finds it.
 
     Raises SceneError (a ValueError) with the CLI's message when the file is
-    missing or invalid.
+    missing (where it looked, and the nearest bundled name) or invalid.
     """
-    return Scene(_core.Scene.load(_resolve_scene_path(path)))
+    if not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"load() expects a scene file's path or a bundled scene's name (str or os.PathLike), "
+                        f"got {type(path).__name__}")
+    _find_scenes_here()  # $ROLLSPIN_SCENE_DIR may have been set since import
+    return Scene(_core.Scene.load(os.fspath(path)))
 
 
 def loads(text: str, name: str = "<string>") -> "Scene":
@@ -123,6 +140,44 @@ def _override(key: str, value: Any) -> str:
     if not isinstance(key, str):
         raise TypeError(f"a scene key is a str like 'path.radius', got {type(key).__name__}")
     return f"{key}={_toml_value(value)}"
+
+
+def _argument(function: str, name: str, value: Any, kind: type, takes: str) -> Any:
+    """`value` as `kind` (None passes), or a TypeError naming the argument and what it takes.
+
+    Without it the extension's binding refuses a wrong type with its whole
+    overload signature, which names neither.
+    """
+    if value is None:
+        return None
+    if kind is int:
+        import operator
+        try:
+            if not isinstance(value, bool):
+                return operator.index(value)  # int and numpy integers, not 640.0 or "640"
+        except TypeError:
+            pass
+    elif isinstance(value, kind):
+        return value
+    raise TypeError(f"{function}(): {name} takes {takes}, got {type(value).__name__} {value!r}")
+
+
+_AT_TAKES = 'an arc length (float) or a str like "s=1.5" or "fraction=0.25"'
+
+
+def _number(function: str, name: str, value: Any, takes: str) -> float:
+    """A real number (int, float, numpy scalar) as float, or a TypeError naming the argument."""
+    if not isinstance(value, (str, bytes, bool, complex)):
+        try:
+            return float(value)
+        except (TypeError, ValueError):
+            pass
+    raise TypeError(f"{function}(): {name} takes {takes}, got {type(value).__name__} {value!r}")
+
+
+def _size_arguments(function: str, width: Any, height: Any) -> Tuple[Optional[int], Optional[int]]:
+    return (_argument(function, "width", width, int, "a whole number of pixels (int) or None"),
+            _argument(function, "height", height, int, "a whole number of pixels (int) or None"))
 
 
 def _in_notebook() -> bool:
@@ -248,13 +303,14 @@ class Scene:
         """
         if at is not None and fraction is not None:
             raise ValueError("give at= or fraction=, not both")
+        width, height = _size_arguments("still", width, height)
         where: Optional[str]
         if fraction is not None:
-            where = f"fraction={float(fraction)!r}"
+            where = f"fraction={_number('still', 'fraction', fraction, 'a fraction of the path in [0, 1]')!r}"
         elif at is None or isinstance(at, str):
             where = at
         else:
-            where = f"s={float(at)!r}"
+            where = f"s={_number('still', 'at', at, _AT_TAKES)!r}"
         core = self._with([_override("render." + k, v) for k, v in render_keys.items()])
         return Image(_core.still(core, where, width, height, bool(transparent)))
 
@@ -273,6 +329,11 @@ class Scene:
         is called after each frame.
         """
         from . import _notebook
+        width, height = _size_arguments("render", width, height)
+        frames = _argument("render", "frames", frames, str, 'a str of frame numbers "A:B"')
+        quality = _argument("render", "quality", quality, str, 'a str: "low", "medium", "high" or "4k"')
+        if on_frame is not None and not callable(on_frame):
+            raise TypeError(f"render(): on_frame takes a function f(done, total), got {type(on_frame).__name__}")
         core = self._with([_override("render." + k, v) for k, v in render_keys.items()])
         notebook = _in_notebook()
         callbacks = [on_frame] if on_frame is not None else []
@@ -341,9 +402,18 @@ class Solution:
 
     @property
     def angle(self) -> float:
-        """The spinor angle 2·atan2(|q|, qw) in [0, 2π] (2π: U = −1, the ball turned once)."""
-        qw, qx, qy, qz = self.quaternion
-        return 2.0 * math.atan2(math.sqrt(qx * qx + qy * qy + qz * qz), qw)
+        """The spinor angle ψ in [0, 4π), as ``rollspin solve`` prints it (docs/conventions.md).
+
+        U = cos(ψ/2)·1 − i sin(ψ/2) (axis·σ) for ``axis``: ψ is R(U)'s rotation angle
+        (in [0, π]) on the positive sheet and that angle + 2π on the negative one
+        (qw < 0, U ≈ −1); ψ = 2π is U = −1, the ball turned once.
+        """
+        return _core.spinor_angle(*(float(v) for v in self.quaternion))[0]
+
+    @property
+    def axis(self) -> "np.ndarray":
+        """The unit axis of R(U)'s rotation (x̂ when there is none), the axis of ``angle``."""
+        return _numpy().array(_core.spinor_angle(*(float(v) for v in self.quaternion))[1])
 
     def to_qutip(self) -> Any:
         """U(L) as a qutip.Qobj (2 × 2 unitary operator)."""
@@ -352,7 +422,8 @@ class Solution:
 
     def __repr__(self) -> str:
         q = ", ".join(f"{v:.12g}" for v in self.quaternion)
-        return f"<rollspin.Solution quaternion=[{q}] method={self.method} steps={self.steps} length={self.length:.6g}>"
+        return (f"<rollspin.Solution quaternion=[{q}] method={self.method} steps={self.steps} length={self.length:.6g} "
+                f"error_estimate={self.error_estimate:.2g} rad>")
 
 
 def _unitaries(q: "np.ndarray") -> "np.ndarray":

@@ -44,6 +44,7 @@
 #include "media/sink_factory.hpp"
 #include "model/rolling_model.hpp"
 #include "motion/solve_job.hpp"
+#include "scene/scene_catalog.hpp"
 #include "scene/scene_loader.hpp"
 #include "spin/field.hpp"
 #include "spin/su2.hpp"
@@ -268,9 +269,11 @@ class Scene {
     const double length = model_.path->length();
     const auto n = s.size();
     const double* sd = s.data();
+    // The argument's name once, as the message's key ("s: expected …").
     for (py::ssize_t k = 0; k < n; ++k)
       if (!std::isfinite(sd[k]) || sd[k] < 0.0 || sd[k] > length)
-        throw badInput(SourceLoc{"s"}, "s: expected arc lengths in [0, {}] (the path's length), got {}", length, sd[k]);
+        throw badInput(SourceLoc{}, "s: expected arc lengths in [0, {}] (the path's length), got {}{}", length, sd[k],
+                       n > 1 ? fmt::format(" (s[{}])", k) : std::string());
     py::array_t<double> b({n, py::ssize_t{3}});
     double* bd = b.mutable_data();
     {
@@ -461,6 +464,18 @@ PYBIND11_MODULE(_rollspin, m) {
       .def("save", &Image::save, py::arg("path"))
       .def("png", &Image::png);
 
+  // Where a bare scene name is looked for: the package names its own data
+  // folders (the executable is python3, whose ../share is not rollspin's).
+  m.def("set_scene_folders", [](const std::vector<fs::path>& folders) { scene::setProgramSceneFolders(folders); },
+        py::arg("folders"));
+  m.def("scene_folders", [] { return scene::sceneFolders(); });
+  m.def("scene_search", [] { return scene::sceneSearchText(); });
+  // The CLI's spinor angle ψ in [0, 4π) and its axis (`rollspin solve`).
+  m.def("spinor_angle", [](double w, double x, double y, double z) {
+    const spin::Su2 q{w, x, y, z};
+    const auto axis = spin::rotationAngleAxis(q).axis;
+    return py::make_tuple(spin::spinorAngle(q), py::make_tuple(axis.x(), axis.y(), axis.z()));
+  }, py::arg("qw"), py::arg("qx"), py::arg("qy"), py::arg("qz"));
   m.def("still", &renderStillImage, py::arg("scene"), py::arg("at") = std::nullopt, py::arg("width") = std::nullopt,
         py::arg("height") = std::nullopt, py::arg("transparent") = false);
   m.def("render", &renderClip, py::arg("scene"), py::arg("output"), py::arg("frames") = std::nullopt,

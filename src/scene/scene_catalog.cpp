@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <mutex>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -41,6 +42,27 @@ bool isFolder(const fs::path& p) {
   return fs::is_directory(p, ec);
 }
 
+// The folders a host set with setProgramSceneFolders (none: the executable's).
+struct ProgramFolders {
+  std::mutex mutex;
+  std::vector<fs::path> folders;
+};
+ProgramFolders& programFolders() {
+  static ProgramFolders* set = new ProgramFolders;  // never destroyed: read by loaders until exit
+  return *set;
+}
+
+// The executable's own: <prefix>/share/rollspin/scenes, and for the build
+// tree's binary (build/rollspin) the source's scenes/.
+std::vector<fs::path> executableFolders() {
+  const fs::path exe = executablePath();
+  if (exe.empty()) return {};
+  std::vector<fs::path> out{(exe.parent_path() / ".." / "share" / "rollspin" / "scenes").lexically_normal()};
+  std::error_code ec;
+  if (fs::equivalent(exe.parent_path(), build_tree::kBinaryDir, ec)) out.emplace_back(build_tree::kSourceScenes);
+  return out;
+}
+
 // Every folder that may hold bundled scenes, in search order, whether or not it exists.
 std::vector<fs::path> candidateFolders() {
   std::vector<fs::path> out;
@@ -49,17 +71,20 @@ std::vector<fs::path> candidateFolders() {
     for (std::string item; std::getline(list, item, ':');)
       if (!item.empty()) out.emplace_back(item);
   }
-  const fs::path exe = executablePath();
-  if (!exe.empty()) {
-    out.push_back((exe.parent_path() / ".." / "share" / "rollspin" / "scenes").lexically_normal());
-    // The build tree's binary (build/rollspin) reads the source's scenes/.
-    std::error_code ec;
-    if (fs::equivalent(exe.parent_path(), build_tree::kBinaryDir, ec)) out.emplace_back(build_tree::kSourceScenes);
-  }
+  ProgramFolders& set = programFolders();
+  const std::lock_guard lock(set.mutex);
+  const std::vector<fs::path> program = set.folders.empty() ? executableFolders() : set.folders;
+  out.insert(out.end(), program.begin(), program.end());
   return out;
 }
 
 }  // namespace
+
+void setProgramSceneFolders(std::vector<fs::path> folders) {
+  ProgramFolders& set = programFolders();
+  const std::lock_guard lock(set.mutex);
+  set.folders = std::move(folders);
+}
 
 std::vector<fs::path> sceneFolders() {
   std::vector<fs::path> out;
@@ -68,28 +93,43 @@ std::vector<fs::path> sceneFolders() {
   return out;
 }
 
-fs::path resolveScene(const std::string& given) {
-  std::error_code ec;
-  if (fs::exists(given, ec)) return given;  // a file, or a folder the reader refuses
-  // A bare name (no folder in it) may be a bundled scene, with or without .toml.
+std::optional<fs::path> findBundledScene(const std::string& name) {
+  if (name.empty() || fs::path(name).has_parent_path()) return std::nullopt;
+  for (const fs::path& folder : sceneFolders())
+    for (const fs::path& candidate : {folder / name, folder / (name + ".toml")})
+      if (isFile(candidate)) return candidate;
+  return std::nullopt;
+}
+
+std::string sceneSearchText() {
+  std::string out;
+  for (const fs::path& folder : candidateFolders()) out += (out.empty() ? "" : ", ") + folder.string();
+  return out;
+}
+
+Error noSuchScene(const SourceLoc& where, const std::string& what, const std::string& given,
+                  const std::string& firstPlace) {
   const fs::path asGiven(given);
-  if (!given.empty() && !asGiven.has_parent_path()) {
-    for (const fs::path& folder : sceneFolders()) {
-      for (const fs::path& candidate : {folder / given, folder / (given + ".toml")})
-        if (isFile(candidate)) return candidate;
-    }
-  }
-  std::string looked = "the working directory (" + fs::current_path().string() + ")";
+  std::string looked = firstPlace;
   if (!asGiven.has_parent_path())
-    for (const fs::path& folder : candidateFolders()) looked += ", " + folder.string();
+    if (const std::string folders = sceneSearchText(); !folders.empty()) looked += ", " + folders;
   std::vector<std::string> names;
   for (const BundledScene& s : bundledScenes()) names.push_back(s.name);
   std::string known;
   for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
   const std::string guess = nearestName(asGiven.stem().string(), names);
-  throw badInput(SourceLoc{given}, "cannot read the scene file: there is none; looked in {}{}{}", looked,
-                 guess.empty() ? std::string() : fmt::format("; did you mean '{}'?", guess),
-                 known.empty() ? std::string() : "; the bundled scenes (`rollspin scenes`): " + known);
+  return badInput(where, "{}: there is none; looked in {}{}{}", what, looked,
+                  guess.empty() ? std::string() : fmt::format("; did you mean '{}'?", guess),
+                  known.empty() ? std::string() : "; the bundled scenes (`rollspin scenes`): " + known);
+}
+
+fs::path resolveScene(const std::string& given) {
+  std::error_code ec;
+  if (fs::exists(given, ec)) return given;  // a file, or a folder the reader refuses
+  // A bare name (no folder in it) may be a bundled scene, with or without .toml.
+  if (const auto bundled = findBundledScene(given)) return *bundled;
+  throw noSuchScene(SourceLoc{given}, "cannot read the scene file", given,
+                    "the working directory (" + fs::current_path().string() + ")");
 }
 
 std::vector<BundledScene> bundledScenes() {

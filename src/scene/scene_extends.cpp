@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "scene/scene_catalog.hpp"
 #include "scene/scene_sources.hpp"
 
 namespace rollspin::scene {
@@ -83,10 +84,20 @@ toml::table resolveExtends(toml::table root, const std::filesystem::path& file,
   const auto& src = extends->source();
   const SourceLoc loc{file.string(), static_cast<int>(src.begin.line), static_cast<int>(src.begin.column)};
   if (!extends->is_string()) throw badInput(loc, "extends: expected the path of a scene file (a string)");
-  const std::filesystem::path base =
-      ((file.has_parent_path() ? file.parent_path() : std::filesystem::path(".")) / extends->as_string()->get())
-          .lexically_normal();
+  const std::string& named = extends->as_string()->get();
+  const std::filesystem::path folder = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+  std::filesystem::path base = (folder / named).lexically_normal();
   std::error_code ec;
+  // Beside the extending file first; a bare name may be a bundled scene
+  // ("storyboard"), found as `rollspin render storyboard` finds it.
+  if (!std::filesystem::exists(base, ec)) {
+    const auto bundled = findBundledScene(named);
+    if (!bundled)
+      throw noSuchScene(loc, fmt::format("extends: cannot read the scene file '{}'", named), named,
+                        "the folder of " + file.filename().string() + " (" +
+                            std::filesystem::weakly_canonical(folder, ec).string() + ")");
+    base = *bundled;
+  }
   const std::filesystem::path canonical = std::filesystem::weakly_canonical(base, ec);
   for (const auto& seen : chain) {
     if (seen == canonical) {

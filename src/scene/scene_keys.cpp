@@ -172,7 +172,7 @@ std::vector<KeyInfo> cameraKeyInfos(const std::string& section, const RenderSpec
 std::vector<KeyInfo> buildRegistry() {
   const SceneSpec d;
   std::vector<KeyInfo> keys{
-      info("", "extends", {"string", "(none)", {}, {}, "", "", "a base scene (relative to this file) whose keys this one overrides"}),
+      info("", "extends", {"string", "(none)", {}, {}, "", "", "a base scene whose keys this one overrides: a file relative to this one, else a bundled scene's name (\"storyboard\")"}),
       info("ball", "radius", {"number", num(d.ball.radius), above(0), {}, "", "length", "the ball's radius R"}),
       info("ball", "texture", {"string", "the built-in tennis ball", {}, {}, "non-empty", "", "an equirectangular PNG/JPG painted on the ball (relative to the scene file)"}),
       info("ball", "marker", {"[x, y, z]", "the top n(0)", {}, {}, "non-zero; normalised", "", "the body direction whose trail is the tracked Bloch vector"}),

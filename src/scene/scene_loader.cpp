@@ -16,10 +16,36 @@ SceneSpec loadSceneText(std::string_view text, const std::string& sourceName, st
   return spec;
 }
 
+namespace {
+
+// Only blank lines and comments: TOML's lines that hold no key or table.
+bool holdsNoKeys(std::string_view text) {
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view line = text.substr(start, end - start);
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if (first != std::string_view::npos && line[first] != '#') return false;
+    start = end + 1;
+  }
+  return true;
+}
+
+}  // namespace
+
 SceneSpec loadSceneFile(const std::filesystem::path& given, std::span<const std::string> overrides) {
   // A bare name ("lollipop") is a bundled scene when no such file is here.
   const std::filesystem::path file = resolveScene(given.string());
-  SceneSpec spec = loadSceneText(readSceneFile(file, {}, ""), file.string(), overrides);
+  const std::string text = readSceneFile(file, {}, "");
+  // An empty file is a mistake (a truncated copy, the wrong file), not a
+  // request for the default circle; --set keys alone still make a scene.
+  if (overrides.empty() && holdsNoKeys(text))
+    throw badInput(SourceLoc{file.string()},
+                   "empty scene: the file has no keys (only blank lines or comments); print a full one with "
+                   "`rollspin scene lollipop --print > {}` and edit it, or start it with `extends = \"lollipop\"`",
+                   file.filename().string());
+  SceneSpec spec = loadSceneText(text, file.string(), overrides);
   spec.name = file.stem().string();
   return spec;
 }

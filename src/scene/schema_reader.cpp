@@ -1,8 +1,10 @@
 #include "scene/schema_reader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "core/text.hpp"
@@ -31,8 +33,42 @@ std::string joinKeys(const std::set<std::string>& keys) {
   return out;
 }
 
+namespace {
+
+// The unit suffixes of the schema's key names (scene_keys.cpp: angles in
+// degrees, a figure's size in millimetres and its font in points), with what
+// a user may type instead ("_rad", "_degrees") or leave off.
+struct UnitSuffix {
+  std::string_view suffix;
+  std::string_view unit;
+};
+constexpr std::array<UnitSuffix, 3> kUnitSuffixes{{{"_deg", "degrees"}, {"_mm", "millimetres"}, {"_pt", "points"}}};
+constexpr std::array<std::string_view, 7> kTypedUnitSuffixes{"_degrees", "_deg", "_radians", "_rad", "_mm", "_cm", "_pt"};
+
+std::string_view withoutUnit(std::string_view key) {
+  for (const std::string_view suffix : kTypedUnitSuffixes)
+    if (key.size() > suffix.size() && key.ends_with(suffix)) return key.substr(0, key.size() - suffix.size());
+  return key;
+}
+
+// `colatitude` or `colatitude_rad` for `colatitude_deg`: the accepted key
+// that is the typed one with the schema's unit; nullopt when there is none.
+std::optional<std::pair<std::string, std::string_view>> sameKeyInItsUnit(const std::string& typed,
+                                                                          const std::set<std::string>& allowed) {
+  for (const std::string& key : allowed)
+    for (const UnitSuffix& u : kUnitSuffixes)
+      if (key != typed && key.ends_with(u.suffix) && withoutUnit(key) == withoutUnit(typed))
+        return std::pair{key, u.unit};
+  return std::nullopt;
+}
+
+}  // namespace
+
 Error unknownKey(const SourceLoc& loc, const std::string& fullKey, const std::string& typed,
                  const std::string& table, const std::set<std::string>& allowed) {
+  // The same key in the schema's unit is the answer; the whole list would bury it.
+  if (const auto inUnit = sameKeyInItsUnit(typed, allowed))
+    return badInput(loc, "{}: unknown key; did you mean `{}` (in {})?", fullKey, inUnit->first, inUnit->second);
   const std::string guess = nearestName(typed, std::vector<std::string>(allowed.begin(), allowed.end()));
   const std::string accepts = table.ends_with(":") ? table : table + " accepts:";
   if (guess.empty()) return badInput(loc, "{}: unknown key; {} {}", fullKey, accepts, joinKeys(allowed));

@@ -20,7 +20,8 @@ namespace rollspin::scene::schema {
 std::string describeNode(const toml::node& node);
 std::string joinKeys(const std::set<std::string>& keys);
 // "KEY: unknown key; did you mean `NEAR`? TABLE accepts: …" (the nearest
-// accepted key when the typed one is a likely typo).
+// accepted key when the typed one is a likely typo); "did you mean
+// `colatitude_deg` (in degrees)?" alone for the key without its unit suffix.
 Error unknownKey(const SourceLoc& loc, const std::string& fullKey, const std::string& typed,
                  const std::string& table, const std::set<std::string>& allowed);
 // The keys a path table accepts: kind and every kind-specific path key.

@@ -49,8 +49,10 @@
 // Animation "roll" (every sampler LINEAR, one shared input of key times in
 //   seconds, starting at 0): channels ball/translation, ball/rotation,
 //   spin/rotation, field/rotation. A key at every motion start and stop of
-//   the clip, at every corner and joint of the path, and where the bisection
-//   puts them.
+//   the clip, at every whole frame of a motion, at every corner and joint of
+//   the path, and where the bisection puts them; the last key is the clip's
+//   last frame, (frameCount − 1) / fps seconds. Times are float32: each key's
+//   s and q are the solver's at the float time the file holds.
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Installs rollspin's build and test dependencies from Debian 12 packages.
+#   bash scripts/install-deps.sh [--with-blender]
 # Checks what is missing first, then installs all of it in one apt-get call.
 set -euo pipefail
 
@@ -28,6 +29,15 @@ packages=(
   python3-setuptools python3-wheel python3-venv  # `pip install .` of the Python package into a virtual environment
   clang-format
 )
+
+# --with-blender: also Debian's Blender (large: about 80 packages), for the
+# ctest label `blender` (a glTF export imported headless; skipped without it).
+for arg in "$@"; do
+  case "$arg" in
+    --with-blender) packages+=(blender) ;;
+    *) echo "install-deps: unknown option $arg (known: --with-blender)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do

@@ -23,6 +23,8 @@ void registerReportCommands(CLI::App& cli, CommandHandler& handler);
 void registerJoinCommand(CLI::App& cli, CommandHandler& handler);
 // Adds `info`: the GL backends and the context a render gets; info_command.cpp.
 void registerInfoCommand(CLI::App& cli, CommandHandler& handler);
+// Adds `export` (glTF 2.0); export_command.cpp.
+void registerExportCommand(CLI::App& cli, CommandHandler& handler);
 // Adds `keys`, `scenes` and the hidden `generate` (man page, completions); help_commands.cpp.
 void registerHelpCommands(CLI::App& cli, CommandHandler& handler);
 

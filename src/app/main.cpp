@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   rollspin::app::registerReportCommands(cli, handler);
   rollspin::app::registerInfoCommand(cli, handler);
   rollspin::app::registerJoinCommand(cli, handler);
+  rollspin::app::registerExportCommand(cli, handler);
   rollspin::app::registerHelpCommands(cli, handler);
 
   // --version needs no command: the release, the source's git describe, and

@@ -30,6 +30,15 @@ class BallView {
   // What the default camera must keep in view.
   [[nodiscard]] const FrameExtent& extent() const { return extent_; }
 
+  // The meshes the view draws, for an export (glTF) that shows the same:
+  // the surface (null where the layout or the scene shows none) with its
+  // material, the unit ball sphere and the ball's texture (the tennis ball
+  // unless the scene gives one).
+  [[nodiscard]] std::shared_ptr<const render::MeshData> surfaceMesh() const { return surfaceMesh_; }
+  [[nodiscard]] const render::Material& surfaceMaterial() const { return surfaceMaterial_; }
+  [[nodiscard]] std::shared_ptr<const render::MeshData> ballMesh() const { return sphereMesh_; }
+  [[nodiscard]] std::shared_ptr<const render::TextureImage> ballTexture() const { return ballTexture_; }
+
   // `cutAwayFrom`: the eye of a view that cannot see the ball past the
   // surface (CameraFraming::cutsAway): where the surface hides the ball
   // from there, its part nearer the eye is cut away, with a rim line.

@@ -124,6 +124,49 @@ double FrameClock::arcLength(long long frame) const {
   return std::min(length_, length_ * ease(easing_, double(j) / double(motionFrames_ - 1)));
 }
 
+double FrameClock::arcLengthAt(double frame) const {
+  if (!stages_.empty()) {
+    // The last motion that has begun by `frame` (its j = 0 is the frame
+    // before its first): between motions the ball rests at that one's end.
+    double s = 0.0;
+    for (const Stage& st : stages_) {
+      if (!st.motion) {
+        if (double(st.first) <= frame) s = st.s0;
+        continue;
+      }
+      const double j = frame - double(st.first) + 1.0;  // 0 … N
+      if (j <= 0.0) break;
+      if (j >= double(st.frames)) {
+        s = st.s1;
+        continue;
+      }
+      return std::min(st.s1, st.s0 + (st.s1 - st.s0) * ease(easing_, j / double(st.frames)));
+    }
+    return s;
+  }
+  const double j = frame - double(holdFrames_);
+  if (j <= 0.0) return 0.0;
+  if (j >= double(motionFrames_ - 1)) return length_;
+  return std::min(length_, length_ * ease(easing_, j / double(motionFrames_ - 1)));
+}
+
+std::vector<double> FrameClock::motionBounds() const {
+  std::vector<double> bounds{0.0, double(frameCount_ - 1)};
+  if (stages_.empty()) {
+    bounds.push_back(double(holdFrames_));
+    bounds.push_back(double(holdFrames_ + motionFrames_ - 1));
+  }
+  for (const Stage& st : stages_)
+    if (st.motion) {
+      bounds.push_back(double(st.first) - 1.0);
+      bounds.push_back(double(st.first + st.frames) - 1.0);
+    }
+  for (double& b : bounds) b = std::clamp(b, 0.0, double(frameCount_ - 1));
+  std::sort(bounds.begin(), bounds.end());
+  bounds.erase(std::unique(bounds.begin(), bounds.end()), bounds.end());
+  return bounds;
+}
+
 FrameRange parseFrameRange(const std::string& text, long long frameCount) {
   const SourceLoc loc{"--frames " + text};
   const auto colon = text.find(':');

@@ -70,6 +70,14 @@ class FrameClock {
   [[nodiscard]] const scene::FrameRate& fps() const { return fps_; }
   // Arc length shown by frame k (0 ≤ k < frameCount), non-decreasing in k.
   [[nodiscard]] double arcLength(long long frame) const;
+  // The same formulas at a fractional frame f ∈ [0, frameCount − 1] (f =
+  // seconds · fps): continuous and non-decreasing, equal to arcLength(k) at
+  // every whole k. A glTF animation keys the motion at such times.
+  [[nodiscard]] double arcLengthAt(double frame) const;
+  // The fractional frames where a motion starts or stops (the pieces of
+  // arcLengthAt: each motion, each hold), sorted, with 0 and
+  // frameCount − 1.
+  [[nodiscard]] std::vector<double> motionBounds() const;
 
  private:
   double length_;

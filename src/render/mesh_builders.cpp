@@ -1,5 +1,6 @@
 #include "render/mesh_builders.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -95,6 +96,28 @@ std::shared_ptr<MeshData> unitCone(int segments) {
   }
   addCap(*m, segments, 0.0f, -1.0f);
   return m;
+}
+
+glm::mat4 alongSegment(const glm::vec3& a, const glm::vec3& b, float radius) {
+  const glm::vec3 d = b - a;
+  const float len = glm::length(d);
+  const glm::vec3 z = len > 0.0f ? d / len : glm::vec3(0, 0, 1);
+  const glm::vec3 helper = std::abs(z.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
+  const glm::vec3 x = glm::normalize(glm::cross(helper, z));
+  const glm::vec3 y = glm::cross(z, x);
+  glm::mat4 m(1.0f);
+  m[0] = glm::vec4(x * radius, 0.0f);
+  m[1] = glm::vec4(y * radius, 0.0f);
+  m[2] = glm::vec4(d, 0.0f);
+  m[3] = glm::vec4(a, 1.0f);
+  return m;
+}
+
+ArrowParts arrowParts(const glm::vec3& origin, const glm::vec3& tip, float shaftRadius) {
+  const float len = glm::length(tip - origin);
+  const float headLength = std::min(len * 0.35f, shaftRadius * 6.0f);
+  const glm::vec3 neck = tip - (tip - origin) / len * headLength;
+  return {alongSegment(origin, neck, shaftRadius), alongSegment(neck, tip, shaftRadius * 2.6f)};
 }
 
 }  // namespace rollspin::render

@@ -24,4 +24,17 @@ using PatchFunction = std::function<void(float a, float b, glm::vec3& position, 
 // Cone of base radius 1 at z = 0, apex at z = 1 (with base cap).
 [[nodiscard]] std::shared_ptr<MeshData> unitCone(int segments);
 
+// worldFromModel for a unit z-aligned primitive (unitCylinder, unitCone)
+// stretched from a to b with the given radius.
+[[nodiscard]] glm::mat4 alongSegment(const glm::vec3& a, const glm::vec3& b, float radius);
+
+// An ArrowItem as drawn: a unitCylinder shaft and a unitCone head 2.6 shaft
+// radii wide and min(0.35 length, 6 radii) long, lit with the arrows'
+// specular and shininess.
+struct ArrowParts {
+  glm::mat4 shaft{1.0f}, head{1.0f};
+};
+[[nodiscard]] ArrowParts arrowParts(const glm::vec3& origin, const glm::vec3& tip, float shaftRadius);
+inline constexpr float kArrowSpecular = 0.35f, kArrowShininess = 64.0f;
+
 }  // namespace rollspin::render

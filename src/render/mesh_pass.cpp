@@ -6,27 +6,12 @@
 
 #include <algorithm>
 
+#include "render/mesh_builders.hpp"
 #include "render/renderer_impl.hpp"
 
 namespace rollspin::render {
 
 namespace {
-
-// worldFromModel for a unit z-aligned primitive stretched from a to b.
-glm::mat4 alongSegment(const glm::vec3& a, const glm::vec3& b, float radius) {
-  const glm::vec3 d = b - a;
-  const float len = glm::length(d);
-  const glm::vec3 z = len > 0.0f ? d / len : glm::vec3(0, 0, 1);
-  const glm::vec3 helper = std::abs(z.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
-  const glm::vec3 x = glm::normalize(glm::cross(helper, z));
-  const glm::vec3 y = glm::cross(z, x);
-  glm::mat4 m(1.0f);
-  m[0] = glm::vec4(x * radius, 0.0f);
-  m[1] = glm::vec4(y * radius, 0.0f);
-  m[2] = glm::vec4(d, 0.0f);
-  m[3] = glm::vec4(a, 1.0f);
-  return m;
-}
 
 // Whether `d` is drawn as a ray-cast sphere: at one sample (with more, the
 // samples antialias its triangles' edges), whole (no cut-away, not the
@@ -93,17 +78,14 @@ std::vector<Drawable> Renderer::Impl::drawablesOf(const DrawList& list, int view
     if (m.view == view && m.mesh) out.push_back({m.mesh, m.worldFromModel, &m.material, m.dynamic, m.sphere});
   for (const ArrowItem& a : list.arrows) {
     if (a.view != view) continue;
-    const float len = glm::length(a.tip - a.origin);
-    if (len <= 0.0f) continue;
-    const float headLength = std::min(len * 0.35f, a.shaftRadius * 6.0f);
-    const glm::vec3 dir = (a.tip - a.origin) / len;
-    const glm::vec3 neck = a.tip - dir * headLength;
+    if (glm::length(a.tip - a.origin) <= 0.0f) continue;
+    const ArrowParts parts = arrowParts(a.origin, a.tip, a.shaftRadius);
     Material& mat = arrowMaterials.emplace_back();
     mat.color = a.color;
-    mat.specular = 0.35f;
-    mat.shininess = 64.0f;
-    out.push_back({caches.cylinder, alongSegment(a.origin, neck, a.shaftRadius), &mat, a.dynamic, false, true});
-    out.push_back({caches.cone, alongSegment(neck, a.tip, a.shaftRadius * 2.6f), &mat, a.dynamic, false, true});
+    mat.specular = kArrowSpecular;
+    mat.shininess = kArrowShininess;
+    out.push_back({caches.cylinder, parts.shaft, &mat, a.dynamic, false, true});
+    out.push_back({caches.cone, parts.head, &mat, a.dynamic, false, true});
   }
   // Every mesh the list names stays cached, also one a retained frame does
   // not draw (evicting it would re-upload it at the next layer build).

@@ -94,4 +94,22 @@ std::shared_ptr<const TextureImage> tennisBallTexture(int width) {
   return texture;
 }
 
+std::shared_ptr<const TextureImage> checkerTexture(glm::vec3 color, glm::vec3 color2, int cellPixels) {
+  // The sRGB transfer function (IEC 61966-2-1), rounded to bytes.
+  auto encode = [](float linear) {
+    const float c = std::clamp(linear, 0.0f, 1.0f);
+    const float srgb = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+    return static_cast<std::uint8_t>(std::lround(255.0f * srgb));
+  };
+  auto image = std::make_shared<TextureImage>();
+  image->width = image->height = 2 * cellPixels;
+  image->rgba.reserve(static_cast<std::size_t>(image->width) * image->height * 4);
+  for (int y = 0; y < image->height; ++y)
+    for (int x = 0; x < image->width; ++x) {
+      const glm::vec3& c = ((x / cellPixels) + (y / cellPixels)) % 2 == 0 ? color : color2;
+      image->rgba.insert(image->rgba.end(), {encode(c.r), encode(c.g), encode(c.b), 255});
+    }
+  return image;
+}
+
 }  // namespace rollspin::render

@@ -130,8 +130,8 @@ TEST(Help, ManPageAndCompletionsCoverEveryCommand) {
   ASSERT_EQ(bash.exitCode, 0) << bash.err;
   ASSERT_EQ(zsh.exitCode, 0) << zsh.err;
   EXPECT_TRUE(man.out.starts_with(".TH ROLLSPIN 1")) << man.out.substr(0, 200);
-  for (const char* command : {"solve", "timeline", "scene", "render", "compare", "report", "info", "join", "keys",
-                              "scenes"}) {
+  for (const char* command : {"solve", "timeline", "scene", "render", "compare", "report", "info", "join", "export",
+                              "keys", "scenes"}) {
     EXPECT_TRUE(has(man.out, std::string(".SS \"rollspin ") + command)) << command;
     EXPECT_TRUE(has(bash.out, std::string("\"") + command + "\")")) << command;
     EXPECT_TRUE(has(zsh.out, std::string("(") + command + ") _rollspin_cmd_")) << command;

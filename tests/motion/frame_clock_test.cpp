@@ -2,6 +2,8 @@
 // the --frames range parser.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "motion/frame_clock.hpp"
 #include "core/error.hpp"
 
@@ -68,6 +70,45 @@ TEST(FrameClock, SpeedGivesTheDuration) {
 TEST(FrameClock, TooFewOrTooManyFramesAreBadInput) {
   EXPECT_THROW(FrameClock(1.0, animation(0.01, 30, 0.0, scene::Easing::Linear)), Error);
   EXPECT_THROW(FrameClock(1.0, animation(36000.0, 240, 3600.0, scene::Easing::Linear)), Error);
+}
+
+// The continuous clock (a glTF export's key times) is the frame clock at
+// whole frames, non-decreasing in between, and flat over holds.
+void expectContinuousClockAgrees(const FrameClock& clock) {
+  for (long long k = 0; k < clock.frameCount(); ++k) EXPECT_DOUBLE_EQ(clock.arcLengthAt(double(k)), clock.arcLength(k)) << k;
+  double previous = 0.0;
+  for (double f = 0.0; f <= double(clock.frameCount() - 1); f += 0.125) {
+    EXPECT_GE(clock.arcLengthAt(f), previous) << f;
+    previous = clock.arcLengthAt(f);
+  }
+  const std::vector<double> bounds = clock.motionBounds();
+  EXPECT_EQ(bounds.front(), 0.0);
+  EXPECT_EQ(bounds.back(), double(clock.frameCount() - 1));
+}
+
+TEST(FrameClock, ContinuousArcLengthMatchesEveryFrame) {
+  const FrameClock clock(18.0, animation(2.0, 30, 0.5, scene::Easing::Smooth));
+  expectContinuousClockAgrees(clock);
+  EXPECT_EQ(clock.motionBounds(), (std::vector<double>{0.0, 15.0, 74.0, 89.0}));
+  EXPECT_EQ(clock.arcLengthAt(10.3), 0.0);   // the opening hold
+  EXPECT_EQ(clock.arcLengthAt(80.5), 18.0);  // the closing hold
+}
+
+TEST(FrameClock, ContinuousArcLengthFollowsAStoryboard) {
+  scene::SceneSpec spec = animation(2.0, 10, 0.3, scene::Easing::Smooth);
+  spec.segments.resize(3);
+  spec.segments[0].path = scene::PathSpec{};
+  spec.segments[0].duration = 1.0;
+  spec.segments[1].hold = 0.5;  // a hold at s = 2
+  spec.segments[2].path = scene::PathSpec{};
+  spec.segments[2].duration = 2.0;
+  const std::vector<SegmentSpan> spans{{0.0, 2.0}, {2.0, 2.0}, {2.0, 5.0}};
+  const FrameClock clock(spans, spec);
+  expectContinuousClockAgrees(clock);
+  // Opening hold 3 frames, motion 10, hold 5, motion 20, closing hold 3.
+  EXPECT_EQ(clock.motionBounds(), (std::vector<double>{0.0, 2.0, 12.0, 17.0, 37.0, 40.0}));
+  EXPECT_EQ(clock.arcLengthAt(14.5), 2.0);
+  EXPECT_GT(clock.arcLengthAt(17.5), 2.0);
 }
 
 TEST(FrameRange, ParsesInclusiveRangesInsideTheClip) {

@@ -1,0 +1,236 @@
+// The glTF export read back through tinygltf's loader: the named nodes and
+// their tree, +Y up, the ball's translation = its centre C(s) at the keys,
+// the animated rotation at random times within 1e-6 rad of the solver's q
+// (the file's own float32 keys, slerped as glTF does), spinor_sign × key =
+// the solver's q with its sign, the extras; and the .glb/.gltf writers.
+#include <gtest/gtest.h>
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <random>
+
+#include "core/error.hpp"
+#include "export/gltf_export.hpp"
+#include "motion/frame_poses.hpp"
+#include "motion/frame_sampling.hpp"
+#include "support/test_files.hpp"
+
+namespace rollspin::gltf {
+namespace {
+
+using geometry::Vec3;
+using spin::Su2;
+
+struct Loaded {
+  scene::SceneSpec spec;
+  model::RollingModel model;
+  ExportedScene exported;
+  tinygltf::Model gltf;
+};
+
+Loaded exportShipped(const std::string& name, bool metadata = true) {
+  Loaded out;
+  out.spec = model::loadScene(test::shippedScenePath(name), {});
+  out.model = model::buildSceneModel(out.spec);
+  ExportRequest request{&out.spec, &out.model, nullptr, "test-version", "the scene text", metadata};
+  out.exported = exportScene(request);
+  tinygltf::TinyGLTF loader;
+  std::string error, warning;
+  const bool ok = loader.LoadBinaryFromMemory(&out.gltf, &error, &warning, out.exported.glb.data(),
+                                              unsigned(out.exported.glb.size()));
+  EXPECT_TRUE(ok) << error;
+  EXPECT_EQ(warning, "");
+  return out;
+}
+
+int nodeNamed(const tinygltf::Model& m, const std::string& name) {
+  for (std::size_t i = 0; i < m.nodes.size(); ++i)
+    if (m.nodes[i].name == name) return int(i);
+  return -1;
+}
+
+// An accessor's float data (tightly packed, as the exporter writes it).
+std::vector<float> floats(const tinygltf::Model& m, int accessor) {
+  const tinygltf::Accessor& a = m.accessors[std::size_t(accessor)];
+  const tinygltf::BufferView& v = m.bufferViews[std::size_t(a.bufferView)];
+  EXPECT_EQ(a.componentType, TINYGLTF_COMPONENT_TYPE_FLOAT);
+  const std::size_t n = a.count * std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(a.type)));
+  std::vector<float> out(n);
+  std::memcpy(out.data(), m.buffers[std::size_t(v.buffer)].data.data() + v.byteOffset + a.byteOffset, n * sizeof(float));
+  return out;
+}
+
+// The output accessor of the channel that animates node/path.
+int channelOutput(const tinygltf::Model& m, int node, const std::string& path, int* input = nullptr) {
+  for (const tinygltf::Animation& a : m.animations)
+    for (const tinygltf::AnimationChannel& c : a.channels)
+      if (c.target_node == node && c.target_path == path) {
+        const tinygltf::AnimationSampler& s = a.samplers[std::size_t(c.sampler)];
+        EXPECT_EQ(s.interpolation, "LINEAR");
+        if (input) *input = s.input;
+        return s.output;
+      }
+  ADD_FAILURE() << "no channel " << path;
+  return -1;
+}
+
+Su2 keyAt(const std::vector<float>& xyzw, std::size_t k) {
+  return {xyzw[4 * k + 3], xyzw[4 * k], xyzw[4 * k + 1], xyzw[4 * k + 2]};
+}
+
+// glTF's LINEAR rotation: slerp on the shorter arc (the spec's appendix).
+Su2 slerp(Su2 a, Su2 b, double x) {
+  a = {a.w / a.norm(), a.x / a.norm(), a.y / a.norm(), a.z / a.norm()};
+  b = {b.w / b.norm(), b.x / b.norm(), b.y / b.norm(), b.z / b.norm()};
+  double d = a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z;
+  if (d < 0) b = -b, d = -d;
+  const double angle = std::acos(std::min(1.0, d));
+  if (angle < 1e-12) return a;
+  const double wa = std::sin((1 - x) * angle) / std::sin(angle), wb = std::sin(x * angle) / std::sin(angle);
+  return {wa * a.w + wb * b.w, wa * a.x + wb * b.x, wa * a.y + wb * b.y, wa * a.z + wb * b.z};
+}
+
+// The solver's q at arc lengths s (sorted), one march, as a render solves.
+std::vector<Su2> solverAt(const Loaded& l, const std::vector<double>& s) {
+  std::vector<Su2> q(s.size());
+  motion::marchScene(l.spec, l.model, s, [&](std::size_t i, double, const Su2& u) { q[i] = u; });
+  return q;
+}
+
+TEST(GltfExport, NamedNodesInTheirTreeWithYUp) {
+  const Loaded l = exportShipped("lollipop");
+  const tinygltf::Model& m = l.gltf;
+  ASSERT_EQ(m.scenes.size(), 1u);
+  const int root = nodeNamed(m, "rollspin");
+  ASSERT_EQ(m.scenes[0].nodes, std::vector<int>{root});
+  for (const char* name : {"surface", "path", "ball", "bloch"}) {
+    const auto& children = m.nodes[std::size_t(root)].children;
+    EXPECT_NE(std::find(children.begin(), children.end(), nodeNamed(m, name)), children.end()) << name;
+    EXPECT_GE(m.nodes[std::size_t(nodeNamed(m, name))].mesh, 0) << name;
+  }
+  EXPECT_EQ(m.nodes[std::size_t(nodeNamed(m, "bloch"))].children,
+            (std::vector<int>{nodeNamed(m, "spin"), nodeNamed(m, "field")}));
+  // The root's rotation takes the scene's +z (up) to glTF's +y.
+  const auto& r = m.nodes[std::size_t(root)].rotation;
+  ASSERT_EQ(r.size(), 4u);
+  const Vec3 up = Su2{r[3], r[0], r[1], r[2]}.rotate(Vec3::UnitZ());
+  EXPECT_NEAR((up - Vec3::UnitY()).norm(), 0.0, 1e-12);
+  ASSERT_EQ(m.animations.size(), 1u);
+  EXPECT_EQ(m.animations[0].name, "roll");
+  EXPECT_EQ(m.images.size(), 2u);  // the checker and the tennis ball, as PNG
+  for (const tinygltf::Image& image : m.images) EXPECT_EQ(image.mimeType, "image/png");
+}
+
+// Every key's translation is C(s) of its time, and its quaternion times its
+// sign is the solver's q at that s, sign and all.
+void expectKeysAreTheSolvers(const Loaded& l) {
+  const tinygltf::Model& m = l.gltf;
+  const int ball = nodeNamed(m, "ball");
+  int input = -1;
+  const std::vector<float> centres = floats(m, channelOutput(m, ball, "translation", &input));
+  const std::vector<float> rotations = floats(m, channelOutput(m, ball, "rotation"));
+  const std::vector<float> seconds = floats(m, input);
+  const tinygltf::Value& extras = m.nodes[std::size_t(ball)].extras.Get("rollspin");
+  const std::vector<float> arc = floats(m, extras.Get("arc_length").GetNumberAsInt());
+  const std::vector<float> sign = floats(m, extras.Get("spinor_sign").GetNumberAsInt());
+  ASSERT_EQ(arc.size(), seconds.size());
+  ASSERT_EQ(sign.size(), seconds.size());
+  const motion::FrameClock clock = motion::clipClock(l.spec, l.model);
+  std::vector<double> s;
+  for (const float t : seconds) s.push_back(clock.arcLengthAt(double(t) * clock.fps().value()));
+  const std::vector<Su2> q = solverAt(l, s);
+  const double R = l.model.ballRadius;
+  for (std::size_t k = 0; k < seconds.size(); ++k) {
+    EXPECT_NEAR(arc[k], s[k], 1e-6 * std::max(1.0, s[k]));
+    const Vec3 c = l.model.path->at(s[k]).centre(R);
+    EXPECT_NEAR((Vec3(centres[3 * k], centres[3 * k + 1], centres[3 * k + 2]) - c).norm(), 0.0, 1e-6 * (1.0 + c.norm()));
+    const Su2 key = keyAt(rotations, k);
+    const Su2 signedKey{sign[k] * key.w, sign[k] * key.x, sign[k] * key.y, sign[k] * key.z};
+    EXPECT_NEAR(std::abs(signedKey.w - q[k].w) + (signedKey.vec() - q[k].vec()).norm(), 0.0, 1e-6) << "key " << k;
+  }
+}
+
+// glTF's slerp between the file's keys, at random times, against the solver.
+void expectRotationWithinTolerance(const Loaded& l, int samples) {
+  const tinygltf::Model& m = l.gltf;
+  const int ball = nodeNamed(m, "ball");
+  int input = -1;
+  const std::vector<float> rotations = floats(m, channelOutput(m, ball, "rotation", &input));
+  const std::vector<float> seconds = floats(m, input);
+  const motion::FrameClock clock = motion::clipClock(l.spec, l.model);
+  std::mt19937 random(20261128);
+  std::uniform_real_distribution<double> uniform(seconds.front(), seconds.back());
+  std::vector<double> times(static_cast<std::size_t>(samples));
+  std::vector<double> s;
+  for (double& t : times) t = uniform(random);
+  std::sort(times.begin(), times.end());
+  for (const double t : times) s.push_back(clock.arcLengthAt(t * clock.fps().value()));
+  const std::vector<Su2> q = solverAt(l, s);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const std::size_t k = std::size_t(std::upper_bound(seconds.begin(), seconds.end(), float(times[i])) - seconds.begin());
+    const std::size_t a = std::min(k, seconds.size() - 1) - 1;
+    const double x = (times[i] - seconds[a]) / (double(seconds[a + 1]) - double(seconds[a]));
+    worst = std::max(worst, spin::rotationDistance(slerp(keyAt(rotations, a), keyAt(rotations, a + 1), std::clamp(x, 0.0, 1.0)), q[i]));
+  }
+  EXPECT_LE(worst, 1e-6);
+  // The spin arrow turns with the ball: the same keys.
+  EXPECT_EQ(floats(m, channelOutput(m, nodeNamed(m, "spin"), "rotation")), rotations);
+}
+
+TEST(GltfExport, KeysAreTheSolversOnACircle) {
+  const Loaded l = exportShipped("lollipop");
+  expectKeysAreTheSolvers(l);
+  expectRotationWithinTolerance(l, 400);
+}
+
+TEST(GltfExport, KeysFollowAStoryboardWithHoldsAndCorners) {
+  const Loaded l = exportShipped("storyboard");
+  expectKeysAreTheSolvers(l);
+  expectRotationWithinTolerance(l, 400);
+  // A key at every corner and joint of the path.
+  std::vector<double> corners = l.model.path->breakpoints();
+  for (const model::SegmentSpan& span : l.model.segments) corners.insert(corners.end(), {span.start, span.end});
+  ASSERT_FALSE(corners.empty());
+  for (const double c : corners) {
+    double nearest = 1e300;
+    for (const double s : l.exported.keys.arcLength) nearest = std::min(nearest, std::abs(s - c));
+    EXPECT_LE(nearest, 1e-5) << "corner at s = " << c;
+  }
+}
+
+TEST(GltfExport, ExtrasCarryVersionAndSceneUnlessNoMetadata) {
+  const tinygltf::Model with = exportShipped("penny").gltf;
+  const tinygltf::Value& extras = with.nodes[std::size_t(nodeNamed(with, "ball"))].extras.Get("rollspin");
+  EXPECT_EQ(extras.Get("version").Get<std::string>(), "test-version");
+  EXPECT_EQ(extras.Get("scene").Get<std::string>(), "the scene text");
+  const tinygltf::Model without = exportShipped("penny", false).gltf;
+  EXPECT_FALSE(without.nodes[std::size_t(nodeNamed(without, "ball"))].extras.Get("rollspin").Has("scene"));
+}
+
+TEST(GltfExport, WritesGlbOrGltfWithItsBinAndRefusesOtherNames) {
+  const std::filesystem::path dir = test::freshTempDir("gltf_export_writers");
+  scene::SceneSpec spec = model::loadScene(test::shippedScenePath("penny"), {});
+  const model::RollingModel model = model::buildSceneModel(spec);
+  const ExportRequest request{&spec, &model, nullptr, "v", "", false};
+  writeGltf(request, dir / "a.glb");
+  writeGltf(request, dir / "b.gltf");
+  tinygltf::TinyGLTF loader;
+  tinygltf::Model glb, gltf;
+  std::string error, warning;
+  EXPECT_TRUE(loader.LoadBinaryFromFile(&glb, &error, &warning, (dir / "a.glb").string())) << error;
+  EXPECT_TRUE(loader.LoadASCIIFromFile(&gltf, &error, &warning, (dir / "b.gltf").string())) << error;
+  EXPECT_EQ(gltf.buffers.at(0).uri, "b.bin");
+  EXPECT_EQ(gltf.buffers.at(0).data, glb.buffers.at(0).data);
+  EXPECT_THROW(writeGltf(request, dir / "c.obj"), Error);
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"a.glb", "b.bin", "b.gltf"})) << "no temporary left";
+}
+
+}  // namespace
+}  // namespace rollspin::gltf

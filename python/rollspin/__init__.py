@@ -280,8 +280,8 @@ class Scene:
         samples overrides timeline.samples (default: 60 per turn + 1).
         """
         core = self._with([_override("timeline.samples", samples)] if samples is not None else [])
-        names, values, segments, method, steps, seconds = core.timeline()
-        return Timeline(names, values, segments, method, steps, seconds)
+        names, values, segments, method, steps, seconds, surfaces = core.timeline()
+        return Timeline(names, values, segments, method, steps, seconds, surfaces)
 
     def field(self, s: Union[float, Sequence[float], "np.ndarray"]) -> "np.ndarray":
         """The field B(s) = −ω(s) at arc lengths s, shape (N, 3) (the solver's own field code).
@@ -440,15 +440,18 @@ class Timeline:
     """The orientation timeline: the CSV's columns as numpy arrays.
 
     ``t["qw"]``, ``t["Bx"]``, ``t.s`` …; ``len(t)`` rows; ``t.columns`` the
-    names in the CSV's order (a storyboard adds "segment").
+    names in the CSV's order (a storyboard adds "segment", one of several
+    surfaces "surface" too).
     """
 
     def __init__(self, names: List[str], values: "np.ndarray", segments: Optional["np.ndarray"], method: str, steps: int,
-                 seconds: float) -> None:
+                 seconds: float, surfaces: Optional["np.ndarray"] = None) -> None:
         self._index = {name: k for k, name in enumerate(names)}
         self._values = values  # (columns, rows): each column contiguous
         self._segments = segments
-        self.columns: List[str] = list(names) + (["segment"] if segments is not None else [])
+        self._surfaces = surfaces
+        self.columns: List[str] = (list(names) + (["segment"] if segments is not None else [])
+                                   + (["surface"] if surfaces is not None else []))
         self.method = method
         self.steps = steps
         self.seconds = seconds
@@ -459,6 +462,8 @@ class Timeline:
     def __getitem__(self, column: str) -> "np.ndarray":
         if column == "segment" and self._segments is not None:
             return self._segments
+        if column == "surface" and self._surfaces is not None:
+            return self._surfaces
         if column not in self._index:
             raise KeyError(f"no column {column!r}; the columns are {', '.join(self.columns)}")
         return self._values[self._index[column]]

@@ -235,7 +235,8 @@ class Scene {
                           stats.errorEstimateBasis);
   }
 
-  // (column names, values (columns × rows), segment numbers or None, method, steps, seconds).
+  // (column names, values (columns × rows), segment numbers or None, method, steps, seconds,
+  // surface indices or None).
   [[nodiscard]] py::tuple timeline() const {
     const spin::SampleArcLengths samples = motion::timelineArcLengths(spec_, model_);
     const auto rows = static_cast<py::ssize_t>(samples.size());
@@ -245,6 +246,9 @@ class Scene {
     py::array_t<long long> segments(segmented ? rows : 0);
     double* out = values.mutable_data();
     long long* segmentOut = segments.mutable_data();
+    const bool surfaced = app::timelineHasSurfaces(model_);
+    py::array_t<long long> surfaces(surfaced ? rows : 0);
+    long long* surfaceOut = surfaces.mutable_data();
     spin::SolveStats stats;
     motion::SolverChoice choice;
     {
@@ -256,12 +260,14 @@ class Scene {
       stats = app::sampleTimeline(model_, choice, samples, [&](std::size_t index, const app::TimelineRow& row) {
         for (py::ssize_t c = 0; c < columns; ++c) out[c * rows + static_cast<py::ssize_t>(index)] = row.values[c];
         if (segmented) segmentOut[index] = static_cast<long long>(row.segment);
+        if (surfaced) surfaceOut[index] = static_cast<long long>(row.surface);
       }, source_.name);
     }
     py::list names;
     for (const auto name : app::kTimelineColumns) names.append(std::string(name));
     return py::make_tuple(names, values, segmented ? py::object(segments) : py::object(py::none()),
-                          std::string(spin::methodName(choice.method)), stats.steps, stats.seconds);
+                          std::string(spin::methodName(choice.method)), stats.steps, stats.seconds,
+                          surfaced ? py::object(surfaces) : py::object(py::none()));
   }
 
   // B(s) at each arc length (N × 3), from the field code the solver uses.

@@ -208,10 +208,13 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
       const bool cameraMoving = drawer.cameraMoving(story);
       // An image drawn mid-move shows the camera short of where it stops: the
       // first frame after the move is drawn again, as a part starting there is.
-      if (!previous || s != previousS || story.segment != previousSegment || cameraMoving || previousMoving) {
-        pose->story = story;
+      pose->story = story;
+      const std::optional<SceneDrawer::Fade> fade = drawer.fadeAt(*pose);
+      if (!previous || s != previousS || story.segment != previousSegment || cameraMoving || previousMoving || fade) {
         const std::shared_ptr<PooledImage> pooled = pool->acquire();
         renderer.render(drawer.draw(*pose), pooled->image, pooled->history);
+        // A cross-fade to a new surface's view: the previous surface's picture over it, fading out.
+        if (fade) media::crossFade(pooled->image, renderer.render(fade->from), fade->weight);
         previous = Frame(pooled, &pooled->image);  // shares the pooled image's life
         previousS = s;
         previousSegment = story.segment;

@@ -36,6 +36,9 @@ std::string resolvedSceneText(const std::string& sourceName, const scene::SceneS
                             span.end, span.end - span.start, seconds[k], std::llround(seconds[k] * fps))
               : fmt::format("segment {}: rests at s = {:.6g} for {:.6g} s, {} frames", k + 1, span.start,
                             spec.segments[k].hold, std::llround(spec.segments[k].hold * fps));
+      if (model.surfaces.size() > 1)
+        notes[scene::SceneSpec::segmentKey(k)] += fmt::format(", on surface {} (a {})", span.surface,
+                                                              scene::toString(spec.surfaceOf(k).kind));
     }
     notes[spec.animation.speed ? "animation.speed" : "animation.duration"] =
         fmt::format("segments without their own timing move at {:.6g} per second; the clip has {} frames",

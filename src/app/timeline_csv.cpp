@@ -31,6 +31,8 @@ std::vector<std::pair<double, std::size_t>> motionStarts(const RollingModel& mod
 
 bool timelineHasSegments(const RollingModel& model) { return !motionStarts(model).empty(); }
 
+bool timelineHasSurfaces(const RollingModel& model) { return model.surfaces.size() > 1; }
+
 spin::SolveStats sampleTimeline(const RollingModel& model, const SolverChoice& choice,
                                 const spin::SampleArcLengths& sampleS, const TimelineRowSink& rowSink,
                                 const std::string& where) {
@@ -50,6 +52,7 @@ spin::SolveStats sampleTimeline(const RollingModel& model, const SolverChoice& c
       const auto it = std::upper_bound(motions.begin(), motions.end(), s,
                                        [](double x, const auto& m) { return x < m.first; });
       row.segment = (it == motions.begin() ? motions.front() : *(it - 1)).second;
+      row.surface = model.segments[row.segment - 1].surface;
     }
     rowSink(index, row);
   };
@@ -75,12 +78,14 @@ spin::SolveStats writeTimelineCsv(const std::filesystem::path& out, const Rollin
                    "the solve {:.3g} s)\n",
                    spin::methodName(choice.method), solved.steps, solved.errorEstimate, solved.errorEstimateBasis,
                    solved.errorEstimateSeconds, solved.seconds);
-  const bool segments = timelineHasSegments(model);
-  fmt::format_to(std::back_inserter(buffer), "{}{}\n", fmt::join(kTimelineColumns, ","), segments ? ",segment" : "");
+  const bool segments = timelineHasSegments(model), surfaces = timelineHasSurfaces(model);
+  fmt::format_to(std::back_inserter(buffer), "{}{}{}\n", fmt::join(kTimelineColumns, ","), segments ? ",segment" : "",
+                 surfaces ? ",surface" : "");
   // Rows are formatted into a buffer and handed to the file in ~1 MiB chunks.
   const spin::SolveStats stats = sampleTimeline(model, choice, sampleS, [&](std::size_t, const TimelineRow& row) {
     fmt::format_to(std::back_inserter(buffer), "{:.17g}", fmt::join(row.values, ","));
     if (segments) fmt::format_to(std::back_inserter(buffer), ",{}", row.segment);
+    if (surfaces) fmt::format_to(std::back_inserter(buffer), ",{}", row.surface);
     buffer.push_back('\n');
     if (buffer.size() > (1u << 20)) {
       file.write({buffer.data(), buffer.size()});

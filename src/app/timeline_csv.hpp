@@ -6,7 +6,8 @@
 // (centre C = P + R n), qw,qx,qy,qz (U = qw − i q·σ, worldFromBody, not
 // sign-normalised), Bx,By,Bz (field B = −ω), tx,ty,tz (tangent t),
 // kappa_n, kappa_g, tau_g; a storyboard adds `segment`, the number (from 1)
-// of the segment whose motion the row is in.
+// of the segment whose motion the row is in, and a storyboard of several
+// surfaces then `surface`, that segment's surface index (from 0).
 // Above the column names, one comment line (starting with '#') names the
 // method and steps and gives the a posteriori error estimate of U(L)
 // (spin::estimateError) with its basis and cost; read with
@@ -38,6 +39,7 @@ inline constexpr std::array<std::string_view, 23> kTimelineColumns{
 struct TimelineRow {
   std::array<double, kTimelineColumns.size()> values{};
   std::size_t segment = 0;  // the storyboard segment (from 1) whose motion the row is in; 0: not a storyboard
+  std::size_t surface = 0;  // that segment's surface (RollingModel::surfaces index)
 };
 using TimelineRowSink = std::function<void(std::size_t index, const TimelineRow& row)>;
 
@@ -49,6 +51,8 @@ spin::SolveStats sampleTimeline(const RollingModel& model, const SolverChoice& c
                                 const std::string& where);
 // Whether `model` is a storyboard, i.e. rows carry a segment number.
 [[nodiscard]] bool timelineHasSegments(const RollingModel& model);
+// Whether rows carry a surface index: a storyboard of several surfaces.
+[[nodiscard]] bool timelineHasSurfaces(const RollingModel& model);
 
 // `solved`: the scene's solve of U(L) with its error estimate
 // (motion::solveScene, whose refined step count `choice` carries).

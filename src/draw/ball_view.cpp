@@ -619,7 +619,8 @@ std::vector<TextBlock> BallView::textBlocks(const FrameOrientations& frame, floa
     live.slots = {Slot::BottomLeft, Slot::BottomRight, Slot::TopLeft};
     const spin::AngleAxis aa = spin::rotationAngleAxis(frame.current.q);
     const double psi = spin::spinorAngle(frame.current.q);
-    std::vector<std::string> lines{fmt::format("s = {:.2f} of {:.2f}", frame.current.s, model_.path->length()),
+    std::vector<std::string> lines{fmt::format("s = {:.2f} of {:.2f}", shownStart_ + frame.current.s,
+                                               shownLength_.value_or(model_.path->length())),
                                    fmt::format("lab rotation angle = {:.1f}°", aa.angle / kDeg),
                                    fmt::format("spinor angle ψ = {:.1f}°", psi / kDeg)};
     live.keep = 1;

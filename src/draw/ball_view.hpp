@@ -47,6 +47,12 @@ class BallView {
   // The view's text for this frame: {heading and facts, running values}
   // (empty blocks when labels are off); `text` is the body size in pixels.
   [[nodiscard]] std::vector<TextBlock> textBlocks(const motion::FrameOrientations& frame, float text) const;
+  // A surface's stretch of a longer storyboard (motion/surface_stretches):
+  // the running s is shown as the whole clip's, start + s of `wholeLength`.
+  void showWholeArcLength(double start, double wholeLength) {
+    shownStart_ = start;
+    shownLength_ = wholeLength;
+  }
   // Marks what the view shows at s that text must not cover: the ball and
   // (withPath) the contact path; the plate's trail so far.
   void markImportant(Occupancy& occupancy, const render::View& v, double s, bool withPath) const;
@@ -71,6 +77,8 @@ class BallView {
   std::vector<geometry::Vec3> pathPoints_;  // dense samples of P(s)
   std::vector<double> pathS_;
   std::size_t trailGridCount_ = 0;  // the trail grid's points (frame_sampling.hpp)
+  double shownStart_ = 0.0;             // showWholeArcLength
+  std::optional<double> shownLength_;
   FrameExtent extent_;
   std::shared_ptr<const render::TextureImage> ballTexture_;
   std::shared_ptr<const motion::SceneFacts> facts_;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "draw/draw_style.hpp"
 #include "draw/label_placement.hpp"
 #include "draw/text_blocks.hpp"
@@ -46,6 +48,32 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
   markerBody_ = spec.ball.marker ? Vec3((*spec.ball.marker)[0], (*spec.ball.marker)[1], (*spec.ball.marker)[2])
                                  : start.normal;
   markerBody_.normalize();
+  stretches_ = motion::surfaceStretches(spec, model);
+  if (stretches_.empty()) {
+    build(model, model, std::move(ballTexture), std::move(facts));
+    return;
+  }
+  // Several surfaces: a drawer per stretch, each with the whole clip's
+  // model for its twin and the whole clip's marker.
+  for (const motion::SurfaceStretch& stretch : stretches_) {
+    parts_.push_back(std::unique_ptr<SceneDrawer>(
+        new SceneDrawer(stretch, model, ballTexture, facts, markerBody_)));
+  }
+}
+
+SceneDrawer::SceneDrawer(const motion::SurfaceStretch& stretch, const RollingModel& whole,
+                         std::shared_ptr<const render::TextureImage> ballTexture,
+                         std::shared_ptr<const SceneFacts> facts, const geometry::Vec3& markerBody)
+    : spec_(stretch.spec), markerBody_(markerBody), stretchStart_(stretch.start) {
+  build(stretch.model, whole, std::move(ballTexture), std::move(facts));
+}
+
+SceneDrawer::~SceneDrawer() = default;
+
+void SceneDrawer::build(const RollingModel& model, const RollingModel& whole,
+                        std::shared_ptr<const render::TextureImage> ballTexture,
+                        std::shared_ptr<const SceneFacts> facts) {
+  const scene::SceneSpec& spec = spec_;
   titleBand_ = !shownTitle(spec.render.title).empty();
   for (const scene::SegmentSpec& seg : spec.segments)
     if (seg.title && !shownTitle(*seg.title).empty()) titleBand_ = true;
@@ -62,8 +90,9 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
 
   auto dotMesh = render::uvSphere(24, 12);  // small dots need few triangles
   if (spec.render.layout != scene::RenderLayout::Ball)
-    twin_ = std::make_unique<TwinView>(spec, model, facts, markerBody_, dotMesh);
+    twin_ = std::make_unique<TwinView>(spec, whole, facts, markerBody_, dotMesh);
   ball_ = std::make_unique<BallView>(spec, model, std::move(ballTexture), std::move(facts), markerBody_, dotMesh);
+  if (&model != &whole) ball_->showWholeArcLength(stretchStart_, whole.path->length());
   camera_ = std::make_unique<CameraFraming>(spec, model, ball_->extent());
   layOut(model);
 }
@@ -278,7 +307,83 @@ void SceneDrawer::layOut(const RollingModel& model) {
   }
 }
 
+std::size_t SceneDrawer::stretchOf(std::size_t segment) const {
+  std::size_t k = 0;
+  while (k + 1 < stretches_.size() && stretches_[k + 1].firstSegment <= segment) ++k;
+  return k;
+}
+
+FrameOrientations SceneDrawer::inStretch(const FrameOrientations& frame, std::size_t k) const {
+  const motion::SurfaceStretch& stretch = stretches_[k];
+  FrameOrientations local = frame;
+  local.story.segment = frame.story.segment - std::min(frame.story.segment, stretch.firstSegment);
+  local.current.s = std::clamp(frame.current.s - stretch.start, 0.0, stretch.end - stretch.start);
+  auto cut = [&](std::vector<OrientedSample>& poses) {
+    std::erase_if(poses, [&](const OrientedSample& p) { return p.s < stretch.start || p.s > stretch.end; });
+    for (OrientedSample& p : poses) p.s -= stretch.start;
+  };
+  cut(local.trail);
+  cut(local.strobe);
+  local.cuts.clear();
+  return local;
+}
+
 render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
+  if (parts_.empty()) return drawList(frame, frame);
+  const std::size_t k = stretchOf(frame.story.segment);
+  return parts_[k]->drawList(inStretch(frame, k), frame);
+}
+
+std::optional<SceneDrawer::Fade> SceneDrawer::fadeAt(const FrameOrientations& frame) const {
+  const std::size_t k = parts_.empty() ? 0 : stretchOf(frame.story.segment);
+  if (k == 0 || frame.story.segment != stretches_[k].firstSegment) return std::nullopt;
+  const scene::SegmentSpec& segment = spec_.segments[frame.story.segment];
+  if (segment.transition != scene::SegmentSpec::Transition::Fade || k > frame.cuts.size()) return std::nullopt;
+  // The segment's first frame (0 s) shows the old view whole.
+  const double weight = 1.0 - frame.story.seconds / segment.fadeSeconds;
+  if (!(weight > 0.0 && weight <= 1.0)) return std::nullopt;
+  // The previous surface as the ball left it: its last segment at its end.
+  const motion::SurfaceStretch& previous = stretches_[k - 1];
+  FrameOrientations left;
+  left.current = {previous.end, frame.cuts[k - 1].q};
+  for (const OrientedSample& p : frame.trail)
+    if (p.s <= previous.end) left.trail.push_back(p);
+  left.trail.push_back(left.current);
+  left.story.segment = stretches_[k].firstSegment - 1;
+  left.story.duration = frame.story.duration;
+  left.story.seconds = 1e300;  // settled: long after that segment began
+  return Fade{parts_[k - 1]->drawList(inStretch(left, k - 1), left), weight};
+}
+
+bool SceneDrawer::cameraMoving(const StoryPlace& story) const {
+  if (parts_.empty()) return camera_->moving(story);
+  const std::size_t k = stretchOf(story.segment);
+  StoryPlace local = story;
+  local.segment -= stretches_[k].firstSegment;
+  return parts_[k]->cameraMoving(local);
+}
+
+std::vector<std::string> SceneDrawer::cameraWarnings() const {
+  if (parts_.empty()) return camera_->hiddenWarnings();
+  // A stretch names its segments from 1 and its times from its own start.
+  std::vector<std::string> out;
+  for (std::size_t k = 0; k < parts_.size(); ++k)
+    for (std::string w : parts_[k]->cameraWarnings()) {
+      for (std::size_t j = stretches_[k].endSegment - stretches_[k].firstSegment; j-- > 0;) {
+        const std::string local = scene::SceneSpec::segmentKey(j) + ":";
+        if (const auto at = w.find(local); at != std::string::npos) {
+          w.replace(at, local.size(), scene::SceneSpec::segmentKey(j + stretches_[k].firstSegment) + ":");
+          break;
+        }
+      }
+      if (const auto at = w.find("of the clip"); at != std::string::npos)
+        w.replace(at, 11, fmt::format("of surface {}'s part of the clip", k));
+      out.push_back(std::move(w));
+    }
+  return out;
+}
+
+render::DrawList SceneDrawer::drawList(const FrameOrientations& frame, const FrameOrientations& whole) const {
   render::DrawList list;
   const auto& rs = spec_.render;
   list.width = static_cast<int>(rs.width);
@@ -293,11 +398,12 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
   if (titleBand_)
     addTitleBand(list, shownTitle(segment && segment->title ? *segment->title : rs.title), text(), titleLines_,
                  leastText(), figure());
-  addViews(list, frame);
+  addViews(list, frame, whole);
   return list;
 }
 
-void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& frame) const {
+void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& frame,
+                           const FrameOrientations& whole) const {
   const Rects r = rects();
   const double s = frame.current.s;
   // A still's blocks keep off what this frame draws (the layout, made for
@@ -346,7 +452,7 @@ void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& fram
     // first shot's direction (at s = 0) for the whole clip.
     const StoryPlace story = spec_.render.twinCameraFixed ? StoryPlace{} : frame.story;
     const std::size_t firstLabel = list.labels.size();
-    twin_->add(list, frame, view,
+    twin_->add(list, whole, view,
                camera_->aimAt(story, twin.width, twin.height, spec_.render.twinCameraFixed ? 0.0 : s));
     Occupancy sphere(twin.width, twin.height);
     if (still) twin_->markImportant(sphere, list.views[std::size_t(view)]);
@@ -356,6 +462,13 @@ void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& fram
 }
 
 render::View SceneDrawer::ballCamera(const StoryPlace& story, double s) const {
+  if (!parts_.empty()) {
+    const std::size_t k = stretchOf(story.segment);
+    StoryPlace local = story;
+    local.segment -= stretches_[k].firstSegment;
+    const motion::SurfaceStretch& stretch = stretches_[k];
+    return parts_[k]->ballCamera(local, std::clamp(s - stretch.start, 0.0, stretch.end - stretch.start));
+  }
   const Rects r = rects();
   if (r.ball.width <= 0) return {};
   return camera_->ballCamera(r.ball.x, r.ball.y, r.ball.width, r.ball.height, s, story);

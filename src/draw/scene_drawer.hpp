@@ -10,6 +10,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "draw/twin_view.hpp"
 #include "motion/frame_sampling.hpp"
 #include "motion/scene_facts.hpp"
+#include "motion/surface_stretches.hpp"
 #include "model/rolling_model.hpp"
 #include "render/draw_list.hpp"
 #include "scene/scene_spec.hpp"
@@ -41,15 +43,30 @@ class SceneDrawer {
   // `ballTexture` null: the built-in tennis ball. Meshes are built once here
   // and shared by every frame. `facts` (makeSceneFacts): the scene's fact
   // labels, the tennis ball's marks and the twin's cone of B; null for none.
+  // A storyboard of several surfaces draws each surface's stretch
+  // (motion/surface_stretches.hpp) with a drawer of its own: its camera, its
+  // surface and path; the Bloch sphere's trail runs on through the clip.
   SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model,
               std::shared_ptr<const render::TextureImage> ballTexture,
               std::shared_ptr<const SceneFacts> facts = nullptr);
+  ~SceneDrawer();
 
   [[nodiscard]] render::DrawList draw(const FrameOrientations& frame) const;
 
+  // A cross-fade into a new surface's view (segment.transition = "fade"):
+  // the outgoing picture, the previous surface's view with the ball as it
+  // left it (FrameOrientations::cuts), and its weight in (0, 1], falling
+  // linearly from 1 at the segment's first frame to 0 at
+  // segment.fade_seconds; nullopt when the frame is in none.
+  struct Fade {
+    render::DrawList from;
+    double weight = 0.0;
+  };
+  [[nodiscard]] std::optional<Fade> fadeAt(const FrameOrientations& frame) const;
+
   // Whether the frame's camera is still on its way from the previous
   // segment's (a held frame must be drawn again).
-  [[nodiscard]] bool cameraMoving(const StoryPlace& story) const { return camera_->moving(story); }
+  [[nodiscard]] bool cameraMoving(const StoryPlace& story) const;
 
   // The ball view's camera at a place of the clip, as draw() sets it (no
   // solve needed); a default View where the layout shows no ball view.
@@ -57,12 +74,26 @@ class SceneDrawer {
 
   // Where the scene's own camera keys hide the ball: one warning line per
   // segment, with the seconds (CameraFraming::hiddenWarnings).
-  [[nodiscard]] std::vector<std::string> cameraWarnings() const { return camera_->hiddenWarnings(); }
+  [[nodiscard]] std::vector<std::string> cameraWarnings() const;
 
   // The marker's body direction X(0) (unit).
   [[nodiscard]] const geometry::Vec3& markerBody() const { return markerBody_; }
 
  private:
+  // One surface's stretch: its scene and model for the ball view and the
+  // camera, the whole clip's model (`whole`) for the twin, the marker body
+  // direction of the whole clip.
+  SceneDrawer(const motion::SurfaceStretch& stretch, const RollingModel& whole,
+              std::shared_ptr<const render::TextureImage> ballTexture, std::shared_ptr<const SceneFacts> facts,
+              const geometry::Vec3& markerBody);
+  void build(const RollingModel& ball, const RollingModel& whole, std::shared_ptr<const render::TextureImage> ballTexture,
+             std::shared_ptr<const SceneFacts> facts);
+  // The stretch that shows segment k, and a frame in its own arc length
+  // and segment numbers (its trail and strobe cut to the stretch).
+  [[nodiscard]] std::size_t stretchOf(std::size_t segment) const;
+  [[nodiscard]] FrameOrientations inStretch(const FrameOrientations& frame, std::size_t stretch) const;
+  void addViews(render::DrawList& list, const FrameOrientations& frame, const FrameOrientations& whole) const;
+
   struct Rect {
     int x = 0, y = 0, width = 0, height = 0;
   };
@@ -80,9 +111,12 @@ class SceneDrawer {
   [[nodiscard]] std::vector<TextBlock> ballBlocks(const FrameOrientations& frame, float viewWidth) const;
   [[nodiscard]] std::vector<TextBlock> twinBlocks(const FrameOrientations& frame, float viewWidth, bool inset) const;
   void layOut(const RollingModel& model);
-  void addViews(render::DrawList& list, const FrameOrientations& frame) const;
+  render::DrawList drawList(const FrameOrientations& frame, const FrameOrientations& whole) const;
 
   const scene::SceneSpec& spec_;
+  std::vector<motion::SurfaceStretch> stretches_;  // empty: one surface, drawn here
+  std::vector<std::unique_ptr<SceneDrawer>> parts_;  // one per stretch
+  double stretchStart_ = 0.0;                         // a stretch's drawer: where it lies on the whole path
   geometry::Vec3 markerBody_;
   bool titleBand_ = false;  // render.title or any segment's title: the band is kept for the whole clip
   std::size_t titleLines_ = 1;  // the lines the longest title takes (text_blocks: titleLines)

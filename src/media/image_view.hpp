@@ -39,6 +39,10 @@ struct Image {
   }
 };
 
+// A cross-fade: into = weight · from + (1 − weight) · into, per byte,
+// rounded (premultiplied or opaque RGBA blend linearly). Same size.
+void crossFade(Image& into, const Image& from, double weight);
+
 // A tightly packed top-down copy of any view.
 [[nodiscard]] Image copyTopDown(const ImageView& view);
 

@@ -102,19 +102,29 @@ scene::SceneSpec segmentScene(const scene::SceneSpec& spec, std::size_t index) {
   scene::SceneSpec sub = spec;
   sub.segments.clear();
   sub.path = *spec.segments[index].path;
-  const std::string prefix = scene::SceneSpec::segmentKey(index) + ".path";
-  for (auto it = sub.locations.begin(); it != sub.locations.end();)
-    it = it->first.rfind("path", 0) == 0 ? sub.locations.erase(it) : std::next(it);
-  for (const auto& [key, loc] : spec.locations)
-    if (key.rfind(prefix, 0) == 0) sub.locations["path" + key.substr(prefix.size())] = loc;
+  sub.surface = spec.surfaceOf(index);
+  // The segment's path keys, and its surface's when a segment gave it, under
+  // the names the builders use.
+  auto rename = [&](const std::string& from, const std::string& to) {
+    if (from == to) return;
+    for (auto it = sub.locations.begin(); it != sub.locations.end();)
+      it = it->first.rfind(to, 0) == 0 ? sub.locations.erase(it) : std::next(it);
+    for (const auto& [key, loc] : spec.locations)
+      if (key.rfind(from, 0) == 0) sub.locations[to + key.substr(from.size())] = loc;
+  };
+  rename(scene::SceneSpec::segmentKey(index) + ".path", "path");
+  rename(spec.surfaceKeyOf(index), "surface");
   return sub;
 }
 
-// Errors from a segment's path name the segment's own key.
-Error forSegment(const Error& e, std::size_t index) {
+// Errors from a segment's path name the segment's own key; from its
+// surface, the table that gave it.
+Error forSegment(const Error& e, const scene::SceneSpec& spec, std::size_t index) {
   const std::string prefix = scene::SceneSpec::segmentKey(index);
   const std::string& m = e.message();
-  return Error(e.kind(), e.where(), m.rfind("path", 0) == 0 ? prefix + "." + m : prefix + ": " + m);
+  if (m.rfind("path", 0) == 0) return Error(e.kind(), e.where(), prefix + "." + m);
+  if (m.rfind("surface", 0) == 0) return Error(e.kind(), e.where(), spec.surfaceKeyOf(index) + m.substr(7));
+  return Error(e.kind(), e.where(), prefix + ": " + m);
 }
 
 RollingModel buildStoryboardModel(const scene::SceneSpec& spec) {
@@ -125,13 +135,16 @@ RollingModel buildStoryboardModel(const scene::SceneSpec& spec) {
   std::size_t endSegment = 0;
   double s = 0.0;
   for (std::size_t i = 0; i < spec.segments.size(); ++i) {
+    const std::size_t surface = spec.surfaceIndexOf(i);
     if (!spec.segments[i].path) {
-      model.segments.push_back({s, s});
+      model.segments.push_back({s, s, surface});
       continue;
     }
+    // A new surface: the path starts where its own keys say, no join.
+    if (surface + 1 > model.surfaces.size() && !model.surfaces.empty()) end.reset();
     scene::SceneSpec sub = segmentScene(spec, i);
     const scene::PathKind kind = sub.path.kind;
-    const bool onPlane = spec.surface.kind == scene::SurfaceKind::Plane;
+    const bool onPlane = sub.surface.kind == scene::SurfaceKind::Plane;
     const bool continues = onPlane && (kind == scene::PathKind::Line || kind == scene::PathKind::Circle ||
                                        kind == scene::PathKind::Clothoid);
     Placement place;
@@ -145,7 +158,7 @@ RollingModel buildStoryboardModel(const scene::SceneSpec& spec) {
     try {
       part = buildPathModel(sub, place);
     } catch (const Error& e) {
-      throw forSegment(e, i);
+      throw forSegment(e, spec, i);
     }
     if (end) {
       const geometry::Vec3 start = part.path->point(0.0);
@@ -158,20 +171,23 @@ RollingModel buildStoryboardModel(const scene::SceneSpec& spec) {
                        "segment ended (within {:g} R)",
                        key, start.x(), start.y(), start.z(), gap, scene::SceneSpec::segmentKey(endSegment),
                        end->point.x(), end->point.y(), end->point.z(), scene::toString(kind),
-                       scene::toString(spec.surface.kind), kJoinTolerance);
+                       scene::toString(sub.surface.kind), kJoinTolerance);
       }
     }
     const double length = part.path->length();
     end = part.path->at(length);
     endSegment = i;
-    if (!model.surface) model.surface = part.surface;
-    model.segments.push_back({s, s + length});
+    // ([surface] when no motion rolls on it: the first motion gave its own.)
+    if (surface > model.surfaces.size()) model.surfaces.push_back(buildSurface(spec));
+    if (surface + 1 > model.surfaces.size()) model.surfaces.push_back(part.surface);
+    model.segments.push_back({s, s + length, surface});
     s += length;
     pieces.push_back(std::move(part.path));
   }
   if (pieces.empty())
     throw badInput(spec.where("segment"), "segment: a storyboard needs at least one segment with a path (a motion); "
                                           "all {} are holds", spec.segments.size());
+  model.surface = model.surfaces.front();
   model.path = std::make_unique<geometry::JoinedPath>(std::move(pieces));
   return model;
 }
@@ -179,7 +195,10 @@ RollingModel buildStoryboardModel(const scene::SceneSpec& spec) {
 }  // namespace
 
 RollingModel buildModel(const scene::SceneSpec& spec) {
-  return spec.isStoryboard() ? buildStoryboardModel(spec) : buildPathModel(spec, {});
+  if (spec.isStoryboard()) return buildStoryboardModel(spec);
+  RollingModel model = buildPathModel(spec, {});
+  model.surfaces = {model.surface};
+  return model;
 }
 
 scene::SceneSpec loadScene(const std::string& file, const std::vector<std::string>& overrides) {

@@ -20,14 +20,21 @@ struct PlateModel {
 };
 
 // Where a storyboard segment lies on the whole path: [start, end] in arc
-// length (a hold: start = end, the point where the ball rests).
+// length (a hold: start = end, the point where the ball rests), and the
+// index in RollingModel::surfaces of the surface it rolls on.
 struct SegmentSpan {
   double start = 0.0, end = 0.0;
+  std::size_t surface = 0;
 };
 
 struct RollingModel {
   double ballRadius = 1.0;
-  std::shared_ptr<const geometry::Surface> surface;
+  std::shared_ptr<const geometry::Surface> surface;  // surfaces[0]
+  // One per surface of the scene, in order (SceneSpec::surfaceIndexOf): a
+  // storyboard whose segments give their own surfaces has several; where
+  // the surface changes the path jumps (the JoinedPath's pieces need not
+  // meet there) and the ball's orientation carries on.
+  std::vector<std::shared_ptr<const geometry::Surface>> surfaces;
   std::unique_ptr<geometry::ContactPath> path;  // a storyboard: a geometry::JoinedPath of its motions
   std::optional<PlateModel> plate;
   std::vector<SegmentSpan> segments;  // one per scene segment; empty unless a storyboard
@@ -38,7 +45,9 @@ struct RollingModel {
 // the previous end heading; any other path is placed by its own keys and
 // must start where the previous one ended (within kJoinTolerance · R), else
 // BadInput at that segment's path. A geodesic after the first starts by
-// default at the previous end point, along the previous end heading.
+// default at the previous end point, along the previous end heading. A
+// segment that gives its own surface starts afresh: its path is placed by
+// its own keys on that surface (its default start), with no join check.
 inline constexpr double kJoinTolerance = 1e-6;
 
 [[nodiscard]] RollingModel buildModel(const scene::SceneSpec& spec);

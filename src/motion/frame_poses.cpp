@@ -2,6 +2,8 @@
 
 #include <pthread.h>
 
+#include <algorithm>
+
 #include "motion/solve_job.hpp"
 #include "core/error.hpp"
 #include "core/stage_log.hpp"
@@ -85,14 +87,27 @@ FramePoseStream::FramePoseStream(const scene::SceneSpec& spec, const RollingMode
   StageLog::instance().record("solver");
   if (spec.render.trails) StageLog::instance().record("trails");
   std::vector<double> strobeS = strobeArcLengths(spec, model);  // records "strobe"
+  const std::size_t strobeCount = strobeS.size();
+  // The surface changes' poses come from the same short march (sorted after the strobe's).
+  for (double s : cutArcLengths(model)) strobeS.push_back(s);
+  std::sort(strobeS.begin() + static_cast<std::ptrdiff_t>(strobeCount), strobeS.end());
   (void)chooseSolver(spec, model);  // bad input surfaces here, on the caller's thread
-  thread_ = std::thread([this, strobeS = std::move(strobeS)] {
+  thread_ = std::thread([this, strobeS = std::move(strobeS), strobeCount] {
     pthread_setname_np(pthread_self(), "rollspin-poses");
     try {
-      std::vector<OrientedSample> strobe(strobeS.size());
-      if (!strobeS.empty())
-        marchScene(spec_, model_, strobeS, [&](std::size_t i, double s, const spin::Su2& q) { strobe[i] = {s, q}; });
-      march(strobe);
+      std::vector<OrientedSample> early(strobeS.size());
+      if (!strobeS.empty()) {
+        // One non-decreasing list for the march; each sample back to its place.
+        std::vector<std::size_t> order(strobeS.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return strobeS[a] < strobeS[b]; });
+        std::vector<double> sorted;
+        for (std::size_t i : order) sorted.push_back(strobeS[i]);
+        marchScene(spec_, model_, sorted,
+                   [&](std::size_t i, double s, const spin::Su2& q) { early[order[i]] = {s, q}; });
+      }
+      const auto split = early.begin() + static_cast<std::ptrdiff_t>(strobeCount);
+      march({early.begin(), split}, {split, early.end()});
     } catch (const MarchStopped&) {
     } catch (...) {
       error_ = std::current_exception();
@@ -107,7 +122,7 @@ FramePoseStream::~FramePoseStream() {
   thread_.join();
 }
 
-void FramePoseStream::march(const std::vector<OrientedSample>& strobe) {
+void FramePoseStream::march(const std::vector<OrientedSample>& strobe, const std::vector<OrientedSample>& cuts) {
   const TrailGrid grid = trailGrid(spec_, model_);
   MergedSamples samples(grid, clock_, range_);
   std::vector<OrientedSample> trail;  // the grid so far: every trail is a prefix of it
@@ -128,6 +143,7 @@ void FramePoseStream::march(const std::vector<OrientedSample>& strobe) {
       frame.trail.push_back(frame.current);
     }
     frame.strobe = strobe;
+    frame.cuts = cuts;
     if (!queue_.push(std::move(frame))) throw MarchStopped{};
     if (++emitted == samples.frames()) throw MarchStopped{};  // the rest of the path is not needed
   };

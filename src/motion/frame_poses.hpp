@@ -49,7 +49,7 @@ class FramePoseStream {
   [[nodiscard]] double waitSeconds() const { return queue_.consumerWaitSeconds(); }
 
  private:
-  void march(const std::vector<OrientedSample>& strobe);
+  void march(const std::vector<OrientedSample>& strobe, const std::vector<OrientedSample>& cuts);
 
   const scene::SceneSpec& spec_;
   const RollingModel& model_;

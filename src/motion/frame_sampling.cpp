@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "core/stage_log.hpp"
 #include "motion/frame_poses.hpp"
@@ -55,11 +56,24 @@ FrameSampling frameSampling(const scene::SceneSpec& spec, const RollingModel& mo
   return out;
 }
 
+std::vector<double> cutArcLengths(const RollingModel& model) {
+  std::vector<double> out;
+  std::optional<std::size_t> previous;
+  for (const model::SegmentSpan& span : model.segments) {
+    if (!(span.end > span.start)) continue;
+    if (previous && span.surface != *previous) out.push_back(span.start);
+    previous = span.surface;
+  }
+  return out;
+}
+
 FrameOrientations solveFrame(const scene::SceneSpec& spec, const RollingModel& model, double s) {
   StageLog::instance().record("solver");
   const FrameSampling sampling = frameSampling(spec, model, s);
+  const std::vector<double> cuts = cutArcLengths(model);
   std::vector<double> all = sampling.trail;
   all.insert(all.end(), sampling.strobe.begin(), sampling.strobe.end());
+  all.insert(all.end(), cuts.begin(), cuts.end());
   all.push_back(s);
   std::sort(all.begin(), all.end());
   all.erase(std::unique(all.begin(), all.end()), all.end());
@@ -73,6 +87,7 @@ FrameOrientations solveFrame(const scene::SceneSpec& spec, const RollingModel& m
   frame.current = lookup(s);
   for (double x : sampling.trail) frame.trail.push_back(lookup(x));
   for (double x : sampling.strobe) frame.strobe.push_back(lookup(x));
+  for (double x : cuts) frame.cuts.push_back(lookup(x));
   return frame;
 }
 

@@ -26,6 +26,7 @@ struct FrameOrientations {
   StoryPlace story;                    // a storyboard's segment (caption, title, camera) and its time
   std::vector<OrientedSample> trail;   // U on [0, s], increasing s, for the Bloch trail
   std::vector<OrientedSample> strobe;  // render.strobe > 1: the extra ball positions
+  std::vector<OrientedSample> cuts;    // a scene of several surfaces: U where each new surface begins (cutArcLengths)
   // A single image (render --still): no later frame will show the circuit's
   // end values, so its fact labels show them beside the values at s.
   bool still = false;
@@ -55,7 +56,13 @@ struct FrameSampling {
 // The strobe positions alone (empty unless render.strobe > 1).
 [[nodiscard]] std::vector<double> strobeArcLengths(const scene::SceneSpec& spec, const RollingModel& model);
 
-// Runs the propagator once for the frame's arc lengths (trail, strobe, s).
+// Where a storyboard's surface changes: the start of each motion whose
+// surface differs from the previous motion's, increasing (empty for a scene
+// of one surface). A cross-fade shows the ball there as it left the old
+// surface.
+[[nodiscard]] std::vector<double> cutArcLengths(const RollingModel& model);
+
+// Runs the propagator once for the frame's arc lengths (trail, strobe, cuts, s).
 [[nodiscard]] FrameOrientations solveFrame(const scene::SceneSpec& spec, const RollingModel& model, double s);
 
 // The animation's clock: the scene's path, or its storyboard's segments.

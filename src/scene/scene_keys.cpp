@@ -243,6 +243,9 @@ std::vector<KeyInfo> buildRegistry() {
   add("segment", "speed", {"number", "(duration)", above(0), {}, "with path only; not with duration", "length/s", "arc length per second instead of a duration"});
   add("segment", "caption", {"string", inQuotes(s.caption), {}, {}, "", "", "the caption shown while the segment plays"});
   add("segment", "title", {"string", "render.title", {}, {}, "", "", "replaces render.title while the segment plays"});
+  add("segment", "surface", {"table", "the previous segment's ([surface] for the first)", {}, {}, "the [surface] keys; with path only", "", "the surface this motion rolls on: surface = { kind = ..., ... }; a change cuts the clip"});
+  add("segment", "transition", {"string", s.transition == SegmentSpec::Transition::Fade ? "\"fade\"" : "\"cut\"", {}, {"cut", "fade"}, "where the surface changes", "", "how the clip passes to the new surface's view"});
+  add("segment", "fade_seconds", {"number", num(s.fadeSeconds), leftOpen(0, 10), {}, "with transition = \"fade\"", "seconds", "how long the cross-fade to the new surface's view takes"});
   add("segment", "camera", {"table", "(unchanged)", {}, {}, "the segment.camera keys", "", "a camera change laid over the previous segment's"});
   for (KeyInfo& k : cameraKeyInfos("segment.camera", r, true)) keys.push_back(std::move(k));
   return keys;

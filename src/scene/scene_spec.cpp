@@ -54,6 +54,27 @@ SourceLoc SceneSpec::where(const std::string& key) const {
   return SourceLoc{sourceFile.empty() ? std::string("<scene>") : sourceFile};
 }
 
+const SurfaceSpec& SceneSpec::surfaceOf(std::size_t index) const {
+  for (std::size_t k = std::min(index + 1, segments.size()); k-- > 0;)
+    if (segments[k].surface) return *segments[k].surface;
+  return surface;
+}
+
+std::size_t SceneSpec::surfaceIndexOf(std::size_t index) const {
+  std::size_t n = 0;
+  for (std::size_t k = 1; k <= index && k < segments.size(); ++k)
+    if (segments[k].surface) ++n;
+  return n;
+}
+
+std::size_t SceneSpec::surfaceCount() const { return segments.empty() ? 1 : surfaceIndexOf(segments.size() - 1) + 1; }
+
+std::string SceneSpec::surfaceKeyOf(std::size_t index) const {
+  for (std::size_t k = std::min(index + 1, segments.size()); k-- > 0;)
+    if (segments[k].surface) return segmentKey(k) + ".surface";
+  return "surface";
+}
+
 std::string toString(SurfaceKind k) { return std::string(surfaceKindRow(k).name); }
 
 std::string toString(PathKind k) { return std::string(pathKindRow(k).name); }

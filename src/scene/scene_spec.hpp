@@ -173,6 +173,12 @@ struct SegmentSpec {
   std::string caption;             // shown while the segment plays ("" = none)
   std::optional<std::string> title;  // replaces render.title while the segment plays
   CameraSpec camera;               // laid over the previous segment's camera (the first: over [render])
+  // A motion's own surface (docs/scenes.md#surfaces-per-segment); absent: the
+  // previous segment's (the first: [surface]). Where it changes, the clip
+  // cuts, or cross-fades over fadeSeconds.
+  std::optional<SurfaceSpec> surface;
+  enum class Transition { Cut, Fade } transition = Transition::Cut;
+  double fadeSeconds = 0.5;
 };
 inline constexpr std::size_t kMaxSegments = 1000;
 
@@ -194,6 +200,15 @@ struct SceneSpec {
   [[nodiscard]] bool isStoryboard() const { return !segments.empty(); }
   // "segment[k]" (k counts from 1), the prefix of segment k's keys.
   [[nodiscard]] static std::string segmentKey(std::size_t index) { return "segment[" + std::to_string(index + 1) + "]"; }
+  // The surface segment `index` rolls on (its own, else the last one a
+  // segment before it gave, else [surface]) and its index among the scene's
+  // surfaces (0: [surface], or the first segment's own); surfaceCount() ≥ 1.
+  [[nodiscard]] const SurfaceSpec& surfaceOf(std::size_t index) const;
+  [[nodiscard]] std::size_t surfaceIndexOf(std::size_t index) const;
+  [[nodiscard]] std::size_t surfaceCount() const;
+  // The key of the table that gave segment `index`'s surface ("surface",
+  // "segment[3].surface").
+  [[nodiscard]] std::string surfaceKeyOf(std::size_t index) const;
 
   // Where a dotted key ("ball.radius", "segment[2].path.radius") was set; the file (no line) when the
   // key took its default.

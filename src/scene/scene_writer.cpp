@@ -113,6 +113,21 @@ void writePath(Writer& w, const PathSpec& p, SurfaceKind sk, bool plate, PathDef
   }
 }
 
+// A surface's kind and the kind's own keys in its declaration order, each
+// printed by its type.
+void writeSurface(Writer& w, const SurfaceSpec& surface) {
+  w.key("kind", quoted(toString(surface.kind)));
+  for (const ParamDecl& decl : surfaceKeyDecls(surface.kind)) {
+    const ParamValue& value = surface.params.at(decl.key);
+    switch (decl.type) {
+      case ParamType::Number: w.key(decl.key, number(std::get<double>(value))); break;
+      case ParamType::Direction: w.key(decl.key, vec(std::get<std::array<double, 3>>(value))); break;
+      case ParamType::Choice:
+      case ParamType::Expression: w.key(decl.key, quoted(std::get<std::string>(value))); break;
+    }
+  }
+}
+
 void writeSegments(Writer& w, const SceneSpec& spec) {
   for (std::size_t i = 0; i < spec.segments.size(); ++i) {
     const SegmentSpec& seg = spec.segments[i];
@@ -129,9 +144,24 @@ void writeSegments(Writer& w, const SceneSpec& spec) {
     } else {
       w.computed("duration", "its length at the storyboard's speed (see [animation])");
     }
+    // A scene of several surfaces names each segment's (scenes of one print as before).
+    if (spec.surfaceCount() > 1) {
+      if (seg.surface && i > 0) {
+        w.key("transition", quoted(seg.transition == SegmentSpec::Transition::Fade ? "fade" : "cut"));
+        if (seg.transition == SegmentSpec::Transition::Fade) w.key("fade_seconds", number(seg.fadeSeconds));
+      }
+      if (!seg.surface)
+        w.computed("surface", fmt::format("surface {} (a {}), as {}", spec.surfaceIndexOf(i),
+                                          toString(spec.surfaceOf(i).kind), spec.surfaceKeyOf(i)));
+    }
+    if (seg.surface) {
+      w.header("[segment.surface]", prefix + ".surface");
+      writeSurface(w, *seg.surface);
+    }
     if (seg.path) {
+      const bool ownStart = i == 0 || seg.surface.has_value();
       w.header("[segment.path]", prefix + ".path");
-      writePath(w, *seg.path, spec.surface.kind, false, i == 0 ? PathDefaults::Own : PathDefaults::FromPrevious);
+      writePath(w, *seg.path, spec.surfaceOf(i).kind, false, ownStart ? PathDefaults::Own : PathDefaults::FromPrevious);
     }
     const CameraSpec& c = seg.camera;
     if (c.azimuthDeg || c.elevationDeg || c.distance || c.target || c.follow || c.fovDeg) {
@@ -160,17 +190,7 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   else w.computed("marker", "the top of the ball at s = 0");
 
   w.section("surface");
-  w.key("kind", quoted(toString(sk)));
-  // The kind's own keys in its declaration order, each printed by its type.
-  for (const ParamDecl& decl : surfaceKeyDecls(sk)) {
-    const ParamValue& value = spec.surface.params.at(decl.key);
-    switch (decl.type) {
-      case ParamType::Number: w.key(decl.key, number(std::get<double>(value))); break;
-      case ParamType::Direction: w.key(decl.key, vec(std::get<std::array<double, 3>>(value))); break;
-      case ParamType::Choice:
-      case ParamType::Expression: w.key(decl.key, quoted(std::get<std::string>(value))); break;
-    }
-  }
+  writeSurface(w, spec.surface);
 
   if (spec.plate) {
     w.section("plate");

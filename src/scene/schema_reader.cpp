@@ -263,11 +263,74 @@ Vec3 unitVector(const Vec3& v, double len) {
 
 double norm3(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
+// A kind names its keys under "surface."; a segment's surface table has
+// its own prefix ("segment[3].surface").
+static geometry::SurfaceProblem underTable(geometry::SurfaceProblem problem, const std::string& table) {
+  for (std::string& key : problem.keys)
+    if (key.rfind("surface.", 0) == 0) key = table + key.substr(7);
+  return problem;
+}
+
+// A surface table ([surface], or a segment's surface = { ... }): its kind
+// and the kind's own keys, each read and checked as its declaration says.
+// `prefix` names the table in messages and locations.
+void Reader::readSurface(const toml::table* surface, const std::string& prefix, SurfaceSpec& target) {
+  std::set<std::string> surfaceNames;
+  for (const auto& row : surfaceKinds()) surfaceNames.emplace(row.name);
+  if (auto kind = text(surface, prefix, "kind", surfaceNames))
+    for (const auto& row : surfaceKinds())
+      if (row.name == *kind) target.kind = row.kind;
+  const SurfaceKind sk = target.kind;
+  const std::string skName = toString(sk);
+  auto surfaceOnly = [&](const std::string& key, bool applies, const std::string& kinds) {
+    if (!applies) forbid(surface, prefix, key, "applies to kind = " + kinds + " only; this surface is a " + skName);
+  };
+  for (const auto& key : allSurfaceKeys()) {
+    const KeyRule rule = surfaceKeyRule(key, sk);
+    surfaceOnly(key, rule.applies, rule.kinds);
+  }
+  const SurfaceKindRow& kindRow = surfaceKindRow(sk);
+  target.params = ParamSet(kindRow.geometry->params);
+  for (const ParamDecl& decl : kindRow.geometry->params) {
+    const std::string full = prefix + "." + decl.key;
+    switch (decl.type) {
+      case ParamType::Number:
+        if (auto v = number(surface, prefix, decl.key)) {
+          if (!(*v > decl.lowerBound))
+            failAt(full, fmt::format("expected {} > {}, got {}", decl.noun, decl.lowerBound, *v));
+          target.params.set(decl.key, *v);
+        }
+        break;
+      case ParamType::Direction:
+        if (auto v = vector(surface, prefix, decl.key)) {
+          const double len = norm3(*v);
+          if (len < 1e-12) failAt(full, "expected a non-zero vector, got [0, 0, 0]");
+          target.params.set(decl.key, unitVector(*v, len));
+        }
+        break;
+      case ParamType::Choice:
+        if (auto v = text(surface, prefix, decl.key, {decl.choices.begin(), decl.choices.end()}))
+          target.params.set(decl.key, *v);
+        break;
+      case ParamType::Expression:
+        if (auto v = expression(surface, prefix, decl.key)) target.params.set(decl.key, *v);
+        break;
+    }
+  }
+  // Values the kind refuses (a ball that does not fit inside, a torus that
+  // is not a ring); along the path, app/ checks the curvature everywhere.
+  if (kindRow.geometry->check)
+    if (auto problem = kindRow.geometry->check(target.params, spec_.ball.radius)) {
+      failAt(blamedKey(underTable(*problem, prefix)), problem->message);
+    }
+}
+
 // The keys of a path table ([path], or a segment's path): kind and the
 // kind-specific keys, validated against the surface. `prefix` names the
 // table in messages and locations ("path", "segment[2].path").
-PathKind Reader::readPath(const toml::table* path, const std::string& prefix, PathSpec& target) {
-  const SurfaceKind sk = spec_.surface.kind;
+PathKind Reader::readPath(const toml::table* path, const std::string& prefix, PathSpec& target,
+                          const SurfaceSpec& surface, const std::string& surfaceKey) {
+  const SurfaceKind sk = surface.kind;
   const std::string skName = toString(sk);
   const bool pathKindGiven = path != nullptr && path->get("kind") != nullptr;
   std::set<std::string> pathNames;
@@ -283,9 +346,9 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
   const bool lies = liesOn(pk, sk);
   const std::string needs = describe(pathKindRow(pk).liesOn);
   if (!lies) {
-    const std::string key = pathKindGiven ? (prefix + ".kind") : "surface.kind";
-    failAt(key, fmt::format("a {} path lies on a {}, but surface.kind is \"{}\" (the path would leave the surface)",
-                            pkName, needs, skName));
+    const std::string key = pathKindGiven ? (prefix + ".kind") : surfaceKey + ".kind";
+    failAt(key, fmt::format("a {} path lies on a {}, but {}.kind is \"{}\" (the path would leave the surface)",
+                            pkName, needs, surfaceKey, skName));
   }
   auto only = [&](const std::string& key, bool applies, const std::string& kinds) {
     if (!applies) forbid(path, prefix, key, "applies to path kind " + kinds + " only; this path is a " + pkName +
@@ -313,7 +376,7 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
     if (len < 1e-12) failAt(prefix + ".direction_vector", "expected a non-zero vector, got [0, 0, 0]");
     const Vec3 d = unitVector(*dv, len);
     if (sk == SurfaceKind::Plane) {
-      const Vec3& n = spec_.surface.params.vector("normal");
+      const Vec3& n = surface.params.vector("normal");
       const double along = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
       if (std::abs(along) > 1e-9)
         failAt(prefix + ".direction_vector",
@@ -330,8 +393,8 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
   if (pk == PathKind::Parallel) {
     const geometry::SurfaceKindRow& surfaceRow = *surfaceKindRow(sk).geometry;
     if (surfaceRow.revolutionProblem)
-      if (auto problem = surfaceRow.revolutionProblem(spec_.surface.params))
-        failAt(pathKindGiven ? (prefix + ".kind") : blamedKey(*problem), problem->message);
+      if (auto problem = surfaceRow.revolutionProblem(surface.params))
+        failAt(pathKindGiven ? (prefix + ".kind") : blamedKey(underTable(*problem, surfaceKey)), problem->message);
     if (surfaceRow.parallelRadius && !spec_.locations.contains(prefix + ".radius"))
       target.radius = *surfaceRow.parallelRadius;
   }
@@ -421,58 +484,8 @@ SceneSpec Reader::read() {
     if (len < 1e-12) failAt("ball.marker", "expected a non-zero vector (a direction in the ball), got [0, 0, 0]");
     spec_.ball.marker = unitVector(*m, len);
   }
-  const double R = spec_.ball.radius;
-
   // [surface]
-  const toml::table* surface = section("surface", keysOf("surface"));
-  std::set<std::string> surfaceNames;
-  for (const auto& row : surfaceKinds()) surfaceNames.emplace(row.name);
-  if (auto kind = text(surface, "surface", "kind", surfaceNames))
-    for (const auto& row : surfaceKinds())
-      if (row.name == *kind) spec_.surface.kind = row.kind;
-  const SurfaceKind sk = spec_.surface.kind;
-  const std::string skName = toString(sk);
-  auto surfaceOnly = [&](const std::string& key, bool applies, const std::string& kinds) {
-    if (!applies) forbid(surface, "surface", key, "applies to kind = " + kinds + " only; this surface is a " + skName);
-  };
-  for (const auto& key : allSurfaceKeys()) {
-    const KeyRule rule = surfaceKeyRule(key, sk);
-    surfaceOnly(key, rule.applies, rule.kinds);
-  }
-  // The kind's own keys, each read and checked as its declaration says.
-  const SurfaceKindRow& kindRow = surfaceKindRow(sk);
-  spec_.surface.params = ParamSet(kindRow.geometry->params);
-  for (const ParamDecl& decl : kindRow.geometry->params) {
-    const std::string full = "surface." + decl.key;
-    switch (decl.type) {
-      case ParamType::Number:
-        if (auto v = number(surface, "surface", decl.key)) {
-          if (!(*v > decl.lowerBound))
-            failAt(full, fmt::format("expected {} > {}, got {}", decl.noun, decl.lowerBound, *v));
-          spec_.surface.params.set(decl.key, *v);
-        }
-        break;
-      case ParamType::Direction:
-        if (auto v = vector(surface, "surface", decl.key)) {
-          const double len = norm3(*v);
-          if (len < 1e-12) failAt(full, "expected a non-zero vector, got [0, 0, 0]");
-          spec_.surface.params.set(decl.key, unitVector(*v, len));
-        }
-        break;
-      case ParamType::Choice:
-        if (auto v = text(surface, "surface", decl.key, {decl.choices.begin(), decl.choices.end()}))
-          spec_.surface.params.set(decl.key, *v);
-        break;
-      case ParamType::Expression:
-        if (auto v = expression(surface, "surface", decl.key)) spec_.surface.params.set(decl.key, *v);
-        break;
-    }
-  }
-
-  // Values the kind refuses (a ball that does not fit inside, a torus that
-  // is not a ring); along the path, app/ checks the curvature everywhere.
-  if (kindRow.geometry->check)
-    if (auto problem = kindRow.geometry->check(spec_.surface.params, R)) failAt(blamedKey(*problem), problem->message);
+  readSurface(section("surface", keysOf("surface")), "surface", spec_.surface);
 
   // [plate] — Brockett's upper plate; the contact path is then derived.
   const toml::table* plate = section("plate", keysOf("plate"));
@@ -490,7 +503,7 @@ SceneSpec Reader::read() {
   if (path != nullptr && root_.get("segment") != nullptr)
     throw badInput(where("path"), "path: a scene has either one [path] or a storyboard of [[segment]] entries, "
                                   "not both; move the [path] keys into a segment's path = {{ ... }}");
-  const PathKind pk = readPath(path, "path", spec_.path);
+  const PathKind pk = readPath(path, "path", spec_.path, spec_.surface, "surface");
   const bool pathKindGiven = path != nullptr && path->get("kind") != nullptr;
   if (spec_.plate) {
     if (pk != PathKind::Circle)

@@ -52,6 +52,7 @@ class Reader {
                               const std::set<std::string>& allowed);
   CameraSpec readCamera(const toml::table* t, const std::string& section);
   void readSegments();
+  void readSegmentSurface(const toml::table& table, const std::string& prefix, bool moves, SegmentSpec& seg);
   const toml::node* get(const toml::table* t, const std::string& section, const std::string& key);
   std::optional<double> number(const toml::table* t, const std::string& section, const std::string& key);
   std::optional<long long> integer(const toml::table* t, const std::string& section, const std::string& key);
@@ -63,7 +64,9 @@ class Reader {
                                                             const std::string& key);
   std::optional<bool> boolean(const toml::table* t, const std::string& section, const std::string& key);
   std::optional<std::string> anyText(const toml::table* t, const std::string& section, const std::string& key);
-  PathKind readPath(const toml::table* path, const std::string& prefix, PathSpec& target);
+  PathKind readPath(const toml::table* path, const std::string& prefix, PathSpec& target, const SurfaceSpec& surface,
+                    const std::string& surfaceKey);
+  void readSurface(const toml::table* surface, const std::string& prefix, SurfaceSpec& target);
   void readRender();
   void readGlContext(const toml::table* table);
   void readAnimation();

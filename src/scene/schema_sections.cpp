@@ -43,7 +43,6 @@ void Reader::readSegments() {
                     "combined with [[segment]]");
   if (entries->size() > kMaxSegments)
     throw badInput(where("segment"), "segment: expected at most {} segments, got {}", kMaxSegments, entries->size());
-  const bool onPlane = spec_.surface.kind == SurfaceKind::Plane;
   for (std::size_t i = 0; i < entries->size(); ++i) {
     const std::string prefix = SceneSpec::segmentKey(i);
     const toml::node& entry = *entries->get(i);
@@ -57,6 +56,12 @@ void Reader::readSegments() {
     }
     SegmentSpec seg;
     const toml::table* path = subTable(table, "path", prefix + ".path", pathTableKeys());
+    readSegmentSurface(table, prefix, path != nullptr, seg);
+    spec_.segments.push_back(seg);  // surfaceOf(i) below reads it
+    const SurfaceSpec& surface = spec_.surfaceOf(i);
+    const bool onPlane = surface.kind == SurfaceKind::Plane;
+    // The first motion on a new surface starts where its own keys say.
+    const bool newSurface = i == 0 || seg.surface.has_value();
     const std::optional<double> hold = number(&table, prefix, "hold");
     if (path == nullptr && !hold)
       throw badInput(where(prefix), "{}: expected path = {{ kind = ..., ... }} (a motion) or hold = SECONDS (a rest)",
@@ -65,11 +70,11 @@ void Reader::readSegments() {
       failAt(prefix + ".hold", "a segment either moves (path) or holds (hold), not both; split it into two segments");
     if (path != nullptr) {
       seg.path = PathSpec{};
-      const PathKind pk = readPath(path, prefix + ".path", *seg.path);
+      const PathKind pk = readPath(path, prefix + ".path", *seg.path, surface, spec_.surfaceKeyOf(i));
       // On a plane, segments after the first continue from the previous end
       // point along its end heading (tangent-continuous).
       const bool placedByPrevious = pk == PathKind::Line || pk == PathKind::Circle || pk == PathKind::Clothoid;
-      if (i > 0 && onPlane && placedByPrevious && seg.path->directionVector)
+      if (!newSurface && onPlane && placedByPrevious && seg.path->directionVector)
         failAt(prefix + ".path.direction_vector",
                "a segment after the first starts where the previous one ended, along its end heading "
                "(tangent-continuous); remove direction_vector");
@@ -92,7 +97,7 @@ void Reader::readSegments() {
     if (auto c = anyText(&table, prefix, "caption")) seg.caption = *c;
     seg.title = anyText(&table, prefix, "title");
     seg.camera = readCamera(subTable(table, "camera", prefix + ".camera", keysOf("segment.camera")), prefix + ".camera");
-    spec_.segments.push_back(std::move(seg));
+    spec_.segments.back() = std::move(seg);
   }
   // A segment's camera target stops a follow, and follow = true drops a
   // target (docs/scenes.md#storyboards); one table giving both is contradictory.
@@ -102,6 +107,39 @@ void Reader::readSegments() {
       failAt(SceneSpec::segmentKey(i) + ".camera.target",
              "conflicts with follow = true in the same camera (the camera then targets the ball)");
   }
+}
+
+// A segment's surface = { ... } and its transition keys. A surface belongs
+// to a motion (a hold rests where the ball is); transition and
+// fade_seconds apply only where the surface changes.
+void Reader::readSegmentSurface(const toml::table& table, const std::string& prefix, bool moves, SegmentSpec& seg) {
+  if (const toml::table* surface = subTable(table, "surface", prefix + ".surface", keysOf("surface"))) {
+    if (!moves)
+      failAt(prefix + ".surface", "a hold rests where the previous motion ended, on its surface; give the surface "
+                                  "to the next segment with a path");
+    seg.surface = SurfaceSpec{};
+    readSurface(surface, prefix + ".surface", *seg.surface);
+  }
+  const bool changes = seg.surface && prefix != SceneSpec::segmentKey(0);
+  auto onlyAtChange = [&](const std::string& key) {
+    if (!changes && spec_.locations.contains(prefix + "." + key))
+      failAt(prefix + "." + key,
+             prefix == SceneSpec::segmentKey(0)
+                 ? "applies where the surface changes; the first segment has nothing to change from"
+                 : "applies where the surface changes; this segment keeps the previous segment's surface (give it "
+                   "surface = { kind = ..., ... })");
+  };
+  if (auto t = text(&table, prefix, "transition", keyChoices("segment", "transition")))
+    seg.transition = *t == "fade" ? SegmentSpec::Transition::Fade : SegmentSpec::Transition::Cut;
+  onlyAtChange("transition");
+  if (auto f = number(&table, prefix, "fade_seconds")) {
+    if (!(*f > 0.0 && *f <= 10.0))
+      failAt(prefix + ".fade_seconds", fmt::format("expected a fade in (0, 10] seconds, got {}", *f));
+    if (seg.transition != SegmentSpec::Transition::Fade)
+      failAt(prefix + ".fade_seconds", "applies to transition = \"fade\"; this segment cuts");
+    seg.fadeSeconds = *f;
+  }
+  onlyAtChange("fade_seconds");
 }
 
 // [render] — image size, layout, strobe, text, camera (render issue).

@@ -4,7 +4,10 @@
 // pose, and a settled hold repeats its pixels.
 #include <gtest/gtest.h>
 
+#include "media/image_io.hpp"
 #include "media/video_probe.hpp"
+
+#include <cmath>
 #include "support/cli_runner.hpp"
 
 namespace rollspin {
@@ -73,6 +76,42 @@ TEST(StoryboardVideo, HeldFramesAfterACameraMoveMatchAPartStartingThere) {
   for (int k = 46; k <= 48; ++k)
     EXPECT_TRUE(test::readFile(dir / "full" / frameName(k)) == test::readFile(dir / "part" / frameName(k)))
         << frameName(k) << " differs between the full render and a part starting after the camera move";
+}
+
+// torus-to-floor at 96×64, 4 fps, no opening hold, a 1 s fade: frame 0,
+// the torus 24 frames (1 … 24), the rest 6 (25 … 30), then the floor's
+// circle from frame 31, whose first four frames (0, 0.25, 0.5, 0.75 s into
+// it) are cross-fades from the torus's last picture (weights 1, 0.75, 0.5,
+// 0.25).
+std::vector<std::string> lecture(std::vector<std::string> args) {
+  args.insert(args.begin() + 1, (test::sourceDir() / "scenes/torus-to-floor.toml").string());
+  for (const char* s : {"render.width=96", "render.height=64", "animation.fps=4", "animation.hold=0",
+                        "segment[3].fade_seconds=1"}) {
+    args.push_back("--set");
+    args.push_back(s);
+  }
+  return args;
+}
+
+TEST(StoryboardVideo, ACrossFadeBetweenSurfacesIsByteIdenticalInAPartAndLiesBetweenBothViews) {
+  const fs::path dir = test::freshTempDir("surface_fade_frames");
+  ASSERT_EQ(test::runRollspin(lecture({"render", "-o", (dir / "full").string()})).exitCode, 0);
+  const auto r = test::runRollspin(lecture({"render", "--frames", "32:34", "-o", (dir / "part").string()}));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (int k = 32; k <= 34; ++k)
+    EXPECT_TRUE(test::readFile(dir / "full" / frameName(k)) == test::readFile(dir / "part" / frameName(k)))
+        << frameName(k) << " differs between the full render and a part starting in the fade";
+  auto frame = [&](int k) { return media::loadImage(dir / "full" / frameName(k), {"frame"}); };
+  const media::Image torus = frame(30), floor = frame(35), half = frame(33);
+  // The middle of the fade is the mean of the torus's last picture and the
+  // floor's at that instant; the floor's view has barely moved by frame 35
+  // (the circle eases in), so each byte lies within a few levels of the mean.
+  double meanError = 0.0;
+  for (std::size_t i = 0; i < half.rgba.size(); ++i)
+    meanError += std::abs(double(half.rgba[i]) - 0.5 * (double(torus.rgba[i]) + double(floor.rgba[i])));
+  meanError /= double(half.rgba.size());
+  EXPECT_LT(meanError, 6.0);
+  EXPECT_NE(test::readFile(dir / "full" / frameName(33)), test::readFile(dir / "full" / frameName(35)));
 }
 
 }  // namespace

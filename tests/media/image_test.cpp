@@ -36,6 +36,21 @@ TEST(ImageView, BottomUpRowsAreReadTopFirst) {
   EXPECT_EQ(copyTopDown(view).rgba, img.rgba);
 }
 
+// A cross-fade between two surfaces' views: the ends are the images
+// themselves, the middle the rounded mean of each byte.
+TEST(ImageView, CrossFadeWeighsEachByteLinearly) {
+  const Image from = gradient(16, 9);
+  Image black(16, 9);
+  Image none = black, all = black, half = black;
+  crossFade(none, from, 0.0);
+  crossFade(all, from, 1.0);
+  crossFade(half, from, 0.5);
+  EXPECT_EQ(none.rgba, black.rgba);
+  EXPECT_EQ(all.rgba, from.rgba);
+  for (std::size_t i = 0; i < from.rgba.size(); ++i)
+    ASSERT_EQ(half.rgba[i], (from.rgba[i] + 1) / 2) << i;
+}
+
 TEST(ImageIo, PngRoundTripKeepsRgbaExactly) {
   const auto dir = test::freshTempDir("media_png");
   const Image img = gradient(17, 9);

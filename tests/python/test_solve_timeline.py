@@ -57,7 +57,7 @@ def test_solve_options_go_through_the_loader(lollipop):
 
 
 def test_timeline_is_the_cli_csv(tmp_path):
-    for name in ("lollipop", "storyboard"):
+    for name in ("lollipop", "storyboard", "torus-to-floor"):
         path = SCENES / f"{name}.toml"
         csv = tmp_path / f"{name}.csv"
         run_cli("timeline", path, "-o", csv, "--set", "timeline.samples=157")
@@ -70,6 +70,10 @@ def test_timeline_is_the_cli_csv(tmp_path):
         for k, column in enumerate(header):
             assert (np.asarray(t[column], dtype=float) == table[:, k]).all(), column
     assert "segment" in t and t["segment"].dtype.kind == "i"
+    # torus-to-floor: a surface per row, 0 on the torus then 1 on the floor.
+    assert t.columns[-2:] == ["segment", "surface"] and t["surface"].dtype.kind == "i"
+    assert t["surface"][0] == 0 and t["surface"][-1] == 1 and (np.diff(t["surface"]) >= 0).all()
+    assert "surface" not in rollspin.load(SCENES / "storyboard.toml").timeline(samples=9)
 
 
 def test_timeline_helpers(lollipop):

@@ -50,7 +50,8 @@ TEST(KeyRegistry, ReferenceIsCurrent) {
 }
 
 // The registry's key names for one table of a document, recursively:
-// a segment's path is a [path], its camera the segment.camera table.
+// a segment's path is a [path], its surface a [surface], its camera the
+// segment.camera table.
 void collectKeys(const toml::table& t, const std::string& section, std::set<std::string>& out) {
   for (auto&& [k, node] : t) {
     const std::string key(k.str());
@@ -59,7 +60,7 @@ void collectKeys(const toml::table& t, const std::string& section, std::set<std:
     if (section.empty() && node.is_array_of_tables())
       for (const auto& entry : *node.as_array()) collectKeys(*entry.as_table(), key, out);
     if (section == "segment" && node.is_table())
-      collectKeys(*node.as_table(), key == "path" ? "path" : "segment.camera", out);
+      collectKeys(*node.as_table(), key == "path" ? "path" : key == "surface" ? "surface" : "segment.camera", out);
   }
 }
 

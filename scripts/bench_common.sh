@@ -31,4 +31,5 @@ x264_args() {
 
 # x264_options FILE: the settings libx264 wrote into the stream (an SEI),
 # one a line, threads included.
-x264_options() { strings "$1" | grep -m1 -o 'options: .*' | tr ' ' '\n'; }
+# sed -n 1p, not grep -m1: a reader that stops early kills strings (SIGPIPE, 141 under pipefail).
+x264_options() { strings "$1" | grep -o 'options: .*' | sed -n 1p | tr ' ' '\n'; }

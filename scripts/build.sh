@@ -7,7 +7,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/compiler_cache.sh
 source scripts/jobs.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${cache_flags[@]}"
+# ROLLSPIN_CMAKE_FLAGS: more -D flags (scripts/test.sh turns the tests on).
+# shellcheck disable=SC2086
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${cache_flags[@]}" ${ROLLSPIN_CMAKE_FLAGS:-}
 if [ $# -gt 0 ]; then
   cmake --build build -j"$jobs" --target "$@"
 else

@@ -55,18 +55,23 @@ for b in "${binaries[@]}"; do cp "$b" "$root/opt/rollspin/bin/"; done
 sonames=$(build/rollspin info 2>/dev/null | sed -n 's/^video ([^)]*): //p' | grep -oE 'lib[a-z]+ [0-9]+' |
             awk '{print $1 ".so." $2}') || true
 [ -n "$sonames" ] || { echo "device_bundle.sh: rollspin info finds no FFmpeg here:" >&2; build/rollspin info | tail -1 >&2; exit 1; }
+# Under pipefail no reader may stop before its writer is done: an awk that
+# exits at its match kills ldconfig with SIGPIPE and the script with 141
+# (tests/scripts_pipefail_test.sh), so the awk reads to the end.
+libraryPathOf() { ldconfig -p | awk -v s="$1" '!found && $1 == s && /x86-64/ {print $NF; found = 1}'; }
 ffmpegLibs=()
 for soname in $sonames; do
-  lib=$(ldconfig -p | awk -v s="$soname" '$1 == s && /x86-64/ {print $NF; exit}')
+  lib=$(libraryPathOf "$soname")
   [ -n "$lib" ] || { echo "device_bundle.sh: $soname, which rollspin loads, is not in ldconfig's cache" >&2; exit 1; }
   ffmpegLibs+=("$lib")
 done
 { ldd "${binaries[@]}" "${ffmpegLibs[@]}" 2>/dev/null | awk '/=> \// {print $3}'; printf '%s\n' "${ffmpegLibs[@]}"; } | sort -u |
   grep -v -E '/(libc|libm|libdl|libpthread|librt|libresolv|libutil|ld-linux-x86-64|libstdc\+\+|libgcc_s)\.so' \
     >"$stage/libs.txt"
-if ldd "${binaries[@]}" "${ffmpegLibs[@]}" 2>/dev/null | grep -q "not found"; then
+missingLibs=$(ldd "${binaries[@]}" "${ffmpegLibs[@]}" 2>/dev/null | grep "not found" || true)
+if [ -n "$missingLibs" ]; then
   echo "device_bundle.sh: a binary's library is missing here:" >&2
-  ldd "${binaries[@]}" "${ffmpegLibs[@]}" | grep "not found" >&2
+  echo "$missingLibs" >&2
   exit 1
 fi
 while read -r lib; do cp -L "$lib" "$root/opt/rollspin/lib/$(basename "$lib")"; done <"$stage/libs.txt"

@@ -28,9 +28,14 @@ names = sorted(set(open(seen).read().split()))
 print(f"unpacked so far: {' '.join(names)}")
 PY
 command -v ldconfig >/dev/null && ldconfig || true
-if [ -x /opt/rollspin/bin/rollspin ] && LD_LIBRARY_PATH=/opt/rollspin/lib ldd /opt/rollspin/bin/rollspin | grep -q "not found"; then
+# grep reads all of ldd's output (grep -q or head would stop early: SIGPIPE, 141 under pipefail).
+missingLibs=""
+if [ -x /opt/rollspin/bin/rollspin ]; then
+  missingLibs=$(LD_LIBRARY_PATH=/opt/rollspin/lib ldd /opt/rollspin/bin/rollspin | grep "not found" || true)
+fi
+if [ -n "$missingLibs" ]; then
   echo "device_unpack.sh: libraries still missing (more parts to come?):"
-  LD_LIBRARY_PATH=/opt/rollspin/lib ldd /opt/rollspin/bin/rollspin | grep "not found" | head -5
+  echo "$missingLibs" | sed -n 1,5p
 else
   echo "device_unpack.sh: rollspin's libraries are all here; source /opt/rollspin/env.sh"
 fi

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Fresh machine → rollspin's main job on the default scene: installs the
-# Debian packages, builds Release, solves the lollipop, writes its
+# Debian packages that the build, the program and the Python package need
+# (not the tests': scripts/test.sh adds those), builds Release, solves the lollipop, writes its
 # orientation timeline to output/ and renders its video, output/lollipop.mp4;
 # then installs rollspin to /usr/local (bin/rollspin, the bundled scenes, the
 # man page and the bash/zsh completions), so that `rollspin render lollipop

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# Fresh machine → the whole test suite: installs the Debian packages, builds
-# Release, runs every test through ctest (the Python tests and the example
+# Fresh machine → the whole test suite: installs the Debian packages (the
+# quick start's and the tests': install-deps.sh --tests), builds Release with
+# the tests and benchmarks, runs every test through ctest (the Python tests and the example
 # notebooks too: ctest's python_tests, pytest with the build's package).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh
-bash scripts/build.sh
+bash scripts/install-deps.sh --tests
+ROLLSPIN_CMAKE_FLAGS="-DROLLSPIN_BUILD_TESTS=ON -DROLLSPIN_BUILD_BENCHMARKS=ON" bash scripts/build.sh
 source scripts/jobs.sh
 cd build
 # ctest starts the longest tests first when it knows their times (else it

@@ -137,9 +137,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
     // A part of a clip must not take the whole clip's name; PNG frames keep
     // their clip index, so parts share the clip's folder.
     const std::string part = o.frames && !folder ? fmt::format(".frames_{}-{}", range.first, range.last) : "";
-    out = fs::path("output") / (spec.name + part + format.defaultExtension());
-    std::error_code ec;
-    fs::create_directories("output", ec);
+    out = defaultOutputFile(spec.name + part + format.defaultExtension());
   }
   // A shard of a video is a file of its own beside the clip's name, which
   // `rollspin join` makes whole; PNG frames keep their index in one folder.
@@ -166,13 +164,15 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   const media::SubtitleCues cues = clipCaptionCues(spec, clock);
   sinkOpts.subtitles = media::cuesOfPart(cues, range.first, range.last);
   sinkOpts.subtitlesByDefault = !spec.render.burnCaptions;
-  StageLog::instance().record(folder ? "png-frames" : "encoder");
-  const std::unique_ptr<media::FrameSink> sink = media::openSink(format, sinkOpts);
-
+  // The drawer first: it loads the texture, the last input to check; then
+  // output/ (when no -o names a place) and the sink, the first writes.
   const std::unique_ptr<SceneDrawer> drawerOwner = makeDrawer(job);
   const SceneDrawer& drawer = *drawerOwner;
   // A view the scene's own camera keys force, that hides the ball: say where.
   for (const std::string& line : drawer.cameraWarnings()) fmt::print(stderr, "{}\n", line);
+  StageLog::instance().record(folder ? "png-frames" : "encoder");
+  if (o.output.empty()) createOutputParent(out);
+  const std::unique_ptr<media::FrameSink> sink = media::openSink(format, sinkOpts);
   GlRenderer gl(spec, o.shaderDir);
   render::Renderer& renderer = gl.renderer;
 

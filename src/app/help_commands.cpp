@@ -1,7 +1,8 @@
 // The commands that explain rollspin itself: `keys` (the scene reference,
 // from the key registry the loader validates with), `scenes` (the bundled
-// scenes), and the hidden `generate` that the build runs for the man page
-// and the shell completions (cli_reference.cpp).
+// scenes), and `generate`, which prints the man page and the shell
+// completions (cli_reference.cpp): the build runs it, and so can a user
+// who installs them by hand, so it is listed like every other command.
 #include <fmt/format.h>
 
 #include <memory>
@@ -65,9 +66,9 @@ void registerHelpCommands(CLI::App& cli, CommandHandler& handler) {
   scenes->add_flag("--names", options->names, "Print the names only");
   scenes->callback([options, &handler] { handler = [options] { return runScenes(*options); }; });
 
-  // Run by the build (src/app/CMakeLists.txt); not listed in --help.
-  CLI::App* generate = cli.add_subcommand("generate", "Print the man page or a shell completion script");
-  generate->group("");
+  // Run by the build (src/app/CMakeLists.txt) and listed in --help.
+  CLI::App* generate = cli.add_subcommand(
+      "generate", "Print the man page or a bash/zsh completion script (what `cmake --install` puts in place)");
   generate->add_option("what", options->what, "man | bash | zsh")->required()->check(CLI::IsMember({"man", "bash", "zsh"}));
   generate->callback([options, &cli, &handler] {
     handler = [options, &cli] {

@@ -17,6 +17,7 @@
 #include "app/flag_overrides.hpp"
 #include "app/job_setup.hpp"
 #include "motion/frame_poses.hpp"
+#include "media/h264_levels.hpp"
 #include "media/image_io.hpp"
 #include "media/sink_factory.hpp"
 #include "render/gl_context.hpp"
@@ -100,6 +101,30 @@ void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerP
   }
 }
 
+namespace {
+
+// H.264 has no level for a frame over 139,264 macroblocks (6.2's MaxFS) or
+// for more macroblocks a second than 6.2's MaxMBPS: libx264 would encode it
+// anyway, tagged with a level it breaks, and players may refuse the file.
+void checkH264Limits(const scene::SceneSpec& spec, const media::OutputFormat& format) {
+  const int width = static_cast<int>(spec.render.width), height = static_cast<int>(spec.render.height);
+  constexpr const char* elsewhere = "\"mov\" (ProRes), \"webm\" (VP9) or PNG frames (\"png\") hold it";
+  if (!media::h264HoldsFrame(width, height)) {
+    const std::string key = spec.locations.contains("render.height") ? "render.height" : "render.width";
+    throw badInput(spec.where(key), "{}: {}x{} is {} macroblocks of 16x16, over H.264's largest frame (level 6.2: "
+                                    "{} macroblocks, such as 8192x4320), so \"{}\" cannot hold it; {}",
+                   key, width, height, media::h264Macroblocks(width, height), media::kH264LargestFrameMacroblocks,
+                   format.name, elsewhere);
+  }
+  if (!media::lowestH264Level(width, height, spec.animation.fps.value()))
+    throw badInput(spec.where("animation.fps"), "animation.fps: {} frames a second of {}x{} is over H.264's largest "
+                                                "rate (level 6.2: 16711680 macroblocks a second), so \"{}\" cannot "
+                                                "hold it; lower the rate or the size, or {}",
+                   spec.animation.fps.text(), width, height, format.name, elsewhere);
+}
+
+}  // namespace
+
 const media::OutputFormat& chooseOutputFormat(const scene::SceneSpec& spec, const std::filesystem::path& output,
                                               media::OutputUse use) {
   const media::OutputFormat& format = media::chooseFormat(spec.render.format, spec.where("render.format"), output, use);
@@ -117,6 +142,7 @@ const media::OutputFormat& chooseOutputFormat(const scene::SceneSpec& spec, cons
       if (value % 2 != 0)
         throw badInput(spec.where(key), "{}: \"{}\" needs an even size (its chroma is subsampled), got {} (use {} or {})",
                        key, format.name, value, value - 1, value + 1);
+  if (format.encodesH264()) checkH264Limits(spec, format);
   return format;
 }
 
@@ -167,13 +193,11 @@ std::filesystem::path renderStill(const StillOptions& o) {
   if (figure || setsFigureKeys(job.spec)) fitTextToFigure(job.spec);
   const scene::SceneSpec& spec = job.spec;
 
-  std::filesystem::path out = o.output;
-  if (out.empty()) {
-    std::filesystem::create_directories("output");
-    out = std::filesystem::path("output") / (spec.name + format.defaultExtension());
-  }
+  // output/ is made only once the still is drawn (--at and the texture checked) and about to be written.
+  const std::filesystem::path out = o.output.empty() ? defaultOutputFile(spec.name + format.defaultExtension()) : o.output;
   const render::DrawList list = drawStill(job, o.at);
   if (figure) {
+    createOutputParent(out);
     writeFigureStill(spec, list, out, *figure, o.shaderDir);
     if (!o.layoutJson.empty()) {
       AtomicFile json(o.layoutJson);
@@ -186,6 +210,7 @@ std::filesystem::path renderStill(const StillOptions& o) {
   GlRenderer gl(spec, o.shaderDir);
   const media::Image image = gl.renderer.render(list);
   StageLog::instance().record(std::string(format.name));
+  createOutputParent(out);
   const auto sink = media::openSink(format, sinkOptions(spec, out));
   sink->write(image.view());
   return sink->finish();

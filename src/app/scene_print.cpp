@@ -30,6 +30,17 @@ std::string resolvedSceneText(const std::string& sourceName, const scene::SceneS
     const double fps = spec.animation.fps.value();
     for (std::size_t k = 0; k < spec.segments.size(); ++k) {
       const SegmentSpan& span = model.segments[k];
+      // Beside the segment's own duration/speed key (or in place of it, as a
+      // comment): how long this segment really lasts, so that no duration
+      // printed in a storyboard reads as the clip's.
+      const scene::SegmentSpec& segment = spec.segments[k];
+      if (segment.path) {
+        const std::string range = fmt::format("s {:.6g} to {:.6g}", span.start, span.end);
+        const bool own = segment.duration || segment.speed;
+        notes[scene::SceneSpec::segmentKey(k) + (!segment.duration && segment.speed ? ".speed" : ".duration")] =
+            own ? fmt::format("this segment lasts {:.6g} s ({}), not the clip", seconds[k], range)
+                : fmt::format("{:.6g} s: this segment ({}) at the storyboard's speed (see [animation])", seconds[k], range);
+      }
       notes[scene::SceneSpec::segmentKey(k)] =
           spec.segments[k].path
               ? fmt::format("segment {}: s {:.6g} to {:.6g} (length {:.6g}) in {:.6g} s, {} frames", k + 1, span.start,
@@ -40,10 +51,12 @@ std::string resolvedSceneText(const std::string& sourceName, const scene::SceneS
         notes[scene::SceneSpec::segmentKey(k)] += fmt::format(", on surface {} (a {})", span.surface,
                                                               scene::toString(spec.surfaceOf(k).kind));
     }
+    const double clipSeconds = static_cast<double>(clock.frameCount()) / fps;
     notes[spec.animation.speed ? "animation.speed" : "animation.duration"] =
-        fmt::format("segments without their own timing move at {:.6g} per second; the clip has {} frames",
+        fmt::format("{}segments without their own timing move at {:.6g} per second; the clip lasts {:.6g} s, {} frames",
+                    spec.animation.speed ? "" : "the whole path's time at one speed, not the clip's: ",
                     spec.animation.speed ? *spec.animation.speed : model.path->length() / spec.animation.duration,
-                    clock.frameCount());
+                    clipSeconds, clock.frameCount());
   }
   if (model.plate)
     notes["plate.radius"] = fmt::format("the contact circle's radius is derived: R1/{} = {}",

@@ -36,11 +36,6 @@ struct SolveOptions {
   std::string output;
 };
 
-std::filesystem::path defaultOutput(const scene::SceneSpec& spec, const std::string& extension) {
-  std::filesystem::create_directories("output");
-  return std::filesystem::path("output") / (spec.name + extension);
-}
-
 // JSON has no inf or NaN: an estimate that could not be made is null.
 std::string jsonNumber(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "null"; }
 
@@ -101,7 +96,8 @@ int runTimeline(const SolveOptions& o) {
   const spin::SolveStats solved = solveScene(spec, model, choice);
   StageLog::instance().record("timeline-csv");
   const spin::SampleArcLengths samples = timelineArcLengths(spec, model);
-  const std::filesystem::path out = o.output.empty() ? defaultOutput(spec, ".csv") : std::filesystem::path(o.output);
+  const std::filesystem::path out = o.output.empty() ? defaultOutputFile(spec.name + ".csv") : std::filesystem::path(o.output);
+  createOutputParent(out);  // output/: only now, with the timeline solved
   const spin::SolveStats stats = writeTimelineCsv(out, model, choice, samples, solved);
   std::fprintf(stderr, "rollspin: wrote %zu samples to %s (%s, %lld steps, %.3g s)\n", samples.size(),
                out.string().c_str(), std::string(spin::methodName(choice.method)).c_str(), stats.steps, stats.seconds);

@@ -76,4 +76,14 @@ void checkOutputFolder(const fs::path& folder, const SourceLoc& where) {
   requireWritableFolder(existing, folder.has_filename() ? folder : folder.parent_path(), where);
 }
 
+fs::path defaultOutputFile(const std::string& name) { return fs::path("output") / name; }
+
+void createOutputParent(const fs::path& file) {
+  if (!file.has_parent_path()) return;
+  std::error_code ec;
+  fs::create_directories(file.parent_path(), ec);
+  if (ec) throw runtimeError(SourceLoc{file.string()}, "cannot create the folder {}: {}", file.parent_path().string(),
+                             ec.message());
+}
+
 }  // namespace rollspin

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "core/error.hpp"
 
@@ -19,5 +20,12 @@ void checkOutputFile(const std::filesystem::path& file, const SourceLoc& where);
 // not be a file, and its nearest existing ancestor must be a folder that
 // takes a new entry.
 void checkOutputFolder(const std::filesystem::path& folder, const SourceLoc& where);
+
+// output/NAME: where a command writes when no -o is given. Nothing is made
+// here: the folder is made by createOutputParent when the command is about to
+// write, after every check of its input, so a refused command leaves nothing.
+[[nodiscard]] std::filesystem::path defaultOutputFile(const std::string& name);
+// Makes FILE's folder (and its parents) when missing; Runtime error if it cannot.
+void createOutputParent(const std::filesystem::path& file);
 
 }  // namespace rollspin

@@ -25,6 +25,11 @@ struct SurfaceJet {
   Vec3 x = Vec3::Zero();
   Vec3 xu = Vec3::UnitX(), xv = Vec3::UnitY();
   Vec3 xuu = Vec3::Zero(), xuv = Vec3::Zero(), xvv = Vec3::Zero();
+
+  // Every value and derivative is finite (a formula such as sqrt(-1 - x²) is not).
+  [[nodiscard]] bool allFinite() const {
+    return x.allFinite() && xu.allFinite() && xv.allFinite() && xuu.allFinite() && xuv.allFinite() && xvv.allFinite();
+  }
 };
 
 // The parameter rectangle (bounds may be infinite; open at finite bounds,

@@ -143,8 +143,14 @@ void SurfaceCurvePath::buildSegment(double sigmaStart, double sigmaEnd) {
     const SurfaceJet j = surface_->jet(c.uv);
     const double sp = (j.xu * c.d1.x() + j.xv * c.d1.y()).norm();
     const double area = j.xu.cross(j.xv).norm();
-    if (!j.x.allFinite() || !j.xu.allFinite() || !j.xv.allFinite() || !j.xuu.allFinite() || !j.xuv.allFinite() ||
-        !j.xvv.allFinite() || !std::isfinite(sp) || !(area > 0.0)) {
+    // Not finite: the surface's own formula fails there (its key is to blame).
+    if (!j.allFinite())
+      throw SurfaceUndefinedError("the surface is undefined at arc length ≈ " + describeNumber(approxS) +
+                                      " (surface parameters (" + describeNumber(c.uv.x()) + ", " +
+                                      describeNumber(c.uv.y()) + ") " + surface_->parameterNames() +
+                                      "): a value or derivative is not finite",
+                                  c.uv, approxS);
+    if (!std::isfinite(sp) || !(area > 0.0)) {
       throw GeometryError("the surface is undefined or singular at arc length ≈ " + describeNumber(approxS) +
                           " (surface parameters (" + describeNumber(c.uv.x()) + ", " + describeNumber(c.uv.y()) +
                           "): a value or derivative is not finite, or x_u × x_v = 0)");

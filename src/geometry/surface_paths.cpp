@@ -206,6 +206,11 @@ std::unique_ptr<SurfaceCurvePath> greatCircle(std::shared_ptr<const Sphere> sphe
 std::unique_ptr<SurfaceCurvePath> geodesicPath(std::shared_ptr<const Surface> surface, const Vec2& startUv,
                                                const Vec3& direction, double length) {
   const SurfaceJet j0 = surface->jet(startUv);
+  if (!j0.allFinite())
+    throw SurfaceUndefinedError("the surface is undefined at the geodesic's start (surface parameters (" +
+                                    describeNumber(startUv.x()) + ", " + describeNumber(startUv.y()) + ") " +
+                                    surface->parameterNames() + ")",
+                                startUv, 0.0);
   const Vec3 n0 = j0.xu.cross(j0.xv).normalized();
   const Vec3 w = direction - direction.dot(n0) * n0;
   if (!(w.norm() > 1e-9 * direction.norm()))
@@ -224,6 +229,19 @@ std::unique_ptr<SurfaceCurvePath> geodesicPath(std::shared_ptr<const Surface> su
   const ParameterDomain domain = surface->domain();
   for (long long k = 0; k < steps; ++k) {
     const State next = rk4(*surface, nodes.back(), h);
+    // A step that comes out not finite because the surface is not, at one of
+    // RK4's stage points (a half and a whole step ahead): its formula is to blame.
+    for (const double t : {0.5, 1.0}) {
+      if (next.allFinite()) break;
+      const State& last = nodes.back();
+      const Vec2 probe(last[0] + t * h * last[2], last[1] + t * h * last[3]);
+      if (!surface->jet(probe).allFinite())
+        throw SurfaceUndefinedError("the surface is undefined where the geodesic reaches at arc length ≈ " +
+                                        describeNumber((static_cast<double>(k) + t) * h) + " (surface parameters (" +
+                                        describeNumber(probe.x()) + ", " + describeNumber(probe.y()) + ") " +
+                                        surface->parameterNames() + ")",
+                                    probe, (static_cast<double>(k) + t) * h);
+    }
     if (!next.allFinite() || !domain.contains(Vec2(next[0], next[1])))
       throw GeometryError("the geodesic leaves the surface's domain at arc length ≈ " +
                           describeNumber(static_cast<double>(k + 1) * h) + " (surface parameters (" +

@@ -35,6 +35,22 @@ class GeometryError : public std::runtime_error {
   explicit GeometryError(const std::string& message) : std::runtime_error(message) {}
 };
 
+// The surface itself has no finite value or derivative at parameters `at`
+// (a height field z = sqrt(-1 - x²) anywhere): the surface's formula is to
+// blame, not the path that reached it. `arcLength`: where on the path (NaN
+// when not known).
+class SurfaceUndefinedError : public GeometryError {
+ public:
+  SurfaceUndefinedError(const std::string& message, const Vec2& at, double arcLength)
+      : GeometryError(message), at_(at), arcLength_(arcLength) {}
+  [[nodiscard]] const Vec2& at() const { return at_; }
+  [[nodiscard]] double arcLength() const { return arcLength_; }
+
+ private:
+  Vec2 at_;
+  double arcLength_;
+};
+
 // Bounds the panels that paths built on this thread may fit while the
 // budget lives (the innermost of nested ones counts): the arc-length panels
 // of a SurfaceCurvePath and the pieces of a PiecewiseChebyshevUvCurve. Past

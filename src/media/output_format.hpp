@@ -39,6 +39,8 @@ struct OutputFormat {
     return kind == OutputKind::Still || kind == OutputKind::Figure ? OutputUse::Still : OutputUse::Animation;
   }
   [[nodiscard]] constexpr bool isFolder() const { return extensions.empty(); }
+  // MP4 is H.264 (mp4_writer.cpp): its frames obey H.264's levels (h264_levels.hpp).
+  [[nodiscard]] constexpr bool encodesH264() const { return name == "mp4"; }
   // ".mp4": the first extension ("" for a folder).
   [[nodiscard]] std::string defaultExtension() const;
   [[nodiscard]] bool hasExtension(std::string_view lowerCaseExtension) const;

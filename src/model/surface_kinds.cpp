@@ -27,14 +27,19 @@ std::shared_ptr<const geometry::Expression> compileExpression(const scene::Scene
   }
 }
 
+std::string surfaceFormulaKey(const scene::SceneSpec& spec) {
+  for (const ParamDecl& decl : scene::surfaceKeyDecls(spec.surface.kind))
+    if (decl.type == ParamType::Expression) return decl.key;
+  return "";
+}
+
 std::shared_ptr<const geometry::Surface> buildSurface(const scene::SceneSpec& spec) {
   try {
     return scene::surfaceKindRow(spec.surface.kind).geometry->create(spec.surface.params);
   } catch (const geometry::ExpressionError& e) {
     // The kind's formula key (its Expression parameter) is the one to blame.
-    for (const ParamDecl& decl : scene::surfaceKeyDecls(spec.surface.kind))
-      if (decl.type == ParamType::Expression)
-        throwParseError(spec, "surface." + decl.key, spec.surface.params.text(decl.key), e);
+    const std::string key = surfaceFormulaKey(spec);
+    if (!key.empty()) throwParseError(spec, "surface." + key, spec.surface.params.text(key), e);
     throw;
   }
 }

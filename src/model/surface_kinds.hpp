@@ -23,6 +23,10 @@ namespace rollspin::model {
 // [surface] → its geometry; throws BadInput (surface.z that does not parse).
 [[nodiscard]] std::shared_ptr<const geometry::Surface> buildSurface(const scene::SceneSpec& spec);
 
+// "surface.z": the key of the surface kind's formula, or "" for a kind
+// without one (its geometry is defined everywhere on its domain).
+[[nodiscard]] std::string surfaceFormulaKey(const scene::SceneSpec& spec);
+
 // Parses an expression of `variables`; a parse error is BadInput at `key`,
 // pointing into the TOML string itself (column of the opening quote + 1 +
 // position) when the key came from a file.

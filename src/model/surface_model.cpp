@@ -1,5 +1,6 @@
 #include "model/surface_model.hpp"
 
+#include <cmath>
 #include <numbers>
 
 #include "geometry/surface_kinds.hpp"
@@ -118,6 +119,21 @@ RollingModel buildSurfaceModel(const scene::SceneSpec& spec) {
   std::unique_ptr<geometry::SurfaceCurvePath> path;
   try {
     path = buildPath(spec, model.surface);
+  } catch (const geometry::SurfaceUndefinedError& e) {
+    // The surface's own formula has no value where the path goes: blame it
+    // (surface.z at its line:col), with the point, not the path's keys.
+    const std::string formula = surfaceFormulaKey(spec);
+    if (formula.empty()) {
+      const std::string key = keyForPathError(spec);
+      throw badInput(spec.where(key), "{}: {}", key, e.what());
+    }
+    const std::string key = "surface." + formula;
+    const std::string names = model.surface->parameterNames();  // "(x, y): the horizontal coordinates"
+    throw badInput(spec.where(key), "{}: \"{}\" is undefined (not finite, or its slope is not) at {} = ({}, {}), "
+                                    "where the path goes{}; the path must stay where the formula is defined",
+                   key, spec.surface.params.text(formula), names.substr(0, names.find(':')),
+                   geometry::describeNumber(e.at().x()), geometry::describeNumber(e.at().y()),
+                   std::isfinite(e.arcLength()) ? " (arc length ≈ " + geometry::describeNumber(e.arcLength()) + ")" : "");
   } catch (const geometry::GeometryError& e) {
     const std::string key = keyForPathError(spec);
     throw badInput(spec.where(key), "{}: {}", key, e.what());

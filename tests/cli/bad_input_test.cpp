@@ -125,3 +125,48 @@ TEST(BadInput, UnknownCommandLineOptionExitsTwo) {
   const auto r = runRollspin({"solve", "--no-such-flag"});
   EXPECT_EQ(r.exitCode, 2);
 }
+
+// Nothing is created before the input is known good: without -o each
+// command writes into output/, which must not appear when the command
+// refuses its input (exit 2) — a bad --at, a missing texture (a still, a
+// figure, a clip), a bad --frames, a timeline or report of a bad scene, an
+// MP4 larger than H.264 allows. Each runs in an empty folder of its own.
+TEST(BadInput, ARefusedCommandCreatesNoOutputFolder) {
+  const std::string lollipop = (rollspin::test::sourceDir() / "scenes/lollipop.toml").string();
+  const std::vector<std::vector<std::string>> commands{
+      {"render", lollipop, "--still", "--at", "fraction=2"},
+      {"render", lollipop, "--still", "--set", "ball.texture=/nonexistent/ball.png"},
+      {"render", lollipop, "--still", "--set", "ball.texture=/nonexistent/ball.png", "--set", "render.format=pdf"},
+      {"render", lollipop, "--set", "ball.texture=/nonexistent/ball.png", "--width", "64", "--height", "48"},
+      {"render", lollipop, "--frames", "5-2", "--width", "64", "--height", "48"},
+      {"render", lollipop, "--width", "8192", "--height", "8192"},
+      {"timeline", lollipop, "--set", "ball.radius=-1"},
+      {"report", "errors", lollipop, "--set", "ball.radius=-1"},
+  };
+  for (const auto& args : commands) {
+    std::string line;
+    for (const auto& a : args) line += a + " ";
+    const auto dir = freshTempDir("no_output_folder");
+    const auto r = runRollspin(args, dir);
+    EXPECT_EQ(r.exitCode, 2) << line << "\n" << r.err;
+    EXPECT_TRUE(std::filesystem::is_empty(dir)) << line << ": left " << std::filesystem::directory_iterator(dir)->path();
+    std::filesystem::remove_all(dir);
+  }
+}
+
+// H.264's largest frame is level 6.2's 139,264 macroblocks (8192x4320):
+// 8192x8192 as MP4 is refused with the limit and the formats that hold it.
+TEST(BadInput, AnMp4BeyondH264sLargestFrameNamesTheLimitAndTheFormatsThatHoldIt) {
+  const auto dir = freshTempDir("h264_limit");
+  const auto r = runRollspin({"render", "lollipop", "--width", "8192", "--height", "8192", "-o", (dir / "big.mp4").string()});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  for (const char* part : {"--height", "8192x8192", "262144 macroblocks", "level 6.2", "139264", "8192x4320",
+                           "\"mov\" (ProRes)", "\"webm\"", "PNG frames"})
+    EXPECT_NE(r.err.find(part), std::string::npos) << part << " missing from:\n" << r.err;
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
+  const auto rate = runRollspin({"render", "lollipop", "--width", "8192", "--height", "4320", "--set",
+                                 "animation.fps=240", "-o", (dir / "fast.mp4").string()});
+  EXPECT_EQ(rate.exitCode, 2) << rate.err;
+  EXPECT_NE(rate.err.find("animation.fps"), std::string::npos) << rate.err;
+  EXPECT_NE(rate.err.find("16711680 macroblocks a second"), std::string::npos) << rate.err;
+}

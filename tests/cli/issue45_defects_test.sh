@@ -181,7 +181,7 @@ else
      grep -q 'ulimit -v' "$dir/memory" && [ ! -e "$dir/big.png" ]; then
     pass memory-way-out
   else
-    fail memory-way-out "exit $code: $(grep 'rollspin:' "$dir/memory" | head -n 3)"
+    fail memory-way-out "exit $code: $(grep -m 3 'rollspin:' "$dir/memory")"
   fi
   (ulimit -v 700000; export LP_NUM_THREADS=32; exec timeout -s KILL 120 "$rollspin" render "$scenes/lollipop.toml" --still \
     --width 1920 --height 1080 -o "$dir/threads.png") 2>"$dir/threads"
@@ -190,7 +190,7 @@ else
      { [ $code -eq 2 ] && grep -q 'render.msaa=1' "$dir/threads" && [ ! -e "$dir/threads.png" ]; }; then
     pass memory-many-threads
   else
-    fail memory-many-threads "exit $code: $(grep 'rollspin:' "$dir/threads" | head -n 3)"
+    fail memory-many-threads "exit $code: $(grep -m 3 'rollspin:' "$dir/threads")"
   fi
 fi
 

@@ -107,7 +107,7 @@ EOF
 echo "== solve --json sweep with GNU parallel"
 RADII="0.5 1.5" COLATITUDES="45 60 90" bash "$src/scripts/sweep_sphere_inside.sh" sweep/sweep.csv
 [ "$(wc -l < sweep/sweep.csv)" = 7 ] || fail "sweep rows: $(cat sweep/sweep.csv)"
-head -1 sweep/sweep.csv | grep -q '^ball_radius,colatitude_deg,angle,closed_form_angle,difference,' || fail "header"
+[[ "$(head -1 sweep/sweep.csv)" == ball_radius,colatitude_deg,angle,closed_form_angle,difference,* ]] || fail "header"
 awk -F, 'NR > 1 { d = $5 < 0 ? -$5 : $5; if (d > 1e-9) { print "row " NR ": " $0; bad = 1 } } END { exit bad }' \
   sweep/sweep.csv || fail "the solver's angle is not the closed form"
 echo "ok: 6 grid points, each within 1e-9 rad of the closed form"

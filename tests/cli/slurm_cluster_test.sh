@@ -95,7 +95,7 @@ EOF
 export SLURM_CONF=$tmp/slurm.conf
 daemon slurmctld -i -f "$SLURM_CONF" || skip_all "slurmctld would not start here: $(tail -n 3 "$tmp/slurmctld.log")"
 daemon slurmd -f "$SLURM_CONF" -N localhost || skip_all "slurmd would not start here: $(tail -n 3 "$tmp/slurmd.log")"
-if ! wait_for "sinfo -h -o %t 2>/dev/null | grep -qE '^(idle|mix|alloc)'" 30; then
+if ! wait_for "sinfo -h -o %t 2>/dev/null | grep -E '^(idle|mix|alloc)' >/dev/null" 30; then
   echo "slurmctld.log:"; tail -n 15 "$tmp/slurmctld.log"; echo "slurmd.log:"; tail -n 15 "$tmp/slurmd.log"
   fail cluster-up "the node did not come up: $(sinfo 2>&1 | tail -n 2)"
   finish; exit 1
@@ -147,7 +147,7 @@ if ffprobe -v error -select_streams v:0 -show_entries packet=pts_time -of csv=p=
         END { exit bad || NR < 2 }'; then
   pass "continuous timestamps"
 else
-  fail "continuous timestamps" "$(ffprobe -v error -show_entries packet=pts_time -of csv=p=0 out/clip.mp4 | sort -g | tr '\n' ' ' | head -c 300)"
+  fail "continuous timestamps" "$(ffprobe -v error -show_entries packet=pts_time -of csv=p=0 out/clip.mp4 | sort -g | tr '\n' ' ' | cut -c 1-300)"
 fi
 decode=$(ffmpeg -v error -i out/clip.mp4 -f null - 2>&1)
 if [ -z "$decode" ]; then pass "clean decode"; else fail "clean decode" "$decode"; fi

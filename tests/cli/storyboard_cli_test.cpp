@@ -120,6 +120,32 @@ TEST(StoryboardCli, PrintShowsTheResolvedSegmentsAndReadsBack) {
   EXPECT_EQ(first.out.substr(first.out.find("\n\n")), second.out.substr(second.out.find("\n\n")));
 }
 
+// A segment's `duration = 10` must not read as the clip's: each segment's
+// own key carries how long that segment really lasts and its s range, a
+// segment without its own timing gets its real duration as a comment, and
+// [animation]'s duration says it is the whole path's time at one speed, not
+// the clip's. The printed TOML still reads back to the same scene.
+TEST(StoryboardCli, PrintSaysHowLongEachSegmentReallyLasts) {
+  const auto dir = freshTempDir("storyboard_durations");
+  std::ofstream(dir / "story.toml") << "[animation]\nduration = 4\n"
+                                    << "[[segment]]\nduration = 10\npath = { kind = \"line\", length = 2 }\n"
+                                    << "[[segment]]\npath = { kind = \"line\", length = 6 }\n";
+  const auto first = runRollspin({"scene", (dir / "story.toml").string(), "--print"});
+  ASSERT_EQ(first.exitCode, 0) << first.err;
+  // Segment 2 moves at 8 / 4 = 2 per second: 6 long, 3 s. The clip: 10 + 3 s
+  // and animation.hold (0.5 s) at each end, 14 s.
+  for (const char* text : {"duration = 10  # this segment lasts 10 s (s 0 to 2), not the clip",
+                           "# duration = 3 s: this segment (s 2 to 8) at the storyboard's speed",
+                           "duration = 4  # the whole path's time at one speed, not the clip's: segments without "
+                           "their own timing move at 2 per second; the clip lasts 14 s, 420 frames"})
+    EXPECT_NE(first.out.find(text), std::string::npos) << text << "\n" << first.out;
+  const auto printed = dir / "printed.toml";
+  std::ofstream(printed) << first.out;
+  const auto second = runRollspin({"scene", printed.string(), "--print"});
+  ASSERT_EQ(second.exitCode, 0) << second.err;
+  EXPECT_EQ(first.out.substr(first.out.find("\n\n")), second.out.substr(second.out.find("\n\n")));
+}
+
 TEST(StoryboardCli, ExtendsReplacesThePathOrTheSegmentsAsAWhole) {
   const auto dir = freshTempDir("storyboard_extends");
   const std::string scenes = (sourceDir() / "scenes").string();

@@ -28,10 +28,17 @@ const rollspin::test::BadScene kCases[] = {
     {"uv curve leaves the sphere's domain",
      "[surface]\nkind = \"sphere\"\n[path]\nkind = \"uv\"\nu = \"t\"\nv = \"0\"\nt_start = 0.5\nt_end = 4\n", "path.u",
      ":5:", "leaves the surface's domain"},
-    {"height field undefined along the path",
+    // A formula with no value where the path goes is the formula's fault:
+    // surface.z at its line:col, with the point (x, y), whatever the path kind.
+    {"height field undefined along a geodesic",
      "[surface]\nkind = \"height\"\nz = \"sqrt(4-x^2-y^2)\"\n[path]\nkind = \"geodesic\"\nlength = 5\n"
      "direction_vector = [1, 0, 0]\n",
-     "path.length", ":6:", "leaves the surface's domain"},
+     "surface.z", ":3:5:", "is undefined (not finite, or its slope is not) at (x, y) = ("},
+    {"height field undefined everywhere", "[surface]\nkind = \"height\"\nz = \"sqrt(-1-x*x)\"\n", "surface.z", ":3:5:",
+     "\"sqrt(-1-x*x)\" is undefined (not finite, or its slope is not) at (x, y) = ("},
+    {"height field undefined on a uv path",
+     "[surface]\nkind = \"height\"\nz = \"sqrt(-1-x*x)\"\n[path]\nkind = \"uv\"\nu = \"t\"\nv = \"0\"\n", "surface.z",
+     ":3:5:", "at (x, y) = (0, 0), where the path goes (arc length ≈ 0)"},
     {"ball too big inside a cylinder",
      "[ball]\nradius = 2.5\n[surface]\nkind = \"cylinder\"\nradius = 2\nside = \"inside\"\n", "ball.radius", ":2:",
      "does not fit"},

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "media/h264_levels.hpp"
 #include "media/video_probe.hpp"
 #include "support/test_files.hpp"
 
@@ -80,6 +81,31 @@ TEST(Mp4Writer, WritesH264Yuv420pTaggedBt709WithMonotonicTimestamps) {
       for (int c = 0; c < 3; ++c)
         worst = std::max(worst, std::abs(double(probe.kept[0].pixel(x + 4, y + 4)[c]) - expected.pixel(x + 4, y + 4)[c]));
   EXPECT_LE(worst, 6.0);
+}
+
+// The level libx264 tags is the lowest of Table A-1 that holds the size and
+// rate (h264_levels.cpp's table, written from the standard, not from x264):
+// a size and rate at each level's edge: 640x360@30 is 3.0, 1920x1080@60 4.2,
+// 4096x2160@60 exactly 5.2's MaxMBPS, 8192x4320@30 (the largest frame) 6.0.
+// Two flat frames each (ultrafast: one reference, far inside every DPB).
+TEST(Mp4Writer, TagsTheLowestH264LevelThatHoldsTheSizeAndRate) {
+  const fs::path dir = test::freshTempDir("mp4_levels");
+  struct Case { int width, height, fps, level; };
+  for (const Case c : {Case{640, 360, 30, 30}, Case{1920, 1080, 60, 42}, Case{4096, 2160, 60, 52},
+                       Case{8192, 4320, 30, 60}}) {
+    const auto expected = media::lowestH264Level(c.width, c.height, c.fps);
+    ASSERT_TRUE(expected.has_value()) << c.width << "x" << c.height;
+    EXPECT_EQ(expected->idc, c.level) << c.width << "x" << c.height << "@" << c.fps << ": Table A-1";
+    const fs::path out = dir / fmt::format("{}x{}.mp4", c.width, c.height);
+    media::Mp4Settings settings{c.width, c.height, c.fps};
+    settings.preset = "ultrafast";
+    media::Mp4Writer writer(out, settings);
+    media::Image flat(c.width, c.height);
+    for (int k = 0; k < 2; ++k) writer.write(flat.view());
+    writer.finish();
+    EXPECT_EQ(test::probeVideo(out).level, c.level) << c.width << "x" << c.height << "@" << c.fps << ": x264's tag";
+    fs::remove(out);
+  }
 }
 
 TEST(Mp4Writer, FinishPartialGivesAShorterPlayableVideoUnderAPartialName) {

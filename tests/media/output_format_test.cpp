@@ -6,6 +6,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "media/h264_levels.hpp"
 #include "media/output_format.hpp"
 
 namespace rollspin {
@@ -71,6 +72,24 @@ TEST(OutputFormat, AMismatchNamesTheFormatsThatFit) {
   const std::string stillFormat = badInputMessage(std::string("jpg"), "", OutputUse::Animation);
   EXPECT_NE(stillFormat.find("still format"), std::string::npos) << stillFormat;
   EXPECT_NE(stillFormat.find("scene.toml:3:10"), std::string::npos) << "keeps the key's place: " << stillFormat;
+}
+
+// H.264's largest frame is level 6.2's 139,264 macroblocks: 8192x4320 fits
+// (512 x 270 = 138,240), 8192x8192 (262,144) and 8192x4352 (139,264 + 512
+// over the line by one row) do not; sizes round up to whole macroblocks.
+TEST(H264Levels, TheLargestFrameIsLevel62sAndOnlyMp4EncodesH264) {
+  EXPECT_EQ(media::h264Macroblocks(8192, 4320), 138240);
+  EXPECT_EQ(media::h264Macroblocks(8190, 4322), 512 * 271);
+  EXPECT_TRUE(media::h264HoldsFrame(8192, 4320));
+  EXPECT_TRUE(media::h264HoldsFrame(4352, 8192)) << "4352 x 8192 is 272 x 512 = 139,264: exactly the limit";
+  EXPECT_FALSE(media::h264HoldsFrame(8192, 8192));
+  EXPECT_FALSE(media::h264HoldsFrame(8192, 4368)) << "273 rows of 512";
+  EXPECT_FALSE(media::lowestH264Level(8192, 8192, 1).has_value());
+  EXPECT_FALSE(media::lowestH264Level(8192, 4320, 121).has_value()) << "6.2's MaxMBPS allows 120 fps at 8K";
+  EXPECT_EQ(media::lowestH264Level(8192, 4320, 120)->idc, 62);
+  EXPECT_EQ(media::lowestH264Level(1280, 720, 30)->idc, 31);
+  for (const media::OutputFormat& f : media::kOutputFormats)
+    EXPECT_EQ(f.encodesH264(), f.name == "mp4") << f.name;
 }
 
 }  // namespace

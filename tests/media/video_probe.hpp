@@ -21,6 +21,7 @@ struct VideoProbe {
   std::string pixelFormat;   // "yuv420p" (the stream's, as the container declares it)
   std::string decodedPixelFormat;  // what the decoder produced ("yuva420p" for VP9 with alpha)
   std::string profile;       // "4444", "HQ" (ProRes); "" when the codec has none
+  int level = 0;             // the stream's level as coded (H.264: level_idc, 31 for 3.1)
   std::string alphaMode;     // the stream's ALPHA_MODE tag (WebM with alpha: "1")
   std::string colorSpace, colorPrimaries, colorTransfer, colorRange;  // "bt709", …, "tv"
   std::string chromaLocation;  // "left", "center", … ("unspecified" when the stream does not say)

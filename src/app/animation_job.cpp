@@ -15,6 +15,7 @@
 #include "app/interrupt_guard.hpp"
 #include "app/job_setup.hpp"
 #include "app/progress_meter.hpp"
+#include "app/remembered_output.hpp"
 #include "app/render_jobs.hpp"
 #include "app/shard_range.hpp"
 #include "core/bounded_queue.hpp"
@@ -105,7 +106,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   // estimate (three queued RGBA frames, the yuv420p frame and the converter's
   // copy of the last RGBA frame, x264's look-ahead).
   const DrawJob job = prepareDrawJob({o.scenePath, o.overrides, presetFlags, o.width, o.height, o.transparent,
-                                      o.output, media::OutputUse::Animation, 256, o.sceneText});
+                                      o.output, media::OutputUse::Animation, 256, o.sceneText, o.sceneName});
   const scene::SceneSpec& spec = job.spec;
   const media::OutputFormat& format = *job.format;
   const RollingModel& model = job.model;
@@ -160,6 +161,15 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
                   sinkOpts.crf ? fmt::format("{}", *sinkOpts.crf) : std::string("default"),
                   sinkOpts.alpha ? "alpha " : "", width, height, sinkOpts.fpsNum, sinkOpts.fpsDen),
       range.first, range.last, clock.frameCount()});
+  // What the clip remembers (remembered_output.hpp): tags in a container, comments in a GIF.
+  if (o.metadata) {
+    const bool whole = range.first == 0 && range.last == clock.frameCount() - 1;
+    sinkOpts.metadata = outputMetadata(spec, model, {JobRecord::Kind::Clip, spec.name, std::nullopt,
+                                                     whole ? std::nullopt
+                                                           : std::optional(fmt::format("{}:{}", range.first, range.last)),
+                                                     false});
+    for (auto& tag : metadataTags(*sinkOpts.metadata)) sinkOpts.containerMetadata.push_back(std::move(tag));
+  }
   StageLog::instance().record(folder ? "png-frames" : "encoder");
   const std::unique_ptr<media::FrameSink> sink = media::openSink(format, sinkOpts);
 

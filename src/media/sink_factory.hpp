@@ -11,6 +11,7 @@
 
 #include "media/frame_sink.hpp"
 #include "media/output_format.hpp"
+#include "media/output_metadata.hpp"
 #include "media/video_writer.hpp"
 
 namespace rollspin::media {
@@ -28,6 +29,7 @@ struct SinkOptions {
   long long firstIndex = 0;      // frame folders: the first frame's index in the clip
   bool wholeClip = true;         // frame folders: the whole clip (stale frames go) or a part
   OptionList containerMetadata;  // file-level tags of video containers (VideoSettings)
+  std::optional<OutputMetadata> metadata;  // stills and GIF: written into the file (none: --no-metadata)
 };
 
 // Opens the sink of `format`. Throws Error like the sink's constructor;

@@ -76,12 +76,23 @@ def _resolve_scene_path(path: PathLike) -> str:
     return text  # the loader says it cannot be read, naming it
 
 
+# Files rollspin writes that remember their scene (`rollspin scene --from`).
+_OUTPUT_SUFFIXES = {".png", ".jpg", ".jpeg", ".pdf", ".svg", ".gif", ".mp4", ".webm", ".mov",
+                    ".csv", ".json", ".npy", ".npz", ".gltf", ".glb", ".html", ".htm"}
+
+
 def load(path: PathLike) -> "Scene":
-    """A scene from a TOML file, or a bundled scene by name (``"lollipop"``).
+    """A scene from a TOML file, a bundled scene by name (``"lollipop"``), or
+    an output rollspin wrote (a PNG, JPEG, PDF, SVG, GIF, MP4, WebM or MOV,
+    a timeline's CSV, .npy or .npz with its sidecar, or its JSON), which
+    remembers the scene it was made from.
 
     Raises SceneError (a ValueError) with the CLI's message when the file is
-    missing or invalid.
+    missing or invalid, or an output carries no rollspin metadata.
     """
+    text = os.fspath(path)
+    if os.path.splitext(text)[1].lower() in _OUTPUT_SUFFIXES:
+        return Scene(_core.Scene.load_output(text))
     return Scene(_core.Scene.load(_resolve_scene_path(path)))
 
 

@@ -137,9 +137,18 @@ std::string storedZip(const std::vector<std::pair<std::string, std::string>>& me
   return out;
 }
 
+// A device or a pipe (-o /dev/stdout): CSV, without a sidecar.
+bool isStream(const std::filesystem::path& out) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(out, ec);
+  return !ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+         !std::filesystem::is_directory(status);
+}
+
 }  // namespace
 
 TimelineFormat timelineFormatOf(const std::filesystem::path& out, const SourceLoc& where) {
+  if (isStream(out)) return TimelineFormat::Csv;
   const std::string extension = asciiLowercase(out.extension().string());
   if (extension == ".csv") return TimelineFormat::Csv;
   if (extension == ".json") return TimelineFormat::Json;
@@ -233,7 +242,7 @@ spin::SolveStats writeTimelineFile(const std::filesystem::path& out, const Rolli
                                       : writeNumpy(file, format, out, model, choice, sampleS);
   // The sidecar: the solve's numbers, the scene and the version beside the data.
   std::optional<AtomicFile> sidecar;
-  if (format != TimelineFormat::Json) {
+  if (format != TimelineFormat::Json && !isStream(out)) {
     std::filesystem::path sidecarPath = out;
     sidecarPath += ".json";
     sidecar.emplace(sidecarPath);

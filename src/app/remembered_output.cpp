@@ -70,8 +70,8 @@ JobRecord parseJobRecord(const std::string& text, const std::string& where) {
 }
 
 std::string describeScene(const scene::SceneSpec& spec, const model::RollingModel& model) {
-  const std::string motion = fmt::format("A ball of radius {:g} rolls along {} on {}", model.ballRadius,
-                                         model.path->describe(), model.surface->describe());
+  // The path's own description names its surface ("circle of radius 3 (1 turns, ccw) on a plane …").
+  const std::string motion = fmt::format("A ball of radius {:g} rolls along a {}", model.ballRadius, model.path->describe());
   switch (spec.render.layout) {
     case scene::RenderLayout::SideBySide: return motion + "; beside it the spin on the Bloch sphere.";
     case scene::RenderLayout::Inset: return motion + "; in an inset the spin on the Bloch sphere.";

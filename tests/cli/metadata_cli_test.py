@@ -168,6 +168,22 @@ def test_clip_remembers_and_decodes_to_the_same_frames(tmp_path, extension):
     assert stored_scene(again) == stored_scene(first)
 
 
+def test_joined_shards_remember_the_whole_clip(tmp_path):
+    shards = ["render", "lollipop", "--quality", "low", *SMALL, "--set", "animation.duration=0.4", "--quiet",
+              "-o", tmp_path / "c.mp4"]
+    ok(*shards, "--shard", "1/2")
+    ok(*shards, "--shard", "2/2")
+    ok("join", tmp_path / "c.part-1-of-2.mp4", tmp_path / "c.part-2-of-2.mp4", "-o", tmp_path / "c.mp4")
+    assert "frames: 0:" in ffprobe_tags(tmp_path / "c.part-1-of-2.mp4")["rollspin_job"]  # the first part's frames
+    tags = ffprobe_tags(tmp_path / "c.mp4")
+    assert "frames:" not in tags["rollspin_job"] and "render: clip" in tags["rollspin_job"]
+    assert stored_scene(tmp_path / "c.mp4") == stored_scene(tmp_path / "c.part-2-of-2.mp4")
+    ok("render", "--from", tmp_path / "c.mp4", "-o", tmp_path / "again.mp4", "--quiet")
+    # The whole clip again, encoded in one piece (the parts were encoded apart: the same
+    # frames rendered, not the same bytes decoded).
+    assert len(decoded_frames(tmp_path / "again.mp4")) == len(decoded_frames(tmp_path / "c.mp4"))
+
+
 def test_no_metadata_leaves_it_all_out(tmp_path):
     png, mp4 = tmp_path / "bare.png", tmp_path / "bare.mp4"
     ok("render", "lollipop", "--still", *SMALL, "--no-metadata", "-o", png)

@@ -95,8 +95,8 @@ int runSolve(const SolveOptions& o) {
 
 int runTimeline(const SolveOptions& o) {
   if (!o.output.empty()) {  // before the solve, not after
+    checkOutputFile(o.output, {"-o " + o.output});  // a folder, a missing folder: said first
     (void)timelineFormatOf(o.output, {"-o " + o.output});
-    checkOutputFile(o.output, {"-o " + o.output});
   }
   const scene::SceneSpec spec = loadScene(o.scenePath, o.overrides);
   const RollingModel model = buildSceneModel(spec);

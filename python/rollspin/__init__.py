@@ -89,17 +89,29 @@ def scene_dirs() -> "List[Path]":
     return [Path(folder) for folder in _core.scene_folders()]
 
 
+# Files rollspin writes that remember their scene (`rollspin scene --from`).
+_OUTPUT_SUFFIXES = {".png", ".jpg", ".jpeg", ".pdf", ".svg", ".gif", ".mp4", ".webm", ".mov",
+                    ".csv", ".json", ".npy", ".npz", ".gltf", ".glb", ".html", ".htm"}
+
+
 def load(path: PathLike) -> "Scene":
-    """A scene from a TOML file, or a bundled scene by name (``"lollipop"``), found as the CLI finds it.
+    """A scene from a TOML file, a bundled scene by name (``"lollipop"``),
+    found as the CLI finds it, or an output rollspin wrote (a PNG, JPEG, PDF,
+    SVG, GIF, MP4, WebM or MOV, a timeline's CSV, .npy or .npz with its
+    sidecar, or its JSON), which remembers the scene it was made from.
 
     Raises SceneError (a ValueError) with the CLI's message when the file is
-    missing (where it looked, and the nearest bundled name) or invalid.
+    missing (where it looked, and the nearest bundled name) or invalid, or an
+    output carries no rollspin metadata.
     """
     if not isinstance(path, (str, os.PathLike)):
         raise TypeError(f"load() expects a scene file's path or a bundled scene's name (str or os.PathLike), "
                         f"got {type(path).__name__}")
+    text = os.fspath(path)
+    if os.path.splitext(text)[1].lower() in _OUTPUT_SUFFIXES:
+        return Scene(_core.Scene.load_output(text))
     _find_scenes_here()  # $ROLLSPIN_SCENE_DIR may have been set since import
-    return Scene(_core.Scene.load(os.fspath(path)))
+    return Scene(_core.Scene.load(text))
 
 
 def loads(text: str, name: str = "<string>") -> "Scene":

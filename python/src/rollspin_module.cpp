@@ -35,6 +35,7 @@
 #include "app/figure_job.hpp"
 #include "app/huge_pages.hpp"
 #include "app/job_setup.hpp"
+#include "app/remembered_output.hpp"
 #include "app/render_jobs.hpp"
 #include "app/scene_print.hpp"
 #include "app/timeline_csv.hpp"
@@ -66,6 +67,7 @@ struct SceneSource {
   std::string name;                 // the path as given, or "<string>"
   std::optional<std::string> text;  // loads(): the TOML itself
   std::vector<std::string> overrides;
+  std::string sceneName;            // load_output(): the name the output's job records
 };
 
 // One still size and alpha of a scene: the drawing job (spec with the size
@@ -194,6 +196,7 @@ class Scene {
       py::gil_scoped_release release;
       scene->spec_ = source.text ? scene::loadSceneText(*source.text, source.name, source.overrides)
                                  : model::loadScene(source.name, source.overrides);
+      if (!source.sceneName.empty()) scene->spec_.name = source.sceneName;
       if (source.text && scene->spec_.name.empty()) scene->spec_.name = "scene";
       scene->model_ = model::buildSceneModel(scene->spec_);
     }
@@ -440,6 +443,11 @@ PYBIND11_MODULE(_rollspin, m) {
       .def_static("loads", [](const std::string& text, const std::string& name, const std::vector<std::string>& overrides) {
         return Scene::open({name, text, overrides});
       }, py::arg("text"), py::arg("name") = "<string>", py::arg("overrides") = std::vector<std::string>{})
+      // An output that remembers its scene (app/remembered_output.hpp): a still, figure, clip or timeline.
+      .def_static("load_output", [](const std::string& path, const std::vector<std::string>& overrides) {
+        const app::RememberedOutput remembered = app::readRememberedOutput(path);
+        return Scene::open({remembered.sourceName, remembered.metadata.scene, overrides, remembered.sceneName});
+      }, py::arg("path"), py::arg("overrides") = std::vector<std::string>{})
       .def("with_overrides", &Scene::withOverrides, py::arg("overrides"))
       .def("toml", &Scene::toml)
       .def("solve", &Scene::solve)

@@ -16,6 +16,7 @@
 #include "app/interrupt_guard.hpp"
 #include "app/job_setup.hpp"
 #include "app/progress_meter.hpp"
+#include "app/remembered_output.hpp"
 #include "app/render_jobs.hpp"
 #include "app/shard_range.hpp"
 #include "core/bounded_queue.hpp"
@@ -106,7 +107,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   // estimate (three queued RGBA frames, the yuv420p frame and the converter's
   // copy of the last RGBA frame, x264's look-ahead).
   const DrawJob job = prepareDrawJob({o.scenePath, o.overrides, presetFlags, o.width, o.height, o.transparent,
-                                      o.output, media::OutputUse::Animation, 256, o.sceneText});
+                                      o.output, media::OutputUse::Animation, 256, o.sceneText, o.sceneName});
   const scene::SceneSpec& spec = job.spec;
   const media::OutputFormat& format = *job.format;
   const RollingModel& model = job.model;
@@ -164,6 +165,15 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   const media::SubtitleCues cues = clipCaptionCues(spec, clock);
   sinkOpts.subtitles = media::cuesOfPart(cues, range.first, range.last);
   sinkOpts.subtitlesByDefault = !spec.render.burnCaptions;
+  // What the clip remembers (remembered_output.hpp): tags in a container, comments in a GIF.
+  if (o.metadata) {
+    const bool whole = range.first == 0 && range.last == clock.frameCount() - 1;
+    sinkOpts.metadata = outputMetadata(spec, model, {JobRecord::Kind::Clip, spec.name, std::nullopt,
+                                                     whole ? std::nullopt
+                                                           : std::optional(fmt::format("{}:{}", range.first, range.last)),
+                                                     false});
+    for (auto& tag : metadataTags(*sinkOpts.metadata)) sinkOpts.containerMetadata.push_back(std::move(tag));
+  }
   // The drawer first: it loads the texture, the last input to check; then
   // output/ (when no -o names a place) and the sink, the first writes.
   const std::unique_ptr<SceneDrawer> drawerOwner = makeDrawer(job);

@@ -34,6 +34,8 @@ struct AnimationOptions {
   media::SidecarFormats sidecars = media::SidecarFormats::Vtt;
   std::filesystem::path shaderDir;
   std::optional<std::string> sceneText;        // the scene itself (Python's loads()); scenePath names it
+  std::string sceneName;                       // with sceneText from --from: the scene's name
+  bool metadata = true;                        // false: --no-metadata (remembered_output.hpp)
   // Called on the rendering thread after each frame is handed on (done, of
   // total including a GIF's palette pass); the Python binding's progress bar.
   std::function<void(long long done, long long total)> onFrame;

@@ -15,6 +15,8 @@ void registerSolveCommands(CLI::App& cli, CommandHandler& handler);
 
 // Adds `render` (stills) and `compare` (images); render_commands.cpp.
 void registerRenderCommands(CLI::App& cli, CommandHandler& handler);
+// `scene --print` and `scene --from FILE` (scene_command.cpp).
+void registerSceneCommand(CLI::App& cli, CommandHandler& handler);
 
 // Adds `report` with errors | stress | paper; report_commands.cpp.
 void registerReportCommands(CLI::App& cli, CommandHandler& handler);

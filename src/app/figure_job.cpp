@@ -94,7 +94,8 @@ void fitTextToFigure(scene::SceneSpec& spec) {
 }
 
 void writeFigureStill(const scene::SceneSpec& spec, const render::DrawList& list, const std::filesystem::path& out,
-                      render::FigureFormat format, const std::filesystem::path& shaderDir) {
+                      render::FigureFormat format, const std::filesystem::path& shaderDir,
+                      const media::OutputMetadata* metadata) {
   using render::MeshLayer;
   const auto [width, height] = rasterSize(spec);
   render::FigureRasters rasters;
@@ -118,7 +119,7 @@ void writeFigureStill(const scene::SceneSpec& spec, const render::DrawList& list
     }
   }
   StageLog::instance().record("figure");
-  render::writeFigure(out, format, list, rasters, figureStyleOf(spec, list));
+  render::writeFigure(out, format, list, rasters, figureStyleOf(spec, list), metadata);
 }
 
 render::FigureStyle figureStyleOf(const scene::SceneSpec& spec, const render::DrawList& list) {

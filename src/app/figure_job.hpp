@@ -45,7 +45,9 @@ void fitTextToFigure(scene::SceneSpec& spec);
 
 // Renders the raster parts with GL (only when the list has meshes) and
 // writes the figure to `out`.
+// `metadata`: written into the figure (null: none).
 void writeFigureStill(const scene::SceneSpec& spec, const render::DrawList& list, const std::filesystem::path& out,
-                      render::FigureFormat format, const std::filesystem::path& shaderDir);
+                      render::FigureFormat format, const std::filesystem::path& shaderDir,
+                      const media::OutputMetadata* metadata = nullptr);
 
 }  // namespace rollspin::app

@@ -22,6 +22,7 @@ DrawJob prepareDrawJob(const DrawJobRequest& r) {
   if (r.transparent) flags.push_back({"--transparent", "render.transparent=true"});
   DrawJob job{loadSceneWithFlags(r.scenePath, r.overrides, flags, r.sceneText), nullptr, {}};
   scene::SceneSpec& spec = job.spec;
+  if (!r.sceneName.empty()) spec.name = r.sceneName;
   const media::OutputFormat& format = chooseOutputFormat(spec, r.output, r.use);
   job.format = &format;
   // What the format's row asks of the output. A GIF: its own default size

@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   cli.add_flag("--version", versionShown, "Print the version and git describe (with --verbose, the GL backend) and exit");
   rollspin::app::CommandHandler handler;
   rollspin::app::registerSolveCommands(cli, handler);
+  rollspin::app::registerSceneCommand(cli, handler);
   rollspin::app::registerRenderCommands(cli, handler);
   rollspin::app::registerReportCommands(cli, handler);
   rollspin::app::registerInfoCommand(cli, handler);

@@ -11,7 +11,9 @@
 
 #include "app/animation_job.hpp"
 #include "app/commands.hpp"
+#include "app/remembered_output.hpp"
 #include "app/render_jobs.hpp"
+#include "core/text.hpp"
 #include "core/output_path.hpp"
 #include "media/image_compare.hpp"
 #include "media/image_io.hpp"
@@ -31,6 +33,9 @@ struct RenderCliOptions {
   long long width = 0, height = 0;
   std::string frames, quality, shard, subtitles;
   bool quiet = false;
+  std::string from;          // --from FILE: an output that remembers its scene and job
+  bool noMetadata = false;   // --no-metadata
+  bool atGiven = false, framesGiven = false;  // by the flag, or by the job --from remembers
 };
 
 // Without --still: an animation (animation_job.hpp); 128 + signal when interrupted.
@@ -41,7 +46,7 @@ int runAnimation(const RenderCliOptions& o, const CLI::App& command) {
   a.scenePath = o.still.scenePath;
   a.overrides = o.still.overrides;
   a.output = o.output;
-  if (command.count("--frames") > 0) a.frames = o.frames;
+  if (o.framesGiven) a.frames = o.frames;
   if (command.count("--shard") > 0) a.shard = o.shard;
   if (command.count("--quality") > 0) a.quality = o.quality;
   if (command.count("--subtitles") > 0) a.sidecars = media::parseSidecarFormats(o.subtitles, "--subtitles");
@@ -50,15 +55,52 @@ int runAnimation(const RenderCliOptions& o, const CLI::App& command) {
   a.transparent = o.still.transparent;
   a.quiet = o.quiet;
   a.shaderDir = o.shaderDir;
+  a.sceneText = o.still.sceneText;
+  a.sceneName = o.still.sceneName;
+  a.metadata = !o.noMetadata;
   const AnimationResult result = renderAnimation(a);
   return result.interruptedBy != 0 ? 128 + result.interruptedBy : 0;
 }
 
+// --from FILE: the scene and the job the output remembers; the flags given
+// now win over the job's (another --at, --frames, size or -o).
+void takeRememberedJob(RenderCliOptions& o, const CLI::App& command) {
+  if (!o.still.scenePath.empty()) throw badInput({"--from " + o.from}, "give a scene or --from FILE, not both");
+  const RememberedOutput remembered = readRememberedOutput(o.from);
+  o.still.sceneText = remembered.metadata.scene;
+  o.still.scenePath = remembered.sourceName;
+  o.still.sceneName = remembered.sceneName;
+  if (o.output.empty()) {  // the same format, under the job's default name
+    std::filesystem::create_directories("output");
+    o.output = (std::filesystem::path("output") / remembered.sceneName).string() +
+               asciiLowercase(std::filesystem::path(o.from).extension().string());
+  }
+  if (!remembered.job) return;
+  const JobRecord& job = *remembered.job;
+  if (job.kind != JobRecord::Kind::Clip) {
+    o.stillFlag = true;
+    if (!o.atGiven && job.at) {
+      o.at = *job.at;
+      o.atGiven = true;
+    }
+    o.still.figureLayout = job.figureLayout;
+  } else if (!o.stillFlag && !o.framesGiven && command.count("--shard") == 0 && job.frames) {
+    o.frames = *job.frames;
+    o.framesGiven = true;
+  }
+}
+
 int runRender(RenderCliOptions& o, const CLI::App& command) {
+  o.still.metadata = !o.noMetadata;
+  o.atGiven = command.count("--at") > 0;
+  o.framesGiven = command.count("--frames") > 0;
+  if (!o.from.empty()) takeRememberedJob(o, command);
+  else if (o.still.scenePath.empty())
+    throw badInput({"render"}, "give a scene file (or a bundled scene's name), or --from FILE");
   if (!o.stillFlag) return runAnimation(o, command);
   for (const char* animationOnly : {"--frames", "--shard", "--quality", "--subtitles"})
     if (command.count(animationOnly) > 0) throw badInput({animationOnly}, "applies to animations only (without --still)");
-  if (command.count("--at") > 0) o.still.at = o.at;
+  if (o.atGiven) o.still.at = o.at;
   if (command.count("--width") > 0) o.still.width = o.width;
   if (command.count("--height") > 0) o.still.height = o.height;
   o.still.output = o.output;
@@ -264,8 +306,13 @@ void registerRenderCommands(CLI::App& cli, CommandHandler& handler) {
   CLI::App* render =
       cli.add_subcommand("render", "Render a scene: a clip (MP4, WebM, MOV, GIF or PNG frames), or with --still an "
                                    "image (PNG, JPEG) or a figure (PDF, SVG)");
-  render->add_option("scene", options->still.scenePath, "Scene file (TOML), or a bundled scene's name (rollspin scenes)")
-      ->required();
+  render->add_option("scene", options->still.scenePath,
+                     "Scene file (TOML), or a bundled scene's name (rollspin scenes); or give --from FILE");
+  render->add_option("--from", options->from,
+                     "Render again what an output rollspin wrote remembers: its scene and its job (a still as a "
+                     "still at its --at, a figure as a figure, a clip as a clip); flags given now win");
+  render->add_flag("--no-metadata", options->noMetadata,
+                   "Leave the scene, the job, the version and the description out of the output");
   render->add_flag("--still", options->stillFlag, "Render one still image");
   render->add_option("--at", options->at, "Where: s=ARC_LENGTH or fraction=F (default: fraction=0.5)");
   render->add_option("-o,--output", options->output,

@@ -16,6 +16,7 @@
 #include "app/figure_job.hpp"
 #include "app/flag_overrides.hpp"
 #include "app/job_setup.hpp"
+#include "app/remembered_output.hpp"
 #include "motion/frame_poses.hpp"
 #include "media/h264_levels.hpp"
 #include "media/image_io.hpp"
@@ -182,7 +183,7 @@ render::DrawList drawStill(const DrawJob& job, const std::optional<std::string>&
 
 std::filesystem::path renderStill(const StillOptions& o) {
   DrawJob job = prepareDrawJob({o.scenePath, o.overrides, {}, o.width, o.height, o.transparent, o.output,
-                                media::OutputUse::Still});
+                                media::OutputUse::Still, 0, o.sceneText, o.sceneName});
   const media::OutputFormat& format = *job.format;
   const auto figure = figureFormatOf(format);  // PDF/SVG: drawn by the vector backend (figure_job.hpp)
   if (figure) checkFigureSpec(job.spec);
@@ -190,7 +191,15 @@ std::filesystem::path renderStill(const StillOptions& o) {
     throw badInput({"--layout-json"}, "applies to a figure (-o FILE.pdf or FILE.svg) only");
   // A figure's text is laid out for its printed size; a PNG still of a
   // scene that sets [figure] keys keeps the same composition, scaled.
-  if (figure || setsFigureKeys(job.spec)) fitTextToFigure(job.spec);
+  const bool figureLayout = o.figureLayout.value_or(setsFigureKeys(job.spec));
+  // Recorded before the layout below changes the spec: loading the scene
+  // and laying it out again gives the same.
+  const std::optional<media::OutputMetadata> metadata =
+      o.metadata ? std::optional(outputMetadata(job.spec, job.model,
+                                                {figure ? JobRecord::Kind::Figure : JobRecord::Kind::Still,
+                                                 job.spec.name, o.at, std::nullopt, figureLayout}))
+                 : std::nullopt;
+  if (figure || figureLayout) fitTextToFigure(job.spec);
   const scene::SceneSpec& spec = job.spec;
 
   // output/ is made only once the still is drawn (--at and the texture checked) and about to be written.
@@ -198,7 +207,7 @@ std::filesystem::path renderStill(const StillOptions& o) {
   const render::DrawList list = drawStill(job, o.at);
   if (figure) {
     createOutputParent(out);
-    writeFigureStill(spec, list, out, *figure, o.shaderDir);
+    writeFigureStill(spec, list, out, *figure, o.shaderDir, metadata ? &*metadata : nullptr);
     if (!o.layoutJson.empty()) {
       AtomicFile json(o.layoutJson);
       json.write(render::figureLayoutJson(render::figureLayout(list, figureStyleOf(spec, list))));
@@ -211,7 +220,9 @@ std::filesystem::path renderStill(const StillOptions& o) {
   const media::Image image = gl.renderer.render(list);
   StageLog::instance().record(std::string(format.name));
   createOutputParent(out);
-  const auto sink = media::openSink(format, sinkOptions(spec, out));
+  media::SinkOptions sinkOpts = sinkOptions(spec, out);
+  sinkOpts.metadata = metadata;
+  const auto sink = media::openSink(format, sinkOpts);
   sink->write(image.view());
   return sink->finish();
 }

@@ -48,6 +48,12 @@ struct StillOptions {
   // With a figure output: also writes its layout (render::figureLayoutJson:
   // plates, text boxes, arrows and paths in page points) to this file.
   std::filesystem::path layoutJson;
+  // --from an output (remembered_output.hpp): the scene's text, its name and
+  // the job's figure layout (nullopt: the scene's [figure] keys decide).
+  std::optional<std::string> sceneText;
+  std::string sceneName;
+  std::optional<bool> figureLayout;
+  bool metadata = true;  // false: --no-metadata
 };
 
 // Renders one still and writes it; returns the path written.

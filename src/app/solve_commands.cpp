@@ -33,6 +33,7 @@ struct SolveOptions {
   std::vector<std::string> overrides;
   bool json = false;
   bool print = false;
+  bool commentHeader = false;  // timeline: the '#' line above the CSV's header row
   std::string output;
 };
 
@@ -88,7 +89,10 @@ int runSolve(const SolveOptions& o) {
 }
 
 int runTimeline(const SolveOptions& o) {
-  if (!o.output.empty()) checkOutputFile(o.output, {"-o " + o.output});  // before the solve, not after
+  if (!o.output.empty()) {  // before the solve, not after
+    checkOutputFile(o.output, {"-o " + o.output});  // a folder, a missing folder: said first
+    (void)timelineFormatOf(o.output, {"-o " + o.output});
+  }
   const scene::SceneSpec spec = loadScene(o.scenePath, o.overrides);
   const RollingModel model = buildSceneModel(spec);
   SolverChoice choice = chooseSolver(spec, model);
@@ -98,15 +102,10 @@ int runTimeline(const SolveOptions& o) {
   const spin::SampleArcLengths samples = timelineArcLengths(spec, model);
   const std::filesystem::path out = o.output.empty() ? defaultOutputFile(spec.name + ".csv") : std::filesystem::path(o.output);
   createOutputParent(out);  // output/: only now, with the timeline solved
-  const spin::SolveStats stats = writeTimelineCsv(out, model, choice, samples, solved);
+  const spin::SolveStats stats =
+      writeTimelineFile(out, model, choice, samples, solved, {scene::writeScene(spec), o.commentHeader});
   std::fprintf(stderr, "rollspin: wrote %zu samples to %s (%s, %lld steps, %.3g s)\n", samples.size(),
                out.string().c_str(), std::string(spin::methodName(choice.method)).c_str(), stats.steps, stats.seconds);
-  return 0;
-}
-
-// The resolved scene, with what the engine derives noted beside the keys.
-int runScenePrint(const SolveOptions& o) {
-  fmt::print("{}", resolvedSceneText(o.scenePath, loadScene(o.scenePath, o.overrides)));
   return 0;
 }
 
@@ -121,17 +120,17 @@ void registerSolveCommands(CLI::App& cli, CommandHandler& handler) {
   solve->add_flag("--json", options->json, "Print JSON");
   solve->callback([options, &handler] { handler = [options] { return runSolve(*options); }; });
 
-  CLI::App* timeline = cli.add_subcommand("timeline", "Write the orientation timeline as CSV");
+  CLI::App* timeline = cli.add_subcommand("timeline", "Write the orientation timeline as CSV (with a NAME.csv.json "
+                                                      "sidecar), JSON, or numpy's .npy/.npz");
   timeline->add_option("scene", options->scenePath, "Scene file (TOML), or a bundled scene's name (rollspin scenes)")->required();
   timeline->add_option("--set", options->overrides, "Override a scene key: --set key.sub=value (repeatable)");
-  timeline->add_option("-o,--output", options->output, "Output CSV (default: output/<scene>.csv)");
+  timeline->add_option("-o,--output", options->output,
+                       "Output: its extension picks the format, .csv, .json, .npy or .npz (default: output/<scene>.csv)");
+  timeline->add_flag("--comment-header", options->commentHeader,
+                     "CSV: put the '# rollspin timeline: method, steps, error estimate' line above the header row");
   timeline->callback([options, &handler] { handler = [options] { return runTimeline(*options); }; });
 
-  CLI::App* sceneCmd = cli.add_subcommand("scene", "Show a scene as the engine will run it");
-  sceneCmd->add_option("scene", options->scenePath, "Scene file (TOML), or a bundled scene's name (rollspin scenes)")->required();
-  sceneCmd->add_option("--set", options->overrides, "Override a scene key: --set key.sub=value (repeatable)");
-  sceneCmd->add_flag("--print", options->print, "Print the fully resolved scene as TOML")->required();
-  sceneCmd->callback([options, &handler] { handler = [options] { return runScenePrint(*options); }; });
+  // `scene` is registered by registerSceneCommand (scene_command.cpp): it reads outputs too.
 }
 
 }  // namespace rollspin::app

@@ -63,38 +63,4 @@ spin::SolveStats sampleTimeline(const RollingModel& model, const SolverChoice& c
   return stats;
 }
 
-spin::SolveStats writeTimelineCsv(const std::filesystem::path& out, const RollingModel& model,
-                                  const SolverChoice& choice, const spin::SampleArcLengths& sampleS,
-                                  const spin::SolveStats& solved) {
-  AtomicFile file(out);
-  fmt::memory_buffer buffer;
-  // A skipped estimate (solver.error_estimate = false) is NaN: say so, not "nan rad".
-  if (std::isnan(solved.errorEstimate))
-    fmt::format_to(std::back_inserter(buffer), "# rollspin timeline: {} with {} steps; error estimate of U(L) {} (the solve {:.3g} s)\n",
-                   spin::methodName(choice.method), solved.steps, solved.errorEstimateBasis, solved.seconds);
-  else
-    fmt::format_to(std::back_inserter(buffer),
-                   "# rollspin timeline: {} with {} steps; error estimate of U(L) {:.2g} rad ({}; took {:.3g} s, "
-                   "the solve {:.3g} s)\n",
-                   spin::methodName(choice.method), solved.steps, solved.errorEstimate, solved.errorEstimateBasis,
-                   solved.errorEstimateSeconds, solved.seconds);
-  const bool segments = timelineHasSegments(model), surfaces = timelineHasSurfaces(model);
-  fmt::format_to(std::back_inserter(buffer), "{}{}{}\n", fmt::join(kTimelineColumns, ","), segments ? ",segment" : "",
-                 surfaces ? ",surface" : "");
-  // Rows are formatted into a buffer and handed to the file in ~1 MiB chunks.
-  const spin::SolveStats stats = sampleTimeline(model, choice, sampleS, [&](std::size_t, const TimelineRow& row) {
-    fmt::format_to(std::back_inserter(buffer), "{:.17g}", fmt::join(row.values, ","));
-    if (segments) fmt::format_to(std::back_inserter(buffer), ",{}", row.segment);
-    if (surfaces) fmt::format_to(std::back_inserter(buffer), ",{}", row.surface);
-    buffer.push_back('\n');
-    if (buffer.size() > (1u << 20)) {
-      file.write({buffer.data(), buffer.size()});
-      buffer.clear();
-    }
-  }, out.string());
-  file.write({buffer.data(), buffer.size()});
-  file.commit();
-  return stats;
-}
-
 }  // namespace rollspin::app

@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
+
 struct AVFormatContext;
 struct AVDictionary;
 
@@ -63,6 +65,11 @@ struct FramesRetag {
 // old one; EBML strings may end in zero bytes, which readers drop). False
 // when the old value is not found exactly once.
 bool patchMatroskaFramesTag(const std::filesystem::path& path, const std::string& oldValue, const std::string& value);
+
+// Every file-level tag of the media file at `path` (keys in lower case), for
+// `--from`: BadInput at `where` when libavformat cannot open it.
+[[nodiscard]] std::map<std::string, std::string> readContainerMetadata(const std::filesystem::path& path,
+                                                                       const SourceLoc& where);
 
 // Lower-case hex SHA-256 of `text` (libavutil's implementation).
 [[nodiscard]] std::string sha256Hex(const std::string& text);

@@ -6,7 +6,10 @@
 
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "media/sink_factory.hpp"
 
@@ -207,7 +210,17 @@ std::filesystem::path GifWriter::finish() {
     g.flushed = true;
     drain(g.frameIn, g.frameOut, g.converted.get(), [this](AVFrame* f) { writeConverted(f); });
   }
-  return VideoWriter::finish();
+  const std::filesystem::path written = VideoWriter::finish();
+  // The muxer writes no comments: they go in before the trailer, and the
+  // file is replaced whole (a temporary, then a rename).
+  if (g.settings.metadata) {
+    std::ifstream in(written, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    AtomicFile out(written);
+    out.write(withGifMetadata(bytes, *g.settings.metadata));
+    out.commit();
+  }
+  return written;
 }
 
 std::filesystem::path GifWriter::finishPartial() {
@@ -227,6 +240,7 @@ std::unique_ptr<FrameSink> openGifSink(const SinkOptions& o) {
   s.fpsDen = o.fpsDen;
   s.loop = o.loop;
   s.alpha = o.alpha;
+  s.metadata = o.metadata;
   return std::make_unique<GifWriter>(o.path, s);
 }
 

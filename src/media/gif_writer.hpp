@@ -12,9 +12,12 @@
 // pixel is transparent below alpha 128.
 #pragma once
 
+#include <optional>
+
 #include <filesystem>
 #include <memory>
 
+#include "media/output_metadata.hpp"
 #include "media/video_writer.hpp"
 
 namespace rollspin::media {
@@ -24,6 +27,8 @@ struct GifSettings {
   int fpsNum = 25, fpsDen = 1;
   bool loop = true;
   bool alpha = false;
+  // Comment extensions added when finished (output_metadata.hpp); a partial GIF has none.
+  std::optional<OutputMetadata> metadata;
 };
 
 class GifWriter final : public VideoWriter {

@@ -37,7 +37,8 @@ std::vector<std::uint8_t> packRows(const ImageView& image, int comp) {
 }
 }  // namespace
 
-void writePng(const std::filesystem::path& file, const ImageView& image, PngChannels channels) {
+void writePng(const std::filesystem::path& file, const ImageView& image, PngChannels channels,
+              const OutputMetadata* metadata) {
   const int comp = channels == PngChannels::Rgba ? 4 : 3;
   const std::vector<std::uint8_t> packed = packRows(image, comp);
   std::string bytes;
@@ -45,16 +46,19 @@ void writePng(const std::filesystem::path& file, const ImageView& image, PngChan
                              image.width * comp) == 0) {
     throw runtimeError({file.string()}, "PNG encoding failed ({}x{})", image.width, image.height);
   }
+  if (metadata) bytes = withPngMetadata(bytes, *metadata);
   AtomicFile out(file);
   out.write(bytes);
   out.commit();
 }
 
-void writeJpeg(const std::filesystem::path& file, const ImageView& image, int quality) {
+void writeJpeg(const std::filesystem::path& file, const ImageView& image, int quality,
+               const OutputMetadata* metadata) {
   const std::vector<std::uint8_t> packed = packRows(image, 3);
   std::string bytes;
   if (stbi_write_jpg_to_func(appendBytes, &bytes, image.width, image.height, 3, packed.data(), quality) == 0)
     throw runtimeError({file.string()}, "JPEG encoding failed ({}x{})", image.width, image.height);
+  if (metadata) bytes = withJpegMetadata(bytes, *metadata);
   AtomicFile out(file);
   out.write(bytes);
   out.commit();

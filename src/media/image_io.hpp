@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "media/image_view.hpp"
+#include "media/output_metadata.hpp"
 
 namespace rollspin::media {
 
@@ -16,11 +17,14 @@ enum class PngChannels { Rgb, Rgba };
 
 // Writes a PNG; Rgb drops the alpha channel. Deterministic: the same pixels
 // give the same bytes. Throws Error (Runtime) when the file cannot be written.
-void writePng(const std::filesystem::path& file, const ImageView& image, PngChannels channels = PngChannels::Rgb);
+// `metadata`: also the iTXt chunks of output_metadata.hpp (null: none).
+void writePng(const std::filesystem::path& file, const ImageView& image, PngChannels channels = PngChannels::Rgb,
+              const OutputMetadata* metadata = nullptr);
 
 // Writes a baseline JPEG (no alpha: it is dropped) at `quality` in [1, 100],
 // through AtomicFile like writePng.
-void writeJpeg(const std::filesystem::path& file, const ImageView& image, int quality);
+void writeJpeg(const std::filesystem::path& file, const ImageView& image, int quality,
+               const OutputMetadata* metadata = nullptr);
 
 // Loads a PNG or JPG as RGBA (top-down). A missing, unreadable or corrupt
 // file throws Error (BadInput) at `where` (the scene key that named it).

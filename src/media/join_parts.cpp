@@ -48,6 +48,7 @@ struct Part {
   std::string name;  // as given on the command line, for messages
   std::string extension;
   ContainerTags tags;
+  std::map<std::string, std::string> metadata;  // every tag (the scene a part remembers, app/remembered_output.hpp)
   std::unique_ptr<AVCodecParameters, ParametersFreer> codec;
   std::unique_ptr<AVCodecParameters, ParametersFreer> subtitleCodec;  // null: no subtitle track
   std::vector<InBandCue> cues;  // the part's captions, in its own frames
@@ -106,7 +107,8 @@ Part inspectPart(const fs::path& path) {
   part.extension = asciiLowercase(path.extension().string());
   const Input input = openPart(path, part.loc());
   std::string why;
-  const auto tags = parseContainerTags(metadataOf(*input), &why);
+  part.metadata = metadataOf(*input);
+  const auto tags = parseContainerTags(part.metadata, &why);
   if (!tags) throw badInput(part.loc(), "{}; render parts with `rollspin render --shard K/N` (or --frames A:B)", why);
   part.tags = *tags;
 
@@ -399,6 +401,19 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
   if (av_opt_find(out.format->priv_data, "movflags", nullptr, 0, 0) != nullptr)
     av_dict_set(&options, "movflags", out.direct ? "+write_colr" : "+faststart+write_colr", 0);
   applyContainerTags(out.format, whole, &options);
+  // What the parts remember (their scene, description, job) goes on; the
+  // job then holds the whole clip, so its "frames:" line (a part's) goes.
+  for (const auto& [key, value] : ref.metadata) {
+    if (key.rfind("rollspin_", 0) == 0 && av_dict_get(out.format->metadata, key.c_str(), nullptr, 0) != nullptr) continue;
+    std::string kept;
+    for (std::size_t at = 0; at < value.size();) {
+      const std::size_t end = std::min(value.find('\n', at), value.size());
+      if (key != "rollspin_job" || value.compare(at, 8, "frames: ") != 0) kept += value.substr(at, end - at + 1);
+      at = end + 1;
+    }
+    if (key != "encoder" && key != "major_brand" && key != "minor_version" && key != "compatible_brands")
+      av_dict_set(&out.format->metadata, key.c_str(), kept.c_str(), 0);
+  }
   if (const int ret = avio_open(&out.format->pb, url.c_str(), AVIO_FLAG_WRITE); ret < 0) {
     av_dict_free(&options);
     out.format->pb = nullptr;
@@ -473,6 +488,16 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
   summary.fpsDen = ref.frameRate.den;
   summary.cues = captions.cues();
   return summary;
+}
+
+std::map<std::string, std::string> readContainerMetadata(const fs::path& path, const SourceLoc& where) {
+  AVFormatContext* raw = nullptr;
+  const std::string url = "file:" + path.string();
+  if (const int ret = avformat_open_input(&raw, url.c_str(), nullptr, nullptr); ret < 0)
+    throw badInput(where, "'{}' is not an image, figure or video rollspin can read: {}", path.string(),
+                   av::errorText(ret));
+  const Input input(raw);
+  return metadataOf(*input);
 }
 
 }  // namespace rollspin::media

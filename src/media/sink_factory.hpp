@@ -11,6 +11,7 @@
 
 #include "media/frame_sink.hpp"
 #include "media/output_format.hpp"
+#include "media/output_metadata.hpp"
 #include "media/video_writer.hpp"
 
 namespace rollspin::media {
@@ -30,6 +31,7 @@ struct SinkOptions {
   OptionList containerMetadata;  // file-level tags of video containers (VideoSettings)
   SubtitleCues subtitles;        // MP4, WebM, MOV: the captions' track (VideoSettings), in this file's frames
   bool subtitlesByDefault = false;  // the track shows unasked (when the pixels carry no captions)
+  std::optional<OutputMetadata> metadata;  // stills and GIF: written into the file (none: --no-metadata)
 };
 
 // Opens the sink of `format`. Throws Error like the sink's constructor;

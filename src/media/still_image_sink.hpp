@@ -17,7 +17,9 @@ enum class StillEncoding { Png, Jpeg };
 class StillImageSink final : public FrameSink {
  public:
   // `alpha`: keep the alpha channel (PNG only); `jpegQuality` in [1, 100].
-  StillImageSink(std::filesystem::path file, StillEncoding encoding, bool alpha, int jpegQuality);
+  // `metadata`: written into the file (output_metadata.hpp); nullopt: none.
+  StillImageSink(std::filesystem::path file, StillEncoding encoding, bool alpha, int jpegQuality,
+                 std::optional<OutputMetadata> metadata = std::nullopt);
 
   void write(const ImageView& frame) override;  // a second frame is a Runtime error
   std::filesystem::path finish() override;
@@ -30,6 +32,7 @@ class StillImageSink final : public FrameSink {
   bool alpha_;
   int jpegQuality_;
   std::optional<Image> image_;
+  std::optional<OutputMetadata> metadata_;
 };
 
 }  // namespace rollspin::media

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <ctime>
 #include <exception>
 #include <map>
 #include <memory>
@@ -370,11 +371,14 @@ bool overlap(const View& a, const View& b) {
 struct StreamSink {
   AtomicFile* file = nullptr;
   std::exception_ptr error;
+  std::string* bytes = nullptr;  // when set, collected here instead (metadata is added to them)
 };
 cairo_status_t writeToSink(void* closure, const unsigned char* data, unsigned int length) {
   auto* sink = static_cast<StreamSink*>(closure);
   try {
-    sink->file->write(std::string_view(reinterpret_cast<const char*>(data), length));
+    const std::string_view piece(reinterpret_cast<const char*>(data), length);
+    if (sink->bytes) sink->bytes->append(piece);
+    else sink->file->write(piece);
     return CAIRO_STATUS_SUCCESS;
   } catch (...) {
     sink->error = std::current_exception();
@@ -424,7 +428,7 @@ void hideBehindOpaque(media::Image& translucent, const std::vector<float>& trans
 
 
 void writeFigure(const std::filesystem::path& out, FigureFormat format, const DrawList& list,
-                 const FigureRasters& rasters, const FigureStyle& style) {
+                 const FigureRasters& rasters, const FigureStyle& style, const media::OutputMetadata* metadata) {
   // Figure units are the DrawList's pixels, scaled onto the physical page.
   const double unit = style.widthPt / list.width;
   const double heightPt = unit * list.height;
@@ -432,11 +436,21 @@ void writeFigure(const std::filesystem::path& out, FigureFormat format, const Dr
   const double ky = rasters.height > 0 ? double(rasters.height) / list.height : 1.0;
 
   AtomicFile file(out);
-  StreamSink sink{&file, nullptr};
+  std::string bytes;
+  StreamSink sink{&file, nullptr, metadata ? &bytes : nullptr};
   cairo_surface_t* surface =
       format == FigureFormat::Pdf ? cairo_pdf_surface_create_for_stream(writeToSink, &sink, style.widthPt, heightPt)
                                   : cairo_svg_surface_create_for_stream(writeToSink, &sink, style.widthPt, heightPt);
   if (format == FigureFormat::Pdf) cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "rollspin");
+  // Reproducible builds: a fixed creation date instead of cairo's clock.
+  if (const auto epoch = media::sourceDateEpoch(); epoch && format == FigureFormat::Pdf) {
+    const std::time_t t = static_cast<std::time_t>(*epoch);
+    std::tm utc{};
+    gmtime_r(&t, &utc);
+    const std::string date = fmt::format("{:04}-{:02}-{:02}T{:02}:{:02}:{:02}", utc.tm_year + 1900, utc.tm_mon + 1,
+                                         utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec);
+    cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, date.c_str());
+  }
   if (format == FigureFormat::Svg) cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PT);
   cairo_t* cr = cairo_create(surface);
   cairo_scale(cr, unit, unit);
@@ -535,6 +549,9 @@ void writeFigure(const std::filesystem::path& out, FigureFormat format, const Dr
   if (sink.error) std::rethrow_exception(sink.error);
   if (status != CAIRO_STATUS_SUCCESS)
     throw runtimeError({out.string()}, "cairo could not write the figure: {}", cairo_status_to_string(status));
+  if (metadata)
+    file.write(format == FigureFormat::Pdf ? media::withPdfMetadata(bytes, *metadata)
+                                           : media::withSvgMetadata(bytes, *metadata));
   file.commit();
 }
 

@@ -15,6 +15,7 @@
 
 #include "core/error.hpp"
 #include "media/image_view.hpp"
+#include "media/output_metadata.hpp"
 #include "render/draw_list.hpp"
 
 namespace rollspin::render {
@@ -97,7 +98,10 @@ struct FigureLayout {
 
 // Writes the figure (temporary name, then rename). Runtime error when cairo
 // cannot write it.
+// `metadata`: also the title, description and scene (media/output_metadata.hpp;
+// null: none). SOURCE_DATE_EPOCH, when set, is the PDF's creation date.
 void writeFigure(const std::filesystem::path& out, FigureFormat format, const DrawList& list,
-                 const FigureRasters& rasters, const FigureStyle& style);
+                 const FigureRasters& rasters, const FigureStyle& style,
+                 const media::OutputMetadata* metadata = nullptr);
 
 }  // namespace rollspin::render

@@ -21,7 +21,6 @@ std::vector<std::vector<std::string>> readCsv(const std::filesystem::path& p) {
   std::vector<std::vector<std::string>> rows;
   std::string line;
   while (std::getline(in, line)) {
-    if (line.starts_with('#')) continue;  // the header comment (method, steps, error estimate)
     std::vector<std::string> cells;
     std::stringstream ss(line);
     std::string cell;
@@ -188,9 +187,21 @@ TEST(Cli, ErrorEstimateCanBeSkippedByItsKey) {
   const auto tl = runRollspin({"timeline", scenePath("lollipop.toml"), "-o", out.string(), "--set",
                                "solver.error_estimate=false"});
   ASSERT_EQ(tl.exitCode, 0) << tl.err;
+  // The CSV starts with its header row; the estimate is in the sidecar, and
+  // in the '#' line above the header row with --comment-header.
   std::ifstream in(out);
   std::string header;
   std::getline(in, header);
+  EXPECT_TRUE(header.starts_with("s,px,py,pz,")) << header;
+  const std::string sidecar = rollspin::test::readFile(out.string() + ".json");
+  EXPECT_NE(sidecar.find("\"error_estimate\": null"), std::string::npos) << sidecar;
+  EXPECT_NE(sidecar.find("\"error_estimate_basis\": \"skipped"), std::string::npos) << sidecar;
+  const auto commented = runRollspin({"timeline", scenePath("lollipop.toml"), "-o", out.string(), "--set",
+                                      "solver.error_estimate=false", "--comment-header"});
+  ASSERT_EQ(commented.exitCode, 0) << commented.err;
+  std::ifstream again(out);
+  std::getline(again, header);
+  EXPECT_NE(header.find("# rollspin timeline:"), std::string::npos) << header;
   EXPECT_NE(header.find("error estimate of U(L) skipped"), std::string::npos) << header;
   const auto bad = runRollspin({"solve", scenePath("lollipop.toml"), "--set", "solver.error_estimate=1"});
   EXPECT_EQ(bad.exitCode, 2);

@@ -24,7 +24,6 @@ TEST(StartAzimuthCli, ATorusParallelsTimelineStartsAtTheGivenAzimuth) {
   std::istringstream rows(readFile(csv));
   std::string header, first;
   std::getline(rows, header);
-  if (header.rfind('#', 0) == 0) std::getline(rows, header);  // the solve's comment line (error estimate)
   std::getline(rows, first);
   ASSERT_EQ(header.rfind("s,px,py,pz,", 0), 0u) << header;
   double s = 0, px = 0, py = 0;

@@ -92,9 +92,10 @@ std::string viewerHtml(const DrawJob& job, const std::string& sourceName) {
   StageLog::instance().record("viewer-glb");
   const std::string version = fmt::format("rollspin {}", ROLLSPIN_VERSION);
   const std::string sceneText = resolvedSceneText(sourceName, spec);
-  // The page carries the scene once, in its own <script>: not again in the GLB's extras.
+  // The meshes only: the page poses the nodes from its own timeline, and the
+  // animation's keys (dense, for slerp to 1e-6 rad) would be most of its bytes.
   const std::vector<std::uint8_t> glb =
-      gltf::exportGlb({&spec, &job.model, loadBallTexture(spec), version, sceneText, false});
+      gltf::exportGlb({&spec, &job.model, loadBallTexture(spec), version, sceneText, false, false});
   StageLog::instance().record("viewer-timeline");
   // The step count `rollspin timeline` uses: the scene's solve refines an automatic one.
   motion::SolverChoice choice = motion::chooseSolver(spec, job.model);

@@ -375,6 +375,16 @@ class Scene:
                 + (f"; wrote a shorter clip {written}" if written else "; nothing written"))
         return clip
 
+    def viewer(self, height: int = 560) -> "Viewer":
+        """The interactive web viewer (``rollspin render SCENE -o NAME.html``), inline in a notebook.
+
+        The same page as the CLI's, made by the same C++ job: the ball and its
+        Bloch-sphere twin side by side, a scrubber over arc length, chapters.
+        Shown in an iframe of `height` pixels; ``.html`` is the page itself and
+        ``.save(path)`` writes it.
+        """
+        return Viewer(_core.viewer_html(self._core), height)
+
     def explore(self, width: int = 640, height: int = 360) -> Any:
         """Sliders over s and the camera's azimuth that redraw the still (ipywidgets)."""
         from . import _notebook
@@ -585,6 +595,31 @@ class Clip:
 
     def __repr__(self) -> str:
         return f"<rollspin.Clip {self.path} ({self.frames_written} of {self.frames_requested} frames)>"
+
+
+class Viewer:
+    """A scene's web viewer page; shown inline in a notebook (``_repr_html_``: an iframe, no extra dependency)."""
+
+    def __init__(self, page: str, height: int = 560) -> None:
+        self.html = page
+        self.height = int(height)
+
+    def save(self, path: PathLike) -> Path:
+        """Writes the page (one self-contained file; it opens from file:// with no network)."""
+        from pathlib import Path
+        out = Path(path)
+        temporary = out.with_name(f".{out.name}.{os.getpid()}.tmp")
+        temporary.write_text(self.html, encoding="utf-8")
+        temporary.replace(out)
+        return out
+
+    def _repr_html_(self) -> str:
+        import html
+        return (f'<iframe srcdoc="{html.escape(self.html, quote=True)}" style="width: 100%; height: {self.height}px; '
+                'border: 0" allow="fullscreen" title="rollspin web viewer"></iframe>')
+
+    def __repr__(self) -> str:
+        return f"<rollspin.Viewer ({len(self.html)} bytes)>"
 
 
 def load_ipython_extension(ipython: Any) -> None:

@@ -55,6 +55,7 @@ def _magic_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="%%rollspin", add_help=True,
                                      description="Render the cell (a scene in TOML) and show it.")
     parser.add_argument("--still", action="store_true", help="one still image instead of a clip")
+    parser.add_argument("--viewer", action="store_true", help="the interactive web viewer instead of a clip")
     parser.add_argument("--at", help="with --still: s=ARC_LENGTH or fraction=F")
     parser.add_argument("-o", "--output", help="output file (default: rollspin_media/<name>.mp4 or .png)")
     parser.add_argument("--width", type=int)
@@ -69,7 +70,7 @@ def _magic_parser() -> argparse.ArgumentParser:
 
 
 def rollspin_magic(line: str, cell: str) -> Any:
-    """%%rollspin [options]: the cell is a scene (TOML); shows the clip, or the still with --still."""
+    """%%rollspin [options]: the cell is a scene (TOML); shows the clip, the still with --still, the viewer with --viewer."""
     from IPython.display import display
     parser = _magic_parser()
     try:
@@ -80,6 +81,12 @@ def rollspin_magic(line: str, cell: str) -> Any:
     if args.set:
         # Each --set exactly as on the command line (TOML value, or a bare word as a string).
         scene = rollspin.Scene(scene._core.with_overrides(list(args.set)))
+    if args.viewer:
+        viewer = scene.viewer()
+        if args.output:
+            viewer.save(args.output)
+        display(viewer)
+        return None
     if args.still:
         image = scene.still(args.at, width=args.width, height=args.height, transparent=args.transparent)
         if args.output:

@@ -39,6 +39,7 @@
 #include "app/render_jobs.hpp"
 #include "app/scene_print.hpp"
 #include "app/timeline_csv.hpp"
+#include "app/viewer_job.hpp"
 #include "core/error.hpp"
 #include "core/temp_files.hpp"
 #include "media/image_io.hpp"
@@ -411,6 +412,18 @@ py::tuple renderClip(const std::shared_ptr<const Scene>& scene, const fs::path& 
   return py::make_tuple(result.written.string(), result.framesWritten, result.framesRequested, result.interruptedBy);
 }
 
+// The web viewer's page through the CLI's job (app/viewer_job.hpp): the same
+// GLB, timeline and page as `rollspin render SCENE -o NAME.html`.
+std::string viewerHtml(const std::shared_ptr<const Scene>& scene) {
+  py::gil_scoped_release release;
+  app::DrawJobRequest request;
+  request.scenePath = scene->source().name;
+  request.sceneText = scene->source().text;
+  request.overrides = scene->source().overrides;
+  request.use = media::OutputUse::Animation;
+  return app::viewerHtml(app::prepareDrawJob(request), scene->source().name);
+}
+
 // rollspin::Error → rollspin.SceneError / rollspin.RollspinError with the
 // CLI's message (what main() prints after "rollspin: error: ").
 void translateErrors() {
@@ -495,6 +508,7 @@ PYBIND11_MODULE(_rollspin, m) {
   m.def("render", &renderClip, py::arg("scene"), py::arg("output"), py::arg("frames") = std::nullopt,
         py::arg("quality") = std::nullopt, py::arg("width") = std::nullopt, py::arg("height") = std::nullopt,
         py::arg("transparent") = false, py::arg("quiet") = true, py::arg("on_frame") = py::none());
+  m.def("viewer_html", &viewerHtml, py::arg("scene"));
   m.def("drop_gl", [] {
           py::gil_scoped_release release;
           const std::lock_guard lock(sharedGl().mutex);

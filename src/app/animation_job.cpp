@@ -1,4 +1,5 @@
 #include "app/animation_job.hpp"
+#include "app/viewer_job.hpp"
 
 #include <fmt/format.h>
 #include <pthread.h>
@@ -83,6 +84,22 @@ class ImagePool : public std::enable_shared_from_this<ImagePool> {
   std::vector<std::unique_ptr<PooledImage>> free_;
 };
 
+// The web viewer (the "html" row): one page, no frames (viewer_job.hpp).
+AnimationResult writeViewerOutput(const DrawJob& job, const AnimationOptions& o) {
+  if (o.frames || o.shard)
+    throw badInput({o.frames ? "--frames " + *o.frames : "--shard " + *o.shard},
+                   "applies to clips, not to the web viewer (html), which holds the whole path");
+  fs::path out = o.output;
+  if (out.empty()) {
+    out = fs::path("output") / (job.spec.name + job.format->defaultExtension());
+    std::error_code ec;
+    fs::create_directories("output", ec);
+  }
+  writeViewerHtml(job, o.scenePath, out);
+  if (!o.quiet) std::fprintf(stderr, "rollspin: wrote %s\n", out.string().c_str());
+  return {out, 0, 0, 0};
+}
+
 }  // namespace
 
 const QualityPreset* findQualityPreset(const std::string& name) {
@@ -111,6 +128,7 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   const scene::SceneSpec& spec = job.spec;
   const media::OutputFormat& format = *job.format;
   const RollingModel& model = job.model;
+  if (format.kind == media::OutputKind::Viewer) return writeViewerOutput(job, o);
   const FrameClock clock = clipClock(spec, model);
   if (o.frames && o.shard) throw badInput({"--shard " + *o.shard}, "give --frames or --shard, not both");
   const std::optional<Shard> shard = o.shard ? std::optional(parseShard(*o.shard)) : std::nullopt;

@@ -1,6 +1,10 @@
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -35,6 +39,7 @@ struct SolveOptions {
   bool print = false;
   bool commentHeader = false;  // timeline: the '#' line above the CSV's header row
   std::string output;
+  std::string atS;  // timeline --at-s FILE: the arc lengths to sample, one a line
 };
 
 // JSON has no inf or NaN: an estimate that could not be made is null.
@@ -88,6 +93,29 @@ int runSolve(const SolveOptions& o) {
   return 0;
 }
 
+// `timeline --at-s FILE`: the arc lengths in FILE (numbers separated by
+// white space; '#' starts a comment), sorted, each in [0, length]; a bad one
+// is BadInput at FILE:line.
+std::vector<double> readArcLengths(const std::string& path, double length) {
+  std::ifstream in(path);
+  if (!in) throw badInput({"--at-s " + path}, "cannot read the file");
+  std::vector<double> arcs;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    std::istringstream words(line.substr(0, line.find('#')));
+    for (std::string word; words >> word;) {
+      double s = 0.0;
+      const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), s);
+      if (ec != std::errc() || end != word.data() + word.size() || !(s >= 0.0 && s <= length))
+        throw badInput(SourceLoc{path, number, 1}, "expected an arc length in [0, {:.17g}], got '{}'", length, word);
+      arcs.push_back(s);
+    }
+  }
+  if (arcs.empty()) throw badInput({"--at-s " + path}, "the file holds no arc length");
+  std::sort(arcs.begin(), arcs.end());
+  return arcs;
+}
+
 int runTimeline(const SolveOptions& o) {
   if (!o.output.empty()) {  // before the solve, not after
     checkOutputFile(o.output, {"-o " + o.output});  // a folder, a missing folder: said first
@@ -99,7 +127,9 @@ int runTimeline(const SolveOptions& o) {
   StageLog::instance().record("solver");
   const spin::SolveStats solved = solveScene(spec, model, choice);
   StageLog::instance().record("timeline-csv");
-  const spin::SampleArcLengths samples = timelineArcLengths(spec, model);
+  std::vector<double> atS;  // --at-s: the file's arc lengths instead of the scene's sampling
+  if (!o.atS.empty()) atS = readArcLengths(o.atS, model.path->length());
+  const spin::SampleArcLengths samples = atS.empty() ? timelineArcLengths(spec, model) : spin::SampleArcLengths(atS);
   const std::filesystem::path out = o.output.empty() ? defaultOutputFile(spec.name + ".csv") : std::filesystem::path(o.output);
   createOutputParent(out);  // output/: only now, with the timeline solved
   const spin::SolveStats stats =
@@ -128,6 +158,9 @@ void registerSolveCommands(CLI::App& cli, CommandHandler& handler) {
                        "Output: its extension picks the format, .csv, .json, .npy or .npz (default: output/<scene>.csv)");
   timeline->add_flag("--comment-header", options->commentHeader,
                      "CSV: put the '# rollspin timeline: method, steps, error estimate' line above the header row");
+  timeline->add_option("--at-s", options->atS,
+                       "Sample at the arc lengths in this file (numbers, one or more a line, sorted on output) "
+                       "instead of timeline.samples");
   timeline->callback([options, &handler] { handler = [options] { return runTimeline(*options); }; });
 
   // `scene` is registered by registerSceneCommand (scene_command.cpp): it reads outputs too.

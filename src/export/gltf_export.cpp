@@ -275,7 +275,7 @@ Built build(const ExportRequest& r) {
   bloch.scale = {out.blochRadius, out.blochRadius, out.blochRadius};
   for (const int child : {nodes.surface, nodes.path, nodes.ball, nodes.bloch})
     if (child >= 0) b.model().nodes[std::size_t(nodes.root)].children.push_back(child);
-  addRoll(b, out.keys, nodes, r);
+  if (r.animation) addRoll(b, out.keys, nodes, r);
   tinygltf::Scene scene;
   scene.name = spec.name;
   scene.nodes = {nodes.root};

@@ -82,6 +82,7 @@ struct ExportRequest {
   std::string version;    // extras.rollspin.version
   std::string sceneText;  // extras.rollspin.scene
   bool metadata = true;   // false: no "scene" in extras (--no-metadata)
+  bool animation = true;  // false: no animation "roll" and no extras (the web viewer poses the nodes itself)
 };
 
 // The keys of animation "roll", in file order (times strictly increasing).

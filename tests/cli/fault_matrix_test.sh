@@ -45,6 +45,7 @@ cases=(
   "clip-mov|x.mov|video|render $lollipop ${small[*]} ${long[*]} -o OUT"
   "clip-gif|x.gif|video|render $lollipop ${small[*]} ${long[*]} -o OUT"
   "clip-png-frames|frames|frames|render $lollipop ${small[*]} ${long[*]} -o OUT"
+  "viewer-html|x.html|file|render $lollipop -o OUT"
   "timeline-csv|t.csv|file|timeline $lollipop --set timeline.samples=200000 -o OUT"
   "report-errors|report|folder|report errors $lollipop -o OUT"
   "join-mp4|j.mp4|file|join $inputs/j.part-1-of-2.mp4 $inputs/j.part-2-of-2.mp4 -o OUT"

@@ -1,0 +1,112 @@
+// The web viewer's timeline (app/viewer_timeline.hpp): knots on every join,
+// and dense enough that cubic Hermite with the solver's derivatives
+// (dq/ds = −½ (0, B) ⊗ q) meets the solver between knots to 1e-7, where
+// Hermite errs most (mid-interval); base64 against RFC 4648's vectors.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "app/timeline_csv.hpp"
+#include "app/viewer_job.hpp"
+#include "app/viewer_timeline.hpp"
+#include "model/rolling_model.hpp"
+#include "motion/solve_job.hpp"
+#include "spin/su2.hpp"
+#include "support/test_files.hpp"
+
+using namespace rollspin;
+
+namespace {
+
+using Quat = std::array<double, 4>;
+
+// −½ (0, b) ⊗ q: the spinor's rate, written here from the convention
+// (docs/conventions.md), apart from the page's JavaScript.
+Quat rate(const Quat& q, const std::array<double, 3>& b) {
+  const spin::Su2 field{0.0, b[0], b[1], b[2]}, p{q[0], q[1], q[2], q[3]};
+  const spin::Su2 d = field * p;
+  return {-0.5 * d.w, -0.5 * d.x, -0.5 * d.y, -0.5 * d.z};
+}
+
+Quat hermite(const app::ViewerKnot& a, const app::ViewerKnot& b, double s) {
+  const double h = b.s - a.s, t = (s - a.s) / h, t2 = t * t, t3 = t2 * t;
+  const Quat ma = rate(a.q, a.b), mb = rate(b.q, b.b);
+  Quat q{};
+  for (int i = 0; i < 4; ++i)
+    q[i] = (2 * t3 - 3 * t2 + 1) * a.q[i] + (t3 - 2 * t2 + t) * h * ma[i] + (-2 * t3 + 3 * t2) * b.q[i] +
+           (t3 - t2) * h * mb[i];
+  return q;
+}
+
+// The largest |q_Hermite − q_solver| (any component) at the middles of the knot intervals.
+double largestMidpointError(const std::string& name) {
+  const scene::SceneSpec spec = model::loadScene(test::shippedScenePath(name), {});
+  const model::RollingModel model = model::buildSceneModel(spec);
+  const motion::SolverChoice choice = motion::chooseSolver(spec, model);
+  const app::ViewerTimeline timeline = app::sampleViewerTimeline(spec, model, choice);
+  std::vector<double> middles;
+  for (std::size_t k = 0; k + 1 < timeline.knots.size(); ++k)
+    middles.push_back(0.5 * (timeline.knots[k].s + timeline.knots[k + 1].s));
+  double worst = 0.0;
+  app::sampleTimeline(model, choice, spin::SampleArcLengths(middles), [&](std::size_t k, const app::TimelineRow& row) {
+    const Quat q = hermite(timeline.knots[k], timeline.knots[k + 1], middles[k]);
+    for (int i = 0; i < 4; ++i) worst = std::max(worst, std::abs(q[i] - row.values[10 + i]));
+  }, name);
+  return worst;
+}
+
+TEST(ViewerTimeline, HermiteWithTheSolversRateMeetsTheSolverBetweenKnots) {
+  // A constant field, a circle, a storyboard's joins, a clothoid, curved surfaces, a plate.
+  for (const char* name : {"wall", "lollipop", "storyboard", "cornu", "torus", "sphere-loxodrome", "height-bumps",
+                           "tennis-ball", "cylinder-helix"}) {
+    const double error = largestMidpointError(name);
+    EXPECT_LT(error, 1e-7) << name;
+    std::printf("%-18s largest mid-knot error %.2e\n", name, error);
+  }
+}
+
+TEST(ViewerTimeline, KnotsLieOnEveryJoinWithATwinJustBefore) {
+  const scene::SceneSpec spec = model::loadScene(test::shippedScenePath("storyboard"), {});
+  const model::RollingModel model = model::buildSceneModel(spec);
+  const std::vector<double> knots = app::viewerKnotArcLengths(model);
+  ASSERT_TRUE(std::is_sorted(knots.begin(), knots.end()));
+  EXPECT_EQ(knots.front(), 0.0);
+  EXPECT_EQ(knots.back(), model.path->length());
+  ASSERT_GE(model.segments.size(), 2u);
+  for (std::size_t k = 1; k < model.segments.size(); ++k) {
+    const double join = model.segments[k].start;
+    if (!(join > 0.0 && join < model.path->length())) continue;
+    const auto at = std::lower_bound(knots.begin(), knots.end(), join);
+    ASSERT_NE(at, knots.end());
+    EXPECT_EQ(*at, join) << "segment " << k + 1;
+    EXPECT_LT(join - *(at - 1), 1e-9 * model.path->length()) << "the twin before segment " << k + 1;
+  }
+}
+
+TEST(ViewerTimeline, ChaptersAreTheStoryboardsSegmentsWithTheirCaptions) {
+  const scene::SceneSpec spec = model::loadScene(test::shippedScenePath("storyboard"), {});
+  const model::RollingModel model = model::buildSceneModel(spec);
+  const app::ViewerTimeline timeline = app::sampleViewerTimeline(spec, model, motion::chooseSolver(spec, model));
+  ASSERT_EQ(timeline.chapters.size(), spec.segments.size());
+  for (std::size_t k = 0; k < spec.segments.size(); ++k) {
+    EXPECT_EQ(timeline.chapters[k].number, k + 1);
+    EXPECT_EQ(timeline.chapters[k].caption, spec.segments[k].caption);
+    EXPECT_EQ(timeline.chapters[k].start, model.segments[k].start);
+  }
+  const std::string json = app::viewerTimelineJson(timeline);
+  EXPECT_EQ(json.find('<'), std::string::npos) << "the JSON must not be able to close its <script>";
+}
+
+TEST(Base64, MatchesRfc4648) {
+  const std::vector<std::pair<std::string, std::string>> vectors{
+      {"", ""}, {"f", "Zg=="}, {"fo", "Zm8="}, {"foo", "Zm9v"}, {"foob", "Zm9vYg=="}, {"fooba", "Zm9vYmE="},
+      {"foobar", "Zm9vYmFy"}};
+  for (const auto& [plain, encoded] : vectors) EXPECT_EQ(app::base64(plain), encoded) << plain;
+}
+
+}  // namespace

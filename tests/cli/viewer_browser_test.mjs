@@ -1,0 +1,222 @@
+// The web viewer in a browser (ctest Browser.Viewer, label "browser"): for
+// several bundled scenes, `rollspin render SCENE -o NAME.html`, then Debian's
+// Chromium (driven by npm playwright-core, no browser download) opens the
+// page from file:// with every other request failing the test, and checks
+//   - state() against `rollspin timeline --at-s` at 50 random s (1e-6),
+//   - the screenshot: the ball and the Bloch sphere drawn (saved as PNG),
+//   - keyboard scrubbing moves s, chapters jump to their segment's start,
+//   - the page's size (≤ 3 MB), its scene text and generator.
+// Usage: node viewer_browser_test.mjs ROLLSPIN SOURCE_DIR WORK_DIR
+import { execFileSync } from 'node:child_process';
+import { createRequire } from 'node:module';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { pathToFileURL } from 'node:url';
+
+const [rollspin, sourceDir, workDir] = process.argv.slice(2);
+if (!rollspin || !sourceDir || !workDir) {
+  console.error('usage: node viewer_browser_test.mjs ROLLSPIN SOURCE_DIR WORK_DIR');
+  process.exit(2);
+}
+const CHROMIUM = '/usr/bin/chromium';
+let chromium;
+try {
+  ({ chromium } = createRequire(path.resolve(sourceDir, 'web', 'package.json'))('playwright-core'));
+} catch (e) {
+  console.log(`SKIP: ${e.message.split('\n')[0]}`);
+  console.log('SKIP: web/node_modules/playwright-core is missing (npm ci in web/, or bash scripts/install-deps.sh)');
+  process.exit(77);
+}
+if (!fs.existsSync(CHROMIUM)) {
+  console.log(`SKIP: ${CHROMIUM} is missing (apt-get install chromium, or bash scripts/install-deps.sh)`);
+  process.exit(77);
+}
+
+// Bundled scenes: a flat circle, a storyboard with chapters, a curved surface.
+const SCENES = ['lollipop', 'storyboard', 'torus'];
+const SAMPLES = 50;
+const TOLERANCE = 1e-6;
+const MAX_BYTES = 3 * 1024 * 1024;
+const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+  '--disable-background-networking', '--disable-component-update', '--disable-sync'];
+
+const failures = [];
+function check(ok, message) {
+  if (!ok) failures.push(message);
+  return ok;
+}
+
+// A small seeded generator, so a failure can be rerun with the same s.
+function random(seed) {
+  let x = seed >>> 0;
+  return () => ((x = (Math.imul(x, 1664525) + 1013904223) >>> 0) / 4294967296);
+}
+
+function readTimelineCsv(file) {
+  const lines = fs.readFileSync(file, 'utf8').split('\n').filter((l) => l && !l.startsWith('#'));
+  const header = lines[0].split(',');
+  return lines.slice(1).map((l) => Object.fromEntries(l.split(',').map((v, i) => [header[i], Number(v)])));
+}
+
+function rotate(q, v) {
+  const [w, x, y, z] = q;
+  const cx = y * v[2] - z * v[1], cy = z * v[0] - x * v[2], cz = x * v[1] - y * v[0];
+  return [v[0] + 2 * (w * cx + y * cz - z * cy), v[1] + 2 * (w * cy + z * cx - x * cz),
+    v[2] + 2 * (w * cz + x * cy - y * cx)];
+}
+
+const largestGap = (a, b) => Math.max(...a.map((v, i) => Math.abs(v - b[i])));
+
+// state() at 50 random s (and every chapter start) against the CLI's rows at the same s.
+async function checkStates(page, scene, dir) {
+  const { length, chapters } = await page.evaluate(() => ({ length: window.rollspin.length, chapters: window.rollspin.chapters }));
+  const next = random(scene.length * 7919 + 17);
+  const arcs = [0, length, ...chapters.map((c) => c.start)];
+  while (arcs.length < SAMPLES + 2 + chapters.length) arcs.push(next() * length);
+  const arcFile = path.join(dir, `${scene}.s.txt`), csv = path.join(dir, `${scene}.csv`);
+  fs.writeFileSync(arcFile, arcs.map((s) => s.toPrecision(17)).join('\n') + '\n');
+  execFileSync(rollspin, ['timeline', scene, '--at-s', arcFile, '-o', csv], { stdio: 'pipe' });
+  const rows = readTimelineCsv(csv);
+  check(rows.length === arcs.length, `${scene}: the CLI wrote ${rows.length} rows for ${arcs.length} arc lengths`);
+  const marker = [rows[0].nx, rows[0].ny, rows[0].nz];  // no bundled scene sets ball.marker: n(0)
+  const states = await page.evaluate((list) => list.map((s) => {
+    window.rollspin.seek(s);
+    return window.rollspin.state();
+  }), rows.map((r) => r.s));
+  let worst = 0;
+  rows.forEach((row, i) => {
+    const q = [row.qw, row.qx, row.qy, row.qz], st = states[i];
+    const gap = Math.max(largestGap(st.quaternion, q), largestGap(st.bloch, rotate(q, marker)), Math.abs(st.s - row.s));
+    worst = Math.max(worst, gap);
+    check(gap <= TOLERANCE, `${scene}: at s = ${row.s} state() is off the timeline by ${gap.toExponential(2)}`);
+    check(st.segment === (row.segment ?? 0), `${scene}: at s = ${row.s} segment ${st.segment}, the CLI ${row.segment}`);
+  });
+  console.log(`${scene}: ${rows.length} arc lengths, largest difference from the CLI ${worst.toExponential(2)}`);
+}
+
+// The screenshot: both views drawn (not blank), the ball and the Bloch sphere where the cameras put them.
+async function checkPixels(page, scene, dir) {
+  const shot = path.join(dir, `${scene}.png`);
+  await page.screenshot({ path: shot });
+  const views = await page.evaluate(() => window.rollspin.views().map((v) => {
+    const canvas = document.querySelector(`#${v.element} canvas`);
+    const probe = document.createElement('canvas');
+    probe.width = canvas.width;
+    probe.height = canvas.height;
+    const ctx = probe.getContext('2d');
+    ctx.drawImage(canvas, 0, 0);
+    const pixels = ctx.getImageData(0, 0, probe.width, probe.height).data;
+    const colours = new Set();
+    let drawn = 0;
+    for (let i = 0; i < pixels.length; i += 4) {
+      if (pixels[i + 3] > 0) drawn += 1;
+      colours.add((pixels[i] >> 3) << 10 | (pixels[i + 1] >> 3) << 5 | (pixels[i + 2] >> 3));
+    }
+    // The object's centre, from page pixels to canvas pixels.
+    const box = canvas.getBoundingClientRect(), scale = canvas.width / box.width;
+    const x = Math.round((v.centre[0] - box.left) * scale), y = Math.round((v.centre[1] - box.top) * scale);
+    const at = ctx.getImageData(Math.min(Math.max(x, 0), canvas.width - 1), Math.min(Math.max(y, 0), canvas.height - 1), 1, 1).data;
+    return { name: v.name, share: drawn / (pixels.length / 4), colours: colours.size, centreAlpha: at[3] };
+  }));
+  for (const v of views) {
+    check(v.share > 0.02, `${scene}: the ${v.name} view is blank (${(100 * v.share).toFixed(2)} % drawn; see ${shot})`);
+    check(v.colours > 50, `${scene}: the ${v.name} view has only ${v.colours} colours (see ${shot})`);
+    check(v.centreAlpha > 0, `${scene}: nothing drawn at the ${v.name}'s centre (see ${shot})`);
+  }
+  console.log(`${scene}: screenshot ${shot}: ${views.map((v) => `${v.name} ${(100 * v.share).toFixed(1)} % drawn, ${v.colours} colours`).join('; ')}`);
+}
+
+async function checkKeys(page, scene) {
+  const s = () => page.evaluate(() => window.rollspin.state().s);
+  const length = await page.evaluate(() => window.rollspin.length);
+  await page.evaluate(() => window.rollspin.seek(0));
+  await page.focus('#ball-view');
+  for (let k = 0; k < 3; ++k) await page.keyboard.press('ArrowRight');
+  check(Math.abs((await s()) - 3 * length / 200) < 1e-9 * length, `${scene}: three → keys moved s to ${await s()}`);
+  await page.keyboard.press('ArrowLeft');
+  check(Math.abs((await s()) - 2 * length / 200) < 1e-9 * length, `${scene}: ← did not step s back`);
+  await page.keyboard.press('End');
+  check((await s()) === length, `${scene}: End did not go to the end`);
+  await page.keyboard.press('Home');
+  check((await s()) === 0, `${scene}: Home did not go to the start`);
+  await page.keyboard.press(' ');
+  await page.waitForFunction(() => window.rollspin.state().s > 0, null, { timeout: 5000 }).catch(() => {});
+  await page.keyboard.press(' ');
+  check((await s()) > 0, `${scene}: space did not play`);
+  const playing = await page.evaluate(() => document.getElementById('play').getAttribute('aria-pressed'));
+  check(playing === 'false', `${scene}: space did not pause again`);
+}
+
+async function checkChapters(page, scene) {
+  const chapters = await page.evaluate(() => window.rollspin.chapters);
+  if (scene === 'storyboard') check(chapters.length >= 2, `${scene}: ${chapters.length} chapters`);
+  const buttons = page.locator('#chapters button');
+  check((await buttons.count()) === chapters.length, `${scene}: ${await buttons.count()} chapter buttons`);
+  for (let k = chapters.length - 1; k >= 0; --k) {
+    await page.evaluate(() => window.rollspin.seek(window.rollspin.length / 3));
+    await buttons.nth(k).click();
+    const st = await page.evaluate(() => window.rollspin.state());
+    check(st.s === chapters[k].start, `${scene}: chapter ${chapters[k].number} went to s = ${st.s}, not ${chapters[k].start}`);
+    if (chapters[k].end > chapters[k].start)
+      check(st.segment === chapters[k].number, `${scene}: chapter ${chapters[k].number} shows segment ${st.segment}`);
+  }
+}
+
+async function checkScene(context, scene, dir) {
+  const html = path.join(dir, `${scene}.html`);
+  execFileSync(rollspin, ['render', scene, '-o', html, '--quiet'], { stdio: 'pipe' });
+  const text = fs.readFileSync(html, 'utf8');
+  check(text.length <= MAX_BYTES, `${scene}: the page is ${text.length} bytes, over ${MAX_BYTES}`);
+  check(/<meta name="generator" content="rollspin [^"]+">/.test(text), `${scene}: no generator meta`);
+  check(/<script type="application\/toml" id="rollspin-scene">[^]*\[ball\]/.test(text), `${scene}: no scene text`);
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  page.on('console', (m) => m.type() === 'error' && errors.push(m.text()));
+  await page.goto(pathToFileURL(html).href);
+  await page.evaluate(() => window.rollspin.ready);
+  await checkStates(page, scene, dir);
+  await page.evaluate(() => window.rollspin.seek(window.rollspin.length * 0.37));
+  await page.waitForTimeout(100);
+  await checkPixels(page, scene, dir);
+  await checkKeys(page, scene);
+  await checkChapters(page, scene);
+  check(errors.length === 0, `${scene}: the page reported errors: ${errors.join('; ')}`);
+  await page.close();
+}
+
+async function main() {
+  fs.mkdirSync(workDir, { recursive: true });
+  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'rollspin-chromium-'));
+  const context = await chromium.launchPersistentContext(profile, {
+    executablePath: CHROMIUM, headless: true, args: CHROMIUM_ARGS, viewport: { width: 1280, height: 720 },
+  });
+  // Every request that leaves the file fails the test: the page must work offline.
+  const network = [];
+  await context.route('**/*', (route) => {
+    const url = route.request().url();
+    if (/^(file|data|blob):/.test(url)) return route.continue();
+    network.push(url);
+    return route.abort();
+  });
+  try {
+    for (const scene of SCENES) {
+      const start = Date.now();
+      await checkScene(context, scene, workDir);
+      console.log(`${scene}: checked in ${((Date.now() - start) / 1000).toFixed(1)} s`);
+    }
+  } finally {
+    await context.close();
+    fs.rmSync(profile, { recursive: true, force: true });
+  }
+  check(network.length === 0, `the pages asked the network for: ${network.join(', ')}`);
+  for (const f of failures) console.error(`FAIL ${f}`);
+  console.log(failures.length ? `${failures.length} failures` : 'all checks passed');
+  process.exit(failures.length ? 1 : 0);
+}
+
+main().catch((e) => {
+  console.error(e);
+  process.exit(1);
+});

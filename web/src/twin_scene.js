@@ -1,0 +1,208 @@
+// The two views of the renders, side by side: the ball on its surface (left)
+// and the Bloch sphere with the spin and field arrows (right). Both draw one
+// three.js scene, the glTF exporter's GLB (nodes `surface`, `ball`, `path`,
+// `bloch`, `spin`, `field`), through two renderers and two cameras that see
+// different layers. Nothing here solves: poses come from the Timeline.
+import * as THREE from 'three';
+import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+
+const BALL_LAYER = 0;
+const BLOCH_LAYER = 1;
+const FIELD_OF_VIEW_DEG = 35;
+
+// The GLB inside the page (base64) as bytes.
+export function embeddedBytes(element) {
+  const text = element.textContent.trim();
+  const binary = atob(text);
+  const bytes = new Uint8Array(binary.length);
+  for (let i = 0; i < binary.length; ++i) bytes[i] = binary.charCodeAt(i);
+  return bytes.buffer;
+}
+
+function parseGlb(buffer) {
+  return new Promise((resolve, reject) => new GLTFLoader().parse(buffer, '', resolve, reject));
+}
+
+// The three.js quaternion of a spinor [qw, qx, qy, qz] (the sign is irrelevant to a rotation).
+function rotationOf(q) {
+  return new THREE.Quaternion(q[1], q[2], q[3], q[0]).normalize();
+}
+
+// A camera and its orbit controls over one view's element.
+class View {
+  // viewDeg: [azimuth, elevation] of the eye as the renders take them (render.azimuth_deg, elevation_deg).
+  constructor(element, layer, viewDeg) {
+    this.element = element;
+    this.viewDeg = viewDeg;
+    this.renderer = new THREE.WebGLRenderer({ antialias: false, alpha: true, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+    this.renderer.outputColorSpace = THREE.SRGBColorSpace;
+    this.renderer.setClearColor(0x000000, 0);
+    element.prepend(this.renderer.domElement);
+    this.camera = new THREE.PerspectiveCamera(FIELD_OF_VIEW_DEG, 1, 0.01, 1000);
+    this.camera.layers.set(layer);
+    this.controls = new OrbitControls(this.camera, element);
+    this.controls.enableDamping = false;
+    this.home = { target: new THREE.Vector3(), distance: 1 };
+  }
+
+  // Aims at a bounding sphere from the renders' direction.
+  frame(sphere) {
+    this.home.target.copy(sphere.center);
+    this.home.distance = (1.15 * sphere.radius) / Math.sin(THREE.MathUtils.degToRad(FIELD_OF_VIEW_DEG / 2));
+    this.camera.near = this.home.distance / 100;
+    this.camera.far = this.home.distance * 20;
+    this.reset();
+  }
+
+  reset() {
+    const [az, el] = this.viewDeg.map(THREE.MathUtils.degToRad);
+    const d = this.home.distance;
+    // The renders' eye direction (cos el cos az, cos el sin az, sin el) in the scene (z up)
+    // is (x, z, −y) in glTF's y-up world.
+    const offset = new THREE.Vector3(Math.cos(el) * Math.cos(az), Math.sin(el), -Math.cos(el) * Math.sin(az)).multiplyScalar(d);
+    this.camera.position.copy(this.home.target).add(offset);
+    this.controls.target.copy(this.home.target);
+    this.camera.updateProjectionMatrix();
+    this.controls.update();
+  }
+
+  // Turns the camera about its target (keyboard orbit), radians.
+  orbit(azimuth, elevation) {
+    const offset = this.camera.position.clone().sub(this.controls.target);
+    const spherical = new THREE.Spherical().setFromVector3(offset);
+    spherical.theta -= azimuth;
+    spherical.phi = THREE.MathUtils.clamp(spherical.phi - elevation, 0.05, Math.PI - 0.05);
+    this.camera.position.copy(this.controls.target).add(new THREE.Vector3().setFromSpherical(spherical));
+    this.controls.update();
+  }
+
+  zoom(factor) {
+    const offset = this.camera.position.clone().sub(this.controls.target).multiplyScalar(factor);
+    this.camera.position.copy(this.controls.target).add(offset);
+    this.controls.update();
+  }
+
+  resize() {
+    const w = Math.max(1, this.element.clientWidth), h = Math.max(1, this.element.clientHeight);
+    this.renderer.setSize(w, h, false);
+    this.camera.aspect = w / h;
+    this.camera.updateProjectionMatrix();
+  }
+
+  render(scene) {
+    this.renderer.render(scene, this.camera);
+  }
+}
+
+// The key light's direction (glTF's y up): from above, over the viewer's shoulder.
+const KEY_DIRECTION = new THREE.Vector3(-0.45, 1.0, 0.7).normalize();
+const SHADOW_MAP_SIZE = 1024;
+
+// Lit as the renders are: a key light that casts the ball's shadow on the surface, a soft sky fill.
+function addLights(scene) {
+  const sky = new THREE.HemisphereLight(0xdfe8f2, 0x5a554f, 1.1);
+  const key = new THREE.DirectionalLight(0xffffff, 2.2);
+  key.castShadow = true;
+  key.shadow.mapSize.set(SHADOW_MAP_SIZE, SHADOW_MAP_SIZE);
+  key.shadow.bias = -0.0005;
+  for (const light of [sky, key, key.target]) {
+    light.layers.enableAll();
+    scene.add(light);
+  }
+  return key;
+}
+
+// The key light's shadow covers the ball view's bounding sphere.
+function aimKeyLight(key, sphere) {
+  const r = sphere.radius;
+  key.target.position.copy(sphere.center);
+  key.position.copy(sphere.center).addScaledVector(KEY_DIRECTION, 2 * r);
+  Object.assign(key.shadow.camera, { left: -r, right: r, top: r, bottom: -r, near: 0.01 * r, far: 4 * r });
+  key.shadow.camera.updateProjectionMatrix();
+}
+
+export class TwinScene {
+  constructor(ballElement, blochElement, viewDeg) {
+    this.scene = new THREE.Scene();
+    this.keyLight = addLights(this.scene);
+    this.ballView = new View(ballElement, BALL_LAYER, viewDeg);
+    this.blochView = new View(blochElement, BLOCH_LAYER, viewDeg);
+    this.ballView.renderer.shadowMap.enabled = true;
+    this.ballView.renderer.shadowMap.type = THREE.PCFShadowMap;
+    this.views = [this.ballView, this.blochView];
+  }
+
+  async load(buffer) {
+    const gltf = await parseGlb(buffer);
+    this.root = gltf.scene;
+    this.scene.add(this.root);
+    const node = (name) => this.root.getObjectByName(name) || null;
+    this.nodes = { ball: node('ball'), bloch: node('bloch'), spin: node('spin'), field: node('field') };
+    for (const [name, object] of Object.entries(this.nodes))
+      if (!object) console.warn(`rollspin viewer: the GLB has no node "${name}"`);
+    // The ball casts its shadow on the surface (the renders' shadow pass).
+    if (this.nodes.ball) this.nodes.ball.traverse((o) => (o.castShadow = true));
+    const surface = node('surface');
+    if (surface) surface.traverse((o) => (o.receiveShadow = true));
+    // The Bloch sphere and its arrows: the right view's layer only.
+    if (this.nodes.bloch) this.nodes.bloch.traverse((o) => o.layers.set(BLOCH_LAYER));
+    for (const name of ['spin', 'field'])
+      if (this.nodes[name]) this.nodes[name].traverse((o) => o.layers.set(BLOCH_LAYER));
+    this.frameViews();
+  }
+
+  frameViews() {
+    this.root.updateMatrixWorld(true);
+    const ballBox = new THREE.Box3();
+    this.root.traverse((o) => {
+      if (o.isMesh && !o.layers.isEnabled(BLOCH_LAYER)) ballBox.expandByObject(o);
+    });
+    const blochBox = new THREE.Box3();
+    if (this.nodes.bloch) blochBox.setFromObject(this.nodes.bloch);
+    else blochBox.setFromCenterAndSize(new THREE.Vector3(), new THREE.Vector3(2, 2, 2));
+    const ballSphere = ballBox.getBoundingSphere(new THREE.Sphere());
+    this.ballView.frame(ballSphere);
+    aimKeyLight(this.keyLight, ballSphere);
+    this.blochView.frame(blochBox.getBoundingSphere(new THREE.Sphere()));
+  }
+
+  // Poses the ball (centre, rotation) and the arrows at arc length s.
+  pose(timeline, s) {
+    const q = rotationOf(timeline.quaternion(s));
+    const { ball, spin, field } = this.nodes;
+    if (ball) {
+      ball.position.set(...timeline.ballCentre(s));
+      ball.quaternion.copy(q);
+    }
+    // The exporter's arrows (src/export/gltf_export.hpp): "spin" points at X(0) and
+    // turns by q(s); "field" points along +z and turns onto B(s)/|B(s)|.
+    if (spin) spin.quaternion.copy(q);
+    if (field) {
+      const b = new THREE.Vector3(...timeline.field(s));
+      if (b.lengthSq() > 0) field.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), b.normalize());
+    }
+  }
+
+  // Where the ball and the Bloch sphere are on the page (CSS pixels): for
+  // embedding pages that label them, and for the browser test.
+  screenCentres() {
+    const centreOf = (view, object, name) => {
+      const p = object ? object.getWorldPosition(new THREE.Vector3()) : new THREE.Vector3();
+      p.project(view.camera);
+      const box = view.element.getBoundingClientRect();
+      return { name, element: view.element.id,
+        centre: [box.left + ((p.x + 1) / 2) * box.width, box.top + ((1 - p.y) / 2) * box.height] };
+    };
+    return [centreOf(this.ballView, this.nodes.ball, 'ball'), centreOf(this.blochView, this.nodes.bloch, 'bloch')];
+  }
+
+  resize() {
+    for (const v of this.views) v.resize();
+  }
+
+  render() {
+    for (const v of this.views) v.render(this.scene);
+  }
+}

@@ -231,11 +231,6 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
           seconds = segmentSeconds[k + 1];
         }
       }
-      // A hold that does not look ahead keeps the previous segment's stretch.
-      if (span.end > span.start || k == 0) {
-        shot.ownPoints = ownStretch(span.start, span.end);
-        shot.ownId = k + 1;
-      }
       const OrbitAngles base{shot.azimuth, shot.elevation};
       Unhidden u = unhiddenAngles(base, span.start, span.end, !azimuthGiven, !elevationGiven, true,
                                   k == 0 ? 360.0 : kMaxFreeMoveDeg, seconds, false, shot.follow);
@@ -261,17 +256,6 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
     shots_.push_back(shot);
   }
   findHiddenSpans();
-}
-
-std::vector<Vec3> CameraFraming::ownStretch(double s0, double s1) const {
-  const double R = model_.ballRadius;
-  std::vector<Vec3> centres;
-  for (int i = 0; i <= 120; ++i) centres.push_back(model_.path->at(s0 + (s1 - s0) * i / 120.0).centre(R));
-  std::vector<Vec3> points = centres;
-  for (const Vec3 &p : extent_.points)
-    if (std::any_of(centres.begin(), centres.end(), [&](const Vec3 &c) { return (c - p).norm() <= kOwnStretchReach * R; }))
-      points.push_back(p);
-  return points;
 }
 
 bool CameraFraming::fixedByScene() const {
@@ -361,7 +345,7 @@ CameraFraming::Aim CameraFraming::aimOf(const Shot &shot, int w, int h, double s
   Vec3 target = Vec3::Zero();
   double distance = 0.0;
   if (!shot.follow && !(shot.target && shot.distance))
-    std::tie(target, distance) = framedFit(a, fovDeg, aspect, !shot.target, shot);
+    std::tie(target, distance) = framedFit(a, fovDeg, aspect, !shot.target);
   if (shot.follow) {
     target = model_.path->at(s).centre(R);
     distance = fitDistance(4.0 * R, fovDeg, aspect);
@@ -371,33 +355,21 @@ CameraFraming::Aim CameraFraming::aimOf(const Shot &shot, int w, int h, double s
   return {target, distance, a.azimuth, a.elevation, shot.fovDeg};
 }
 
-std::pair<Vec3, double> CameraFraming::framedFit(const OrbitAngles &a, double fovDeg, double aspect, bool held,
-                                                 const Shot &shot) const {
+std::pair<Vec3, double> CameraFraming::framedFit(const OrbitAngles &a, double fovDeg, double aspect, bool held) const {
   const FitKey key{std::bit_cast<std::uint64_t>(a.azimuth), std::bit_cast<std::uint64_t>(a.elevation),
                    std::bit_cast<std::uint64_t>(fovDeg),    std::bit_cast<std::uint64_t>(aspect),
                    std::bit_cast<std::uint64_t>(window_.x0), std::bit_cast<std::uint64_t>(window_.x1),
                    std::bit_cast<std::uint64_t>(window_.y0), std::bit_cast<std::uint64_t>(window_.y1),
                    (std::uint64_t(innerEdges_.left) << 0) | (std::uint64_t(innerEdges_.right) << 1) |
                        (std::uint64_t(innerEdges_.bottom) << 2) | (std::uint64_t(innerEdges_.top) << 3) |
-                       (std::uint64_t(held) << 4),
-                    shot.ownId};
+                       (std::uint64_t(held) << 4)};
   const std::lock_guard<std::mutex> lock(fitsMutex_);
   if (const auto it = fits_.find(key); it != fits_.end()) return it->second;
-  auto fit = [&](const std::vector<Vec3> &points) {
-    auto [target, distance] = fitPoints(points, model_.ballRadius, a, fovDeg, aspect);
-    if (held) {
-      holdOutline(target, distance, a, fovDeg, aspect, points);
-      keepOffViewEdges(target, distance, a, fovDeg, aspect, points);
-    }
-    return std::pair{target, distance};
-  };
-  auto [target, distance] = fit(extent_.points);
-  // The ball's diameter over the view's height, at the target's distance:
-  // R / (distance · tan(fov / 2)) of the window's half height, which is
-  // (y1 − y0) / 2 of the view's.
-  const double ballShare = model_.ballRadius * 0.5 * (window_.y1 - window_.y0) /
-                           (distance * std::tan(0.5 * fovDeg * std::numbers::pi / 180.0));
-  if (!shot.ownPoints.empty() && ballShare < kLeastBallShare) std::tie(target, distance) = fit(shot.ownPoints);
+  auto [target, distance] = fitPoints(extent_.points, model_.ballRadius, a, fovDeg, aspect);
+  if (held) {
+    holdOutline(target, distance, a, fovDeg, aspect);
+    keepOffViewEdges(target, distance, a, fovDeg, aspect);
+  }
   if (fits_.size() >= kMaxFits) fits_.clear();
   fits_.emplace(key, std::pair{target, distance});
   return {target, distance};
@@ -425,8 +397,8 @@ ScreenAxes screenAxes(const OrbitAngles &a, double fovDeg, double aspect) {
 // [-1, 1]; the view's edge lies at (±1 − centre) / half-width of the
 // window. The shift is continuous in the angles (maxima over points), so a
 // turning camera pans smoothly.
-void CameraFraming::holdOutline(Vec3 &target, double &distance, const OrbitAngles &a, double fovDeg, double aspect,
-                                const std::vector<Vec3> &points) const {
+void CameraFraming::holdOutline(Vec3 &target, double &distance, const OrbitAngles &a, double fovDeg,
+                                double aspect) const {
   if (extent_.outline.empty()) return;
   const double R = model_.ballRadius;
   const ScreenAxes screen = screenAxes(a, fovDeg, aspect);
@@ -445,7 +417,7 @@ void CameraFraming::holdOutline(Vec3 &target, double &distance, const OrbitAngle
         return std::pair{(d.dot(axes[axis]) - pad) / (w * tans[axis]), (d.dot(axes[axis]) + pad) / (w * tans[axis])};
       };
       double subjectLo = 1e300, subjectHi = -1e300, outlineLo = 1e300, outlineHi = -1e300;
-      for (const Vec3 &p : points) {
+      for (const Vec3 &p : extent_.points) {
         const auto [lo, hi] = ndc(p, R);
         subjectLo = std::min(subjectLo, lo);
         subjectHi = std::max(subjectHi, hi);
@@ -485,7 +457,7 @@ void CameraFraming::holdOutline(Vec3 &target, double &distance, const OrbitAngle
 // needed, then a second for what that approximation leaves; continuous in
 // the angles (maxima over points), so a turning camera stays smooth.
 void CameraFraming::keepOffViewEdges(const Vec3 &target, double &distance, const OrbitAngles &a, double fovDeg,
-                                     double aspect, const std::vector<Vec3> &points) const {
+                                     double aspect) const {
   const double R = model_.ballRadius;
   const ScreenAxes screen = screenAxes(a, fovDeg, aspect);
   const Vec3 &toEye = screen.toEye;
@@ -502,7 +474,7 @@ void CameraFraming::keepOffViewEdges(const Vec3 &target, double &distance, const
       // the view's edge by kEdgeMargin.
       const double limitHi = his[axis] >= 1.0 - 1e-9 ? 1.0 - kEdgeMargin / half : 1.0;
       const double limitLo = los[axis] <= -1.0 + 1e-9 ? 1.0 - kEdgeMargin / half : 1.0;
-      for (const Vec3 &p : points) {
+      for (const Vec3 &p : extent_.points) {
         const Vec3 d = p - target;
         const double w = std::max(distance - d.dot(toEye), 1e-9);
         const double hi = (d.dot(axes[axis]) + R) / (w * tans[axis]), lo = -(d.dot(axes[axis]) - R) / (w * tans[axis]);

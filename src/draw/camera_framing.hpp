@@ -163,22 +163,7 @@ class CameraFraming {
     bool cutsAway = false;             // the surface is cut away where it hides the ball
     std::vector<Keyframe> keys;        // non-empty: the view direction turns with s
                                        // through these (unhiddenAngles)
-    // A storyboard segment's own stretch of the subject (its path and what
-    // lies within kOwnStretchReach of it): framed instead of the whole
-    // clip's where that would leave the ball under kLeastBallShare of the
-    // view's height. Empty: always the whole clip's.
-    std::vector<geometry::Vec3> ownPoints;
-    std::uint64_t ownId = 0;  // which stretch ownPoints is (the fits' key)
   };
-  // A storyboard's ball is at least this share of its view's height (where
-  // its segment's own stretch allows).
-  static constexpr double kLeastBallShare = 0.1;
-  // What a segment's framing keeps besides its path: the surface's framed
-  // edges and outline within this many ball radii of it.
-  static constexpr double kOwnStretchReach = 4.5;
-  // The segment's own stretch: the path's centres on [s0, s1] and the
-  // subject's points near them.
-  [[nodiscard]] std::vector<geometry::Vec3> ownStretch(double s0, double s1) const;
   // A view chosen to keep the ball in sight over [s0, s1].
   struct Unhidden {
     OrbitAngles angles;
@@ -196,17 +181,17 @@ class CameraFraming {
   // same inputs give the same bits, so each distinct set is computed once
   // (a layout samples the clip with up to 480 cameras of one shot).
   [[nodiscard]] std::pair<geometry::Vec3, double> framedFit(const OrbitAngles &a, double fovDeg, double aspect,
-                                                            bool held, const Shot &shot) const;
+                                                            bool held) const;
   // What framedFit depends on besides the subject, bit for bit: the angles,
-  // the lens, the window, the inner edges, `held` and the shot's own stretch.
-  using FitKey = std::array<std::uint64_t, 10>;
+  // the lens, the window, the inner edges and `held`.
+  using FitKey = std::array<std::uint64_t, 9>;
   // Bounded: a camera that turns with s adds an entry a frame.
   static constexpr std::size_t kMaxFits = 4096;
   // Moves `target` across the view so that the outline stays inside the
   // inner edges, as far as the subject's points stay inside the window,
   // then steps back by up to kOutlineStepBack where it is still cut.
-  void holdOutline(geometry::Vec3 &target, double &distance, const OrbitAngles &a, double fovDeg, double aspect,
-                   const std::vector<geometry::Vec3> &points) const;
+  void holdOutline(geometry::Vec3 &target, double &distance, const OrbitAngles &a, double fovDeg,
+                   double aspect) const;
   // How far back holdOutline may step (a slightly wider framing).
   static constexpr double kOutlineStepBack = 1.2;
   // Steps back where the subject's points (padded by R) come closer than
@@ -214,7 +199,7 @@ class CameraFraming {
   // narrowed for text leaves fitPoints' margin, a share of the window,
   // smaller there), so that the frame does not touch the ball.
   void keepOffViewEdges(const geometry::Vec3 &target, double &distance, const OrbitAngles &a, double fovDeg,
-                        double aspect, const std::vector<geometry::Vec3> &points) const;
+                        double aspect) const;
   // The least room between the subject and the view's edge, in the view's
   // NDC (3 % of its width or height).
   static constexpr double kEdgeMargin = 0.06;

@@ -95,7 +95,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
 SceneDrawer::Rects SceneDrawer::rects() const {
   const int W = int(spec_.render.width), H = int(spec_.render.height);
   const int top = titleBand_ ? titleBandHeight(titleLines_, text(), figure()) : 0;
-  const int bottom = captionBandLines_ > 0 ? captionBandHeight(captionBandLines_, text()) : 0;
+  const int bottom = captionBandLines_ > 0 ? captionBandHeight(captionBandLines_, std::max(text(), leastText())) : 0;
   const int bodyHeight = H - top - bottom;
   Rects r;
   switch (spec_.render.layout) {
@@ -194,7 +194,9 @@ bool SceneDrawer::moveCaptionsBelow(const ViewLayout& layout, const std::vector<
   if (!figure() || captionBandLines_ > 0 || !captionCramped(layout, blocks, viewWidth)) return false;
   for (const scene::SegmentSpec& segment : spec_.segments)
     if (!segment.caption.empty())
-      captionBandLines_ = std::max(captionBandLines_, captionBandLines(segment.caption, text(), float(spec_.render.width)).size());
+      captionBandLines_ = std::max(
+          captionBandLines_,
+          captionBandLines(segment.caption, std::max(text(), leastText()), float(spec_.render.width)).size());
   if (captionBandLines_ == 0) return false;
   ballLayout_ = twinLayout_ = ViewLayout{};
   ballReserved_.clear();
@@ -346,8 +348,11 @@ render::DrawList SceneDrawer::draw(const FrameOrientations& frame) const {
     addTitleBand(list, shownTitle(title), text(), titleLines_, leastText(), figure());
     noteLeftOut(list, {title}, {shownTitle(title)});
   }
+  // The caption band before the views (bold at the body size, never under
+  // a figure's least size): the twin stays the last view.
+  if (captionBandLines_ > 0)
+    addCaptionBand(list, captionAt(frame.story), std::max(text(), leastText()), captionBandLines_, kCaptionColor);
   addViews(list, frame);
-  if (captionBandLines_ > 0) addCaptionBand(list, captionAt(frame.story), text(), captionBandLines_, kCaptionColor);
   return list;
 }
 

@@ -67,7 +67,7 @@ bool setsFigureKeys(const scene::SceneSpec& spec) {
                      [](const auto& entry) { return entry.first.rfind("figure.", 0) == 0; });
 }
 
-void fitTextToFigure(scene::SceneSpec& spec) {
+void fitTextToFigure(scene::SceneSpec& spec, bool say) {
   const double unit = spec.figure.widthMm / 25.4 * 72.0 / double(spec.render.width);
   const double bodyPx = figureTextPt(spec) * render::figureFontHeightPerEm(spec.figure.font) / unit;
   const double atScaleOne = draw::bodyTextPx(int(spec.render.width), int(spec.render.height), 1.0);
@@ -75,12 +75,12 @@ void fitTextToFigure(scene::SceneSpec& spec) {
   // The sizes are ascent + descent; a bold face's is up to 2 % more per em,
   // so the floor keeps that much above 6 pt.
   spec.render.leastTextScale = 1.02 * kLeastFigureTextPt / figureTextPt(spec);
-  if (StageLog::instance().echo())
+  if (say && StageLog::instance().echo())
     fmt::print(stderr, "figure: {:.0f} mm wide, body text {:.1f} pt in {} ({:.1f} px of the {}x{} layout)\n",
                spec.figure.widthMm, figureTextPt(spec), spec.figure.font, bodyPx, spec.render.width,
                spec.render.height);
   // A title that would take over a fifth of the figure is left out (scene_drawer).
-  if (StageLog::instance().echo()) {
+  if (say && StageLog::instance().echo()) {
     std::vector<std::string> titles{spec.render.title};
     for (const scene::SegmentSpec& segment : spec.segments)
       if (segment.title) titles.push_back(*segment.title);

@@ -35,9 +35,9 @@ inline constexpr double kLeastFigureTextPt = 6.0;
 // Lays the still's text out for the figure's physical size: sets
 // render.font_scale so that the body text, in the DrawList's pixels, is
 // figureTextPt at figure.width_mm over render.width (plates, line steps and
-// the free slots then follow the printed size). With --verbose, prints the
-// size.
-void fitTextToFigure(scene::SceneSpec& spec);
+// the free slots then follow the printed size). With --verbose (and
+// `say`), prints the size.
+void fitTextToFigure(scene::SceneSpec& spec, bool say = true);
 
 // The vector backend's style for the still's list: the page width, the
 // font and the body size the list was laid out for.

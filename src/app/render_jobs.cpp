@@ -16,6 +16,7 @@
 #include "app/figure_job.hpp"
 #include "app/flag_overrides.hpp"
 #include "app/job_setup.hpp"
+#include "app/left_out_text.hpp"
 #include "app/remembered_output.hpp"
 #include "motion/frame_poses.hpp"
 #include "media/h264_levels.hpp"
@@ -208,9 +209,18 @@ std::filesystem::path renderStill(const StillOptions& o) {
   if (figure) {
     createOutputParent(out);
     writeFigureStill(spec, list, out, *figure, o.shaderDir, metadata ? &*metadata : nullptr);
+    // Nothing left out silently: each text the layout had no room for, and
+    // the width or size that keeps it.
+    std::vector<render::FigureLayout::LeftOut> leftOut;
+    if (!list.leftOut.empty()) {
+      leftOut = whereLeftOutIsKept(job, o.at, list);
+      reportLeftOut(leftOut, spec.figure.widthMm, figureTextPt(spec));
+    }
     if (!o.layoutJson.empty()) {
+      render::FigureLayout layout = render::figureLayout(list, figureStyleOf(spec, list));
+      if (!leftOut.empty()) layout.leftOut = leftOut;
       AtomicFile json(o.layoutJson);
-      json.write(render::figureLayoutJson(render::figureLayout(list, figureStyleOf(spec, list))));
+      json.write(render::figureLayoutJson(layout));
       json.commit();
     }
     return out;

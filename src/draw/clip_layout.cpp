@@ -194,6 +194,14 @@ glm::vec2 blockSize(const TextBlock& block) {
   return glm::max(block.minSize, glm::vec2(width + 2.0f * pad, height + 2.0f * pad - 0.25f * block.lines.back().sizePx));
 }
 
+std::vector<std::string> wholeLines(const TextBlock& block) {
+  std::vector<std::string> whole;
+  for (const TextLine& line : block.lines)
+    if (line.continued && !whole.empty()) whole.back() += " " + line.text;
+    else whole.push_back(line.text);
+  return whole;
+}
+
 namespace {
 
 struct Rect {
@@ -292,6 +300,7 @@ ViewLayout layOutBlocks(int w, int h, const std::vector<TextBlock>& given,
     const Occupancy occupancy = occupancyFor(layout.window);
     layout.origins.assign(blocks.size(), glm::vec2(0.0f));
     std::vector<Rect> placed;
+    layout.found.assign(blocks.size(), true);
     int failed = -1;
     Rect failedRect{};
     std::size_t placedBeforeFailed = 0;
@@ -315,6 +324,7 @@ ViewLayout layOutBlocks(int w, int h, const std::vector<TextBlock>& given,
         break;
       }
       if (!found) {
+        layout.found[i] = false;
         const std::size_t before = placed.size();
         const Rect r = stackedRect(blocks[i].slots.front(), sizes[i], w, h, margin, placed);
         layout.origins[i] = r.lo;

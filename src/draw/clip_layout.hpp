@@ -86,12 +86,20 @@ std::vector<std::string> wrapText(const std::string& text, float sizePx, bool bo
 void wrapToWidth(TextBlock& block, float maxWidth, float minSizePx = 0.0f);
 // The block's size in pixels (padding included).
 glm::vec2 blockSize(const TextBlock& block);
+// The block's lines as written, a line broken to fit (its continued
+// pieces) joined again: what a reader is told is left out.
+std::vector<std::string> wholeLines(const TextBlock& block);
 
 struct ViewLayout {
   NdcWindow window;                // the camera frames the subject into this
   std::vector<glm::vec2> origins;  // each block's top-left corner, in view pixels
   std::vector<std::size_t> lines;  // how many of each block's lines there is room for
+  std::vector<bool> found;         // whether each block found a free slot (else it lies on its first)
 };
+
+// A caption (a centred block) never breaks onto lines narrower than this
+// many em: where it would, it goes below the views (SceneDrawer).
+inline constexpr float kLeastCaptionEm = 12.0f;
 
 // Places `blocks` in a view w × h. occupancyFor(window) projects the clip
 // for a camera framed into that window; with fixedWindow (the scene sets

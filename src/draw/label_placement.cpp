@@ -267,8 +267,10 @@ std::vector<glm::vec2> keepBlocksClear(const render::DrawList& list, int view, s
       }
       // Nowhere clear: narrower, on more lines (down to a quarter of the
       // view), then its last line (a broken line whole) gives way.
+      // (A caption never narrower than kLeastCaptionEm.)
       const float narrower = 0.75f * size.x;
-      if (narrower >= float(v.width) / 4.0f) {
+      const float least = block.centred ? kLeastCaptionEm * block.lines.front().sizePx : 0.0f;
+      if (narrower >= std::max(float(v.width) / 4.0f, least)) {
         TextBlock joined = block;
         joined.lines.clear();
         for (const TextLine& line : block.lines)

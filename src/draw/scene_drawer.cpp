@@ -12,6 +12,29 @@
 
 namespace rollspin::draw {
 
+namespace {
+
+// Each text of `meant` that is not among `shown` (and not empty) is left
+// out: the DrawList says so, once.
+void noteLeftOut(render::DrawList& list, const std::vector<std::string>& meant, const std::vector<std::string>& shown) {
+  for (const std::string& text : meant)
+    if (!text.empty() && std::find(shown.begin(), shown.end(), text) == shown.end() &&
+        std::find(list.leftOut.begin(), list.leftOut.end(), text) == list.leftOut.end())
+      list.leftOut.push_back(text);
+}
+
+// keepLabelsClear, noting the labels it left out (their text emptied).
+void keepLabelsClearNoting(render::DrawList& list, int view, std::size_t first, bool nearestToAnchor) {
+  std::vector<std::string> meant;
+  for (std::size_t i = first; i < list.labels.size(); ++i) meant.push_back(list.labels[i].text);
+  keepLabelsClear(list, view, first, nearestToAnchor);
+  std::vector<std::string> shown;
+  for (std::size_t i = first; i < list.labels.size(); ++i) shown.push_back(list.labels[i].text);
+  noteLeftOut(list, meant, shown);
+}
+
+}  // namespace
+
 using geometry::Vec3;
 
 namespace {
@@ -101,7 +124,8 @@ void SceneDrawer::build(const RollingModel& model, const RollingModel& whole,
 SceneDrawer::Rects SceneDrawer::rects() const {
   const int W = int(spec_.render.width), H = int(spec_.render.height);
   const int top = titleBand_ ? titleBandHeight(titleLines_, text(), figure()) : 0;
-  const int bodyHeight = H - top;
+  const int bottom = captionBandLines_ > 0 ? captionBandHeight(captionBandLines_, std::max(text(), leastText())) : 0;
+  const int bodyHeight = H - top - bottom;
   Rects r;
   switch (spec_.render.layout) {
     case scene::RenderLayout::SideBySide: {
@@ -159,7 +183,8 @@ std::vector<TextBlock> SceneDrawer::ballBlocks(const FrameOrientations& frame, f
   const Rects r = rects();
   const bool viewOnTheRight = !r.inset && r.ball.x + r.ball.width < int(spec_.render.width) && !blocks.empty();
   if (viewOnTheRight) std::erase(blocks[0].slots, Slot::TopRight);
-  blocks.push_back(captionBlock(captionAt(frame.story), text(), leastText(), viewWidth));
+  blocks.push_back(captionBlock(captionBandLines_ > 0 ? std::string() : captionAt(frame.story), text(), leastText(),
+                                viewWidth));
   for (TextBlock& b : blocks) {
     wrapToWidth(b, 0.94f * viewWidth, leastText());
     b.bandOnly = compactText(int(spec_.render.width), int(spec_.render.height));  // a column leaves no subject
@@ -171,7 +196,8 @@ std::vector<TextBlock> SceneDrawer::ballBlocks(const FrameOrientations& frame, f
 std::vector<TextBlock> SceneDrawer::twinBlocks(const FrameOrientations& frame, float viewWidth, bool inset) const {
   std::vector<TextBlock> blocks = twin_->textBlocks(inset, text(), 0.94f * viewWidth);
   if (spec_.render.layout == scene::RenderLayout::Twin)
-    blocks.push_back(captionBlock(captionAt(frame.story), text(), leastText(), viewWidth));
+    blocks.push_back(captionBlock(captionBandLines_ > 0 ? std::string() : captionAt(frame.story), text(), leastText(),
+                                  viewWidth));
   for (TextBlock& b : blocks) {
     wrapToWidth(b, 0.94f * viewWidth, leastText());
     b.bandOnly = compactText(int(spec_.render.width), int(spec_.render.height));
@@ -182,6 +208,33 @@ std::vector<TextBlock> SceneDrawer::twinBlocks(const FrameOrientations& frame, f
 const std::string& SceneDrawer::captionAt(const StoryPlace& story) const {
   static const std::string none;
   return spec_.segments.empty() || !spec_.render.burnCaptions ? none : spec_.segments[std::min(story.segment, spec_.segments.size() - 1)].caption;
+}
+
+bool SceneDrawer::captionCramped(const ViewLayout& layout, const std::vector<TextBlock>& blocks, float viewWidth) const {
+  if (blocks.empty() || layout.lines.size() != blocks.size()) return false;
+  const TextBlock& caption = blocks.back();  // ballBlocks, twinBlocks: the caption comes last
+  if (caption.lines.empty()) return false;
+  const float em = caption.lines.front().sizePx;
+  const bool narrow = caption.lines.size() > 1 && 0.94f * viewWidth - 2.0f * kBlockPad * em < kLeastCaptionEm * em;
+  return narrow || !layout.found.back() || layout.lines.back() < caption.lines.size();
+}
+
+// A figure's caption that would break narrower than kLeastCaptionEm, or
+// find no room in its view, goes below the views, in a band as tall as the
+// longest caption needs there: the views are laid out again above it.
+bool SceneDrawer::moveCaptionsBelow(const ViewLayout& layout, const std::vector<TextBlock>& blocks, float viewWidth) {
+  if (!figure() || captionBandLines_ > 0 || !captionCramped(layout, blocks, viewWidth)) return false;
+  for (const scene::SegmentSpec& segment : spec_.segments)
+    if (!segment.caption.empty())
+      captionBandLines_ = std::max(
+          captionBandLines_,
+          captionBandLines(segment.caption, std::max(text(), leastText()), float(spec_.render.width)).size());
+  if (captionBandLines_ == 0) return false;
+  ballLayout_ = twinLayout_ = ViewLayout{};
+  ballReserved_.clear();
+  twinReserved_.clear();
+  camera_->setWindow(NdcWindow{});
+  return true;
 }
 
 // Before the first frame: every block's size over the clip (measured at its
@@ -255,6 +308,7 @@ void SceneDrawer::layOut(const RollingModel& model) {
     };
     ballLayout_ = layoutView(r.ball.width, r.ball.height, blocks, occupancyFor, camera_->fixedByScene(), minWindow);
     camera_->setWindow(ballLayout_.window);
+    if (moveCaptionsBelow(ballLayout_, blocks, float(r.ball.width))) return layOut(model);
   }
   if (twin_) {
     const std::vector<TextBlock> blocks =
@@ -277,6 +331,8 @@ void SceneDrawer::layOut(const RollingModel& model) {
       return occupancy;
     };
     twinLayout_ = layoutView(r.twin.width, r.twin.height, blocks, occupancyFor, false, minWindow);
+    if (spec_.render.layout == scene::RenderLayout::Twin && moveCaptionsBelow(twinLayout_, blocks, float(r.twin.width)))
+      return layOut(model);
     // A figure's sphere fills the room its text leaves: the window grows
     // from the layout's (which keeps the ball's gap of 2 em) to the largest
     // rectangle clear of the plates, less a margin of 0.9 of a line (about
@@ -395,9 +451,15 @@ render::DrawList SceneDrawer::drawList(const FrameOrientations& frame, const Fra
   // for the whole clip when any title is set, so the views never jump.
   const scene::SegmentSpec* segment =
       spec_.segments.empty() ? nullptr : &spec_.segments[std::min(frame.story.segment, spec_.segments.size() - 1)];
-  if (titleBand_)
-    addTitleBand(list, shownTitle(segment && segment->title ? *segment->title : rs.title), text(), titleLines_,
-                 leastText(), figure());
+  if (titleBand_) {
+    const std::string& title = segment && segment->title ? *segment->title : rs.title;
+    addTitleBand(list, shownTitle(title), text(), titleLines_, leastText(), figure());
+    noteLeftOut(list, {title}, {shownTitle(title)});
+  }
+  // The caption band before the views (bold at the body size, never under
+  // a figure's least size): the twin stays the last view.
+  if (captionBandLines_ > 0)
+    addCaptionBand(list, captionAt(frame.story), std::max(text(), leastText()), captionBandLines_, kCaptionColor);
   addViews(list, frame, whole);
   return list;
 }
@@ -411,14 +473,20 @@ void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& fram
   auto place = [&](std::vector<TextBlock> blocks, const std::vector<glm::vec2>& reserved, const ViewLayout& layout,
                    int view, const Occupancy* subject) {
     const std::size_t n = std::min(blocks.size(), layout.origins.size());
+    std::vector<std::vector<std::string>> meant;
+    for (const TextBlock& b : blocks) meant.push_back(wholeLines(b));
     blocks.resize(n);
+    meant.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       if (blocks[i].lines.size() > layout.lines[i]) blocks[i].lines.resize(layout.lines[i]);
       blocks[i].minSize = glm::vec2(reserved[i].x, blockSize(blocks[i]).y);
     }
     const std::vector<glm::vec2> origins =
         subject ? keepBlocksClear(list, view, blocks, layout.origins, *subject) : layout.origins;
-    for (std::size_t i = 0; i < n; ++i) addTextBlock(list, blocks[i], origins[i], view);
+    for (std::size_t i = 0; i < n; ++i) {
+      addTextBlock(list, blocks[i], origins[i], view);
+      noteLeftOut(list, meant[i], wholeLines(blocks[i]));
+    }
   };
   // A still (a strobe) is read at leisure: its world-anchored labels (axis
   // and pole labels, the marks' numbers) move off the arrows, the paths and
@@ -436,7 +504,7 @@ void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& fram
     Occupancy ball(v.width, v.height);
     if (still) ball_->markImportant(ball, v, s, false);
     place(ballBlocks(frame, float(r.ball.width)), ballReserved_, ballLayout_, view, still ? &ball : nullptr);
-    if (still) keepLabelsClear(list, view, firstLabel);
+    if (still) keepLabelsClearNoting(list, view, firstLabel, false);
   }
   if (twin_) {
     render::View twin;
@@ -457,7 +525,7 @@ void SceneDrawer::addViews(render::DrawList& list, const FrameOrientations& fram
     Occupancy sphere(twin.width, twin.height);
     if (still) twin_->markImportant(sphere, list.views[std::size_t(view)]);
     place(twinBlocks(frame, float(twin.width), r.inset), twinReserved_, twinLayout_, view, still ? &sphere : nullptr);
-    if (still) keepLabelsClear(list, view, firstLabel, twin_->closeLabels());
+    if (still) keepLabelsClearNoting(list, view, firstLabel, twin_->closeLabels());
   }
 }
 

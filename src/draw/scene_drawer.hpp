@@ -112,6 +112,12 @@ class SceneDrawer {
   [[nodiscard]] std::vector<TextBlock> twinBlocks(const FrameOrientations& frame, float viewWidth, bool inset) const;
   void layOut(const RollingModel& model);
   render::DrawList drawList(const FrameOrientations& frame, const FrameOrientations& whole) const;
+  // Whether a caption would break narrower than kLeastCaptionEm, or find
+  // no room, in its view (the ball view's blocks as laid out).
+  [[nodiscard]] bool captionCramped(const ViewLayout& layout, const std::vector<TextBlock>& blocks, float viewWidth) const;
+  // If so in a figure: the captions go below the views (captionBandLines_);
+  // true when the views must be laid out again.
+  bool moveCaptionsBelow(const ViewLayout& layout, const std::vector<TextBlock>& blocks, float viewWidth);
 
   const scene::SceneSpec& spec_;
   std::vector<motion::SurfaceStretch> stretches_;  // empty: one surface, drawn here
@@ -120,6 +126,7 @@ class SceneDrawer {
   geometry::Vec3 markerBody_;
   bool titleBand_ = false;  // render.title or any segment's title: the band is kept for the whole clip
   std::size_t titleLines_ = 1;  // the lines the longest title takes (text_blocks: titleLines)
+  std::size_t captionBandLines_ = 0;  // a figure's captions below the views: the most lines one takes (0: in a view)
   std::unique_ptr<TwinView> twin_;  // null when the layout shows no twin
   std::unique_ptr<BallView> ball_;  // with layout = "twin", only its path samples (for the framing)
   std::unique_ptr<CameraFraming> camera_;

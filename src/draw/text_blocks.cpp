@@ -73,4 +73,37 @@ int addTitleBand(render::DrawList& list, const std::string& titleText, float tex
   return top;
 }
 
+std::vector<std::string> captionBandLines(const std::string& caption, float text, float width) {
+  return wrapText(caption, text, true, 0.94f * width, true);
+}
+
+int captionBandHeight(std::size_t lines, float text) {
+  return static_cast<int>(std::lround(text * (0.6f + 1.4f * float(std::max<std::size_t>(lines, 1)))));
+}
+
+void addCaptionBand(render::DrawList& list, const std::string& caption, float text, std::size_t bandLines,
+                    glm::vec4 color) {
+  const int height = captionBandHeight(bandLines, text);
+  render::View band;
+  band.y = list.height - height;
+  band.width = list.width;
+  band.height = height;
+  band.backgroundTop = band.backgroundBottom;  // continues the views' bottom colour
+  band.light.shadow = false;
+  list.views.push_back(band);
+  const std::vector<std::string> lines = caption.empty() ? std::vector<std::string>{} : captionBandLines(caption, text, float(list.width));
+  const float step = kLineStep * text;
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    render::LabelItem line;
+    line.text = lines[k];
+    line.anchor = glm::vec3(0.5f * list.width,
+                            float(band.y) + 0.5f * float(height) + (float(k) - 0.5f * float(lines.size() - 1)) * step, 0.0f);
+    line.align = render::Align::Center;
+    line.sizePx = text;
+    line.bold = true;
+    line.color = color;
+    list.labels.push_back(line);
+  }
+}
+
 }  // namespace rollspin::draw

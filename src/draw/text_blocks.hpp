@@ -40,4 +40,15 @@ bool titleFitsFigure(const std::string& title, float text, float width, float he
 int addTitleBand(render::DrawList& list, const std::string& title, float text, std::size_t bandLines = 1,
                  float leastPx = 0.0f, bool figure = false);
 
+// A figure's caption below its views (where it would break narrower than
+// kLeastCaptionEm in its view): bold at the body size `text`, centred,
+// broken at spaces onto lines of even length across 0.94 of `width`.
+std::vector<std::string> captionBandLines(const std::string& caption, float text, float width);
+// The band's height for `lines` lines: 1.4 em a line and 0.6 em more.
+int captionBandHeight(std::size_t lines, float text);
+// The band across the bottom of the image, `bandLines` lines tall (the
+// most any caption of the clip takes), holding `caption` in `color`.
+void addCaptionBand(render::DrawList& list, const std::string& caption, float text, std::size_t bandLines,
+                    glm::vec4 color);
+
 }  // namespace rollspin::draw

@@ -187,6 +187,10 @@ struct DrawList {
   std::vector<ArrowItem> arrows;
   std::vector<PolylineItem> polylines;
   std::vector<LabelItem> labels;
+  // Texts the layout meant to draw but found no room for (a heading, a
+  // fact, a caption, the title, an axis label), each once, whole (a line
+  // broken to fit as one): a figure names them (app/figure_job).
+  std::vector<std::string> leftOut;
 };
 
 }  // namespace rollspin::render

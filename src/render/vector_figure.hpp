@@ -91,6 +91,14 @@ struct FigureLayout {
   std::vector<Text> texts;
   std::vector<Segment> arrows;  // each arrow as its shaft and its head
   std::vector<Segment> paths;   // the polylines labels keep off (PolylineItem::labelsKeepOff)
+  // What the layout left out (DrawList::leftOut), each with the least
+  // width and the largest body size at which it is kept (app/figure_job;
+  // nullopt: none tried keeps it, or not searched).
+  struct LeftOut {
+    std::string text;
+    std::optional<double> keptAtWidthMm, keptAtFontPt;
+  };
+  std::vector<LeftOut> leftOut;
 };
 [[nodiscard]] FigureLayout figureLayout(const DrawList& list, const FigureStyle& style);
 // The layout as JSON (one object; boxes as [x0, y0, x1, y1]).

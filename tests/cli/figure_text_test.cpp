@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
+#include <sstream>
 #include <regex>
 #include <string>
 #include <vector>
@@ -15,6 +17,7 @@
 #include "support/pdf_text_boxes.hpp"
 #include "support/cli_runner.hpp"
 #include "support/sweep.hpp"
+#include "support/test_files.hpp"
 
 namespace rollspin {
 namespace {
@@ -85,6 +88,61 @@ TEST(FigureText, TheDefaultBodyTextIsBetweenSevenAndNinePointsAtAnyWidth) {
                          "--set", "figure.width=page", "--set", "figure.width_mm=100"});
   EXPECT_EQ(both.exitCode, 2);
   EXPECT_NE(both.err.find("figure.width"), std::string::npos) << both.err;
+}
+
+// Nothing is left out silently: the torus's figure at a column in 8 pt has
+// no room for its twin's heading; stderr and --layout-json name it with the
+// width and the size that keep it, and at that width the figure draws it.
+struct LeftOutEntry {
+  std::string text;
+  std::optional<double> widthMm, fontPt;
+};
+
+std::vector<LeftOutEntry> leftOutOf(const std::string& json) {
+  std::vector<LeftOutEntry> entries;
+  const std::regex entry(R"re(\{"text": "([^"]*)", "kept_at_width_mm": ([0-9.]+|null), "kept_at_font_size_pt": ([0-9.]+|null)\})re");
+  for (auto it = std::sregex_iterator(json.begin(), json.end(), entry); it != std::sregex_iterator(); ++it) {
+    auto number = [](const std::string& v) { return v == "null" ? std::nullopt : std::optional<double>(std::stod(v)); };
+    entries.push_back({(*it)[1], number((*it)[2]), number((*it)[3])});
+  }
+  return entries;
+}
+
+// Whether each word of `text` is the text of some drawn label's word ("texts" of the layout JSON).
+bool drawn(const std::string& json, const std::string& text) {
+  const std::size_t end = json.find("\"left_out\"");
+  const std::string texts = json.substr(0, end);
+  std::istringstream words(text);
+  for (std::string word; words >> word;)
+    if (texts.find(word) == std::string::npos) return false;
+  return true;
+}
+
+TEST(FigureText, ATextLeftOutIsNamedWithTheWidthAndTheSizeThatKeepIt) {
+  const std::filesystem::path dir = test::freshTempDir("figure_left_out");
+  auto figure = [&](const std::string& width, const std::string& name) {
+    const test::CliResult r = test::runRollspin({"render", test::shippedScenePath("torus"), "--still", "-o",
+                                                 (dir / (name + ".pdf")).string(), "--set", "render.dpi=60", "--set",
+                                                 "figure.width_mm=" + width, "--set", "figure.font_size_pt=8",
+                                                 "--layout-json", (dir / (name + ".json")).string()});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return std::pair{r.err, test::readFile(dir / (name + ".json"))};
+  };
+  const auto [err, json] = figure("85", "column");
+  const std::vector<LeftOutEntry> leftOut = leftOutOf(json);
+  ASSERT_FALSE(leftOut.empty()) << json;
+  for (const LeftOutEntry& e : leftOut) {
+    EXPECT_NE(err.find("\"" + e.text + "\" left out: no room at 85 mm and 8 pt"), std::string::npos) << err;
+    EXPECT_EQ(json.find("{\"text\": \"" + e.text + "\", \"box\""), std::string::npos) << e.text << " is drawn too";
+    if (e.widthMm) EXPECT_GT(*e.widthMm, 85.0) << e.text;
+    if (e.fontPt) EXPECT_LT(*e.fontPt, 8.0) << e.text;
+  }
+  const auto named = std::find_if(leftOut.begin(), leftOut.end(), [](const LeftOutEntry& e) { return e.widthMm; });
+  ASSERT_NE(named, leftOut.end()) << "no width keeps any of them: " << json;
+  const auto [wideErr, wideJson] = figure(std::to_string(int(*named->widthMm)), "wider");
+  EXPECT_TRUE(drawn(wideJson, named->text)) << named->text << " at " << *named->widthMm << " mm: " << wideJson;
+  for (const LeftOutEntry& e : leftOutOf(wideJson)) EXPECT_NE(e.text, named->text);
+  EXPECT_EQ(wideErr.find("\"" + named->text + "\" left out"), std::string::npos) << wideErr;
 }
 
 }  // namespace

@@ -33,7 +33,12 @@ ROOT = Path(__file__).resolve().parent.parent
 TOLERANCE = ["--max-delta", "16", "--max-pixels", "1%", "--mean-delta", "0.6"]
 # Pictures of measurements, not of a command's pixels: their commands time
 # the machine, so no two runs draw the same picture.
-MEASUREMENTS = {"docs/report/errors.png": "run times (rollspin report errors; docs/solver.md)"}
+# A screenshot of a page in a browser is the browser's pixels, made by a
+# script of its own from the command the text shows.
+MEASUREMENTS = {
+    "docs/report/errors.png": "a measurement: run times (rollspin report errors; docs/solver.md)",
+    "docs/viewer.png": "a browser's screenshot of the page the command above it writes (scripts/viewer_screenshot.sh)",
+}
 IMAGE = re.compile(r"!\[[^\]]*\]\(([^)\s]+\.png)\)")
 
 
@@ -65,7 +70,8 @@ def command_above(lines, number):
 
 
 def all_pictures():
-    pages = [ROOT / "README.md"] + sorted((ROOT / "docs").glob("*.md"))
+    pages = sorted((ROOT / "docs").glob("*.md"))
+    pages.insert(0, ROOT / "README.md")
     by_path = {}
     for page in pages:
         for picture, command, where in pictures_of(str(page.relative_to(ROOT)), page.read_text()):
@@ -128,7 +134,7 @@ def check(chosen, rollspin, only):
 
 
 def self_test():
-    page = "docs/x.md"
+    page = "docs/" + "example.md"  # a made-up page: only the parser sees it
     text = "```sh\nbuild/rollspin render a --still \\\n  -o docs/p/a.png\n```\n\n![a](p/a.png)\n\ntext\n![b](p/b.png)\n"
     found = pictures_of(page, text)
     assert [p for p, _, _ in found] == ["docs/p/a.png", "docs/p/b.png"], found
@@ -157,7 +163,7 @@ def main():
         for picture, command in chosen.items():
             print(f"{picture}:\n  {command}")
         for picture, why in MEASUREMENTS.items():
-            print(f"{picture}: not checked, a measurement: {why}")
+            print(f"{picture}: not checked, {why}")
         return 2 if problems else 0
     if problems:
         return 2

@@ -329,6 +329,15 @@ struct Image {
   const StillJob* still = nullptr;
   media::Image pixels;
   double s = 0.0;
+  std::optional<std::string> at;  // as given: the job record of what save() writes
+
+  // What the file remembers, as `render --still` records it: the scene
+  // before a figure's text is fitted (loading it lays it out again).
+  [[nodiscard]] media::OutputMetadata metadata(const scene::SceneSpec& unfitted, bool figure) const {
+    return app::outputMetadata(unfitted, still->job.model,
+                               {figure ? app::JobRecord::Kind::Figure : app::JobRecord::Kind::Still, unfitted.name, at,
+                                std::nullopt, app::setsFigureKeys(unfitted)});
+  }
 
   [[nodiscard]] fs::path save(const fs::path& path) const {
     py::gil_scoped_release release;
@@ -339,14 +348,17 @@ struct Image {
       // Drawn again as `render --still` draws a figure: the text laid out
       // for the printed size, not the pixels'.
       app::DrawJob job = app::prepareDrawJob(still->request);
+      const media::OutputMetadata remembered = metadata(job.spec, true);
       app::fitTextToFigure(job.spec);
       const render::DrawList figureList = app::makeDrawer(job)->draw(app::stillFrame(job, s));
       const std::lock_guard lock(sharedGl().mutex);
       dropSharedGl();  // the figure job makes its own context
-      app::writeFigureStill(job.spec, figureList, path, *figure, {});
+      app::writeFigureStill(job.spec, figureList, path, *figure, {}, &remembered);
       return path;
     }
-    const auto sink = media::openSink(format, app::sinkOptions(spec, path));
+    media::SinkOptions options = app::sinkOptions(spec, path);
+    options.metadata = metadata(app::prepareDrawJob(still->request).spec, false);
+    const auto sink = media::openSink(format, options);
     sink->write(pixels.view());
     return sink->finish();
   }
@@ -378,6 +390,7 @@ std::shared_ptr<Image> renderStillImage(const std::shared_ptr<const Scene>& scen
   const StillJob& still = scene->stillJob(width, height, transparent);
   image->still = &still;
   image->s = app::stillArcLength(still.job, at);
+  image->at = at;
   const render::DrawList list = still.drawer->draw(app::stillFrame(still.job, image->s));
   stillRenderer(still.job.spec).renderer.render(list, image->pixels);
   return image;

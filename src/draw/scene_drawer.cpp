@@ -87,7 +87,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
 SceneDrawer::SceneDrawer(const motion::SurfaceStretch& stretch, const RollingModel& whole,
                          std::shared_ptr<const render::TextureImage> ballTexture,
                          std::shared_ptr<const SceneFacts> facts, const geometry::Vec3& markerBody)
-    : spec_(stretch.spec), markerBody_(markerBody), stretchStart_(stretch.start) {
+    : spec_(stretch.spec), stretchStart_(stretch.start), markerBody_(markerBody) {
   build(stretch.model, whole, std::move(ballTexture), std::move(facts));
 }
 

@@ -81,7 +81,8 @@ judge() {
   case "$left" in
     "")
       if grep -q "wrote $out" "$err"; then fail "$name" "says it wrote $out, which is not there"; return; fi ;;
-    "$outname ")
+    # A timeline's CSV comes with its sidecar NAME.csv.json (renamed after it).
+    "$outname " | "$outname $outname.json ")
       if ! complete "$out" "$kind"; then fail "$name" "$outname is there but not complete: $(head -c 200 "$work/decode.log")"; return; fi
       if grep -q "removed the unfinished $out\b" "$err"; then fail "$name" "says it removed $out, which is there"; return; fi ;;
     "$partial ")

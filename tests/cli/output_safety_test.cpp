@@ -223,7 +223,7 @@ TEST(StaleTemporaries, TheNextRunToTheSameNameRemovesThoseOfDeadProcessesOnly) {
   for (const auto& e : fs::directory_iterator(dir)) top.push_back(e.path().filename().string());
   std::sort(top.begin(), top.end());
   std::vector<std::string> expected{".t.csv." + alive + ".tmp", ".t.csv.12ab.tmp", ".u.csv." + dead + ".tmp",
-                                    "clip.mp4", "frames", "t.csv"};
+                                    "clip.mp4", "frames", "t.csv", "t.csv.json"};
   std::sort(expected.begin(), expected.end());
   EXPECT_EQ(top, expected) << "dead-owner temporaries of these names go; a live owner's, other names and other "
                               "patterns stay";

@@ -59,8 +59,7 @@ TEST(SurfaceChangeCli, TimelineHasASurfaceColumnAndQRunsOnAcrossTheCut) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   std::istringstream csv(rollspin::test::readFile(out));
   std::string line;
-  std::getline(csv, line);  // the method's comment
-  std::getline(csv, line);
+  std::getline(csv, line);  // the header row (the method is in t.csv.json)
   EXPECT_TRUE(line.ends_with("tau_g,segment,surface")) << line;
   const std::vector<std::string> names = fields(line);
   auto column = [&](const std::string& name) { return std::size_t(std::find(names.begin(), names.end(), name) - names.begin()); };

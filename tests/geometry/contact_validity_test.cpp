@@ -63,7 +63,12 @@ TEST(CurveErrors, LeavingTheDomainIsReported) {
     (void)geodesicPath(cap, Vec2(0.0, 0.0), Vec3(1, 0, 0), 5.0);
     ADD_FAILURE() << "a geodesic off the cap was accepted";
   } catch (const GeometryError& e) {
-    EXPECT_NE(std::string(e.what()).find("leaves the surface"), std::string::npos) << e.what();
+    // At the cap's rim the height itself has no value (a NaN, not a
+    // domain bound): the message says where the surface is undefined.
+    const std::string what = e.what();
+    EXPECT_TRUE(what.find("leaves the surface") != std::string::npos ||
+                what.find("the surface is undefined where the geodesic reaches") != std::string::npos)
+        << what;
   }
 }
 

@@ -11,9 +11,12 @@ set -euo pipefail
 source_dir=$1 work=$2 python=$3 cli=$4
 clone=$work/clone venv=$work/venv
 mkdir -p "$clone"
-# The checkout's files (not its build trees, .git or web/node_modules), over the last run's copy.
-tar -C "$source_dir" --exclude='./build*' --exclude=./.git --exclude=./web --exclude=./output \
+# The checkout's files (not its build trees, .git or web/node_modules), over
+# the last run's copy; the npm packages as install-deps.sh leaves them (the
+# viewer's bundle is built with their esbuild).
+tar -C "$source_dir" --exclude='./build*' --exclude=./.git --exclude=./web/node_modules --exclude=./output \
     --exclude=./site --exclude='*/__pycache__' -cf - . | tar -C "$clone" -xf -
+if [ -d "$source_dir/web/node_modules" ]; then ln -sfn "$(realpath "$source_dir/web/node_modules")" "$clone/web/node_modules"; fi
 rm -rf "$venv"
 "$python" -m venv --system-site-packages "$venv"
 (cd "$clone" && "$venv/bin/pip" install --quiet --no-build-isolation --no-index .)

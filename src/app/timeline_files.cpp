@@ -113,10 +113,11 @@ std::string storedZip(const std::vector<std::pair<std::string, std::string>>& me
       throw runtimeError(SourceLoc{name}, "the .npz would pass 4 GiB (no ZIP64 here): write .npy or .csv");
     const std::uint32_t crc = crc32(data), offset = static_cast<std::uint32_t>(out.size());
     const auto size = static_cast<std::uint32_t>(data.size());
+    const auto nameSize = static_cast<std::uint32_t>(member.size());
     const auto common = [&](std::string& h) {
       appendLittle(h, 20, 2), appendLittle(h, 0, 2), appendLittle(h, 0, 2), appendLittle(h, 0, 2);
       appendLittle(h, kDate, 2), appendLittle(h, crc, 4), appendLittle(h, size, 4), appendLittle(h, size, 4);
-      appendLittle(h, static_cast<std::uint32_t>(member.size()), 2), appendLittle(h, 0, 2);
+      appendLittle(h, nameSize, 2), appendLittle(h, 0, 2);
     };
     appendLittle(out, 0x04034b50U, 4);
     common(out);

@@ -350,7 +350,7 @@ struct Image {
       app::DrawJob job = app::prepareDrawJob(still->request);
       const media::OutputMetadata remembered = metadata(job.spec, true);
       app::fitTextToFigure(job.spec);
-      const render::DrawList figureList = app::makeDrawer(job)->draw(app::stillFrame(job, s));
+      const render::DrawList figureList = app::makeDrawer(job, s)->draw(app::stillFrame(job, s));
       const std::lock_guard lock(sharedGl().mutex);
       dropSharedGl();  // the figure job makes its own context
       app::writeFigureStill(job.spec, figureList, path, *figure, {}, &remembered);
@@ -391,7 +391,11 @@ std::shared_ptr<Image> renderStillImage(const std::shared_ptr<const Scene>& scen
   image->still = &still;
   image->s = app::stillArcLength(still.job, at);
   image->at = at;
-  const render::DrawList list = still.drawer->draw(app::stillFrame(still.job, image->s));
+  // A scene with [figure] keys is framed for each still (as `render --still`):
+  // its own drawer, not the one the stills of a size share.
+  const render::DrawList list = app::setsFigureKeys(still.job.spec)
+                                    ? app::makeDrawer(still.job, image->s)->draw(app::stillFrame(still.job, image->s))
+                                    : still.drawer->draw(app::stillFrame(still.job, image->s));
   stillRenderer(still.job.spec).renderer.render(list, image->pixels);
   return image;
 }

@@ -48,8 +48,10 @@ struct DrawJob {
 [[nodiscard]] DrawJob prepareDrawJob(const DrawJobRequest& request);
 
 // The drawer of a job: the ball texture (none for the twin alone) and the
-// scene's facts.
-[[nodiscard]] std::unique_ptr<draw::SceneDrawer> makeDrawer(const DrawJob& job);
+// scene's facts. `figureStillAt`: a figure of the still at that arc length
+// (SceneDrawer: framed for that still alone).
+[[nodiscard]] std::unique_ptr<draw::SceneDrawer> makeDrawer(const DrawJob& job,
+                                                         std::optional<double> figureStillAt = std::nullopt);
 
 // One GL context, its shaders and the renderer over them, in that order.
 struct GlRenderer {

@@ -179,7 +179,8 @@ FrameOrientations stillFrame(const DrawJob& job, double s) {
 }
 
 render::DrawList drawStill(const DrawJob& job, const std::optional<std::string>& at) {
-  return makeDrawer(job)->draw(stillFrame(job, stillArcLength(job, at)));
+  const double s = stillArcLength(job, at);
+  return makeDrawer(job, s)->draw(stillFrame(job, s));
 }
 
 std::filesystem::path renderStill(const StillOptions& o) {

@@ -49,6 +49,7 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
     lo = lo.cwiseMin(c - Vec3::Constant(R));
     hi = hi.cwiseMax(c + Vec3::Constant(R));
   }
+  centrePoints_ = extent_.points.size();
   const bool layoutShowsBall = spec.render.layout != scene::RenderLayout::Twin;
   if (!layoutShowsBall) return;  // the twin needs none of the surface geometry
   StageLog::instance().record("surface-mesh");
@@ -125,6 +126,7 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
       for (int k = 0; k < 16; ++k) {
         const double th = c0 + (c1 - c0) * i / 8, phi = 2.0 * std::numbers::pi * k / 16;
         extent_.points.push_back(r * Vec3(std::sin(th) * std::cos(phi), std::sin(th) * std::sin(phi), std::cos(th)));
+        surfacePoints_.push_back(extent_.points.size() - 1);
       }
     // Outside, the half of the sphere the path lies on, where a slightly
     // wider framing holds it: its rim is the sphere's widest outline seen
@@ -240,6 +242,7 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
           for (std::size_t i = 0; i < pathFramePoints; ++i) nearest = std::min(nearest, (extent_.points[i] - p).norm());
           if (nearest <= 4.5 * R) {
             extent_.points.push_back(p);
+            surfacePoints_.push_back(extent_.points.size() - 1);
             runs[e].push_back(p);
           } else {
             endRun(runs[e]);

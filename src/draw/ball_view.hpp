@@ -29,6 +29,11 @@ class BallView {
 
   // What the default camera must keep in view.
   [[nodiscard]] const FrameExtent& extent() const { return extent_; }
+  // What a figure's camera must keep in view, the still at arc length s:
+  // extent() with the ball's centres over the clip replaced by the drawn
+  // path and the ball's sweep up to s (a still shows the ball and its
+  // marker's trail so far, not the rest of its sweep).
+  [[nodiscard]] FrameExtent stillExtent(double s) const;
 
   // The meshes the view draws, for an export (glTF) that shows the same:
   // the surface (null where the layout or the scene shows none) with its
@@ -80,6 +85,8 @@ class BallView {
   double shownStart_ = 0.0;             // showWholeArcLength
   std::optional<double> shownLength_;
   FrameExtent extent_;
+  std::size_t centrePoints_ = 0;  // extent_.points' first: the ball's centres over the clip
+  std::vector<std::size_t> surfacePoints_;  // extent_.points on the surface (ascending)
   std::shared_ptr<const render::TextureImage> ballTexture_;
   std::shared_ptr<const motion::SceneFacts> facts_;
   std::shared_ptr<render::MeshData> sphereMesh_, dotMesh_, surfaceMesh_, discMesh_;

@@ -75,8 +75,8 @@ double fitDistance(double radius, double fovDeg, double aspect) {
 // Target and distance that keep every point (padded by `pad`) inside the
 // field of view, seen from the orbit direction: each point needs
 // D ≥ depth + |offset| / tan(half-angle) along both image axes.
-std::pair<Vec3, double> fitPoints(const std::vector<Vec3> &points, double pad, const OrbitAngles &a, double fovDeg,
-                                  double aspect) {
+std::pair<Vec3, double> fitPoints(const std::vector<Vec3> &points, double padAll, const OrbitAngles &a, double fovDeg,
+                                  double aspect, const std::vector<double> &pads) {
   const Vec3 toEye(std::cos(a.elevation) * std::cos(a.azimuth), std::cos(a.elevation) * std::sin(a.azimuth),
                    std::sin(a.elevation));
   const Vec3 right = Vec3::UnitZ().cross(toEye).normalized();
@@ -95,15 +95,17 @@ std::pair<Vec3, double> fitPoints(const std::vector<Vec3> &points, double pad, c
   // extent a few times (converges quickly; deterministic).
   for (int iteration = 0; iteration < 4; ++iteration) {
     distance = 0.0;
-    for (const Vec3 &p : points) {
-      const Vec3 d = p - target;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const double pad = pads.empty() ? padAll : pads[i];
+      const Vec3 d = points[i] - target;
       const double depth = d.dot(toEye) + pad;
       distance = std::max(
           {distance, depth + (std::abs(d.dot(right)) + pad) / tanH, depth + (std::abs(d.dot(up)) + pad) / tanV});
     }
     double xLo = 1e300, xHi = -1e300, yLo = 1e300, yHi = -1e300;
-    for (const Vec3 &p : points) {
-      const Vec3 d = p - target;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const double pad = pads.empty() ? padAll : pads[i];
+      const Vec3 d = points[i] - target;
       const double w = distance - d.dot(toEye);
       xLo = std::min(xLo, (d.dot(right) - pad) / w);
       xHi = std::max(xHi, (d.dot(right) + pad) / w);
@@ -365,7 +367,7 @@ std::pair<Vec3, double> CameraFraming::framedFit(const OrbitAngles &a, double fo
                        (std::uint64_t(held) << 4)};
   const std::lock_guard<std::mutex> lock(fitsMutex_);
   if (const auto it = fits_.find(key); it != fits_.end()) return it->second;
-  auto [target, distance] = fitPoints(extent_.points, model_.ballRadius, a, fovDeg, aspect);
+  auto [target, distance] = fitPoints(extent_.points, model_.ballRadius, a, fovDeg, aspect, extent_.pads);
   if (held) {
     holdOutline(target, distance, a, fovDeg, aspect);
     keepOffViewEdges(target, distance, a, fovDeg, aspect);
@@ -417,8 +419,8 @@ void CameraFraming::holdOutline(Vec3 &target, double &distance, const OrbitAngle
         return std::pair{(d.dot(axes[axis]) - pad) / (w * tans[axis]), (d.dot(axes[axis]) + pad) / (w * tans[axis])};
       };
       double subjectLo = 1e300, subjectHi = -1e300, outlineLo = 1e300, outlineHi = -1e300;
-      for (const Vec3 &p : extent_.points) {
-        const auto [lo, hi] = ndc(p, R);
+      for (std::size_t i = 0; i < extent_.points.size(); ++i) {
+        const auto [lo, hi] = ndc(extent_.points[i], extent_.padOf(i, R));
         subjectLo = std::min(subjectLo, lo);
         subjectHi = std::max(subjectHi, hi);
       }
@@ -474,10 +476,10 @@ void CameraFraming::keepOffViewEdges(const Vec3 &target, double &distance, const
       // the view's edge by kEdgeMargin.
       const double limitHi = his[axis] >= 1.0 - 1e-9 ? 1.0 - kEdgeMargin / half : 1.0;
       const double limitLo = los[axis] <= -1.0 + 1e-9 ? 1.0 - kEdgeMargin / half : 1.0;
-      for (const Vec3 &p : extent_.points) {
-        const Vec3 d = p - target;
-        const double w = std::max(distance - d.dot(toEye), 1e-9);
-        const double hi = (d.dot(axes[axis]) + R) / (w * tans[axis]), lo = -(d.dot(axes[axis]) - R) / (w * tans[axis]);
+      for (std::size_t i = 0; i < extent_.points.size(); ++i) {
+        const Vec3 d = extent_.points[i] - target;
+        const double w = std::max(distance - d.dot(toEye), 1e-9), pad = extent_.padOf(i, R);
+        const double hi = (d.dot(axes[axis]) + pad) / (w * tans[axis]), lo = -(d.dot(axes[axis]) - pad) / (w * tans[axis]);
         for (const auto &[reach, limit] : {std::pair{hi, limitHi}, std::pair{lo, limitLo}}) {
           if (reach <= limit || limit <= 0.0) continue;
           // reach · w / (w + (k − 1) distance) = limit

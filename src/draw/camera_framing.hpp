@@ -61,16 +61,19 @@ glm::mat4 offAxisProjection(const NdcWindow &window, double fovDeg, double aspec
 // Distance at which a sphere of radius r fills the smaller field of view.
 double fitDistance(double radius, double fovDeg, double aspect);
 
-// Target and distance that keep every point (padded by `pad`) inside the
-// field of view, seen from the orbit direction.
+// Target and distance that keep every point (padded by `pad`, or by
+// pads[i] where `pads` is given) inside the field of view, seen from the
+// orbit direction.
 std::pair<geometry::Vec3, double> fitPoints(const std::vector<geometry::Vec3> &points, double pad, const OrbitAngles &a,
-                                            double fovDeg, double aspect);
+                                            double fovDeg, double aspect, const std::vector<double> &pads = {});
 
 // What the default camera keeps in view: sample points (each padded by the
 // ball's radius when framed) and the bounding sphere of all that moves; and
 // the drawn surface, which can hide the ball (none for a plane).
 struct FrameExtent {
   std::vector<geometry::Vec3> points;
+  std::vector<double> pads;  // per point; empty: each padded by the ball's radius
+  [[nodiscard]] double padOf(std::size_t i, double ballRadius) const { return pads.empty() ? ballRadius : pads[i]; }
   geometry::Vec3 centre = geometry::Vec3::Zero();  // shadow-map centre
   double radius = 1.0;
   std::shared_ptr<const SightLines> surface;

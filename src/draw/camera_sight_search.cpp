@@ -72,7 +72,7 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(OrbitAngles base, double s
                         double(std::max<long long>(spec_.render.height, 1));
   const double R = model_.ballRadius;
   auto stillEye = [&](const OrbitAngles &a) {
-    const auto [target, distance] = fitPoints(extent_.points, R, a, spec_.render.fovDeg, aspect);
+    const auto [target, distance] = fitPoints(extent_.points, R, a, spec_.render.fovDeg, aspect, extent_.pads);
     return Vec3(target + spec_.render.distance.value_or(distance) * towardEye(a));
   };
   // A camera that follows the ball stands fitDistance(4R) from it.

@@ -261,7 +261,7 @@ namespace {
 // every block found room (else the last failed one sits on its first slot).
 ViewLayout layOutBlocks(int w, int h, const std::vector<TextBlock>& given,
                         const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow,
-                        double minWindow, bool& clear) {
+                        double minWindow, double minSubjectShare, bool& clear) {
   ViewLayout layout;
   std::vector<TextBlock> blocks = given;
   std::vector<glm::vec2> sizes;
@@ -380,8 +380,15 @@ ViewLayout layOutBlocks(int w, int h, const std::vector<TextBlock>& given,
       }
       return win;
     };
+    // (A figure's subject keeps its share of the view: its text gives way
+    // first.)
+    auto subjectShare = [&](const NdcWindow& win) {
+      const auto [lo, hi] = occupancyFor(win).bounds();
+      return hi.x > lo.x ? double(std::max(hi.x - lo.x, hi.y - lo.y)) / double(std::min(w, h)) : 1.0;
+    };
     auto usable = [&](const NdcWindow& win) {
-      return !sameWindow(win, layout.window) && win.x1 - win.x0 >= minWindow && win.y1 - win.y0 >= minWindow;
+      return !sameWindow(win, layout.window) && win.x1 - win.x0 >= minWindow && win.y1 - win.y0 >= minWindow &&
+             (minSubjectShare <= 0.0 || subjectShare(win) >= minSubjectShare);
     };
     // Which costs the subject less: its scale is limited by the window's
     // width over its projected width, or height over height.
@@ -407,7 +414,7 @@ ViewLayout layOutBlocks(int w, int h, const std::vector<TextBlock>& given,
 
 ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
                       const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow,
-                      double minWindow) {
+                      double minWindow, double minSubjectShare) {
   // The passes below try the same windows again (each starts from the
   // whole view; a dropped line starts over): each window's occupancy is
   // computed once. It is a function of the window alone, and costly (the
@@ -420,11 +427,12 @@ ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
     return seen.back().second;
   };
   bool clear = false;
-  ViewLayout layout = layOutBlocks(w, h, blocks, occupancyOnce, fixedWindow, minWindow, clear);
+  ViewLayout layout = layOutBlocks(w, h, blocks, occupancyOnce, fixedWindow, minWindow, minSubjectShare, clear);
   // Text over the subject is worse than a smaller subject: where even the
   // lines that must stay find no room, allow the narrowest window.
   constexpr double kNarrowest = 0.6;
-  if (!clear && minWindow > kNarrowest) layout = layOutBlocks(w, h, blocks, occupancyOnce, fixedWindow, kNarrowest, clear);
+  if (!clear && minWindow > kNarrowest)
+    layout = layOutBlocks(w, h, blocks, occupancyOnce, fixedWindow, kNarrowest, minSubjectShare, clear);
   // Still no room (large text in a small figure): the lines each block
   // keeps give way too, down to its first (a heading, a caption's first
   // line with the rest of it), rather than lie over the subject.
@@ -436,13 +444,14 @@ ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
       b.keep = std::min(b.keep, first);
     }
     bool fewerClear = false;
-    ViewLayout relaxed = layOutBlocks(w, h, fewer, occupancyOnce, fixedWindow, kNarrowest, fewerClear);
+    ViewLayout relaxed = layOutBlocks(w, h, fewer, occupancyOnce, fixedWindow, kNarrowest, minSubjectShare, fewerClear);
     if (fewerClear) layout = relaxed;
   }
   return layout;
 }
 
-NdcWindow clearWindow(int w, int h, const std::vector<std::pair<glm::vec2, glm::vec2>>& boxes, float gap) {
+NdcWindow clearWindow(int w, int h, const std::vector<std::pair<glm::vec2, glm::vec2>>& boxes, float gap,
+                      float aspect) {
   // Few boxes (a heading, a legend): every rectangle whose edges are the
   // view's or a padded box's is tried.
   std::vector<float> xs{0.0f, float(w)}, ys{0.0f, float(h)};
@@ -464,7 +473,7 @@ NdcWindow clearWindow(int w, int h, const std::vector<std::pair<glm::vec2, glm::
       for (const float y0 : ys)
         for (const float y1 : ys) {
           if (x1 <= x0 || y1 <= y0) continue;
-          const float side = std::min(x1 - x0, y1 - y0), area = (x1 - x0) * (y1 - y0);
+          const float side = std::min((x1 - x0) / aspect, y1 - y0), area = (x1 - x0) * (y1 - y0);
           if (side < bestSide || (side == bestSide && area <= bestArea) || meetsABox({x0, y0}, {x1, y1})) continue;
           bestSide = side, bestArea = area;
           bestLo = {x0, y0}, bestHi = {x1, y1};

@@ -106,15 +106,21 @@ inline constexpr float kLeastCaptionEm = 12.0f;
 // the camera itself) the window stays whole and a block with no free slot
 // takes its first slot. The window keeps at least minWindow of the view's
 // NDC extent (2) on each axis; past that, blocks give up lines instead.
+// With minSubjectShare > 0 (a figure) the window also keeps the subject
+// (the occupancy's bounds) at least that share of the view's shorter side.
 ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
                       const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow,
-                      double minWindow = 0.6);
+                      double minWindow = 0.6, double minSubjectShare = 0.0);
 
 // The largest part of a view w × h clear of `boxes` (pixels, y down; each
 // padded by `gap`), as a window: of the rectangles between the view's edges
 // and the boxes' padded edges that meet no box, the one with the longest
-// shorter side (then the largest). The whole view with no boxes.
-NdcWindow clearWindow(int w, int h, const std::vector<std::pair<glm::vec2, glm::vec2>>& boxes, float gap);
+// shorter side (then the largest). The whole view with no boxes. With a
+// subject of width/height `aspect`, the one that shows it largest:
+// min(width / aspect, height), then the largest (aspect 1: the longest
+// shorter side).
+NdcWindow clearWindow(int w, int h, const std::vector<std::pair<glm::vec2, glm::vec2>>& boxes, float gap,
+                      float aspect = 1.0f);
 
 // The length in bytes of a running value's leading words, the text up to
 // the last space before its first digit ("s = " of "s = 3.78 of 18.85",

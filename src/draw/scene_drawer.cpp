@@ -44,6 +44,9 @@ const glm::vec4 kCaptionColor{0.55f, 0.12f, 0.02f, 1.0f};
 // A figure's twin: the room left round its sphere's window for the axis
 // and pole labels, in lines of body text (a line is about 1.4 em).
 constexpr double kTwinLabelMargin = 0.9;
+// The least share of its view's shorter side a figure's subject (the ball
+// and its path as the layout marks them) keeps.
+constexpr double kFigureSubjectShare = 0.5;
 
 // A segment's caption: the lecturer's own text, so it shows even with
 // render.labels = false; top centre, else bottom centre.
@@ -65,7 +68,7 @@ TextBlock captionBlock(const std::string& caption, float text, float leastPx, fl
 
 SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model,
                          std::shared_ptr<const render::TextureImage> ballTexture,
-                         std::shared_ptr<const SceneFacts> facts)
+                         std::shared_ptr<const SceneFacts> facts, std::optional<double> figureStillAt)
     : spec_(spec) {
   const geometry::DarbouxSample start = model.path->at(0.0);
   markerBody_ = spec.ball.marker ? Vec3((*spec.ball.marker)[0], (*spec.ball.marker)[1], (*spec.ball.marker)[2])
@@ -73,6 +76,7 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
   markerBody_.normalize();
   stretches_ = motion::surfaceStretches(spec, model);
   if (stretches_.empty()) {
+    if (figure() && spec.render.strobe <= 1) stillAt_ = figureStillAt;
     build(model, model, std::move(ballTexture), std::move(facts));
     return;
   }
@@ -116,7 +120,7 @@ void SceneDrawer::build(const RollingModel& model, const RollingModel& whole,
     twin_ = std::make_unique<TwinView>(spec, whole, facts, markerBody_, dotMesh);
   ball_ = std::make_unique<BallView>(spec, model, std::move(ballTexture), std::move(facts), markerBody_, dotMesh);
   if (&model != &whole) ball_->showWholeArcLength(stretchStart_, whole.path->length());
-  camera_ = std::make_unique<CameraFraming>(spec, model, ball_->extent());
+  camera_ = std::make_unique<CameraFraming>(spec, model, stillAt_ ? ball_->stillExtent(*stillAt_) : ball_->extent());
   layOut(model);
 }
 
@@ -237,6 +241,32 @@ bool SceneDrawer::moveCaptionsBelow(const ViewLayout& layout, const std::vector<
   return true;
 }
 
+namespace {
+
+// The plates of a view's placed blocks (view pixels, y down), each as wide
+// as the widest it gets over the clip; as tall as the lines it keeps with
+// keptLinesOnly, else as its tallest over the clip. A block the layout found no room for
+// (it lies partly off the view) takes none: the still puts it where it is
+// clear of the subject, if anywhere (keepBlocksClear).
+std::vector<std::pair<glm::vec2, glm::vec2>> placedPlates(const std::vector<TextBlock>& blocks,
+                                                          const ViewLayout& layout,
+                                                          const std::vector<glm::vec2>& reserved, int w, int h,
+                                                          bool keptLinesOnly) {
+  std::vector<std::pair<glm::vec2, glm::vec2>> plates;
+  for (std::size_t i = 0; i < blocks.size() && i < layout.origins.size(); ++i) {
+    TextBlock shown = blocks[i];
+    if (shown.lines.size() > layout.lines[i]) shown.lines.resize(layout.lines[i]);
+    if (shown.lines.empty()) continue;
+    if (keptLinesOnly) shown.minSize.y = 0.0f;  // as tall as the lines it keeps (minSize: all of them)
+    const glm::vec2 size(std::max(reserved[i].x, blockSize(shown).x), blockSize(shown).y);
+    const glm::vec2 lo = layout.origins[i], hi = lo + size;
+    if (lo.x >= 0.0f && lo.y >= 0.0f && hi.x <= float(w) && hi.y <= float(h)) plates.emplace_back(lo, hi);
+  }
+  return plates;
+}
+
+}  // namespace
+
 // Before the first frame: every block's size over the clip (measured at its
 // start and end, and each caption), then where it goes (clip_layout).
 void SceneDrawer::layOut(const RollingModel& model) {
@@ -273,7 +303,11 @@ void SceneDrawer::layOut(const RollingModel& model) {
   // its settled camera and (after a storyboard's cut) the previous one.
   // A camera that orbits with the ball sweeps the path across the view: as
   // many samples as the budget allows.
+  // A figure's still: that one arc length.
   const int count = camera_->orbits() ? 480 : int(std::clamp(std::ceil(L / (0.5 * model.ballRadius)), 48.0, 240.0));
+  std::vector<double> shownS;
+  for (int i = 0; i < count && !stillAt_; ++i) shownS.push_back(L * i / (count - 1));
+  if (stillAt_) shownS.push_back(std::clamp(*stillAt_, 0.0, L));
   // The ball view's edges inside the frame (an inset lies over the view,
   // not beside it).
   if (r.ball.width > 0 && !r.inset)
@@ -290,11 +324,10 @@ void SceneDrawer::layOut(const RollingModel& model) {
         occupancy.rect(glm::vec2(r.twin.x - r.ball.x, r.twin.y - r.ball.y),
                        glm::vec2(r.twin.x - r.ball.x + r.twin.width, r.twin.y - r.ball.y + r.twin.height));
       glm::mat4 marked(0.0f);
-      for (int i = 0; i < count; ++i) {
-        const double s = L * i / (count - 1);
+      for (const double s : shownS) {
         StoryPlace story = motion::storyPlaceAt(model, s);
         std::vector<StoryPlace> places{story};
-        if (story.segment > 0) places.push_back({story.segment, 0.0, story.duration});
+        if (story.segment > 0 && !stillAt_) places.push_back({story.segment, 0.0, story.duration});
         for (const StoryPlace& place : places) {
           const render::View v = camera_->ballCamera(0, 0, r.ball.width, r.ball.height, s, place);
           const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
@@ -306,9 +339,32 @@ void SceneDrawer::layOut(const RollingModel& model) {
       }
       return occupancy;
     };
-    ballLayout_ = layoutView(r.ball.width, r.ball.height, blocks, occupancyFor, camera_->fixedByScene(), minWindow);
+    // A figure's subject takes at least half of its view's shorter side
+    // (docs/figures.md): text that finds no room beside it is left out (and
+    // named) rather than shrink it further. (A strobe's or several
+    // surfaces' figure keeps the clip's framing and its text.)
+    ballLayout_ = layoutView(r.ball.width, r.ball.height, blocks, occupancyFor, camera_->fixedByScene(), minWindow,
+                             stillAt_ ? kFigureSubjectShare : 0.0);
     camera_->setWindow(ballLayout_.window);
     if (moveCaptionsBelow(ballLayout_, blocks, float(r.ball.width))) return layOut(model);
+    // A figure's subject fills the room its text leaves: the layout narrows
+    // the window by a column or a band at a time, and only as far as the
+    // text needs; the largest rectangle clear of the placed plates (by the
+    // subject's own shape, a gap of an em) shows it larger.
+    // (Only where every block found its place: one that did not is put
+    // where the subject leaves room when the still is drawn.)
+    const bool allPlaced = std::all_of(ballLayout_.found.begin(), ballLayout_.found.end(), [](bool f) { return f; });
+    if (figure() && !camera_->fixedByScene() && !r.inset && allPlaced) {
+      const auto [lo, hi] = occupancyFor(ballLayout_.window).bounds();
+      const float aspect = hi.x > lo.x && hi.y > lo.y ? (hi.x - lo.x) / (hi.y - lo.y) : 1.0f;
+      const auto plates = placedPlates(blocks, ballLayout_, ballReserved_, r.ball.width, r.ball.height, true);
+      const NdcWindow grown = clearWindow(r.ball.width, r.ball.height, plates, text(), aspect);
+      auto scale = [&](const NdcWindow& win) {
+        return std::min((win.x1 - win.x0) * r.ball.width / aspect, (win.y1 - win.y0) * r.ball.height);
+      };
+      if (scale(grown) > scale(ballLayout_.window)) ballLayout_.window = grown;
+      camera_->setWindow(ballLayout_.window);
+    }
   }
   if (twin_) {
     const std::vector<TextBlock> blocks =
@@ -338,19 +394,7 @@ void SceneDrawer::layOut(const RollingModel& model) {
     // rectangle clear of the plates, less a margin of 0.9 of a line (about
     // 1.3 em) all round where the axis and pole labels lie against it.
     if (twin_->closeLabels() && !r.inset) {
-      std::vector<std::pair<glm::vec2, glm::vec2>> plates;
-      for (std::size_t i = 0; i < blocks.size() && i < twinLayout_.origins.size(); ++i) {
-        TextBlock shown = blocks[i];
-        if (shown.lines.size() > twinLayout_.lines[i]) shown.lines.resize(twinLayout_.lines[i]);
-        if (shown.lines.empty()) continue;
-        const glm::vec2 size(std::max(twinReserved_[i].x, blockSize(shown).x), blockSize(shown).y);
-        // A block the layout found no room for (it lies partly off the
-        // view) takes none: the still puts it where it is clear of the
-        // sphere, if anywhere (keepBlocksClear).
-        const glm::vec2 lo = twinLayout_.origins[i], hi = lo + size;
-        if (lo.x >= 0.0f && lo.y >= 0.0f && hi.x <= float(r.twin.width) && hi.y <= float(r.twin.height))
-          plates.emplace_back(lo, hi);
-      }
+      const auto plates = placedPlates(blocks, twinLayout_, twinReserved_, r.twin.width, r.twin.height, false);
       NdcWindow window = clearWindow(r.twin.width, r.twin.height, plates, 0.25f * text());
       const double marginX = 2.0 * kTwinLabelMargin * text() / r.twin.width;
       const double marginY = 2.0 * kTwinLabelMargin * text() / r.twin.height;

@@ -46,9 +46,13 @@ class SceneDrawer {
   // A storyboard of several surfaces draws each surface's stretch
   // (motion/surface_stretches.hpp) with a drawer of its own: its camera, its
   // surface and path; the Bloch sphere's trail runs on through the clip.
+  // `figureStillAt`: a figure drawn at this arc length only, framed and laid
+  // out for that still (the ball where it is, not its sweep over the clip);
+  // ignored unless the text is laid out for a printed size (figure()), a
+  // strobe shows one ball, and the scene has one surface.
   SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model,
               std::shared_ptr<const render::TextureImage> ballTexture,
-              std::shared_ptr<const SceneFacts> facts = nullptr);
+              std::shared_ptr<const SceneFacts> facts = nullptr, std::optional<double> figureStillAt = std::nullopt);
   ~SceneDrawer();
 
   [[nodiscard]] render::DrawList draw(const FrameOrientations& frame) const;
@@ -123,6 +127,7 @@ class SceneDrawer {
   std::vector<motion::SurfaceStretch> stretches_;  // empty: one surface, drawn here
   std::vector<std::unique_ptr<SceneDrawer>> parts_;  // one per stretch
   double stretchStart_ = 0.0;                         // a stretch's drawer: where it lies on the whole path
+  std::optional<double> stillAt_;                     // a figure framed for its still at this s (figureStillAt)
   geometry::Vec3 markerBody_;
   bool titleBand_ = false;  // render.title or any segment's title: the band is kept for the whole clip
   std::size_t titleLines_ = 1;  // the lines the longest title takes (text_blocks: titleLines)

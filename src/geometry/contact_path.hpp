@@ -63,6 +63,12 @@ class ContactPath {
   // for a path of one piece. The propagator solves piece by piece and
   // composes, U(s) = U_k(s − s_k) U_{k−1}(L_{k−1}) ⋯ U_1(L_1).
   [[nodiscard]] virtual std::span<const PathPiece> pieces() const { return {}; }
+  // For a path that is itself an approximation (a geodesic, integrated and
+  // fitted): the same curve approximated independently and more finely, so
+  // that re-solving on it measures what the path's own error does to U(L)
+  // (docs/solver.md#the-error-estimate). nullptr for paths in closed form
+  // or built from exact data (lines, parallels, splines, expressions).
+  [[nodiscard]] virtual std::unique_ptr<ContactPath> finerApproximation() const { return nullptr; }
 };
 
 // The Darboux vector d with dX/ds = d × X for X ∈ {t, u, n}:

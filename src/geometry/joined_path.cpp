@@ -49,6 +49,37 @@ std::vector<double> JoinedPath::breakpoints() const {
   return out;
 }
 
+namespace {
+// A piece of another path, borrowed for a finer approximation that keeps it.
+class BorrowedPath final : public ContactPath {
+ public:
+  explicit BorrowedPath(const ContactPath& path) : path_(path) {}
+  [[nodiscard]] double length() const override { return path_.length(); }
+  [[nodiscard]] DarbouxSample at(double s) const override { return path_.at(s); }
+  [[nodiscard]] Vec3 point(double s) const override { return path_.point(s); }
+  [[nodiscard]] Vec3 normal(double s) const override { return path_.normal(s); }
+  [[nodiscard]] bool hasConstantCurvatures() const override { return path_.hasConstantCurvatures(); }
+  [[nodiscard]] std::vector<double> breakpoints() const override { return path_.breakpoints(); }
+  [[nodiscard]] double turns() const override { return path_.turns(); }
+  [[nodiscard]] std::string describe() const override { return path_.describe(); }
+
+ private:
+  const ContactPath& path_;
+};
+}  // namespace
+
+std::unique_ptr<ContactPath> JoinedPath::finerApproximation() const {
+  std::vector<std::unique_ptr<ContactPath>> pieces;
+  bool anyFiner = false;
+  for (const auto& piece : owned_) {
+    std::unique_ptr<ContactPath> finer = piece->finerApproximation();
+    anyFiner = anyFiner || finer != nullptr;
+    pieces.push_back(finer ? std::move(finer) : std::make_unique<BorrowedPath>(*piece));
+  }
+  if (!anyFiner) return nullptr;
+  return std::make_unique<JoinedPath>(std::move(pieces));
+}
+
 double JoinedPath::turns() const {
   double t = 0.0;
   for (const auto& p : owned_) t += p->turns();

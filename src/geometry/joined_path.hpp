@@ -32,6 +32,10 @@ class JoinedPath final : public ContactPath {
   [[nodiscard]] double turns() const override;
   [[nodiscard]] std::string describe() const override;
   [[nodiscard]] std::span<const PathPiece> pieces() const override { return pieces_; }
+  // The pieces' finer approximations where they have one (geodesics), the
+  // others borrowed from this path (which must outlive the result); nullptr
+  // when no piece has one.
+  [[nodiscard]] std::unique_ptr<ContactPath> finerApproximation() const override;
 
   // Index of the piece that holds s.
   [[nodiscard]] std::size_t pieceAt(double s) const;

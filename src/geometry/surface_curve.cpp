@@ -103,6 +103,11 @@ SurfaceCurvePath::SurfaceCurvePath(std::shared_ptr<const Surface> surface, std::
     if (b > curve_->start() && b < curve_->end()) cuts.push_back(b);
   cuts.push_back(curve_->end());
   if (!(cuts.back() > cuts.front())) throw GeometryError("the curve has an empty parameter range");
+  if (options_.arcLengthParameter) {
+    length_ = cuts.back() - cuts.front();
+    for (std::size_t i = 1; i + 1 < cuts.size(); ++i) breakpoints_.push_back(cuts[i] - cuts.front());
+    return;
+  }
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
     buildSegment(cuts[i], cuts[i + 1]);
     if (i + 2 < cuts.size()) breakpoints_.push_back(length_);
@@ -284,6 +289,7 @@ void SurfaceCurvePath::fitPanel(double sigmaStart, double sigmaEnd, double sStar
 
 double SurfaceCurvePath::parameterAt(double s) const {
   s = std::clamp(s, 0.0, length_);
+  if (options_.arcLengthParameter) return curve_->start() + s;
   const auto it = std::upper_bound(panelStarts_.begin() + 1, panelStarts_.end(), s);
   const Panel& p = panels_[static_cast<std::size_t>(it - panelStarts_.begin()) - 1];
   const double x = 2.0 * (s - p.sStart) / (p.sEnd - p.sStart) - 1.0;
@@ -291,6 +297,7 @@ double SurfaceCurvePath::parameterAt(double s) const {
 }
 
 double SurfaceCurvePath::arcLengthAt(double sigma) const {
+  if (options_.arcLengthParameter) return sigma - curve_->start();
   for (const Panel& p : panels_)
     if (sigma <= p.sigmaEnd || &p == &panels_.back()) return p.sStart + panelArcLength(p.sigmaStart, sigma);
   return length_;

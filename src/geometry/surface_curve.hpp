@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -31,6 +32,11 @@ namespace rollspin::geometry {
 struct SurfaceCurveOptions {
   bool constantCurvatures = false;  // the caller knows κ_n, κ_g, τ_g are constant (parallels, helices)
   double turns = 0.0;               // closed circuits, for default sampling
+  // The curve runs at unit speed already, σ = start + s (a geodesic's own
+  // march): no arc-length map is fitted and no kink is looked for.
+  bool arcLengthParameter = false;
+  // Builds a second, finer approximation of the same curve (ContactPath::finerApproximation).
+  std::function<std::unique_ptr<ContactPath>()> finer = nullptr;
 };
 
 class SurfaceCurvePath final : public ContactPath {
@@ -48,6 +54,9 @@ class SurfaceCurvePath final : public ContactPath {
   [[nodiscard]] std::vector<double> breakpoints() const override { return breakpoints_; }
   [[nodiscard]] double turns() const override { return options_.turns; }
   [[nodiscard]] std::string describe() const override;
+  [[nodiscard]] std::unique_ptr<ContactPath> finerApproximation() const override {
+    return options_.finer ? options_.finer() : nullptr;
+  }
 
   // σ(s) and (u, v)(s).
   [[nodiscard]] double parameterAt(double s) const;

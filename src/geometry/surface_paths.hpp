@@ -58,6 +58,9 @@ namespace rollspin::geometry {
 
 // direction: any vector with a component in the tangent plane at start
 // (projected onto it). Throws GeometryError if the geodesic leaves the domain.
+// Off the sphere the path is integrated and fitted; its finerApproximation()
+// is the same geodesic marched at half the step (compensated sums, no fit,
+// in arc length), for the error estimate.
 [[nodiscard]] std::unique_ptr<SurfaceCurvePath> geodesicPath(std::shared_ptr<const Surface> surface,
                                                              const Vec2& startUv, const Vec3& direction,
                                                              double length);

@@ -59,6 +59,12 @@ inline constexpr double kAutomaticEstimateTarget = 1e-10;
 inline constexpr std::string_view kEstimateSkipped = "skipped (solver.error_estimate = false)";
 [[nodiscard]] spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model,
                                           SolverChoice& choice);
+// Adds to stats.errorEstimate (its basis and seconds) the path's own error,
+// which no step count of the spinor can see or reduce: the rotation distance
+// to the same solve (method, steps, tolerance of `choice`) on the path's
+// finer approximation (a geodesic marched at half the step, not fitted).
+// Nothing for paths that have none. solveScene calls it last.
+void addPathError(const RollingModel& model, const SolverChoice& choice, spin::SolveStats& stats);
 // The same, for a caller that does not need the count used.
 [[nodiscard]] inline spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& model,
                                                  const SolverChoice& choice) {

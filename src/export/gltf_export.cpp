@@ -11,6 +11,7 @@
 #include "draw/ball_view.hpp"
 #include "draw/draw_style.hpp"
 #include "export/gltf_builder.hpp"
+#include "export/grid_thinning.hpp"
 #include "render/mesh_builders.hpp"
 #include "render/procedural_textures.hpp"
 
@@ -24,6 +25,13 @@ namespace {
 // The twin view's spin arrow radius; its field arrow is 0.8 of it.
 constexpr float kArrowRadius = 0.028f;
 constexpr int kArrowSegments = 32;
+// How far the exported surface may depart from the ball view's mesh, as a
+// share of the ball's radius, in each direction of its grid: the ball sinks
+// into a chord by at most twice this (1 % of R, a pixel or less).
+constexpr double kSurfaceToleranceOfRadius = 0.005;
+// The path tube's rings: kept where its centre line bends more than this
+// share of the tube's radius off the chord between kept rings.
+constexpr double kTubeToleranceOfItsRadius = 0.1;
 
 void appendTransformed(render::MeshData& out, const render::MeshData& in, const glm::mat4& m) {
   const auto base = static_cast<std::uint32_t>(out.vertices.size());
@@ -183,7 +191,12 @@ int addSurface(GltfBuilder& b, const draw::BallView& view, const scene::SceneSpe
                const model::RollingModel& model) {
   if (!model.surface) return -1;
   const auto mesh = view.surfaceMesh();
-  const render::MeshData shown = mesh ? surfaceForExport(*mesh, view.surfaceMaterial()) : render::MeshData{};
+  const double tolerance = kSurfaceToleranceOfRadius * model.ballRadius;
+  // The renders' grid is fine everywhere (4 vertices a checker cell); the
+  // file keeps only the rows and columns its curvature needs.
+  const render::MeshData shown =
+      mesh ? surfaceForExport(thinGrid(*mesh, tolerance, tolerance), view.surfaceMaterial())
+           : render::MeshData{};
   if (shown.indices.empty())
     throw badInput(spec.where("surface.kind"), "surface.kind: the {} surface cannot be meshed where the path runs "
                    "(no finite patch of it holds the path), so it cannot be exported", spec.surface.kind.name());
@@ -208,8 +221,10 @@ int addPath(GltfBuilder& b, const model::RollingModel& model) {
   render::Material material;
   material.color = glm::vec3(draw::kPathLineColor);
   material.specular = 0.0f;
-  const auto tube = pathTube(model, 0.03 * model.ballRadius);
-  return b.addNode("path", b.addMesh("path", *tube, b.addMaterial("path", material), false));
+  const double radius = 0.03 * model.ballRadius;
+  // Fewer rings where the path runs straight; every side of each ring stays.
+  const render::MeshData tube = thinGrid(*pathTube(model, radius), kTubeToleranceOfItsRadius * radius, 0.0);
+  return b.addNode("path", b.addMesh("path", tube, b.addMaterial("path", material), false));
 }
 
 // The Bloch sphere and its arrows, as the twin view draws them.

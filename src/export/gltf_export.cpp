@@ -99,19 +99,29 @@ Su2 fromZTo(const Vec3& b) {
 }
 
 // Float32 quaternions (x, y, z, w) on one hemisphere key to key, so that
-// any interpolation (a per-component one too) turns the short way; `sign`
-// gets the factor back to the given quaternion.
-std::vector<glm::vec4> continuousQuaternions(const std::vector<Su2>& q, std::vector<float>* sign) {
+// any interpolation (a per-component one too) turns the short way.
+std::vector<glm::vec4> continuousQuaternions(const std::vector<Su2>& q) {
   std::vector<glm::vec4> out;
   glm::vec4 previous(0.0f, 0.0f, 0.0f, 1.0f);
   for (const Su2& k : q) {
     const double n = k.norm();
     glm::vec4 v(float(k.x / n), float(k.y / n), float(k.z / n), float(k.w / n));
-    const float flip = glm::dot(v, previous) < 0.0f ? -1.0f : 1.0f;
-    v *= flip;
-    if (sign) sign->push_back(flip);
+    if (glm::dot(v, previous) < 0.0f) v = -v;
     out.push_back(v);
     previous = v;
+  }
+  return out;
+}
+
+// Float32 quaternions (x, y, z, w) in canonical form, w ≥ 0, as glTF readers
+// normalise them; `sign` gets the spinor's sign back: sign × key = q.
+std::vector<glm::vec4> canonicalQuaternions(const std::vector<Su2>& q, std::vector<float>& sign) {
+  std::vector<glm::vec4> out;
+  for (const Su2& k : q) {
+    const double n = k.norm();
+    const float flip = k.w < 0.0 ? -1.0f : 1.0f;
+    sign.push_back(flip);
+    out.push_back(flip * glm::vec4(float(k.x / n), float(k.y / n), float(k.z / n), float(k.w / n)));
   }
   return out;
 }
@@ -145,10 +155,10 @@ void addRoll(GltfBuilder& b, const RollKeys& keys, const Nodes& nodes, const Exp
   std::vector<glm::vec3> centres;
   for (const Vec3& c : keys.centre) centres.push_back(draw::toGlm(c));
   std::vector<float> signs;
-  const int ballRotation = b.addVec4(continuousQuaternions(keys.rotation, &signs));
+  const int ballRotation = b.addVec4(canonicalQuaternions(keys.rotation, signs));
   std::vector<Su2> fieldTurns;
   for (const Vec3& f : keys.field) fieldTurns.push_back(fromZTo(f));
-  const int fieldRotation = b.addVec4(continuousQuaternions(fieldTurns, nullptr));
+  const int fieldRotation = b.addVec4(continuousQuaternions(fieldTurns));
   const int translation = addSampler(roll, times, b.addVec3(centres, 0));
   const int rotation = addSampler(roll, times, ballRotation);
   addChannel(roll, translation, nodes.ball, "translation");

@@ -29,9 +29,9 @@
 //                               "version": "…", "scene": "…"}}
 //               A, B: accessor indices (SCALAR float, one per key of "roll"):
 //               s of each key, and ±1 with sign × the key's quaternion = the
-//               solver's q (this exporter keeps consecutive keys on one
-//               hemisphere, following the solver's q, so today every sign is
-//               +1; readers must still apply it). "scene": the resolved
+//               solver's q (the keys are canonical, qw ≥ 0, as glTF readers
+//               normalise them: the sign is −1 wherever the solver's qw < 0,
+//               the spinor's negative sheet). "scene": the resolved
 //               scene text (`rollspin scene --print`), left out with
 //               --no-metadata.
 //     "bloch"   mesh "bloch": the unit Bloch sphere (translucent glass),

@@ -1,8 +1,9 @@
 // The glTF export read back through tinygltf's loader: the named nodes and
 // their tree, +Y up, the ball's translation = its centre C(s) at the keys,
 // the animated rotation at random times within 1e-6 rad of the solver's q
-// (the file's own float32 keys, slerped as glTF does), spinor_sign × key =
-// the solver's q with its sign, the extras; and the .glb/.gltf writers.
+// (the file's own float32 keys, slerped as glTF does), canonical keys (qw ≥ 0)
+// with spinor_sign × key = the solver's q with its sign, the extras; and the
+// .glb/.gltf writers.
 #include <gtest/gtest.h>
 
 #include <tiny_gltf.h>
@@ -185,6 +186,25 @@ TEST(GltfExport, KeysAreTheSolversOnACircle) {
   const Loaded l = exportShipped("lollipop");
   expectKeysAreTheSolvers(l);
   expectRotationWithinTolerance(l, 400);
+}
+
+// The lollipop's spinor turns by more than 2π: its qw changes sign. The keys
+// are canonical (qw ≥ 0, as readers normalise them) and spinor_sign carries
+// the sheet, both +1 and −1 (expectKeysAreTheSolvers: sign × key = q).
+TEST(GltfExport, KeysAreCanonicalAndTheSignCarriesTheSheet) {
+  const Loaded l = exportShipped("lollipop");
+  const tinygltf::Model& m = l.gltf;
+  const int ball = nodeNamed(m, "ball");
+  const std::vector<float> rotations = floats(m, channelOutput(m, ball, "rotation"));
+  const tinygltf::Value& extras = m.nodes[std::size_t(ball)].extras.Get("rollspin");
+  const std::vector<float> sign = floats(m, extras.Get("spinor_sign").GetNumberAsInt());
+  for (std::size_t k = 0; k < sign.size(); ++k) {
+    EXPECT_GE(keyAt(rotations, k).w, 0.0) << "key " << k;
+    EXPECT_EQ(sign[k], l.exported.keys.rotation[k].w < 0.0 ? -1.0f : 1.0f) << "key " << k;
+  }
+  EXPECT_GT(std::count(sign.begin(), sign.end(), -1.0f), 0);
+  EXPECT_GT(std::count(sign.begin(), sign.end(), 1.0f), 0);
+  EXPECT_EQ(std::count(sign.begin(), sign.end(), -1.0f) + std::count(sign.begin(), sign.end(), 1.0f), long(sign.size()));
 }
 
 TEST(GltfExport, KeysFollowAStoryboardWithHoldsAndCorners) {

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -12,6 +15,8 @@
 #include "draw/draw_style.hpp"
 #include "export/gltf_builder.hpp"
 #include "export/grid_thinning.hpp"
+#include "motion/frame_sampling.hpp"
+#include "motion/surface_stretches.hpp"
 #include "render/mesh_builders.hpp"
 #include "render/procedural_textures.hpp"
 
@@ -144,11 +149,28 @@ void addChannel(tinygltf::Animation& animation, int sampler, int node, const std
 }
 
 struct Nodes {
-  int root = -1, surface = -1, path = -1, ball = -1, bloch = -1, spin = -1, field = -1;
+  int root = -1, ball = -1, bloch = -1, spin = -1, field = -1;
+  std::vector<int> surfaces, paths;  // one of each per surface the clip shows (a surface: −1 for none)
 };
 
+// glTF has no visibility: each surface's nodes (its surface and path) are
+// scaled 1 while the clip shows that surface and 0 otherwise, STEP keys at
+// `starts` (the clip's seconds where each surface is first shown).
+void addVisibility(GltfBuilder& b, tinygltf::Animation& roll, const Nodes& nodes, const std::vector<float>& starts) {
+  const int times = b.addScalars(starts);
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    std::vector<glm::vec3> scales;
+    for (std::size_t i = 0; i < starts.size(); ++i) scales.emplace_back(i == k ? 1.0f : 0.0f);
+    const int sampler = addSampler(roll, times, b.addVec3(scales, 0));
+    roll.samplers.back().interpolation = "STEP";
+    for (const int node : {nodes.surfaces[k], nodes.paths[k]})
+      if (node >= 0) addChannel(roll, sampler, node, "scale");
+  }
+}
+
 // Animation "roll" and the ball's extras.rollspin.
-void addRoll(GltfBuilder& b, const RollKeys& keys, const Nodes& nodes, const ExportRequest& r) {
+void addRoll(GltfBuilder& b, const RollKeys& keys, const Nodes& nodes, const ExportRequest& r,
+             const std::vector<float>& surfaceStarts) {
   tinygltf::Animation roll;
   roll.name = "roll";
   const int times = b.addScalars(keys.seconds);
@@ -165,6 +187,7 @@ void addRoll(GltfBuilder& b, const RollKeys& keys, const Nodes& nodes, const Exp
   addChannel(roll, rotation, nodes.ball, "rotation");
   addChannel(roll, rotation, nodes.spin, "rotation");
   addChannel(roll, addSampler(roll, times, fieldRotation), nodes.field, "rotation");
+  if (surfaceStarts.size() > 1) addVisibility(b, roll, nodes, surfaceStarts);
   b.model().animations.push_back(roll);
 
   std::vector<float> arcLength(keys.arcLength.begin(), keys.arcLength.end());
@@ -187,6 +210,21 @@ void setPose(tinygltf::Node& node, const Vec3& translation, const Su2& q) {
 
 namespace {
 
+// The clip's seconds where each surface stretch is first shown: the first
+// frame of its first segment (the renders' cut), 0 for the first.
+std::vector<float> surfaceStartSeconds(const scene::SceneSpec& spec, const model::RollingModel& model,
+                                       const std::vector<motion::SurfaceStretch>& stretches) {
+  std::vector<float> starts{0.0f};
+  if (stretches.size() < 2) return starts;
+  const motion::FrameClock clock = motion::clipClock(spec, model);
+  long long frame = 0;
+  for (std::size_t k = 1; k < stretches.size(); ++k) {
+    while (frame + 1 < clock.frameCount() && clock.place(frame).segment < stretches[k].firstSegment) ++frame;
+    starts.push_back(float(double(frame) / clock.fps().value()));
+  }
+  return starts;
+}
+
 struct Built {
   GltfBuilder builder;
   RollKeys keys;
@@ -198,7 +236,7 @@ struct Built {
 // ball view could not mesh (no point of the path on its chart, or a chart
 // that is not finite where the path runs) is bad input.
 int addSurface(GltfBuilder& b, const draw::BallView& view, const scene::SceneSpec& spec,
-               const model::RollingModel& model) {
+               const model::RollingModel& model, const std::string& name) {
   if (!model.surface) return -1;
   const auto mesh = view.surfaceMesh();
   const double tolerance = kSurfaceToleranceOfRadius * model.ballRadius;
@@ -211,8 +249,8 @@ int addSurface(GltfBuilder& b, const draw::BallView& view, const scene::SceneSpe
     throw badInput(spec.where("surface.kind"), "surface.kind: the {} surface cannot be meshed where the path runs "
                    "(no finite patch of it holds the path), so it cannot be exported", spec.surface.kind.name());
   const render::Material& material = view.surfaceMaterial();
-  const int texture = b.addTexture(*render::checkerTexture(material.color, material.color2), "surface-checker");
-  return b.addNode("surface", b.addMesh("surface", shown, b.addMaterial("surface", material, texture), true));
+  const int texture = b.addTexture(*render::checkerTexture(material.color, material.color2), name + "-checker");
+  return b.addNode(name, b.addMesh(name, shown, b.addMaterial(name, material, texture), true));
 }
 
 // The ball: the view's sphere at radius R about the node, with its texture
@@ -227,14 +265,14 @@ int addBall(GltfBuilder& b, const draw::BallView& view, double R) {
   return b.addNode("ball", b.addMesh("ball", ball, b.addMaterial("ball", material, texture), true));
 }
 
-int addPath(GltfBuilder& b, const model::RollingModel& model) {
+int addPath(GltfBuilder& b, const model::RollingModel& model, const std::string& name) {
   render::Material material;
   material.color = glm::vec3(draw::kPathLineColor);
   material.specular = 0.0f;
   const double radius = 0.03 * model.ballRadius;
   // Fewer rings where the path runs straight; every side of each ring stays.
   const render::MeshData tube = thinGrid(*pathTube(model, radius), kTubeToleranceOfItsRadius * radius, 0.0);
-  return b.addNode("path", b.addMesh("path", tube, b.addMaterial("path", material), false));
+  return b.addNode(name, b.addMesh(name, tube, b.addMaterial(name, material), false));
 }
 
 // The Bloch sphere and its arrows, as the twin view draws them.
@@ -256,16 +294,18 @@ void addBloch(GltfBuilder& b, Nodes& nodes, const Vec3& markerBody) {
 // The Bloch sphere beside everything the file shows (the surface as meshed,
 // what the ball view frames), past its +x side, mid-height, large enough to
 // read next to it.
-void placeBloch(Built& out, const draw::BallView& view, double R) {
+void placeBloch(Built& out, const std::vector<std::unique_ptr<draw::BallView>>& views, double R) {
   Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
   auto grow = [&](const Vec3& p) {
     if (!p.allFinite()) return;
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   };
-  for (const Vec3& p : view.extent().points) grow(p);
-  if (view.surfaceMesh())
-    for (const render::Vertex& v : view.surfaceMesh()->vertices) grow(Vec3(v.position.x, v.position.y, v.position.z));
+  for (const auto& view : views) {
+    for (const Vec3& p : view->extent().points) grow(p);
+    if (view->surfaceMesh())
+      for (const render::Vertex& v : view->surfaceMesh()->vertices) grow(Vec3(v.position.x, v.position.y, v.position.z));
+  }
   out.blochRadius = std::max(2.0 * R, 0.15 * (hi - lo).norm());
   out.blochCentre = Vec3(hi.x() + 1.5 * out.blochRadius, 0.5 * (lo.y() + hi.y()), 0.5 * (lo.z() + hi.z()));
 }
@@ -279,28 +319,46 @@ Built build(const ExportRequest& r) {
   Vec3 markerBody = spec.ball.marker ? Vec3((*spec.ball.marker)[0], (*spec.ball.marker)[1], (*spec.ball.marker)[2])
                                      : model.path->at(0.0).normal;  // as SceneDrawer
   markerBody.normalize();
-  const draw::BallView view(spec, model, r.ballTexture, nullptr, markerBody, render::uvSphere(8, 4));
+  // One ball view per surface the clip shows (a storyboard's surface
+  // stretches, each meshed round its own path, as the renders do).
+  const std::vector<motion::SurfaceStretch> stretches = motion::surfaceStretches(spec, model);
+  std::vector<std::unique_ptr<draw::BallView>> views;
+  if (stretches.empty())
+    views.push_back(std::make_unique<draw::BallView>(spec, model, r.ballTexture, nullptr, markerBody, render::uvSphere(8, 4)));
+  for (const motion::SurfaceStretch& st : stretches)
+    views.push_back(std::make_unique<draw::BallView>(st.spec, st.model, r.ballTexture, nullptr, markerBody, render::uvSphere(8, 4)));
   Built out;
   GltfBuilder& b = out.builder;
   Nodes nodes;
   nodes.root = b.addNode("rollspin");
   const double h = std::sqrt(0.5);  // −90° about x: scene +z up → glTF +y up
   b.model().nodes[std::size_t(nodes.root)].rotation = {-h, 0.0, 0.0, h};
-  nodes.surface = addSurface(b, view, spec, model);
-  nodes.path = addPath(b, model);
-  nodes.ball = addBall(b, view, R);
+  for (std::size_t k = 0; k < views.size(); ++k) {
+    const std::string suffix = k == 0 ? "" : "." + std::to_string(k);
+    const scene::SceneSpec& partSpec = stretches.empty() ? spec : stretches[k].spec;
+    const model::RollingModel& partModel = stretches.empty() ? model : stretches[k].model;
+    nodes.surfaces.push_back(addSurface(b, *views[k], partSpec, partModel, "surface" + suffix));
+    nodes.paths.push_back(addPath(b, partModel, "path" + suffix));
+    // At rest (no animation played) the file shows the clip's first surface.
+    for (const int node : {nodes.surfaces.back(), nodes.paths.back()})
+      if (node >= 0 && k > 0) b.model().nodes[std::size_t(node)].scale = {0.0, 0.0, 0.0};
+  }
+  nodes.ball = addBall(b, *views.front(), R);
   addBloch(b, nodes, markerBody);
   out.keys = rollKeys(spec, model);
   setPose(b.model().nodes[std::size_t(nodes.ball)], out.keys.centre.front(), out.keys.rotation.front());
   setPose(b.model().nodes[std::size_t(nodes.spin)], Vec3::Zero(), out.keys.rotation.front());
   setPose(b.model().nodes[std::size_t(nodes.field)], Vec3::Zero(), fromZTo(out.keys.field.front()));
-  placeBloch(out, view, R);
+  placeBloch(out, views, R);
   tinygltf::Node& bloch = b.model().nodes[std::size_t(nodes.bloch)];
   bloch.translation = {out.blochCentre.x(), out.blochCentre.y(), out.blochCentre.z()};
   bloch.scale = {out.blochRadius, out.blochRadius, out.blochRadius};
-  for (const int child : {nodes.surface, nodes.path, nodes.ball, nodes.bloch})
+  std::vector<int> children;
+  for (std::size_t k = 0; k < views.size(); ++k) children.insert(children.end(), {nodes.surfaces[k], nodes.paths[k]});
+  children.insert(children.end(), {nodes.ball, nodes.bloch});
+  for (const int child : children)
     if (child >= 0) b.model().nodes[std::size_t(nodes.root)].children.push_back(child);
-  if (r.animation) addRoll(b, out.keys, nodes, r);
+  if (r.animation) addRoll(b, out.keys, nodes, r, surfaceStartSeconds(spec, model, stretches));
   tinygltf::Scene scene;
   scene.name = spec.name;
   scene.nodes = {nodes.root};

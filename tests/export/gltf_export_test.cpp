@@ -17,6 +17,7 @@
 #include "export/gltf_export.hpp"
 #include "motion/frame_poses.hpp"
 #include "motion/frame_sampling.hpp"
+#include "motion/surface_stretches.hpp"
 #include "support/test_files.hpp"
 
 namespace rollspin::gltf {
@@ -65,12 +66,13 @@ std::vector<float> floats(const tinygltf::Model& m, int accessor) {
 }
 
 // The output accessor of the channel that animates node/path.
-int channelOutput(const tinygltf::Model& m, int node, const std::string& path, int* input = nullptr) {
+int channelOutput(const tinygltf::Model& m, int node, const std::string& path, int* input = nullptr,
+                  const std::string& interpolation = "LINEAR") {
   for (const tinygltf::Animation& a : m.animations)
     for (const tinygltf::AnimationChannel& c : a.channels)
       if (c.target_node == node && c.target_path == path) {
         const tinygltf::AnimationSampler& s = a.samplers[std::size_t(c.sampler)];
-        EXPECT_EQ(s.interpolation, "LINEAR");
+        EXPECT_EQ(s.interpolation, interpolation);
         if (input) *input = s.input;
         return s.output;
       }
@@ -220,6 +222,46 @@ TEST(GltfExport, KeysFollowAStoryboardWithHoldsAndCorners) {
     for (const double s : l.exported.keys.arcLength) nearest = std::min(nearest, std::abs(s - c));
     EXPECT_LE(nearest, 1e-5) << "corner at s = " << c;
   }
+}
+
+// A storyboard on two surfaces (the torus, then the floor): one surface and
+// one path node each, the second at scale 0 at rest, and a STEP scale
+// channel per node that swaps them at the clip's cut, the first frame of the
+// floor's first segment (as the renders cut).
+TEST(GltfExport, EachSurfaceIsShownDuringItsOwnSegments) {
+  const Loaded l = exportShipped("torus-to-floor");
+  const tinygltf::Model& m = l.gltf;
+  const std::vector<motion::SurfaceStretch> stretches = motion::surfaceStretches(l.spec, l.model);
+  ASSERT_EQ(stretches.size(), 2u);
+  const motion::FrameClock clock = motion::clipClock(l.spec, l.model);
+  const double fps = clock.fps().value();
+  long long cut = 0;
+  while (clock.place(cut).segment < stretches[1].firstSegment) ++cut;
+  ASSERT_GT(cut, 0);
+  const double cutSeconds = double(cut) / fps;
+  for (const char* base : {"surface", "path"}) {
+    for (const int k : {0, 1}) {
+      const std::string name = k == 0 ? std::string(base) : std::string(base) + ".1";
+      const int node = nodeNamed(m, name);
+      ASSERT_GE(node, 0) << name;
+      EXPECT_GE(m.nodes[std::size_t(node)].mesh, 0) << name;
+      EXPECT_EQ(m.nodes[std::size_t(node)].scale, k == 0 ? std::vector<double>{} : std::vector<double>(3, 0.0)) << name;
+      int input = -1;
+      const int output = channelOutput(m, node, "scale", &input, "STEP");
+      const std::vector<float> times = floats(m, input), scales = floats(m, output);
+      ASSERT_EQ(times.size(), 2u) << name;
+      EXPECT_EQ(times[0], 0.0f);
+      EXPECT_NEAR(times[1], cutSeconds, 1e-6 * cutSeconds) << name;
+      ASSERT_EQ(scales.size(), 6u) << name;
+      for (int key = 0; key < 2; ++key)
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(scales[std::size_t(3 * key + c)], key == k ? 1.0f : 0.0f) << name;
+    }
+  }
+  // The cut shows the floor's stretch and the frame before it the torus's.
+  EXPECT_GE(clock.arcLength(cut), stretches[1].start);
+  EXPECT_LT(clock.place(cut - 1).segment, stretches[1].firstSegment);
+  // The floor lies in z = 0, the torus round it: different meshes.
+  EXPECT_NE(m.nodes[std::size_t(nodeNamed(m, "surface"))].mesh, m.nodes[std::size_t(nodeNamed(m, "surface.1"))].mesh);
 }
 
 TEST(GltfExport, ExtrasCarryVersionAndSceneUnlessNoMetadata) {

@@ -144,8 +144,17 @@ export class TwinScene {
       if (!object) console.warn(`rollspin viewer: the GLB has no node "${name}"`);
     // The ball casts its shadow on the surface (the renders' shadow pass).
     if (this.nodes.ball) this.nodes.ball.traverse((o) => (o.castShadow = true));
-    const surface = node('surface');
-    if (surface) surface.traverse((o) => (o.receiveShadow = true));
+    // One surface and path per surface the clip shows: "surface", "surface.1", …
+    // (three.js drops the dot from node names: "surface1").
+    this.surfaces = [];
+    for (let k = 0; ; ++k) {
+      const name = (base) => THREE.PropertyBinding.sanitizeNodeName(k === 0 ? base : `${base}.${k}`);
+      const parts = [node(name('surface')), node(name('path'))].filter(Boolean);
+      if (parts.length === 0 && k > 0) break;
+      for (const part of parts) part.scale.set(1, 1, 1);  // the GLB's rest pose hides all but the first
+      this.surfaces.push({ parts, sphere: null });
+    }
+    for (const { parts } of this.surfaces) parts[0]?.traverse((o) => (o.receiveShadow = true));
     // The Bloch sphere and its arrows: the right view's layer only.
     if (this.nodes.bloch) this.nodes.bloch.traverse((o) => o.layers.set(BLOCH_LAYER));
     for (const name of ['spin', 'field'])
@@ -153,23 +162,44 @@ export class TwinScene {
     this.frameViews();
   }
 
+  // The ball view of each surface frames that surface with its path (and
+  // anything else the GLB holds outside the Bloch sphere), as the renders
+  // frame each surface's stretch.
   frameViews() {
     this.root.updateMatrixWorld(true);
-    const ballBox = new THREE.Box3();
+    const others = new Set(this.surfaces.flatMap((x) => x.parts));
+    const commonBox = new THREE.Box3();
     this.root.traverse((o) => {
-      if (o.isMesh && !o.layers.isEnabled(BLOCH_LAYER)) ballBox.expandByObject(o);
+      if (o.isMesh && !o.layers.isEnabled(BLOCH_LAYER) && o !== this.nodes.ball && !others.has(o) && !others.has(o.parent))
+        commonBox.expandByObject(o);
     });
+    this.surfaces.forEach((surface, k) => {
+      const box = commonBox.clone();
+      for (const part of surface.parts) box.expandByObject(part);
+      if (k === 0 && this.nodes.ball) box.expandByObject(this.nodes.ball);  // where it rests at s = 0
+      surface.sphere = box.getBoundingSphere(new THREE.Sphere());
+    });
+    this.shownSurface = -1;
+    this.showSurface(0);
     const blochBox = new THREE.Box3();
     if (this.nodes.bloch) blochBox.setFromObject(this.nodes.bloch);
     else blochBox.setFromCenterAndSize(new THREE.Vector3(), new THREE.Vector3(2, 2, 2));
-    const ballSphere = ballBox.getBoundingSphere(new THREE.Sphere());
-    this.ballView.frame(ballSphere);
-    aimKeyLight(this.keyLight, ballSphere);
     this.blochView.frame(blochBox.getBoundingSphere(new THREE.Sphere()));
   }
 
-  // Poses the ball (centre, rotation) and the arrows at arc length s.
+  // Shows surface k alone and frames the ball view on it (a change of
+  // surface resets the ball view, as the renders cut to the new one's camera).
+  showSurface(k) {
+    if (k === this.shownSurface || !this.surfaces[k]) return;
+    this.surfaces.forEach((surface, i) => surface.parts.forEach((p) => (p.visible = i === k)));
+    this.shownSurface = k;
+    this.ballView.frame(this.surfaces[k].sphere);
+    aimKeyLight(this.keyLight, this.surfaces[k].sphere);
+  }
+
+  // Poses the ball (centre, rotation) and the arrows at arc length s, on its surface.
   pose(timeline, s) {
+    this.showSurface(timeline.surface(s));
     const q = rotationOf(timeline.quaternion(s));
     const { ball, spin, field } = this.nodes;
     if (ball) {

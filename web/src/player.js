@@ -75,7 +75,12 @@ export class Player {
   }
 }
 
+// Sets an element's text only when it changes: each change costs the page a
+// layout and a repaint, which on a software renderer cost as much as a frame.
+const shownText = new Map();
 function text(id, value) {
+  if (shownText.get(id) === value) return;
+  shownText.set(id, value);
   document.getElementById(id).textContent = value;
 }
 
@@ -85,9 +90,8 @@ export function showReadouts(timeline, s) {
   text('arc', `s = ${s.toFixed(2)} of ${timeline.length.toFixed(2)}`);
   text('rotation', `lab rotation angle = ${(a.rotation * DEG).toFixed(1)}°`);
   text('spinor', `spinor angle ψ = ${(a.spinor * DEG).toFixed(1)}°`);
-  const sheet = document.getElementById('sheet');
-  sheet.textContent = a.negativeSheet ? 'spinor sheet: negative (U ≈ −1)' : 'spinor sheet: positive (U ≈ +1)';
-  sheet.classList.toggle('negative', a.negativeSheet);
+  text('sheet', a.negativeSheet ? 'spinor sheet: negative (U ≈ −1)' : 'spinor sheet: positive (U ≈ +1)');
+  document.getElementById('sheet').classList.toggle('negative', a.negativeSheet);
 }
 
 // One button per storyboard segment; the current one marked.
@@ -103,8 +107,11 @@ function buildChapters(player, timeline) {
     nav.append(b);
     return b;
   });
+  let shown = null;
   return (s) => {
     const current = timeline.segment(s);
+    if (current === shown) return;
+    shown = current;
     buttons.forEach((b, k) => {
       const on = timeline.chapters[k].number === current;
       b.classList.toggle('current', on);

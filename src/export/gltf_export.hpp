@@ -21,6 +21,11 @@
 //               absent when the scene has no surface to mesh.
 //     "path"    mesh "path": a thin tube along the contact path P(s), lifted
 //               by its radius along the surface normal.
+//     "surface.k", "path.k"  (k = 1, 2, …) a storyboard on several surfaces:
+//               the k-th stretch's surface and path (motion::surfaceStretches;
+//               "surface" and "path" are the first), static scale 0; every
+//               stretch's pair is shown by a STEP "scale" channel of "roll",
+//               1 from the clip's first frame of that stretch to the next's.
 //     "ball"    mesh "ball": a sphere of radius R about the node origin,
 //               textured like the renders (u = longitude, v = colatitude of
 //               the body frame). translation = the ball's centre C(s),
@@ -46,9 +51,10 @@
 //   "surface" (checker texture, double-sided), "path", "ball" (its texture),
 //   "bloch" (alphaMode BLEND), "spin", "field". Textures: PNG images in the
 //   buffer.
-// Animation "roll" (every sampler LINEAR, one shared input of key times in
-//   seconds, starting at 0): channels ball/translation, ball/rotation,
-//   spin/rotation, field/rotation. A key at every motion start and stop of
+// Animation "roll" (the motion's samplers LINEAR, one shared input of key
+//   times in seconds, starting at 0): channels ball/translation,
+//   ball/rotation, spin/rotation, field/rotation; on several surfaces also
+//   surface*/scale and path*/scale (STEP, their own input: 0 and each cut). A key at every motion start and stop of
 //   the clip, at every whole frame of a motion, at every corner and joint of
 //   the path, and where the bisection puts them; the last key is the clip's
 //   last frame, (frameCount − 1) / fps seconds. Times are float32: each key's

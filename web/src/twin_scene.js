@@ -98,7 +98,14 @@ class View {
 
 // The key light's direction (glTF's y up): from above, over the viewer's shoulder.
 const KEY_DIRECTION = new THREE.Vector3(-0.45, 1.0, 0.7).normalize();
-const SHADOW_MAP_SIZE = 1024;
+// The shadow map covers only the ball's own shadow: seen from a directional
+// light, a ball of radius R shades a disc of radius R round its centre on
+// whatever lies behind it, so a square of ±SHADOW_REACH R about the ball
+// holds all of it at any surface's shape; 256 texels across it are R/85
+// each, finer than a map over the whole scene, and the surface's fragments
+// outside it skip the shadow lookups (most of the view).
+const SHADOW_MAP_SIZE = 256;
+const SHADOW_REACH = 1.5;
 
 // Lit as the renders are: a key light that casts the ball's shadow on the surface, a soft sky fill.
 function addLights(scene) {
@@ -114,12 +121,15 @@ function addLights(scene) {
   return key;
 }
 
-// The key light's shadow covers the ball view's bounding sphere.
-function aimKeyLight(key, sphere) {
-  const r = sphere.radius;
-  key.target.position.copy(sphere.center);
-  key.position.copy(sphere.center).addScaledVector(KEY_DIRECTION, 2 * r);
-  Object.assign(key.shadow.camera, { left: -r, right: r, top: r, bottom: -r, near: 0.01 * r, far: 4 * r });
+// The key light looks at the ball from its direction, from outside the ball
+// view's bounding sphere (its depth range holds the whole scene); its shadow
+// camera spans the ball's shadow, ±SHADOW_REACH R about its centre.
+function aimKeyLight(key, sphere, ballCentre, ballRadius) {
+  const r = sphere.radius, w = SHADOW_REACH * ballRadius;
+  key.target.position.copy(ballCentre);
+  key.position.copy(ballCentre).addScaledVector(KEY_DIRECTION, 2 * r + sphere.center.distanceTo(ballCentre));
+  key.target.updateMatrixWorld();
+  Object.assign(key.shadow.camera, { left: -w, right: w, top: w, bottom: -w, near: 0.01 * r, far: 4 * r + 2 * sphere.center.distanceTo(ballCentre) });
   key.shadow.camera.updateProjectionMatrix();
 }
 
@@ -194,7 +204,6 @@ export class TwinScene {
     this.surfaces.forEach((surface, i) => surface.parts.forEach((p) => (p.visible = i === k)));
     this.shownSurface = k;
     this.ballView.frame(this.surfaces[k].sphere);
-    aimKeyLight(this.keyLight, this.surfaces[k].sphere);
   }
 
   // Poses the ball (centre, rotation) and the arrows at arc length s, on its surface.
@@ -205,6 +214,8 @@ export class TwinScene {
     if (ball) {
       ball.position.set(...timeline.ballCentre(s));
       ball.quaternion.copy(q);
+      aimKeyLight(this.keyLight, this.surfaces[this.shownSurface]?.sphere ?? new THREE.Sphere(),
+                  ball.getWorldPosition(new THREE.Vector3()), timeline.ballRadius);
     }
     // The exporter's arrows (src/export/gltf_export.hpp): "spin" points at X(0) and
     // turns by q(s); "field" points along +z and turns onto B(s)/|B(s)|.

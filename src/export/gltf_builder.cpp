@@ -124,6 +124,14 @@ int GltfBuilder::addMaterial(const std::string& name, const render::Material& m,
   if (texture >= 0) material.pbrMetallicRoughness.baseColorTexture.index = texture;
   if (m.opacity < 1.0f) material.alphaMode = "BLEND";
   material.doubleSided = m.cull == render::Cull::None;
+  // The renders' own Blinn–Phong terms, for a reader that shades as they do
+  // (the web viewer: cheaper than PBR on a software renderer, and the same look).
+  tinygltf::Value::Object phong;
+  phong["specular"] = tinygltf::Value(double(m.specular));
+  phong["shininess"] = tinygltf::Value(double(m.shininess));
+  tinygltf::Value::Object extras;
+  extras["rollspin"] = tinygltf::Value(phong);
+  material.extras = tinygltf::Value(extras);
   model_.materials.push_back(material);
   return int(model_.materials.size() - 1);
 }

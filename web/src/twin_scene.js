@@ -104,13 +104,14 @@ const KEY_DIRECTION = new THREE.Vector3(-0.45, 1.0, 0.7).normalize();
 // holds all of it at any surface's shape; 256 texels across it are R/85
 // each, finer than a map over the whole scene, and the surface's fragments
 // outside it skip the shadow lookups (most of the view).
+const KEY_INTENSITY = 2.2;
 const SHADOW_MAP_SIZE = 256;
 const SHADOW_REACH = 1.5;
 
 // Lit as the renders are: a key light that casts the ball's shadow on the surface, a soft sky fill.
 function addLights(scene) {
   const sky = new THREE.HemisphereLight(0xdfe8f2, 0x5a554f, 1.1);
-  const key = new THREE.DirectionalLight(0xffffff, 2.2);
+  const key = new THREE.DirectionalLight(0xffffff, KEY_INTENSITY);
   key.castShadow = true;
   key.shadow.mapSize.set(SHADOW_MAP_SIZE, SHADOW_MAP_SIZE);
   key.shadow.bias = -0.0005;
@@ -131,6 +132,28 @@ function aimKeyLight(key, sphere, ballCentre, ballRadius) {
   key.target.updateMatrixWorld();
   Object.assign(key.shadow.camera, { left: -w, right: w, top: w, bottom: -w, near: 0.01 * r, far: 4 * r + 2 * sphere.center.distanceTo(ballCentre) });
   key.shadow.camera.updateProjectionMatrix();
+}
+
+// The renders shade with Blinn–Phong: each material the exporter wrote with
+// its Phong terms (extras.rollspin: specular, shininess) becomes three.js's
+// Blinn–Phong material with them, the same highlights as the renders and
+// much cheaper than PBR on a software renderer (SwiftShader).
+// three.js normalises Blinn–Phong, (s/2 + 1)/(4π) · cosⁿ, and the key light
+// is 2.2 bright; the renders' highlight is specular · cosⁿ under a unit
+// light: this scale, over (s/2 + 1), gives the renders' peak.
+const PHONG_SCALE = (4 * Math.PI) / KEY_INTENSITY;
+function shadeAsTheRenders(root) {
+  root.traverse((o) => {
+    const phong = o.isMesh ? o.material.userData?.rollspin : null;
+    if (!phong || !o.material.isMeshStandardMaterial) return;
+    const m = o.material;
+    o.material = new THREE.MeshPhongMaterial({
+      name: m.name, color: m.color, map: m.map, transparent: m.transparent, opacity: m.opacity, side: m.side,
+      depthWrite: m.depthWrite, shininess: phong.shininess,
+      specular: new THREE.Color().setScalar(phong.specular * PHONG_SCALE / (0.5 * phong.shininess + 1)),
+    });
+    m.dispose();
+  });
 }
 
 export class TwinScene {
@@ -169,6 +192,7 @@ export class TwinScene {
     if (this.nodes.bloch) this.nodes.bloch.traverse((o) => o.layers.set(BLOCH_LAYER));
     for (const name of ['spin', 'field'])
       if (this.nodes[name]) this.nodes[name].traverse((o) => o.layers.set(BLOCH_LAYER));
+    shadeAsTheRenders(this.root);
     this.frameViews();
   }
 

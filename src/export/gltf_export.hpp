@@ -49,8 +49,9 @@
 //               taking +z to B(s)/|B(s)| (shortest arc), animated.
 // Materials (PBR metallic-roughness, colours the renders' linear RGB):
 //   "surface" (checker texture, double-sided), "path", "ball" (its texture),
-//   "bloch" (alphaMode BLEND), "spin", "field". Textures: PNG images in the
-//   buffer.
+//   "bloch" (alphaMode BLEND), "spin", "field"; each with extras
+//   {"rollspin": {"specular", "shininess"}}, the renders' Blinn–Phong terms.
+//   Textures: PNG images in the buffer.
 // Animation "roll" (the motion's samplers LINEAR, one shared input of key
 //   times in seconds, starting at 0): channels ball/translation,
 //   ball/rotation, spin/rotation, field/rotation; on several surfaces also

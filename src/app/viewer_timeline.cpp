@@ -60,16 +60,6 @@ std::vector<std::size_t> segmentStretches(const scene::SceneSpec& spec, const mo
   return out;
 }
 
-// The segment the viewer shows at s: the last motion starting at or before
-// s (web/src/timeline.js segment()), as an index; 0 without motions.
-std::size_t motionSegmentAt(const model::RollingModel& model, double s) {
-  std::size_t found = model.segments.size();
-  for (std::size_t k = 0; k < model.segments.size(); ++k)
-    if (model.segments[k].end > model.segments[k].start && (model.segments[k].start <= s || found == model.segments.size()))
-      found = k;
-  return found == model.segments.size() ? 0 : found;
-}
-
 // The frame clock's pieces (FrameClock::motionBounds), in seconds.
 ViewerClock viewerClock(const scene::SceneSpec& spec, const model::RollingModel& model,
                         const std::vector<std::size_t>& stretchOfSegment) {
@@ -85,7 +75,7 @@ ViewerClock viewerClock(const scene::SceneSpec& spec, const model::RollingModel&
     const std::size_t held = clock.place(middle).segment;
     const bool hold = !(s1 > s0);
     if (hold && held < stretchOfSegment.size() &&
-        stretchOfSegment[held] != stretchOfSegment[motionSegmentAt(model, s0)])
+        stretchOfSegment[held] != stretchOfSegment[motion::storyPlaceAt(model, s0).segment])
       s0 = s1 = std::max(0.0, s0 - kTwinKnotGap * length);
     out.s0.push_back(s0);
     out.s1.push_back(s1);

@@ -210,8 +210,10 @@ void setPose(tinygltf::Node& node, const Vec3& translation, const Su2& q) {
 
 namespace {
 
-// The clip's seconds where each surface stretch is first shown: the first
-// frame of its first segment (the renders' cut), 0 for the first.
+// The clip's seconds where each surface stretch is first shown, 0 for the
+// first: just after the whole frame before its first segment's first frame
+// (the renders' cut), where its motion starts and the ball jumps to it
+// (roll_keys.cpp).
 std::vector<float> surfaceStartSeconds(const scene::SceneSpec& spec, const model::RollingModel& model,
                                        const std::vector<motion::SurfaceStretch>& stretches) {
   std::vector<float> starts{0.0f};
@@ -220,7 +222,7 @@ std::vector<float> surfaceStartSeconds(const scene::SceneSpec& spec, const model
   long long frame = 0;
   for (std::size_t k = 1; k < stretches.size(); ++k) {
     while (frame + 1 < clock.frameCount() && clock.place(frame).segment < stretches[k].firstSegment) ++frame;
-    starts.push_back(float(double(frame) / clock.fps().value()));
+    starts.push_back(secondsJustAfter(double(frame - 1), clock.fps().value()));
   }
   return starts;
 }

@@ -25,7 +25,9 @@
 //               the k-th stretch's surface and path (motion::surfaceStretches;
 //               "surface" and "path" are the first), static scale 0; every
 //               stretch's pair is shown by a STEP "scale" channel of "roll",
-//               1 from the clip's first frame of that stretch to the next's.
+//               1 from its cut (secondsJustAfter the clip's last frame on
+//               the stretch before) to the next cut; until a cut the ball is
+//               keyed on the earlier stretch's path (roll_keys.cpp).
 //     "ball"    mesh "ball": a sphere of radius R about the node origin,
 //               textured like the renders (u = longitude, v = colatitude of
 //               the body frame). translation = the ball's centre C(s),
@@ -100,6 +102,14 @@ struct RollKeys {
   std::vector<geometry::Vec3> centre;
   std::vector<geometry::Vec3> field;  // B/|B| at s (unit; +z where B = 0)
 };
+
+// A float32 time "at" a whole frame may round a little past it: a time
+// belongs to frame ⌈t · fps − kFrameSlack⌉ (a fractional frame leads up to
+// the next whole one).
+inline constexpr double kFrameSlack = 1e-4;
+// The first float32 second past `frame` by more than the slack: where the
+// clip leaves that whole frame (a surface change's cut, its key).
+[[nodiscard]] float secondsJustAfter(double frame, double fps);
 
 // The keys for a scene: the frame clock's motion bounds, the path's corners
 // and joints, then bisection. Runs the scene's solver (a march a round).

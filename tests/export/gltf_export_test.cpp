@@ -238,7 +238,10 @@ TEST(GltfExport, EachSurfaceIsShownDuringItsOwnSegments) {
   long long cut = 0;
   while (clock.place(cut).segment < stretches[1].firstSegment) ++cut;
   ASSERT_GT(cut, 0);
-  const double cutSeconds = double(cut) / fps;
+  // The cut: just after the whole frame before the floor's first frame.
+  const double cutSeconds = secondsJustAfter(double(cut - 1), fps);
+  EXPECT_GT(cutSeconds * fps, double(cut - 1));
+  EXPECT_LT(cutSeconds * fps, double(cut - 1) + 1e-3);
   for (const char* base : {"surface", "path"}) {
     for (const int k : {0, 1}) {
       const std::string name = k == 0 ? std::string(base) : std::string(base) + ".1";
@@ -251,7 +254,7 @@ TEST(GltfExport, EachSurfaceIsShownDuringItsOwnSegments) {
       const std::vector<float> times = floats(m, input), scales = floats(m, output);
       ASSERT_EQ(times.size(), 2u) << name;
       EXPECT_EQ(times[0], 0.0f);
-      EXPECT_NEAR(times[1], cutSeconds, 1e-6 * cutSeconds) << name;
+      EXPECT_EQ(times[1], float(cutSeconds)) << name;
       ASSERT_EQ(scales.size(), 6u) << name;
       for (int key = 0; key < 2; ++key)
         for (int c = 0; c < 3; ++c) EXPECT_EQ(scales[std::size_t(3 * key + c)], key == k ? 1.0f : 0.0f) << name;
@@ -260,6 +263,22 @@ TEST(GltfExport, EachSurfaceIsShownDuringItsOwnSegments) {
   // The cut shows the floor's stretch and the frame before it the torus's.
   EXPECT_GE(clock.arcLength(cut), stretches[1].start);
   EXPECT_LT(clock.place(cut - 1).segment, stretches[1].firstSegment);
+  // Until the cut the ball is keyed on the torus, the hold at the join too
+  // (a hair before it), not at the floor's start where the path jumps; from
+  // the cut on, on the floor.
+  const RollKeys& keys = l.exported.keys;
+  const Vec3 floorStart = l.model.path->at(stretches[1].start).centre(l.model.ballRadius);
+  std::size_t held = 0;
+  for (std::size_t k = 0; k < keys.seconds.size(); ++k)
+    if (double(keys.seconds[k]) < cutSeconds) {
+      EXPECT_LT(keys.arcLength[k], stretches[1].start) << "key " << k << " at " << keys.seconds[k] << " s";
+      EXPECT_GT((keys.centre[k] - floorStart).norm(), l.model.ballRadius) << "key " << k;
+      held += keys.arcLength[k] > stretches[1].start - 1e-6 ? 1 : 0;
+    }
+  EXPECT_GE(held, 2u) << "the hold's two ends";
+  const auto first = std::find(keys.seconds.begin(), keys.seconds.end(), float(cutSeconds));
+  ASSERT_NE(first, keys.seconds.end()) << "a key at the cut";
+  EXPECT_GE(keys.arcLength[std::size_t(first - keys.seconds.begin())], stretches[1].start);
   // The floor lies in z = 0, the torus round it: different meshes.
   EXPECT_NE(m.nodes[std::size_t(nodeNamed(m, "surface"))].mesh, m.nodes[std::size_t(nodeNamed(m, "surface.1"))].mesh);
 }

@@ -8,16 +8,13 @@
 
 #include "app/timeline_csv.hpp"
 #include "motion/frame_sampling.hpp"
+#include "motion/surface_stretches.hpp"
 #include "spin/field.hpp"
 
 namespace rollspin::app {
 
 namespace {
 
-// How far before a breakpoint its twin knot lies, relative to the length:
-// the interval between them is too short for the jump of B to matter (its
-// Hermite error is ~ this × |ΔB| × the spacing's share).
-constexpr double kTwinKnotGap = 1e-10;
 // Where |B| is probed to choose the spacing.
 constexpr int kFieldProbes = 4000;
 
@@ -52,6 +49,38 @@ std::vector<double> interiorBreaks(const model::RollingModel& model) {
   std::sort(breaks.begin(), breaks.end());
   breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
   return breaks;
+}
+
+// The surface stretch of each scene segment (all 0 for one surface).
+std::vector<std::size_t> segmentStretches(const scene::SceneSpec& spec, const model::RollingModel& model) {
+  std::vector<std::size_t> out(spec.segments.size(), 0);
+  const std::vector<motion::SurfaceStretch> stretches = motion::surfaceStretches(spec, model);
+  for (std::size_t k = 0; k < stretches.size(); ++k)
+    for (std::size_t seg = stretches[k].firstSegment; seg < stretches[k].endSegment && seg < out.size(); ++seg) out[seg] = k;
+  return out;
+}
+
+// The frame clock's pieces (FrameClock::motionBounds), in seconds.
+ViewerClock viewerClock(const scene::SceneSpec& spec, const model::RollingModel& model,
+                        const std::vector<std::size_t>& stretchOfSegment) {
+  const motion::FrameClock clock = motion::clipClock(spec, model);
+  const double fps = clock.fps().value(), length = model.path->length();
+  const std::vector<double> bounds = clock.motionBounds();
+  ViewerClock out;
+  out.smooth = spec.animation.easing == scene::Easing::Smooth;
+  for (const double f : bounds) out.seconds.push_back(f / fps);
+  for (std::size_t k = 0; k + 1 < bounds.size(); ++k) {
+    double s0 = clock.arcLengthAt(bounds[k]), s1 = clock.arcLengthAt(bounds[k + 1]);
+    const auto middle = static_cast<long long>(std::floor(0.5 * (bounds[k] + bounds[k + 1])));
+    const std::size_t held = clock.place(middle).segment;
+    const bool hold = !(s1 > s0);
+    if (hold && held < stretchOfSegment.size() &&
+        stretchOfSegment[held] != stretchOfSegment[motion::storyPlaceAt(model, s0).segment])
+      s0 = s1 = std::max(0.0, s0 - kTwinKnotGap * length);
+    out.s0.push_back(s0);
+    out.s1.push_back(s1);
+  }
+  return out;
 }
 
 std::string quoted(const std::string& text) {
@@ -110,11 +139,13 @@ ViewerTimeline sampleViewerTimeline(const scene::SceneSpec& spec, const model::R
     timeline.knots[index] = {v[0], {v[10], v[11], v[12], v[13]}, {v[14], v[15], v[16]},
                              {v[7], v[8], v[9]}, {rate.x(), rate.y(), rate.z()}};
   }, spec.sourceFile.empty() ? spec.name : spec.sourceFile);
+  const std::vector<std::size_t> stretchOfSegment = segmentStretches(spec, model);
   for (std::size_t k = 0; k < spec.segments.size() && k < model.segments.size(); ++k) {
     const scene::SegmentSpec& seg = spec.segments[k];
     timeline.chapters.push_back({k + 1, model.segments[k].start, model.segments[k].end, seg.caption,
-                                 seg.title.value_or(spec.render.title)});
+                                 seg.title.value_or(spec.render.title), stretchOfSegment[k]});
   }
+  timeline.clock = viewerClock(spec, model, stretchOfSegment);
   return timeline;
 }
 
@@ -130,13 +161,18 @@ std::string viewerTimelineJson(const ViewerTimeline& timeline) {
   }
   std::string chapters;
   for (const ViewerChapter& ch : timeline.chapters)
-    chapters += fmt::format("{}{{\"number\": {}, \"start\": {:.17g}, \"end\": {:.17g}, \"caption\": {}, \"title\": {}}}",
+    chapters += fmt::format("{}{{\"number\": {}, \"start\": {:.17g}, \"end\": {:.17g}, \"caption\": {}, \"title\": {}, "
+                            "\"surface\": {}}}",
                             chapters.empty() ? "" : ", ", ch.number, ch.start, ch.end, quoted(ch.caption),
-                            quoted(ch.title));
+                            quoted(ch.title), ch.surface);
+  const ViewerClock& clock = timeline.clock;
+  const std::string clockJson =
+      fmt::format("{{\"seconds\": [{:.17g}], \"s0\": [{:.17g}], \"s1\": [{:.17g}], \"smooth\": {}}}",
+                  fmt::join(clock.seconds, ","), fmt::join(clock.s0, ","), fmt::join(clock.s1, ","), clock.smooth);
   return fmt::format(
-      "{{\"length\": {:.17g}, \"seconds\": {:.17g}, \"ballRadius\": {:.17g}, \"marker\": [{:.17g}], \"viewDeg\": [{:.17g}], \"chapters\": [{}],\n"
+      "{{\"length\": {:.17g}, \"seconds\": {:.17g}, \"ballRadius\": {:.17g}, \"marker\": [{:.17g}], \"viewDeg\": [{:.17g}], \"chapters\": [{}],\n\"clock\": {},\n"
       "\"s\": [{:.17g}],\n\"q\": [{:.17g}],\n\"B\": [{:.17g}],\n\"centre\": [{:.17g}],\n\"centreRate\": [{:.17g}]}}",
-      timeline.length, timeline.seconds, timeline.ballRadius, fmt::join(timeline.marker, ", "), fmt::join(timeline.viewDeg, ", "), chapters, fmt::join(s, ","),
+      timeline.length, timeline.seconds, timeline.ballRadius, fmt::join(timeline.marker, ", "), fmt::join(timeline.viewDeg, ", "), chapters, clockJson, fmt::join(s, ","),
       fmt::join(q, ","), fmt::join(b, ","), fmt::join(c, ","), fmt::join(dc, ","));
 }
 

@@ -18,6 +18,11 @@
 
 namespace rollspin::app {
 
+// How far before a breakpoint its twin knot lies, relative to the length:
+// the interval between them is too short for the jump of B to matter (its
+// Hermite error is ~ this × |ΔB| × the spacing's share).
+inline constexpr double kTwinKnotGap = 1e-10;
+
 // The knot spacing h: (|B| + 2√|dB/ds|) h at most this, so the spinor turns
 // at most 0.1 rad between knots and the field swings little (Hermite's error
 // is ~(|B| h / 2)⁴ / 384 per unit of q for a steady field, 1.6e-9 at 0.1).
@@ -37,6 +42,19 @@ struct ViewerChapter {
   std::size_t number = 0;  // from 1, as the timeline's `segment` column
   double start = 0.0, end = 0.0;
   std::string caption, title;
+  std::size_t surface = 0;  // the surface stretch it is on: GLB node "surface" (0), "surface.1", …
+};
+
+// The clip's clock (motion::FrameClock) as pieces in the clip's seconds:
+// piece k runs from seconds[k] to seconds[k + 1] and shows
+//   s(t) = s0[k] + (s1[k] − s0[k]) · ease((t − seconds[k]) / (seconds[k + 1] − seconds[k]))
+// (ease: x, or 3x² − 2x³ when smooth), a hold where s0 = s1. A hold at a
+// surface change that still shows the earlier surface holds a hair before
+// the join (kTwinKnotGap · L), so that s names the surface the clip shows.
+struct ViewerClock {
+  std::vector<double> seconds;  // the pieces' bounds, from 0 to the clip's last frame
+  std::vector<double> s0, s1;   // one per piece
+  bool smooth = true;
 };
 
 struct ViewerTimeline {
@@ -46,6 +64,7 @@ struct ViewerTimeline {
   std::array<double, 2> viewDeg{};  // render.azimuth_deg, render.elevation_deg: where the views look from
   std::vector<ViewerKnot> knots;
   std::vector<ViewerChapter> chapters;  // empty unless a storyboard
+  ViewerClock clock;
 };
 
 // The knot arc lengths: sorted, from 0 to the length, on every breakpoint.

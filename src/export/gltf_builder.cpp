@@ -77,6 +77,12 @@ int GltfBuilder::addVec2(const std::vector<glm::vec2>& values) {
 }
 
 int GltfBuilder::addIndices(const std::vector<std::uint32_t>& indices) {
+  // 16-bit indices where every vertex fits (half the bytes; core glTF).
+  if (std::all_of(indices.begin(), indices.end(), [](std::uint32_t i) { return i <= 0xFFFFu; })) {
+    const std::vector<std::uint16_t> narrow(indices.begin(), indices.end());
+    const int view = addView(narrow.data(), narrow.size() * sizeof(std::uint16_t), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    return addAccessor(view, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, indices.size(), TINYGLTF_TYPE_SCALAR);
+  }
   const int view = addView(indices.data(), indices.size() * sizeof(std::uint32_t), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
   return addAccessor(view, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, indices.size(), TINYGLTF_TYPE_SCALAR);
 }
@@ -118,6 +124,14 @@ int GltfBuilder::addMaterial(const std::string& name, const render::Material& m,
   if (texture >= 0) material.pbrMetallicRoughness.baseColorTexture.index = texture;
   if (m.opacity < 1.0f) material.alphaMode = "BLEND";
   material.doubleSided = m.cull == render::Cull::None;
+  // The renders' own Blinn–Phong terms, for a reader that shades as they do
+  // (the web viewer: cheaper than PBR on a software renderer, and the same look).
+  tinygltf::Value::Object phong;
+  phong["specular"] = tinygltf::Value(double(m.specular));
+  phong["shininess"] = tinygltf::Value(double(m.shininess));
+  tinygltf::Value::Object extras;
+  extras["rollspin"] = tinygltf::Value(phong);
+  material.extras = tinygltf::Value(extras);
   model_.materials.push_back(material);
   return int(model_.materials.size() - 1);
 }

@@ -35,7 +35,8 @@ class GltfBuilder {
   // PBR metallic-roughness from the renderer's Blinn–Phong material: base
   // colour = colour (alpha = opacity; BLEND below 1), metallic 0, roughness
   // 1 − specular′ (1 − √(2 / (shininess + 2))) with specular′ = min(1, 2 specular)
-  // (a matte material is rough, a shiny one as sharp as its Phong lobe).
+  // (a matte material is rough, a shiny one as sharp as its Phong lobe);
+  // extras.rollspin = {specular, shininess}: the renders' Blinn–Phong terms.
   [[nodiscard]] int addMaterial(const std::string& name, const render::Material& material, int texture = -1);
   // Triangles; TEXCOORD_0 only with `withUv` (a textured material).
   [[nodiscard]] int addMesh(const std::string& name, const render::MeshData& mesh, int material, bool withUv);

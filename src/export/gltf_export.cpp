@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -11,6 +14,9 @@
 #include "draw/ball_view.hpp"
 #include "draw/draw_style.hpp"
 #include "export/gltf_builder.hpp"
+#include "export/grid_thinning.hpp"
+#include "motion/frame_sampling.hpp"
+#include "motion/surface_stretches.hpp"
 #include "render/mesh_builders.hpp"
 #include "render/procedural_textures.hpp"
 
@@ -24,6 +30,13 @@ namespace {
 // The twin view's spin arrow radius; its field arrow is 0.8 of it.
 constexpr float kArrowRadius = 0.028f;
 constexpr int kArrowSegments = 32;
+// How far the exported surface may depart from the ball view's mesh, as a
+// share of the ball's radius, in each direction of its grid: the ball sinks
+// into a chord by at most twice this (1 % of R, a pixel or less).
+constexpr double kSurfaceToleranceOfRadius = 0.005;
+// The path tube's rings: kept where its centre line bends more than this
+// share of the tube's radius off the chord between kept rings.
+constexpr double kTubeToleranceOfItsRadius = 0.1;
 
 void appendTransformed(render::MeshData& out, const render::MeshData& in, const glm::mat4& m) {
   const auto base = static_cast<std::uint32_t>(out.vertices.size());
@@ -91,19 +104,29 @@ Su2 fromZTo(const Vec3& b) {
 }
 
 // Float32 quaternions (x, y, z, w) on one hemisphere key to key, so that
-// any interpolation (a per-component one too) turns the short way; `sign`
-// gets the factor back to the given quaternion.
-std::vector<glm::vec4> continuousQuaternions(const std::vector<Su2>& q, std::vector<float>* sign) {
+// any interpolation (a per-component one too) turns the short way.
+std::vector<glm::vec4> continuousQuaternions(const std::vector<Su2>& q) {
   std::vector<glm::vec4> out;
   glm::vec4 previous(0.0f, 0.0f, 0.0f, 1.0f);
   for (const Su2& k : q) {
     const double n = k.norm();
     glm::vec4 v(float(k.x / n), float(k.y / n), float(k.z / n), float(k.w / n));
-    const float flip = glm::dot(v, previous) < 0.0f ? -1.0f : 1.0f;
-    v *= flip;
-    if (sign) sign->push_back(flip);
+    if (glm::dot(v, previous) < 0.0f) v = -v;
     out.push_back(v);
     previous = v;
+  }
+  return out;
+}
+
+// Float32 quaternions (x, y, z, w) in canonical form, w ≥ 0, as glTF readers
+// normalise them; `sign` gets the spinor's sign back: sign × key = q.
+std::vector<glm::vec4> canonicalQuaternions(const std::vector<Su2>& q, std::vector<float>& sign) {
+  std::vector<glm::vec4> out;
+  for (const Su2& k : q) {
+    const double n = k.norm();
+    const float flip = k.w < 0.0 ? -1.0f : 1.0f;
+    sign.push_back(flip);
+    out.push_back(flip * glm::vec4(float(k.x / n), float(k.y / n), float(k.z / n), float(k.w / n)));
   }
   return out;
 }
@@ -126,27 +149,45 @@ void addChannel(tinygltf::Animation& animation, int sampler, int node, const std
 }
 
 struct Nodes {
-  int root = -1, surface = -1, path = -1, ball = -1, bloch = -1, spin = -1, field = -1;
+  int root = -1, ball = -1, bloch = -1, spin = -1, field = -1;
+  std::vector<int> surfaces, paths;  // one of each per surface the clip shows (a surface: −1 for none)
 };
 
+// glTF has no visibility: each surface's nodes (its surface and path) are
+// scaled 1 while the clip shows that surface and 0 otherwise, STEP keys at
+// `starts` (the clip's seconds where each surface is first shown).
+void addVisibility(GltfBuilder& b, tinygltf::Animation& roll, const Nodes& nodes, const std::vector<float>& starts) {
+  const int times = b.addScalars(starts);
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    std::vector<glm::vec3> scales;
+    for (std::size_t i = 0; i < starts.size(); ++i) scales.emplace_back(i == k ? 1.0f : 0.0f);
+    const int sampler = addSampler(roll, times, b.addVec3(scales, 0));
+    roll.samplers.back().interpolation = "STEP";
+    for (const int node : {nodes.surfaces[k], nodes.paths[k]})
+      if (node >= 0) addChannel(roll, sampler, node, "scale");
+  }
+}
+
 // Animation "roll" and the ball's extras.rollspin.
-void addRoll(GltfBuilder& b, const RollKeys& keys, const Nodes& nodes, const ExportRequest& r) {
+void addRoll(GltfBuilder& b, const RollKeys& keys, const Nodes& nodes, const ExportRequest& r,
+             const std::vector<float>& surfaceStarts) {
   tinygltf::Animation roll;
   roll.name = "roll";
   const int times = b.addScalars(keys.seconds);
   std::vector<glm::vec3> centres;
   for (const Vec3& c : keys.centre) centres.push_back(draw::toGlm(c));
   std::vector<float> signs;
-  const int ballRotation = b.addVec4(continuousQuaternions(keys.rotation, &signs));
+  const int ballRotation = b.addVec4(canonicalQuaternions(keys.rotation, signs));
   std::vector<Su2> fieldTurns;
   for (const Vec3& f : keys.field) fieldTurns.push_back(fromZTo(f));
-  const int fieldRotation = b.addVec4(continuousQuaternions(fieldTurns, nullptr));
+  const int fieldRotation = b.addVec4(continuousQuaternions(fieldTurns));
   const int translation = addSampler(roll, times, b.addVec3(centres, 0));
   const int rotation = addSampler(roll, times, ballRotation);
   addChannel(roll, translation, nodes.ball, "translation");
   addChannel(roll, rotation, nodes.ball, "rotation");
   addChannel(roll, rotation, nodes.spin, "rotation");
   addChannel(roll, addSampler(roll, times, fieldRotation), nodes.field, "rotation");
+  if (surfaceStarts.size() > 1) addVisibility(b, roll, nodes, surfaceStarts);
   b.model().animations.push_back(roll);
 
   std::vector<float> arcLength(keys.arcLength.begin(), keys.arcLength.end());
@@ -169,6 +210,23 @@ void setPose(tinygltf::Node& node, const Vec3& translation, const Su2& q) {
 
 namespace {
 
+// The clip's seconds where each surface stretch is first shown, 0 for the
+// first: just after the whole frame before its first segment's first frame
+// (the renders' cut), where its motion starts and the ball jumps to it
+// (roll_keys.cpp).
+std::vector<float> surfaceStartSeconds(const scene::SceneSpec& spec, const model::RollingModel& model,
+                                       const std::vector<motion::SurfaceStretch>& stretches) {
+  std::vector<float> starts{0.0f};
+  if (stretches.size() < 2) return starts;
+  const motion::FrameClock clock = motion::clipClock(spec, model);
+  long long frame = 0;
+  for (std::size_t k = 1; k < stretches.size(); ++k) {
+    while (frame + 1 < clock.frameCount() && clock.place(frame).segment < stretches[k].firstSegment) ++frame;
+    starts.push_back(secondsJustAfter(double(frame - 1), clock.fps().value()));
+  }
+  return starts;
+}
+
 struct Built {
   GltfBuilder builder;
   RollKeys keys;
@@ -180,16 +238,21 @@ struct Built {
 // ball view could not mesh (no point of the path on its chart, or a chart
 // that is not finite where the path runs) is bad input.
 int addSurface(GltfBuilder& b, const draw::BallView& view, const scene::SceneSpec& spec,
-               const model::RollingModel& model) {
+               const model::RollingModel& model, const std::string& name) {
   if (!model.surface) return -1;
   const auto mesh = view.surfaceMesh();
-  const render::MeshData shown = mesh ? surfaceForExport(*mesh, view.surfaceMaterial()) : render::MeshData{};
+  const double tolerance = kSurfaceToleranceOfRadius * model.ballRadius;
+  // The renders' grid is fine everywhere (4 vertices a checker cell); the
+  // file keeps only the rows and columns its curvature needs.
+  const render::MeshData shown =
+      mesh ? surfaceForExport(thinGrid(*mesh, tolerance, tolerance), view.surfaceMaterial())
+           : render::MeshData{};
   if (shown.indices.empty())
     throw badInput(spec.where("surface.kind"), "surface.kind: the {} surface cannot be meshed where the path runs "
                    "(no finite patch of it holds the path), so it cannot be exported", spec.surface.kind.name());
   const render::Material& material = view.surfaceMaterial();
-  const int texture = b.addTexture(*render::checkerTexture(material.color, material.color2), "surface-checker");
-  return b.addNode("surface", b.addMesh("surface", shown, b.addMaterial("surface", material, texture), true));
+  const int texture = b.addTexture(*render::checkerTexture(material.color, material.color2), name + "-checker");
+  return b.addNode(name, b.addMesh(name, shown, b.addMaterial(name, material, texture), true));
 }
 
 // The ball: the view's sphere at radius R about the node, with its texture
@@ -204,12 +267,14 @@ int addBall(GltfBuilder& b, const draw::BallView& view, double R) {
   return b.addNode("ball", b.addMesh("ball", ball, b.addMaterial("ball", material, texture), true));
 }
 
-int addPath(GltfBuilder& b, const model::RollingModel& model) {
+int addPath(GltfBuilder& b, const model::RollingModel& model, const std::string& name) {
   render::Material material;
   material.color = glm::vec3(draw::kPathLineColor);
   material.specular = 0.0f;
-  const auto tube = pathTube(model, 0.03 * model.ballRadius);
-  return b.addNode("path", b.addMesh("path", *tube, b.addMaterial("path", material), false));
+  const double radius = 0.03 * model.ballRadius;
+  // Fewer rings where the path runs straight; every side of each ring stays.
+  const render::MeshData tube = thinGrid(*pathTube(model, radius), kTubeToleranceOfItsRadius * radius, 0.0);
+  return b.addNode(name, b.addMesh(name, tube, b.addMaterial(name, material), false));
 }
 
 // The Bloch sphere and its arrows, as the twin view draws them.
@@ -231,16 +296,18 @@ void addBloch(GltfBuilder& b, Nodes& nodes, const Vec3& markerBody) {
 // The Bloch sphere beside everything the file shows (the surface as meshed,
 // what the ball view frames), past its +x side, mid-height, large enough to
 // read next to it.
-void placeBloch(Built& out, const draw::BallView& view, double R) {
+void placeBloch(Built& out, const std::vector<std::unique_ptr<draw::BallView>>& views, double R) {
   Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
   auto grow = [&](const Vec3& p) {
     if (!p.allFinite()) return;
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   };
-  for (const Vec3& p : view.extent().points) grow(p);
-  if (view.surfaceMesh())
-    for (const render::Vertex& v : view.surfaceMesh()->vertices) grow(Vec3(v.position.x, v.position.y, v.position.z));
+  for (const auto& view : views) {
+    for (const Vec3& p : view->extent().points) grow(p);
+    if (view->surfaceMesh())
+      for (const render::Vertex& v : view->surfaceMesh()->vertices) grow(Vec3(v.position.x, v.position.y, v.position.z));
+  }
   out.blochRadius = std::max(2.0 * R, 0.15 * (hi - lo).norm());
   out.blochCentre = Vec3(hi.x() + 1.5 * out.blochRadius, 0.5 * (lo.y() + hi.y()), 0.5 * (lo.z() + hi.z()));
 }
@@ -254,28 +321,46 @@ Built build(const ExportRequest& r) {
   Vec3 markerBody = spec.ball.marker ? Vec3((*spec.ball.marker)[0], (*spec.ball.marker)[1], (*spec.ball.marker)[2])
                                      : model.path->at(0.0).normal;  // as SceneDrawer
   markerBody.normalize();
-  const draw::BallView view(spec, model, r.ballTexture, nullptr, markerBody, render::uvSphere(8, 4));
+  // One ball view per surface the clip shows (a storyboard's surface
+  // stretches, each meshed round its own path, as the renders do).
+  const std::vector<motion::SurfaceStretch> stretches = motion::surfaceStretches(spec, model);
+  std::vector<std::unique_ptr<draw::BallView>> views;
+  if (stretches.empty())
+    views.push_back(std::make_unique<draw::BallView>(spec, model, r.ballTexture, nullptr, markerBody, render::uvSphere(8, 4)));
+  for (const motion::SurfaceStretch& st : stretches)
+    views.push_back(std::make_unique<draw::BallView>(st.spec, st.model, r.ballTexture, nullptr, markerBody, render::uvSphere(8, 4)));
   Built out;
   GltfBuilder& b = out.builder;
   Nodes nodes;
   nodes.root = b.addNode("rollspin");
   const double h = std::sqrt(0.5);  // −90° about x: scene +z up → glTF +y up
   b.model().nodes[std::size_t(nodes.root)].rotation = {-h, 0.0, 0.0, h};
-  nodes.surface = addSurface(b, view, spec, model);
-  nodes.path = addPath(b, model);
-  nodes.ball = addBall(b, view, R);
+  for (std::size_t k = 0; k < views.size(); ++k) {
+    const std::string suffix = k == 0 ? "" : "." + std::to_string(k);
+    const scene::SceneSpec& partSpec = stretches.empty() ? spec : stretches[k].spec;
+    const model::RollingModel& partModel = stretches.empty() ? model : stretches[k].model;
+    nodes.surfaces.push_back(addSurface(b, *views[k], partSpec, partModel, "surface" + suffix));
+    nodes.paths.push_back(addPath(b, partModel, "path" + suffix));
+    // At rest (no animation played) the file shows the clip's first surface.
+    for (const int node : {nodes.surfaces.back(), nodes.paths.back()})
+      if (node >= 0 && k > 0) b.model().nodes[std::size_t(node)].scale = {0.0, 0.0, 0.0};
+  }
+  nodes.ball = addBall(b, *views.front(), R);
   addBloch(b, nodes, markerBody);
   out.keys = rollKeys(spec, model);
   setPose(b.model().nodes[std::size_t(nodes.ball)], out.keys.centre.front(), out.keys.rotation.front());
   setPose(b.model().nodes[std::size_t(nodes.spin)], Vec3::Zero(), out.keys.rotation.front());
   setPose(b.model().nodes[std::size_t(nodes.field)], Vec3::Zero(), fromZTo(out.keys.field.front()));
-  placeBloch(out, view, R);
+  placeBloch(out, views, R);
   tinygltf::Node& bloch = b.model().nodes[std::size_t(nodes.bloch)];
   bloch.translation = {out.blochCentre.x(), out.blochCentre.y(), out.blochCentre.z()};
   bloch.scale = {out.blochRadius, out.blochRadius, out.blochRadius};
-  for (const int child : {nodes.surface, nodes.path, nodes.ball, nodes.bloch})
+  std::vector<int> children;
+  for (std::size_t k = 0; k < views.size(); ++k) children.insert(children.end(), {nodes.surfaces[k], nodes.paths[k]});
+  children.insert(children.end(), {nodes.ball, nodes.bloch});
+  for (const int child : children)
     if (child >= 0) b.model().nodes[std::size_t(nodes.root)].children.push_back(child);
-  if (r.animation) addRoll(b, out.keys, nodes, r);
+  if (r.animation) addRoll(b, out.keys, nodes, r, surfaceStartSeconds(spec, model, stretches));
   tinygltf::Scene scene;
   scene.name = spec.name;
   scene.nodes = {nodes.root};

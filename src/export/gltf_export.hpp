@@ -21,6 +21,13 @@
 //               absent when the scene has no surface to mesh.
 //     "path"    mesh "path": a thin tube along the contact path P(s), lifted
 //               by its radius along the surface normal.
+//     "surface.k", "path.k"  (k = 1, 2, …) a storyboard on several surfaces:
+//               the k-th stretch's surface and path (motion::surfaceStretches;
+//               "surface" and "path" are the first), static scale 0; every
+//               stretch's pair is shown by a STEP "scale" channel of "roll",
+//               1 from its cut (secondsJustAfter the clip's last frame on
+//               the stretch before) to the next cut; until a cut the ball is
+//               keyed on the earlier stretch's path (roll_keys.cpp).
 //     "ball"    mesh "ball": a sphere of radius R about the node origin,
 //               textured like the renders (u = longitude, v = colatitude of
 //               the body frame). translation = the ball's centre C(s),
@@ -29,9 +36,9 @@
 //                               "version": "…", "scene": "…"}}
 //               A, B: accessor indices (SCALAR float, one per key of "roll"):
 //               s of each key, and ±1 with sign × the key's quaternion = the
-//               solver's q (this exporter keeps consecutive keys on one
-//               hemisphere, following the solver's q, so today every sign is
-//               +1; readers must still apply it). "scene": the resolved
+//               solver's q (the keys are canonical, qw ≥ 0, as glTF readers
+//               normalise them: the sign is −1 wherever the solver's qw < 0,
+//               the spinor's negative sheet). "scene": the resolved
 //               scene text (`rollspin scene --print`), left out with
 //               --no-metadata.
 //     "bloch"   mesh "bloch": the unit Bloch sphere (translucent glass),
@@ -44,11 +51,13 @@
 //               taking +z to B(s)/|B(s)| (shortest arc), animated.
 // Materials (PBR metallic-roughness, colours the renders' linear RGB):
 //   "surface" (checker texture, double-sided), "path", "ball" (its texture),
-//   "bloch" (alphaMode BLEND), "spin", "field". Textures: PNG images in the
-//   buffer.
-// Animation "roll" (every sampler LINEAR, one shared input of key times in
-//   seconds, starting at 0): channels ball/translation, ball/rotation,
-//   spin/rotation, field/rotation. A key at every motion start and stop of
+//   "bloch" (alphaMode BLEND), "spin", "field"; each with extras
+//   {"rollspin": {"specular", "shininess"}}, the renders' Blinn–Phong terms.
+//   Textures: PNG images in the buffer.
+// Animation "roll" (the motion's samplers LINEAR, one shared input of key
+//   times in seconds, starting at 0): channels ball/translation,
+//   ball/rotation, spin/rotation, field/rotation; on several surfaces also
+//   surface*/scale and path*/scale (STEP, their own input: 0 and each cut). A key at every motion start and stop of
 //   the clip, at every whole frame of a motion, at every corner and joint of
 //   the path, and where the bisection puts them; the last key is the clip's
 //   last frame, (frameCount − 1) / fps seconds. Times are float32: each key's
@@ -93,6 +102,14 @@ struct RollKeys {
   std::vector<geometry::Vec3> centre;
   std::vector<geometry::Vec3> field;  // B/|B| at s (unit; +z where B = 0)
 };
+
+// A float32 time "at" a whole frame may round a little past it: a time
+// belongs to frame ⌈t · fps − kFrameSlack⌉ (a fractional frame leads up to
+// the next whole one).
+inline constexpr double kFrameSlack = 1e-4;
+// The first float32 second past `frame` by more than the slack: where the
+// clip leaves that whole frame (a surface change's cut, its key).
+[[nodiscard]] float secondsJustAfter(double frame, double fps);
 
 // The keys for a scene: the frame clock's motion bounds, the path's corners
 // and joints, then bisection. Runs the scene's solver (a march a round).

@@ -50,13 +50,29 @@ struct Key {
   Su2 q;
 };
 
+// Where a storyboard changes surface the path jumps at one s, the join: a
+// time at the join that the clip still shows on the earlier surface (the
+// hold before the cut, up to and with the whole frame before the new
+// surface's motion) is keyed a hair before it (this share of L), the ball
+// where that surface's path ends, as the renders show it; a fractional
+// frame f belongs to the whole frame ⌈f⌉ (it leads up to it).
+constexpr double kJoinGap = 1e-10;
+
 // The clock as a function of float32 seconds (what the file can say).
 struct Timing {
   const motion::FrameClock& clock;
+  const model::RollingModel& model;
   double fps;
   [[nodiscard]] double frameOf(float seconds) const { return double(seconds) * fps; }
   [[nodiscard]] double arcLengthAt(float seconds) const {
-    return clock.arcLengthAt(std::clamp(frameOf(seconds), 0.0, double(clock.frameCount() - 1)));
+    const double frame = std::clamp(frameOf(seconds), 0.0, double(clock.frameCount() - 1));
+    const double s = clock.arcLengthAt(frame);
+    if (model.segments.empty()) return s;
+    const std::size_t shown = clock.place(static_cast<long long>(std::ceil(frame - kFrameSlack))).segment;
+    const std::size_t atS = motion::storyPlaceAt(model, s).segment;
+    const bool earlierSurface = shown < model.segments.size() && atS < model.segments.size() &&
+                                model.segments[shown].surface != model.segments[atS].surface;
+    return earlierSurface ? std::max(0.0, s - kJoinGap * model.path->length()) : s;
   }
 };
 
@@ -88,6 +104,11 @@ std::vector<float> initialTimes(const Timing& timing, const model::RollingModel&
   }
   std::vector<float> times;
   for (const double f : frames) times.push_back(float(f / timing.fps));
+  // A key just after each motion bound too: where the surface changes the
+  // ball jumps there (the bound keyed on the earlier surface, the next
+  // float time on the new one).
+  for (const double f : bounds)
+    if (f < double(clock.frameCount() - 1)) times.push_back(secondsJustAfter(f, timing.fps));
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
   return times;
@@ -149,10 +170,16 @@ std::vector<Key> bisect(std::vector<Key> keys, const Timing& timing, const spin:
 
 }  // namespace
 
+float secondsJustAfter(double frame, double fps) {
+  float t = float((frame + kFrameSlack) / fps);  // then up by ulps, a few at most
+  while (double(t) * fps - frame <= kFrameSlack) t = std::nextafter(t, 1e30f);
+  return t;
+}
+
 RollKeys rollKeys(const scene::SceneSpec& spec, const model::RollingModel& model) {
   StageLog::instance().record("gltf-keys");
   const motion::FrameClock clock = motion::clipClock(spec, model);
-  const Timing timing{clock, clock.fps().value()};
+  const Timing timing{clock, model, clock.fps().value()};
   const motion::SolverChoice choice = motion::chooseSolver(spec, model);
   const spin::Propagator propagator(*model.path, model.ballRadius, choice.method, choice.steps, choice.tolerance);
   std::vector<Key> keys;

@@ -1,7 +1,8 @@
 // The web viewer's timeline (app/viewer_timeline.hpp): knots on every join,
 // and dense enough that cubic Hermite with the solver's derivatives
 // (dq/ds = −½ (0, B) ⊗ q) meets the solver between knots to 1e-7, where
-// Hermite errs most (mid-interval); base64 against RFC 4648's vectors.
+// Hermite errs most (mid-interval); the clip's clock and the chapters'
+// surfaces; base64 against RFC 4648's vectors.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include "app/viewer_job.hpp"
 #include "app/viewer_timeline.hpp"
 #include "model/rolling_model.hpp"
+#include "motion/frame_sampling.hpp"
 #include "motion/solve_job.hpp"
 #include "spin/su2.hpp"
 #include "support/test_files.hpp"
@@ -100,6 +102,44 @@ TEST(ViewerTimeline, ChaptersAreTheStoryboardsSegmentsWithTheirCaptions) {
   }
   const std::string json = app::viewerTimelineJson(timeline);
   EXPECT_EQ(json.find('<'), std::string::npos) << "the JSON must not be able to close its <script>";
+}
+
+// The page's clock, evaluated here as web/src/clip_clock.js does.
+double clockAt(const app::ViewerClock& clock, double t) {
+  std::size_t k = 0;
+  while (k + 1 < clock.s0.size() && clock.seconds[k + 1] <= t) ++k;
+  if (!(clock.s1[k] > clock.s0[k])) return clock.s0[k];
+  const double x = std::clamp((t - clock.seconds[k]) / (clock.seconds[k + 1] - clock.seconds[k]), 0.0, 1.0);
+  return clock.s0[k] + (clock.s1[k] - clock.s0[k]) * (clock.smooth ? x * x * (3.0 - 2.0 * x) : x);
+}
+
+// At every frame (and half way between) the clock's pieces show the MP4's
+// arc length; on two surfaces the chapters name theirs, and the hold on the
+// torus before the floor sits a hair before the join (so s names the torus).
+TEST(ViewerTimeline, TheClockIsTheClipsAndChaptersNameTheirSurface) {
+  for (const char* name : {"storyboard", "torus-to-floor", "lollipop"}) {
+    const scene::SceneSpec spec = model::loadScene(test::shippedScenePath(name), {});
+    const model::RollingModel model = model::buildSceneModel(spec);
+    const app::ViewerTimeline timeline = app::sampleViewerTimeline(spec, model, motion::chooseSolver(spec, model));
+    const motion::FrameClock clock = motion::clipClock(spec, model);
+    const double fps = clock.fps().value(), length = model.path->length();
+    ASSERT_NEAR(timeline.clock.seconds.back(), double(clock.frameCount() - 1) / fps, 1e-12) << name;
+    for (double f = 0.0; f <= double(clock.frameCount() - 1); f += 0.5)
+      EXPECT_NEAR(clockAt(timeline.clock, f / fps), clock.arcLengthAt(f), 2e-10 * length) << name << " frame " << f;
+  }
+  const scene::SceneSpec spec = model::loadScene(test::shippedScenePath("torus-to-floor"), {});
+  const model::RollingModel model = model::buildSceneModel(spec);
+  const app::ViewerTimeline timeline = app::sampleViewerTimeline(spec, model, motion::chooseSolver(spec, model));
+  ASSERT_EQ(timeline.chapters.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ(timeline.chapters[k].surface, k < 2 ? 0u : 1u) << "chapter " << k + 1;
+  const double join = model.segments[2].start;
+  // The pieces: the opening hold, round the torus, the hold, the floor's two motions, the closing hold.
+  const app::ViewerClock& pieces = timeline.clock;
+  ASSERT_GE(pieces.s0.size(), 3u);
+  EXPECT_EQ(pieces.s0[2], pieces.s1[2]) << "the hold after the torus";
+  EXPECT_LT(pieces.s0[2], join);
+  EXPECT_GT(pieces.s0[2], join - 1e-9 * model.path->length());
+  EXPECT_EQ(pieces.s0[3], join) << "the floor's motion starts at the join itself";
 }
 
 TEST(Base64, MatchesRfc4648) {

@@ -5,6 +5,11 @@
 //   - state() against `rollspin timeline --at-s` at 50 random s (1e-6),
 //   - the screenshot: the ball and the Bloch sphere drawn (saved as PNG),
 //   - keyboard scrubbing moves s, chapters jump to their segment's start,
+//   - the clip's clock: sAt(t) against the arc length of every key of the
+//     GLB's `roll` animation (`rollspin export`: the frame clock's s at the
+//     key's time), and playing advances the clock at about 1 s a second,
+//   - the shown surface (state().surface) in every chapter of a storyboard
+//     on two surfaces, against the chapter and the GLB's surface nodes,
 //   - the page's size (≤ 3 MB), its scene text and generator.
 // Usage: node viewer_browser_test.mjs ROLLSPIN SOURCE_DIR WORK_DIR
 import { execFileSync } from 'node:child_process';
@@ -34,7 +39,7 @@ if (!fs.existsSync(CHROMIUM)) {
 }
 
 // Bundled scenes: a flat circle, a storyboard with chapters, a curved surface.
-const SCENES = ['lollipop', 'storyboard', 'torus'];
+const SCENES = ['lollipop', 'storyboard', 'torus', 'torus-to-floor'];
 const SAMPLES = 50;
 const TOLERANCE = 1e-6;
 const MAX_BYTES = 3 * 1024 * 1024;
@@ -163,6 +168,67 @@ async function checkChapters(page, scene) {
   }
 }
 
+// The GLB's JSON chunk and an accessor's floats (tightly packed, as the exporter writes them).
+function readGlb(file) {
+  const glb = fs.readFileSync(file);
+  const jsonLength = glb.readUInt32LE(12);
+  const gltf = JSON.parse(glb.subarray(20, 20 + jsonLength).toString('utf8'));
+  const bin = glb.subarray(20 + jsonLength + 8);
+  const floats = (index) => {
+    const a = gltf.accessors[index], v = gltf.bufferViews[a.bufferView];
+    const width = { SCALAR: 1, VEC3: 3, VEC4: 4 }[a.type];
+    const out = new Float32Array(a.count * width);
+    Buffer.from(out.buffer).set(bin.subarray(v.byteOffset + (a.byteOffset ?? 0), v.byteOffset + (a.byteOffset ?? 0) + out.byteLength));
+    return Array.from(out);
+  };
+  return { gltf, floats };
+}
+
+// The clock: at every key of the exported `roll`, the page's sAt(t) is the key's arc length (float32),
+// and timeAt(s) shows that s again; then playing moves the clip's time at the wall clock's pace.
+async function checkClock(page, scene, dir) {
+  const glbFile = path.join(dir, `${scene}.glb`);
+  execFileSync(rollspin, ['export', scene, '-o', glbFile, '--no-metadata'], { stdio: 'pipe' });
+  const { gltf, floats } = readGlb(glbFile);
+  const ball = gltf.nodes.findIndex((n) => n.name === 'ball');
+  const roll = gltf.animations.find((a) => a.name === 'roll');
+  const channel = roll.channels.find((c) => c.target.node === ball && c.target.path === 'rotation');
+  const times = floats(roll.samplers[channel.sampler].input);
+  const arcs = floats(gltf.nodes[ball].extras.rollspin.arc_length);
+  const { gaps, length, duration } = await page.evaluate((keys) => ({
+    gaps: keys.map(([t, s]) => [Math.abs(window.rollspin.sAt(t) - s), Math.abs(window.rollspin.sAt(window.rollspin.timeAt(s)) - s)]),
+    length: window.rollspin.length, duration: window.rollspin.duration }), times.map((t, k) => [t, arcs[k]]));
+  const tolerance = 2e-7 * Math.max(1, length);  // float32 arc lengths
+  const worst = Math.max(...gaps.flat());
+  check(worst <= tolerance, `${scene}: the page's clock is off the export's keys by ${worst.toExponential(2)} (of L = ${length})`);
+  check(Math.abs(duration - times[times.length - 1]) <= 1e-5 * duration,
+        `${scene}: the page's clip lasts ${duration} s, the export's ${times[times.length - 1]} s`);
+  console.log(`${scene}: clock at ${times.length} keys of the export, largest difference ${worst.toExponential(2)}`);
+  // Playing: the clip's time advances by about the wall time, and s is the clock's s at it.
+  await page.evaluate(() => window.rollspin.seekTime(0));
+  const wallStart = Date.now();
+  await page.evaluate(() => window.rollspin.play());
+  await page.waitForTimeout(1500);
+  const st = await page.evaluate(() => { window.rollspin.pause(); return { ...window.rollspin.state(), sAt: window.rollspin.sAt(window.rollspin.state().time) }; });
+  const wall = (Date.now() - wallStart) / 1000;
+  check(st.time > 0.3 && st.time <= wall + 0.1, `${scene}: after ${wall.toFixed(2)} s of play the clip is at ${st.time} s`);
+  check(Math.abs(st.s - st.sAt) <= 1e-9 * length, `${scene}: playing shows s = ${st.s}, the clock ${st.sAt} at ${st.time} s`);
+  return gltf;
+}
+
+// A storyboard on several surfaces shows each chapter's surface (GLB nodes "surface", "surface.1", …).
+async function checkSurfaces(page, scene, gltf) {
+  const chapters = await page.evaluate(() => window.rollspin.chapters);
+  const surfaces = new Set(chapters.map((c) => c.surface));
+  for (const k of surfaces)
+    check(gltf.nodes.some((n) => n.name === (k === 0 ? 'surface' : `surface.${k}`)), `${scene}: no GLB node for surface ${k}`);
+  if (scene === 'torus-to-floor') check(surfaces.size === 2, `${scene}: ${surfaces.size} surfaces in the chapters`);
+  for (const c of chapters.filter((x) => x.end > x.start)) {
+    const st = await page.evaluate((s) => { window.rollspin.seek(s); return window.rollspin.state(); }, 0.5 * (c.start + c.end));
+    check(st.surface === c.surface, `${scene}: in chapter ${c.number} the page shows surface ${st.surface}, not ${c.surface}`);
+  }
+}
+
 async function checkScene(context, scene, dir) {
   const html = path.join(dir, `${scene}.html`);
   execFileSync(rollspin, ['render', scene, '-o', html, '--quiet'], { stdio: 'pipe' });
@@ -182,6 +248,7 @@ async function checkScene(context, scene, dir) {
   await checkPixels(page, scene, dir);
   await checkKeys(page, scene);
   await checkChapters(page, scene);
+  await checkSurfaces(page, scene, await checkClock(page, scene, dir));
   check(errors.length === 0, `${scene}: the page reported errors: ${errors.join('; ')}`);
   await page.close();
 }

@@ -1,8 +1,9 @@
 // The glTF export read back through tinygltf's loader: the named nodes and
 // their tree, +Y up, the ball's translation = its centre C(s) at the keys,
 // the animated rotation at random times within 1e-6 rad of the solver's q
-// (the file's own float32 keys, slerped as glTF does), spinor_sign × key =
-// the solver's q with its sign, the extras; and the .glb/.gltf writers.
+// (the file's own float32 keys, slerped as glTF does), canonical keys (qw ≥ 0)
+// with spinor_sign × key = the solver's q with its sign, the extras; and the
+// .glb/.gltf writers.
 #include <gtest/gtest.h>
 
 #include <tiny_gltf.h>
@@ -16,6 +17,7 @@
 #include "export/gltf_export.hpp"
 #include "motion/frame_poses.hpp"
 #include "motion/frame_sampling.hpp"
+#include "motion/surface_stretches.hpp"
 #include "support/test_files.hpp"
 
 namespace rollspin::gltf {
@@ -64,12 +66,13 @@ std::vector<float> floats(const tinygltf::Model& m, int accessor) {
 }
 
 // The output accessor of the channel that animates node/path.
-int channelOutput(const tinygltf::Model& m, int node, const std::string& path, int* input = nullptr) {
+int channelOutput(const tinygltf::Model& m, int node, const std::string& path, int* input = nullptr,
+                  const std::string& interpolation = "LINEAR") {
   for (const tinygltf::Animation& a : m.animations)
     for (const tinygltf::AnimationChannel& c : a.channels)
       if (c.target_node == node && c.target_path == path) {
         const tinygltf::AnimationSampler& s = a.samplers[std::size_t(c.sampler)];
-        EXPECT_EQ(s.interpolation, "LINEAR");
+        EXPECT_EQ(s.interpolation, interpolation);
         if (input) *input = s.input;
         return s.output;
       }
@@ -187,6 +190,25 @@ TEST(GltfExport, KeysAreTheSolversOnACircle) {
   expectRotationWithinTolerance(l, 400);
 }
 
+// The lollipop's spinor turns by more than 2π: its qw changes sign. The keys
+// are canonical (qw ≥ 0, as readers normalise them) and spinor_sign carries
+// the sheet, both +1 and −1 (expectKeysAreTheSolvers: sign × key = q).
+TEST(GltfExport, KeysAreCanonicalAndTheSignCarriesTheSheet) {
+  const Loaded l = exportShipped("lollipop");
+  const tinygltf::Model& m = l.gltf;
+  const int ball = nodeNamed(m, "ball");
+  const std::vector<float> rotations = floats(m, channelOutput(m, ball, "rotation"));
+  const tinygltf::Value& extras = m.nodes[std::size_t(ball)].extras.Get("rollspin");
+  const std::vector<float> sign = floats(m, extras.Get("spinor_sign").GetNumberAsInt());
+  for (std::size_t k = 0; k < sign.size(); ++k) {
+    EXPECT_GE(keyAt(rotations, k).w, 0.0) << "key " << k;
+    EXPECT_EQ(sign[k], l.exported.keys.rotation[k].w < 0.0 ? -1.0f : 1.0f) << "key " << k;
+  }
+  EXPECT_GT(std::count(sign.begin(), sign.end(), -1.0f), 0);
+  EXPECT_GT(std::count(sign.begin(), sign.end(), 1.0f), 0);
+  EXPECT_EQ(std::count(sign.begin(), sign.end(), -1.0f) + std::count(sign.begin(), sign.end(), 1.0f), long(sign.size()));
+}
+
 TEST(GltfExport, KeysFollowAStoryboardWithHoldsAndCorners) {
   const Loaded l = exportShipped("storyboard");
   expectKeysAreTheSolvers(l);
@@ -200,6 +222,65 @@ TEST(GltfExport, KeysFollowAStoryboardWithHoldsAndCorners) {
     for (const double s : l.exported.keys.arcLength) nearest = std::min(nearest, std::abs(s - c));
     EXPECT_LE(nearest, 1e-5) << "corner at s = " << c;
   }
+}
+
+// A storyboard on two surfaces (the torus, then the floor): one surface and
+// one path node each, the second at scale 0 at rest, and a STEP scale
+// channel per node that swaps them at the clip's cut, the first frame of the
+// floor's first segment (as the renders cut).
+TEST(GltfExport, EachSurfaceIsShownDuringItsOwnSegments) {
+  const Loaded l = exportShipped("torus-to-floor");
+  const tinygltf::Model& m = l.gltf;
+  const std::vector<motion::SurfaceStretch> stretches = motion::surfaceStretches(l.spec, l.model);
+  ASSERT_EQ(stretches.size(), 2u);
+  const motion::FrameClock clock = motion::clipClock(l.spec, l.model);
+  const double fps = clock.fps().value();
+  long long cut = 0;
+  while (clock.place(cut).segment < stretches[1].firstSegment) ++cut;
+  ASSERT_GT(cut, 0);
+  // The cut: just after the whole frame before the floor's first frame.
+  const double cutSeconds = secondsJustAfter(double(cut - 1), fps);
+  EXPECT_GT(cutSeconds * fps, double(cut - 1));
+  EXPECT_LT(cutSeconds * fps, double(cut - 1) + 1e-3);
+  for (const char* base : {"surface", "path"}) {
+    for (const int k : {0, 1}) {
+      const std::string name = k == 0 ? std::string(base) : std::string(base) + ".1";
+      const int node = nodeNamed(m, name);
+      ASSERT_GE(node, 0) << name;
+      EXPECT_GE(m.nodes[std::size_t(node)].mesh, 0) << name;
+      EXPECT_EQ(m.nodes[std::size_t(node)].scale, k == 0 ? std::vector<double>{} : std::vector<double>(3, 0.0)) << name;
+      int input = -1;
+      const int output = channelOutput(m, node, "scale", &input, "STEP");
+      const std::vector<float> times = floats(m, input), scales = floats(m, output);
+      ASSERT_EQ(times.size(), 2u) << name;
+      EXPECT_EQ(times[0], 0.0f);
+      EXPECT_EQ(times[1], float(cutSeconds)) << name;
+      ASSERT_EQ(scales.size(), 6u) << name;
+      for (int key = 0; key < 2; ++key)
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(scales[std::size_t(3 * key + c)], key == k ? 1.0f : 0.0f) << name;
+    }
+  }
+  // The cut shows the floor's stretch and the frame before it the torus's.
+  EXPECT_GE(clock.arcLength(cut), stretches[1].start);
+  EXPECT_LT(clock.place(cut - 1).segment, stretches[1].firstSegment);
+  // Until the cut the ball is keyed on the torus, the hold at the join too
+  // (a hair before it), not at the floor's start where the path jumps; from
+  // the cut on, on the floor.
+  const RollKeys& keys = l.exported.keys;
+  const Vec3 floorStart = l.model.path->at(stretches[1].start).centre(l.model.ballRadius);
+  std::size_t held = 0;
+  for (std::size_t k = 0; k < keys.seconds.size(); ++k)
+    if (double(keys.seconds[k]) < cutSeconds) {
+      EXPECT_LT(keys.arcLength[k], stretches[1].start) << "key " << k << " at " << keys.seconds[k] << " s";
+      EXPECT_GT((keys.centre[k] - floorStart).norm(), l.model.ballRadius) << "key " << k;
+      held += keys.arcLength[k] > stretches[1].start - 1e-6 ? 1 : 0;
+    }
+  EXPECT_GE(held, 2u) << "the hold's two ends";
+  const auto first = std::find(keys.seconds.begin(), keys.seconds.end(), float(cutSeconds));
+  ASSERT_NE(first, keys.seconds.end()) << "a key at the cut";
+  EXPECT_GE(keys.arcLength[std::size_t(first - keys.seconds.begin())], stretches[1].start);
+  // The floor lies in z = 0, the torus round it: different meshes.
+  EXPECT_NE(m.nodes[std::size_t(nodeNamed(m, "surface"))].mesh, m.nodes[std::size_t(nodeNamed(m, "surface.1"))].mesh);
 }
 
 TEST(GltfExport, ExtrasCarryVersionAndSceneUnlessNoMetadata) {

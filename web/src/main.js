@@ -4,12 +4,15 @@
 //   window.rollspin.ready        a Promise, resolved once the first frame is drawn
 //   window.rollspin.length       the path's arc length
 //   window.rollspin.seek(s)      moves to s (clamped to [0, length]); returns s
-//   window.rollspin.state()      {s, quaternion: [qw, qx, qy, qz], bloch: [x, y, z], segment}
+//   window.rollspin.state()      {s, quaternion: [qw, qx, qy, qz], bloch: [x, y, z], segment, surface, time}
+//   window.rollspin.duration     the clip's length in seconds (the MP4's, holds included)
+//   window.rollspin.sAt(t), timeAt(s), seekTime(t)   the clip's clock (playback at 1× follows it)
 //   window.rollspin.play(), pause(), chapters, measureFps(seconds) → Promise<frames per second>,
 //   views() → [{name: "ball" | "bloch", element, centre: [x, y]}] (page pixels)
 import { Timeline } from './timeline.js';
 import { TwinScene, embeddedBytes } from './twin_scene.js';
 import { Player, bindControls } from './player.js';
+import { ClipClock } from './clip_clock.js';
 
 function readJson(id) {
   return JSON.parse(document.getElementById(id).textContent);
@@ -41,7 +44,8 @@ function start() {
   const timeline = new Timeline(data);
   const twin = new TwinScene(document.getElementById('ball-view'), document.getElementById('bloch-view'), data.viewDeg);
   let dirty = true;
-  const player = new Player(timeline, data.seconds, () => (dirty = true));
+  const clock = new ClipClock(data.clock);
+  const player = new Player(timeline, clock, () => (dirty = true));
   const focusedView = () => (document.activeElement?.id === 'bloch-view' ? twin.blochView : twin.ballView);
   const actions = {
     orbit: (azimuth, elevation) => { focusedView().orbit(azimuth, elevation); dirty = true; },
@@ -56,7 +60,11 @@ function start() {
     length: timeline.length,
     chapters: timeline.chapters,
     seek: (s) => player.seek(s),
-    state: () => timeline.state(player.s),
+    state: () => ({ ...timeline.state(player.s), time: player.t }),
+    duration: clock.duration,
+    sAt: (t) => clock.sAt(t),
+    timeAt: (s) => clock.timeAt(s),
+    seekTime: (t) => player.seekTime(t),
     play: () => player.play(),
     pause: () => player.pause(),
     measureFps: (seconds = 5) => measureFps(player, counter, seconds),

@@ -8,25 +8,37 @@ const DEG = 180 / Math.PI;
 const KEY_STEP = 1 / 200;
 
 export class Player {
-  constructor(timeline, secondsForPath, onChange) {
+  // clock: the clip's (ClipClock): at 1× the page plays as the MP4 does, holds included.
+  constructor(timeline, clock, onChange) {
     this.timeline = timeline;
-    this.rate = timeline.length / secondsForPath;  // arc length per second at 1×
+    this.clock = clock;
     this.speed = 1;
     this.s = 0;
+    this.t = 0;  // the clip's second shown
     this.playing = false;
     this.loop = false;  // at the end: start again (else stop)
     this.onChange = onChange;
     this.listeners = [];
   }
 
+  // Moves to s (the scrubber, keys, chapters); the clock follows.
   seek(s) {
     this.s = this.timeline.clamp(s);
+    this.t = this.clock.timeAt(this.s);
     this.onChange(this.s);
     return this.s;
   }
 
+  // Moves to the clip's second t; s follows.
+  seekTime(t) {
+    this.t = Math.min(this.clock.duration, Math.max(0, Number(t)));
+    this.s = this.timeline.clamp(this.clock.sAt(this.t));
+    this.onChange(this.s);
+    return this.t;
+  }
+
   play() {
-    if (this.s >= this.timeline.length) this.s = 0;
+    if (this.t >= this.clock.duration || this.s >= this.timeline.length) this.seekTime(0);
     this.playing = true;
     this.last = null;
     this.notify();
@@ -42,14 +54,14 @@ export class Player {
     else this.play();
   }
 
-  // Advances by the time since the last call (requestAnimationFrame's clock, ms).
+  // Advances the clip's clock by the time since the last call (requestAnimationFrame's clock, ms).
   tick(now) {
     if (!this.playing) return false;
     if (this.last !== null) {
-      const s = this.s + ((now - this.last) / 1000) * this.rate * this.speed;
-      const end = this.timeline.length;
-      this.seek(s < end ? s : this.loop ? s % end : end);
-      if (s >= end && !this.loop) {
+      const t = this.t + ((now - this.last) / 1000) * this.speed;
+      const end = this.clock.duration;
+      this.seekTime(t < end ? t : this.loop ? t % end : end);
+      if (t >= end && !this.loop) {
         this.pause();
         return true;
       }
@@ -63,7 +75,12 @@ export class Player {
   }
 }
 
+// Sets an element's text only when it changes: each change costs the page a
+// layout and a repaint, which on a software renderer cost as much as a frame.
+const shownText = new Map();
 function text(id, value) {
+  if (shownText.get(id) === value) return;
+  shownText.set(id, value);
   document.getElementById(id).textContent = value;
 }
 
@@ -73,9 +90,8 @@ export function showReadouts(timeline, s) {
   text('arc', `s = ${s.toFixed(2)} of ${timeline.length.toFixed(2)}`);
   text('rotation', `lab rotation angle = ${(a.rotation * DEG).toFixed(1)}°`);
   text('spinor', `spinor angle ψ = ${(a.spinor * DEG).toFixed(1)}°`);
-  const sheet = document.getElementById('sheet');
-  sheet.textContent = a.negativeSheet ? 'spinor sheet: negative (U ≈ −1)' : 'spinor sheet: positive (U ≈ +1)';
-  sheet.classList.toggle('negative', a.negativeSheet);
+  text('sheet', a.negativeSheet ? 'spinor sheet: negative (U ≈ −1)' : 'spinor sheet: positive (U ≈ +1)');
+  document.getElementById('sheet').classList.toggle('negative', a.negativeSheet);
 }
 
 // One button per storyboard segment; the current one marked.
@@ -91,8 +107,11 @@ function buildChapters(player, timeline) {
     nav.append(b);
     return b;
   });
+  let shown = null;
   return (s) => {
     const current = timeline.segment(s);
+    if (current === shown) return;
+    shown = current;
     buttons.forEach((b, k) => {
       const on = timeline.chapters[k].number === current;
       b.classList.toggle('current', on);

@@ -118,6 +118,12 @@ export class Timeline {
     return number;
   }
 
+  // The surface shown at s: the current segment's (0 for GLB node "surface", k for "surface.k").
+  surface(s) {
+    const current = this.segment(s);
+    return this.chapters.find((c) => c.number === current)?.surface ?? 0;
+  }
+
   clamp(s) {
     return Math.min(this.length, Math.max(0, Number(s)));
   }
@@ -125,6 +131,6 @@ export class Timeline {
   // What window.rollspin.state() returns.
   state(s) {
     const quaternion = this.quaternion(s);
-    return { s, quaternion, bloch: rotate(quaternion, this.marker), segment: this.segment(s) };
+    return { s, quaternion, bloch: rotate(quaternion, this.marker), segment: this.segment(s), surface: this.surface(s) };
   }
 }

@@ -98,12 +98,20 @@ class View {
 
 // The key light's direction (glTF's y up): from above, over the viewer's shoulder.
 const KEY_DIRECTION = new THREE.Vector3(-0.45, 1.0, 0.7).normalize();
-const SHADOW_MAP_SIZE = 1024;
+// The shadow map covers only the ball's own shadow: seen from a directional
+// light, a ball of radius R shades a disc of radius R round its centre on
+// whatever lies behind it, so a square of ±SHADOW_REACH R about the ball
+// holds all of it at any surface's shape; 256 texels across it are R/85
+// each, finer than a map over the whole scene, and the surface's fragments
+// outside it skip the shadow lookups (most of the view).
+const KEY_INTENSITY = 2.2;
+const SHADOW_MAP_SIZE = 256;
+const SHADOW_REACH = 1.5;
 
 // Lit as the renders are: a key light that casts the ball's shadow on the surface, a soft sky fill.
 function addLights(scene) {
   const sky = new THREE.HemisphereLight(0xdfe8f2, 0x5a554f, 1.1);
-  const key = new THREE.DirectionalLight(0xffffff, 2.2);
+  const key = new THREE.DirectionalLight(0xffffff, KEY_INTENSITY);
   key.castShadow = true;
   key.shadow.mapSize.set(SHADOW_MAP_SIZE, SHADOW_MAP_SIZE);
   key.shadow.bias = -0.0005;
@@ -114,13 +122,38 @@ function addLights(scene) {
   return key;
 }
 
-// The key light's shadow covers the ball view's bounding sphere.
-function aimKeyLight(key, sphere) {
-  const r = sphere.radius;
-  key.target.position.copy(sphere.center);
-  key.position.copy(sphere.center).addScaledVector(KEY_DIRECTION, 2 * r);
-  Object.assign(key.shadow.camera, { left: -r, right: r, top: r, bottom: -r, near: 0.01 * r, far: 4 * r });
+// The key light looks at the ball from its direction, from outside the ball
+// view's bounding sphere (its depth range holds the whole scene); its shadow
+// camera spans the ball's shadow, ±SHADOW_REACH R about its centre.
+function aimKeyLight(key, sphere, ballCentre, ballRadius) {
+  const r = sphere.radius, w = SHADOW_REACH * ballRadius;
+  key.target.position.copy(ballCentre);
+  key.position.copy(ballCentre).addScaledVector(KEY_DIRECTION, 2 * r + sphere.center.distanceTo(ballCentre));
+  key.target.updateMatrixWorld();
+  Object.assign(key.shadow.camera, { left: -w, right: w, top: w, bottom: -w, near: 0.01 * r, far: 4 * r + 2 * sphere.center.distanceTo(ballCentre) });
   key.shadow.camera.updateProjectionMatrix();
+}
+
+// The renders shade with Blinn–Phong: each material the exporter wrote with
+// its Phong terms (extras.rollspin: specular, shininess) becomes three.js's
+// Blinn–Phong material with them, the same highlights as the renders and
+// much cheaper than PBR on a software renderer (SwiftShader).
+// three.js normalises Blinn–Phong, (s/2 + 1)/(4π) · cosⁿ, and the key light
+// is 2.2 bright; the renders' highlight is specular · cosⁿ under a unit
+// light: this scale, over (s/2 + 1), gives the renders' peak.
+const PHONG_SCALE = (4 * Math.PI) / KEY_INTENSITY;
+function shadeAsTheRenders(root) {
+  root.traverse((o) => {
+    const phong = o.isMesh ? o.material.userData?.rollspin : null;
+    if (!phong || !o.material.isMeshStandardMaterial) return;
+    const m = o.material;
+    o.material = new THREE.MeshPhongMaterial({
+      name: m.name, color: m.color, map: m.map, transparent: m.transparent, opacity: m.opacity, side: m.side,
+      depthWrite: m.depthWrite, shininess: phong.shininess,
+      specular: new THREE.Color().setScalar(phong.specular * PHONG_SCALE / (0.5 * phong.shininess + 1)),
+    });
+    m.dispose();
+  });
 }
 
 export class TwinScene {
@@ -144,37 +177,69 @@ export class TwinScene {
       if (!object) console.warn(`rollspin viewer: the GLB has no node "${name}"`);
     // The ball casts its shadow on the surface (the renders' shadow pass).
     if (this.nodes.ball) this.nodes.ball.traverse((o) => (o.castShadow = true));
-    const surface = node('surface');
-    if (surface) surface.traverse((o) => (o.receiveShadow = true));
+    // One surface and path per surface the clip shows: "surface", "surface.1", …
+    // (three.js drops the dot from node names: "surface1").
+    this.surfaces = [];
+    for (let k = 0; ; ++k) {
+      const name = (base) => THREE.PropertyBinding.sanitizeNodeName(k === 0 ? base : `${base}.${k}`);
+      const parts = [node(name('surface')), node(name('path'))].filter(Boolean);
+      if (parts.length === 0 && k > 0) break;
+      for (const part of parts) part.scale.set(1, 1, 1);  // the GLB's rest pose hides all but the first
+      this.surfaces.push({ parts, sphere: null });
+    }
+    for (const { parts } of this.surfaces) parts[0]?.traverse((o) => (o.receiveShadow = true));
     // The Bloch sphere and its arrows: the right view's layer only.
     if (this.nodes.bloch) this.nodes.bloch.traverse((o) => o.layers.set(BLOCH_LAYER));
     for (const name of ['spin', 'field'])
       if (this.nodes[name]) this.nodes[name].traverse((o) => o.layers.set(BLOCH_LAYER));
+    shadeAsTheRenders(this.root);
     this.frameViews();
   }
 
+  // The ball view of each surface frames that surface with its path (and
+  // anything else the GLB holds outside the Bloch sphere), as the renders
+  // frame each surface's stretch.
   frameViews() {
     this.root.updateMatrixWorld(true);
-    const ballBox = new THREE.Box3();
+    const others = new Set(this.surfaces.flatMap((x) => x.parts));
+    const commonBox = new THREE.Box3();
     this.root.traverse((o) => {
-      if (o.isMesh && !o.layers.isEnabled(BLOCH_LAYER)) ballBox.expandByObject(o);
+      if (o.isMesh && !o.layers.isEnabled(BLOCH_LAYER) && o !== this.nodes.ball && !others.has(o) && !others.has(o.parent))
+        commonBox.expandByObject(o);
     });
+    this.surfaces.forEach((surface, k) => {
+      const box = commonBox.clone();
+      for (const part of surface.parts) box.expandByObject(part);
+      if (k === 0 && this.nodes.ball) box.expandByObject(this.nodes.ball);  // where it rests at s = 0
+      surface.sphere = box.getBoundingSphere(new THREE.Sphere());
+    });
+    this.shownSurface = -1;
+    this.showSurface(0);
     const blochBox = new THREE.Box3();
     if (this.nodes.bloch) blochBox.setFromObject(this.nodes.bloch);
     else blochBox.setFromCenterAndSize(new THREE.Vector3(), new THREE.Vector3(2, 2, 2));
-    const ballSphere = ballBox.getBoundingSphere(new THREE.Sphere());
-    this.ballView.frame(ballSphere);
-    aimKeyLight(this.keyLight, ballSphere);
     this.blochView.frame(blochBox.getBoundingSphere(new THREE.Sphere()));
   }
 
-  // Poses the ball (centre, rotation) and the arrows at arc length s.
+  // Shows surface k alone and frames the ball view on it (a change of
+  // surface resets the ball view, as the renders cut to the new one's camera).
+  showSurface(k) {
+    if (k === this.shownSurface || !this.surfaces[k]) return;
+    this.surfaces.forEach((surface, i) => surface.parts.forEach((p) => (p.visible = i === k)));
+    this.shownSurface = k;
+    this.ballView.frame(this.surfaces[k].sphere);
+  }
+
+  // Poses the ball (centre, rotation) and the arrows at arc length s, on its surface.
   pose(timeline, s) {
+    this.showSurface(timeline.surface(s));
     const q = rotationOf(timeline.quaternion(s));
     const { ball, spin, field } = this.nodes;
     if (ball) {
       ball.position.set(...timeline.ballCentre(s));
       ball.quaternion.copy(q);
+      aimKeyLight(this.keyLight, this.surfaces[this.shownSurface]?.sphere ?? new THREE.Sphere(),
+                  ball.getWorldPosition(new THREE.Vector3()), timeline.ballRadius);
     }
     // The exporter's arrows (src/export/gltf_export.hpp): "spin" points at X(0) and
     // turns by q(s); "field" points along +z and turns onto B(s)/|B(s)|.

@@ -1,0 +1,29 @@
+// Thinning a regular grid mesh for export: of the (na + 1) × (nb + 1)
+// vertices of a parametric patch (render::parametricPatch's layout, row j,
+// column i at j (na + 1) + i), keep whole columns and rows, greedily as far
+// apart as the dropped ones allow: a dropped column i between kept i0 < i1
+// must lie within `tolerance` of the chord of every row,
+//   |P(i, j) − lerp(P(i0, j), P(i1, j), (i − i0) / (i1 − i0))| ≤ tolerance,
+// and rows likewise. Texture coordinates are linear in (i, j) on such a
+// patch, so the kept vertices carry the same checker cells; the surface
+// moves by at most about twice the tolerance (a column's and a row's sag).
+#pragma once
+
+#include "render/draw_list.hpp"
+
+namespace rollspin::gltf {
+
+// The grid's columns and rows (na, nb) when `mesh` is exactly a patch's
+// grid (vertex count and every index as parametricPatch writes them), else
+// {0, 0}.
+struct GridSize {
+  int na = 0, nb = 0;
+};
+[[nodiscard]] GridSize gridSizeOf(const render::MeshData& mesh);
+
+// The thinned grid (as a patch of its own), or `mesh` unchanged when it is
+// not a grid. Columns (along a) keep within `columnTolerance`, rows (along
+// b) within `rowTolerance` (0: only rows in line with their neighbours go).
+[[nodiscard]] render::MeshData thinGrid(const render::MeshData& mesh, double columnTolerance, double rowTolerance);
+
+}  // namespace rollspin::gltf

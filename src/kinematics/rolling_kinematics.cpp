@@ -7,14 +7,6 @@
 
 namespace rollspin::kinematics {
 
-namespace {
-Mat3 skew(const Vec3& w) {
-  Mat3 m;
-  m << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
-  return m;
-}
-}  // namespace
-
 void firstDerivativeWeights(std::span<const double> nodes, double x0, std::span<double> weights) {
   // Fornberg (1988), "Generation of finite difference formulas on arbitrarily
   // spaced grids", specialised to derivative orders 0 and 1. Row i of the

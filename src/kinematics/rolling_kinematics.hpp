@@ -20,6 +20,13 @@ namespace rollspin::kinematics {
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 
+// [w]×: the matrix of w × (·), so that [w]× v = w × v.
+inline Mat3 skew(const Vec3& w) {
+  Mat3 m;
+  m << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
+  return m;
+}
+
 struct KinematicSettings {
   long long steps = 20000;  // RK4 steps over the whole path, shared by length
   double fdStep = 0.0;      // finite-difference spacing; 0 → automatic, per segment

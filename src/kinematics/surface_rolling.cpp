@@ -1,5 +1,7 @@
 #include "kinematics/surface_rolling.hpp"
 
+#include "kinematics/rolling_kinematics.hpp"
+
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 #include <functional>
@@ -15,12 +17,6 @@ using Mat3 = Eigen::Matrix3d;
 using State = Eigen::Matrix<double, 13, 1>;
 
 Mat3 orientationOf(const State& y) { return Eigen::Map<const Mat3>(y.data() + 4); }
-
-Mat3 skew(const Vec3& w) {
-  Mat3 m;
-  m << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
-  return m;
-}
 
 // ω_σ = (1/R) n × (x_u u' + x_v v' + R dn/dσ), with dn/dσ from the
 // derivative of N = x_u × x_v (header).

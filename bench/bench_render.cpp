@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "app/render_jobs.hpp"
+#include "jobs/render_jobs.hpp"
 #include "bench_size.hpp"
 #include "draw/scene_drawer.hpp"
 #include "render/gl_context.hpp"
@@ -47,7 +47,7 @@ void BM_RenderFrame1080p(benchmark::State& state) {
   const model::RollingModel model = model::buildModel(spec);
   const motion::FrameOrientations frame = motion::solveFrame(spec, model, 0.3 * model.path->length());
   const draw::SceneDrawer drawer(spec, model, nullptr);
-  const auto context = render::createContext(app::contextRequest(spec));
+  const auto context = render::createContext(jobs::contextRequest(spec));
   // ROLLSPIN_SHADER_DIR: time edited shaders without rebuilding (development).
   const char* shaderDir = std::getenv("ROLLSPIN_SHADER_DIR");
   render::Renderer renderer(*context, render::ShaderLibrary{shaderDir != nullptr ? shaderDir : ""});
@@ -93,7 +93,7 @@ void BM_ClipFrames1080p(benchmark::State& state) {
   if (state.range(0) == 1) overrides.emplace_back("render.follow=true");
   if (const char* extra = std::getenv("ROLLSPIN_BENCH_SET")) overrides.emplace_back(extra);
   const scene::SceneSpec spec = scene::loadSceneFile(benchScenePath(), overrides);
-  const app::RollingModel model = model::buildModel(spec);
+  const jobs::RollingModel model = model::buildModel(spec);
   std::vector<motion::FrameOrientations> frames;
   // 24 frames from 0.3 L on, in turn (the cycle steps back at its end, so a
   // growing line's settled prefix shrinks there: more layer updates than a
@@ -103,7 +103,7 @@ void BM_ClipFrames1080p(benchmark::State& state) {
   for (int k = 0; k < count; ++k)
     frames.push_back(motion::solveFrame(spec, model, (start + double(k) / 300.0) * model.path->length()));
   const draw::SceneDrawer drawer(spec, model, nullptr);
-  const auto context = render::createContext(app::contextRequest(spec));
+  const auto context = render::createContext(jobs::contextRequest(spec));
   const char* shaderDir = std::getenv("ROLLSPIN_SHADER_DIR");
   render::Renderer renderer(*context, render::ShaderLibrary{shaderDir != nullptr ? shaderDir : ""});
   // One image with its history, as a video's pool keeps them (see ImageHistory).

@@ -375,6 +375,18 @@ class Scene:
                 + (f"; wrote a shorter clip {written}" if written else "; nothing written"))
         return clip
 
+    def export(self, path: Optional[PathLike] = None, *, metadata: bool = True) -> "Path":
+        """The scene as glTF 2.0 (``rollspin export``): a ``.glb``, or a ``.gltf`` beside its ``.bin``.
+
+        The same file as the CLI's, made by the same C++ job: the surface, the
+        path, the textured ball and its Bloch-sphere twin, the animation "roll"
+        in the clip's seconds, and (metadata=True) the resolved scene in the
+        ball's extras. path=None writes output/<scene>.glb. Returns the path written.
+        """
+        from pathlib import Path
+        target = "" if path is None else os.fspath(path)
+        return Path(_core.export_gltf(self._core, target, bool(metadata)))
+
     def viewer(self, height: int = 560) -> "Viewer":
         """The interactive web viewer (``rollspin render SCENE -o NAME.html``), inline in a notebook.
 

@@ -31,15 +31,16 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
-#include "app/animation_job.hpp"
-#include "app/figure_job.hpp"
-#include "app/huge_pages.hpp"
-#include "app/job_setup.hpp"
-#include "app/remembered_output.hpp"
-#include "app/render_jobs.hpp"
-#include "app/scene_print.hpp"
-#include "app/timeline_csv.hpp"
-#include "app/viewer_job.hpp"
+#include "jobs/animation_job.hpp"
+#include "jobs/export_job.hpp"
+#include "jobs/figure_job.hpp"
+#include "jobs/huge_pages.hpp"
+#include "jobs/job_setup.hpp"
+#include "jobs/remembered_output.hpp"
+#include "jobs/render_jobs.hpp"
+#include "jobs/scene_print.hpp"
+#include "jobs/timeline_csv.hpp"
+#include "jobs/viewer_job.hpp"
 #include "core/error.hpp"
 #include "core/temp_files.hpp"
 #include "media/image_io.hpp"
@@ -75,13 +76,13 @@ struct SceneSource {
 // applied, model) and its drawer, kept between stills so that a second still
 // costs a solve to s, a DrawList and a GL frame — not a fresh start.
 struct StillJob {
-  app::DrawJobRequest request;
-  app::DrawJob job;
+  jobs::DrawJobRequest request;
+  jobs::DrawJob job;
   std::unique_ptr<draw::SceneDrawer> drawer;
 };
 
 // Huge pages for the buffers of the first GL context, as the CLI gets them
-// (app/huge_pages.hpp) but without its restart: an interpreter is running
+// (jobs/huge_pages.hpp) but without its restart: an interpreter is running
 // already, and glibc reads GLIBC_TUNABLES only at a process's start.
 // llvmpipe allocates and zeroes its frame buffers and textures (about 75 MiB
 // for a 960×540 still, four times the frame's part at 1920×1080); with
@@ -107,7 +108,7 @@ std::size_t markHeapForHugePages(long long width, long long height) {
   if (marked) return *marked;
   if (width <= 0 || height <= 0) return 0;  // asked before the first context: nothing yet
   marked = 0;
-  if (!app::hugePagesTunables(app::readHugePagesFacts())) return 0;
+  if (!jobs::hugePagesTunables(jobs::readHugePagesFacts())) return 0;
   constexpr std::size_t kMiB = std::size_t{1} << 20;
   constexpr std::uintptr_t kHugePage = 2 * kMiB;
   constexpr std::size_t kMmapThresholdMax = 32 * kMiB;  // glibc's DEFAULT_MMAP_THRESHOLD_MAX on 64 bits
@@ -163,7 +164,7 @@ std::size_t markHeapForHugePages(long long width, long long height) {
 // own, so it is dropped before they run and made again after).
 struct SharedGl {
   std::mutex mutex;
-  std::unique_ptr<app::GlRenderer> gl;
+  std::unique_ptr<jobs::GlRenderer> gl;
   std::thread::id thread;
   std::string key;  // backend | device it was made for
 };
@@ -176,13 +177,13 @@ void dropSharedGl() {
   if (s.gl && s.thread != std::this_thread::get_id()) (void)s.gl.release();  // not current here: leak, never crash
   s.gl.reset();
 }
-app::GlRenderer& stillRenderer(const scene::SceneSpec& spec) {
+jobs::GlRenderer& stillRenderer(const scene::SceneSpec& spec) {
   SharedGl& s = sharedGl();
   const std::string key = spec.render.backend.value_or("") + "|" + spec.render.device.value_or("");
   if (!s.gl || s.thread != std::this_thread::get_id() || s.key != key) {
     dropSharedGl();
     (void)markHeapForHugePages(spec.render.width, spec.render.height);
-    s.gl = std::make_unique<app::GlRenderer>(spec, fs::path{});
+    s.gl = std::make_unique<jobs::GlRenderer>(spec, fs::path{});
     s.thread = std::this_thread::get_id();
     s.key = key;
   }
@@ -213,7 +214,7 @@ class Scene {
 
   [[nodiscard]] std::string toml() const {
     py::gil_scoped_release release;
-    return app::resolvedSceneText(source_.name, spec_);
+    return jobs::resolvedSceneText(source_.name, spec_);
   }
 
   // (quaternion (4,), method, steps, seconds, length, unitarity error, rotation matrix (3,3),
@@ -244,13 +245,13 @@ class Scene {
   [[nodiscard]] py::tuple timeline() const {
     const spin::SampleArcLengths samples = motion::timelineArcLengths(spec_, model_);
     const auto rows = static_cast<py::ssize_t>(samples.size());
-    constexpr auto columns = static_cast<py::ssize_t>(app::kTimelineColumns.size());
+    constexpr auto columns = static_cast<py::ssize_t>(jobs::kTimelineColumns.size());
     py::array_t<double> values({columns, rows});
-    const bool segmented = app::timelineHasSegments(model_);
+    const bool segmented = jobs::timelineHasSegments(model_);
     py::array_t<long long> segments(segmented ? rows : 0);
     double* out = values.mutable_data();
     long long* segmentOut = segments.mutable_data();
-    const bool surfaced = app::timelineHasSurfaces(model_);
+    const bool surfaced = jobs::timelineHasSurfaces(model_);
     py::array_t<long long> surfaces(surfaced ? rows : 0);
     long long* surfaceOut = surfaces.mutable_data();
     spin::SolveStats stats;
@@ -261,14 +262,14 @@ class Scene {
       // The step count the solve settles on (refined until its error
       // estimate is met), as `rollspin timeline` samples with.
       (void)motion::solveScene(spec_, model_, choice);
-      stats = app::sampleTimeline(model_, choice, samples, [&](std::size_t index, const app::TimelineRow& row) {
+      stats = jobs::sampleTimeline(model_, choice, samples, [&](std::size_t index, const jobs::TimelineRow& row) {
         for (py::ssize_t c = 0; c < columns; ++c) out[c * rows + static_cast<py::ssize_t>(index)] = row.values[c];
         if (segmented) segmentOut[index] = static_cast<long long>(row.segment);
         if (surfaced) surfaceOut[index] = static_cast<long long>(row.surface);
       }, source_.name);
     }
     py::list names;
-    for (const auto name : app::kTimelineColumns) names.append(std::string(name));
+    for (const auto name : jobs::kTimelineColumns) names.append(std::string(name));
     return py::make_tuple(names, values, segmented ? py::object(segments) : py::object(py::none()),
                           std::string(spin::methodName(choice.method)), stats.steps, stats.seconds,
                           surfaced ? py::object(surfaces) : py::object(py::none()));
@@ -304,10 +305,10 @@ class Scene {
     auto still = std::make_unique<StillJob>();
     still->request = {source_.name, source_.overrides, {}, width, height, transparent, {},
                       media::OutputUse::Still, 0, source_.text};
-    still->job = app::prepareDrawJob(still->request);
+    still->job = jobs::prepareDrawJob(still->request);
     // As `render --still`: a scene with [figure] keys keeps the figure's composition.
-    if (app::setsFigureKeys(still->job.spec)) app::fitTextToFigure(still->job.spec);
-    still->drawer = app::makeDrawer(still->job);
+    if (jobs::setsFigureKeys(still->job.spec)) jobs::fitTextToFigure(still->job.spec);
+    still->drawer = jobs::makeDrawer(still->job);
     return *stills_.emplace(key, std::move(still)).first->second;
   }
 
@@ -334,30 +335,30 @@ struct Image {
   // What the file remembers, as `render --still` records it: the scene
   // before a figure's text is fitted (loading it lays it out again).
   [[nodiscard]] media::OutputMetadata metadata(const scene::SceneSpec& unfitted, bool figure) const {
-    return app::outputMetadata(unfitted, still->job.model,
-                               {figure ? app::JobRecord::Kind::Figure : app::JobRecord::Kind::Still, unfitted.name, at,
-                                std::nullopt, app::setsFigureKeys(unfitted)});
+    return jobs::outputMetadata(unfitted, still->job.model,
+                               {figure ? jobs::JobRecord::Kind::Figure : jobs::JobRecord::Kind::Still, unfitted.name, at,
+                                std::nullopt, jobs::setsFigureKeys(unfitted)});
   }
 
   [[nodiscard]] fs::path save(const fs::path& path) const {
     py::gil_scoped_release release;
     const scene::SceneSpec& spec = still->job.spec;
-    const media::OutputFormat& format = app::chooseOutputFormat(spec, path, media::OutputUse::Still);
-    if (const auto figure = app::figureFormatOf(format)) {
-      app::checkFigureSpec(spec);
+    const media::OutputFormat& format = jobs::chooseOutputFormat(spec, path, media::OutputUse::Still);
+    if (const auto figure = jobs::figureFormatOf(format)) {
+      jobs::checkFigureSpec(spec);
       // Drawn again as `render --still` draws a figure: the text laid out
       // for the printed size, not the pixels'.
-      app::DrawJob job = app::prepareDrawJob(still->request);
+      jobs::DrawJob job = jobs::prepareDrawJob(still->request);
       const media::OutputMetadata remembered = metadata(job.spec, true);
-      app::fitTextToFigure(job.spec);
-      const render::DrawList figureList = app::makeDrawer(job, s)->draw(app::stillFrame(job, s));
+      jobs::fitTextToFigure(job.spec);
+      const render::DrawList figureList = jobs::makeDrawer(job, s)->draw(jobs::stillFrame(job, s));
       const std::lock_guard lock(sharedGl().mutex);
       dropSharedGl();  // the figure job makes its own context
-      app::writeFigureStill(job.spec, figureList, path, *figure, {}, &remembered);
+      jobs::writeFigureStill(job.spec, figureList, path, *figure, {}, &remembered);
       return path;
     }
-    media::SinkOptions options = app::sinkOptions(spec, path);
-    options.metadata = metadata(app::prepareDrawJob(still->request).spec, false);
+    media::SinkOptions options = jobs::sinkOptions(spec, path);
+    options.metadata = metadata(jobs::prepareDrawJob(still->request).spec, false);
     const auto sink = media::openSink(format, options);
     sink->write(pixels.view());
     return sink->finish();
@@ -389,13 +390,13 @@ std::shared_ptr<Image> renderStillImage(const std::shared_ptr<const Scene>& scen
   const std::lock_guard lock(sharedGl().mutex);  // one GL context, one thread at a time
   const StillJob& still = scene->stillJob(width, height, transparent);
   image->still = &still;
-  image->s = app::stillArcLength(still.job, at);
+  image->s = jobs::stillArcLength(still.job, at);
   image->at = at;
   // A scene with [figure] keys is framed for each still (as `render --still`):
   // its own drawer, not the one the stills of a size share.
-  const render::DrawList list = app::setsFigureKeys(still.job.spec)
-                                    ? app::makeDrawer(still.job, image->s)->draw(app::stillFrame(still.job, image->s))
-                                    : still.drawer->draw(app::stillFrame(still.job, image->s));
+  const render::DrawList list = jobs::setsFigureKeys(still.job.spec)
+                                    ? jobs::makeDrawer(still.job, image->s)->draw(jobs::stillFrame(still.job, image->s))
+                                    : still.drawer->draw(jobs::stillFrame(still.job, image->s));
   stillRenderer(still.job.spec).renderer.render(list, image->pixels);
   return image;
 }
@@ -406,7 +407,7 @@ py::tuple renderClip(const std::shared_ptr<const Scene>& scene, const fs::path& 
                      std::optional<std::string> quality, std::optional<long long> width,
                      std::optional<long long> height, bool transparent, bool quiet,
                      std::function<void(long long, long long)> onFrame) {
-  app::AnimationOptions o;
+  jobs::AnimationOptions o;
   o.scenePath = scene->source().name;
   o.sceneText = scene->source().text;
   o.overrides = scene->source().overrides;
@@ -418,27 +419,35 @@ py::tuple renderClip(const std::shared_ptr<const Scene>& scene, const fs::path& 
   o.transparent = transparent;
   o.quiet = quiet;
   o.onFrame = std::move(onFrame);
-  app::AnimationResult result;
+  jobs::AnimationResult result;
   {
     py::gil_scoped_release release;
     const std::lock_guard lock(sharedGl().mutex);
     dropSharedGl();  // the animation job makes its own context
     (void)markHeapForHugePages(width.value_or(scene->spec().render.width), height.value_or(scene->spec().render.height));
-    result = app::renderAnimation(o);
+    result = jobs::renderAnimation(o);
   }
   return py::make_tuple(result.written.string(), result.framesWritten, result.framesRequested, result.interruptedBy);
 }
 
-// The web viewer's page through the CLI's job (app/viewer_job.hpp): the same
+// The web viewer's page through the CLI's job (jobs/viewer_job.hpp): the same
 // GLB, timeline and page as `rollspin render SCENE -o NAME.html`.
 std::string viewerHtml(const std::shared_ptr<const Scene>& scene) {
   py::gil_scoped_release release;
-  app::DrawJobRequest request;
+  jobs::DrawJobRequest request;
   request.scenePath = scene->source().name;
   request.sceneText = scene->source().text;
   request.overrides = scene->source().overrides;
   request.use = media::OutputUse::Animation;
-  return app::viewerHtml(app::prepareDrawJob(request), scene->source().name);
+  return jobs::viewerHtml(jobs::prepareDrawJob(request), scene->source().name);
+}
+
+// glTF 2.0 through the CLI's job (jobs/export_job.hpp): the same file as
+// `rollspin export SCENE -o PATH`.
+std::string exportGltf(const std::shared_ptr<const Scene>& scene, const std::string& path, bool metadata) {
+  py::gil_scoped_release release;
+  if (!path.empty()) jobs::checkExportOutput(path);
+  return jobs::exportGltf({&scene->spec(), scene->source().name, path, metadata}).string();
 }
 
 // rollspin::Error → rollspin.SceneError / rollspin.RollspinError with the
@@ -473,9 +482,9 @@ PYBIND11_MODULE(_rollspin, m) {
       .def_static("loads", [](const std::string& text, const std::string& name, const std::vector<std::string>& overrides) {
         return Scene::open({name, text, overrides});
       }, py::arg("text"), py::arg("name") = "<string>", py::arg("overrides") = std::vector<std::string>{})
-      // An output that remembers its scene (app/remembered_output.hpp): a still, figure, clip or timeline.
+      // An output that remembers its scene (jobs/remembered_output.hpp): a still, figure, clip or timeline.
       .def_static("load_output", [](const std::string& path, const std::vector<std::string>& overrides) {
-        const app::RememberedOutput remembered = app::readRememberedOutput(path);
+        const jobs::RememberedOutput remembered = jobs::readRememberedOutput(path);
         return Scene::open({remembered.sourceName, remembered.metadata.scene, overrides, remembered.sceneName});
       }, py::arg("path"), py::arg("overrides") = std::vector<std::string>{})
       .def("with_overrides", &Scene::withOverrides, py::arg("overrides"))
@@ -526,6 +535,7 @@ PYBIND11_MODULE(_rollspin, m) {
         py::arg("quality") = std::nullopt, py::arg("width") = std::nullopt, py::arg("height") = std::nullopt,
         py::arg("transparent") = false, py::arg("quiet") = true, py::arg("on_frame") = py::none());
   m.def("viewer_html", &viewerHtml, py::arg("scene"));
+  m.def("export_gltf", &exportGltf, py::arg("scene"), py::arg("path"), py::arg("metadata") = true);
   m.def("drop_gl", [] {
           py::gil_scoped_release release;
           const std::lock_guard lock(sharedGl().mutex);

@@ -108,7 +108,7 @@ class SceneDrawer {
   [[nodiscard]] Rects rects() const;
   [[nodiscard]] float text() const;  // body text size in pixels
   [[nodiscard]] float leastText() const;  // the least text size in pixels (a figure's 6 pt; 0 in a clip)
-  [[nodiscard]] bool figure() const;  // text laid out for a printed size (app/figure_job)
+  [[nodiscard]] bool figure() const;  // text laid out for a printed size (jobs/figure_job)
   // The title as drawn: a figure leaves out one that needs over a fifth of its height.
   [[nodiscard]] std::string shownTitle(const std::string& title) const;
   [[nodiscard]] const std::string& captionAt(const StoryPlace& story) const;

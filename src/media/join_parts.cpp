@@ -48,7 +48,7 @@ struct Part {
   std::string name;  // as given on the command line, for messages
   std::string extension;
   ContainerTags tags;
-  std::map<std::string, std::string> metadata;  // every tag (the scene a part remembers, app/remembered_output.hpp)
+  std::map<std::string, std::string> metadata;  // every tag (the scene a part remembers, jobs/remembered_output.hpp)
   std::unique_ptr<AVCodecParameters, ParametersFreer> codec;
   std::unique_ptr<AVCodecParameters, ParametersFreer> subtitleCodec;  // null: no subtitle track
   std::vector<InBandCue> cues;  // the part's captions, in its own frames

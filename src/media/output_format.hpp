@@ -19,7 +19,7 @@ enum class OutputKind {
   Video,        // one file of frames
   FrameFolder,  // a folder of numbered images
   Figure,       // one image drawn as vectors (PDF/SVG): not an ImageView sink
-  Viewer,       // one interactive page of the whole path (HTML, app/viewer_job): not an ImageView sink
+  Viewer,       // one interactive page of the whole path (HTML, jobs/viewer_job): not an ImageView sink
 };
 enum class AlphaSupport { None, Binary, Full };
 // What a job produces: one image or a clip. Stills and figures serve the

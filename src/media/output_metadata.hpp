@@ -27,7 +27,7 @@ namespace rollspin::media {
 struct OutputMetadata {
   std::string title;        // a short name: render.title, else the scene's name
   std::string scene;        // the resolved scene (TOML)
-  std::string job;          // the job record (app/remembered_job.hpp)
+  std::string job;          // the job record (jobs/remembered_job.hpp)
   std::string description;  // one sentence: the alt text
   std::string software;     // "rollspin 0.1.0 (git …)"
 };

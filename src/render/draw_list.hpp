@@ -1,7 +1,7 @@
 // DrawList — everything one image shows, as plain data: meshes with model
 // matrices and materials, arrows, polylines and text labels, grouped into
 // views (rectangles of the image, each with its camera and light). The
-// renderer draws it and knows nothing of rolling or spinors; app/ fills it
+// renderer draws it and knows nothing of rolling or spinors; jobs/ fills it
 // (the way MuJoCo's mjv_updateScene fills an abstract scene). Colours are
 // linear RGB in [0, 1]; the renderer encodes sRGB on output.
 #pragma once
@@ -189,7 +189,7 @@ struct DrawList {
   std::vector<LabelItem> labels;
   // Texts the layout meant to draw but found no room for (a heading, a
   // fact, a caption, the title, an axis label), each once, whole (a line
-  // broken to fit as one): a figure names them (app/figure_job).
+  // broken to fit as one): a figure names them (jobs/figure_job).
   std::vector<std::string> leftOut;
 };
 

@@ -92,7 +92,7 @@ struct FigureLayout {
   std::vector<Segment> arrows;  // each arrow as its shaft and its head
   std::vector<Segment> paths;   // the polylines labels keep off (PolylineItem::labelsKeepOff)
   // What the layout left out (DrawList::leftOut), each with the least
-  // width and the largest body size at which it is kept (app/figure_job;
+  // width and the largest body size at which it is kept (jobs/figure_job;
   // nullopt: none tried keeps it, or not searched).
   struct LeftOut {
     std::string text;

@@ -318,7 +318,7 @@ void Reader::readSurface(const toml::table* surface, const std::string& prefix, 
     }
   }
   // Values the kind refuses (a ball that does not fit inside, a torus that
-  // is not a ring); along the path, app/ checks the curvature everywhere.
+  // is not a ring); along the path, jobs/ checks the curvature everywhere.
   if (kindRow.geometry->check)
     if (auto problem = kindRow.geometry->check(target.params, spec_.ball.radius)) {
       failAt(blamedKey(underTable(*problem, prefix)), problem->message);

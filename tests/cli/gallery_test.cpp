@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "draw/draw_facts.hpp"
-#include "app/render_jobs.hpp"
+#include "jobs/render_jobs.hpp"
 #include "media/image_io.hpp"
 #include "render/font_atlas.hpp"
 #include "support/cli_runner.hpp"

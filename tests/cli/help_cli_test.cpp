@@ -124,13 +124,13 @@ TEST(Help, RenderNamesEveryOutputFormat) {
   EXPECT_TRUE(has(r.out, "bundled scene")) << r.out;
 }
 
-// Every command the sources declare (`add_subcommand("name"` in src/app/),
+// Every command the sources declare (`add_subcommand("name"` in src/cli/),
 // read from the sources rather than from the CLI, so that a command left out
 // of --help (as `generate` once was) cannot hide from the test.
 std::set<std::string> declaredCommands() {
   std::set<std::string> names;
   const std::regex declared(R"re(add_subcommand\(\s*"([a-z-]+)")re");
-  for (const auto& entry : std::filesystem::directory_iterator(sourceDir() / "src" / "app")) {
+  for (const auto& entry : std::filesystem::directory_iterator(sourceDir() / "src" / "cli")) {
     if (entry.path().extension() != ".cpp") continue;
     const std::string text = rollspin::test::readFile(entry.path());
     for (std::sregex_iterator m(text.begin(), text.end(), declared), end; m != end; ++m) names.insert((*m)[1]);
@@ -140,7 +140,7 @@ std::set<std::string> declaredCommands() {
 
 TEST(Help, EveryDeclaredCommandIsInHelpAndTheManPage) {
   const auto commands = declaredCommands();
-  ASSERT_GE(commands.size(), 12u) << "the scan found too few commands: is src/app/ still where they are declared?";
+  ASSERT_GE(commands.size(), 12u) << "the scan found too few commands: is src/cli/ still where they are declared?";
   const auto man = runRollspin({"generate", "man"});
   ASSERT_EQ(man.exitCode, 0) << man.err;
   std::string helps;  // the top-level --help and each command's own --help (for nested ones)

@@ -89,7 +89,7 @@ TEST(Stages, VideoOpensTheEncoderOnce) {
 }
 
 // A render restarts itself once so that malloc can ask for huge pages
-// (app/huge_pages.hpp); other commands do not, a user's own setting wins, and
+// (jobs/huge_pages.hpp); other commands do not, a user's own setting wins, and
 // the pixels do not depend on it.
 TEST(Stages, RenderRestartsOnceForHugePages) {
 #if defined(__SANITIZE_ADDRESS__)

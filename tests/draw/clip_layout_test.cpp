@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "app/render_jobs.hpp"
+#include "jobs/render_jobs.hpp"
 #include "draw/clip_layout.hpp"
 #include "draw/draw_style.hpp"
 #include "draw/text_blocks.hpp"

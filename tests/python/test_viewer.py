@@ -4,6 +4,8 @@ import re
 
 import pytest
 
+import rollspin
+
 from conftest import SCENES, run_cli
 
 
@@ -39,3 +41,22 @@ def test_magic_shows_the_viewer(tmp_path, monkeypatch):
     shell.run_line_magic("load_ext", "rollspin")
     shell.run_cell_magic("rollspin", "--viewer -o page.html", (SCENES / "lollipop.toml").read_text())
     assert (tmp_path / "page.html").read_text(encoding="utf-8").startswith("<!DOCTYPE html>")
+
+
+def test_export_is_the_cli_glb(lollipop, tmp_path):
+    # One job behind both doors: the same bytes as `rollspin export`.
+    out = tmp_path / "cli.glb"
+    run_cli("export", SCENES / "lollipop.toml", "-o", out)
+    written = lollipop.export(tmp_path / "python.glb")
+    assert written == tmp_path / "python.glb"
+    assert written.read_bytes() == out.read_bytes()
+    assert not list(tmp_path.glob(".*.tmp"))
+    bare = lollipop.export(tmp_path / "bare.gltf", metadata=False)
+    assert b"resolved: every default filled in" not in bare.read_bytes() and (tmp_path / "bare.bin").exists()
+    assert b"resolved: every default filled in" in written.read_bytes()
+
+
+def test_export_refuses_an_unknown_extension(lollipop, tmp_path):
+    with pytest.raises(rollspin.RollspinError, match=r"\.glb"):
+        lollipop.export(tmp_path / "model.obj")
+    assert not list(tmp_path.iterdir())

@@ -28,13 +28,12 @@
 #include <tuple>
 #include <vector>
 
-#include <sys/mman.h>
 #include <unistd.h>
 
+#include "heap_huge_pages.hpp"
 #include "jobs/animation_job.hpp"
 #include "jobs/export_job.hpp"
 #include "jobs/figure_job.hpp"
-#include "jobs/huge_pages.hpp"
 #include "jobs/job_setup.hpp"
 #include "jobs/remembered_output.hpp"
 #include "jobs/render_jobs.hpp"
@@ -81,84 +80,6 @@ struct StillJob {
   std::unique_ptr<draw::SceneDrawer> drawer;
 };
 
-// Huge pages for the buffers of the first GL context, as the CLI gets them
-// (jobs/huge_pages.hpp) but without its restart: an interpreter is running
-// already, and glibc reads GLIBC_TUNABLES only at a process's start.
-// llvmpipe allocates and zeroes its frame buffers and textures (about 75 MiB
-// for a 960×540 still, four times the frame's part at 1920×1080); with
-// 4 KiB pages each page is a fault, and a fresh still through Python cost
-// 1.3× the CLI's (docs/python.md, "Tests and speed"). glibc's malloc
-// (mallopt(3)): freeing a block it had mmapped raises its mmap threshold to
-// that block's size (32 MiB at most); below the threshold blocks come from
-// the heap. So: raise the threshold, take the memory the first frame will
-// need from the heap in blocks under it, mark them for huge pages
-// (MADV_HUGEPAGE, what glibc.malloc.hugetlb=1 does to each new heap extent),
-// and free them behind a small block kept at their end, so that free() does
-// not give them back to the kernel (the heap's top would be trimmed);
-// llvmpipe's buffers are then carved from marked memory. Untouched, the
-// reserve is address space, not memory. Nothing is done where the CLI would
-// not restart either (a sanitizer's or valgrind's malloc, the kernel's mode
-// is not "madvise", the user named glibc.malloc.hugetlb). Once per process;
-// returns the bytes marked. The pixels are the same.
-std::size_t markHeapForHugePages(long long width, long long height) {
-#if defined(__GLIBC__)
-  static std::mutex mutex;
-  static std::optional<std::size_t> marked;
-  const std::lock_guard lock(mutex);
-  if (marked) return *marked;
-  if (width <= 0 || height <= 0) return 0;  // asked before the first context: nothing yet
-  marked = 0;
-  if (!jobs::hugePagesTunables(jobs::readHugePagesFacts())) return 0;
-  constexpr std::size_t kMiB = std::size_t{1} << 20;
-  constexpr std::uintptr_t kHugePage = 2 * kMiB;
-  constexpr std::size_t kMmapThresholdMax = 32 * kMiB;  // glibc's DEFAULT_MMAP_THRESHOLD_MAX on 64 bits
-  constexpr std::size_t kBlock = 30 * kMiB;
-  // The textures and the rest (32 MiB), and 128 bytes a pixel for the
-  // multisampled and single targets; at most 1 GiB of address space.
-  const auto frameBytes = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 128;
-  const std::size_t blocks = std::min<std::size_t>((32 * kMiB + frameBytes) / kBlock + 1, 1024 * kMiB / kBlock);
-  void* volatile probe = std::malloc(kMmapThresholdMax - 64 * 1024);
-  std::free(probe);
-  std::vector<std::uintptr_t> taken;
-  taken.reserve(blocks + 1);
-  for (std::size_t k = 0; k <= blocks; ++k) {  // the last one becomes the fence
-    void* block = std::malloc(kBlock);
-    if (block == nullptr) break;
-    taken.push_back(reinterpret_cast<std::uintptr_t>(block));
-  }
-  if (taken.size() < 2) {
-    for (const std::uintptr_t block : taken) std::free(reinterpret_cast<void*>(block));
-    return 0;
-  }
-  // The fence: the last block shrunk in place; what it gave up joins the top.
-  void* fence = std::realloc(reinterpret_cast<void*>(taken.back()), 64);
-  (void)fence;  // kept for the process's life (64 bytes)
-  taken.pop_back();
-  // Adjacent blocks (one chunk header apart) are marked as one range.
-  std::sort(taken.begin(), taken.end());
-  auto mark = [&](std::uintptr_t begin, std::uintptr_t end) {
-    begin = (begin + kHugePage - 1) & ~(kHugePage - 1);
-    end &= ~std::uintptr_t{4095};
-    if (end > begin && ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE) == 0)
-      *marked += end - begin;
-  };
-  std::uintptr_t runBegin = taken.front(), runEnd = taken.front() + kBlock;
-  for (std::size_t k = 1; k < taken.size(); ++k) {
-    if (taken[k] - runEnd > 64) {
-      mark(runBegin, runEnd);
-      runBegin = taken[k];
-    }
-    runEnd = taken[k] + kBlock;
-  }
-  mark(runBegin, runEnd);
-  for (const std::uintptr_t block : taken) std::free(reinterpret_cast<void*>(block));
-  return *marked;
-#else
-  (void)width, (void)height;
-  return 0;
-#endif
-}
-
 // The GL renderer every still shares: one context for the process (a context
 // is current on one thread, and the animation and figure jobs make their
 // own, so it is dropped before they run and made again after).
@@ -182,7 +103,7 @@ jobs::GlRenderer& stillRenderer(const scene::SceneSpec& spec) {
   const std::string key = spec.render.backend.value_or("") + "|" + spec.render.device.value_or("");
   if (!s.gl || s.thread != std::this_thread::get_id() || s.key != key) {
     dropSharedGl();
-    (void)markHeapForHugePages(spec.render.width, spec.render.height);
+    (void)python::markHeapForHugePages(spec.render.width, spec.render.height);
     s.gl = std::make_unique<jobs::GlRenderer>(spec, fs::path{});
     s.thread = std::this_thread::get_id();
     s.key = key;
@@ -424,7 +345,7 @@ py::tuple renderClip(const std::shared_ptr<const Scene>& scene, const fs::path& 
     py::gil_scoped_release release;
     const std::lock_guard lock(sharedGl().mutex);
     dropSharedGl();  // the animation job makes its own context
-    (void)markHeapForHugePages(width.value_or(scene->spec().render.width), height.value_or(scene->spec().render.height));
+    (void)python::markHeapForHugePages(width.value_or(scene->spec().render.width), height.value_or(scene->spec().render.height));
     result = jobs::renderAnimation(o);
   }
   return py::make_tuple(result.written.string(), result.framesWritten, result.framesRequested, result.interruptedBy);
@@ -542,6 +463,6 @@ PYBIND11_MODULE(_rollspin, m) {
           dropSharedGl();
         },
         "Destroy the shared still renderer's GL context (a fresh one is made by the next still).");
-  m.def("huge_pages_marked", [] { return markHeapForHugePages(0, 0); },
+  m.def("huge_pages_marked", [] { return python::markHeapForHugePages(0, 0); },
         "Bytes of malloc's heap marked for huge pages before the first GL context (0: not applicable here).");
 }

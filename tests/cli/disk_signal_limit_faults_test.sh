@@ -11,7 +11,7 @@
 #   report-folder-*   `report errors -o DIR` leaves no empty DIR it created
 #   set-*, memory-*   the out-of-range number, the list syntax, the way out
 #                     of ulimit -v (refused up front; many threads never crash)
-# Usage: issue45_defects_test.sh ROLLSPIN WORKDIR (run by ctest, label faults).
+# Usage: disk_signal_limit_faults_test.sh ROLLSPIN WORKDIR (run by ctest, label faults).
 set -uo pipefail
 source "$(dirname "$0")/fault_support.sh"
 fault_test_setup "$@"

@@ -329,17 +329,16 @@ struct Output {
   }
 };
 
-}  // namespace
+// A libav error, or a write error the output's I/O context holds, as rollspin's error.
+void checkJoinStep(const Output& out, const SourceLoc& where, int ret, const std::string& what) {
+  if (ret < 0) throw runtimeError(where, "{}: {}", what, av::errorText(ret));
+  if (out.format != nullptr && out.format->pb != nullptr && out.format->pb->error < 0)
+    throw runtimeError(where, "{}: {}", what, av::errorText(out.format->pb->error));
+}
 
-JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output, const std::function<bool()>& stop) {
-  auto stopped = [&] { return stop && stop(); };
-  const SourceLoc outLoc{"-o " + output.string()};
-  if (paths.empty()) throw badInput(outLoc, "no parts to join");
-  av_log_set_level(AV_LOG_ERROR);
-
-  // Pass 1: read every part's tags and timestamps and check them all before
-  // anything is written.
-  std::vector<Part> parts;
+// Pass 1: read every part's tags and timestamps. False when stopped.
+bool inspectAllParts(const std::vector<fs::path>& paths, const fs::path& output, const SourceLoc& outLoc,
+                     const std::function<bool()>& stop, std::vector<Part>& parts) {
   parts.reserve(paths.size());
   for (const fs::path& p : paths) {
     std::error_code ec;
@@ -350,8 +349,14 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
     if (!output.empty() && fs::equivalent(p, output, ec))
       throw badInput(outLoc, "is one of the parts; join writes a new file");
     parts.push_back(inspectPart(p));
-    if (stopped()) return {};
+    if (stop && stop()) return false;
   }
+  return true;
+}
+
+// The parts checked against the first (one render, whole parts) and sorted
+// into the clip's order, where they must tile it.
+std::vector<const Part*> partsInClipOrder(const std::vector<Part>& parts) {
   const Part& ref = parts.front();
   for (const Part& p : parts) {
     expectSameRender(p, ref);
@@ -365,46 +370,39 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
                                                     : a->tags.lastFrame < b->tags.lastFrame;
   });
   expectContiguous(sorted);
+  return sorted;
+}
 
-  Output out;
-  out.direct = av::isDevice(output);  // e.g. /dev/null: written in place, in the parts' container
+// Streams are copied, not re-encoded: the clip is in the parts' container.
+const AVOutputFormat* joinedContainer(const Output& out, const fs::path& output, const Part& ref,
+                                      const SourceLoc& outLoc) {
   if (!out.direct && asciiLowercase(output.extension().string()) != ref.extension)
     throw badInput(outLoc, "the parts are '{}' files, so the joined clip must be one too (streams are copied, not "
                    "re-encoded)", ref.extension);
   const AVOutputFormat* container = av_guess_format(nullptr, ("clip" + ref.extension).c_str(), nullptr);
   if (container == nullptr) throw badInput(outLoc, "libavformat has no muxer for '{}'", ref.extension);
+  return container;
+}
 
-  out.writePath = output;
-  if (!out.direct) out.writePath.replace_filename(fmt::format(".{}.{}.tmp", output.filename().string(), ::getpid()));
-  const std::string url = "file:" + out.writePath.string();
-  const SourceLoc where{output.string()};
-  auto check = [&](int ret, const std::string& what) {
-    if (ret < 0) throw runtimeError(where, "{}: {}", what, av::errorText(ret));
-    if (out.format != nullptr && out.format->pb != nullptr && out.format->pb->error < 0)
-      throw runtimeError(where, "{}: {}", what, av::errorText(out.format->pb->error));
-  };
-  check(avformat_alloc_output_context2(&out.format, container, nullptr, url.c_str()), "creating the muxer");
+// The muxer and its video stream, with the parts' codec parameters.
+AVStream* createJoinMuxer(Output& out, const AVOutputFormat* container, const std::string& url, const Part& ref,
+                          const SourceLoc& where) {
+  checkJoinStep(out, where, avformat_alloc_output_context2(&out.format, container, nullptr, url.c_str()),
+                "creating the muxer");
   AVStream* stream = avformat_new_stream(out.format, nullptr);
   if (stream == nullptr) throw std::bad_alloc();
-  check(avcodec_parameters_copy(stream->codecpar, ref.codec.get()), "configuring the stream");
+  checkJoinStep(out, where, avcodec_parameters_copy(stream->codecpar, ref.codec.get()), "configuring the stream");
   stream->codecpar->codec_tag = 0;  // let the muxer choose the tag for its container
   stream->time_base = ref.timeBase;
   stream->avg_frame_rate = ref.frameRate;
-  const AVRational frameDuration = av_inv_q(ref.frameRate);
-  CaptionCopier captions(out.format, ref, clipCaptions(sorted), frameDuration, where);
+  return stream;
+}
 
-  // The joined clip is tagged as the whole render: frames 0 … total − 1.
-  ContainerTags whole = ref.tags;
-  whole.firstFrame = 0;
-  whole.lastFrame = whole.clipFrames - 1;
-  AVDictionary* options = nullptr;
-  if (av_opt_find(out.format->priv_data, "movflags", nullptr, 0, 0) != nullptr)
-    av_dict_set(&options, "movflags", out.direct ? "+write_colr" : "+faststart+write_colr", 0);
-  applyContainerTags(out.format, whole, &options);
-  // What the parts remember (their scene, description, job) goes on; the
-  // job then holds the whole clip, so its "frames:" line (a part's) goes.
+// What the parts remember (their scene, description, job) goes on; the
+// job then holds the whole clip, so its "frames:" line (a part's) goes.
+void copyRememberedMetadata(AVFormatContext* format, const Part& ref) {
   for (const auto& [key, value] : ref.metadata) {
-    if (key.rfind("rollspin_", 0) == 0 && av_dict_get(out.format->metadata, key.c_str(), nullptr, 0) != nullptr) continue;
+    if (key.rfind("rollspin_", 0) == 0 && av_dict_get(format->metadata, key.c_str(), nullptr, 0) != nullptr) continue;
     std::string kept;
     for (std::size_t at = 0; at < value.size();) {
       const std::size_t end = std::min(value.find('\n', at), value.size());
@@ -412,8 +410,18 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
       at = end + 1;
     }
     if (key != "encoder" && key != "major_brand" && key != "minor_version" && key != "compatible_brands")
-      av_dict_set(&out.format->metadata, key.c_str(), kept.c_str(), 0);
+      av_dict_set(&format->metadata, key.c_str(), kept.c_str(), 0);
   }
+}
+
+// The whole render's tags and the parts' metadata, then the file and its header.
+void writeJoinedHeader(Output& out, const ContainerTags& whole, const Part& ref, const std::string& url,
+                       const SourceLoc& where) {
+  AVDictionary* options = nullptr;
+  if (av_opt_find(out.format->priv_data, "movflags", nullptr, 0, 0) != nullptr)
+    av_dict_set(&options, "movflags", out.direct ? "+write_colr" : "+faststart+write_colr", 0);
+  applyContainerTags(out.format, whole, &options);
+  copyRememberedMetadata(out.format, ref);
   if (const int ret = avio_open(&out.format->pb, url.c_str(), AVIO_FLAG_WRITE); ret < 0) {
     av_dict_free(&options);
     out.format->pb = nullptr;
@@ -422,11 +430,16 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
   out.opened = true;
   const int headerRet = avformat_write_header(out.format, &options);
   av_dict_free(&options);
-  check(headerRet, "writing the header");
+  checkJoinStep(out, where, headerRet, "writing the header");
+}
 
-  // Pass 2: copy the packets, each moved to its frame's index in the clip.
-  // Decoding timestamps move with their packet and keep the encoder's
-  // reorder delay, so they run on across the joins too (checked).
+// Pass 2: copy the packets, each moved to its frame's index in the clip.
+// Decoding timestamps move with their packet and keep the encoder's
+// reorder delay, so they run on across the joins too (checked). False when
+// stopped.
+bool copyPartPackets(const std::vector<const Part*>& sorted, const Part& ref, Output& out, const AVStream* stream,
+                     CaptionCopier& captions, const SourceLoc& where, const std::function<bool()>& stop) {
+  const AVRational frameDuration = av_inv_q(ref.frameRate);
   std::int64_t lastDts = std::numeric_limits<std::int64_t>::min();
   const Packet packet(av_packet_alloc());
   if (!packet) throw std::bad_alloc();
@@ -434,9 +447,9 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
     const Input input = openPart(part->path, part->loc());
     int ret = 0;
     while ((ret = av_read_frame(input.get(), packet.get())) >= 0) {
-      if (stopped()) {
+      if (stop && stop()) {
         av_packet_unref(packet.get());
-        return {};  // ~Output removes the temporary file
+        return false;
       }
       if (packet->stream_index != 0) {  // the part's captions: written from `captions`
         av_packet_unref(packet.get());
@@ -463,21 +476,58 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
       packet->pos = -1;
       av_packet_rescale_ts(packet.get(), ref.timeBase, stream->time_base);
       ret = av_interleaved_write_frame(out.format, packet.get());  // takes the packet's reference
-      check(ret, "writing " + out.writePath.string());
+      checkJoinStep(out, where, ret, "writing " + out.writePath.string());
     }
     if (ret != AVERROR_EOF) throw runtimeError(part->loc(), "cannot read this part again: {}", av::errorText(ret));
   }
-  captions.writeUpTo(std::numeric_limits<std::int64_t>::max());
-  check(av_write_trailer(out.format), "finishing " + out.writePath.string());
+  return true;
+}
+
+// The trailer, then the temporary file renamed into place.
+void finishJoinedFile(Output& out, const fs::path& output, const SourceLoc& where) {
+  checkJoinStep(out, where, av_write_trailer(out.format), "finishing " + out.writePath.string());
   avio_flush(out.format->pb);
-  check(0, "finishing " + out.writePath.string());
-  check(avio_closep(&out.format->pb), "closing " + out.writePath.string());
+  checkJoinStep(out, where, 0, "finishing " + out.writePath.string());
+  checkJoinStep(out, where, avio_closep(&out.format->pb), "closing " + out.writePath.string());
   if (!out.direct) {
     std::error_code ec;
     fs::rename(out.writePath, output, ec);
     if (ec) throw runtimeError(where, "cannot rename the joined video into place: {}", ec.message());
   }
   out.committed = true;
+}
+
+}  // namespace
+
+JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output, const std::function<bool()>& stop) {
+  const SourceLoc outLoc{"-o " + output.string()};
+  if (paths.empty()) throw badInput(outLoc, "no parts to join");
+  av_log_set_level(AV_LOG_ERROR);
+
+  // Every part is read and checked before anything is written.
+  std::vector<Part> parts;
+  if (!inspectAllParts(paths, output, outLoc, stop, parts)) return {};
+  const Part& ref = parts.front();
+  const std::vector<const Part*> sorted = partsInClipOrder(parts);
+
+  Output out;
+  out.direct = av::isDevice(output);  // e.g. /dev/null: written in place, in the parts' container
+  const AVOutputFormat* container = joinedContainer(out, output, ref, outLoc);
+  out.writePath = output;
+  if (!out.direct) out.writePath.replace_filename(fmt::format(".{}.{}.tmp", output.filename().string(), ::getpid()));
+  const std::string url = "file:" + out.writePath.string();
+  const SourceLoc where{output.string()};
+  const AVStream* stream = createJoinMuxer(out, container, url, ref, where);
+  CaptionCopier captions(out.format, ref, clipCaptions(sorted), av_inv_q(ref.frameRate), where);
+
+  // The joined clip is tagged as the whole render: frames 0 … total − 1.
+  ContainerTags whole = ref.tags;
+  whole.firstFrame = 0;
+  whole.lastFrame = whole.clipFrames - 1;
+  writeJoinedHeader(out, whole, ref, url, where);
+  if (!copyPartPackets(sorted, ref, out, stream, captions, where, stop)) return {};  // ~Output removes the temporary file
+  captions.writeUpTo(std::numeric_limits<std::int64_t>::max());
+  finishJoinedFile(out, output, where);
 
   JoinSummary summary;
   summary.written = output;
@@ -501,3 +551,4 @@ std::map<std::string, std::string> readContainerMetadata(const fs::path& path, c
 }
 
 }  // namespace rollspin::media
+

@@ -228,6 +228,138 @@ struct VideoWriter::Impl {
     check(avio_closep(&format->pb), "closing " + writePath.string());
     release();
   }
+
+  // ---- the constructor's setup steps, in order ----
+
+  const AVCodec* findVideoEncoder(const SourceLoc& where) {
+    const AVCodec* encoder = avcodec_find_encoder_by_name(settings.encoder.c_str());
+    if (encoder == nullptr)
+      throw runtimeError(where,
+                         "this FFmpeg build has no '{}' encoder (Debian: libavcodec59 has libx264, libvpx-vp9, "
+                         "prores_aw and gif)",
+                         settings.encoder);
+    pixelFormat = av_get_pix_fmt(settings.pixelFormat.c_str());
+    if (pixelFormat == AV_PIX_FMT_NONE) throw runtimeError(where, "libavutil has no pixel format '{}'", settings.pixelFormat);
+    return encoder;
+  }
+
+  void chooseWritePath() {
+    direct = av::isDevice(finalPath);
+    writePath = finalPath;
+    if (!direct) {
+      // A temporary left by a run that died hard goes; ours goes on SIGINT/SIGTERM.
+      removeStaleTemporaries(finalPath);
+      writePath = temporaryPathFor(finalPath);
+      registerTemporary(writePath, finalPath);
+    }
+  }
+
+  void allocateOutput(const SourceLoc& where, const AVCodec* encoder, const std::string& url) {
+    if (avformat_alloc_output_context2(&format, nullptr, settings.container.c_str(), url.c_str()) < 0 ||
+        format == nullptr)
+      throw runtimeError(where, "libavformat has no '{}' muxer", settings.container);
+    codec = avcodec_alloc_context3(encoder);
+    frame = av_frame_alloc();
+    packet = av_packet_alloc();
+    if (codec == nullptr || frame == nullptr || packet == nullptr) throw runtimeError(where, "out of memory");
+    stream = avformat_new_stream(format, nullptr);
+    if (stream == nullptr) throw runtimeError(where, "out of memory");
+  }
+
+  // 8-bit 4:2:0 goes through rollspin's converter (yuv420), the rest through swscale.
+  [[nodiscard]] bool convertsOwnYuv420() const {
+    return settings.yuvBt709 && (pixelFormat == AV_PIX_FMT_YUV420P || pixelFormat == AV_PIX_FMT_YUVA420P);
+  }
+
+  // The encoder's size, rate and colour tags, the caller's options; then the
+  // video stream's parameters from the opened encoder.
+  void openVideoEncoder(const AVCodec* encoder) {
+    AVCodecContext* c = codec;
+    c->width = settings.width;
+    c->height = settings.height;
+    // One tick per frame: frame k's pts is k, at exactly k·den/num seconds.
+    c->time_base = AVRational{settings.fpsDen, settings.fpsNum};
+    c->framerate = AVRational{settings.fpsNum, settings.fpsDen};
+    c->sample_aspect_ratio = AVRational{1, 1};
+    c->pix_fmt = pixelFormat;
+    // rollspin's converter's chroma is the mean of each 2×2 block: sited at
+    // the block's centre, not H.264's default left.
+    if (convertsOwnYuv420()) c->chroma_sample_location = AVCHROMA_LOC_CENTER;
+    if (settings.yuvBt709) {
+      // BT.709 everywhere: the matrix of the conversion, and the tags.
+      c->color_range = AVCOL_RANGE_MPEG;
+      c->color_primaries = AVCOL_PRI_BT709;
+      c->color_trc = AVCOL_TRC_BT709;
+      c->colorspace = AVCOL_SPC_BT709;
+    }
+    if ((format->oformat->flags & AVFMT_GLOBALHEADER) != 0) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+    for (const auto& [key, value] : settings.codecOptions)
+      if (const int ret = av_opt_set(c, key.c_str(), value.c_str(), AV_OPT_SEARCH_CHILDREN); ret < 0)
+        fail(fmt::format("{} has no option {} = {}", settings.encoder, key, value), ret);
+    if (const int ret = avcodec_open2(c, encoder, nullptr); ret < 0)
+      fail(fmt::format("{} refuses {}x{} at {}/{} fps ({})", settings.encoder, settings.width, settings.height,
+                       settings.fpsNum, settings.fpsDen, settings.describe),
+           ret);
+    check(avcodec_parameters_from_context(stream->codecpar, c), "configuring the stream");
+    stream->time_base = c->time_base;
+    stream->avg_frame_rate = c->framerate;
+    for (const auto& [key, value] : settings.streamMetadata) av_dict_set(&stream->metadata, key.c_str(), value.c_str(), 0);
+  }
+
+  void allocateFrame() {
+    const AVCodecContext* c = codec;
+    frame->format = c->pix_fmt;
+    frame->width = c->width;
+    frame->height = c->height;
+    // Some encoders (ProRes) write the frame's tags, not the context's.
+    frame->color_range = c->color_range;
+    frame->color_primaries = c->color_primaries;
+    frame->color_trc = c->color_trc;
+    frame->colorspace = c->colorspace;
+    frame->chroma_location = c->chroma_sample_location;
+    check(av_frame_get_buffer(frame, 0), "allocating a frame");
+  }
+
+  void setUpConversion(const SourceLoc& where) {
+    if (convertsOwnYuv420()) {
+      // A quarter of the cores (at most 8): a fixed camera converts a few
+      // percent of a frame, a moving one all of it; on 2 cores, one thread.
+      const int cores = static_cast<int>(std::thread::hardware_concurrency());
+      yuv420.emplace(codec->width, codec->height, conversionThreads(std::clamp(cores / 4, 1, 8)));
+    } else if (pixelFormat != AV_PIX_FMT_PAL8) {  // a palette comes from a filter graph (gif_writer), not swscale
+      sws = makeConverter(codec->width, codec->height, pixelFormat);
+      if (sws == nullptr)
+        throw runtimeError(where, "libswscale cannot convert RGBA to {} at this size", settings.pixelFormat);
+      source = av_frame_alloc();
+      if (source == nullptr) throw runtimeError(where, "out of memory allocating a frame");
+      const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
+      // Source: full-range RGB (its table is unused); destination: limited range.
+      if (settings.yuvBt709) sws_setColorspaceDetails(sws, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
+    }
+  }
+
+  void openFileAndWriteHeader(const std::string& url) {
+    if (const int ret = avio_open(&format->pb, url.c_str(), AVIO_FLAG_WRITE); ret < 0) {
+      format->pb = nullptr;
+      fail(direct ? "cannot open for writing" : "cannot create " + writePath.string(), ret);
+    }
+    fileOpen = true;
+    // Each packet goes to the file as it is muxed: the file grows with the
+    // render (visible progress) and the muxer buffers at most one packet.
+    format->flush_packets = 1;
+    AVDictionary* options = nullptr;
+    for (const auto& [key, value] : settings.muxerOptions) {
+      // faststart rewrites the file at the end: only for a regular file.
+      const std::string v = direct && key == "movflags" ? "+write_colr" : value;
+      av_dict_set(&options, key.c_str(), v.c_str(), 0);
+    }
+    if (!settings.containerMetadata.empty()) allowCustomContainerKeys(format, &options);
+    const int ret = avformat_write_header(format, &options);
+    av_dict_free(&options);
+    check(ret, "writing the " + settings.container + " header");
+    headerWritten = true;
+    checkIo("writing the " + settings.container + " header");
+  }
 };
 
 VideoWriter::VideoWriter(fs::path finalPath, const VideoSettings& settings) : impl_(std::make_unique<Impl>()) {
@@ -243,121 +375,20 @@ VideoWriter::VideoWriter(fs::path finalPath, const VideoSettings& settings) : im
     throw badInput(where, "expected frames per second > 0, got {}/{}", settings.fpsNum, settings.fpsDen);
   av_log_set_level(AV_LOG_ERROR);  // the encoders' statistics are not for lecturers
 
-  const AVCodec* encoder = avcodec_find_encoder_by_name(settings.encoder.c_str());
-  if (encoder == nullptr)
-    throw runtimeError(where,
-                       "this FFmpeg build has no '{}' encoder (Debian: libavcodec59 has libx264, libvpx-vp9, "
-                       "prores_aw and gif)",
-                       settings.encoder);
-  m.pixelFormat = av_get_pix_fmt(settings.pixelFormat.c_str());
-  if (m.pixelFormat == AV_PIX_FMT_NONE) throw runtimeError(where, "libavutil has no pixel format '{}'", settings.pixelFormat);
-
-  m.direct = av::isDevice(m.finalPath);
-  m.writePath = m.finalPath;
-  if (!m.direct) {
-    // A temporary left by a run that died hard goes; ours goes on SIGINT/SIGTERM.
-    removeStaleTemporaries(m.finalPath);
-    m.writePath = temporaryPathFor(m.finalPath);
-    registerTemporary(m.writePath, m.finalPath);
-  }
-
+  const AVCodec* encoder = m.findVideoEncoder(where);
+  m.chooseWritePath();
   // The container is named, so the temporary name's extension does not matter.
   // "file:" keeps a colon in a file name from reading as a protocol.
   const std::string url = "file:" + m.writePath.string();
-  if (avformat_alloc_output_context2(&m.format, nullptr, settings.container.c_str(), url.c_str()) < 0 ||
-      m.format == nullptr)
-    throw runtimeError(where, "libavformat has no '{}' muxer", settings.container);
-  m.codec = avcodec_alloc_context3(encoder);
-  m.frame = av_frame_alloc();
-  m.packet = av_packet_alloc();
-  if (m.codec == nullptr || m.frame == nullptr || m.packet == nullptr) throw runtimeError(where, "out of memory");
-  m.stream = avformat_new_stream(m.format, nullptr);
-  if (m.stream == nullptr) throw runtimeError(where, "out of memory");
-
-  AVCodecContext* c = m.codec;
-  c->width = settings.width;
-  c->height = settings.height;
-  // One tick per frame: frame k's pts is k, at exactly k·den/num seconds.
-  c->time_base = AVRational{settings.fpsDen, settings.fpsNum};
-  c->framerate = AVRational{settings.fpsNum, settings.fpsDen};
-  c->sample_aspect_ratio = AVRational{1, 1};
-  c->pix_fmt = m.pixelFormat;
-  // 8-bit 4:2:0 goes through rollspin's converter, whose chroma is the mean
-  // of each 2×2 block: sited at the block's centre, not H.264's default left.
-  const bool ownConverter =
-      settings.yuvBt709 && (m.pixelFormat == AV_PIX_FMT_YUV420P || m.pixelFormat == AV_PIX_FMT_YUVA420P);
-  if (ownConverter) c->chroma_sample_location = AVCHROMA_LOC_CENTER;
-  if (settings.yuvBt709) {
-    // BT.709 everywhere: the matrix of the conversion below, and the tags.
-    c->color_range = AVCOL_RANGE_MPEG;
-    c->color_primaries = AVCOL_PRI_BT709;
-    c->color_trc = AVCOL_TRC_BT709;
-    c->colorspace = AVCOL_SPC_BT709;
-  }
-  if ((m.format->oformat->flags & AVFMT_GLOBALHEADER) != 0) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
-  for (const auto& [key, value] : settings.codecOptions)
-    if (const int ret = av_opt_set(c, key.c_str(), value.c_str(), AV_OPT_SEARCH_CHILDREN); ret < 0)
-      m.fail(fmt::format("{} has no option {} = {}", settings.encoder, key, value), ret);
-  if (const int ret = avcodec_open2(c, encoder, nullptr); ret < 0)
-    m.fail(fmt::format("{} refuses {}x{} at {}/{} fps ({})", settings.encoder, settings.width, settings.height,
-                       settings.fpsNum, settings.fpsDen, settings.describe),
-           ret);
-  m.check(avcodec_parameters_from_context(m.stream->codecpar, c), "configuring the stream");
-  m.stream->time_base = c->time_base;
-  m.stream->avg_frame_rate = c->framerate;
-  for (const auto& [key, value] : settings.streamMetadata) av_dict_set(&m.stream->metadata, key.c_str(), value.c_str(), 0);
+  m.allocateOutput(where, encoder, url);
+  m.openVideoEncoder(encoder);
   m.openSubtitles(where);
   // File-level metadata: the one place it is set (see VideoSettings).
   for (const auto& [key, value] : settings.containerMetadata)
     av_dict_set(&m.format->metadata, key.c_str(), value.c_str(), 0);
-
-  m.frame->format = c->pix_fmt;
-  m.frame->width = c->width;
-  m.frame->height = c->height;
-  // Some encoders (ProRes) write the frame's tags, not the context's.
-  m.frame->color_range = c->color_range;
-  m.frame->color_primaries = c->color_primaries;
-  m.frame->color_trc = c->color_trc;
-  m.frame->colorspace = c->colorspace;
-  m.frame->chroma_location = c->chroma_sample_location;
-  m.check(av_frame_get_buffer(m.frame, 0), "allocating a frame");
-
-  if (ownConverter) {
-    // A quarter of the cores (at most 8): a fixed camera converts a few
-    // percent of a frame, a moving one all of it; on 2 cores, one thread.
-    const int cores = static_cast<int>(std::thread::hardware_concurrency());
-    m.yuv420.emplace(c->width, c->height, conversionThreads(std::clamp(cores / 4, 1, 8)));
-  } else if (m.pixelFormat != AV_PIX_FMT_PAL8) {  // a palette comes from a filter graph (gif_writer), not swscale
-    m.sws = makeConverter(c->width, c->height, m.pixelFormat);
-    if (m.sws == nullptr)
-      throw runtimeError(where, "libswscale cannot convert RGBA to {} at this size", settings.pixelFormat);
-    m.source = av_frame_alloc();
-    if (m.source == nullptr) throw runtimeError(where, "out of memory allocating a frame");
-    const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
-    // Source: full-range RGB (its table is unused); destination: limited range.
-    if (settings.yuvBt709) sws_setColorspaceDetails(m.sws, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
-  }
-
-  if (const int ret = avio_open(&m.format->pb, url.c_str(), AVIO_FLAG_WRITE); ret < 0) {
-    m.format->pb = nullptr;
-    m.fail(m.direct ? "cannot open for writing" : "cannot create " + m.writePath.string(), ret);
-  }
-  m.fileOpen = true;
-  // Each packet goes to the file as it is muxed: the file grows with the
-  // render (visible progress) and the muxer buffers at most one packet.
-  m.format->flush_packets = 1;
-  AVDictionary* options = nullptr;
-  for (const auto& [key, value] : settings.muxerOptions) {
-    // faststart rewrites the file at the end: only for a regular file.
-    const std::string v = m.direct && key == "movflags" ? "+write_colr" : value;
-    av_dict_set(&options, key.c_str(), v.c_str(), 0);
-  }
-  if (!settings.containerMetadata.empty()) allowCustomContainerKeys(m.format, &options);
-  const int ret = avformat_write_header(m.format, &options);
-  av_dict_free(&options);
-  m.check(ret, "writing the " + settings.container + " header");
-  m.headerWritten = true;
-  m.checkIo("writing the " + settings.container + " header");
+  m.allocateFrame();
+  m.setUpConversion(where);
+  m.openFileAndWriteHeader(url);
 }
 
 VideoWriter::~VideoWriter() = default;
@@ -459,3 +490,4 @@ std::string VideoWriter::verboseSummary() const {
 }
 
 }  // namespace rollspin::media
+

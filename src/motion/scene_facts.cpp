@@ -96,16 +96,24 @@ Vec3 incrementRotation(const Su2& q0) {
 
 SceneFacts::SceneFacts(const scene::SceneSpec& spec, const RollingModel& model, std::vector<Fact> facts)
     : model_(model), facts_(std::move(facts)) {
-  const geometry::ContactPath& path = *model.path;
-  const double R = model.ballRadius, L = path.length();
+  const double budget = spin::integratedStepBudget(*model.path, model.ballRadius);
+  unwrapOnGrid(spec, budget);
+  if (shows(Fact::Delta)) delta = measureDelta(spec);
+  if (shows(Fact::Turns)) turns = measureTurns(spec);
+  if (shows(Fact::Marks)) marks = measureMarks(spec);
+  if (shows(Fact::PhaseSplit)) phaseSplit = measurePhaseSplit(spec, budget);
+}
+
+void SceneFacts::unwrapOnGrid(const scene::SceneSpec& spec, double budget) {
+  const geometry::ContactPath& path = *model_.path;
+  const double L = path.length();
   const spin::Mat3 f0t = startFrameTransposed(path);
 
   // The unwrapping grid: each step turns the ball and the frame by ≤ 0.05 rad.
-  const double budget = spin::integratedStepBudget(path, R);
   const auto n = static_cast<std::size_t>(std::clamp(std::ceil(budget / 0.05), 2048.0, 400000.0));
   gridS_.resize(n + 1);
   for (std::size_t i = 0; i <= n; ++i) gridS_[i] = i == n ? L : L * double(i) / double(n);
-  gridU_ = solveAt(spec, model, gridS_);
+  gridU_ = solveAt(spec, model_, gridS_);
   gridW_.resize(gridS_.size());
   labSum_.assign(gridS_.size(), Vec3::Zero());
   frameSum_ = rollingSum_ = labSum_;
@@ -122,103 +130,113 @@ SceneFacts::SceneFacts(const scene::SceneSpec& spec, const RollingModel& model, 
   // The revolution axis: the way the frame turns over the path (a circle or a
   // parallel turns about one fixed axis).
   if (frameSum_.back().norm() > 1e-9) revolutionAxis_ = frameSum_.back().normalized();
+}
 
+DeltaFact SceneFacts::measureDelta(const scene::SceneSpec& spec) const {
+  const double R = model_.ballRadius, turnsOfPath = model_.path->turns();
   const bool onSphere = spec.surface.kind == scene::SurfaceKind::Sphere;
-  const double turnsOfPath = path.turns();
-  if (shows(Fact::Delta)) {
-    DeltaFact d;
-    d.measured = rollingSum_.back().norm();
-    d.onSphere = onSphere;
-    d.closedForm = turnsOfPath * (onSphere ? closed_form::sphereParallelDelta(spec.surface.number("radius"),
-                                                                              spec.path.colatitudeDeg * kPi / 180.0, R)
-                                           : closed_form::planeCircleDelta(planeCircleRadius(model), R));
-    d.labAngle = spin::rotationAngleAxis(gridU_.back()).angle;
-    d.closedFormMod = std::abs(wrapAngle(d.closedForm));
-    d.wholeCircuits = std::abs(turnsOfPath - std::round(turnsOfPath)) < 1e-9;
-    delta = d;
-  }
-  if (shows(Fact::Turns)) {
-    turns = TurnsFact{labSum_.back().dot(revolutionAxis_), frameSum_.back().dot(revolutionAxis_)};
-    // The paper's penny: one turn inside a sphere of radius 3R.
-    const scene::SurfaceSpec& surface = spec.surface;
-    turns->paperPenny = surface.params.has("side") && surface.params.text("side") == "inside" &&
-                        surface.params.has("radius") && std::abs(surface.number("radius") - 3.0 * R) <= 1e-9 * R &&
-                        std::abs(turnsOfPath - 1.0) < 1e-12;
-  }
-  if (shows(Fact::Marks)) {
-    MarksFact m;
-    m.circleRadius = planeCircleRadius(model);
-    m.beta = closed_form::tennisBallBeta(m.circleRadius, R);
-    const double step = m.beta * m.circleRadius;
-    for (int k = 0; k * step <= L * (1.0 + 1e-12); ++k) m.s.push_back(std::min(L, k * step));
-    const std::vector<Su2> u = solveAt(spec, model, m.s);
-    const Vec3 n0 = path.at(0.0).normal;
-    Su2 previous;
-    for (std::size_t k = 0; k < m.s.size(); ++k) {
-      const Su2 v = rollingFrame(m.s[k], u[k]);
-      if (k > 0) {
-        const spin::AngleAxis turn = spin::rotationAngleAxis(v * previous.conjugate());
-        m.turn.push_back(turn.angle);
-        m.axisFromNormal.push_back(std::acos(std::min(1.0, std::abs(turn.axis.dot(n0)))));
-      }
-      previous = v;
-      m.rolling.push_back(v);
-    }
-    marks = m;
-  }
-  if (shows(Fact::PhaseSplit)) {
-    PhaseSplitFact p;
-    // The cyclic spin: an eigenvector of U(L), the one nearer B(0).
-    const Su2 uL = gridU_.back();
-    const spin::AngleAxis aa = spin::rotationAngleAxis(uL);
-    const double psi = spin::spinorAngle(uL);
-    const Vec3 b0 = spin::fieldB(path.at(0.0), R).normalized();
-    const bool along = aa.axis.dot(b0) >= 0.0;
-    const Vec3 x0 = along ? aa.axis : Vec3(-aa.axis);
-    // U(L) = cos(ψ/2) − i sin(ψ/2) a·σ: e^{∓iψ/2} on the spin along ±a.
-    p.total = wrapAngle(along ? -0.5 * psi : 0.5 * psi);
-    p.spinFromField = std::acos(std::clamp(x0.dot(b0), -1.0, 1.0));
+  DeltaFact d;
+  d.measured = rollingSum_.back().norm();
+  d.onSphere = onSphere;
+  d.closedForm = turnsOfPath * (onSphere ? closed_form::sphereParallelDelta(spec.surface.number("radius"),
+                                                                            spec.path.colatitudeDeg * kPi / 180.0, R)
+                                         : closed_form::planeCircleDelta(planeCircleRadius(model_), R));
+  d.labAngle = spin::rotationAngleAxis(gridU_.back()).angle;
+  d.closedFormMod = std::abs(wrapAngle(d.closedForm));
+  d.wholeCircuits = std::abs(turnsOfPath - std::round(turnsOfPath)) < 1e-9;
+  return d;
+}
 
-    // Quadrature on a grid with ≤ 0.5 rad of turning per panel.
-    std::vector<double> nodes, weights;
-    gaussNodes(L, std::max(64, int(std::ceil(budget / 0.5))), nodes, weights);
-    const std::vector<Su2> u = solveAt(spec, model, nodes);
-    Vec3 meanX = Vec3::Zero(), meanB = Vec3::Zero();
-    std::vector<Vec3> xs(nodes.size()), bs(nodes.size()), dxs(nodes.size()), dbs(nodes.size());
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-      const geometry::DarbouxSample f = path.at(nodes[i]);
-      const Vec3 b = spin::fieldB(f, R), omega = -b;
-      xs[i] = u[i].rotate(x0);
-      dxs[i] = omega.cross(xs[i]);  // dX/ds = ω × X
-      bs[i] = b.normalized();
-      // Constant curvatures: B is fixed in the Darboux frame, which turns at
-      // d = τ_g t − κ_n u + κ_g n, so dB̂/ds = d × B̂.
-      const Vec3 d = f.geodesicTorsion * f.tangent - f.normalCurvature * f.tangentNormal + f.geodesicCurvature * f.normal;
-      dbs[i] = d.cross(bs[i]);
-      p.dynamic += 0.5 * weights[i] * b.dot(xs[i]);
-      p.adiabaticDynamic += 0.5 * weights[i] * b.norm();
-      meanX += weights[i] * xs[i];
-      meanB += weights[i] * bs[i];
+TurnsFact SceneFacts::measureTurns(const scene::SceneSpec& spec) const {
+  const double R = model_.ballRadius;
+  TurnsFact t{labSum_.back().dot(revolutionAxis_), frameSum_.back().dot(revolutionAxis_)};
+  // The paper's penny: one turn inside a sphere of radius 3R.
+  const scene::SurfaceSpec& surface = spec.surface;
+  t.paperPenny = surface.params.has("side") && surface.params.text("side") == "inside" &&
+                 surface.params.has("radius") && std::abs(surface.number("radius") - 3.0 * R) <= 1e-9 * R &&
+                 std::abs(model_.path->turns() - 1.0) < 1e-12;
+  return t;
+}
+
+MarksFact SceneFacts::measureMarks(const scene::SceneSpec& spec) const {
+  const geometry::ContactPath& path = *model_.path;
+  const double L = path.length();
+  MarksFact m;
+  m.circleRadius = planeCircleRadius(model_);
+  m.beta = closed_form::tennisBallBeta(m.circleRadius, model_.ballRadius);
+  const double step = m.beta * m.circleRadius;
+  for (int k = 0; k * step <= L * (1.0 + 1e-12); ++k) m.s.push_back(std::min(L, k * step));
+  const std::vector<Su2> u = solveAt(spec, model_, m.s);
+  const Vec3 n0 = path.at(0.0).normal;
+  Su2 previous;
+  for (std::size_t k = 0; k < m.s.size(); ++k) {
+    const Su2 v = rollingFrame(m.s[k], u[k]);
+    if (k > 0) {
+      const spin::AngleAxis turn = spin::rotationAngleAxis(v * previous.conjugate());
+      m.turn.push_back(turn.angle);
+      m.axisFromNormal.push_back(std::acos(std::min(1.0, std::abs(turn.axis.dot(n0)))));
     }
-    // Both loops are cones about the frame's turning axis (X(s) = W(s) X₀:
-    // V(s) turns about X₀'s own axis): measure each about that axis, on the
-    // loop's side (either side for a great circle, where the mean vanishes).
-    auto coneAxis = [&](const Vec3& mean) { return mean.dot(revolutionAxis_) < 0.0 ? Vec3(-revolutionAxis_) : revolutionAxis_; };
-    const Vec3 cx = coneAxis(meanX), cb = coneAxis(meanB);
-    double omegaX = 0.0, omegaB = 0.0;
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-      omegaX += weights[i] * solidAngleTerm(xs[i], dxs[i], cx);
-      omegaB += weights[i] * solidAngleTerm(bs[i], dbs[i], cb);
-    }
-    p.geometric = -0.5 * omegaX;
-    p.berryGeometric = -0.5 * omegaB;
-    p.residual = wrapAngle(p.total - p.dynamic - p.geometric);
-    p.coneAngle = std::acos(std::clamp(bs.front().dot(cb), -1.0, 1.0));
-    p.berryClosedForm = -0.5 * std::copysign(2.0 * kPi * std::round(turnsOfPath) * (1.0 - std::cos(p.coneAngle)), omegaB);
-    const int loop = 240;
-    for (int k = 0; k <= loop; ++k) p.fieldLoop.push_back(spin::fieldB(path.at(L * k / loop), R).normalized());
-    phaseSplit = p;
+    previous = v;
+    m.rolling.push_back(v);
   }
+  return m;
+}
+
+PhaseSplitFact SceneFacts::measurePhaseSplit(const scene::SceneSpec& spec, double budget) const {
+  const geometry::ContactPath& path = *model_.path;
+  const double R = model_.ballRadius, L = path.length();
+  PhaseSplitFact p;
+  // The cyclic spin: an eigenvector of U(L), the one nearer B(0).
+  const Su2 uL = gridU_.back();
+  const spin::AngleAxis aa = spin::rotationAngleAxis(uL);
+  const double psi = spin::spinorAngle(uL);
+  const Vec3 b0 = spin::fieldB(path.at(0.0), R).normalized();
+  const bool along = aa.axis.dot(b0) >= 0.0;
+  const Vec3 x0 = along ? aa.axis : Vec3(-aa.axis);
+  // U(L) = cos(ψ/2) − i sin(ψ/2) a·σ: e^{∓iψ/2} on the spin along ±a.
+  p.total = wrapAngle(along ? -0.5 * psi : 0.5 * psi);
+  p.spinFromField = std::acos(std::clamp(x0.dot(b0), -1.0, 1.0));
+
+  // Quadrature on a grid with ≤ 0.5 rad of turning per panel.
+  std::vector<double> nodes, weights;
+  gaussNodes(L, std::max(64, int(std::ceil(budget / 0.5))), nodes, weights);
+  const std::vector<Su2> u = solveAt(spec, model_, nodes);
+  Vec3 meanX = Vec3::Zero(), meanB = Vec3::Zero();
+  std::vector<Vec3> xs(nodes.size()), bs(nodes.size()), dxs(nodes.size()), dbs(nodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const geometry::DarbouxSample f = path.at(nodes[i]);
+    const Vec3 b = spin::fieldB(f, R), omega = -b;
+    xs[i] = u[i].rotate(x0);
+    dxs[i] = omega.cross(xs[i]);  // dX/ds = ω × X
+    bs[i] = b.normalized();
+    // Constant curvatures: B is fixed in the Darboux frame, which turns at
+    // d = τ_g t − κ_n u + κ_g n, so dB̂/ds = d × B̂.
+    const Vec3 d = f.geodesicTorsion * f.tangent - f.normalCurvature * f.tangentNormal + f.geodesicCurvature * f.normal;
+    dbs[i] = d.cross(bs[i]);
+    p.dynamic += 0.5 * weights[i] * b.dot(xs[i]);
+    p.adiabaticDynamic += 0.5 * weights[i] * b.norm();
+    meanX += weights[i] * xs[i];
+    meanB += weights[i] * bs[i];
+  }
+  // Both loops are cones about the frame's turning axis (X(s) = W(s) X₀:
+  // V(s) turns about X₀'s own axis): measure each about that axis, on the
+  // loop's side (either side for a great circle, where the mean vanishes).
+  auto coneAxis = [&](const Vec3& mean) { return mean.dot(revolutionAxis_) < 0.0 ? Vec3(-revolutionAxis_) : revolutionAxis_; };
+  const Vec3 cx = coneAxis(meanX), cb = coneAxis(meanB);
+  double omegaX = 0.0, omegaB = 0.0;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    omegaX += weights[i] * solidAngleTerm(xs[i], dxs[i], cx);
+    omegaB += weights[i] * solidAngleTerm(bs[i], dbs[i], cb);
+  }
+  p.geometric = -0.5 * omegaX;
+  p.berryGeometric = -0.5 * omegaB;
+  p.residual = wrapAngle(p.total - p.dynamic - p.geometric);
+  p.coneAngle = std::acos(std::clamp(bs.front().dot(cb), -1.0, 1.0));
+  p.berryClosedForm =
+      -0.5 * std::copysign(2.0 * kPi * std::round(model_.path->turns()) * (1.0 - std::cos(p.coneAngle)), omegaB);
+  const int loop = 240;
+  for (int k = 0; k <= loop; ++k) p.fieldLoop.push_back(spin::fieldB(path.at(L * k / loop), R).normalized());
+  return p;
 }
 
 bool SceneFacts::shows(Fact f) const { return std::find(facts_.begin(), facts_.end(), f) != facts_.end(); }
@@ -270,3 +288,4 @@ std::shared_ptr<const SceneFacts> makeSceneFacts(const scene::SceneSpec& spec, c
 }
 
 }  // namespace rollspin::motion
+

@@ -96,6 +96,13 @@ class SceneFacts {
 
  private:
   [[nodiscard]] spin::Su2 frameSpinorNear(double s, const spin::Su2& near) const;
+  // The constructor's stages: the unwrapping grid (budget = ∫ step budget
+  // over the path), then each fact measured on it.
+  void unwrapOnGrid(const scene::SceneSpec& spec, double budget);
+  [[nodiscard]] DeltaFact measureDelta(const scene::SceneSpec& spec) const;
+  [[nodiscard]] TurnsFact measureTurns(const scene::SceneSpec& spec) const;
+  [[nodiscard]] MarksFact measureMarks(const scene::SceneSpec& spec) const;
+  [[nodiscard]] PhaseSplitFact measurePhaseSplit(const scene::SceneSpec& spec, double budget) const;
 
   const RollingModel& model_;
   std::vector<scene::Fact> facts_;

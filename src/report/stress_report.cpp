@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "geometry/analytic_paths.hpp"
@@ -92,26 +93,25 @@ double stressBound(const StressCase& c) {
 double stayProbability(const spin::Su2& u) { return 0.5 * (1.0 + u.rotate(Vec3::UnitZ()).z()); }
 double landauZener(double alpha, double R) { return std::exp(-pi / (2.0 * alpha * R * R)); }
 
-ReportOutcome stressReport(const ReportOptions& options) {
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
-  auto say = [&](const std::string& line) {
-    if (options.progress) options.progress(line);
-  };
-  std::filesystem::create_directories(options.outDir);
-  ReportOutcome outcome;
+namespace {
+// Every method on every case: the CSV, the per-cell table and the
+// case × method verdict matrix.
+struct StressCells {
+  std::string csv, detail, matrix;
+  int passes = 0, cells = 0;
+};
 
-  std::string csv =
-      "case,method,steps_requested,tolerance,status,verdict,error,unitarity_error,steps,seconds,bound,roundoff_floor\n";
-  std::string detail =
+StressCells stressMethodCells(const std::function<void(const std::string&)>& say) {
+  StressCells t;
+  t.csv = "case,method,steps_requested,tolerance,status,verdict,error,unitarity_error,steps,seconds,bound,roundoff_floor\n";
+  t.detail =
       "| case | method | settings | error | unitarity drift | steps | time | bound | verdict |\n"
       "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
-  std::string matrix = "| case | why | h·max(\\|B\\|) (fixed grid) |";
-  for (spin::Method m : spin::allMethods()) matrix += fmt::format(" {} |", spin::methodName(m));
-  matrix += "\n| --- | --- | --- |";
-  for (std::size_t k = 0; k < spin::allMethods().size(); ++k) matrix += " --- |";
-  matrix += "\n";
-  int passes = 0, cells = 0;
+  t.matrix = "| case | why | h·max(\\|B\\|) (fixed grid) |";
+  for (spin::Method m : spin::allMethods()) t.matrix += fmt::format(" {} |", spin::methodName(m));
+  t.matrix += "\n| --- | --- | --- |";
+  for (std::size_t k = 0; k < spin::allMethods().size(); ++k) t.matrix += " --- |";
+  t.matrix += "\n";
 
   for (const StressCase& c : stressCases()) {
     say(fmt::format("stress: {}", c.name));
@@ -120,7 +120,7 @@ ReportOutcome stressReport(const ReportOptions& options) {
     const double bound = stressBound(c);
     const double hB = c.path->length() / static_cast<double>(c.fixedSteps) *
                       spin::angularVelocity(c.path->at(0.0), c.ballRadius).norm();
-    matrix += fmt::format("| {} | {} | {} |", mdCell(c.name), mdCell(c.what), fmtNum(hB));
+    t.matrix += fmt::format("| {} | {} | {} |", mdCell(c.name), mdCell(c.what), fmtNum(hB));
     for (spin::Method m : spin::allMethods()) {
       const bool adaptive = spin::isAdaptive(m);
       const long long steps = adaptive ? 0 : c.fixedSteps;
@@ -134,31 +134,39 @@ ReportOutcome stressReport(const ReportOptions& options) {
       else if (!r.ok()) verdict = failureWord(r.status);
       else verdict = r.timelineError <= bound ? "pass" : "FAIL";
       if (verdict != "n/a") {
-        ++cells;
-        passes += verdict == "pass";
+        ++t.cells;
+        t.passes += verdict == "pass";
       }
       const std::string settings = m == spin::Method::Exact ? "closed form"
                                    : adaptive               ? fmt::format("tol {:.0e}", tol)
                                                             : fmt::format("{} steps", steps);
       const std::string err = r.ok() ? fmtNum(r.timelineError) : "—";
-      csv += fmt::format("{},{},{},{},{},{},{},{:.2e},{},{},{:.2e},{:.2e}\n", c.name, spin::methodName(m), steps,
-                         tol > 0 ? fmt::format("{:.0e}", tol) : "", r.ok() ? "ok" : failureWord(r.status), verdict,
-                         r.ok() ? fmt::format("{:.3e}", r.timelineError) : "", r.unitarity, r.steps,
-                         r.ok() ? fmt::format("{:.4e}", r.seconds) : "", bound, ref.floor);
-      detail += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", mdCell(c.name), spin::methodName(m), settings,
-                            err, fmtNum(r.unitarity), r.steps, r.ok() ? fmtSeconds(r.seconds) : "—", fmtNum(bound),
-                            verdict == "pass" ? verdict : "**" + verdict + "**");
-      matrix += verdict == "pass" ? fmt::format(" pass {} |", err)
-                : verdict == "n/a" ? " n/a |"
-                                   : fmt::format(" **{}** {} |", verdict, r.ok() ? err : "");
+      t.csv += fmt::format("{},{},{},{},{},{},{},{:.2e},{},{},{:.2e},{:.2e}\n", c.name, spin::methodName(m), steps,
+                           tol > 0 ? fmt::format("{:.0e}", tol) : "", r.ok() ? "ok" : failureWord(r.status), verdict,
+                           r.ok() ? fmt::format("{:.3e}", r.timelineError) : "", r.unitarity, r.steps,
+                           r.ok() ? fmt::format("{:.4e}", r.seconds) : "", bound, ref.floor);
+      t.detail += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", mdCell(c.name), spin::methodName(m),
+                              settings, err, fmtNum(r.unitarity), r.steps, r.ok() ? fmtSeconds(r.seconds) : "—",
+                              fmtNum(bound), verdict == "pass" ? verdict : "**" + verdict + "**");
+      t.matrix += verdict == "pass" ? fmt::format(" pass {} |", err)
+                  : verdict == "n/a" ? " n/a |"
+                                     : fmt::format(" **{}** {} |", verdict, r.ok() ? err : "");
     }
-    matrix += "\n";
+    t.matrix += "\n";
   }
+  return t;
+}
 
-  // ---- Landau–Zener on the clothoid ----
-  say("stress: Landau–Zener sweeps");
+// One section of the stress report: its Markdown and its CSV.
+struct StressSection {
+  std::string md, csv;
+};
+
+// ---- Landau–Zener on the clothoid ----
+StressSection landauZenerSweep() {
   const double alpha = 1.0, R = 1.0, pLz = landauZener(alpha, R);
-  std::string lz = fmt::format(
+  StressSection lz;
+  lz.md = fmt::format(
       "Sweep κ_g = α s for s ∈ [−S, S] on a plane (α = {}, R = {}): in the Darboux frame the field is (0, 1/R, −κ_g), "
       "a constant coupling and a linear detuning. P = (1 + n·R(U)n)/2 (the body point that started on top is on top "
       "again) against P_LZ = exp(−π/(2αR²)) = {:.6f}. frame6a at tolerance 1e-11; the last column is the finite-S "
@@ -166,32 +174,35 @@ ReportOutcome stressReport(const ReportOptions& options) {
       "slow approach expected of a finite sweep — not an error of the solver (magnus6 on a fine grid agrees to the "
       "digits shown).\n\n| S | P (solver) | P_LZ | P − P_LZ | S·(P − P_LZ) | magnus6 check |\n| --- | --- | --- | --- | --- | --- |\n",
       alpha, R, pLz);
-  std::string lzCsv = "S,P,P_LZ,difference,S_times_difference,magnus6_check\n";
+  lz.csv = "S,P,P_LZ,difference,S_times_difference,magnus6_check\n";
   for (double S : {5.0, 10.0, 20.0, 40.0, 80.0}) {
     const auto path = geometry::PlaneClothoidPath::symmetricSweep(alpha, 2.0 * S);
     const spin::SolveStats st = spin::Propagator(*path, R, spin::Method::Frame6a, 0, 1e-11).solveFinal();
     const long long fine = std::llround(40.0 * spin::integratedStepBudget(*path, R));
     const spin::SolveStats check = spin::Propagator(*path, R, spin::Method::Magnus6, fine).solveFinal();
     if (st.status != spin::SolveStatus::Ok || check.status != spin::SolveStatus::Ok) {
-      lz += fmt::format("| {} | {} | | | | |\n", S, failureWord(st.status));
+      lz.md += fmt::format("| {} | {} | | | | |\n", S, failureWord(st.status));
       continue;
     }
     const double p = stayProbability(st.final), d = p - pLz;
     const double agree = std::abs(stayProbability(check.final) - p);
-    lz += fmt::format("| {} | {:.8f} | {:.8f} | {:+.3e} | {:+.3f} | {:.1e} |\n", S, p, pLz, d, S * d, agree);
-    lzCsv += fmt::format("{},{:.12f},{:.12f},{:.6e},{:.6e},{:.2e}\n", S, p, pLz, d, S * d, agree);
+    lz.md += fmt::format("| {} | {:.8f} | {:.8f} | {:+.3e} | {:+.3f} | {:.1e} |\n", S, p, pLz, d, S * d, agree);
+    lz.csv += fmt::format("{},{:.12f},{:.12f},{:.6e},{:.6e},{:.2e}\n", S, p, pLz, d, S * d, agree);
   }
+  return lz;
+}
 
-  // ---- adiabatic split ----
-  say("stress: adiabatic decomposition");
-  std::string ad =
+// ---- adiabatic split: dynamic phase minus geometric phase ----
+StressSection adiabaticSplit() {
+  StressSection ad;
+  ad.md =
       "On a parallel at θ = 60° (r = 1), the rotation ψ of U(L) about ω̂(0) (closed form, mod 4π) against the "
       "dynamic phase ∫|B| ds minus the geometric phase S, the solid angle enclosed by the loop of B̂ = −ω̂ seen from "
       "+z (computed from 4096 samples of the field, no formula). The residual is the non-adiabatic part: it "
       "vanishes like R/r, inside as outside (the paper's inside formula disagrees; see `report paper`).\n\n"
       "| side | R/r | ψ (exact) | ∫\\|B\\| ds | S | ψ − (∫\\|B\\| ds − S) mod 4π | residual · r/R |\n"
       "| --- | --- | --- | --- | --- | --- | --- |\n";
-  std::string adCsv = "side,R_over_r,psi,dynamic,solid_angle,residual\n";
+  ad.csv = "side,R_over_r,psi,dynamic,solid_angle,residual\n";
   for (bool outside : {true, false}) {
     for (double ratio : {1e-1, 1e-2, 1e-3, 1e-4}) {
       const auto path = parallel(1.0, outside, pi / 3);
@@ -202,12 +213,30 @@ ReportOutcome stressReport(const ReportOptions& options) {
       const double dyn = spin::integratedFieldStrength(*path, Rb);
       const double solid = solidAngle(*path, Rb, 4096);
       const double residual = wrap4pi(psi - (dyn - solid));
-      ad += fmt::format("| {} | {:.0e} | {:.6f} | {:.6f} | {:.6f} | {:+.3e} | {:+.3f} |\n", outside ? "outside" : "inside",
-                        ratio, psi, dyn, solid, residual, residual / ratio);
-      adCsv += fmt::format("{},{:.0e},{:.12f},{:.12f},{:.12f},{:.6e}\n", outside ? "outside" : "inside", ratio, psi,
-                           dyn, solid, residual);
+      ad.md += fmt::format("| {} | {:.0e} | {:.6f} | {:.6f} | {:.6f} | {:+.3e} | {:+.3f} |\n",
+                           outside ? "outside" : "inside", ratio, psi, dyn, solid, residual, residual / ratio);
+      ad.csv += fmt::format("{},{:.0e},{:.12f},{:.12f},{:.12f},{:.6e}\n", outside ? "outside" : "inside", ratio, psi,
+                            dyn, solid, residual);
     }
   }
+  return ad;
+}
+}  // namespace
+
+ReportOutcome stressReport(const ReportOptions& options) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  auto say = [&](const std::string& line) {
+    if (options.progress) options.progress(line);
+  };
+  std::filesystem::create_directories(options.outDir);
+  ReportOutcome outcome;
+
+  const StressCells cells = stressMethodCells(say);
+  say("stress: Landau–Zener sweeps");
+  const StressSection lz = landauZenerSweep();
+  say("stress: adiabatic decomposition");
+  const StressSection ad = adiabaticSplit();
 
   const double total = std::chrono::duration<double>(Clock::now() - start).count();
   std::string md = "# rollspin report stress\n\n";
@@ -217,17 +246,18 @@ ReportOutcome stressReport(const ReportOptions& options) {
       "unitarity drift = max |‖U‖ − 1| along the march. A cell passes when error ≤ bound = max(1e-8, 10 ε∫|B|ds). "
       "NaN or infinity stops the march and shows as **diverged**; rk45 stops after 5e6 attempted steps (**step "
       "limit**). {} of {} cells pass. Data: [stress.csv](stress.csv).\n\n",
-      passes, cells);
-  md += "## Verdicts (error when finite)\n\n" + matrix + "\n## Every cell\n\n" + detail;
-  md += "\n## Landau–Zener on the Cornu spiral\n\n" + lz + "\n## Adiabatic decomposition\n\n" + ad;
+      cells.passes, cells.cells);
+  md += "## Verdicts (error when finite)\n\n" + cells.matrix + "\n## Every cell\n\n" + cells.detail;
+  md += "\n## Landau–Zener on the Cornu spiral\n\n" + lz.md + "\n## Adiabatic decomposition\n\n" + ad.md;
   md += fmt::format("\nReport run time: {:.1f} s.\n", total);
-  writeFile(options.outDir / "stress.csv", csv);
-  writeFile(options.outDir / "stress_landau_zener.csv", lzCsv);
-  writeFile(options.outDir / "stress_adiabatic.csv", adCsv);
+  writeFile(options.outDir / "stress.csv", cells.csv);
+  writeFile(options.outDir / "stress_landau_zener.csv", lz.csv);
+  writeFile(options.outDir / "stress_adiabatic.csv", ad.csv);
   writeFile(options.outDir / "stress.md", md);
   outcome.written = {options.outDir / "stress.csv", options.outDir / "stress_landau_zener.csv",
                      options.outDir / "stress_adiabatic.csv", options.outDir / "stress.md"};
-  outcome.headline = fmt::format("stress: {} of {} cells pass; report stress took {:.1f} s", passes, cells, total);
+  outcome.headline =
+      fmt::format("stress: {} of {} cells pass; report stress took {:.1f} s", cells.passes, cells.cells, total);
   return outcome;
 }
 

@@ -120,6 +120,82 @@ struct ArcLength {
   [[nodiscard]] double value() const { return hi + lo; }
 };
 
+// One attempted step: the controller's verdict and its factor for the next h.
+struct StepAttempt {
+  Su2 candidate;  // U at the step's end; when nonFinite, the spinor to report
+  Su2 phiEnd;     // frame6a: the frame at the step's end (the next step's start)
+  double factor = 1.0;
+  bool accept = false;
+  bool nonFinite = false;
+};
+
+// rk45: Dormand–Prince's embedded estimate against the tolerance.
+template <typename Omega>
+StepAttempt attemptDormandPrince(const Omega& omega, const Su2& u, double here, double step, double tolerance) {
+  StepAttempt t;
+  const DpResult r = dormandPrince(omega, u, here, step, tolerance);
+  t.candidate = toSu2(r.y5);
+  if (!std::isfinite(r.error)) {
+    t.nonFinite = true;
+    return t;
+  }
+  t.accept = r.error <= 1.0;
+  t.factor = r.error > 0.0 ? std::clamp(0.9 * std::pow(r.error, -0.2), 0.2, 5.0) : 5.0;
+  return t;
+}
+
+// frame6a: the whole step against its two halves (Richardson), the step
+// also capped so the frame turns by at most maxFrameTurn. end: the step's
+// end (the breakpoint itself on the segment's last step).
+StepAttempt attemptFrame6a(const geometry::ContactPath& path, double ballRadius, const Su2& u, const Su2& phiStart,
+                           double here, double step, double end, double tolerance, double length,
+                           double maxFrameTurn) {
+  StepAttempt t;
+  const double half = 0.5 * step;
+  const GaussData full = gaussData(path, here, step), left = gaussData(path, here, half),
+                  right = gaussData(path, here + half, step - half);
+  const double turnRate = std::max({full.turnRate, left.turnRate, right.turnRate});
+  const Su2 phiMid = frameSpinor(path.at(here + half));
+  t.phiEnd = frameSpinor(path.at(end));
+  const Su2 whole = frame6Element(phiStart, t.phiEnd, full, ballRadius, step);
+  const Su2 halves = frame6Element(phiMid, t.phiEnd, right, ballRadius, step - half) *
+                     frame6Element(phiStart, phiMid, left, ballRadius, half);
+  // Richardson: the two halves are 2⁶ times more accurate than the whole.
+  const double error = spinorDistance(whole, halves) / 63.0;
+  if (!std::isfinite(error) || !halves.isFinite()) {
+    t.nonFinite = true;
+    t.candidate = u;
+    return t;
+  }
+  // Never ask a step for less than round-off: a tolerance below what
+  // double precision can reach degrades to the floor instead of
+  // shrinking h until it underflows.
+  const double ratio = error / std::max(tolerance * step / length, 8.0 * 2.220446049250313e-16);
+  t.factor = ratio > 0.0 ? std::clamp(0.9 * std::pow(ratio, -1.0 / 6.0), 0.2, 4.0) : 4.0;
+  t.accept = ratio <= 1.0;
+  if (turnRate * step > maxFrameTurn) {
+    t.accept = false;
+    t.factor = std::min(t.factor, 0.9 * maxFrameTurn / (turnRate * step));
+  } else if (turnRate > 0.0) {
+    t.factor = std::min(t.factor, maxFrameTurn / (turnRate * step));
+  }
+  if (t.accept) {
+    t.candidate = halves * u;
+    const double norm = t.candidate.norm();  // unit elements: project round-off in the norm away
+    t.candidate = {t.candidate.w / norm, t.candidate.x / norm, t.candidate.y / norm, t.candidate.z / norm};
+  }
+  return t;
+}
+
+// The march restarts at each breakpoint: [0, b₁, …, L].
+std::vector<double> segmentCuts(const geometry::ContactPath& path, double length) {
+  std::vector<double> cuts{0.0};
+  for (double b : path.breakpoints())
+    if (b > 0.0 && b < length) cuts.push_back(b);
+  cuts.push_back(length);
+  return cuts;
+}
+
 }  // namespace
 
 Su2 adaptiveStep(const geometry::ContactPath& path, double ballRadius, Method method, const Su2& u, double s,
@@ -150,10 +226,7 @@ SolveStats adaptiveRun(const geometry::ContactPath& path, double ballRadius, Met
   // no cap, so 1e6 lollipop turns take a dozen steps.
   const double maxFrameTurn = path.hasConstantCurvatures() ? INFINITY : kMaxFrameTurn;
 
-  std::vector<double> cuts{0.0};
-  for (double b : path.breakpoints())
-    if (b > 0.0 && b < length) cuts.push_back(b);
-  cuts.push_back(length);
+  const std::vector<double> cuts = segmentCuts(path, length);
 
   Su2 u = Su2::identity();
   std::size_t next = 0;
@@ -180,54 +253,20 @@ SolveStats adaptiveRun(const geometry::ContactPath& path, double ballRadius, Met
       const double step = last ? b - here : h;
       if (!(step > 1e-14 * std::max(1.0, std::abs(b)))) return stop(SolveStatus::StepSizeUnderflow, u);
 
-      Su2 candidate, phiEnd;
-      double factor = 1.0;
-      bool accept = false;
-      if (method == Method::Rk45) {
-        const DpResult r = dormandPrince(omega, u, here, step, tolerance);
-        if (!std::isfinite(r.error)) return stop(SolveStatus::NonFinite, toSu2(r.y5));
-        candidate = toSu2(r.y5);
-        accept = r.error <= 1.0;
-        factor = r.error > 0.0 ? std::clamp(0.9 * std::pow(r.error, -0.2), 0.2, 5.0) : 5.0;
-      } else {
-        const double half = 0.5 * step;
-        const GaussData full = gaussData(path, here, step), left = gaussData(path, here, half),
-                        right = gaussData(path, here + half, step - half);
-        const double turnRate = std::max({full.turnRate, left.turnRate, right.turnRate});
-        const Su2 phiMid = frameSpinor(path.at(here + half));
-        phiEnd = frameSpinor(path.at(last ? b : here + step));
-        const Su2 whole = frame6Element(phiStart, phiEnd, full, ballRadius, step);
-        const Su2 halves = frame6Element(phiMid, phiEnd, right, ballRadius, step - half) *
-                           frame6Element(phiStart, phiMid, left, ballRadius, half);
-        // Richardson: the two halves are 2⁶ times more accurate than the whole.
-        const double error = spinorDistance(whole, halves) / 63.0;
-        if (!std::isfinite(error) || !halves.isFinite()) return stop(SolveStatus::NonFinite, u);
-        // Never ask a step for less than round-off: a tolerance below what
-        // double precision can reach degrades to the floor instead of
-        // shrinking h until it underflows.
-        const double ratio = error / std::max(tolerance * step / length, 8.0 * 2.220446049250313e-16);
-        factor = ratio > 0.0 ? std::clamp(0.9 * std::pow(ratio, -1.0 / 6.0), 0.2, 4.0) : 4.0;
-        accept = ratio <= 1.0;
-        if (turnRate * step > maxFrameTurn) {
-          accept = false;
-          factor = std::min(factor, 0.9 * maxFrameTurn / (turnRate * step));
-        } else if (turnRate > 0.0) {
-          factor = std::min(factor, maxFrameTurn / (turnRate * step));
-        }
-        if (accept) {
-          candidate = halves * u;
-          const double norm = candidate.norm();  // unit elements: project round-off in the norm away
-          candidate = {candidate.w / norm, candidate.x / norm, candidate.y / norm, candidate.z / norm};
-        }
-      }
+      const double end = last ? b : here + step;
+      const StepAttempt attempt =
+          method == Method::Rk45
+              ? attemptDormandPrince(omega, u, here, step, tolerance)
+              : attemptFrame6a(path, ballRadius, u, phiStart, here, step, end, tolerance, length, maxFrameTurn);
+      if (attempt.nonFinite) return stop(SolveStatus::NonFinite, attempt.candidate);
+      const double factor = attempt.factor;
 
-      if (!accept) {
+      if (!attempt.accept) {
         ++stats.rejectedSteps;
         h = step * std::min(factor, 1.0);
         continue;
       }
       // Samples inside [here, here + step): a partial step from this node.
-      const double end = last ? b : here + step;
       while (next < sampleS.size() && !sampleS.beyondSlice(next) && sampleS[next] < end) {
         const double dh = (sampleS[next] - s.hi) - s.lo;
         const Su2 uj = dh <= 0.0 ? u : adaptiveStep(path, ballRadius, method, u, here, dh);
@@ -235,8 +274,8 @@ SolveStats adaptiveRun(const geometry::ContactPath& path, double ballRadius, Met
         if (sink) sink(next, sampleS[next], uj);
         ++next;
       }
-      u = candidate;
-      phiStart = phiEnd;
+      u = attempt.candidate;
+      phiStart = attempt.phiEnd;
       ++stats.steps;
       if (!track(u)) return stop(SolveStatus::NonFinite, u);
       if (last) {

@@ -309,17 +309,120 @@ SolveStats Propagator::runPieces(const SampleArcLengths& sampleS, const SampleSi
   return stats;
 }
 
+namespace {
+// The unitarity drift so far; false once U is no longer finite.
+bool trackUnitarity(SolveStats& stats, const Su2& u) {
+  stats.unitarityError = std::max(stats.unitarityError, std::abs(u.norm() - 1.0));
+  return u.isFinite();
+}
+
+// Method::Exact: U at every sample and at L from the closed form.
+SolveStatus closedFormSamples(const Propagator& p, const SampleArcLengths& sampleS, const SampleSink& sink,
+                              SolveStats& stats) {
+  for (std::size_t j = 0; j < sampleS.size() && !sampleS.beyondSlice(j); ++j, ++stats.samplesReported) {
+    const Su2 u = p.closedForm(sampleS[j]);
+    if (!trackUnitarity(stats, u)) return SolveStatus::NonFinite;
+    if (sink) sink(j, sampleS[j], u);
+  }
+  stats.final = p.closedForm(p.path().length());
+  if (!trackUnitarity(stats, stats.final)) return SolveStatus::NonFinite;
+  return SolveStatus::Ok;
+}
+
+// One block of a fixed-step march: steps k0 … k0 + m − 1 of the segment
+// [a, b] cut into n steps of h, the first starting at sBlock.
+struct MarchBlock {
+  double a, b, h;
+  long long n, k0;
+  std::size_t m;
+  double sBlock;
+};
+
+// ω at the nodes of the block's first step: on a rigid field, the
+// segment's first-step values turned by Rot(d, k₀ h |d|) (one direct
+// rotation per block, no accumulation); otherwise evaluated (and on a rigid
+// field kept as the segment's first-step values).
+void blockAnchors(const Propagator& p, const MarchBlock& blk, std::span<const double> nodes, bool rigidField,
+                  const Vec3& darboux, const Vec3& darbouxAxis, Vec3* firstAnchors, Vec3* anchors) {
+  const std::size_t nodeCount = nodes.size();
+  if (rigidField && blk.k0 > 0) {
+    const Mat3 turn =
+        Eigen::AngleAxisd(static_cast<double>(blk.k0) * blk.h * darboux.norm(), darbouxAxis).toRotationMatrix();
+    for (std::size_t i = 0; i < nodeCount; ++i) anchors[i] = turn * firstAnchors[i];
+  } else {
+    for (std::size_t i = 0; i < nodeCount; ++i) anchors[i] = p.omega(blk.sBlock + nodes[i] * blk.h);
+    if (rigidField) std::copy(anchors, anchors + nodeCount, firstAnchors);
+  }
+}
+
+// Rot(d, j h |d|), step j's power of the rigid field's rotation.
+Mat3 rotationPowerOf(const kernel::RotationPowers& powers, std::size_t j) {
+  // Step j sits at position 4i + c with j = 16c + i (see block_kernel.hpp).
+  const std::size_t p = (j % kernel::kChainLength) * kernel::kChains + j / kernel::kChainLength;
+  Mat3 r;
+  for (int k = 0; k < 9; ++k) r(k / 3, k % 3) = powers.m[k][p];
+  return r;
+}
+
+// The step elements of a block, from ω at each step's nodes (turned from
+// the anchors on a rigid field, evaluated otherwise).
+void fillStepElements(const Propagator& p, const MarchBlock& blk, std::span<const double> nodes, bool rigidField,
+                      const kernel::RotationPowers& powers, const Vec3* anchors,
+                      std::array<Vec3, kBlock * kMaxNodes>& w, std::array<Su2, kBlock>& elements) {
+  const double h = blk.h;
+  for (std::size_t j = 0; j < blk.m; ++j) {
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      w[j * kMaxNodes + i] = rigidField ? Vec3(rotationPowerOf(powers, j) * anchors[i])
+                                        : p.omega(blk.sBlock + (static_cast<double>(j) + nodes[i]) * h);
+    }
+    if (p.method() == Method::Frame4) {
+      // Each step's end node is the next step's start node, bit for
+      // bit, so the frame factors Φ(s_{j+1}) Φ(s_j)† telescope: with
+      // s + h recomputed per step the two differ by ε·s and the
+      // mismatch accumulated to 6e-4 over 1e6 lollipop turns. The
+      // body rotation keeps the uniform h (at R/r = 1e-6 an angle of
+      // |g| h ≈ 1e5 per step would feel the rounding of sNext − sj).
+      const long long k = blk.k0 + static_cast<long long>(j);
+      const double sj = blk.a + static_cast<double>(k) * h;
+      const double sNext = k + 1 == blk.n ? blk.b : blk.a + static_cast<double>(k + 1) * h;
+      elements[j] = frame4Element(p.path(), p.ballRadius(), sj, h, sNext);
+    } else {
+      elements[j] = stepElement(p.method(), h, &w[j * kMaxNodes]);
+    }
+  }
+}
+
+// Samples inside a block (s < sBlockEnd): walk the prefix products from the
+// block's start U, then one partial step from the node before each sample.
+// They never feed back into the march, so U(L) does not depend on them.
+// False when a sample's U is not finite.
+bool reportBlockSamples(const Propagator& p, const MarchBlock& blk, double sBlockEnd,
+                        const std::array<Su2, kBlock>& elements, const Su2& u, const SampleArcLengths& sampleS,
+                        const SampleSink& sink, std::size_t& next, SolveStats& stats) {
+  Su2 prefix = u;
+  std::size_t node = 0;
+  while (next < sampleS.size() && !sampleS.beyondSlice(next) && sampleS[next] < sBlockEnd) {
+    const double sj = std::max(sampleS[next], blk.sBlock);
+    const std::size_t target =
+        std::min<std::size_t>(blk.m - 1, static_cast<std::size_t>(std::max(0.0, (sj - blk.sBlock) / blk.h)));
+    for (; node < target; ++node) prefix = elements[node] * prefix;
+    const double sNode = blk.sBlock + static_cast<double>(node) * blk.h;
+    const double dh = sj - sNode;
+    const Su2 uj = dh <= 0.0 ? prefix : p.step(prefix, sNode, dh);
+    if (!trackUnitarity(stats, uj)) return false;
+    if (sink) sink(next, sampleS[next], uj);
+    ++next;
+  }
+  return true;
+}
+}  // namespace
+
 SolveStats Propagator::run(const SampleArcLengths& sampleS, const SampleSink& sink) const {
   if (!path_.pieces().empty()) return runPieces(sampleS, sink);
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   SolveStats stats;
   stats.method = method_;
-  const double length = path_.length();
-  auto track = [&stats](const Su2& u) {
-    stats.unitarityError = std::max(stats.unitarityError, std::abs(u.norm() - 1.0));
-    return u.isFinite();
-  };
   auto finish = [&](SolveStatus status) {
     stats.status = status;
     stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -328,14 +431,7 @@ SolveStats Propagator::run(const SampleArcLengths& sampleS, const SampleSink& si
 
   if (method_ == Method::Exact) {
     if (!path_.hasConstantCurvatures()) return finish(SolveStatus::ExactNeedsConstantCurvature);
-    for (std::size_t j = 0; j < sampleS.size() && !sampleS.beyondSlice(j); ++j, ++stats.samplesReported) {
-      const Su2 u = closedForm(sampleS[j]);
-      if (!track(u)) return finish(SolveStatus::NonFinite);
-      if (sink) sink(j, sampleS[j], u);
-    }
-    stats.final = closedForm(length);
-    if (!track(stats.final)) return finish(SolveStatus::NonFinite);
-    return finish(SolveStatus::Ok);
+    return finish(closedFormSamples(*this, sampleS, sink, stats));
   }
   if (isAdaptive(method_)) {
     if (!(tolerance_ > 0.0)) return finish(SolveStatus::BadTolerance);
@@ -349,7 +445,6 @@ SolveStats Propagator::run(const SampleArcLengths& sampleS, const SampleSink& si
   const std::vector<double>& cuts = cuts_;
 
   const std::span<const double> nodes = stepNodes(method_);
-  const std::size_t nodeCount = nodes.size();
   // On a path of constant curvatures the frame turns rigidly about the fixed
   // Darboux vector d, so ω(s + jh) = Rot(d, j h |d|) ω(s) exactly: the field
   // at a block's nodes is one direct evaluation per node and a precomputed
@@ -364,13 +459,6 @@ SolveStats Propagator::run(const SampleArcLengths& sampleS, const SampleSink& si
   std::array<Su2, kBlock> elements;
   std::array<Vec3, kBlock * kMaxNodes> w;
   kernel::RotationPowers powers;
-  auto power = [&powers](std::size_t j) {
-    // Step j sits at position 4i + c with j = 16c + i (see block_kernel.hpp).
-    const std::size_t p = (j % kernel::kChainLength) * kernel::kChains + j / kernel::kChainLength;
-    Mat3 r;
-    for (int k = 0; k < 9; ++k) r(k / 3, k % 3) = powers.m[k][p];
-    return r;
-  };
   Su2 u = Su2::identity();
   std::size_t next = 0;
 
@@ -386,62 +474,15 @@ SolveStats Propagator::run(const SampleArcLengths& sampleS, const SampleSink& si
       const bool lastBlock = seg + 2 == cuts.size() && k0 + static_cast<long long>(m) == n;
       const bool samplesHere = next < sampleS.size() && !sampleS.beyondSlice(next) && sampleS[next] < sBlockEnd;
       const bool useKernel = vectorKernel && m == kBlock;
+      const MarchBlock blk{a, b, h, n, k0, m, sBlock};
 
-      // ω at the nodes of the block's first step: on a rigid field, the
-      // segment's first-step values turned by Rot(d, k₀ h |d|) (one direct
-      // rotation per block, no accumulation); otherwise evaluated.
       Vec3 anchors[kMaxNodes];
-      if (rigidField && k0 > 0) {
-        const Mat3 turn = Eigen::AngleAxisd(static_cast<double>(k0) * h * darboux.norm(), darbouxAxis).toRotationMatrix();
-        for (std::size_t i = 0; i < nodeCount; ++i) anchors[i] = turn * firstAnchors[i];
-      } else {
-        for (std::size_t i = 0; i < nodeCount; ++i) anchors[i] = omega(sBlock + nodes[i] * h);
-        if (rigidField) std::copy(anchors, anchors + nodeCount, firstAnchors);
-      }
+      blockAnchors(*this, blk, nodes, rigidField, darboux, darbouxAxis, firstAnchors, anchors);
       // Scalar step elements: needed for partial blocks, varying fields and
       // for walking to samples; the vector kernel makes its own.
-      if (!useKernel || samplesHere) {
-        for (std::size_t j = 0; j < m; ++j) {
-          for (std::size_t i = 0; i < nodeCount; ++i) {
-            w[j * kMaxNodes + i] = rigidField ? Vec3(power(j) * anchors[i])
-                                              : omega(sBlock + (static_cast<double>(j) + nodes[i]) * h);
-          }
-          if (method_ == Method::Frame4) {
-            // Each step's end node is the next step's start node, bit for
-            // bit, so the frame factors Φ(s_{j+1}) Φ(s_j)† telescope: with
-            // s + h recomputed per step the two differ by ε·s and the
-            // mismatch accumulated to 6e-4 over 1e6 lollipop turns. The
-            // body rotation keeps the uniform h (at R/r = 1e-6 an angle of
-            // |g| h ≈ 1e5 per step would feel the rounding of sNext − sj).
-            const long long k = k0 + static_cast<long long>(j);
-            const double sj = a + static_cast<double>(k) * h;
-            const double sNext = k + 1 == n ? b : a + static_cast<double>(k + 1) * h;
-            elements[j] = frame4Element(path_, ballRadius_, sj, h, sNext);
-          } else {
-            elements[j] = stepElement(method_, h, &w[j * kMaxNodes]);
-          }
-        }
-      }
-
-      // Samples inside this block: walk the prefix products from the block's
-      // start, then one partial step from the node before each sample. They
-      // never feed back into the march, so U(L) does not depend on them.
-      if (samplesHere) {
-        Su2 prefix = u;
-        std::size_t node = 0;
-        while (next < sampleS.size() && !sampleS.beyondSlice(next) && sampleS[next] < sBlockEnd) {
-          const double sj = std::max(sampleS[next], sBlock);
-          const std::size_t target =
-              std::min<std::size_t>(m - 1, static_cast<std::size_t>(std::max(0.0, (sj - sBlock) / h)));
-          for (; node < target; ++node) prefix = elements[node] * prefix;
-          const double sNode = sBlock + static_cast<double>(node) * h;
-          const double dh = sj - sNode;
-          const Su2 uj = dh <= 0.0 ? prefix : step(prefix, sNode, dh);
-          if (!track(uj)) return finish(SolveStatus::NonFinite);
-          if (sink) sink(next, sampleS[next], uj);
-          ++next;
-        }
-      }
+      if (!useKernel || samplesHere) fillStepElements(*this, blk, nodes, rigidField, powers, anchors, w, elements);
+      if (samplesHere && !reportBlockSamples(*this, blk, sBlockEnd, elements, u, sampleS, sink, next, stats))
+        return finish(SolveStatus::NonFinite);
 
       const Su2 block = useKernel ? kernel::rigidMagnusBlock(methodOrder(method_), h, anchors, powers)
                                   : orderedProduct(elements.data(), m);
@@ -455,7 +496,7 @@ SolveStats Propagator::run(const SampleArcLengths& sampleS, const SampleSink& si
         u = {u.w / norm, u.x / norm, u.y / norm, u.z / norm};
       }
       stats.steps += static_cast<long long>(m);
-      if (!track(u)) return finish(SolveStatus::NonFinite);
+      if (!trackUnitarity(stats, u)) return finish(SolveStatus::NonFinite);
       if (lastBlock) {
         for (; next < sampleS.size() && !sampleS.beyondSlice(next); ++next) {
           if (sink) sink(next, sampleS[next], u);

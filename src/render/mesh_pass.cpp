@@ -115,7 +115,8 @@ void Renderer::Impl::drawMesh(const Drawable& d, const DrawScope& scope, bool sh
   mesh.use();
   setMeshUniforms(mesh, d, scope, clipToShadowBox);
   if (impostor) {
-    drawImpostor(d, scope, mesh, *impostor, pattern, shadowOn && m.lit);
+    spheres.draw(d, scope, mesh, *impostor, pattern, shadowOn && m.lit,
+                 SphereDrawing{programs, streams, captures, stats, targets.width, targets.height});
     return;
   }
   if (cull == Cull::None) {
@@ -136,8 +137,11 @@ void Renderer::Impl::drawMesh(const Drawable& d, const DrawScope& scope, bool sh
   // thousands for its re-shade box, the Bloch glass's for the twin's
   // arrows). The runs left out cover no pixel of the rectangles, and the
   // rest are drawn in their order: the rectangles' bytes do not change.
-  const glm::mat4 clipFromModel = scope.clipFromWorld * d.worldFromModel;
-  RunsOfParts& kept = scratch.keptParts;
+  meshRuns.draw(g, scope.clipFromWorld * d.worldFromModel, scope, stats);
+}
+
+void MeshRuns::draw(const GpuMesh& g, const glm::mat4& clipFromModel, const DrawScope& scope, RenderStats& stats) {
+  RunsOfParts& kept = kept_;
   kept.clear();
   for (const MeshChunk& c : g.chunks) {
     const std::array<glm::vec3, 8> corners = boxCorners(c.lo, c.hi);
@@ -146,17 +150,17 @@ void Renderer::Impl::drawMesh(const Drawable& d, const DrawScope& scope, bool sh
   }
   // The runs go to GL in one call: a draw call costs llvmpipe more than a
   // run of triangles.
-  scratch.runCounts.clear();
-  scratch.runOffsets.clear();
+  counts_.clear();
+  offsets_.clear();
   for (const RunsOfParts::Run& r : kept.runs()) {
-    scratch.runCounts.push_back(static_cast<GLsizei>(r.end - r.begin));
-    scratch.runOffsets.push_back(reinterpret_cast<const void*>(r.begin * sizeof(std::uint32_t)));
+    counts_.push_back(static_cast<GLsizei>(r.end - r.begin));
+    offsets_.push_back(reinterpret_cast<const void*>(r.begin * sizeof(std::uint32_t)));
     stats.meshIndicesDrawn += static_cast<long long>(r.end - r.begin);
   }
   stats.meshIndicesInRects += g.indexCount;
-  if (!scratch.runCounts.empty())
-    glMultiDrawElements(GL_TRIANGLES, scratch.runCounts.data(), GL_UNSIGNED_INT, scratch.runOffsets.data(),
-                        static_cast<GLsizei>(scratch.runCounts.size()));
+  if (!counts_.empty())
+    glMultiDrawElements(GL_TRIANGLES, counts_.data(), GL_UNSIGNED_INT, offsets_.data(),
+                        static_cast<GLsizei>(counts_.size()));
 }
 
 // Shadow receivers (the surfaces) pay for the shadow filter only inside

@@ -181,7 +181,7 @@ std::vector<PixelRect> Renderer::Impl::drawViewOpaque(const DrawList& list, cons
 // After drawViewOpaque: the steps at one sample, a ray-cast sphere's
 // under pass only where the meshes cover pixels in part (`sampled`) or a
 // sphere drawn before it does (the pass changes nothing elsewhere: see
-// drawImpostor), then the rest.
+// SpherePass::draw), then the rest.
 void Renderer::Impl::drawViewAfterOpaque(const DrawList& list, int view, const ViewItems& viewItems,
                                          std::vector<PixelRect> sampled, const DrawScope& scope) {
   DrawScope afterResolve = scope;
@@ -209,7 +209,7 @@ void Renderer::Impl::drawRest(const DrawList& list, int index, const ViewItems& 
   glDepthMask(GL_FALSE);
   glEnable(GL_BLEND);
   for (const PolylineItem& p : list.polylines)
-    if (p.view == index && p.depthTested && takes(which, p.dynamic)) drawPolyline(p, scope);
+    if (p.view == index && p.depthTested && takes(which, p.dynamic)) lines.draw(p, scope, programs.line, streams, targets.height, stats);
 
   // Far to near. A closed translucent mesh shows its front half only: its
   // back half would double the blending cost for little visual gain.
@@ -227,14 +227,14 @@ void Renderer::Impl::drawRest(const DrawList& list, int index, const ViewItems& 
   glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);
   for (const PolylineItem& p : list.polylines)
-    if (p.view == index && !p.depthTested && takes(which, p.dynamic)) drawPolyline(p, scope);
+    if (p.view == index && !p.depthTested && takes(which, p.dynamic)) lines.draw(p, scope, programs.line, streams, targets.height, stats);
   for (const LabelItem& l : list.labels)
-    if (l.view == index) drawLabelAs(l, which, glm::vec2(v.width, v.height), &clipFromWorld, scope);
+    if (l.view == index) drawLabelAs(l, which, glm::vec2(v.width, v.height), &clipFromWorld, scope, textDrawing());
   if (v.frame && which != Items::DynamicOnly) {
     const float w = float(v.width), h = float(v.height), t = std::max(1.0f, h / 300.0f);
     const std::vector<GlyphQuad> border{{0, 0, w, t, 0, 0, 0, 0}, {0, h - t, w, h, 0, 0, 0, 0},
                                         {0, 0, t, h, 0, 0, 0, 0}, {w - t, 0, w, h, 0, 0, 0, 0}};
-    drawQuads(border, glm::vec2(w, h), glm::vec4(0.35f, 0.38f, 0.42f, 1.0f), 0, true);
+    drawQuads(border, glm::vec2(w, h), glm::vec4(0.35f, 0.38f, 0.42f, 1.0f), 0, true, textDrawing());
   }
   glDepthMask(GL_TRUE);
 }
@@ -253,7 +253,7 @@ void Renderer::Impl::drawWhole(const DrawList& list, const std::vector<ViewItems
     const DrawScope scope = beginView(list, v, perView[i], nullptr);
     drawViewAfterOpaque(list, static_cast<int>(i), perView[i], std::move(sampled), scope);
   }
-  drawImageLabels(list, Items::All, PixelRect{0, 0, list.width, list.height});
+  drawImageLabels(list, Items::All, PixelRect{0, 0, list.width, list.height}, targets.sceneFbo, textDrawing());
 }
 
 }  // namespace rollspin::render

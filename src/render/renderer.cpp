@@ -31,7 +31,7 @@ void Renderer::Impl::render(const DrawList& list, media::Image& image, ImageHist
   for (std::size_t i = 0; i < list.views.size(); ++i) {
     ViewItems& vi = perView[i];
     vi.arrowMaterials.reserve(list.arrows.size());
-    vi.items = drawablesOf(list, static_cast<int>(i), vi.arrowMaterials);
+    vi.items = drawablesOf(list, static_cast<int>(i), vi.arrowMaterials, caches);
     if (!list.views[i].light.shadow) continue;
     StageLog::instance().record("shadow-map");
     vi.shadowMap = &shadowMaps.at(shadowMapsUsed++);

@@ -1,23 +1,24 @@
 // Renderer::Impl: the renderer's state, gathered in one place, and the
-// passes over a frame, one file each:
+// steps of a frame that use all of it:
 //   renderer.cpp        the frame: shadow maps, the layer plan, eviction
-//   mesh_pass.cpp       the lit meshes (opaque, re-shade, translucent)
 //   view_pass.cpp       a view's steps
 //   retained_layers.cpp the retained layer: build, update, frames over it
-// The passes below are objects or functions of their own, and take what
-// they read and write as arguments; each pass object holds only the
+// The passes they call are objects or functions of their own, and take
+// what they read and write as arguments; each pass object holds only the
 // vectors it reuses from draw to draw (no allocation per draw):
 //   shadowPass (shadow_pass)  the view, its casters, the map, the caches,
 //                             the programs and streams
+//   MeshPass (mesh_pass)      the drawables, the scope, and MeshDrawing (the
+//                             programs, caches, streams, captures, stats,
+//                             framebuffers); it holds a SpherePass and the
+//                             MeshRuns of a mesh inside a retained frame's
+//                             rectangles
 //   SpherePass (sphere_pass, its replay in glass_capture): the drawable,
 //                             its scope and program, and SphereDrawing (the
 //                             programs, streams, captures, stats, the
 //                             framebuffer's size)
 //   LinePass (line_pass)      the polyline, its scope, the line program,
 //                             the streams, the framebuffer's height, stats
-//   MeshRuns (mesh_pass.hpp)  a mesh's runs inside a retained frame's
-//                             rectangles: the GPU mesh, its transform, the
-//                             scope, stats
 //   Readback (readback)       the list, the image, the rectangle and the
 //                             scene framebuffer; readDepth and
 //                             partlyCoveredTiles likewise
@@ -76,13 +77,8 @@ struct Renderer::Impl {
   // Off: every frame drawn whole, and the layer's memory forgotten.
   void setRetainLayers(bool on);
 
-  // ---- mesh_pass.cpp
-  std::vector<Drawable> drawablesOf(const DrawList& list, int view, std::vector<Material>& arrowMaterials);
-  void drawMesh(const Drawable& d, const DrawScope& scope, bool shadowOn, Cull cull, bool clipToShadowBox = false);
-  void drawReshades(const ViewItems& viewItems, const DrawScope& scope);
-  bool inSamplesPass(const Drawable& d) const { return !d.dynamic || (targets.opaqueFbo != 0 && !d.sphere); }
-  void drawOpaque(const ViewItems& viewItems, const DrawScope& scope, Items which, Pass pass);
-  void drawOpaqueAtCentres(const ViewItems& viewItems, const DrawScope& scope, Items which);
+  // What the mesh pass (mesh_pass.hpp) draws with.
+  MeshDrawing meshDrawing() { return {programs, caches, streams, captures, stats, targets}; }
   // What the text pass (text_pass.hpp) draws with.
   TextDrawing textDrawing() { return {programs.text, streams, caches}; }
   // ---- view_pass.cpp
@@ -129,9 +125,8 @@ struct Renderer::Impl {
   FrameTargets targets;
   ShadowMaps shadowMaps;
   SphereCaptures captures;
-  SpherePass spheres;
+  MeshPass meshes;
   LinePass lines;
-  MeshRuns meshRuns;
   Readback readback;
 
   // The retained layer (see retained_layers.cpp): its keys, its finished

@@ -188,11 +188,11 @@ void Renderer::Impl::redrawSamples(const RedrawJob& job, std::vector<PixelRect>*
   if (reached.empty()) return;
   if (under != nullptr) under->insert(under->end(), reached.begin(), reached.end());
   forEachIsland(job, reached, 0, under, [&](std::size_t i, const PixelRect&, const DrawScope& scope) {
-    drawOpaqueAtCentres(job.perView[i], scope, Items::DynamicOnly);
+    meshes.drawOpaqueAtCentres(job.perView[i], scope, Items::DynamicOnly, meshDrawing());
   });
   FrameTargets::copyRects(job.list, targets.snapshotSamplesFbo, targets.opaqueFbo, reached);
   forEachIsland(job, reached, targets.opaqueFbo, under, [&](std::size_t i, const PixelRect&, const DrawScope& scope) {
-    drawOpaque(job.perView[i], scope, Items::DynamicOnly, Pass::Samples);
+    meshes.drawOpaque(job.perView[i], scope, Items::DynamicOnly, Pass::Samples, meshDrawing());
   });
   for (const PixelRect& rect : reached) targets.resolve(job.list, rect, programs, streams);
 }
@@ -266,7 +266,7 @@ void Renderer::Impl::buildLayer(const DrawList& list, const std::vector<ViewItem
     // layer (redrawSamples), wherever they go.
     for (std::size_t i = 0; i < list.views.size(); ++i) {
       const DrawScope scope = beginView(list, list.views[i], perView[i], nullptr, targets.opaqueFbo);
-      drawOpaque(perView[i], scope, Items::StaticOnly, Pass::Samples);
+      meshes.drawOpaque(perView[i], scope, Items::StaticOnly, Pass::Samples, meshDrawing());
     }
     glDisable(GL_SCISSOR_TEST);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.opaqueFbo);
@@ -279,7 +279,7 @@ void Renderer::Impl::buildLayer(const DrawList& list, const std::vector<ViewItem
   std::vector<PixelRect> resolved;
   for (std::size_t i = 0; i < list.views.size(); ++i) {
     const DrawScope scope = beginView(list, list.views[i], perView[i], nullptr);
-    drawOpaqueAtCentres(perView[i], scope, Items::StaticOnly);
+    meshes.drawOpaqueAtCentres(perView[i], scope, Items::StaticOnly, meshDrawing());
     if (targets.opaqueFbo == 0) continue;
     const std::vector<PixelRect> tiles = sampleTiles(list, list.views[i], perView[i], Items::StaticOnly);
     resolved.insert(resolved.end(), tiles.begin(), tiles.end());

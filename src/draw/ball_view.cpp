@@ -20,13 +20,266 @@
 namespace rollspin::draw {
 
 // A chart whose cells differ in size by more than this over the meshed box
-// is shown with the world-space checker (see BallView's surface mesh).
+// is shown with the world-space checker (see chartSurface).
 constexpr double kChartStretchForSolidChecker = 4.0;
 
 using geometry::Vec3;
 using motion::FrameOrientations;
 using motion::MarksFact;
 using motion::OrientedSample;
+
+namespace {
+
+// The box the framing holds: the ball's sweep, grown by what else the
+// picture shows.
+struct SweptBox {
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+};
+
+// A surface as its look shows it (geometry::SurfaceLook): its mesh and
+// material, and what of it the framing holds: the box grown by it, points
+// on it (FrameExtent::points, as surface points), the outline it adds
+// (FrameExtent::outline), the stretches of its edge that text keeps off,
+// and the rim of a cap cut away toward the eye.
+struct SurfaceAsDrawn {
+  std::shared_ptr<render::MeshData> mesh;
+  render::Material material;
+  SweptBox box;
+  std::vector<Vec3> framedPoints;
+  std::vector<Vec3> outline;
+  std::vector<std::vector<Vec3>> framedEdges;
+  std::vector<Vec3> cutRim;
+};
+
+// Surfaces receive the ball's shadow but cast none: a surface shadowing
+// itself only adds acne, and where the ball's shadow would pass through a
+// surface to its far side, that side faces away from the light anyway.
+render::Material matteCheckerMaterial() {
+  render::Material material;
+  material.castsShadow = false;
+  material.receivesShadow = true;
+  material.specular = 0.0f;  // matte: cheaper, and no glare on the board
+  material.shininess = 16.0f;
+  material.pattern = render::Pattern::Checker;
+  material.cull = render::Cull::None;
+  return material;
+}
+
+// A square board under the path; checker cells of size R so that the
+// distance rolled can be counted.
+SurfaceAsDrawn boardSurface(const geometry::SurfaceLook& look, const SweptBox& box, double R) {
+  SurfaceAsDrawn shape{nullptr, matteCheckerMaterial(), box, {}, {}, {}, {}};
+  const Vec3 n = look.up;
+  const Vec3 mid = 0.5 * (box.lo + box.hi);
+  const Vec3 centre = mid - n * n.dot(mid);
+  const double half = 0.5 * (box.hi - box.lo).norm() + 3.0 * R;
+  const Vec3 e1 = geometry::defaultTangentFor(n), e2 = n.cross(e1);
+  shape.mesh = render::parametricPatch(
+      [&](float a, float b, glm::vec3& p, glm::vec3& nn) {
+        p = toGlm(centre + (2.0 * a - 1.0) * half * e1 + (2.0 * b - 1.0) * half * e2);
+        nn = toGlm(n);
+      },
+      1, 1);  // flat: two triangles (large ones let llvmpipe shade whole tiles)
+  for (auto& v : shape.mesh->vertices) {
+    const Vec3 p(v.position.x, v.position.y, v.position.z);
+    v.uv = glm::vec2(float(p.dot(e1) / R), float(p.dot(e2) / R));  // cells of size R, a corner at the origin
+  }
+  shape.material.color = {0.80f, 0.78f, 0.74f};
+  shape.material.color2 = {0.55f, 0.56f, 0.58f};
+  shape.material.patternScale = glm::vec2(1.0f);
+  return shape;
+}
+
+// A whole sphere of radius look.radius about the origin. Seen from inside,
+// the cap that faces the camera is cut away, so the ball inside is seen
+// wherever it rolls (a rim line marks the cut), and the whole sphere frames
+// the picture; outside, the ball and its path do (a small circle on a big
+// sphere would otherwise be lost), and the half of the sphere the path lies
+// on, where a slightly wider framing holds it: its rim is the sphere's
+// widest outline seen from the path's side, which a view's edge would
+// otherwise cut in the middle of the frame.
+SurfaceAsDrawn sphereSurface(const geometry::SurfaceLook& look, const SweptBox& box, const scene::SceneSpec& spec,
+                           const model::RollingModel& model, const std::vector<Vec3>& pathPoints) {
+  SurfaceAsDrawn shape{nullptr, matteCheckerMaterial(), box, {}, {}, {}, {}};
+  const double r = look.radius;
+  const double c0 = 0.0, c1 = std::numbers::pi;
+  if (look.cutAwayTowardEye) {
+    const Vec3 toEye = towardEye(orbitAngles(spec, model));
+    const double offset = 0.25 * r;
+    shape.material.cutPlane = glm::vec4(-toGlm(toEye), float(offset));
+    const Vec3 e1 = Vec3::UnitZ().cross(toEye).normalized(), e2 = toEye.cross(e1);
+    const double rimRadius = std::sqrt(r * r - offset * offset);
+    for (int k = 0; k <= 180; ++k) {
+      const double phi = 2.0 * std::numbers::pi * k / 180;
+      shape.cutRim.push_back(offset * toEye + rimRadius * (std::cos(phi) * e1 + std::sin(phi) * e2));
+    }
+  }
+  shape.mesh = render::parametricPatch(
+      [&](float a, float b, glm::vec3& p, glm::vec3& nn) {
+        const double phi = 2.0 * std::numbers::pi * a, th = c0 + (c1 - c0) * b;
+        const Vec3 d(std::sin(th) * std::cos(phi), std::sin(th) * std::sin(phi), std::cos(th));
+        p = toGlm(r * d);
+        nn = toGlm(-d);  // the patch winds inward; lighting flips by facing anyway
+      },
+      128, std::max(8, int(64 * (c1 - c0) / std::numbers::pi)),
+      glm::vec2(24.0f, float(12.0 * (c1 - c0) / std::numbers::pi)));
+  shape.material.color = {0.72f, 0.74f, 0.78f};
+  shape.material.color2 = {0.52f, 0.56f, 0.62f};
+  for (int i = 0; i <= 8 && look.cutAwayTowardEye; ++i)
+    for (int k = 0; k < 16; ++k) {
+      const double th = c0 + (c1 - c0) * i / 8, phi = 2.0 * std::numbers::pi * k / 16;
+      shape.framedPoints.push_back(r * Vec3(std::sin(th) * std::cos(phi), std::sin(th) * std::sin(phi), std::cos(th)));
+    }
+  Vec3 pathSide = Vec3::Zero();
+  for (const Vec3& p : pathPoints) pathSide += p;
+  if (pathSide.norm() > 1e-9 * r * double(pathPoints.size()) && !look.cutAwayTowardEye) {
+    pathSide.normalize();
+    for (int i = 0; i <= 12; ++i)
+      for (int k = 0; k < 24; ++k) {
+        const double th = std::numbers::pi * i / 12, phi = 2.0 * std::numbers::pi * k / 24;
+        const Vec3 d(std::sin(th) * std::cos(phi), std::sin(th) * std::sin(phi), std::cos(th));
+        if (d.dot(pathSide) >= -0.05) shape.outline.push_back(r * d);
+      }
+  }
+  for (int k = 0; k < 3; ++k) {
+    shape.box.lo[k] = std::min(shape.box.lo[k], -r);
+    shape.box.hi[k] = std::max(shape.box.hi[k], r);
+  }
+  return shape;
+}
+
+// The parameter box [u0, u1] × [v0, v1] of a chart that is meshed, and its
+// checker cells along u and v.
+struct ChartBox {
+  double u0, u1, v0, v1;
+  float cellsU, cellsV;
+};
+
+// The parameter box the path visits, padded by about 3R on the surface,
+// with checker cells of about R; none where no path point has parameters.
+std::optional<ChartBox> chartBoxOfPath(const geometry::Surface& surface, const std::vector<Vec3>& pathPoints,
+                                       double R) {
+  const geometry::ParameterDomain domain = surface.domain();
+  double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300, speedU = 0.0, speedV = 0.0;
+  int found = 0;
+  for (std::size_t i = 0; i < pathPoints.size(); i += std::max<std::size_t>(1, pathPoints.size() / 200)) {
+    const auto uv = surface.parametersOf(pathPoints[i]);
+    if (!uv) continue;
+    u0 = std::min(u0, uv->x());
+    u1 = std::max(u1, uv->x());
+    v0 = std::min(v0, uv->y());
+    v1 = std::max(v1, uv->y());
+    const geometry::SurfaceJet j = surface.jet(*uv);
+    speedU += j.xu.norm();
+    speedV += j.xv.norm();
+    ++found;
+  }
+  if (found == 0) return std::nullopt;
+  speedU = std::max(speedU / found, 1e-9);
+  speedV = std::max(speedV / found, 1e-9);
+  const double eps = 1e-6;
+  u0 = std::max(u0 - 3.0 * R / speedU, domain.uMin + eps);
+  u1 = std::min(u1 + 3.0 * R / speedU, domain.uMax - eps);
+  v0 = std::max(v0 - 3.0 * R / speedV, domain.vMin + eps);
+  v1 = std::min(v1 + 3.0 * R / speedV, domain.vMax - eps);
+  auto cellsU = float((u1 - u0) * speedU / R), cellsV = float((v1 - v0) * speedV / R);
+  // An angle padded past one turn would mesh the surface twice over (two
+  // coincident sheets z-fight): keep one turn about the box's middle, with
+  // a whole even number of checker cells so the pattern closes across the
+  // seam.
+  auto oneTurn = [](double period, double& lo, double& hi, float& cells) {
+    if (period <= 0.0 || hi - lo < period) return;
+    const double mid = 0.5 * (lo + hi);
+    cells = std::max(2.0f, 2.0f * std::round(0.5f * cells * float(period / (hi - lo))));
+    lo = mid - 0.5 * period;
+    hi = mid + 0.5 * period;
+  };
+  oneTurn(domain.uPeriod, u0, u1, cellsU);
+  oneTurn(domain.vPeriod, v0, v1, cellsV);
+  return ChartBox{u0, u1, v0, v1, cellsU, cellsV};
+}
+
+// Whether the chart's cells differ in size a lot over the box: they are
+// about R where the path runs, but a steep height field's x-cell on the
+// paraboloid's wall is R/27 across and long down the slope, fine stripes
+// that beat with the pixels.
+bool chartCellsVary(const geometry::Surface& surface, const ChartBox& b) {
+  double shortest = 1e300, longest = 0.0;
+  for (int i = 0; i <= 8; ++i)
+    for (int k = 0; k <= 8; ++k) {
+      const geometry::SurfaceJet j =
+          surface.jet(geometry::Vec2(b.u0 + (b.u1 - b.u0) * i / 8.0, b.v0 + (b.v1 - b.v0) * k / 8.0));
+      for (const double edge : {j.xu.norm() * (b.u1 - b.u0) / b.cellsU, j.xv.norm() * (b.v1 - b.v0) / b.cellsV}) {
+        shortest = std::min(shortest, edge);
+        longest = std::max(longest, edge);
+      }
+    }
+  return longest > kChartStretchForSolidChecker * shortest;
+}
+
+// The meshed patch's edge within 4.5 R of the ball's centres (a cylinder's
+// top and bottom rims), framed so that the frame does not cut the surface
+// just past the ball; far corners (a paraboloid's rising rim) are not.
+// Text keeps off these framed stretches of edge too (markImportant).
+void frameChartEdgesNearPath(const geometry::Surface& surface, const ChartBox& b, const std::vector<Vec3>& centres,
+                             double R, SurfaceAsDrawn& shape) {
+  std::vector<Vec3> runs[4];
+  auto endRun = [&](std::vector<Vec3>& run) {
+    if (run.size() > 1) shape.framedEdges.push_back(run);
+    run.clear();
+  };
+  for (int k = 0; k <= 32; ++k) {
+    const double t = k / 32.0;
+    const geometry::Vec2 edges[4] = {
+        geometry::Vec2(b.u0 + (b.u1 - b.u0) * t, b.v0), geometry::Vec2(b.u0 + (b.u1 - b.u0) * t, b.v1),
+        geometry::Vec2(b.u0, b.v0 + (b.v1 - b.v0) * t), geometry::Vec2(b.u1, b.v0 + (b.v1 - b.v0) * t)};
+    for (int e = 0; e < 4; ++e) {
+      const Vec3 p = surface.position(edges[e]);
+      double nearest = 1e300;
+      for (const Vec3& c : centres) nearest = std::min(nearest, (c - p).norm());
+      if (nearest <= 4.5 * R) {
+        shape.framedPoints.push_back(p);
+        runs[e].push_back(p);
+      } else {
+        endRun(runs[e]);
+      }
+    }
+  }
+  for (std::vector<Vec3>& run : runs) endRun(run);
+}
+
+// Any other surface (cylinder, torus, height field, ...): its own chart
+// x(u, v) meshed over the parameter box the path visits; where the chart's
+// cells vary a lot, world cubes of R show cells of about R everywhere.
+SurfaceAsDrawn chartSurface(const geometry::Surface& surface, const SweptBox& box, double R,
+                          const std::vector<Vec3>& pathPoints, const std::vector<Vec3>& centres) {
+  SurfaceAsDrawn shape{nullptr, matteCheckerMaterial(), box, {}, {}, {}, {}};
+  const std::optional<ChartBox> chart = chartBoxOfPath(surface, pathPoints, R);
+  if (!chart) return shape;
+  const ChartBox& b = *chart;
+  shape.mesh = render::parametricPatch(
+      [&](float a, float c, glm::vec3& p, glm::vec3& nn) {
+        const geometry::Vec2 uv(b.u0 + (b.u1 - b.u0) * a, b.v0 + (b.v1 - b.v0) * c);
+        p = toGlm(surface.position(uv));
+        nn = toGlm(surface.normal(uv));
+      },
+      std::clamp(int(b.cellsU * 4), 16, 256), std::clamp(int(b.cellsV * 4), 16, 256), glm::vec2(b.cellsU, b.cellsV));
+  shape.material.color = {0.78f, 0.77f, 0.74f};
+  shape.material.color2 = {0.55f, 0.57f, 0.60f};
+  if (chartCellsVary(surface, b)) {
+    shape.material.pattern = render::Pattern::SolidChecker;
+    shape.material.patternScale = glm::vec2(float(1.0 / R));
+  }
+  for (const auto& v : shape.mesh->vertices) {
+    const Vec3 p(v.position.x, v.position.y, v.position.z);
+    shape.box.lo = shape.box.lo.cwiseMin(p);
+    shape.box.hi = shape.box.hi.cwiseMax(p);
+  }
+  frameChartEdgesNearPath(surface, b, centres, R, shape);
+  return shape;
+}
+
+}  // namespace
 
 BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& model,
                    std::shared_ptr<const render::TextureImage> ballTexture,
@@ -36,9 +289,8 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
       facts_(std::move(facts)), dotMesh_(std::move(dotMesh)) {
   const double R = model.ballRadius;
   const double length = model.path->length();
-  const geometry::DarbouxSample start = model.path->at(0.0);
   const int samples = 1 + static_cast<int>(std::clamp(480.0 * std::max(1.0, model.path->turns()), 480.0, 20000.0));
-  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  SweptBox box;
   for (int i = 0; i < samples; ++i) {
     const double s = length * i / (samples - 1);
     const geometry::DarbouxSample f = model.path->at(s);
@@ -46,8 +298,8 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
     pathPoints_.push_back(f.point);
     const Vec3 c = f.centre(R);
     if (i % std::max(1, samples / 240) == 0) extent_.points.push_back(c);
-    lo = lo.cwiseMin(c - Vec3::Constant(R));
-    hi = hi.cwiseMax(c + Vec3::Constant(R));
+    box.lo = box.lo.cwiseMin(c - Vec3::Constant(R));
+    box.hi = box.hi.cwiseMax(c + Vec3::Constant(R));
   }
   centrePoints_ = extent_.points.size();
   const bool layoutShowsBall = spec.render.layout != scene::RenderLayout::Twin;
@@ -59,235 +311,68 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
   // 64 segments keep the silhouette within 0.2 px of a circle up to 1440p.
   trailGridCount_ = motion::trailGrid(spec, model).count;
   sphereMesh_ = spec.render.height > 1440 ? render::uvSphere(96, 48) : render::uvSphere(64, 32);
-  // Surfaces receive the ball's shadow but cast none: a surface shadowing
-  // itself only adds acne, and where the ball's shadow would pass through a
-  // surface to its far side, that side faces away from the light anyway.
-  surfaceMaterial_.castsShadow = false;
-  surfaceMaterial_.receivesShadow = true;
-  surfaceMaterial_.specular = 0.0f;  // matte: cheaper, and no glare on the board
-  surfaceMaterial_.shininess = 16.0f;
-  surfaceMaterial_.pattern = render::Pattern::Checker;
-  surfaceMaterial_.cull = render::Cull::None;
 
   // Each surface says how it is shown (geometry::SurfaceLook): a board, a
   // whole sphere, or its own chart.
   const geometry::SurfaceLook look = model.surface ? model.surface->look() : geometry::SurfaceLook{};
-  if (model.surface && look.mesh == geometry::SurfaceLook::Mesh::Board) {
-    // A square board under the path; checker cells of size R so that the
-    // distance rolled can be counted.
-    const Vec3 n = look.up;
-    const Vec3 mid = 0.5 * (lo + hi);
-    const Vec3 centre = mid - n * n.dot(mid);
-    const double half = 0.5 * (hi - lo).norm() + 3.0 * R;
-    const Vec3 e1 = geometry::defaultTangentFor(n), e2 = n.cross(e1);
-    surfaceMesh_ = render::parametricPatch(
-        [&](float a, float b, glm::vec3& p, glm::vec3& nn) {
-          p = toGlm(centre + (2.0 * a - 1.0) * half * e1 + (2.0 * b - 1.0) * half * e2);
-          nn = toGlm(n);
-        },
-        1, 1);  // flat: two triangles (large ones let llvmpipe shade whole tiles)
-    for (auto& v : surfaceMesh_->vertices) {
-      const Vec3 p(v.position.x, v.position.y, v.position.z);
-      v.uv = glm::vec2(float(p.dot(e1) / R), float(p.dot(e2) / R));  // cells of size R, a corner at the origin
-    }
-    surfaceMaterial_.color = {0.80f, 0.78f, 0.74f};
-    surfaceMaterial_.color2 = {0.55f, 0.56f, 0.58f};
-    surfaceMaterial_.patternScale = glm::vec2(1.0f);
-  } else if (model.surface && look.mesh == geometry::SurfaceLook::Mesh::Sphere) {
-    const double r = look.radius;
-    const double c0 = 0.0, c1 = std::numbers::pi;
-    if (look.cutAwayTowardEye) {
-      // Cut away the cap that faces the camera, so the ball inside is seen
-      // wherever it rolls; a rim line marks the cut.
-      const Vec3 toEye = towardEye(orbitAngles(spec, model));
-      const double offset = 0.25 * r;
-      surfaceMaterial_.cutPlane = glm::vec4(-toGlm(toEye), float(offset));
-      const Vec3 e1 = Vec3::UnitZ().cross(toEye).normalized(), e2 = toEye.cross(e1);
-      const double rimRadius = std::sqrt(r * r - offset * offset);
-      for (int k = 0; k <= 180; ++k) {
-        const double phi = 2.0 * std::numbers::pi * k / 180;
-        cutRim_.push_back(offset * toEye + rimRadius * (std::cos(phi) * e1 + std::sin(phi) * e2));
-      }
-    }
-    surfaceMesh_ = render::parametricPatch(
-        [&](float a, float b, glm::vec3& p, glm::vec3& nn) {
-          const double phi = 2.0 * std::numbers::pi * a, th = c0 + (c1 - c0) * b;
-          const Vec3 d(std::sin(th) * std::cos(phi), std::sin(th) * std::sin(phi), std::cos(th));
-          p = toGlm(r * d);
-          nn = toGlm(-d);  // the patch winds inward; lighting flips by facing anyway
-        },
-        128, std::max(8, int(64 * (c1 - c0) / std::numbers::pi)),
-        glm::vec2(24.0f, float(12.0 * (c1 - c0) / std::numbers::pi)));
-    surfaceMaterial_.color = {0.72f, 0.74f, 0.78f};
-    surfaceMaterial_.color2 = {0.52f, 0.56f, 0.62f};
-    // Inside, the whole sphere frames the picture; outside, the ball and its
-    // path do (a small circle on a big sphere would otherwise be lost).
-    for (int i = 0; i <= 8 && look.cutAwayTowardEye; ++i)
-      for (int k = 0; k < 16; ++k) {
-        const double th = c0 + (c1 - c0) * i / 8, phi = 2.0 * std::numbers::pi * k / 16;
-        extent_.points.push_back(r * Vec3(std::sin(th) * std::cos(phi), std::sin(th) * std::sin(phi), std::cos(th)));
-        surfacePoints_.push_back(extent_.points.size() - 1);
-      }
-    // Outside, the half of the sphere the path lies on, where a slightly
-    // wider framing holds it: its rim is the sphere's widest outline seen
-    // from the path's side, which a view's edge would otherwise cut in the
-    // middle of the frame (a small path on a big sphere).
-    Vec3 pathSide = Vec3::Zero();
-    for (const Vec3& p : pathPoints_) pathSide += p;
-    if (pathSide.norm() > 1e-9 * r * double(pathPoints_.size()) && !look.cutAwayTowardEye) {
-      pathSide.normalize();
-      for (int i = 0; i <= 12; ++i)
-        for (int k = 0; k < 24; ++k) {
-          const double th = std::numbers::pi * i / 12, phi = 2.0 * std::numbers::pi * k / 24;
-          const Vec3 d(std::sin(th) * std::cos(phi), std::sin(th) * std::sin(phi), std::cos(th));
-          if (d.dot(pathSide) >= -0.05) extent_.outline.push_back(r * d);
-        }
-    }
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], -r);
-      hi[k] = std::max(hi[k], r);
-    }
+  SurfaceAsDrawn shape{nullptr, matteCheckerMaterial(), box, {}, {}, {}, {}};
+  if (model.surface && look.mesh == geometry::SurfaceLook::Mesh::Board)
+    shape = boardSurface(look, box, R);
+  else if (model.surface && look.mesh == geometry::SurfaceLook::Mesh::Sphere)
+    shape = sphereSurface(look, box, spec, model, pathPoints_);
+  else if (model.surface)
+    shape = chartSurface(*model.surface, box, R, pathPoints_, extent_.points);
+  surfaceMesh_ = std::move(shape.mesh);
+  surfaceMaterial_ = shape.material;
+  cutRim_ = std::move(shape.cutRim);
+  framedEdges_ = std::move(shape.framedEdges);
+  extent_.outline = std::move(shape.outline);
+  for (const Vec3& p : shape.framedPoints) {
+    extent_.points.push_back(p);
+    surfacePoints_.push_back(extent_.points.size() - 1);
   }
-  else if (model.surface) {
-    // Any other surface (cylinder, torus, height field, ...): mesh its own
-    // chart x(u, v) over the parameter box the path visits, padded by about
-    // 3R on the surface, with checker cells of about R.
-    const geometry::Surface& surface = *model.surface;
-    const geometry::ParameterDomain domain = surface.domain();
-    double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300, speedU = 0.0, speedV = 0.0;
-    int found = 0;
-    for (std::size_t i = 0; i < pathPoints_.size(); i += std::max<std::size_t>(1, pathPoints_.size() / 200)) {
-      const auto uv = surface.parametersOf(pathPoints_[i]);
-      if (!uv) continue;
-      u0 = std::min(u0, uv->x());
-      u1 = std::max(u1, uv->x());
-      v0 = std::min(v0, uv->y());
-      v1 = std::max(v1, uv->y());
-      const geometry::SurfaceJet j = surface.jet(*uv);
-      speedU += j.xu.norm();
-      speedV += j.xv.norm();
-      ++found;
-    }
-    if (found > 0) {
-      speedU = std::max(speedU / found, 1e-9);
-      speedV = std::max(speedV / found, 1e-9);
-      const double eps = 1e-6;
-      u0 = std::max(u0 - 3.0 * R / speedU, domain.uMin + eps);
-      u1 = std::min(u1 + 3.0 * R / speedU, domain.uMax - eps);
-      v0 = std::max(v0 - 3.0 * R / speedV, domain.vMin + eps);
-      v1 = std::min(v1 + 3.0 * R / speedV, domain.vMax - eps);
-      auto cellsU = float((u1 - u0) * speedU / R), cellsV = float((v1 - v0) * speedV / R);
-      // An angle padded past one turn would mesh the surface twice over
-      // (two coincident sheets z-fight): keep one turn about the box's
-      // middle, with a whole even number of checker cells so the pattern
-      // closes across the seam.
-      auto oneTurn = [](double period, double& lo, double& hi, float& cells) {
-        if (period <= 0.0 || hi - lo < period) return;
-        const double mid = 0.5 * (lo + hi);
-        cells = std::max(2.0f, 2.0f * std::round(0.5f * cells * float(period / (hi - lo))));
-        lo = mid - 0.5 * period;
-        hi = mid + 0.5 * period;
-      };
-      oneTurn(domain.uPeriod, u0, u1, cellsU);
-      oneTurn(domain.vPeriod, v0, v1, cellsV);
-      surfaceMesh_ = render::parametricPatch(
-          [&](float a, float b, glm::vec3& p, glm::vec3& nn) {
-            const geometry::Vec2 uv(u0 + (u1 - u0) * a, v0 + (v1 - v0) * b);
-            p = toGlm(surface.position(uv));
-            nn = toGlm(surface.normal(uv));
-          },
-          std::clamp(int(cellsU * 4), 16, 256), std::clamp(int(cellsV * 4), 16, 256), glm::vec2(cellsU, cellsV));
-      surfaceMaterial_.color = {0.78f, 0.77f, 0.74f};
-      surfaceMaterial_.color2 = {0.55f, 0.57f, 0.60f};
-      // The chart's cells are about R where the path runs; where its
-      // stretch varies a lot over the box (a steep height field: an x-cell
-      // on the paraboloid's wall is R/27 across and long down the slope,
-      // fine stripes that beat with the pixels), world cubes of R show
-      // cells of about R everywhere instead.
-      double shortest = 1e300, longest = 0.0;
-      for (int i = 0; i <= 8; ++i)
-        for (int k = 0; k <= 8; ++k) {
-          const geometry::SurfaceJet j = surface.jet(geometry::Vec2(u0 + (u1 - u0) * i / 8.0, v0 + (v1 - v0) * k / 8.0));
-          for (const double edge : {j.xu.norm() * (u1 - u0) / cellsU, j.xv.norm() * (v1 - v0) / cellsV}) {
-            shortest = std::min(shortest, edge);
-            longest = std::max(longest, edge);
-          }
-        }
-      if (longest > kChartStretchForSolidChecker * shortest) {
-        surfaceMaterial_.pattern = render::Pattern::SolidChecker;
-        surfaceMaterial_.patternScale = glm::vec2(float(1.0 / R));
-      }
-      for (const auto& v : surfaceMesh_->vertices) {
-        const Vec3 p(v.position.x, v.position.y, v.position.z);
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-      }
-      // The drawn patch's edge near the path (a cylinder's top and bottom
-      // rims) is framed too, so that the frame does not cut the surface
-      // just past the ball; far corners (a paraboloid's rising rim) are not.
-      // Text keeps off these framed stretches of edge too (markImportant).
-      const std::size_t pathFramePoints = extent_.points.size();
-      std::vector<Vec3> runs[4];
-      auto endRun = [&](std::vector<Vec3>& run) {
-        if (run.size() > 1) framedEdges_.push_back(run);
-        run.clear();
-      };
-      for (int k = 0; k <= 32; ++k) {
-        const double t = k / 32.0;
-        const geometry::Vec2 edges[4] = {geometry::Vec2(u0 + (u1 - u0) * t, v0), geometry::Vec2(u0 + (u1 - u0) * t, v1),
-                                         geometry::Vec2(u0, v0 + (v1 - v0) * t), geometry::Vec2(u1, v0 + (v1 - v0) * t)};
-        for (int e = 0; e < 4; ++e) {
-          const Vec3 p = surface.position(edges[e]);
-          double nearest = 1e300;
-          for (std::size_t i = 0; i < pathFramePoints; ++i) nearest = std::min(nearest, (extent_.points[i] - p).norm());
-          if (nearest <= 4.5 * R) {
-            extent_.points.push_back(p);
-            surfacePoints_.push_back(extent_.points.size() - 1);
-            runs[e].push_back(p);
-          } else {
-            endRun(runs[e]);
-          }
-        }
-      }
-      for (std::vector<Vec3>& run : runs) endRun(run);
-    }
-  }
-  if (model.plate) {
-    // Brockett's plate translates with the top point: on a plane the top
-    // moves contactSpeedRatio (= 2) times as fast as the contact point, so
-    // the plate point above the circle's centre-opposite point traces the
-    // circle of radius R1 about the contact circle's centre.
-    discMesh_ = render::unitCylinder(96);
-    const double kg = start.geodesicCurvature;
-    plateCircleCentre_ = std::abs(kg) > 1e-12 ? Vec3(start.point + start.tangentNormal / kg) : Vec3(start.point);
-    hi = hi.cwiseMax(model.plate->initialTopPoint + 0.2 * R * start.normal.cwiseAbs());
-    const std::size_t pathFramePoints = extent_.points.size();
-    for (std::size_t i = 0; i < pathFramePoints; ++i) extent_.points.push_back(extent_.points[i] + 1.2 * R * start.normal);
-    // The glass disc reaches beyond the path (the plate's marked point
-    // circles at R1 = 2r): its rim, wherever the plate moves, must stay in
-    // frame and inside the far plane.
-    for (int i = 0; i < 24; ++i) {
-      const double s = length * i / 24.0;
-      const geometry::DarbouxSample f = model.path->at(s);
-      const Vec3 e1 = geometry::defaultTangentFor(f.normal), e2 = f.normal.cross(e1);
-      const auto [centre, radius] = plateDisc(s);
-      for (int k = 0; k < 16; ++k) {
-        const double phi = 2.0 * std::numbers::pi * k / 16.0;
-        const Vec3 p = centre + radius * (std::cos(phi) * e1 + std::sin(phi) * e2) + 0.1 * R * f.normal;
-        extent_.points.push_back(p);
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-      }
-    }
-  }
-  extent_.centre = 0.5 * (lo + hi);
-  extent_.radius = 0.5 * (hi - lo).norm();
+  box = shape.box;
+  if (model.plate) framePlate(box.lo, box.hi);
+  extent_.centre = 0.5 * (box.lo + box.hi);
+  extent_.radius = 0.5 * (box.hi - box.lo).norm();
   // A curved surface can stand between the eye and the ball: the camera
   // tests sight lines against it as drawn (a plane's board lies under the
   // ball and hides nothing).
   if (surfaceMesh_ && look.canHideBall) {
     const glm::vec4 cut = surfaceMaterial_.cutPlane;
     extent_.surface = std::make_shared<SightLines>(*surfaceMesh_, Eigen::Vector4d(cut.x, cut.y, cut.z, cut.w));
+  }
+}
+
+// Brockett's plate translates with the top point: on a plane the top moves
+// contactSpeedRatio (= 2) times as fast as the contact point, so the plate
+// point above the circle's centre-opposite point traces the circle of
+// radius R1 about the contact circle's centre.
+void BallView::framePlate(Vec3& lo, Vec3& hi) {
+  const double R = model_.ballRadius;
+  const double length = model_.path->length();
+  const geometry::DarbouxSample start = model_.path->at(0.0);
+  discMesh_ = render::unitCylinder(96);
+  const double kg = start.geodesicCurvature;
+  plateCircleCentre_ = std::abs(kg) > 1e-12 ? Vec3(start.point + start.tangentNormal / kg) : Vec3(start.point);
+  hi = hi.cwiseMax(model_.plate->initialTopPoint + 0.2 * R * start.normal.cwiseAbs());
+  const std::size_t pathFramePoints = extent_.points.size();
+  for (std::size_t i = 0; i < pathFramePoints; ++i) extent_.points.push_back(extent_.points[i] + 1.2 * R * start.normal);
+  // The glass disc reaches beyond the path (the plate's marked point
+  // circles at R1 = 2r): its rim, wherever the plate moves, must stay in
+  // frame and inside the far plane.
+  for (int i = 0; i < 24; ++i) {
+    const double s = length * i / 24.0;
+    const geometry::DarbouxSample f = model_.path->at(s);
+    const Vec3 e1 = geometry::defaultTangentFor(f.normal), e2 = f.normal.cross(e1);
+    const auto [centre, radius] = plateDisc(s);
+    for (int k = 0; k < 16; ++k) {
+      const double phi = 2.0 * std::numbers::pi * k / 16.0;
+      const Vec3 p = centre + radius * (std::cos(phi) * e1 + std::sin(phi) * e2) + 0.1 * R * f.normal;
+      extent_.points.push_back(p);
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
   }
 }
 
@@ -389,9 +474,23 @@ render::Material BallView::cutTowardEye(const Vec3& eye, const Vec3& centre,
 
 void BallView::add(render::DrawList& list, const FrameOrientations& frame, int view,
                    const std::optional<Vec3>& cutAwayFrom) const {
-  const double R = model_.ballRadius;
   const double s = frame.current.s;
+  addSurface(list, s, view, cutAwayFrom);
+  addPath(list, s, view);
+  if (frame.strobe.empty()) {
+    addBall(list, frame.current, view);
+  } else {
+    for (const auto& pose : frame.strobe) addBall(list, pose, view);
+  }
+  addMarkerTrail(list, frame, view);
+  if (model_.plate && frame.strobe.empty()) addPlate(list, s, view);
+  if (facts_ && facts_->marks) addMarks(list, s, frame.strobe.empty(), view);
+}
 
+// The surface, cut away toward `cutAwayFrom` where it hides the ball, with
+// the rims of its cuts.
+void BallView::addSurface(render::DrawList& list, double s, int view, const std::optional<Vec3>& cutAwayFrom) const {
+  const double R = model_.ballRadius;
   if (surfaceMesh_) {
     std::vector<std::vector<Vec3>> rims;
     const render::Material material =
@@ -415,8 +514,11 @@ void BallView::add(render::DrawList& list, const FrameOrientations& frame, int v
     for (const Vec3& p : cutRim_) rim.points.push_back(toGlm(p));
     list.polylines.push_back(rim);
   }
+}
 
-  // The contact path, lifted a hair along the normal; travelled part on top.
+// The contact path, lifted a hair along the normal; travelled part on top.
+void BallView::addPath(render::DrawList& list, double s, int view) const {
+  const double R = model_.ballRadius;
   render::PolylineItem full, travelled;
   full.color = kPathLineColor;
   full.widthPx = std::max(1.5f, float(list.height) / 400.0f);
@@ -433,8 +535,12 @@ void BallView::add(render::DrawList& list, const FrameOrientations& frame, int v
   travelled.points.push_back(toGlm(model_.path->point(s) + 0.004 * R * model_.path->normal(s)));
   list.polylines.push_back(full);
   addGrowingLine(list, travelled, travelledSettled);  // grows with s
+}
 
-  // The ball(s): texture in body coordinates, rotated by worldFromBody.
+// A ball at `pose`: texture in body coordinates, rotated by worldFromBody,
+// and its marker dot.
+void BallView::addBall(render::DrawList& list, const OrientedSample& pose, int view) const {
+  const double R = model_.ballRadius;
   render::Material ballMaterial;
   ballMaterial.pattern = render::Pattern::Texture;
   ballMaterial.texture = ballTexture_;
@@ -445,28 +551,24 @@ void BallView::add(render::DrawList& list, const FrameOrientations& frame, int v
   markerMaterial.color = kMarkerColor;
   markerMaterial.specular = 0.5f;
   markerMaterial.shininess = 80.0f;
-  auto addBall = [&](const OrientedSample& pose) {
-    const Vec3 c = model_.path->at(pose.s).centre(R);
-    const glm::mat4 worldFromBody = rotationOf(pose.q);
-    list.meshes.push_back({sphereMesh_,
-                           glm::translate(glm::mat4(1.0f), toGlm(c)) * worldFromBody * glm::scale(glm::mat4(1.0f), glm::vec3(float(R))),
-                           ballMaterial, view});
-    list.meshes.back().dynamic = true;
-    list.meshes.back().sphere = true;
-    const Vec3 marker = c + 0.97 * R * pose.q.rotate(markerBody_);
-    list.meshes.push_back({dotMesh_,
-                           glm::translate(glm::mat4(1.0f), toGlm(marker)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.13 * R))),
-                           markerMaterial, view});
-    list.meshes.back().dynamic = true;
-    list.meshes.back().sphere = true;
-  };
-  if (frame.strobe.empty()) {
-    addBall(frame.current);
-  } else {
-    for (const auto& pose : frame.strobe) addBall(pose);
-  }
+  const Vec3 c = model_.path->at(pose.s).centre(R);
+  const glm::mat4 worldFromBody = rotationOf(pose.q);
+  list.meshes.push_back({sphereMesh_,
+                         glm::translate(glm::mat4(1.0f), toGlm(c)) * worldFromBody * glm::scale(glm::mat4(1.0f), glm::vec3(float(R))),
+                         ballMaterial, view});
+  list.meshes.back().dynamic = true;
+  list.meshes.back().sphere = true;
+  const Vec3 marker = c + 0.97 * R * pose.q.rotate(markerBody_);
+  list.meshes.push_back({dotMesh_,
+                         glm::translate(glm::mat4(1.0f), toGlm(marker)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.13 * R))),
+                         markerMaterial, view});
+  list.meshes.back().dynamic = true;
+  list.meshes.back().sphere = true;
+}
 
-  // The marker's path through space: cusps where it touches the surface.
+// The marker's path through space: cusps where it touches the surface.
+void BallView::addMarkerTrail(render::DrawList& list, const FrameOrientations& frame, int view) const {
+  const double R = model_.ballRadius;
   if (frame.trail.size() >= 2) {
     render::PolylineItem markerTrail;
     markerTrail.color = kMarkerTrailColor;
@@ -478,56 +580,57 @@ void BallView::add(render::DrawList& list, const FrameOrientations& frame, int v
     // All its points but the last lie on the trail grid.
     addGrowingLine(list, markerTrail, settledPoints(frame.trail.size() - 1, trailGridCount_));
   }
+}
 
-  if (model_.plate && frame.strobe.empty()) {
-    const geometry::DarbouxSample f = model_.path->at(s);
-    const double thickness = 0.08 * R;
-    // The plate point above the circle's far side traces the circle of
-    // radius R1 = ratio · r about the contact circle's centre.
-    const Vec3 plateCentre = platePoint(s, 0.0);
-    const auto [discCentre, discRadius] = plateDisc(s);
-    const glm::vec3 n = toGlm(f.normal);
-    const glm::vec3 e1 = toGlm(geometry::defaultTangentFor(f.normal)), e2 = glm::cross(n, e1);
-    glm::mat4 disc(1.0f);
-    disc[0] = glm::vec4(e1 * float(discRadius), 0.0f);
-    disc[1] = glm::vec4(e2 * float(discRadius), 0.0f);
-    disc[2] = glm::vec4(n * float(thickness), 0.0f);
-    disc[3] = glm::vec4(toGlm(discCentre), 1.0f);
-    list.meshes.push_back({discMesh_, disc, glassMaterial({0.55f, 0.80f, 0.95f}, 0.14f, 0.9f, 120.0f), view});
-    list.meshes.back().dynamic = true;  // the plate moves with the ball
-    render::PolylineItem rim;  // the glass edge, so the plate reads as a sheet
-    rim.color = opaqueLine({0.85f, 0.95f, 1.0f}, 0.9f);
-    rim.widthPx = std::max(1.2f, float(list.height) / 450.0f);
-    rim.view = view;
-    rim.dynamic = true;
-    for (int k = 0; k <= 128; ++k) {
-      const float phi = 2.0f * std::numbers::pi_v<float> * float(k) / 128.0f;
-      rim.points.push_back(glm::vec3(disc * glm::vec4(std::cos(phi), std::sin(phi), 1.0f, 1.0f)));
-    }
-    list.polylines.push_back(rim);
-    // The plate's own marker: a dot at its centre, and the circle it traces.
-    render::Material dot;
-    dot.color = kPlateColor;
-    glm::mat4 dotModel(1.0f);
-    dotModel[0] = glm::vec4(e1 * float(0.12 * R), 0.0f);
-    dotModel[1] = glm::vec4(e2 * float(0.12 * R), 0.0f);
-    dotModel[2] = glm::vec4(n * float(0.02 * R), 0.0f);
-    dotModel[3] = glm::vec4(toGlm(plateCentre + thickness * f.normal), 1.0f);
-    list.meshes.push_back({discMesh_, dotModel, dot, view});
-    list.meshes.back().dynamic = true;
-    render::PolylineItem plateTrail;
-    plateTrail.color = kPlateTrailColor;
-    plateTrail.widthPx = std::max(1.2f, float(list.height) / 450.0f);
-    plateTrail.view = view;
-    plateTrail.labelsKeepOff = true;
-    for (std::size_t i = 0; i < pathS_.size(); ++i) {
-      if (pathS_[i] > s) break;
-      plateTrail.points.push_back(toGlm(platePoint(pathS_[i], thickness * 1.05)));
-    }
-    addGrowingLine(list, plateTrail, settledPoints(plateTrail.points.size(), pathS_.size()));
+// Brockett's plate at s: the glass disc and its rim, the plate's marker
+// dot and the trail it has drawn so far.
+void BallView::addPlate(render::DrawList& list, double s, int view) const {
+  const double R = model_.ballRadius;
+  const geometry::DarbouxSample f = model_.path->at(s);
+  const double thickness = 0.08 * R;
+  // The plate point above the circle's far side traces the circle of
+  // radius R1 = ratio · r about the contact circle's centre.
+  const Vec3 plateCentre = platePoint(s, 0.0);
+  const auto [discCentre, discRadius] = plateDisc(s);
+  const glm::vec3 n = toGlm(f.normal);
+  const glm::vec3 e1 = toGlm(geometry::defaultTangentFor(f.normal)), e2 = glm::cross(n, e1);
+  glm::mat4 disc(1.0f);
+  disc[0] = glm::vec4(e1 * float(discRadius), 0.0f);
+  disc[1] = glm::vec4(e2 * float(discRadius), 0.0f);
+  disc[2] = glm::vec4(n * float(thickness), 0.0f);
+  disc[3] = glm::vec4(toGlm(discCentre), 1.0f);
+  list.meshes.push_back({discMesh_, disc, glassMaterial({0.55f, 0.80f, 0.95f}, 0.14f, 0.9f, 120.0f), view});
+  list.meshes.back().dynamic = true;  // the plate moves with the ball
+  render::PolylineItem rim;  // the glass edge, so the plate reads as a sheet
+  rim.color = opaqueLine({0.85f, 0.95f, 1.0f}, 0.9f);
+  rim.widthPx = std::max(1.2f, float(list.height) / 450.0f);
+  rim.view = view;
+  rim.dynamic = true;
+  for (int k = 0; k <= 128; ++k) {
+    const float phi = 2.0f * std::numbers::pi_v<float> * float(k) / 128.0f;
+    rim.points.push_back(glm::vec3(disc * glm::vec4(std::cos(phi), std::sin(phi), 1.0f, 1.0f)));
   }
-  if (facts_ && facts_->marks) addMarks(list, s, frame.strobe.empty(), view);
-
+  list.polylines.push_back(rim);
+  // The plate's own marker: a dot at its centre, and the circle it traces.
+  render::Material dot;
+  dot.color = kPlateColor;
+  glm::mat4 dotModel(1.0f);
+  dotModel[0] = glm::vec4(e1 * float(0.12 * R), 0.0f);
+  dotModel[1] = glm::vec4(e2 * float(0.12 * R), 0.0f);
+  dotModel[2] = glm::vec4(n * float(0.02 * R), 0.0f);
+  dotModel[3] = glm::vec4(toGlm(plateCentre + thickness * f.normal), 1.0f);
+  list.meshes.push_back({discMesh_, dotModel, dot, view});
+  list.meshes.back().dynamic = true;
+  render::PolylineItem plateTrail;
+  plateTrail.color = kPlateTrailColor;
+  plateTrail.widthPx = std::max(1.2f, float(list.height) / 450.0f);
+  plateTrail.view = view;
+  plateTrail.labelsKeepOff = true;
+  for (std::size_t i = 0; i < pathS_.size(); ++i) {
+    if (pathS_[i] > s) break;
+    plateTrail.points.push_back(toGlm(platePoint(pathS_[i], thickness * 1.05)));
+  }
+  addGrowingLine(list, plateTrail, settledPoints(plateTrail.points.size(), pathS_.size()));
 }
 
 Vec3 BallView::platePoint(double s, double lift) const {

@@ -63,7 +63,15 @@ class BallView {
   void markImportant(Occupancy& occupancy, const render::View& v, double s, bool withPath) const;
 
  private:
+  void addSurface(render::DrawList& list, double s, int view, const std::optional<geometry::Vec3>& cutAwayFrom) const;
+  void addPath(render::DrawList& list, double s, int view) const;
+  void addBall(render::DrawList& list, const motion::OrientedSample& pose, int view) const;
+  void addMarkerTrail(render::DrawList& list, const motion::FrameOrientations& frame, int view) const;
+  void addPlate(render::DrawList& list, double s, int view) const;
   void addMarks(render::DrawList& list, double s, bool plateShown, int view) const;
+  // Brockett's plate: its disc mesh, the circle its point traces, and what
+  // the framing holds of it (points, and the box lo..hi grown by its disc).
+  void framePlate(geometry::Vec3& lo, geometry::Vec3& hi);
   // The surface's material for a frame whose eye is `eye` with the ball at
   // `centre`, cut away towards the eye as far as the ball is hidden, and
   // the cut's rim (empty where nothing is cut).

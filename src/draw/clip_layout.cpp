@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <mutex>
+#include <optional>
 
 #include "render/font_atlas.hpp"
 
@@ -257,8 +258,152 @@ bool sameWindow(const NdcWindow& a, const NdcWindow& b) {
 
 namespace {
 
+// No room even with the narrowest window: a block drops its last line
+// (down to what it keeps; the lowest givesWay first, among equals the one
+// that failed, `failed`); a broken line goes whole (its pieces are
+// continued lines). False where no block has a line to drop.
+bool dropLastLine(std::vector<TextBlock>& blocks, std::vector<glm::vec2>& sizes, std::size_t failed) {
+  std::size_t i = blocks.size();
+  for (std::size_t k = 0; k < blocks.size(); ++k) {
+    if (blocks[k].lines.empty() || blocks[k].lines.size() <= blocks[k].keep) continue;
+    if (i == blocks.size() || blocks[k].givesWay < blocks[i].givesWay ||
+        (blocks[k].givesWay == blocks[i].givesWay && k == failed))
+      i = k;
+  }
+  if (i == blocks.size()) return false;
+  TextBlock& b = blocks[i];
+  float step = 0.0f;
+  for (bool piece = true; piece && !b.lines.empty();) {
+    piece = b.lines.back().continued;
+    step += kLineStep * b.lines.back().sizePx;
+    b.lines.pop_back();
+  }
+  sizes[i] = b.lines.empty() ? glm::vec2(0.0f) : glm::vec2(sizes[i].x, sizes[i].y - step);
+  return true;
+}
+
+// The first block that found no free slot (index < 0: none), where it was
+// put instead (on its first slot), and the rectangles placed before it.
+struct FailedBlock {
+  int index = -1;
+  Rect rect{};
+  std::vector<Rect> placedBefore;
+};
+
+// Puts each block on the first of its slots where it fits the view and
+// keeps half an em clear of what the occupancy marks (with fixedWindow, any
+// corner: a camera the scene fixes cannot make room); a block that finds
+// none lies on its first slot. Sets layout.origins and layout.found.
+FailedBlock placeBlocks(int w, int h, const std::vector<TextBlock>& blocks, const std::vector<glm::vec2>& sizes,
+                        const Occupancy& occupancy, bool fixedWindow, ViewLayout& layout) {
+  layout.origins.assign(blocks.size(), glm::vec2(0.0f));
+  layout.found.assign(blocks.size(), true);
+  std::vector<Rect> placed;
+  FailedBlock failed;
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    if (blocks[i].lines.empty()) continue;
+    const float margin = 0.5f * blocks[i].lines.front().sizePx;
+    bool found = false;
+    std::vector<Slot> slots = blocks[i].slots;
+    if (fixedWindow)
+      for (const Slot extra : {Slot::TopLeft, Slot::TopRight, Slot::BottomLeft, Slot::BottomRight})
+        if (std::find(slots.begin(), slots.end(), extra) == slots.end()) slots.push_back(extra);
+    for (const Slot slot : slots) {
+      const Rect r = stackedRect(slot, sizes[i], w, h, margin, placed);
+      if (r.lo.x < 0.0f || r.lo.y < 0.0f || r.hi.x > float(w) || r.hi.y > float(h)) continue;
+      if (occupancy.anyIn(r.lo - glm::vec2(margin), r.hi + glm::vec2(margin))) continue;
+      layout.origins[i] = r.lo;
+      placed.push_back(r);
+      found = true;
+      break;
+    }
+    if (!found) {
+      layout.found[i] = false;
+      const Rect r = stackedRect(blocks[i].slots.front(), sizes[i], w, h, margin, placed);
+      layout.origins[i] = r.lo;
+      if (failed.index < 0) failed = {int(i), r, placed};
+      placed.push_back(r);
+    }
+  }
+  return failed;
+}
+
+// What layOutBlocks needs to narrow the window for text.
+struct WindowLimits {
+  const std::function<Occupancy(const NdcWindow&)>& occupancyFor;
+  double minWindow, minSubjectShare;
+};
+
+// The window narrowed to leave the failed block's column or band free,
+// whichever costs the subject less (its scale is limited by the window's
+// width over its projected width, or height over height); the other if
+// that one is not usable: the same window, under minWindow, or (a figure's
+// subject keeps its share of the view: its text gives way first) leaving
+// the subject under minSubjectShare. A side already given to text grows
+// (the block stacks there) before a new one is taken. None where neither
+// is usable.
+std::optional<NdcWindow> windowClearOf(int w, int h, const TextBlock& block, glm::vec2 size, FailedBlock failed,
+                                       const NdcWindow& window, const Occupancy& occupancy,
+                                       const WindowLimits& limits) {
+  auto sideTaken = [&](Slot sl) {
+    if (isTop(sl) && window.y1 < 1.0) return true;
+    if (!isTop(sl) && window.y0 > -1.0) return true;
+    if (!isCentre(sl) && isLeft(sl) && window.x0 > -1.0) return true;
+    return !isCentre(sl) && !isLeft(sl) && window.x1 < 1.0;
+  };
+  Slot slot = block.slots.front();
+  for (const Slot sl : block.slots)
+    if (sideTaken(sl)) {
+      slot = sl;
+      failed.rect = stackedRect(sl, size, w, h, 0.5f * block.lines.front().sizePx, failed.placedBefore);
+      break;
+    }
+  const Rect& failedRect = failed.rect;
+  const float margin = block.lines.front().sizePx;
+  // (The fit pads the ball by R; perspective and the gap want a little more.)
+  const double column =
+      (isLeft(slot) ? double(failedRect.hi.x + 2.0f * margin) : double(w - failedRect.lo.x + 2.0f * margin)) / w + 0.02;
+  const double band =
+      (isTop(slot) ? double(failedRect.hi.y + 2.0f * margin) : double(h - failedRect.lo.y + 2.0f * margin)) / h + 0.02;
+  auto narrowed = [&](bool byColumn) {
+    NdcWindow win = window;
+    if (byColumn) {
+      if (isLeft(slot)) win.x0 = std::max(win.x0, -1.0 + 2.0 * column);
+      else win.x1 = std::min(win.x1, 1.0 - 2.0 * column);
+    } else if (isTop(slot)) {
+      win.y1 = std::min(win.y1, 1.0 - 2.0 * band);
+    } else {
+      win.y0 = std::max(win.y0, -1.0 + 2.0 * band);
+    }
+    return win;
+  };
+  auto subjectShare = [&](const NdcWindow& win) {
+    const auto [lo, hi] = limits.occupancyFor(win).bounds();
+    return hi.x > lo.x ? double(std::max(hi.x - lo.x, hi.y - lo.y)) / double(std::min(w, h)) : 1.0;
+  };
+  auto usable = [&](const NdcWindow& win) {
+    return !sameWindow(win, window) && win.x1 - win.x0 >= limits.minWindow && win.y1 - win.y0 >= limits.minWindow &&
+           (limits.minSubjectShare <= 0.0 || subjectShare(win) >= limits.minSubjectShare);
+  };
+  const auto [subjectLo, subjectHi] = occupancy.bounds();
+  const double subjectAspect =
+      subjectHi.x > subjectLo.x ? double(subjectHi.x - subjectLo.x) / double(subjectHi.y - subjectLo.y) : 1.0;
+  auto scaleLeft = [&](const NdcWindow& win) {
+    return std::min((win.x1 - win.x0) * w / subjectAspect, (win.y1 - win.y0) * double(h));
+  };
+  const bool columnAllowed = !isCentre(slot) && !block.bandOnly;
+  const bool columnFirst = columnAllowed && scaleLeft(narrowed(true)) >= scaleLeft(narrowed(false));
+  NdcWindow next = narrowed(columnFirst);
+  if (!usable(next) && columnAllowed) next = narrowed(!columnFirst);
+  if (!usable(next)) return std::nullopt;
+  return next;
+}
+
 // One pass of layoutView with a given least window; `clear` says whether
 // every block found room (else the last failed one sits on its first slot).
+// Each attempt places the blocks; where one finds no room, the window is
+// narrowed for it (windowClearOf), else a line is dropped (dropLastLine)
+// and the layout starts again from the widest window.
 ViewLayout layOutBlocks(int w, int h, const std::vector<TextBlock>& given,
                         const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow,
                         double minWindow, double minSubjectShare, bool& clear) {
@@ -266,28 +411,8 @@ ViewLayout layOutBlocks(int w, int h, const std::vector<TextBlock>& given,
   std::vector<TextBlock> blocks = given;
   std::vector<glm::vec2> sizes;
   for (const TextBlock& b : blocks) sizes.push_back(blockSize(b));
-  // No room even with the narrowest window: a block drops its last line
-  // (down to what it keeps; the lowest givesWay first, among equals the one
-  // that failed), and the layout starts again from the widest window.
   auto dropLine = [&](std::size_t failed) {
-    // The block that gives way first; among equals, the one that found no room.
-    std::size_t i = blocks.size();
-    for (std::size_t k = 0; k < blocks.size(); ++k) {
-      if (blocks[k].lines.empty() || blocks[k].lines.size() <= blocks[k].keep) continue;
-      if (i == blocks.size() || blocks[k].givesWay < blocks[i].givesWay ||
-          (blocks[k].givesWay == blocks[i].givesWay && k == failed))
-        i = k;
-    }
-    if (i == blocks.size()) return false;
-    TextBlock& b = blocks[i];
-    // A broken line goes whole (its pieces are continued lines).
-    float step = 0.0f;
-    for (bool piece = true; piece && !b.lines.empty();) {
-      piece = b.lines.back().continued;
-      step += kLineStep * b.lines.back().sizePx;
-      b.lines.pop_back();
-    }
-    sizes[i] = b.lines.empty() ? glm::vec2(0.0f) : glm::vec2(sizes[i].x, sizes[i].y - step);
+    if (!dropLastLine(blocks, sizes, failed)) return false;
     layout.window = NdcWindow{};
     return true;
   };
@@ -296,117 +421,24 @@ ViewLayout layOutBlocks(int w, int h, const std::vector<TextBlock>& given,
     for (const TextBlock& b : blocks) layout.lines.push_back(b.lines.size());
     return layout;
   };
+  const WindowLimits limits{occupancyFor, minWindow, minSubjectShare};
   for (int attempt = 0;; ++attempt) {
     const Occupancy occupancy = occupancyFor(layout.window);
-    layout.origins.assign(blocks.size(), glm::vec2(0.0f));
-    std::vector<Rect> placed;
-    layout.found.assign(blocks.size(), true);
-    int failed = -1;
-    Rect failedRect{};
-    std::size_t placedBeforeFailed = 0;
-    for (std::size_t i = 0; i < blocks.size(); ++i) {
-      if (blocks[i].lines.empty()) continue;
-      const float margin = 0.5f * blocks[i].lines.front().sizePx;
-      bool found = false;
-      // A camera the scene fixes cannot make room: any corner will do.
-      std::vector<Slot> slots = blocks[i].slots;
-      if (fixedWindow)
-        for (const Slot extra : {Slot::TopLeft, Slot::TopRight, Slot::BottomLeft, Slot::BottomRight})
-          if (std::find(slots.begin(), slots.end(), extra) == slots.end()) slots.push_back(extra);
-      for (const Slot slot : slots) {
-        const Rect r = stackedRect(slot, sizes[i], w, h, margin, placed);
-        if (r.lo.x < 0.0f || r.lo.y < 0.0f || r.hi.x > float(w) || r.hi.y > float(h)) continue;
-        // Keep a gap of half an em between the text and what it must not cover.
-        if (occupancy.anyIn(r.lo - glm::vec2(margin), r.hi + glm::vec2(margin))) continue;
-        layout.origins[i] = r.lo;
-        placed.push_back(r);
-        found = true;
-        break;
-      }
-      if (!found) {
-        layout.found[i] = false;
-        const std::size_t before = placed.size();
-        const Rect r = stackedRect(blocks[i].slots.front(), sizes[i], w, h, margin, placed);
-        layout.origins[i] = r.lo;
-        placed.push_back(r);
-        if (failed < 0) {
-          failed = int(i);
-          failedRect = r;
-          placedBeforeFailed = before;
-        }
-      }
-    }
-    clear = failed < 0;
-    if (failed < 0 || attempt >= 40) return finish();
+    const FailedBlock failed = placeBlocks(w, h, blocks, sizes, occupancy, fixedWindow, layout);
+    clear = failed.index < 0;
+    if (failed.index < 0 || attempt >= 40) return finish();
+    const auto f = std::size_t(failed.index);
     if (fixedWindow) {
-      if (dropLine(std::size_t(failed))) continue;
+      if (dropLine(f)) continue;
       return finish();
     }
-    // Narrow the window to leave the failed block's column or band free,
-    // whichever is the smaller share of the view; the other if that one is
-    // taken already or leaves under 35 % of the view.
-    // A side already given to text grows (the block stacks there) before a
-    // new one is taken.
-    auto sideTaken = [&](Slot sl) {
-      if (isTop(sl) && layout.window.y1 < 1.0) return true;
-      if (!isTop(sl) && layout.window.y0 > -1.0) return true;
-      if (!isCentre(sl) && isLeft(sl) && layout.window.x0 > -1.0) return true;
-      return !isCentre(sl) && !isLeft(sl) && layout.window.x1 < 1.0;
-    };
-    Slot slot = blocks[std::size_t(failed)].slots.front();
-    for (const Slot sl : blocks[std::size_t(failed)].slots)
-      if (sideTaken(sl)) {
-        slot = sl;
-        const std::vector<Rect> before(placed.begin(), placed.begin() + std::ptrdiff_t(placedBeforeFailed));
-        failedRect = stackedRect(sl, sizes[std::size_t(failed)], w, h,
-                                 0.5f * blocks[std::size_t(failed)].lines.front().sizePx, before);
-        break;
-      }
-    const float margin = blocks[std::size_t(failed)].lines.front().sizePx;
-    // (The fit pads the ball by R; perspective and the gap want a little more.)
-    const double column =
-        (isLeft(slot) ? double(failedRect.hi.x + 2.0f * margin) : double(w - failedRect.lo.x + 2.0f * margin)) / w + 0.02;
-    const double band =
-        (isTop(slot) ? double(failedRect.hi.y + 2.0f * margin) : double(h - failedRect.lo.y + 2.0f * margin)) / h + 0.02;
-    auto narrowed = [&](bool byColumn) {
-      NdcWindow win = layout.window;
-      if (byColumn) {
-        if (isLeft(slot)) win.x0 = std::max(win.x0, -1.0 + 2.0 * column);
-        else win.x1 = std::min(win.x1, 1.0 - 2.0 * column);
-      } else if (isTop(slot)) {
-        win.y1 = std::min(win.y1, 1.0 - 2.0 * band);
-      } else {
-        win.y0 = std::max(win.y0, -1.0 + 2.0 * band);
-      }
-      return win;
-    };
-    // (A figure's subject keeps its share of the view: its text gives way
-    // first.)
-    auto subjectShare = [&](const NdcWindow& win) {
-      const auto [lo, hi] = occupancyFor(win).bounds();
-      return hi.x > lo.x ? double(std::max(hi.x - lo.x, hi.y - lo.y)) / double(std::min(w, h)) : 1.0;
-    };
-    auto usable = [&](const NdcWindow& win) {
-      return !sameWindow(win, layout.window) && win.x1 - win.x0 >= minWindow && win.y1 - win.y0 >= minWindow &&
-             (minSubjectShare <= 0.0 || subjectShare(win) >= minSubjectShare);
-    };
-    // Which costs the subject less: its scale is limited by the window's
-    // width over its projected width, or height over height.
-    const auto [subjectLo, subjectHi] = occupancy.bounds();
-    const double subjectAspect =
-        subjectHi.x > subjectLo.x ? double(subjectHi.x - subjectLo.x) / double(subjectHi.y - subjectLo.y) : 1.0;
-    auto scaleLeft = [&](const NdcWindow& win) {
-      return std::min((win.x1 - win.x0) * w / subjectAspect, (win.y1 - win.y0) * double(h));
-    };
-    const bool columnAllowed = !isCentre(slot) && !blocks[std::size_t(failed)].bandOnly;
-    const bool columnFirst = columnAllowed && scaleLeft(narrowed(true)) >= scaleLeft(narrowed(false));
-    NdcWindow next = narrowed(columnFirst);
-    if (!usable(next) && columnAllowed) next = narrowed(!columnFirst);
-    if (!usable(next)) {
-      if (dropLine(std::size_t(failed))) continue;
+    const std::optional<NdcWindow> next =
+        windowClearOf(w, h, blocks[f], sizes[f], failed, layout.window, occupancy, limits);
+    if (!next) {
+      if (dropLine(f)) continue;
       return finish();
     }
-    layout.window = next;
+    layout.window = *next;
   }
 }
 

@@ -104,16 +104,10 @@ std::vector<Segment> obstaclesOf(const render::DrawList& list, int view) {
   return obstacles;
 }
 
-}  // namespace
-
-void keepLabelsClear(render::DrawList& list, int view, std::size_t first, bool nearestToAnchor) {
-  const render::View& v = list.views[std::size_t(view)];
-  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
-  const auto project = projectorOf(v, clipFromWorld);
-  std::vector<Segment> obstacles = obstaclesOf(list, view);
-
-  // The text blocks' plates and their lines (placed before: the layout is
-  // decided per clip) are taken like labels already placed.
+// The text blocks' plates in the view's pixels (placed before labels: the
+// layout is decided per clip), taken like labels already placed.
+template <typename Project>
+std::vector<Box> textPlateBoxes(const render::DrawList& list, int view, const Project& project) {
   std::vector<Box> placed;
   for (const render::MeshItem& m : list.meshes) {
     if (m.view != view || !m.textPlate || !m.mesh) continue;
@@ -125,87 +119,94 @@ void keepLabelsClear(render::DrawList& list, int view, std::size_t first, bool n
     }
     placed.push_back(b);
   }
-  // How many things a box meets (the view's edge and another label count
-  // as many as every segment together: a label must stay whole and apart).
-  auto cost = [&](const Box& box) {
-    const int heavy = int(obstacles.size()) + 1;
-    int n = 0;
-    if (box.lo.x < 0.0f || box.lo.y < 0.0f || box.hi.x > float(v.width) || box.hi.y > float(v.height)) n += heavy;
-    for (const Box& b : placed)
-      if (box.lo.x < b.hi.x && b.lo.x < box.hi.x && box.lo.y < b.hi.y && b.lo.y < box.hi.y) n += heavy;
-    for (const Segment& s : obstacles)
-      if (meets(box, s)) ++n;
-    return n;
-  };
-  struct Leader {
-    std::size_t label;
-    glm::vec2 anchor;
-    Box box;
-  };
-  std::vector<Leader> leaders;
-  // Last first: the pole labels before the axis names (z says what |0⟩
-  // says), so where there is no room it is an axis name that goes.
-  for (std::size_t i = list.labels.size(); i-- > first;) {
-    render::LabelItem& l = list.labels[i];
-    if (l.view != view || !l.worldAnchored) continue;
-    float w = 1.0f;
-    const glm::vec2 anchor = project(l.anchor, w);
-    if (w <= 1e-4f) continue;
-    // (Padded by a quarter em; a figure's Bloch labels, set close, by an eighth.)
-    const float width = textWidthPx(l.text, l.sizePx, l.bold), pad = (nearestToAnchor ? 0.125f : 0.25f) * l.sizePx;
-    const float shift = l.align == render::Align::Left ? 0.5f * width : l.align == render::Align::Right ? -0.5f * width : 0.0f;
-    auto boxAt = [&](glm::vec2 offset) {
-      const glm::vec2 c = anchor + offset + glm::vec2(shift, 0.0f);
-      return Box{c - glm::vec2(0.5f * width + pad, 0.5f * l.sizePx + pad), c + glm::vec2(0.5f * width + pad, 0.5f * l.sizePx + pad)};
-    };
-    // Its own place first, then rings half an em apart out to 6 em: the
-    // nearest clear place, so a label stays by what it names.
-    glm::vec2 best = l.offsetPx;
-    int bestCost = cost(boxAt(best));
-    if (nearestToAnchor && bestCost > 0) {
-      // Rings a quarter em apart, tried in the order of their boxes'
-      // distance from the anchor: the clear place whose box is nearest the
-      // point the label names.
-      std::vector<std::pair<float, glm::vec2>> candidates;
-      for (float radius = 0.25f; radius <= 6.0f; radius += 0.25f)
-        for (int k = 0; k < 48; ++k) {
-          const float angle = 2.0f * std::numbers::pi_v<float> * float(k) / 48.0f;
-          const glm::vec2 offset = l.offsetPx + radius * l.sizePx * glm::vec2(std::cos(angle), std::sin(angle));
-          const Box b = boxAt(offset);
-          candidates.emplace_back(glm::length(anchor - glm::clamp(anchor, b.lo, b.hi)) + 0.01f * radius, offset);
-        }
-      std::sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-      for (const auto& [distance, offset] : candidates) {
-        const int c = cost(boxAt(offset));
-        if (c < bestCost) best = offset, bestCost = c;
-        if (bestCost == 0) break;
-      }
-    }
-    for (float radius = 0.5f; radius <= 6.0f && bestCost > 0; radius += 0.5f)
-      for (int k = 0; k < 24 && bestCost > 0; ++k) {
-        const float angle = 2.0f * std::numbers::pi_v<float> * float(k) / 24.0f;
-        const glm::vec2 offset = l.offsetPx + radius * l.sizePx * glm::vec2(std::cos(angle), std::sin(angle));
-        const int c = cost(boxAt(offset));
-        if (c < bestCost) {
-          best = offset;
-          bestCost = c;
-        }
-      }
-    if (bestCost > 0) {
-      // Nowhere clear within 6 em (a large text size beside a small view):
-      // the label is left out rather than laid over a line or a label.
-      l.text.clear();
-      continue;
-    }
-    const glm::vec2 moved = best - l.offsetPx;
-    l.offsetPx = best;
-    placed.push_back(boxAt(best));
-    // Moved far from what it names: a thin leader line from its anchor to
-    // the box's edge (drawn over everything, at the anchor's depth).
-    if (glm::length(moved) > 2.0f * l.sizePx) leaders.push_back({i, anchor, boxAt(best)});
+  return placed;
+}
+
+// How many things a box meets (the view's edge and another label count as
+// many as every segment together: a label must stay whole and apart).
+int labelBoxCost(const Box& box, const render::View& v, const std::vector<Box>& placed,
+                 const std::vector<Segment>& obstacles) {
+  const int heavy = int(obstacles.size()) + 1;
+  int n = 0;
+  if (box.lo.x < 0.0f || box.lo.y < 0.0f || box.hi.x > float(v.width) || box.hi.y > float(v.height)) n += heavy;
+  for (const Box& b : placed)
+    if (box.lo.x < b.hi.x && b.lo.x < box.hi.x && box.lo.y < b.hi.y && b.lo.y < box.hi.y) n += heavy;
+  for (const Segment& s : obstacles)
+    if (meets(box, s)) ++n;
+  return n;
+}
+
+// A label's box for an offset from its anchor (in pixels), padded by a
+// quarter em (a figure's Bloch labels, set close, by an eighth).
+struct LabelBoxAt {
+  glm::vec2 anchor;
+  float width, pad, shift, sizePx;
+  LabelBoxAt(const render::LabelItem& l, glm::vec2 anchor, bool nearestToAnchor)
+      : anchor(anchor), width(textWidthPx(l.text, l.sizePx, l.bold)),
+        pad((nearestToAnchor ? 0.125f : 0.25f) * l.sizePx),
+        shift(l.align == render::Align::Left ? 0.5f * width : l.align == render::Align::Right ? -0.5f * width : 0.0f),
+        sizePx(l.sizePx) {}
+  [[nodiscard]] Box operator()(glm::vec2 offset) const {
+    const glm::vec2 c = anchor + offset + glm::vec2(shift, 0.0f);
+    return Box{c - glm::vec2(0.5f * width + pad, 0.5f * sizePx + pad), c + glm::vec2(0.5f * width + pad, 0.5f * sizePx + pad)};
   }
+};
+
+// The nearest clear offset for a label: its own place first; with
+// nearestToAnchor, rings a quarter em apart tried in the order of their
+// boxes' distance from the anchor (the clear place whose box is nearest
+// the point the label names); then rings half an em apart out to 6 em. None
+// where nothing within 6 em is clear.
+template <typename Cost>
+std::optional<glm::vec2> clearLabelOffset(const render::LabelItem& l, const LabelBoxAt& boxAt, bool nearestToAnchor,
+                                          const Cost& cost) {
+  glm::vec2 best = l.offsetPx;
+  int bestCost = cost(boxAt(best));
+  if (nearestToAnchor && bestCost > 0) {
+    std::vector<std::pair<float, glm::vec2>> candidates;
+    for (float radius = 0.25f; radius <= 6.0f; radius += 0.25f)
+      for (int k = 0; k < 48; ++k) {
+        const float angle = 2.0f * std::numbers::pi_v<float> * float(k) / 48.0f;
+        const glm::vec2 offset = l.offsetPx + radius * l.sizePx * glm::vec2(std::cos(angle), std::sin(angle));
+        const Box b = boxAt(offset);
+        candidates.emplace_back(glm::length(boxAt.anchor - glm::clamp(boxAt.anchor, b.lo, b.hi)) + 0.01f * radius,
+                                offset);
+      }
+    std::sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [distance, offset] : candidates) {
+      const int c = cost(boxAt(offset));
+      if (c < bestCost) best = offset, bestCost = c;
+      if (bestCost == 0) break;
+    }
+  }
+  for (float radius = 0.5f; radius <= 6.0f && bestCost > 0; radius += 0.5f)
+    for (int k = 0; k < 24 && bestCost > 0; ++k) {
+      const float angle = 2.0f * std::numbers::pi_v<float> * float(k) / 24.0f;
+      const glm::vec2 offset = l.offsetPx + radius * l.sizePx * glm::vec2(std::cos(angle), std::sin(angle));
+      const int c = cost(boxAt(offset));
+      if (c < bestCost) {
+        best = offset;
+        bestCost = c;
+      }
+    }
+  if (bestCost > 0) return std::nullopt;
+  return best;
+}
+
+// A label moved far from what it names: its anchor and box in pixels.
+struct LabelLeader {
+  std::size_t label;
+  glm::vec2 anchor;
+  Box box;
+};
+
+// Thin leader lines from each moved label's anchor to its box's edge
+// (drawn over everything, at the anchor's depth).
+void addLeaderLines(render::DrawList& list, int view, const std::vector<LabelLeader>& leaders,
+                    const glm::mat4& clipFromWorld) {
+  const render::View& v = list.views[std::size_t(view)];
   const glm::mat4 worldFromClip = glm::inverse(clipFromWorld);
-  for (const Leader& leader : leaders) {
+  for (const LabelLeader& leader : leaders) {
     const render::LabelItem& l = list.labels[leader.label];
     const glm::vec4 anchorClip = clipFromWorld * glm::vec4(l.anchor, 1.0f);
     const glm::vec2 centre = 0.5f * (leader.box.lo + leader.box.hi);
@@ -227,6 +228,40 @@ void keepLabelsClear(render::DrawList& list, int view, std::size_t first, bool n
     line.view = view;
     list.polylines.push_back(line);
   }
+}
+
+}  // namespace
+
+void keepLabelsClear(render::DrawList& list, int view, std::size_t first, bool nearestToAnchor) {
+  const render::View& v = list.views[std::size_t(view)];
+  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+  const auto project = projectorOf(v, clipFromWorld);
+  std::vector<Segment> obstacles = obstaclesOf(list, view);
+  std::vector<Box> placed = textPlateBoxes(list, view, project);
+  auto cost = [&](const Box& box) { return labelBoxCost(box, v, placed, obstacles); };
+  std::vector<LabelLeader> leaders;
+  // Last first: the pole labels before the axis names (z says what |0⟩
+  // says), so where there is no room it is an axis name that goes.
+  for (std::size_t i = list.labels.size(); i-- > first;) {
+    render::LabelItem& l = list.labels[i];
+    if (l.view != view || !l.worldAnchored) continue;
+    float w = 1.0f;
+    const glm::vec2 anchor = project(l.anchor, w);
+    if (w <= 1e-4f) continue;
+    const LabelBoxAt boxAt(l, anchor, nearestToAnchor);
+    const std::optional<glm::vec2> best = clearLabelOffset(l, boxAt, nearestToAnchor, cost);
+    if (!best) {
+      // Nowhere clear within 6 em (a large text size beside a small view):
+      // the label is left out rather than laid over a line or a label.
+      l.text.clear();
+      continue;
+    }
+    const glm::vec2 moved = *best - l.offsetPx;
+    l.offsetPx = *best;
+    placed.push_back(boxAt(*best));
+    if (glm::length(moved) > 2.0f * l.sizePx) leaders.push_back({i, anchor, boxAt(*best)});
+  }
+  addLeaderLines(list, view, leaders, clipFromWorld);
 }
 
 std::vector<glm::vec2> keepBlocksClear(const render::DrawList& list, int view, std::vector<TextBlock>& blocks,

@@ -265,6 +265,24 @@ std::vector<std::pair<glm::vec2, glm::vec2>> placedPlates(const std::vector<Text
   return plates;
 }
 
+// Each block as large as it gets over the frames `samples` (its minSize;
+// the longest of its line lists): blocksOf(frame) gives a frame's blocks.
+template <typename BlocksOf>
+std::vector<TextBlock> widestBlocks(const BlocksOf& blocksOf, const std::vector<FrameOrientations>& samples,
+                                    float viewWidth) {
+  std::vector<TextBlock> widest = blocksOf(samples[0]);
+  for (const auto& f : samples) {
+    std::vector<TextBlock> b = blocksOf(f);
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      glm::vec2 size = blockSize(b[i]);
+      size.x = std::min(size.x * 1.06f, 0.96f * viewWidth);  // digits vary from frame to frame
+      widest[i].minSize = glm::max(widest[i].minSize, size);
+      if (b[i].lines.size() > widest[i].lines.size()) widest[i].lines = b[i].lines;
+    }
+  }
+  return widest;
+}
+
 }  // namespace
 
 // Before the first frame: every block's size over the clip (measured at its
@@ -285,20 +303,15 @@ void SceneDrawer::layOut(const RollingModel& model) {
     f.story.segment = k;
     samples.push_back(f);
   }
-  auto reserve = [&](auto blocksOf, float viewWidth) {
-    std::vector<TextBlock> widest = blocksOf(samples[0]);
-    for (const auto& f : samples) {
-      std::vector<TextBlock> b = blocksOf(f);
-      for (std::size_t i = 0; i < b.size(); ++i) {
-        glm::vec2 size = blockSize(b[i]);
-        size.x = std::min(size.x * 1.06f, 0.96f * viewWidth);  // digits vary from frame to frame
-        widest[i].minSize = glm::max(widest[i].minSize, size);
-        if (b[i].lines.size() > widest[i].lines.size()) widest[i].lines = b[i].lines;
-      }
-    }
-    return widest;
-  };
+  if (r.ball.width > 0 && layOutBallView(model, r, minWindow, samples)) return layOut(model);
+  if (twin_ && layOutTwinView(r, minWindow, samples)) return layOut(model);
+}
 
+// The ball view's text, and the window its camera frames the subject into;
+// true where a caption moved below the views (lay out again).
+bool SceneDrawer::layOutBallView(const RollingModel& model, const Rects& r, double minWindow,
+                                 const std::vector<FrameOrientations>& samples) {
+  const double L = model.path->length();
   // The arc lengths the clip shows, about two per ball radius, each with
   // its settled camera and (after a storyboard's cut) the previous one.
   // A camera that orbits with the ball sweeps the path across the view: as
@@ -310,101 +323,105 @@ void SceneDrawer::layOut(const RollingModel& model) {
   if (stillAt_) shownS.push_back(std::clamp(*stillAt_, 0.0, L));
   // The ball view's edges inside the frame (an inset lies over the view,
   // not beside it).
-  if (r.ball.width > 0 && !r.inset)
+  if (!r.inset)
     camera_->setInnerEdges({r.ball.x > 0, r.ball.x + r.ball.width < int(spec_.render.width),
                             r.ball.y + r.ball.height < int(spec_.render.height), r.ball.y > 0});
-  if (r.ball.width > 0) {
-    const std::vector<TextBlock> blocks = reserve([&](const FrameOrientations& f) { return ballBlocks(f, float(r.ball.width)); }, float(r.ball.width));
-    for (const TextBlock& b : blocks) ballReserved_.push_back(b.minSize);
-    auto occupancyFor = [&](const NdcWindow& window) {
-      camera_->setWindow(window);
-      Occupancy occupancy(r.ball.width, r.ball.height);
-      // An inset twin covers that corner of the ball view.
-      if (r.inset)
-        occupancy.rect(glm::vec2(r.twin.x - r.ball.x, r.twin.y - r.ball.y),
-                       glm::vec2(r.twin.x - r.ball.x + r.twin.width, r.twin.y - r.ball.y + r.twin.height));
-      glm::mat4 marked(0.0f);
-      for (const double s : shownS) {
-        StoryPlace story = motion::storyPlaceAt(model, s);
-        std::vector<StoryPlace> places{story};
-        if (story.segment > 0 && !stillAt_) places.push_back({story.segment, 0.0, story.duration});
-        for (const StoryPlace& place : places) {
-          const render::View v = camera_->ballCamera(0, 0, r.ball.width, r.ball.height, s, place);
-          const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
-          // The path once per camera; a camera that follows the ball sweeps
-          // the path across the whole view, so only the ball counts there.
-          ball_->markImportant(occupancy, v, s, clipFromWorld != marked && !camera_->follows(place));
-          marked = clipFromWorld;
-        }
+  const std::vector<TextBlock> blocks = widestBlocks(
+      [&](const FrameOrientations& f) { return ballBlocks(f, float(r.ball.width)); }, samples, float(r.ball.width));
+  for (const TextBlock& b : blocks) ballReserved_.push_back(b.minSize);
+  auto occupancyFor = [&](const NdcWindow& window) {
+    camera_->setWindow(window);
+    Occupancy occupancy(r.ball.width, r.ball.height);
+    // An inset twin covers that corner of the ball view.
+    if (r.inset)
+      occupancy.rect(glm::vec2(r.twin.x - r.ball.x, r.twin.y - r.ball.y),
+                     glm::vec2(r.twin.x - r.ball.x + r.twin.width, r.twin.y - r.ball.y + r.twin.height));
+    glm::mat4 marked(0.0f);
+    for (const double s : shownS) {
+      StoryPlace story = motion::storyPlaceAt(model, s);
+      std::vector<StoryPlace> places{story};
+      if (story.segment > 0 && !stillAt_) places.push_back({story.segment, 0.0, story.duration});
+      for (const StoryPlace& place : places) {
+        const render::View v = camera_->ballCamera(0, 0, r.ball.width, r.ball.height, s, place);
+        const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+        // The path once per camera; a camera that follows the ball sweeps
+        // the path across the whole view, so only the ball counts there.
+        ball_->markImportant(occupancy, v, s, clipFromWorld != marked && !camera_->follows(place));
+        marked = clipFromWorld;
       }
-      return occupancy;
+    }
+    return occupancy;
+  };
+  // A figure's subject takes at least half of its view's shorter side
+  // (docs/figures.md): text that finds no room beside it is left out (and
+  // named) rather than shrink it further. (A strobe's or several
+  // surfaces' figure keeps the clip's framing and its text.)
+  ballLayout_ = layoutView(r.ball.width, r.ball.height, blocks, occupancyFor, camera_->fixedByScene(), minWindow,
+                           stillAt_ ? kFigureSubjectShare : 0.0);
+  camera_->setWindow(ballLayout_.window);
+  if (moveCaptionsBelow(ballLayout_, blocks, float(r.ball.width))) return true;
+  // A figure's subject fills the room its text leaves: the layout narrows
+  // the window by a column or a band at a time, and only as far as the
+  // text needs; the largest rectangle clear of the placed plates (by the
+  // subject's own shape, a gap of an em) shows it larger.
+  // (Only where every block found its place: one that did not is put
+  // where the subject leaves room when the still is drawn.)
+  const bool allPlaced = std::all_of(ballLayout_.found.begin(), ballLayout_.found.end(), [](bool f) { return f; });
+  if (figure() && !camera_->fixedByScene() && !r.inset && allPlaced) {
+    const auto [lo, hi] = occupancyFor(ballLayout_.window).bounds();
+    const float aspect = hi.x > lo.x && hi.y > lo.y ? (hi.x - lo.x) / (hi.y - lo.y) : 1.0f;
+    const auto plates = placedPlates(blocks, ballLayout_, ballReserved_, r.ball.width, r.ball.height, true);
+    const NdcWindow grown = clearWindow(r.ball.width, r.ball.height, plates, text(), aspect);
+    auto scale = [&](const NdcWindow& win) {
+      return std::min((win.x1 - win.x0) * r.ball.width / aspect, (win.y1 - win.y0) * r.ball.height);
     };
-    // A figure's subject takes at least half of its view's shorter side
-    // (docs/figures.md): text that finds no room beside it is left out (and
-    // named) rather than shrink it further. (A strobe's or several
-    // surfaces' figure keeps the clip's framing and its text.)
-    ballLayout_ = layoutView(r.ball.width, r.ball.height, blocks, occupancyFor, camera_->fixedByScene(), minWindow,
-                             stillAt_ ? kFigureSubjectShare : 0.0);
+    if (scale(grown) > scale(ballLayout_.window)) ballLayout_.window = grown;
     camera_->setWindow(ballLayout_.window);
-    if (moveCaptionsBelow(ballLayout_, blocks, float(r.ball.width))) return layOut(model);
-    // A figure's subject fills the room its text leaves: the layout narrows
-    // the window by a column or a band at a time, and only as far as the
-    // text needs; the largest rectangle clear of the placed plates (by the
-    // subject's own shape, a gap of an em) shows it larger.
-    // (Only where every block found its place: one that did not is put
-    // where the subject leaves room when the still is drawn.)
-    const bool allPlaced = std::all_of(ballLayout_.found.begin(), ballLayout_.found.end(), [](bool f) { return f; });
-    if (figure() && !camera_->fixedByScene() && !r.inset && allPlaced) {
-      const auto [lo, hi] = occupancyFor(ballLayout_.window).bounds();
-      const float aspect = hi.x > lo.x && hi.y > lo.y ? (hi.x - lo.x) / (hi.y - lo.y) : 1.0f;
-      const auto plates = placedPlates(blocks, ballLayout_, ballReserved_, r.ball.width, r.ball.height, true);
-      const NdcWindow grown = clearWindow(r.ball.width, r.ball.height, plates, text(), aspect);
-      auto scale = [&](const NdcWindow& win) {
-        return std::min((win.x1 - win.x0) * r.ball.width / aspect, (win.y1 - win.y0) * r.ball.height);
-      };
-      if (scale(grown) > scale(ballLayout_.window)) ballLayout_.window = grown;
-      camera_->setWindow(ballLayout_.window);
-    }
   }
-  if (twin_) {
-    const std::vector<TextBlock> blocks =
-        reserve([&](const FrameOrientations& f) { return twinBlocks(f, float(r.twin.width), r.inset); },
-                float(r.twin.width));
-    for (const TextBlock& b : blocks) twinReserved_.push_back(b.minSize);
-    auto occupancyFor = [&](const NdcWindow& window) {
-      twin_->setWindow(window);
-      render::DrawList scratch;
-      scratch.width = int(spec_.render.width);
-      scratch.height = int(spec_.render.height);
-      render::View v;
-      v.width = r.twin.width;
-      v.height = r.twin.height;
-      scratch.views.push_back(v);
-      FrameOrientations f;
-      twin_->add(scratch, f, 0, camera_->aimAt(StoryPlace{}, r.twin.width, r.twin.height, 0.0));
-      Occupancy occupancy(r.twin.width, r.twin.height);
-      twin_->markImportant(occupancy, scratch.views[0]);
-      return occupancy;
-    };
-    twinLayout_ = layoutView(r.twin.width, r.twin.height, blocks, occupancyFor, false, minWindow);
-    if (spec_.render.layout == scene::RenderLayout::Twin && moveCaptionsBelow(twinLayout_, blocks, float(r.twin.width)))
-      return layOut(model);
-    // A figure's sphere fills the room its text leaves: the window grows
-    // from the layout's (which keeps the ball's gap of 2 em) to the largest
-    // rectangle clear of the plates, less a margin of 0.9 of a line (about
-    // 1.3 em) all round where the axis and pole labels lie against it.
-    if (twin_->closeLabels() && !r.inset) {
-      const auto plates = placedPlates(blocks, twinLayout_, twinReserved_, r.twin.width, r.twin.height, false);
-      NdcWindow window = clearWindow(r.twin.width, r.twin.height, plates, 0.25f * text());
-      const double marginX = 2.0 * kTwinLabelMargin * text() / r.twin.width;
-      const double marginY = 2.0 * kTwinLabelMargin * text() / r.twin.height;
-      // (Never under a quarter of the view: a tiny view keeps a sphere.)
-      if (window.x1 - window.x0 - 2.0 * marginX >= 0.5 && window.y1 - window.y0 - 2.0 * marginY >= 0.5)
-        window = {window.x0 + marginX, window.x1 - marginX, window.y0 + marginY, window.y1 - marginY};
-      twinLayout_.window = window;
-    }
-    twin_->setWindow(twinLayout_.window);
+  return false;
+}
+
+// The twin view's text, and the window its camera frames the sphere into;
+// true where a caption moved below the views (lay out again).
+bool SceneDrawer::layOutTwinView(const Rects& r, double minWindow, const std::vector<FrameOrientations>& samples) {
+  const std::vector<TextBlock> blocks = widestBlocks(
+      [&](const FrameOrientations& f) { return twinBlocks(f, float(r.twin.width), r.inset); }, samples,
+      float(r.twin.width));
+  for (const TextBlock& b : blocks) twinReserved_.push_back(b.minSize);
+  auto occupancyFor = [&](const NdcWindow& window) {
+    twin_->setWindow(window);
+    render::DrawList scratch;
+    scratch.width = int(spec_.render.width);
+    scratch.height = int(spec_.render.height);
+    render::View v;
+    v.width = r.twin.width;
+    v.height = r.twin.height;
+    scratch.views.push_back(v);
+    FrameOrientations f;
+    twin_->add(scratch, f, 0, camera_->aimAt(StoryPlace{}, r.twin.width, r.twin.height, 0.0));
+    Occupancy occupancy(r.twin.width, r.twin.height);
+    twin_->markImportant(occupancy, scratch.views[0]);
+    return occupancy;
+  };
+  twinLayout_ = layoutView(r.twin.width, r.twin.height, blocks, occupancyFor, false, minWindow);
+  if (spec_.render.layout == scene::RenderLayout::Twin && moveCaptionsBelow(twinLayout_, blocks, float(r.twin.width)))
+    return true;
+  // A figure's sphere fills the room its text leaves: the window grows
+  // from the layout's (which keeps the ball's gap of 2 em) to the largest
+  // rectangle clear of the plates, less a margin of 0.9 of a line (about
+  // 1.3 em) all round where the axis and pole labels lie against it.
+  if (twin_->closeLabels() && !r.inset) {
+    const auto plates = placedPlates(blocks, twinLayout_, twinReserved_, r.twin.width, r.twin.height, false);
+    NdcWindow window = clearWindow(r.twin.width, r.twin.height, plates, 0.25f * text());
+    const double marginX = 2.0 * kTwinLabelMargin * text() / r.twin.width;
+    const double marginY = 2.0 * kTwinLabelMargin * text() / r.twin.height;
+    // (Never under a quarter of the view: a tiny view keeps a sphere.)
+    if (window.x1 - window.x0 - 2.0 * marginX >= 0.5 && window.y1 - window.y0 - 2.0 * marginY >= 0.5)
+      window = {window.x0 + marginX, window.x1 - marginX, window.y0 + marginY, window.y1 - marginY};
+    twinLayout_.window = window;
   }
+  twin_->setWindow(twinLayout_.window);
+  return false;
 }
 
 std::size_t SceneDrawer::stretchOf(std::size_t segment) const {

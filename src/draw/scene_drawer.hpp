@@ -115,6 +115,9 @@ class SceneDrawer {
   [[nodiscard]] std::vector<TextBlock> ballBlocks(const FrameOrientations& frame, float viewWidth) const;
   [[nodiscard]] std::vector<TextBlock> twinBlocks(const FrameOrientations& frame, float viewWidth, bool inset) const;
   void layOut(const RollingModel& model);
+  bool layOutBallView(const RollingModel& model, const Rects& r, double minWindow,
+                      const std::vector<FrameOrientations>& samples);
+  bool layOutTwinView(const Rects& r, double minWindow, const std::vector<FrameOrientations>& samples);
   render::DrawList drawList(const FrameOrientations& frame, const FrameOrientations& whole) const;
   // Whether a caption would break narrower than kLeastCaptionEm, or find
   // no room, in its view (the ball view's blocks as laid out).

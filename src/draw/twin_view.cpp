@@ -31,10 +31,23 @@ TwinView::TwinView(const scene::SceneSpec& spec, const model::RollingModel& mode
   if (facts && facts->phaseSplit) fieldConeMesh_ = coneMesh(facts->phaseSplit->fieldLoop);
 }
 
+namespace {
+const glm::vec3 kTwinAxes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+const char* const kTwinAxisNames[3] = {"x", "y", "z"};
+}  // namespace
+
 void TwinView::add(render::DrawList& list, const motion::FrameOrientations& frame, int view,
                    const CameraFraming::Aim& aim) const {
   render::View& v = list.views[static_cast<std::size_t>(view)];
-  const float text = bodyTextPx(list.width, list.height, spec_.render.fontScale);
+  aimAtSphere(v, aim);
+  addSphereAndAxes(list, view);
+  addTrails(list, frame, view);
+  addArrows(list, frame, view);
+  if (spec_.render.labels) addLabels(list, v, view);
+}
+
+// The view's camera and light.
+void TwinView::aimAtSphere(render::View& v, const CameraFraming::Aim& aim) const {
   // Same viewing direction as the ball's camera, so the marker on the ball
   // and the Bloch arrow point the same way on screen.
   const OrbitAngles a{aim.azimuth, aim.elevation};
@@ -62,7 +75,11 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
     v.backgroundTop = glm::vec3(0.97f, 0.98f, 0.99f);
     v.backgroundBottom = glm::vec3(0.86f, 0.89f, 0.93f);
   }
+}
 
+// The glass Bloch sphere, its origin, the equator and two meridians, and
+// the axes.
+void TwinView::addSphereAndAxes(render::DrawList& list, int view) const {
   const auto& blochSphere = blochSphereMesh_;
   list.meshes.push_back({blochSphere, glm::mat4(1.0f), glassMaterial({0.62f, 0.76f, 0.95f}, 0.16f, 0.5f, 90.0f), view});
   list.meshes.back().sphere = true;
@@ -71,7 +88,6 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
   list.meshes.push_back({dotMesh_, glm::scale(glm::mat4(1.0f), glm::vec3(0.035f)), origin, view});
   list.meshes.back().sphere = true;
 
-  // Equator and two meridians, and the axes.
   const glm::vec4 gridColor = opaqueLine({0.30f, 0.36f, 0.45f}, 0.75f);
   const float gridWidth = std::max(1.0f, float(list.height) / 600.0f);
   for (int circle = 0; circle < 3; ++circle) {
@@ -86,25 +102,26 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
     }
     list.polylines.push_back(c);
   }
-  const glm::vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  const char* axisNames[3] = {"x", "y", "z"};
   for (int k = 0; k < 3; ++k) {
     render::PolylineItem axis;
     axis.color = opaqueLine({0.15f, 0.17f, 0.2f}, 0.9f);
     axis.widthPx = gridWidth;
     axis.view = view;
-    axis.points = {-kAxisLength * axes[k], kAxisLength * axes[k]};
+    axis.points = {-kAxisLength * kTwinAxes[k], kAxisLength * kTwinAxes[k]};
     // A figure's labels, set close, keep off the axes too (not the grid).
     axis.labelsKeepOff = closeLabels();
     list.polylines.push_back(axis);
   }
+}
 
-  auto unit = [](const Vec3& x) { return x.norm() > 1e-12 ? Vec3(x.normalized()) : Vec3(Vec3::Zero()); };
-  const double R = model_.ballRadius;
-  auto fieldDirection = [&](double s) { return unit(spin::fieldB(model_.path->at(s), R)); };
-  const float arrowRadius = 0.028f;
+Vec3 TwinView::fieldDirection(double s) const {
+  const Vec3 b = spin::fieldB(model_.path->at(s), model_.ballRadius);
+  return b.norm() > 1e-12 ? Vec3(b.normalized()) : Vec3(Vec3::Zero());
+}
 
-  // Trails: the Bloch vector X(s') = Q(s') X(0) and the field direction.
+// Trails: the Bloch vector X(s') = Q(s') X(0) and the field direction; the
+// cone the field direction sweeps.
+void TwinView::addTrails(render::DrawList& list, const motion::FrameOrientations& frame, int view) const {
   render::PolylineItem blochTrail, fieldTrail;
   blochTrail.color = kBlochTrailColor;
   fieldTrail.color = kFieldTrailColor;
@@ -136,7 +153,12 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
     cone.cull = render::Cull::None;
     list.meshes.push_back({fieldConeMesh_, glm::mat4(1.0f), cone, view});
   }
+}
 
+// The Bloch vector and the field direction now (a strobe's Bloch vectors
+// paler).
+void TwinView::addArrows(render::DrawList& list, const motion::FrameOrientations& frame, int view) const {
+  const float arrowRadius = 0.028f;
   const Vec3 x = frame.current.q.rotate(markerBody_);
   list.arrows.push_back({glm::vec3(0.0f), toGlm(x), arrowRadius, kMarkerColor, view, true});
   const Vec3 b = fieldDirection(frame.current.s);
@@ -144,45 +166,46 @@ void TwinView::add(render::DrawList& list, const motion::FrameOrientations& fram
   for (const auto& pose : frame.strobe)
     list.arrows.push_back({glm::vec3(0.0f), toGlm(pose.q.rotate(markerBody_)), arrowRadius * 0.55f,
                            glm::mix(kMarkerColor, glm::vec3(1.0f), 0.35f), view});
+}
 
-  if (spec_.render.labels) {
-    auto worldLabel = [&](const std::string& s, const glm::vec3& at, float size, glm::vec4 color) {
-      render::LabelItem l;
-      l.view = view;
-      l.text = s;
-      l.anchor = at;
-      l.worldAnchored = true;
-      l.align = render::Align::Center;
-      l.sizePx = size;
-      l.color = color;
-      list.labels.push_back(l);
+// The axes' names and the poles' states.
+void TwinView::addLabels(render::DrawList& list, const render::View& v, int view) const {
+  const float text = bodyTextPx(list.width, list.height, spec_.render.fontScale);
+  auto worldLabel = [&](const std::string& s, const glm::vec3& at, float size, glm::vec4 color) {
+    render::LabelItem l;
+    l.view = view;
+    l.text = s;
+    l.anchor = at;
+    l.worldAnchored = true;
+    l.align = render::Align::Center;
+    l.sizePx = size;
+    l.color = color;
+    list.labels.push_back(l);
+  };
+  if (closeLabels()) {
+    // Each axis name at its axis's end, pushed out along the projected
+    // axis by its own half size and a little: against the line's tip.
+    const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+    auto pixel = [&](const glm::vec3& p) {
+      const glm::vec4 c = clipFromWorld * glm::vec4(p, 1.0f);
+      return glm::vec2(c.x / c.w * 0.5f * float(v.width), -c.y / c.w * 0.5f * float(v.height));
     };
-    if (closeLabels()) {
-      // Each axis name at its axis's end, pushed out along the projected
-      // axis by its own half size and a little: against the line's tip.
-      const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
-      auto pixel = [&](const glm::vec3& p) {
-        const glm::vec4 c = clipFromWorld * glm::vec4(p, 1.0f);
-        return glm::vec2(c.x / c.w * 0.5f * float(v.width), -c.y / c.w * 0.5f * float(v.height));
-      };
-      for (int k = 0; k < 3; ++k) {
-        const glm::vec3 end = kAxisLength * axes[k];
-        worldLabel(axisNames[k], end, text, kTextColor);
-        const glm::vec2 along = pixel(end) - pixel(glm::vec3(0.0f));
-        const float length = glm::length(along);
-        if (length > 1e-3f) list.labels.back().offsetPx = 0.75f * text * along / length;
-      }
-    } else {
-      for (int k = 0; k < 3; ++k) worldLabel(axisNames[k], 1.3f * axes[k], text, kTextColor);
+    for (int k = 0; k < 3; ++k) {
+      const glm::vec3 end = kAxisLength * kTwinAxes[k];
+      worldLabel(kTwinAxisNames[k], end, text, kTextColor);
+      const glm::vec2 along = pixel(end) - pixel(glm::vec3(0.0f));
+      const float length = glm::length(along);
+      if (length > 1e-3f) list.labels.back().offsetPx = 0.75f * text * along / length;
     }
-    // The poles' states beside them, to the right.
-    const float poleOffset = closeLabels() ? 1.25f : 1.6f;
-    worldLabel("|0⟩", glm::vec3(0, 0, 1.0f), text, kTextColor);
-    worldLabel("|1⟩", glm::vec3(0, 0, -1.0f), text, kTextColor);
-    list.labels.back().offsetPx = glm::vec2(poleOffset * text, 0.0f);
-    list.labels[list.labels.size() - 2].offsetPx = glm::vec2(poleOffset * text, 0.0f);
-
+  } else {
+    for (int k = 0; k < 3; ++k) worldLabel(kTwinAxisNames[k], 1.3f * kTwinAxes[k], text, kTextColor);
   }
+  // The poles' states beside them, to the right.
+  const float poleOffset = closeLabels() ? 1.25f : 1.6f;
+  worldLabel("|0⟩", glm::vec3(0, 0, 1.0f), text, kTextColor);
+  worldLabel("|1⟩", glm::vec3(0, 0, -1.0f), text, kTextColor);
+  list.labels.back().offsetPx = glm::vec2(poleOffset * text, 0.0f);
+  list.labels[list.labels.size() - 2].offsetPx = glm::vec2(poleOffset * text, 0.0f);
 }
 
 bool TwinView::closeLabels() const { return spec_.render.fontScale > 1.0 || spec_.render.leastTextScale > 0.0; }

@@ -39,6 +39,13 @@ class TwinView {
   static constexpr double kFigureSceneRadius = 1.15;  // framed into a figure's window: the axes' ends at its edge
 
  private:
+  void aimAtSphere(render::View& v, const CameraFraming::Aim& aim) const;
+  void addSphereAndAxes(render::DrawList& list, int view) const;
+  // The field's direction B̂(s) (zero where B vanishes).
+  [[nodiscard]] geometry::Vec3 fieldDirection(double s) const;
+  void addTrails(render::DrawList& list, const motion::FrameOrientations& frame, int view) const;
+  void addArrows(render::DrawList& list, const motion::FrameOrientations& frame, int view) const;
+  void addLabels(render::DrawList& list, const render::View& v, int view) const;
   const scene::SceneSpec& spec_;
   const model::RollingModel& model_;
   geometry::Vec3 markerBody_;

@@ -72,7 +72,7 @@ struct DrawScope {
   // rectangles an island redraws; a mesh, a line or a label draws only its
   // parts that reach one. Null: everywhere.
   const std::vector<PixelRect>* clips = nullptr;
-  // Where an opaque ray-cast sphere's under pass (drawImpostor) can change
+  // Where an opaque ray-cast sphere's under pass (SpherePass::draw) can change
   // a pixel: in a view drawn whole, its tiles drawn in samples; over a
   // retained layer, the layer's edge tiles and the tiles of moving meshes
   // drawn in samples; and the rectangles of the spheres drawn before it in

@@ -1,11 +1,11 @@
 // The glass capture and its replay (see glass_capture.hpp).
 #include "render/glass_capture.hpp"
 
-#include "render/renderer_impl.hpp"
+#include "render/sphere_pass.hpp"
 
 namespace rollspin::render {
 
-// Drawn into its own framebuffer, as drawImpostor draws it, with texel
+// Drawn into its own framebuffer, as SpherePass::draw draws it, with texel
 // (0, 0) at an even window pixel: the derivatives pair the pixels of the
 // same 2×2 quads. (Binding that framebuffer makes llvmpipe run the scene
 // binned so far: once per layer.) The GL state it changes is put back.
@@ -70,32 +70,32 @@ const SphereCapture& SphereCaptures::of(const Drawable& d, const PixelRect& rect
   return c;
 }
 
-// The sphere's parts (scratch.parts, see drawImpostor) from its capture:
-// two triangles a part, two texel fetches a pixel.
-void Renderer::Impl::replaySphere(const Drawable& d, const DrawScope& scope, const PixelRect& rect, int pattern,
-                                  const glm::mat4& worldFromClip, const glm::vec4& viewport) {
-  const int fbHeight = targets.height;
+// The sphere's parts (parts_, see SpherePass::draw) from its capture: two
+// triangles a part, two texel fetches a pixel.
+void SpherePass::replayCaptured(const Drawable& d, const DrawScope& scope, const PixelRect& rect, int pattern,
+                        const glm::mat4& worldFromClip, const glm::vec4& viewport, const SphereDrawing& with) {
+  const int fbHeight = with.fbHeight;
   const SphereCapture& capture =
-      captures.of(d, rect, pattern, worldFromClip, viewport, scope, fbHeight, programs, stats);
+      with.captures.of(d, rect, pattern, worldFromClip, viewport, scope, fbHeight, with.programs, with.stats);
   glBindTextureUnit(2, capture.color);
   glBindTextureUnit(3, capture.depth);
-  Program& replay = programs.sphereReplay;
+  Program& replay = with.programs.sphereReplay;
   replay.use();
   replay.set("capturedColor", 2);
   replay.set("capturedDepth", 3);
   replay.set("captureOrigin", glm::ivec2(capture.originX, capture.originY));
   replay.set("viewportRect", viewport);
-  std::vector<glm::vec3>& corners = scratch.replayCorners;
+  std::vector<glm::vec3>& corners = replayCorners_;
   corners.clear();
-  for (const PixelRect& p : scratch.parts) {
+  for (const PixelRect& p : parts_) {
     const float x0 = float(p.x0), x1 = float(p.x1), y0 = float(fbHeight - p.y1), y1 = float(fbHeight - p.y0);
     for (const glm::vec2 corner : {glm::vec2(x0, y0), glm::vec2(x1, y0), glm::vec2(x1, y1), glm::vec2(x0, y0),
                                    glm::vec2(x1, y1), glm::vec2(x0, y1)})
       corners.emplace_back(corner, 0.0f);
   }
-  streams.uploadPoints(corners);
+  with.streams.uploadPoints(corners);
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(corners.size()));
-  ++stats.sphereReplays;
+  ++with.stats.sphereReplays;
 }
 
 }  // namespace rollspin::render

@@ -2,7 +2,7 @@
 // pixel's position and on uniforms alone (see mesh.frag's castSphere):
 // captured once over its screen rectangle (the colour mesh.frag gives each
 // pixel, before blending, and its depth), they are replayed in later frames
-// (sphere_replay.frag, Renderer::Impl::replaySphere) with the same values,
+// (sphere_replay.frag, SpherePass::replayCaptured) with the same values,
 // so blending and the depth test give the same bytes. A frame over the
 // retained layer then fetches two texels a pixel instead of casting the ray
 // and lighting it. Renderer-internal.

@@ -117,81 +117,93 @@ std::optional<std::vector<bool>> freshViews(const StaticKey& k, const DrawList& 
   return fresh;
 }
 
-std::optional<std::vector<PixelRect>> layerChanges(const StaticKey& k, const DrawList& list,
-                                                   const std::vector<bool>& fresh, const ItemBounds& bounds) {
-  auto compared = [&](const auto& item) {
+namespace {
+
+// What layerChanges compares against and marks: the list, its fresh views
+// (not compared: drawn whole), the items' screen bounds, and the grid of
+// tiles that changed.
+struct LayerDiff {
+  const DrawList& list;
+  const std::vector<bool>& fresh;
+  const ItemBounds& bounds;
+  TileGrid& grid;
+
+  // Whether the item's view is compared (in none, or not a fresh one).
+  template <typename Item>
+  [[nodiscard]] bool compared(const Item& item) const {
     return item.view < 0 || static_cast<std::size_t>(item.view) >= fresh.size() ||
            !fresh[static_cast<std::size_t>(item.view)];
-  };
-  auto keptOf = [&](const auto& items) {
-    std::decay_t<decltype(items)> out;
-    for (const auto& item : items)
+  }
+  // The kept items that are compared.
+  template <typename Item>
+  [[nodiscard]] std::vector<Item> keptOf(const std::vector<Item>& items) const {
+    std::vector<Item> out;
+    for (const Item& item : items)
       if (compared(item)) out.push_back(item);
     return out;
-  };
-  auto staticOf = [&](const auto& items) {
-    std::vector<const typename std::decay_t<decltype(items)>::value_type*> out;
-    for (const auto& item : items)
+  }
+  // The list's static items that are compared.
+  template <typename Item>
+  [[nodiscard]] std::vector<const Item*> staticOf(const std::vector<Item>& items) const {
+    std::vector<const Item*> out;
+    for (const Item& item : items)
       if (!item.dynamic && compared(item)) out.push_back(&item);
     return out;
-  };
-  {
-    const auto keptArrows = keptOf(k.arrows);
-    const auto arrows = staticOf(list.arrows);
-    if (keptArrows.size() != arrows.size()) return std::nullopt;
-    for (std::size_t i = 0; i < arrows.size(); ++i)
-      if (!(keptArrows[i] == *arrows[i])) return std::nullopt;
   }
-  StaticKey kept;
-  kept.meshes = keptOf(k.meshes);
-  kept.polylines = keptOf(k.polylines);
-  kept.labels = keptOf(k.labels);
-  auto viewOf = [&](int index) -> std::optional<std::pair<const View*, glm::mat4>> {
+  // The view `index` and its clipFromWorld; none for no view.
+  [[nodiscard]] std::optional<std::pair<const View*, glm::mat4>> viewOf(int index) const {
     if (index < 0 || static_cast<std::size_t>(index) >= list.views.size()) return std::nullopt;
     const View& v = list.views[static_cast<std::size_t>(index)];
     return std::make_pair(&v, v.camera.clipFromView * v.camera.viewFromWorld);
-  };
-  TileGrid grid(list.width, list.height);
-  std::vector<bool> keptPaired;
+  }
+};
 
-  // Meshes: an opaque one is in the snapshot and must stay as it is.
-  const auto meshes = staticOf(list.meshes);
+// Meshes: an opaque one is in the snapshot and must stay as it is (false:
+// build the layer again); a translucent one that changed, came or went
+// marks its old and new bounds.
+bool markMeshChanges(const LayerDiff& diff, const std::vector<MeshItem>& kept) {
+  std::vector<bool> keptPaired;
+  const auto meshes = diff.staticOf(diff.list.meshes);
   const auto meshPartner = alignItems(
-      kept.meshes, meshes,
+      kept, meshes,
       [](const MeshItem& a, const MeshItem& b) {
         return a == b || (a.view == b.view && a.material.opacity < 1.0f && b.material.opacity < 1.0f);
       },
       keptPaired);
   auto addMesh = [&](const MeshItem& m) {
-    const auto v = viewOf(m.view);
+    const auto v = diff.viewOf(m.view);
     if (!v || !m.mesh) return true;  // drawn in no view: nothing to redraw
     if (m.material.opacity >= 1.0f) return false;
     std::vector<PixelRect> rects;
-    bounds.mesh(m, *v->first, v->second, rects);
-    for (const PixelRect& r : rects) grid.add(r);
+    diff.bounds.mesh(m, *v->first, v->second, rects);
+    for (const PixelRect& r : rects) diff.grid.add(r);
     return true;
   };
   for (std::size_t j = 0; j < meshes.size(); ++j) {
     const int i = meshPartner[j];
-    if (i >= 0 && kept.meshes[static_cast<std::size_t>(i)] == *meshes[j]) continue;
-    if (!addMesh(*meshes[j]) || (i >= 0 && !addMesh(kept.meshes[static_cast<std::size_t>(i)]))) return std::nullopt;
+    if (i >= 0 && kept[static_cast<std::size_t>(i)] == *meshes[j]) continue;
+    if (!addMesh(*meshes[j]) || (i >= 0 && !addMesh(kept[static_cast<std::size_t>(i)]))) return false;
   }
-  for (std::size_t i = 0; i < kept.meshes.size(); ++i)
-    if (!keptPaired[i] && !addMesh(kept.meshes[i])) return std::nullopt;
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    if (!keptPaired[i] && !addMesh(kept[i])) return false;
+  return true;
+}
 
-  // Lines: a pair with the same look whose points share a prefix (a line
-  // that grew or shrank) differs only from the last shared point on (round
-  // joins: a segment's capsule ends at its points).
-  const auto lines = staticOf(list.polylines);
+// Lines: a pair with the same look whose points share a prefix (a line
+// that grew or shrank) differs only from the last shared point on (round
+// joins: a segment's capsule ends at its points).
+void markLineChanges(const LayerDiff& diff, const std::vector<PolylineItem>& kept) {
+  std::vector<bool> keptPaired;
+  const auto lines = diff.staticOf(diff.list.polylines);
   const auto linePartner = alignItems(
-      kept.polylines, lines,
+      kept, lines,
       [](const PolylineItem& a, const PolylineItem& b) {
         return a.view == b.view && a.color == b.color && a.widthPx == b.widthPx && a.depthTested == b.depthTested;
       },
       keptPaired);
   auto addLine = [&](const PolylineItem& p, std::size_t first) {
-    const auto v = viewOf(p.view);
-    if (v) addSegmentBounds(p, *v->first, v->second, first, grid);
+    const auto v = diff.viewOf(p.view);
+    if (v) addSegmentBounds(p, *v->first, v->second, first, diff.grid);
   };
   for (std::size_t j = 0; j < lines.size(); ++j) {
     const PolylineItem& now = *lines[j];
@@ -199,7 +211,7 @@ std::optional<std::vector<PixelRect>> layerChanges(const StaticKey& k, const Dra
       addLine(now, 0);
       continue;
     }
-    const PolylineItem& before = kept.polylines[static_cast<std::size_t>(linePartner[j])];
+    const PolylineItem& before = kept[static_cast<std::size_t>(linePartner[j])];
     if (before == now) continue;
     const std::size_t shared = std::min(before.points.size(), now.points.size());
     const bool prefix = std::equal(before.points.begin(), before.points.begin() + std::ptrdiff_t(shared),
@@ -208,32 +220,54 @@ std::optional<std::vector<PixelRect>> layerChanges(const StaticKey& k, const Dra
     addLine(before, first);
     addLine(now, first);
   }
-  for (std::size_t i = 0; i < kept.polylines.size(); ++i)
-    if (!keptPaired[i]) addLine(kept.polylines[i], 0);
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    if (!keptPaired[i]) addLine(kept[i], 0);
+}
 
-  // Labels: old and new bounds of each that changed, came or went.
+// Labels: old and new bounds of each that changed, came or went.
+void markLabelChanges(const LayerDiff& diff, const std::vector<LabelItem>& kept) {
+  std::vector<bool> keptPaired;
   std::vector<LabelItem> staticLabels;
-  for (LabelItem& l : staticLabelsOf(list.labels))
-    if (compared(l)) staticLabels.push_back(std::move(l));
+  for (LabelItem& l : staticLabelsOf(diff.list.labels))
+    if (diff.compared(l)) staticLabels.push_back(std::move(l));
   std::vector<const LabelItem*> labels;
   for (const LabelItem& l : staticLabels) labels.push_back(&l);
   const auto labelPartner =
-      alignItems(kept.labels, labels, [](const LabelItem& a, const LabelItem& b) { return a.view == b.view; }, keptPaired);
+      alignItems(kept, labels, [](const LabelItem& a, const LabelItem& b) { return a.view == b.view; }, keptPaired);
   auto addLabel = [&](const LabelItem& l) {
     if (l.view < 0) {
-      grid.add(bounds.label(l, nullptr, glm::mat4(1.0f)));
-    } else if (const auto v = viewOf(l.view)) {
-      grid.add(bounds.label(l, v->first, v->second));
+      diff.grid.add(diff.bounds.label(l, nullptr, glm::mat4(1.0f)));
+    } else if (const auto v = diff.viewOf(l.view)) {
+      diff.grid.add(diff.bounds.label(l, v->first, v->second));
     }
   };
   for (std::size_t j = 0; j < labels.size(); ++j) {
     const int i = labelPartner[j];
-    if (i >= 0 && kept.labels[static_cast<std::size_t>(i)] == *labels[j]) continue;
+    if (i >= 0 && kept[static_cast<std::size_t>(i)] == *labels[j]) continue;
     addLabel(*labels[j]);
-    if (i >= 0) addLabel(kept.labels[static_cast<std::size_t>(i)]);
+    if (i >= 0) addLabel(kept[static_cast<std::size_t>(i)]);
   }
-  for (std::size_t i = 0; i < kept.labels.size(); ++i)
-    if (!keptPaired[i]) addLabel(kept.labels[i]);
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    if (!keptPaired[i]) addLabel(kept[i]);
+}
+
+}  // namespace
+
+std::optional<std::vector<PixelRect>> layerChanges(const StaticKey& k, const DrawList& list,
+                                                   const std::vector<bool>& fresh, const ItemBounds& bounds) {
+  TileGrid grid(list.width, list.height);
+  const LayerDiff diff{list, fresh, bounds, grid};
+  // Arrows are opaque meshes: any change builds the layer again.
+  {
+    const auto keptArrows = diff.keptOf(k.arrows);
+    const auto arrows = diff.staticOf(list.arrows);
+    if (keptArrows.size() != arrows.size()) return std::nullopt;
+    for (std::size_t i = 0; i < arrows.size(); ++i)
+      if (!(keptArrows[i] == *arrows[i])) return std::nullopt;
+  }
+  if (!markMeshChanges(diff, diff.keptOf(k.meshes))) return std::nullopt;
+  markLineChanges(diff, diff.keptOf(k.polylines));
+  markLabelChanges(diff, diff.keptOf(k.labels));
   return grid.rects();
 }
 

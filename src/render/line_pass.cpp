@@ -1,8 +1,8 @@
 // Lines: a polyline as capsules (line.geom/line.frag), antialiased by its
 // coverage, drawn with adjacency so that each segment sees its neighbours.
-#include <algorithm>
+#include "render/line_pass.hpp"
 
-#include "render/renderer_impl.hpp"
+#include <algorithm>
 
 namespace rollspin::render {
 
@@ -19,14 +19,14 @@ constexpr std::size_t kLineRun = 32;
 // segment, and the static lines (the whole path, the Bloch grid) are long.
 // Segments are independent quads, drawn in the same order either way: the
 // bytes of the dirty pixels do not change.
-void Renderer::Impl::drawPolyline(const PolylineItem& p, const DrawScope& scope) {
+void LinePass::draw(const PolylineItem& p, const DrawScope& scope, Program& line, const VertexStreams& streams,
+                    int fbHeight, RenderStats& stats) {
   if (p.points.size() < 2) return;
   const View& v = *scope.view;
   const glm::mat4& clipFromWorld = scope.clipFromWorld;
-  Program& line = programs.line;
   line.use();
   line.set("clipFromWorld", clipFromWorld);
-  line.set("viewportOrigin", glm::vec2(v.x, targets.height - v.y - v.height));  // GL counts rows from the bottom
+  line.set("viewportOrigin", glm::vec2(v.x, fbHeight - v.y - v.height));  // GL counts rows from the bottom
   line.set("viewportSize", glm::vec2(v.width, v.height));
   line.set("widthPx", p.widthPx);
   line.set("depthBias", p.depthTested ? 0.0008f : 0.0f);
@@ -34,7 +34,7 @@ void Renderer::Impl::drawPolyline(const PolylineItem& p, const DrawScope& scope)
   // Drawn with adjacency (each segment sees its neighbours, see line.frag):
   // the ends repeated, so point k is vertex k + 1 and the segments from
   // point a to point b are the strip's vertices a to b + 2.
-  std::vector<glm::vec3>& padded = scratch.paddedPoints;
+  std::vector<glm::vec3>& padded = padded_;
   padded.clear();
   padded.push_back(p.points.front());
   padded.insert(padded.end(), p.points.begin(), p.points.end());
@@ -48,7 +48,7 @@ void Renderer::Impl::drawPolyline(const PolylineItem& p, const DrawScope& scope)
   // A part is the points [first, last] of up to kLineRun segments; the
   // next part begins at its last point, so adjacent parts merge.
   const float margin = 0.7072f * p.widthPx + 2.0f;
-  RunsOfParts& kept = scratch.keptParts;
+  RunsOfParts& kept = kept_;
   kept.clear();
   for (std::size_t first = 0; first + 1 < p.points.size(); first += kLineRun) {
     const std::size_t last = std::min(first + kLineRun, p.points.size() - 1);
@@ -56,16 +56,15 @@ void Renderer::Impl::drawPolyline(const PolylineItem& p, const DrawScope& scope)
       kept.add(first, last);
   }
   // The runs go to GL in one call, as a mesh's do.
-  scratch.lineFirsts.clear();
-  scratch.runCounts.clear();
+  firsts_.clear();
+  counts_.clear();
   for (const RunsOfParts::Run& r : kept.runs()) {
-    scratch.lineFirsts.push_back(static_cast<GLint>(r.begin));
-    scratch.runCounts.push_back(static_cast<GLsizei>(r.end - r.begin + 3));
+    firsts_.push_back(static_cast<GLint>(r.begin));
+    counts_.push_back(static_cast<GLsizei>(r.end - r.begin + 3));
     stats.lineSegmentsDrawn += static_cast<long long>(r.end - r.begin);
   }
-  if (!scratch.lineFirsts.empty())
-    glMultiDrawArrays(GL_LINE_STRIP_ADJACENCY, scratch.lineFirsts.data(), scratch.runCounts.data(),
-                      static_cast<GLsizei>(scratch.lineFirsts.size()));
+  if (!firsts_.empty())
+    glMultiDrawArrays(GL_LINE_STRIP_ADJACENCY, firsts_.data(), counts_.data(), static_cast<GLsizei>(firsts_.size()));
   stats.lineSegmentsInRects += static_cast<long long>(p.points.size() - 1);
 }
 

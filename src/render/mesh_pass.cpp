@@ -2,12 +2,13 @@
 // the opaque ones in samples or at one sample, the receivers' re-shade in
 // the shadow box, the translucent ones (see drawRest). A sphere drawn at
 // one sample is handed to the ray cast (sphere_pass.cpp).
+#include "render/mesh_pass.hpp"
+
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include <algorithm>
 
 #include "render/mesh_builders.hpp"
-#include "render/renderer_impl.hpp"
 
 namespace rollspin::render {
 
@@ -71,8 +72,8 @@ void setMeshUniforms(Program& mesh, const Drawable& d, const DrawScope& scope, b
   mesh.set("clipToShadowBox", clipToShadowBox ? 1 : 0);
 }
 
-std::vector<Drawable> Renderer::Impl::drawablesOf(const DrawList& list, int view,
-                                                  std::vector<Material>& arrowMaterials) {
+std::vector<Drawable> drawablesOf(const DrawList& list, int view, std::vector<Material>& arrowMaterials,
+                                  GpuCaches& caches) {
   std::vector<Drawable> out;
   for (const MeshItem& m : list.meshes)
     if (m.view == view && m.mesh) out.push_back({m.mesh, m.worldFromModel, &m.material, m.dynamic, m.sphere});
@@ -93,8 +94,10 @@ std::vector<Drawable> Renderer::Impl::drawablesOf(const DrawList& list, int view
   return out;
 }
 
-void Renderer::Impl::drawMesh(const Drawable& d, const DrawScope& scope, bool shadowOn, Cull cull,
-                              bool clipToShadowBox) {
+void MeshPass::draw(const Drawable& d, const DrawScope& scope, bool shadowOn, Cull cull, const MeshDrawing& with,
+                    bool clipToShadowBox) {
+  Programs& programs = with.programs;
+  GpuCaches& caches = with.caches;
   const Material& m = *d.material;
   int pattern = m.pattern == Pattern::Checker ? 1 : m.pattern == Pattern::SolidChecker ? 3 : 0;
   if (m.pattern == Pattern::Texture && m.texture) {
@@ -115,7 +118,9 @@ void Renderer::Impl::drawMesh(const Drawable& d, const DrawScope& scope, bool sh
   mesh.use();
   setMeshUniforms(mesh, d, scope, clipToShadowBox);
   if (impostor) {
-    drawImpostor(d, scope, mesh, *impostor, pattern, shadowOn && m.lit);
+    spheres_.draw(d, scope, mesh, *impostor, pattern, shadowOn && m.lit,
+                  SphereDrawing{programs, with.streams, with.captures, with.stats, with.targets.width,
+                                with.targets.height});
     return;
   }
   if (cull == Cull::None) {
@@ -136,8 +141,11 @@ void Renderer::Impl::drawMesh(const Drawable& d, const DrawScope& scope, bool sh
   // thousands for its re-shade box, the Bloch glass's for the twin's
   // arrows). The runs left out cover no pixel of the rectangles, and the
   // rest are drawn in their order: the rectangles' bytes do not change.
-  const glm::mat4 clipFromModel = scope.clipFromWorld * d.worldFromModel;
-  RunsOfParts& kept = scratch.keptParts;
+  runs_.draw(g, scope.clipFromWorld * d.worldFromModel, scope, with.stats);
+}
+
+void MeshRuns::draw(const GpuMesh& g, const glm::mat4& clipFromModel, const DrawScope& scope, RenderStats& stats) {
+  RunsOfParts& kept = kept_;
   kept.clear();
   for (const MeshChunk& c : g.chunks) {
     const std::array<glm::vec3, 8> corners = boxCorners(c.lo, c.hi);
@@ -146,17 +154,17 @@ void Renderer::Impl::drawMesh(const Drawable& d, const DrawScope& scope, bool sh
   }
   // The runs go to GL in one call: a draw call costs llvmpipe more than a
   // run of triangles.
-  scratch.runCounts.clear();
-  scratch.runOffsets.clear();
+  counts_.clear();
+  offsets_.clear();
   for (const RunsOfParts::Run& r : kept.runs()) {
-    scratch.runCounts.push_back(static_cast<GLsizei>(r.end - r.begin));
-    scratch.runOffsets.push_back(reinterpret_cast<const void*>(r.begin * sizeof(std::uint32_t)));
+    counts_.push_back(static_cast<GLsizei>(r.end - r.begin));
+    offsets_.push_back(reinterpret_cast<const void*>(r.begin * sizeof(std::uint32_t)));
     stats.meshIndicesDrawn += static_cast<long long>(r.end - r.begin);
   }
   stats.meshIndicesInRects += g.indexCount;
-  if (!scratch.runCounts.empty())
-    glMultiDrawElements(GL_TRIANGLES, scratch.runCounts.data(), GL_UNSIGNED_INT, scratch.runOffsets.data(),
-                        static_cast<GLsizei>(scratch.runCounts.size()));
+  if (!counts_.empty())
+    glMultiDrawElements(GL_TRIANGLES, counts_.data(), GL_UNSIGNED_INT, offsets_.data(),
+                        static_cast<GLsizei>(counts_.size()));
 }
 
 // Shadow receivers (the surfaces) pay for the shadow filter only inside
@@ -176,7 +184,7 @@ void Renderer::Impl::drawMesh(const Drawable& d, const DrawScope& scope, bool sh
 // resolve: before the ray-cast spheres, whose edges blend over the
 // shadowed surface (drawn after them, a re-shade would miss the pixels
 // that a sphere's edge covers in part, and leave them lit).
-void Renderer::Impl::drawReshades(const ViewItems& viewItems, const DrawScope& scope) {
+void MeshPass::drawReshades(const ViewItems& viewItems, const DrawScope& scope, const MeshDrawing& with) {
   if (viewItems.shadowMap == nullptr) return;
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
@@ -188,7 +196,7 @@ void Renderer::Impl::drawReshades(const ViewItems& viewItems, const DrawScope& s
       glPolygonOffset(-1.0f, -4.0f);
       glEnable(GL_BLEND);
       glBlendFuncSeparate(GL_DST_ALPHA, GL_ZERO, GL_ZERO, GL_ONE);
-      drawMesh(d, scope, true, d.material->cull, true);
+      draw(d, scope, true, d.material->cull, with, true);
       glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
       glDisable(GL_BLEND);
       glDisable(GL_POLYGON_OFFSET_FILL);
@@ -198,14 +206,16 @@ void Renderer::Impl::drawReshades(const ViewItems& viewItems, const DrawScope& s
 }
 
 // The opaque meshes; receivers without the shadow filter (see drawReshades).
-void Renderer::Impl::drawOpaque(const ViewItems& viewItems, const DrawScope& scope, Items which, Pass pass) {
+void MeshPass::drawOpaque(const ViewItems& viewItems, const DrawScope& scope, Items which, Pass pass,
+                          const MeshDrawing& with) {
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
   {
     const ClipDistances clipped;
     for (const Drawable& d : viewItems.items)
-      if (d.material->opacity >= 1.0f && takes(which, d.dynamic) && inSamplesPass(d) == (pass == Pass::Samples))
-        drawMesh(d, scope, false, d.material->cull);
+      if (d.material->opacity >= 1.0f && takes(which, d.dynamic) &&
+          inSamplesPass(d, with.targets) == (pass == Pass::Samples))
+        draw(d, scope, false, d.material->cull, with);
   }
   glDisable(GL_CULL_FACE);
 }
@@ -219,12 +229,13 @@ void Renderer::Impl::drawOpaque(const ViewItems& viewItems, const DrawScope& sco
 // samples are resolved over it (see sampleTiles), so a moving one is
 // drawn for its depth alone. Drawn as in samples: a sphere as its
 // triangles, not ray-cast.
-void Renderer::Impl::drawOpaqueAtCentres(const ViewItems& viewItems, const DrawScope& scope, Items which) {
+void MeshPass::drawOpaqueAtCentres(const ViewItems& viewItems, const DrawScope& scope, Items which,
+                                   const MeshDrawing& with) {
   DrawScope asSamples = scope;
-  asSamples.samples = targets.samples;
-  asSamples.depthOnly = which == Items::DynamicOnly && targets.opaqueFbo != 0;
+  asSamples.samples = with.targets.samples;
+  asSamples.depthOnly = which == Items::DynamicOnly && with.targets.opaqueFbo != 0;
   if (asSamples.depthOnly) glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  drawOpaque(viewItems, asSamples, which, Pass::Samples);
+  drawOpaque(viewItems, asSamples, which, Pass::Samples, with);
   if (asSamples.depthOnly) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 

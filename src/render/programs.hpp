@@ -17,7 +17,7 @@ class Programs {
   explicit Programs(const ShaderLibrary& lib);
 
   // `impostor`: 0 the mesh's triangles, 1 a ray-cast sphere, 2 the same
-  // under what is drawn (see drawImpostor); see mesh.frag.
+  // under what is drawn (see SpherePass::draw); see mesh.frag.
   // `vertexLit`: lit per vertex with the highlight (an arrow's own meshes).
   // `capture`: a translucent sphere's capture (see glass_capture.hpp).
   // `coneCut`: the material's porthole (Material::cutCone) is cut out.

@@ -1,11 +1,13 @@
 // Readback: the scene's pixels back to the CPU, composited over the views'
 // backdrops (composite.hpp) and flipped top-down; the depth buffer for
 // vector figures; the retained layer's edge tiles.
+#include "render/readback.hpp"
+
 #include <algorithm>
 #include <bit>
 
+#include "core/error.hpp"
 #include "render/composite.hpp"
-#include "render/renderer_impl.hpp"
 
 namespace rollspin::render {
 
@@ -17,21 +19,21 @@ namespace rollspin::render {
 // small fraction of that, and the read-back it rides on is paid anyway. A
 // pixel belongs to the last view that holds it, as the views are drawn;
 // pixels between views get no backdrop.
-void Renderer::Impl::readBack(const DrawList& list, media::Image& image, const PixelRect& r) {
+void Readback::pixels(const DrawList& list, media::Image& image, const PixelRect& r, GLuint sceneFbo) {
   if (r.empty()) return;
   const int width = r.x1 - r.x0, rows = r.y1 - r.y0;
-  std::vector<std::uint32_t>& readRows = scratch.readRows;
+  std::vector<std::uint32_t>& readRows = rows_;
   readRows.resize(static_cast<std::size_t>(width) * rows);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.sceneFbo);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, sceneFbo);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(r.x0, list.height - r.y1, width, rows, GL_RGBA, GL_UNSIGNED_BYTE, readRows.data());
   static_assert(std::endian::native == std::endian::little, "the packed RGBA8 words assume little endian");
   const std::uint32_t opaqueAlpha = list.transparent ? 0u : 255u;
   // Each view's backdrop ends, sRGB-encoded once (not per row).
-  std::vector<std::pair<glm::vec3, glm::vec3>>& ends = scratch.backdropEnds;
+  std::vector<std::pair<glm::vec3, glm::vec3>>& ends = backdrops_;
   ends.clear();
   for (const View& v : list.views) ends.emplace_back(encodeSrgb(v.backgroundTop), encodeSrgb(v.backgroundBottom));
-  std::vector<int>& cuts = scratch.rowCuts;
+  std::vector<int>& cuts = cuts_;
   for (int y = r.y0; y < r.y1; ++y) {
     // GL rows count from the bottom: read row k is image row r.y1 − 1 − k.
     const std::uint32_t* in = readRows.data() + static_cast<std::size_t>(r.y1 - 1 - y) * width;
@@ -75,9 +77,9 @@ void Renderer::Impl::readBack(const DrawList& list, media::Image& image, const P
 
 // Vector figures: the scene's depth after render() (one sample, at the
 // pixel centres: see drawOpaqueAtCentres).
-void Renderer::Impl::readDepth(std::vector<float>& depth) const {
-  const int w = targets.width, h = targets.height;
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.sceneFbo);
+void readDepth(GLuint sceneFbo, int width, int height, std::vector<float>& depth) {
+  const int w = width, h = height;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, sceneFbo);
   std::vector<float> bottomUp(static_cast<std::size_t>(w) * h);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
   glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, bottomUp.data());
@@ -90,12 +92,12 @@ void Renderer::Impl::readDepth(std::vector<float>& depth) const {
     std::copy_n(bottomUp.begin() + std::ptrdiff_t(h - 1 - y) * w, w, depth.begin() + std::ptrdiff_t(y) * w);
 }
 
-// The tiles where the resolved opaque layer covers pixels in part (alpha
-// strictly between 0 and 1): read back once per layer.
-void Renderer::Impl::findLayerEdges(const DrawList& list) {
+// The retained layer's tiles where its resolved opaque items cover pixels in
+// part: read back once per layer.
+std::vector<PixelRect> partlyCoveredTiles(const DrawList& list, GLuint sceneFbo) {
   std::vector<std::uint8_t> rgba(static_cast<std::size_t>(list.width) * list.height * 4);
   glDisable(GL_SCISSOR_TEST);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.sceneFbo);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, sceneFbo);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, list.width, list.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   TileGrid grid(list.width, list.height);
@@ -105,7 +107,7 @@ void Renderer::Impl::findLayerEdges(const DrawList& list) {
     for (int x = 0; x < list.width; ++x)
       if (const std::uint8_t a = p[x * 4 + 3]; a != 0 && a != 255) grid.add(PixelRect{x, y, x + 1, y + 1});
   }
-  layer.edgeRects = grid.rects();
+  return grid.rects();
 }
 
 }  // namespace rollspin::render

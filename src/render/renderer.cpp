@@ -31,7 +31,7 @@ void Renderer::Impl::render(const DrawList& list, media::Image& image, ImageHist
   for (std::size_t i = 0; i < list.views.size(); ++i) {
     ViewItems& vi = perView[i];
     vi.arrowMaterials.reserve(list.arrows.size());
-    vi.items = drawablesOf(list, static_cast<int>(i), vi.arrowMaterials);
+    vi.items = drawablesOf(list, static_cast<int>(i), vi.arrowMaterials, caches);
     if (!list.views[i].light.shadow) continue;
     StageLog::instance().record("shadow-map");
     vi.shadowMap = &shadowMaps.at(shadowMapsUsed++);
@@ -70,7 +70,7 @@ void Renderer::Impl::render(const DrawList& list, media::Image& image, ImageHist
     captures.clear();  // no layer: a camera move, most likely, which they would not survive
     targets.clear(list, false);
     drawWhole(list, perView);
-    readBack(list, image, PixelRect{0, 0, list.width, list.height});
+    readback.pixels(list, image, PixelRect{0, 0, list.width, list.height}, targets.sceneFbo);
     ++stats.wholeFrames;
   }
   if (const GLenum err = glGetError(); err != GL_NO_ERROR)
@@ -94,16 +94,16 @@ void Renderer::render(const DrawList& list, media::Image& image, ImageHistory& h
 }
 void Renderer::renderWithDepth(const DrawList& list, media::Image& image, std::vector<float>& depth) {
   // The depth of this list alone, drawn whole: no retained layer in between.
-  const bool retain = impl_->retainLayers;
-  setRetainLayers(false);
+  const Impl::RetainLayersOff drawnWhole(*impl_);
   impl_->render(list, image);
-  impl_->readDepth(depth);
-  setRetainLayers(retain);
+  readDepth(impl_->targets.sceneFbo, impl_->targets.width, impl_->targets.height, depth);
 }
 
-void Renderer::setRetainLayers(bool on) {
-  impl_->retainLayers = on;
-  if (!on) impl_->layer.memory = {};
+void Renderer::setRetainLayers(bool on) { impl_->setRetainLayers(on); }
+
+void Renderer::Impl::setRetainLayers(bool on) {
+  retainLayers = on;
+  if (!on) layer.memory = {};
 }
 const RenderStats& Renderer::stats() const { return impl_->stats; }
 

@@ -1,13 +1,30 @@
 // Renderer::Impl: the renderer's state, gathered in one place, and the
-// passes over a frame, one file each:
+// steps of a frame that use all of it:
 //   renderer.cpp        the frame: shadow maps, the layer plan, eviction
-//   mesh_pass.cpp       the lit meshes (opaque, re-shade, translucent)
-//   sphere_pass.cpp     ray-cast spheres
-//   glass_capture.cpp   a translucent sphere captured once, replayed
-//   shadow_pass.cpp     shadow maps          line_pass.cpp   polylines
-//   text_pass.cpp       labels and frames    view_pass.cpp   a view's steps
-//   readback.cpp        pixels and depth back to the CPU
+//   view_pass.cpp       a view's steps
 //   retained_layers.cpp the retained layer: build, update, frames over it
+// The passes they call are objects or functions of their own, and take
+// what they read and write as arguments; each pass object holds only the
+// vectors it reuses from draw to draw (no allocation per draw):
+//   shadowPass (shadow_pass)  the view, its casters, the map, the caches,
+//                             the programs and streams
+//   MeshPass (mesh_pass)      the drawables, the scope, and MeshDrawing (the
+//                             programs, caches, streams, captures, stats,
+//                             framebuffers); it holds a SpherePass and the
+//                             MeshRuns of a mesh inside a retained frame's
+//                             rectangles
+//   SpherePass (sphere_pass, its replay in glass_capture): the drawable,
+//                             its scope and program, and SphereDrawing (the
+//                             programs, streams, captures, stats, the
+//                             framebuffer's size)
+//   LinePass (line_pass)      the polyline, its scope, the line program,
+//                             the streams, the framebuffer's height, stats
+//   Readback (readback)       the list, the image, the rectangle and the
+//                             scene framebuffer; readDepth and
+//                             partlyCoveredTiles likewise
+//   text_pass                 the label, its scope, and TextDrawing (the
+//                             text program, streams, font caches); the
+//                             scene framebuffer for image-level labels
 // The GL objects (gl_objects), programs (programs), GPU caches (gpu_caches)
 // and framebuffers (frame_targets) are classes of their own. Every draw
 // takes a DrawScope (draw_scope.hpp). Renderer-internal.
@@ -31,9 +48,14 @@
 #include "render/glass_capture.hpp"
 #include "render/gpu_caches.hpp"
 #include "render/layer_plan.hpp"
+#include "render/line_pass.hpp"
+#include "render/mesh_pass.hpp"
 #include "render/programs.hpp"
+#include "render/readback.hpp"
 #include "render/renderer.hpp"
 #include "render/shadow_pass.hpp"
+#include "render/sphere_pass.hpp"
+#include "render/text_pass.hpp"
 
 namespace rollspin::render {
 
@@ -52,32 +74,13 @@ struct Renderer::Impl {
   Impl(const GlContext& context, const ShaderLibrary& lib) : context(context), programs(lib) {}
 
   void render(const DrawList& list, media::Image& image, ImageHistory::State* history = nullptr);
+  // Off: every frame drawn whole, and the layer's memory forgotten.
+  void setRetainLayers(bool on);
 
-  // ---- mesh_pass.cpp
-  std::vector<Drawable> drawablesOf(const DrawList& list, int view, std::vector<Material>& arrowMaterials);
-  void drawMesh(const Drawable& d, const DrawScope& scope, bool shadowOn, Cull cull, bool clipToShadowBox = false);
-  void drawReshades(const ViewItems& viewItems, const DrawScope& scope);
-  bool inSamplesPass(const Drawable& d) const { return !d.dynamic || (targets.opaqueFbo != 0 && !d.sphere); }
-  void drawOpaque(const ViewItems& viewItems, const DrawScope& scope, Items which, Pass pass);
-  void drawOpaqueAtCentres(const ViewItems& viewItems, const DrawScope& scope, Items which);
-  // ---- sphere_pass.cpp
-  void drawImpostor(const Drawable& d, const DrawScope& scope, Program& mesh, const PixelRect& rect, int pattern,
-                    bool shadowed);
-  void drawImpostorParts(Program& program, const View& v, const std::vector<PixelRect>& rects) const;
-  // ---- glass_capture.cpp
-  void replaySphere(const Drawable& d, const DrawScope& scope, const PixelRect& rect, int pattern,
-                    const glm::mat4& worldFromClip, const glm::vec4& viewport);
-  // ---- line_pass.cpp
-  void drawPolyline(const PolylineItem& p, const DrawScope& scope);
-  // ---- text_pass.cpp
-  void drawQuads(std::span<const GlyphQuad> quads, glm::vec2 viewportSize, const glm::vec4& color, GLuint atlas,
-                 bool solid);
-  GpuFont* labelQuads(const LabelItem& label, glm::vec2 viewportSize, const glm::mat4* clipFromWorld,
-                      std::vector<GlyphQuad>& quads);
-  void drawLabelAs(const LabelItem& label, Items which, glm::vec2 viewportSize, const glm::mat4* clipFromWorld,
-                   const DrawScope& scope);
-  void drawImageLabels(const DrawList& list, Items which, const PixelRect& clip);
-  PixelRect labelBounds(const LabelItem& l, const DrawList& list, const View* v, const glm::mat4& clipFromWorld);
+  // What the mesh pass (mesh_pass.hpp) draws with.
+  MeshDrawing meshDrawing() { return {programs, caches, streams, captures, stats, targets}; }
+  // What the text pass (text_pass.hpp) draws with.
+  TextDrawing textDrawing() { return {programs.text, streams, caches}; }
   // ---- view_pass.cpp
   DrawScope beginView(const DrawList& list, const View& v, const ViewItems& viewItems, const PixelRect* clip,
                       GLuint fbo = 0);
@@ -90,10 +93,6 @@ struct Renderer::Impl {
   void drawRest(const DrawList& list, int index, const ViewItems& viewItems, Items which, const DrawScope& scope);
   void drawWhole(const DrawList& list, const std::vector<ViewItems>& perView);
   void meshBounds(const View& v, const glm::mat4& clipFromWorld, const Drawable& d, std::vector<PixelRect>& out);
-  // ---- readback.cpp
-  void readBack(const DrawList& list, media::Image& image, const PixelRect& r);
-  void readDepth(std::vector<float>& depth) const;
-  void findLayerEdges(const DrawList& list);
   // ---- retained_layers.cpp
   void buildLayer(const DrawList& list, const std::vector<ViewItems>& perView);
   std::vector<PixelRect> drawOverLayer(const DrawList& list, const std::vector<ViewItems>& perView,
@@ -126,6 +125,9 @@ struct Renderer::Impl {
   FrameTargets targets;
   ShadowMaps shadowMaps;
   SphereCaptures captures;
+  MeshPass meshes;
+  LinePass lines;
+  Readback readback;
 
   // The retained layer (see retained_layers.cpp): its keys, its finished
   // image of the static items, and that image's identity: a new one per
@@ -140,25 +142,28 @@ struct Renderer::Impl {
     std::uint64_t version = 0, restorableFrom = 0;
     std::deque<std::pair<std::uint64_t, std::vector<PixelRect>>> updates;
     static constexpr std::size_t kUpdatesKept = 64;
+    // What a frame over it restores from it, and the parts outside the
+    // fresh views: reused from frame to frame (drawOverLayer, redrawRects).
+    std::vector<PixelRect> restoredParts, splitParts;
   } layer;
 
   RenderStats stats;
 
-  // Scratch storage that the passes reuse from draw to draw and frame to
-  // frame (no allocation per draw); nothing in it outlives a call.
-  struct Scratch {
-    std::vector<PixelRect> parts, underParts;  // drawImpostor's
-    std::vector<glm::vec3> replayCorners;      // replaySphere's
-    RunsOfParts keptParts;                     // drawMesh's and drawPolyline's
-    std::vector<GLsizei> runCounts;
-    std::vector<const void*> runOffsets;
-    std::vector<GLint> lineFirsts;
-    std::vector<glm::vec3> paddedPoints;  // a polyline's points with its ends repeated
-    std::vector<std::uint32_t> readRows;  // readBack's rows as read, bottom-up
-    std::vector<std::pair<glm::vec3, glm::vec3>> backdropEnds;  // readBack's, per view
-    std::vector<int> rowCuts;                                   // readBack's, per row
-    std::vector<PixelRect> restoredParts, splitParts;           // drawOverLayer's
-  } scratch;
+  // Retained layers off for the guard's lifetime (a list drawn whole); the
+  // previous setting back when it ends, also when the drawing throws.
+  class RetainLayersOff {
+   public:
+    explicit RetainLayersOff(Impl& impl) : impl_(impl), previous_(impl.retainLayers) {
+      impl_.setRetainLayers(false);
+    }
+    ~RetainLayersOff() { impl_.setRetainLayers(previous_); }
+    RetainLayersOff(const RetainLayersOff&) = delete;
+    RetainLayersOff& operator=(const RetainLayersOff&) = delete;
+
+   private:
+    Impl& impl_;
+    bool previous_;
+  };
 };
 
 }  // namespace rollspin::render

@@ -137,10 +137,10 @@ std::vector<PixelRect> Renderer::Impl::dirtyRects(const DrawList& list, const st
     for (const PolylineItem& p : list.polylines)
       if (p.view == index && p.dynamic) addSegmentBounds(p, v, clipFromWorld, 0, grid);
     for (const LabelItem& l : list.labels)
-      if (l.view == index && l.dynamic) add(labelBounds(l, list, &v, clipFromWorld));
+      if (l.view == index && l.dynamic) add(labelBounds(l, list, &v, clipFromWorld, caches));
   }
   for (const LabelItem& l : list.labels)
-    if (l.view < 0 && l.dynamic) add(labelBounds(l, list, nullptr, glm::mat4(1.0f)));
+    if (l.view < 0 && l.dynamic) add(labelBounds(l, list, nullptr, glm::mat4(1.0f), caches));
   return grid.rects();
 }
 
@@ -188,11 +188,11 @@ void Renderer::Impl::redrawSamples(const RedrawJob& job, std::vector<PixelRect>*
   if (reached.empty()) return;
   if (under != nullptr) under->insert(under->end(), reached.begin(), reached.end());
   forEachIsland(job, reached, 0, under, [&](std::size_t i, const PixelRect&, const DrawScope& scope) {
-    drawOpaqueAtCentres(job.perView[i], scope, Items::DynamicOnly);
+    meshes.drawOpaqueAtCentres(job.perView[i], scope, Items::DynamicOnly, meshDrawing());
   });
   FrameTargets::copyRects(job.list, targets.snapshotSamplesFbo, targets.opaqueFbo, reached);
   forEachIsland(job, reached, targets.opaqueFbo, under, [&](std::size_t i, const PixelRect&, const DrawScope& scope) {
-    drawOpaque(job.perView[i], scope, Items::DynamicOnly, Pass::Samples);
+    meshes.drawOpaque(job.perView[i], scope, Items::DynamicOnly, Pass::Samples, meshDrawing());
   });
   for (const PixelRect& rect : reached) targets.resolve(job.list, rect, programs, streams);
 }
@@ -220,7 +220,7 @@ void Renderer::Impl::redrawRects(const RedrawJob& job, const std::vector<PixelRe
   } else {
     targets.clear(list, false);
     std::vector<PixelRect> kept = rects;
-    outsideFreshViews(list, job.fresh, kept, scratch.splitParts);
+    outsideFreshViews(list, job.fresh, kept, layer.splitParts);
     FrameTargets::copyRects(list, targets.snapshotFbo, targets.sceneFbo, kept);
   }
   if (which != Items::StaticOnly) redrawSamples(job, under);
@@ -252,8 +252,8 @@ void Renderer::Impl::redrawRects(const RedrawJob& job, const std::vector<PixelRe
         allBounds = unite(allBounds, PixelRect{v.x, v.y, v.x + v.width, v.y + v.height});
       });
   for (const PixelRect& rect : rects) allBounds = unite(allBounds, rect);
-  drawImageLabels(list, which, allBounds);
-  for (const PixelRect& rect : rects) readBack(list, image, rect);
+  drawImageLabels(list, which, allBounds, targets.sceneFbo, textDrawing());
+  for (const PixelRect& rect : rects) readback.pixels(list, image, rect, targets.sceneFbo);
 }
 
 // Draws the static items into the scene, keeping the samples after their
@@ -266,7 +266,7 @@ void Renderer::Impl::buildLayer(const DrawList& list, const std::vector<ViewItem
     // layer (redrawSamples), wherever they go.
     for (std::size_t i = 0; i < list.views.size(); ++i) {
       const DrawScope scope = beginView(list, list.views[i], perView[i], nullptr, targets.opaqueFbo);
-      drawOpaque(perView[i], scope, Items::StaticOnly, Pass::Samples);
+      meshes.drawOpaque(perView[i], scope, Items::StaticOnly, Pass::Samples, meshDrawing());
     }
     glDisable(GL_SCISSOR_TEST);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.opaqueFbo);
@@ -279,13 +279,13 @@ void Renderer::Impl::buildLayer(const DrawList& list, const std::vector<ViewItem
   std::vector<PixelRect> resolved;
   for (std::size_t i = 0; i < list.views.size(); ++i) {
     const DrawScope scope = beginView(list, list.views[i], perView[i], nullptr);
-    drawOpaqueAtCentres(perView[i], scope, Items::StaticOnly);
+    meshes.drawOpaqueAtCentres(perView[i], scope, Items::StaticOnly, meshDrawing());
     if (targets.opaqueFbo == 0) continue;
     const std::vector<PixelRect> tiles = sampleTiles(list, list.views[i], perView[i], Items::StaticOnly);
     resolved.insert(resolved.end(), tiles.begin(), tiles.end());
   }
   for (const PixelRect& r : resolved) targets.resolve(list, r, programs, streams);
-  findLayerEdges(list);
+  layer.edgeRects = partlyCoveredTiles(list, targets.sceneFbo);
   glDisable(GL_SCISSOR_TEST);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.sceneFbo);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.snapshotFbo);
@@ -295,11 +295,11 @@ void Renderer::Impl::buildLayer(const DrawList& list, const std::vector<ViewItem
     const DrawScope scope = beginView(list, list.views[i], perView[i], nullptr);
     drawRest(list, static_cast<int>(i), perView[i], Items::StaticOnly, scope);
   }
-  drawImageLabels(list, Items::StaticOnly, PixelRect{0, 0, list.width, list.height});
+  drawImageLabels(list, Items::StaticOnly, PixelRect{0, 0, list.width, list.height}, targets.sceneFbo, textDrawing());
   layer.image.width = list.width;
   layer.image.height = list.height;
   layer.image.rgba.resize(static_cast<std::size_t>(list.width) * list.height * 4);
-  readBack(list, layer.image, PixelRect{0, 0, list.width, list.height});
+  readback.pixels(list, layer.image, PixelRect{0, 0, list.width, list.height}, targets.sceneFbo);
   ++stats.layerBuilds;
   layer.identity = std::make_shared<const LayerIdentity>();
   layer.version = layer.restorableFrom = 0;
@@ -320,9 +320,9 @@ std::vector<PixelRect> Renderer::Impl::drawOverLayer(const DrawList& list, const
   // A fresh view is read back whole below: its pixels in the layer are
   // not restored first (a follow camera's view, 5 MB at 1080p a frame).
   auto restore = [&](const PixelRect& r) {
-    scratch.restoredParts.assign(1, r);
-    outsideFreshViews(list, fresh, scratch.restoredParts, scratch.splitParts);
-    for (const PixelRect& part : scratch.restoredParts) copyPixels(layer.image, image, part);
+    layer.restoredParts.assign(1, r);
+    outsideFreshViews(list, fresh, layer.restoredParts, layer.splitParts);
+    for (const PixelRect& part : layer.restoredParts) copyPixels(layer.image, image, part);
   };
   if (history != nullptr && history->layer == layer.identity && history->version >= layer.restorableFrom) {
     for (const PixelRect& r : history->written) restore(r);
@@ -366,7 +366,7 @@ ItemBounds Renderer::Impl::itemBounds(const DrawList& list) {
     meshBounds(v, clipFromWorld, Drawable{m.mesh, m.worldFromModel, &m.material, false}, out);
   };
   b.label = [this, &list](const LabelItem& l, const View* v, const glm::mat4& clipFromWorld) {
-    return labelBounds(l, list, v, clipFromWorld);
+    return labelBounds(l, list, v, clipFromWorld, caches);
   };
   return b;
 }

@@ -4,9 +4,9 @@
 // per pixel; an opaque one first adds itself under the edges of what is
 // drawn (the under pass). A translucent one over a retained layer is
 // replayed from its capture (glass_capture.cpp).
-#include <algorithm>
+#include "render/sphere_pass.hpp"
 
-#include "render/renderer_impl.hpp"
+#include <algorithm>
 
 namespace rollspin::render {
 
@@ -27,8 +27,8 @@ glm::vec4 ndcRectOf(const View& v, const PixelRect& rect) {
       2.0f * float(rect.x1 - v.x) / float(v.width) - 1.0f, 1.0f - 2.0f * float(rect.y0 - v.y) / float(v.height));
 }
 
-void Renderer::Impl::drawImpostor(const Drawable& d, const DrawScope& scope, Program& mesh, const PixelRect& rect,
-                                  int pattern, bool shadowed) {
+void SpherePass::draw(const Drawable& d, const DrawScope& scope, Program& mesh, const PixelRect& rect, int pattern,
+                      bool shadowed, const SphereDrawing& with) {
   const View& v = *scope.view;
   const Material& m = *d.material;
   const bool opaque = m.opacity >= 1.0f;
@@ -42,7 +42,7 @@ void Renderer::Impl::drawImpostor(const Drawable& d, const DrawScope& scope, Pro
   const float radius = glm::length(glm::vec3(d.worldFromModel[0]));
   const std::vector<PixelRect> bands =
       sphereBands(v, rect, glm::vec3(d.worldFromModel[3]), radius, kImpostorMarginPx, kImpostorBandRows);
-  std::vector<PixelRect>& parts = scratch.parts;
+  std::vector<PixelRect>& parts = parts_;
   parts.clear();
   for (const PixelRect& band : bands) {
     if (scope.clips == nullptr) {
@@ -54,17 +54,17 @@ void Renderer::Impl::drawImpostor(const Drawable& d, const DrawScope& scope, Pro
   }
   if (parts.empty()) return;
   const glm::mat4 worldFromClip = glm::inverse(scope.clipFromWorld);
-  const int fbHeight = targets.height;
+  const int fbHeight = with.fbHeight;
   const glm::vec4 viewport(float(v.x), float(fbHeight - v.y - v.height), float(v.width), float(v.height));
   // Opaque meshes are drawn without blending (drawOpaque): on for this one.
   glEnable(GL_BLEND);
   glDisable(GL_CULL_FACE);
-  glBindVertexArray(streams.empty);
+  glBindVertexArray(with.streams.empty);
   // Over a retained layer, a translucent sphere that stays there (the
   // Bloch sphere's glass, shaded again in every frame's rectangles over
   // it) is replayed from its capture.
   if (!opaque && !scope.depthOnly && !shadowed && scope.clips != nullptr) {
-    replaySphere(d, scope, rect, pattern, worldFromClip, viewport);
+    replayCaptured(d, scope, rect, pattern, worldFromClip, viewport, with);
     return;
   }
   const bool behindEdges = opaque && !scope.depthOnly;
@@ -83,7 +83,7 @@ void Renderer::Impl::drawImpostor(const Drawable& d, const DrawScope& scope, Pro
     // front there, is drawn over it next. Over a retained layer only
     // where such pixels can be (scope.under): elsewhere alpha is 1 or
     // the depth is the clear value, and the pass would change nothing.
-    Program& under = programs.mesh(pattern, false, m.lit, m.specular > 0.0f, 2);
+    Program& under = with.programs.mesh(pattern, false, m.lit, m.specular > 0.0f, 2);
     under.use();
     setMeshUniforms(under, d, scope, false);
     under.set("worldFromClip", worldFromClip);
@@ -95,11 +95,11 @@ void Renderer::Impl::drawImpostor(const Drawable& d, const DrawScope& scope, Pro
     glDepthMask(GL_FALSE);
     glBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
     if (scope.under == nullptr) {
-      drawImpostorParts(under, v, parts);
+      drawImpostorParts(under, v, parts, with.fbWidth, with.fbHeight);
     } else {
       for (const PixelRect& part : *scope.under) {
-        clippedParts(parts, part, scratch.underParts);
-        drawImpostorParts(under, v, scratch.underParts);
+        clippedParts(parts, part, underParts_);
+        drawImpostorParts(under, v, underParts_, with.fbWidth, with.fbHeight);
       }
     }
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
@@ -110,7 +110,7 @@ void Renderer::Impl::drawImpostor(const Drawable& d, const DrawScope& scope, Pro
   mesh.set("worldFromClip", worldFromClip);
   mesh.set("viewportRect", viewport);
   mesh.set("ndcDepth", 0.0f);
-  drawImpostorParts(mesh, v, parts);
+  drawImpostorParts(mesh, v, parts, with.fbWidth, with.fbHeight);
   if (behindEdges && scope.under != nullptr) scope.under->push_back(rect);  // its edges, for a sphere drawn after it
   if (opaque) glDisable(GL_BLEND);
 }
@@ -120,8 +120,8 @@ void Renderer::Impl::drawImpostor(const Drawable& d, const DrawScope& scope, Pro
 // rectangle's two triangles would both shade the pixel blocks along
 // their diagonal (llvmpipe shades a block that a triangle covers in part
 // whole, under a mask), and a band is little more than that diagonal.
-void Renderer::Impl::drawImpostorParts(Program& program, const View& v, const std::vector<PixelRect>& rects) const {
-  const int fbWidth = targets.width, fbHeight = targets.height;
+void drawImpostorParts(Program& program, const View& v, const std::vector<PixelRect>& rects, int fbWidth,
+                       int fbHeight) {
   GLint box[4] = {0, 0, fbWidth, fbHeight};
   const bool scissored = glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE;
   if (scissored) glGetIntegerv(GL_SCISSOR_BOX, box);

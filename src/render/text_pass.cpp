@@ -1,9 +1,11 @@
 // Text: labels as glyph quads from a font atlas (font_atlas.hpp), in a
 // view's pixels or the image's, and the inset frame as solid quads.
+#include "render/text_pass.hpp"
+
 #include <algorithm>
 #include <cmath>
 
-#include "render/renderer_impl.hpp"
+#include "render/layer_key.hpp"
 
 namespace rollspin::render {
 
@@ -24,9 +26,8 @@ PixelRect glyphBounds(std::span<const GlyphQuad> quads, int ox, int oy) {
 
 }  // namespace
 
-// Pixel-space quads (x0, y0, x1, y1, s0, t0, s1, t1) with the text program.
-void Renderer::Impl::drawQuads(std::span<const GlyphQuad> quads, glm::vec2 viewportSize, const glm::vec4& color,
-                               GLuint atlas, bool solid) {
+void drawQuads(std::span<const GlyphQuad> quads, glm::vec2 viewportSize, const glm::vec4& color, GLuint atlas,
+               bool solid, const TextDrawing& with) {
   if (quads.empty()) return;
   std::vector<float> data;
   data.reserve(quads.size() * 24);
@@ -35,7 +36,7 @@ void Renderer::Impl::drawQuads(std::span<const GlyphQuad> quads, glm::vec2 viewp
                            {q.x0, q.y0, q.s0, q.t0}, {q.x1, q.y1, q.s1, q.t1}, {q.x1, q.y0, q.s1, q.t0}};
     for (const auto& vert : v) data.insert(data.end(), vert, vert + 4);
   }
-  Program& text = programs.text;
+  Program& text = with.text;
   text.use();
   text.set("viewportSize", viewportSize);
   text.set("textColor", color);
@@ -43,14 +44,12 @@ void Renderer::Impl::drawQuads(std::span<const GlyphQuad> quads, glm::vec2 viewp
   text.set("glyphAtlas", 0);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, atlas);
-  streams.uploadGlyphs(data);
+  with.streams.uploadGlyphs(data);
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(quads.size() * 6));
 }
 
-// The label's glyph quads in the viewport's pixels (top-left origin) and
-// its font; null when a world anchor lies behind the camera.
-GpuFont* Renderer::Impl::labelQuads(const LabelItem& label, glm::vec2 viewportSize, const glm::mat4* clipFromWorld,
-                                    std::vector<GlyphQuad>& quads) {
+GpuFont* labelQuads(const LabelItem& label, glm::vec2 viewportSize, const glm::mat4* clipFromWorld,
+                    std::vector<GlyphQuad>& quads, GpuCaches& caches) {
   glm::vec2 pen(label.anchor.x, label.anchor.y);
   if (label.worldAnchored && clipFromWorld != nullptr) {
     const glm::vec4 c = *clipFromWorld * glm::vec4(label.anchor, 1.0f);
@@ -76,15 +75,15 @@ GpuFont* Renderer::Impl::labelQuads(const LabelItem& label, glm::vec2 viewportSi
 // rectangles is not drawn: it could change only pixels that are not read
 // back (each label is a draw of its own, with its vertices uploaded; a
 // frame has about twenty).
-void Renderer::Impl::drawLabelAs(const LabelItem& label, Items which, glm::vec2 viewportSize,
-                                 const glm::mat4* clipFromWorld, const DrawScope& scope) {
+void drawLabelAs(const LabelItem& label, Items which, glm::vec2 viewportSize, const glm::mat4* clipFromWorld,
+                 const DrawScope& scope, const TextDrawing& with) {
   auto draw = [&](const LabelItem& l) {
     std::vector<GlyphQuad> quads;
-    GpuFont* f = labelQuads(l, viewportSize, clipFromWorld, quads);
+    GpuFont* f = labelQuads(l, viewportSize, clipFromWorld, quads, with.caches);
     if (f == nullptr || quads.empty()) return;
     if (scope.clips != nullptr && !reachesAny(*scope.clips, glyphBounds(quads, scope.view->x, scope.view->y)))
       return;
-    drawQuads(quads, viewportSize, l.color, f->texture, false);
+    drawQuads(quads, viewportSize, l.color, f->texture, false, with);
   };
   if (which == Items::StaticOnly) {
     if (const auto part = staticPartOf(label)) draw(*part);
@@ -93,9 +92,9 @@ void Renderer::Impl::drawLabelAs(const LabelItem& label, Items which, glm::vec2 
   }
 }
 
-// Image-level labels (titles) over everything, scissored to `clip`.
-void Renderer::Impl::drawImageLabels(const DrawList& list, Items which, const PixelRect& clip) {
-  glBindFramebuffer(GL_FRAMEBUFFER, targets.sceneFbo);
+void drawImageLabels(const DrawList& list, Items which, const PixelRect& clip, GLuint sceneFbo,
+                     const TextDrawing& with) {
+  glBindFramebuffer(GL_FRAMEBUFFER, sceneFbo);
   glEnable(GL_SCISSOR_TEST);
   glScissor(clip.x0, list.height - clip.y1, clip.x1 - clip.x0, clip.y1 - clip.y0);
   glViewport(0, 0, list.width, list.height);
@@ -103,24 +102,22 @@ void Renderer::Impl::drawImageLabels(const DrawList& list, Items which, const Pi
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   for (const LabelItem& l : list.labels)
-    if (l.view < 0) drawLabelAs(l, which, glm::vec2(list.width, list.height), nullptr, DrawScope{});
+    if (l.view < 0) drawLabelAs(l, which, glm::vec2(list.width, list.height), nullptr, DrawScope{}, with);
 }
 
-// Where a label can draw, in image pixels: for a dynamic label over the
-// layer, only the glyphs after its static part.
-PixelRect Renderer::Impl::labelBounds(const LabelItem& l, const DrawList& list, const View* v,
-                                      const glm::mat4& clipFromWorld) {
+PixelRect labelBounds(const LabelItem& l, const DrawList& list, const View* v, const glm::mat4& clipFromWorld,
+                      GpuCaches& caches) {
   const glm::vec2 size = v != nullptr ? glm::vec2(v->width, v->height) : glm::vec2(list.width, list.height);
   const glm::mat4* clip = v != nullptr ? &clipFromWorld : nullptr;
   std::vector<GlyphQuad> quads;
-  if (labelQuads(l, size, clip, quads) == nullptr || quads.empty()) return {};
+  if (labelQuads(l, size, clip, quads, caches) == nullptr || quads.empty()) return {};
   // A dynamic label's static part is in the layer: only the glyphs after
   // it change (the part's glyphs are the label's first ones).
   std::size_t first = 0;
   if (l.dynamic)
     if (const auto part = staticPartOf(l)) {
       std::vector<GlyphQuad> partQuads;
-      if (labelQuads(*part, size, clip, partQuads) != nullptr) first = partQuads.size();
+      if (labelQuads(*part, size, clip, partQuads, caches) != nullptr) first = partQuads.size();
     }
   if (first >= quads.size()) return {};
   const PixelRect area = v != nullptr ? PixelRect{v->x, v->y, v->x + v->width, v->y + v->height}

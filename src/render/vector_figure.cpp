@@ -91,7 +91,7 @@ struct DepthTest {
 // behind or comes out from an opaque mesh are needed; those are found by
 // stepping about one raster pixel along it and bisecting the step.
 void addVisiblePath(cairo_t* cr, const PolylineItem& p, const ViewProjection& project, const DepthTest& test) {
-  const double bias = p.depthTested ? 0.0008 : 0.0;  // the line shader's bias (renderer drawPolyline)
+  const double bias = p.depthTested ? 0.0008 : 0.0;  // the line shader's bias (LinePass::draw)
   bool open = false;
   auto extend = [&](const glm::dvec2& q, bool newPiece) {
     if (newPiece || !open) cairo_move_to(cr, q.x, q.y);
@@ -427,6 +427,136 @@ void hideBehindOpaque(media::Image& translucent, const std::vector<float>& trans
 }
 
 
+namespace {
+
+// The page, widthPt × heightPt, written through `sink`: PDF (its creator,
+// and a fixed creation date for reproducible builds instead of cairo's
+// clock) or SVG in points.
+cairo_surface_t* figurePage(FigureFormat format, StreamSink& sink, double widthPt, double heightPt) {
+  cairo_surface_t* surface = format == FigureFormat::Pdf
+                                 ? cairo_pdf_surface_create_for_stream(writeToSink, &sink, widthPt, heightPt)
+                                 : cairo_svg_surface_create_for_stream(writeToSink, &sink, widthPt, heightPt);
+  if (format == FigureFormat::Pdf) cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "rollspin");
+  if (const auto epoch = media::sourceDateEpoch(); epoch && format == FigureFormat::Pdf) {
+    const std::time_t t = static_cast<std::time_t>(*epoch);
+    std::tm utc{};
+    gmtime_r(&t, &utc);
+    const std::string date = fmt::format("{:04}-{:02}-{:02}T{:02}:{:02}:{:02}", utc.tm_year + 1900, utc.tm_mon + 1,
+                                         utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec);
+    cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, date.c_str());
+  }
+  if (format == FigureFormat::Svg) cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PT);
+  return surface;
+}
+
+// Figure units are the DrawList's pixels, `unit` points each; text as
+// outlines, not hinted glyph positions (it scales with the figure); round
+// joins and caps.
+void setFigurePen(cairo_t* cr, double unit) {
+  cairo_scale(cr, unit, unit);
+  cairo_font_options_t* options = cairo_font_options_create();
+  cairo_font_options_set_hint_style(options, CAIRO_HINT_STYLE_NONE);
+  cairo_font_options_set_hint_metrics(options, CAIRO_HINT_METRICS_OFF);
+  cairo_set_font_options(cr, options);
+  cairo_font_options_destroy(options);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+}
+
+// Clips to view i's rectangle, less any later view drawn over it (an inset
+// clears its rectangle in the GL image too).
+void clipToUncoveredView(cairo_t* cr, const DrawList& list, std::size_t i) {
+  const View& v = list.views[i];
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+  cairo_rectangle(cr, v.x, v.y, v.width, v.height);
+  for (std::size_t j = i + 1; j < list.views.size(); ++j) {
+    const View& w = list.views[j];
+    if (!overlap(v, w)) continue;
+    const int x0 = std::max(v.x, w.x), y0 = std::max(v.y, w.y);
+    const int x1 = std::min(v.x + v.width, w.x + w.width), y1 = std::min(v.y + v.height, w.y + w.height);
+    cairo_rectangle(cr, x0, y0, x1 - x0, y1 - y0);
+  }
+  cairo_clip(cr);
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+}
+
+// The composite pass's gradient, interpolated between sRGB-encoded ends.
+void paintBackdrop(cairo_t* cr, const View& v) {
+  cairo_pattern_t* g = cairo_pattern_create_linear(0.0, v.y, 0.0, v.y + v.height);
+  cairo_pattern_add_color_stop_rgb(g, 0.0, encodeSrgb(v.backgroundTop.r), encodeSrgb(v.backgroundTop.g),
+                                   encodeSrgb(v.backgroundTop.b));
+  cairo_pattern_add_color_stop_rgb(g, 1.0, encodeSrgb(v.backgroundBottom.r), encodeSrgb(v.backgroundBottom.g),
+                                   encodeSrgb(v.backgroundBottom.b));
+  cairo_set_source(cr, g);
+  cairo_paint(cr);
+  cairo_pattern_destroy(g);
+}
+
+// The view's polylines that are (depthTested) or are not depth-tested, cut
+// where a mesh is in front.
+void strokeViewLines(cairo_t* cr, const DrawList& list, int index, bool depthTested, const ViewProjection& project,
+                     const DepthTest& depth) {
+  for (const PolylineItem& p : list.polylines) {
+    if (p.view != index || p.depthTested != depthTested || p.points.size() < 2) continue;
+    addVisiblePath(cr, p, project, depth);
+    setColor(cr, glm::vec3(p.color), p.color.a);
+    cairo_set_line_width(cr, p.widthPx);
+    cairo_stroke(cr);
+  }
+}
+
+// The view's frame, mitred.
+void strokeViewFrame(cairo_t* cr, const View& v) {
+  const double t = std::max(1.0, v.height / 300.0);
+  setColor(cr, glm::vec3(0.35f, 0.38f, 0.42f), 1.0f);
+  cairo_set_line_width(cr, t);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
+  cairo_rectangle(cr, v.x + 0.5 * t, v.y + 0.5 * t, v.width - t, v.height - t);
+  cairo_stroke(cr);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+}
+
+// What a view of the figure is drawn with: the rasters and their scale
+// from the list's pixels, the fonts and the labels' scale, the opaque
+// depth, the style.
+struct FigureView {
+  const FigureRasters& rasters;
+  double kx, ky;
+  FigureFonts& fonts;
+  double fontScale;
+  const DepthTest& depth;
+  const FigureStyle& style;
+};
+
+// View i in the GL renderer's order: opaque meshes (image, then the
+// marks), depth-tested lines (cut where a mesh is in front), the arrows,
+// translucent meshes over them, then the lines that ignore depth, the
+// labels and the frame.
+void drawFigureView(cairo_t* cr, const DrawList& list, std::size_t i, const FigureView& with) {
+  const View& v = list.views[i];
+  const int index = static_cast<int>(i);
+  cairo_save(cr);
+  clipToUncoveredView(cr, list, i);
+  if (!with.style.transparent && v.background) paintBackdrop(cr, v);
+  const ViewProjection project = projectionOf(v);
+  const PixelRect rasterRect = scaledRect(v, with.kx, with.ky);
+  paintRaster(cr, with.rasters.opaque, rasterRect, with.kx, with.ky);
+  // Marks are opaque meshes too: under the lines, as GL draws them.
+  for (const MeshItem& m : list.meshes)
+    if (m.view == index && m.mesh && m.figureDisc && m.material.opacity >= 1.0f) drawDisc(cr, m, v, project, with.depth);
+  strokeViewLines(cr, list, index, true, project, with.depth);
+  for (const ArrowItem& a : list.arrows)
+    if (a.view == index) drawArrow(cr, a, project);
+  paintRaster(cr, with.rasters.translucent, rasterRect, with.kx, with.ky);
+  strokeViewLines(cr, list, index, false, project, with.depth);
+  for (const LabelItem& l : list.labels)
+    if (l.view == index) drawLabel(cr, with.fonts, l, project.origin, &project, with.fontScale);
+  if (v.frame) strokeViewFrame(cr, v);
+  cairo_restore(cr);
+}
+
+}  // namespace
+
 void writeFigure(const std::filesystem::path& out, FigureFormat format, const DrawList& list,
                  const FigureRasters& rasters, const FigureStyle& style, const media::OutputMetadata* metadata) {
   // Figure units are the DrawList's pixels, scaled onto the physical page.
@@ -438,105 +568,15 @@ void writeFigure(const std::filesystem::path& out, FigureFormat format, const Dr
   AtomicFile file(out);
   std::string bytes;
   StreamSink sink{&file, nullptr, metadata ? &bytes : nullptr};
-  cairo_surface_t* surface =
-      format == FigureFormat::Pdf ? cairo_pdf_surface_create_for_stream(writeToSink, &sink, style.widthPt, heightPt)
-                                  : cairo_svg_surface_create_for_stream(writeToSink, &sink, style.widthPt, heightPt);
-  if (format == FigureFormat::Pdf) cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "rollspin");
-  // Reproducible builds: a fixed creation date instead of cairo's clock.
-  if (const auto epoch = media::sourceDateEpoch(); epoch && format == FigureFormat::Pdf) {
-    const std::time_t t = static_cast<std::time_t>(*epoch);
-    std::tm utc{};
-    gmtime_r(&t, &utc);
-    const std::string date = fmt::format("{:04}-{:02}-{:02}T{:02}:{:02}:{:02}", utc.tm_year + 1900, utc.tm_mon + 1,
-                                         utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec);
-    cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, date.c_str());
-  }
-  if (format == FigureFormat::Svg) cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PT);
+  cairo_surface_t* surface = figurePage(format, sink, style.widthPt, heightPt);
   cairo_t* cr = cairo_create(surface);
-  cairo_scale(cr, unit, unit);
-  // Outlines, not hinted glyph positions: the text scales with the figure.
-  cairo_font_options_t* options = cairo_font_options_create();
-  cairo_font_options_set_hint_style(options, CAIRO_HINT_STYLE_NONE);
-  cairo_font_options_set_hint_metrics(options, CAIRO_HINT_METRICS_OFF);
-  cairo_set_font_options(cr, options);
-  cairo_font_options_destroy(options);
-  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  setFigurePen(cr, unit);
 
   FigureFonts fonts(style.font);
   const double fontScale = labelScale(fonts, style, unit);
   const DepthTest depth{&rasters.opaqueDepth, rasters.width, rasters.height, kx, ky};
-  for (std::size_t i = 0; i < list.views.size(); ++i) {
-    const View& v = list.views[i];
-    const int index = static_cast<int>(i);
-    cairo_save(cr);
-    // The view's rectangle, less any later view drawn over it (an inset
-    // clears its rectangle in the GL image too).
-    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
-    cairo_rectangle(cr, v.x, v.y, v.width, v.height);
-    for (std::size_t j = i + 1; j < list.views.size(); ++j) {
-      const View& w = list.views[j];
-      if (!overlap(v, w)) continue;
-      const int x0 = std::max(v.x, w.x), y0 = std::max(v.y, w.y);
-      const int x1 = std::min(v.x + v.width, w.x + w.width), y1 = std::min(v.y + v.height, w.y + w.height);
-      cairo_rectangle(cr, x0, y0, x1 - x0, y1 - y0);
-    }
-    cairo_clip(cr);
-    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
-
-    if (!style.transparent && v.background) {
-      // The composite pass's gradient, interpolated between sRGB-encoded ends.
-      cairo_pattern_t* g = cairo_pattern_create_linear(0.0, v.y, 0.0, v.y + v.height);
-      cairo_pattern_add_color_stop_rgb(g, 0.0, encodeSrgb(v.backgroundTop.r), encodeSrgb(v.backgroundTop.g),
-                                       encodeSrgb(v.backgroundTop.b));
-      cairo_pattern_add_color_stop_rgb(g, 1.0, encodeSrgb(v.backgroundBottom.r), encodeSrgb(v.backgroundBottom.g),
-                                       encodeSrgb(v.backgroundBottom.b));
-      cairo_set_source(cr, g);
-      cairo_paint(cr);
-      cairo_pattern_destroy(g);
-    }
-
-    const ViewProjection project = projectionOf(v);
-    const PixelRect rasterRect = scaledRect(v, kx, ky);
-
-    // The GL renderer's order: opaque meshes (image, then the marks),
-    // depth-tested lines (cut where a mesh is in front), the arrows,
-    // translucent meshes over them, then the lines that ignore depth, the
-    // labels and the frame.
-    paintRaster(cr, rasters.opaque, rasterRect, kx, ky);
-    // Marks are opaque meshes too: under the lines, as GL draws them.
-    for (const MeshItem& m : list.meshes)
-      if (m.view == index && m.mesh && m.figureDisc && m.material.opacity >= 1.0f) drawDisc(cr, m, v, project, depth);
-    for (const PolylineItem& p : list.polylines) {
-      if (p.view != index || !p.depthTested || p.points.size() < 2) continue;
-      addVisiblePath(cr, p, project, depth);
-      setColor(cr, glm::vec3(p.color), p.color.a);
-      cairo_set_line_width(cr, p.widthPx);
-      cairo_stroke(cr);
-    }
-    for (const ArrowItem& a : list.arrows)
-      if (a.view == index) drawArrow(cr, a, project);
-    paintRaster(cr, rasters.translucent, rasterRect, kx, ky);
-    for (const PolylineItem& p : list.polylines) {
-      if (p.view != index || p.depthTested || p.points.size() < 2) continue;
-      addVisiblePath(cr, p, project, depth);
-      setColor(cr, glm::vec3(p.color), p.color.a);
-      cairo_set_line_width(cr, p.widthPx);
-      cairo_stroke(cr);
-    }
-    for (const LabelItem& l : list.labels)
-      if (l.view == index) drawLabel(cr, fonts, l, project.origin, &project, fontScale);
-    if (v.frame) {
-      const double t = std::max(1.0, v.height / 300.0);
-      setColor(cr, glm::vec3(0.35f, 0.38f, 0.42f), 1.0f);
-      cairo_set_line_width(cr, t);
-      cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
-      cairo_rectangle(cr, v.x + 0.5 * t, v.y + 0.5 * t, v.width - t, v.height - t);
-      cairo_stroke(cr);
-      cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    }
-    cairo_restore(cr);
-  }
+  const FigureView with{rasters, kx, ky, fonts, fontScale, depth, style};
+  for (std::size_t i = 0; i < list.views.size(); ++i) drawFigureView(cr, list, i, with);
   // Image-level labels (the title) over everything.
   for (const LabelItem& l : list.labels)
     if (l.view < 0)
@@ -554,6 +594,7 @@ void writeFigure(const std::filesystem::path& out, FigureFormat format, const Dr
                                            : media::withSvgMetadata(bytes, *metadata));
   file.commit();
 }
+
 
 namespace {
 

@@ -49,7 +49,7 @@ std::vector<PixelRect> Renderer::Impl::sampleTiles(const DrawList& list, const V
   std::vector<PixelRect> bounds;
   std::vector<std::pair<glm::vec3, glm::vec3>> boxes;  // the static meshes' world boxes
   for (const Drawable& d : viewItems.items) {
-    if (d.material->opacity < 1.0f || !inSamplesPass(d) || !takes(which, d.dynamic)) continue;
+    if (d.material->opacity < 1.0f || !MeshPass::inSamplesPass(d, targets) || !takes(which, d.dynamic)) continue;
     if (d.dynamic) {
       bounds.clear();
       meshBounds(v, clipFromWorld, d, bounds);
@@ -126,8 +126,8 @@ std::vector<PixelRect> Renderer::Impl::drawViewOpaque(const DrawList& list, cons
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
   }
-  drawOpaqueAtCentres(viewItems, scope, Items::StaticOnly);
-  drawOpaqueAtCentres(viewItems, scope, Items::DynamicOnly);
+  meshes.drawOpaqueAtCentres(viewItems, scope, Items::StaticOnly, meshDrawing());
+  meshes.drawOpaqueAtCentres(viewItems, scope, Items::DynamicOnly, meshDrawing());
   if (targets.opaqueFbo == 0) return {};
   const std::vector<PixelRect> tiles = sampleTiles(list, v, viewItems, Items::All);
   stats.wholeViewPixels += static_cast<long long>(v.width) * v.height;
@@ -169,8 +169,8 @@ std::vector<PixelRect> Renderer::Impl::drawViewOpaque(const DrawList& list, cons
       DrawScope inBox = beginView(list, v, viewItems, &oneBox[0], targets.opaqueFbo);
       inBox.clips = &oneBox;
       inBox.under = under;
-      drawOpaque(viewItems, inBox, Items::StaticOnly, Pass::Samples);
-      drawOpaque(viewItems, inBox, Items::DynamicOnly, Pass::Samples);
+      meshes.drawOpaque(viewItems, inBox, Items::StaticOnly, Pass::Samples, meshDrawing());
+      meshes.drawOpaque(viewItems, inBox, Items::DynamicOnly, Pass::Samples, meshDrawing());
     }
     for (std::size_t i = 0; i < tiles.size(); ++i)
       if (roundOf[i] == round) targets.resolve(list, tiles[i], programs, streams);
@@ -181,7 +181,7 @@ std::vector<PixelRect> Renderer::Impl::drawViewOpaque(const DrawList& list, cons
 // After drawViewOpaque: the steps at one sample, a ray-cast sphere's
 // under pass only where the meshes cover pixels in part (`sampled`) or a
 // sphere drawn before it does (the pass changes nothing elsewhere: see
-// drawImpostor), then the rest.
+// SpherePass::draw), then the rest.
 void Renderer::Impl::drawViewAfterOpaque(const DrawList& list, int view, const ViewItems& viewItems,
                                          std::vector<PixelRect> sampled, const DrawScope& scope) {
   DrawScope afterResolve = scope;
@@ -192,8 +192,8 @@ void Renderer::Impl::drawViewAfterOpaque(const DrawList& list, int view, const V
 
 // What a frame draws at one sample after the resolve, before drawRest.
 void Renderer::Impl::drawAfterResolve(const ViewItems& viewItems, const DrawScope& scope) {
-  drawReshades(viewItems, scope);
-  drawOpaque(viewItems, scope, Items::DynamicOnly, Pass::Coverage);
+  meshes.drawReshades(viewItems, scope, meshDrawing());
+  meshes.drawOpaque(viewItems, scope, Items::DynamicOnly, Pass::Coverage, meshDrawing());
 }
 
 // Everything after the opaque meshes and the re-shade: depth-tested lines,
@@ -209,7 +209,7 @@ void Renderer::Impl::drawRest(const DrawList& list, int index, const ViewItems& 
   glDepthMask(GL_FALSE);
   glEnable(GL_BLEND);
   for (const PolylineItem& p : list.polylines)
-    if (p.view == index && p.depthTested && takes(which, p.dynamic)) drawPolyline(p, scope);
+    if (p.view == index && p.depthTested && takes(which, p.dynamic)) lines.draw(p, scope, programs.line, streams, targets.height, stats);
 
   // Far to near. A closed translucent mesh shows its front half only: its
   // back half would double the blending cost for little visual gain.
@@ -222,19 +222,19 @@ void Renderer::Impl::drawRest(const DrawList& list, int index, const ViewItems& 
   {
     const ClipDistances clipped;
     // Translucent layers (glass, the Bloch sphere) take no shadow.
-    for (const Drawable* d : translucent) drawMesh(*d, scope, false, d->material->cull);
+    for (const Drawable* d : translucent) meshes.draw(*d, scope, false, d->material->cull, meshDrawing());
   }
   glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);
   for (const PolylineItem& p : list.polylines)
-    if (p.view == index && !p.depthTested && takes(which, p.dynamic)) drawPolyline(p, scope);
+    if (p.view == index && !p.depthTested && takes(which, p.dynamic)) lines.draw(p, scope, programs.line, streams, targets.height, stats);
   for (const LabelItem& l : list.labels)
-    if (l.view == index) drawLabelAs(l, which, glm::vec2(v.width, v.height), &clipFromWorld, scope);
+    if (l.view == index) drawLabelAs(l, which, glm::vec2(v.width, v.height), &clipFromWorld, scope, textDrawing());
   if (v.frame && which != Items::DynamicOnly) {
     const float w = float(v.width), h = float(v.height), t = std::max(1.0f, h / 300.0f);
     const std::vector<GlyphQuad> border{{0, 0, w, t, 0, 0, 0, 0}, {0, h - t, w, h, 0, 0, 0, 0},
                                         {0, 0, t, h, 0, 0, 0, 0}, {w - t, 0, w, h, 0, 0, 0, 0}};
-    drawQuads(border, glm::vec2(w, h), glm::vec4(0.35f, 0.38f, 0.42f, 1.0f), 0, true);
+    drawQuads(border, glm::vec2(w, h), glm::vec4(0.35f, 0.38f, 0.42f, 1.0f), 0, true, textDrawing());
   }
   glDepthMask(GL_TRUE);
 }
@@ -253,7 +253,7 @@ void Renderer::Impl::drawWhole(const DrawList& list, const std::vector<ViewItems
     const DrawScope scope = beginView(list, v, perView[i], nullptr);
     drawViewAfterOpaque(list, static_cast<int>(i), perView[i], std::move(sampled), scope);
   }
-  drawImageLabels(list, Items::All, PixelRect{0, 0, list.width, list.height});
+  drawImageLabels(list, Items::All, PixelRect{0, 0, list.width, list.height}, targets.sceneFbo, textDrawing());
 }
 
 }  // namespace rollspin::render

@@ -156,6 +156,23 @@ TEST_F(RendererTest, RetainedLayerFramesMatchFramesDrawnWholeInAnyOrder) {
   EXPECT_EQ(shuffled.render(changed).rgba, plain.render(changed).rgba);
 }
 
+// renderWithDepth draws its list whole with retained layers off for the
+// call (Impl::RetainLayersOff): afterwards they are on again, also when the
+// call throws (an empty image is bad input).
+TEST_F(RendererTest, RenderWithDepthTurnsRetainedLayersBackOnAlsoWhenItThrows) {
+  Renderer renderer(*context_, ShaderLibrary{});
+  media::Image image;
+  std::vector<float> depth;
+  renderer.renderWithDepth(clipFrame(0), image, depth);
+  DrawList empty = clipFrame(0);
+  empty.width = 0;
+  EXPECT_THROW(renderer.renderWithDepth(empty, image, depth), Error);
+  EXPECT_EQ(renderer.stats().layerBuilds, 0);
+  for (int k = 0; k < 3; ++k) (void)renderer.render(clipFrame(k));
+  EXPECT_EQ(renderer.stats().layerBuilds, 1);
+  EXPECT_EQ(renderer.stats().retainedFrames, 2);
+}
+
 // The same at one sample, where the ball is ray-cast and lines take their
 // coverage as alpha: both depend on a pixel's position only.
 TEST_F(RendererTest, RetainedLayerFramesMatchFramesDrawnWholeAtOneSample) {
@@ -225,7 +242,7 @@ TEST_F(RendererTest, ARayCastGlassReplayedOverTheLayerMatchesFramesDrawnWhole) {
 // A ray-cast ball that passes behind the edge of a static opaque sphere (a
 // mesh, resolved from its samples: against the empty backdrop its edge
 // pixels are covered in part) shows through the uncovered part of those
-// pixels, over a retained layer as in a frame drawn whole (drawImpostor's
+// pixels, over a retained layer as in a frame drawn whole (SpherePass::draw's
 // under pass, limited over a layer to the layer's edge tiles).
 TEST_F(RendererTest, ARayCastBallBehindAStaticEdgeMatchesFramesDrawnWhole) {
   static const std::shared_ptr<MeshData> occluderMesh = uvSphere(48, 24);

@@ -65,9 +65,22 @@ struct PlateSpec {
   double radius = 0.0;  // R1: radius of the circle each plate point describes
 };
 
-// Limits (docs/getting-started.md#limits-and-errors).
+// Limits (docs/getting-started.md#limits-and-errors), each named once: the
+// key tables (scene_tables.cpp) and the jobs that check a flag use these.
 inline constexpr long long kMaxSolverSteps = 100'000'000'000LL;  // ~10 min of magnus4
 inline constexpr long long kMaxTimelineSamples = 100'000'000LL;
+inline constexpr long long kMinImageSide = 1, kMaxImageSide = 8192;  // "8K": the renderer's size limit
+inline constexpr long long kMaxStrobe = 200;
+inline constexpr double kMinFps = 1.0, kMaxFps = 240.0;
+inline constexpr double kMaxDurationSeconds = 36000.0, kMaxHoldSeconds = 3600.0, kMaxFadeSeconds = 10.0;
+inline constexpr double kMinFovDeg = 5.0, kMaxFovDeg = 120.0;
+inline constexpr double kMinFontScale = 0.25, kMaxFontScale = 4.0;
+inline constexpr double kMinFigureWidthMm = 10.0, kMaxFigureWidthMm = 2000.0;
+inline constexpr double kMinFontSizePt = 2.0, kMaxFontSizePt = 72.0;
+inline constexpr double kMinDpi = 30.0, kMaxDpi = 2400.0;
+inline constexpr double kMaxCrf = 51.0;
+inline constexpr long long kMaxJpegQuality = 100;
+inline constexpr std::array<long long, 3> kMsaaSamples{1, 2, 4};
 
 struct SolverSpec {
   std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4 | frame4 | cf4 | magnus6 | rk45 | frame6a

@@ -2,22 +2,15 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
+#include "scene/scene_tables.hpp"
+
 namespace rollspin::scene {
 
 namespace {
 
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (c == '\n') {
-      out += "\\n";
-      continue;
-    }
-    out += c;
-  }
-  return out + "\"";
-}
+std::string quoted(const std::string& s) { return tomlQuoted(s); }
 
 // Shortest text that reads back as the same double (fmt's default).
 std::string number(double v) { return fmt::format("{}", v); }
@@ -57,6 +50,23 @@ class Writer {
   std::string section_;
   std::string out_;
 };
+
+// A table's printed rows, in `scene --print`'s order: a row's printOrder
+// where it has one, else its place in the table.
+template <class S>
+void writeKeys(Writer& w, const KeyTable<S>& rows, const S& s) {
+  std::vector<std::pair<int, const KeyRow<S>*>> order;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    order.emplace_back(rows[i].printOrder >= 0 ? rows[i].printOrder : int(i), &rows[i]);
+  std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& entry : order) {
+    const KeyRow<S>& row = *entry.second;
+    if (!row.printed) continue;
+    const std::string name(row.name);
+    if (auto text = printedValue(row, s)) w.key(name, *text);
+    else if (!row.unsetNote.empty()) w.computed(name, row.unsetNote);
+  }
+}
 
 std::string pathKindName(PathKind k) { return toString(k); }
 
@@ -166,12 +176,7 @@ void writeSegments(Writer& w, const SceneSpec& spec) {
     const CameraSpec& c = seg.camera;
     if (c.azimuthDeg || c.elevationDeg || c.distance || c.target || c.follow || c.fovDeg) {
       w.header("[segment.camera]", prefix + ".camera");
-      if (c.azimuthDeg) w.key("azimuth_deg", number(*c.azimuthDeg));
-      if (c.elevationDeg) w.key("elevation_deg", number(*c.elevationDeg));
-      if (c.distance) w.key("distance", number(*c.distance));
-      if (c.target) w.key("target", vec(*c.target));
-      if (c.follow) w.key("follow", boolean(*c.follow));
-      if (c.fovDeg) w.key("fov_deg", number(*c.fovDeg));
+      writeKeys(w, segmentCameraKeys(), c);
     }
   }
 }
@@ -183,11 +188,7 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   const SurfaceKind sk = spec.surface.kind;
 
   w.section("ball");
-  w.key("radius", number(spec.ball.radius));
-  if (!spec.ball.texture.empty()) w.key("texture", quoted(spec.ball.texture));
-  else w.computed("texture", "the built-in tennis ball");
-  if (spec.ball.marker) w.key("marker", vec(*spec.ball.marker));
-  else w.computed("marker", "the top of the ball at s = 0");
+  writeKeys(w, ballKeys(), spec.ball);
 
   w.section("surface");
   writeSurface(w, spec.surface);
@@ -203,79 +204,27 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   }
 
   w.section("solver");
-  w.key("method", quoted(spec.solver.method));
-  if (spec.solver.steps) w.key("steps", std::to_string(*spec.solver.steps));
-  else w.computed("steps", "automatic");
-  if (spec.solver.tolerance) w.key("tolerance", number(*spec.solver.tolerance));
-  // Only when off: the resolved text (and the hash of it in a video's
-  // metadata) of every scene that keeps the default stays as it was.
-  if (!spec.solver.errorEstimate) w.key("error_estimate", boolean(false));
-
+  writeKeys(w, solverKeys(), spec.solver);
   w.section("timeline");
-  if (spec.timeline.samples) w.key("samples", std::to_string(*spec.timeline.samples));
-  else w.computed("samples", "60 per turn + 1");
-
-  const RenderSpec& r = spec.render;
+  writeKeys(w, timelineKeys(), spec.timeline);
   w.section("render");
-  w.key("width", std::to_string(r.width));
-  w.key("height", std::to_string(r.height));
-  w.key("layout", quoted(toString(r.layout)));
-  w.key("strobe", std::to_string(r.strobe));
-  w.key("title", quoted(r.title));
-  w.key("labels", boolean(r.labels));
-  w.key("trails", boolean(r.trails));
-  w.key("shadow", boolean(r.shadow));
-  w.key("transparent", boolean(r.transparent));
-  w.key("burn_captions", boolean(r.burnCaptions));
-  w.key("msaa", std::to_string(r.msaa));
-  w.key("azimuth_deg", number(r.azimuthDeg));
-  w.key("elevation_deg", number(r.elevationDeg));
-  if (r.distance) w.key("distance", number(*r.distance));
-  else w.computed("distance", "framed automatically");
-  if (r.target) w.key("target", vec(*r.target));
-  else w.computed("target", "framed automatically");
-  w.key("follow", boolean(r.follow));
-  w.key("fov_deg", number(r.fovDeg));
-  w.key("font_scale", number(r.fontScale));
-  w.key("twin_camera", quoted(r.twinCameraFixed ? "fixed" : "linked"));
-  if (r.format) w.key("format", quoted(*r.format));
-  else w.computed("format", "from the output's extension, else mp4 (a still: png)");
-  w.key("jpeg_quality", std::to_string(r.jpegQuality));
-  w.key("dpi", number(r.dpi));
-  if (r.backend) w.key("backend", quoted(*r.backend));
-  else w.computed("backend", "ROLLSPIN_GL, else \"auto\"");
-  if (r.device) w.key("device", r.device->front() == '/' ? quoted(*r.device) : *r.device);
-  else w.computed("device", "ROLLSPIN_EGL_DEVICE, else the first GPU");
-
+  writeKeys(w, renderKeys(), spec.render);
   w.section("figure");
-  w.key("width_mm", number(spec.figure.widthMm));
-  w.key("font", quoted(spec.figure.font));
-  if (spec.figure.fontSizePt) w.key("font_size_pt", number(*spec.figure.fontSizePt));
-  else w.computed("font_size_pt", "the still's proportions");
-  w.key("transparent", boolean(spec.figure.transparent));
+  writeKeys(w, figureKeys(), spec.figure);
 
   w.section("labels");
   if (spec.labels.facts) {
     std::string list;
     for (const Fact f : *spec.labels.facts) list += (list.empty() ? "" : ", ") + quoted(toString(f));
-    w.key("facts", spec.labels.facts->empty() ? quoted("none") : "[" + list + "]");
+    w.key(std::string(key::kFacts), spec.labels.facts->empty() ? quoted("none") : "[" + list + "]");
   } else {
     std::string chosen;
     for (const Fact f : resolveFacts(spec)) chosen += (chosen.empty() ? "" : ", ") + toString(f);
-    w.key("facts", quoted("auto") + "  # for this scene: " + (chosen.empty() ? "none" : chosen));
+    w.key(std::string(key::kFacts), quoted("auto") + "  # for this scene: " + (chosen.empty() ? "none" : chosen));
   }
 
-  const AnimationSpec& a = spec.animation;
   w.section("animation");
-  w.key("fps", a.fps.den == 1 ? a.fps.text() : quoted(a.fps.text()));
-  if (a.speed) w.key("speed", number(*a.speed));
-  else w.key("duration", number(a.duration));
-  w.key("easing", quoted(a.easing == Easing::Linear ? "linear" : "smooth"));
-  w.key("hold", number(a.hold));
-  if (a.crf) w.key("crf", number(*a.crf));
-  else w.computed("crf", "the format's: 18 for mp4 (H.264), 31 for webm (VP9)");
-  w.key("preset", quoted(a.preset));
-  w.key("loop", boolean(a.loop));
+  writeKeys(w, animationKeys(), spec.animation);
   writeSegments(w, spec);
   return w.text();
 }

@@ -79,6 +79,43 @@ std::set<std::string> pathTableKeys() { return keysOf("path"); }
 
 namespace {
 
+// A bound as messages write it: 1e11 and 1e8 (the step and sample limits)
+// as powers of ten, anything else in the shortest round-trip form.
+std::string boundNumber(double v) {
+  if (std::abs(v) >= 1e7) {
+    const double exponent = std::round(std::log10(std::abs(v)));
+    if (std::pow(10.0, exponent) == std::abs(v)) return fmt::format("{}1e{}", v < 0 ? "-" : "", exponent);
+  }
+  return fmt::format("{}", v);
+}
+
+std::string boundsPhrase(const Bounds& b) {
+  if (b.lo && b.hi)
+    return fmt::format("in {}{}, {}{}", b.loOpen ? "(" : "[", boundNumber(*b.lo), boundNumber(*b.hi), b.hiOpen ? ")" : "]");
+  if (b.lo) return fmt::format("{} {}", b.loOpen ? ">" : ">=", boundNumber(*b.lo));
+  if (b.hi) return fmt::format("{} {}", b.hiOpen ? "<" : "<=", boundNumber(*b.hi));
+  return "";
+}
+
+}  // namespace
+
+std::string expectation(std::string_view noun, std::string_view unitWord, std::string_view expected,
+                        const std::optional<Bounds>& bounds) {
+  if (!expected.empty()) return std::string(expected);
+  std::string out(noun);
+  if (bounds) out += " " + boundsPhrase(*bounds);
+  if (!unitWord.empty()) out += " " + std::string(unitWord);
+  return out;
+}
+
+bool withinBounds(const Bounds& b, double v) {
+  if (b.lo && !(b.loOpen ? v > *b.lo : v >= *b.lo)) return false;
+  if (b.hi && !(b.hiOpen ? v < *b.hi : v <= *b.hi)) return false;
+  return true;
+}
+
+namespace {
+
 // "\"frame6a\", \"rk45\"": the adaptive methods of spin's table, for messages.
 std::string adaptiveNames() {
   std::set<std::string> names;
@@ -470,20 +507,7 @@ SceneSpec Reader::read() {
   }
 
   // [ball]
-  const toml::table* ball = section("ball", keysOf("ball"));
-  if (auto r = number(ball, "ball", "radius")) {
-    if (*r <= 0.0) failAt("ball.radius", fmt::format("expected a radius > 0, got {}", *r));
-    spec_.ball.radius = *r;
-  }
-  if (auto t = anyText(ball, "ball", "texture")) {
-    if (t->empty()) failAt("ball.texture", "expected a PNG or JPG file name, got an empty string");
-    spec_.ball.texture = *t;
-  }
-  if (auto m = vector(ball, "ball", "marker")) {
-    const double len = norm3(*m);
-    if (len < 1e-12) failAt("ball.marker", "expected a non-zero vector (a direction in the ball), got [0, 0, 0]");
-    spec_.ball.marker = unitVector(*m, len);
-  }
+  readKeys(section("ball", namesOf(ballKeys())), "ball", ballKeys(), spec_.ball);
   // [surface]
   readSurface(section("surface", keysOf("surface")), "surface", spec_.surface);
 
@@ -517,41 +541,25 @@ SceneSpec Reader::read() {
   readSegments();
 
   // [solver]
-  const toml::table* solver = section("solver", keysOf("solver"));
+  const toml::table* solver = section("solver", namesOf(solverKeys()));
   // The method names are spin's (one table there); the scene keeps the text.
-  if (auto m = text(solver, "solver", "method", keyChoices("solver", "method"))) spec_.solver.method = *m;
-  if (auto n = integer(solver, "solver", "steps")) {
-    if (*n < 1 || *n > kMaxSolverSteps)
-      failAt("solver.steps", fmt::format("expected an integer in [1, 1e11], got {}", *n));
-    spec_.solver.steps = *n;
-  }
-  if (auto tol = number(solver, "solver", "tolerance")) {
-    if (!(*tol >= 1e-15 && *tol <= 1.0))
-      failAt("solver.tolerance", fmt::format("expected a tolerance in [1e-15, 1], got {}", *tol));
-    spec_.solver.tolerance = *tol;
-  }
-  if (auto estimate = boolean(solver, "solver", "error_estimate")) spec_.solver.errorEstimate = *estimate;
+  readKeys(solver, "solver", solverKeys(), spec_.solver);
   // A tolerance and no step count: the adaptive geometric method by default.
   // Steps and tolerance each belong to one kind of method.
-  const bool methodGiven = spec_.locations.contains("solver.method");
+  const bool methodGiven = spec_.locations.contains(dotted("solver", key::kMethod));
   const bool adaptive = spin::isAdaptive(*spin::parseMethod(spec_.solver.method));  // a name from the table
   if (!methodGiven && spec_.solver.tolerance && !spec_.solver.steps)
     spec_.solver.method = spin::methodName(spin::Method::Frame6a);
   else if (spec_.solver.tolerance && !adaptive)
-    failAt("solver.tolerance", fmt::format("applies to the adaptive methods ({}), but "
-                                           "solver.method is \"{}\"; remove solver.tolerance or solver.steps",
-                                           adaptiveNames(), spec_.solver.method));
+    failAt(dotted("solver", key::kTolerance),
+           fmt::format("applies to the adaptive methods ({}), but solver.{} is \"{}\"; remove solver.{} or solver.{}",
+                       adaptiveNames(), key::kMethod, spec_.solver.method, key::kTolerance, key::kSteps));
   if (adaptive && spec_.solver.steps)
-    failAt("solver.steps", fmt::format("method \"{}\" chooses its own steps; set solver.tolerance instead",
-                                       spec_.solver.method));
+    failAt(dotted("solver", key::kSteps), fmt::format("method \"{}\" chooses its own steps; set solver.{} instead",
+                                                  spec_.solver.method, key::kTolerance));
 
   // [timeline]
-  const toml::table* timeline = section("timeline", keysOf("timeline"));
-  if (auto n = integer(timeline, "timeline", "samples")) {
-    if (*n < 2 || *n > kMaxTimelineSamples)
-      failAt("timeline.samples", fmt::format("expected an integer in [2, 1e8], got {}", *n));
-    spec_.timeline.samples = *n;
-  }
+  readKeys(section("timeline", namesOf(timelineKeys())), "timeline", timelineKeys(), spec_.timeline);
 
   readRender();
   readFigure();

@@ -1,0 +1,34 @@
+// The scene schema, one table per section: every key of [ball], [solver],
+// [timeline], [render], [figure], [labels], [animation] and a segment's
+// camera is one KeyRow (key_row.hpp) in scene_tables.cpp, the only file that
+// spells its name. The loader, `scene --print`, `rollspin keys` and
+// docs/scene-reference.md all walk these tables; rule code (cross-key checks)
+// names a key through the constants below.
+#pragma once
+
+#include <string_view>
+
+#include "scene/key_row.hpp"
+
+namespace rollspin::scene {
+
+[[nodiscard]] const KeyTable<BallSpec>& ballKeys();
+[[nodiscard]] const KeyTable<SolverSpec>& solverKeys();
+[[nodiscard]] const KeyTable<TimelineSpec>& timelineKeys();
+[[nodiscard]] const KeyTable<RenderSpec>& renderKeys();
+[[nodiscard]] const KeyTable<FigureSpec>& figureKeys();
+[[nodiscard]] const KeyTable<LabelsSpec>& labelsKeys();
+[[nodiscard]] const KeyTable<AnimationSpec>& animationKeys();
+[[nodiscard]] const KeyTable<CameraSpec>& segmentCameraKeys();
+
+// The names rule code and other tables refer to (each spelled once, in
+// scene_tables.cpp).
+namespace key {
+extern const std::string_view kRadius, kMethod, kSteps, kTolerance;
+extern const std::string_view kWidth, kHeight, kTitle, kTarget, kFollow, kDistance, kFormat, kBackend, kDevice, kMsaa;
+extern const std::string_view kWidthMm, kWidthIn, kFontSizePt;
+extern const std::string_view kFacts;
+extern const std::string_view kFps, kDuration, kSpeed, kHold;
+}  // namespace key
+
+}  // namespace rollspin::scene

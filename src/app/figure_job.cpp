@@ -22,7 +22,7 @@ namespace rollspin::app {
 
 namespace {
 
-constexpr int kMaxRasterSide = 8192;  // the renderer's limit (render.width)
+constexpr int kMaxRasterSide = int(scene::kMaxImageSide);  // the renderer's limit (render.width)
 
 // The figure's raster size: render.dpi over the physical width.
 std::pair<int, int> rasterSize(const scene::SceneSpec& spec) {

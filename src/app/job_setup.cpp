@@ -11,8 +11,9 @@ namespace rollspin::app {
 
 DrawJob prepareDrawJob(const DrawJobRequest& r) {
   for (const auto& [flag, value] : {std::pair{"--width", r.width}, std::pair{"--height", r.height}})
-    if (value && (*value < 1 || *value > 8192))
-      throw badInput({flag}, "expected an image size in [1, 8192] pixels, got {}", *value);
+    if (value && (*value < scene::kMinImageSide || *value > scene::kMaxImageSide))
+      throw badInput({flag}, "expected an image size in [{}, {}] pixels, got {}", scene::kMinImageSide,
+                     scene::kMaxImageSide, *value);
   // Later overrides win: --set, then --quality (but not over a key given with
   // --set), then --width/--height; all validated by the scene loader, and an
   // error names the flag typed.

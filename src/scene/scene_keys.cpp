@@ -176,21 +176,10 @@ std::vector<KeyInfo> buildRegistry() {
   appendTable(keys, "timeline", timelineKeys());
   appendTable(keys, "render", renderKeys());
   appendTable(keys, "figure", figureKeys());
-  appendTable(keys, "labels", labelsKeys());
+  appendTable(keys, std::string(key::kLabels), labelsKeys());
   appendTable(keys, "animation", animationKeys());
 
-  auto add = [&](const std::string& section, const std::string& key, Row row) { keys.push_back(info(section, key, std::move(row))); };
-  const SegmentSpec s;
-  add("segment", "path", {"table", "(a hold)", {}, {}, "the [path] keys", "", "the segment's motion: path = { kind = ..., ... }"});
-  add("segment", "hold", {"number", "(a motion)", leftOpen(0, 3600), {}, "not with path", "seconds", "the ball rests this long"});
-  add("segment", "duration", {"number", "the motion's share of animation.duration", leftOpen(0, 36000), {}, "with path only", "seconds", "how long the motion takes"});
-  add("segment", "speed", {"number", "(duration)", above(0), {}, "with path only; not with duration", "length/s", "arc length per second instead of a duration"});
-  add("segment", "caption", {"string", inQuotes(s.caption), {}, {}, "", "", "the caption shown while the segment plays"});
-  add("segment", "title", {"string", "render.title", {}, {}, "", "", "replaces render.title while the segment plays"});
-  add("segment", "surface", {"table", "the previous segment's ([surface] for the first)", {}, {}, "the [surface] keys; with path only", "", "the surface this motion rolls on: surface = { kind = ..., ... }; a change cuts the clip"});
-  add("segment", "transition", {"string", s.transition == SegmentSpec::Transition::Fade ? "\"fade\"" : "\"cut\"", {}, {"cut", "fade"}, "where the surface changes", "", "how the clip passes to the new surface's view"});
-  add("segment", "fade_seconds", {"number", num(s.fadeSeconds), leftOpen(0, 10), {}, "with transition = \"fade\"", "seconds", "how long the cross-fade to the new surface's view takes"});
-  add("segment", "camera", {"table", "(unchanged)", {}, {}, "the segment.camera keys", "", "a camera change laid over the previous segment's"});
+  appendTable(keys, "segment", segmentKeys());
   appendTable(keys, "segment.camera", segmentCameraKeys());
   return keys;
 }

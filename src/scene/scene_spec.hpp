@@ -173,8 +173,6 @@ struct CameraSpec {
   std::optional<Vec3> target;
   std::optional<bool> follow;
 };
-inline const std::vector<std::string> kCameraKeys{"azimuth_deg", "elevation_deg", "distance", "target", "follow",
-                                                  "fov_deg"};
 
 // [[segment]]: one step of a storyboard (docs/scenes.md#storyboards): a motion
 // along its own path, or a hold; with its caption, title and camera.

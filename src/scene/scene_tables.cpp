@@ -15,12 +15,14 @@ namespace rollspin::scene {
 
 namespace key {
 const std::string_view kRadius = "radius", kMethod = "method", kSteps = "steps", kTolerance = "tolerance";
-const std::string_view kWidth = "width", kHeight = "height", kTitle = "title", kTarget = "target",
+const std::string_view kWidth = "width", kHeight = "height", kTransparent = "transparent", kTitle = "title", kTarget = "target",
                        kFollow = "follow", kDistance = "distance", kFormat = "format", kBackend = "backend", kDevice = "device",
                        kMsaa = "msaa";
 const std::string_view kWidthMm = "width_mm", kWidthIn = "width_in", kFontSizePt = "font_size_pt";
-const std::string_view kFacts = "facts";
+const std::string_view kFacts = "facts", kLabels = "labels";
 const std::string_view kFps = "fps", kDuration = "duration", kSpeed = "speed", kHold = "hold";
+const std::string_view kPath = "path", kSurface = "surface", kCamera = "camera", kCaption = "caption",
+                       kTransition = "transition", kFadeSeconds = "fade_seconds";
 }  // namespace key
 
 std::string tomlQuoted(std::string_view text) {
@@ -157,9 +159,9 @@ KeyTable<RenderSpec> buildRenderKeys() {
        .rangeNote = "not 1 (0 is off)", .meaning = "the ball at N evenly spaced positions in one image"},
       {.name = key::kTitle, .type = "string", .field = &RenderSpec::title, .defaultText = "\"\" (none)",
        .meaning = "a title over the image"},
-      {.name = "labels", .type = "boolean", .field = &RenderSpec::labels,
+      {.name = key::kLabels, .type = "boolean", .field = &RenderSpec::labels,
        .meaning = "axis, pole and live labels (s, angles)"},
-      {.name = "transparent", .type = "boolean", .field = &RenderSpec::transparent,
+      {.name = key::kTransparent, .type = "boolean", .field = &RenderSpec::transparent,
        .meaning = "no background (PNG, WebM, MOV keep the alpha)", .printOrder = 8},
       {.name = "burn_captions", .type = "boolean", .field = &RenderSpec::burnCaptions,
        .meaning = "draw the title and the storyboard captions into the pixels (false: only the subtitle track and "
@@ -239,7 +241,7 @@ const KeyTable<FigureSpec>& figureKeys() {
       {.name = key::kFontSizePt, .type = "number", .field = &FigureSpec::fontSizePt,
        .bounds = tableClosed(kMinFontSizePt, kMaxFontSizePt), .noun = "a size", .unitWord = "pt", .defaultText = "8",
        .units = "pt", .meaning = "the body text size", .unsetNote = "the still's proportions"},
-      {.name = "transparent", .type = "boolean", .field = &FigureSpec::transparent,
+      {.name = key::kTransparent, .type = "boolean", .field = &FigureSpec::transparent,
        .meaning = "a transparent page (false: the views' backdrops)"},
   };
   return rows;
@@ -300,6 +302,53 @@ const KeyTable<AnimationSpec>& animationKeys() {
          .meaning = "the x264 preset (WebM maps it to libvpx's cpu-used)"},
         {.name = "loop", .type = "boolean", .field = &AnimationSpec::loop,
          .meaning = "a GIF loops forever (false: plays once)"},
+    };
+  }();
+  return rows;
+}
+
+// [[segment]]: whether a segment moves or holds decides which keys apply,
+// so rule code reads them (Reader::readSegments) through these rows' checks
+// and writeSegments prints them.
+const KeyTable<SegmentSpec>& segmentKeys() {
+  static const KeyTable<SegmentSpec> rows = [] {
+    const ChoiceField<SegmentSpec> transition{
+        [](const SegmentSpec& s) { return std::size_t(s.transition == SegmentSpec::Transition::Fade ? 1 : 0); },
+        [](SegmentSpec& s, std::size_t i) {
+          s.transition = i == 1 ? SegmentSpec::Transition::Fade : SegmentSpec::Transition::Cut;
+        }};
+    return KeyTable<SegmentSpec>{
+        {.name = key::kPath, .type = "table", .defaultText = "(a hold)", .rangeNote = "the [path] keys",
+         .meaning = "the segment's motion: path = { kind = ..., ... }", .byRule = true},
+        {.name = key::kHold, .type = "number", .field = &SegmentSpec::hold,
+         .bounds = tableLeftOpen(0, kMaxHoldSeconds), .noun = "a hold", .unitWord = "seconds",
+         .defaultText = "(a motion)", .rangeNote = "not with path", .units = "seconds",
+         .meaning = "the ball rests this long", .byRule = true},
+        {.name = key::kDuration, .type = "number", .field = &SegmentSpec::duration,
+         .bounds = tableLeftOpen(0, kMaxDurationSeconds), .noun = "a duration", .unitWord = "seconds",
+         .defaultText = "the motion's share of animation.duration", .rangeNote = "with path only",
+         .units = "seconds", .meaning = "how long the motion takes", .byRule = true},
+        {.name = key::kSpeed, .type = "number", .field = &SegmentSpec::speed, .bounds = tableAbove(0),
+         .noun = "an arc length per second", .defaultText = "(duration)",
+         .rangeNote = "with path only; not with duration", .units = "length/s",
+         .meaning = "arc length per second instead of a duration", .byRule = true},
+        {.name = key::kCaption, .type = "string", .field = &SegmentSpec::caption,
+         .meaning = "the caption shown while the segment plays", .byRule = true},
+        {.name = key::kTitle, .type = "string", .field = &SegmentSpec::title, .defaultText = "render.title",
+         .meaning = "replaces render.title while the segment plays", .byRule = true},
+        {.name = key::kSurface, .type = "table", .defaultText = "the previous segment's ([surface] for the first)",
+         .rangeNote = "the [surface] keys; with path only",
+         .meaning = "the surface this motion rolls on: surface = { kind = ..., ... }; a change cuts the clip",
+         .byRule = true},
+        {.name = key::kTransition, .type = "string", .field = transition, .choices = {"cut", "fade"},
+         .rangeNote = "where the surface changes", .meaning = "how the clip passes to the new surface's view",
+         .byRule = true},
+        {.name = key::kFadeSeconds, .type = "number", .field = &SegmentSpec::fadeSeconds,
+         .bounds = tableLeftOpen(0, kMaxFadeSeconds), .noun = "a fade", .unitWord = "seconds",
+         .rangeNote = "with transition = \"fade\"", .units = "seconds",
+         .meaning = "how long the cross-fade to the new surface's view takes", .byRule = true},
+        {.name = key::kCamera, .type = "table", .defaultText = "(unchanged)", .rangeNote = "the segment.camera keys",
+         .meaning = "a camera change laid over the previous segment's", .byRule = true},
     };
   }();
   return rows;

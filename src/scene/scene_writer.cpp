@@ -143,25 +143,26 @@ void writeSegments(Writer& w, const SceneSpec& spec) {
     const SegmentSpec& seg = spec.segments[i];
     const std::string prefix = SceneSpec::segmentKey(i);
     w.header("[[segment]]", prefix);
-    if (!seg.caption.empty()) w.key("caption", quoted(seg.caption));
-    if (seg.title) w.key("title", quoted(*seg.title));
+    if (!seg.caption.empty()) w.key(std::string(key::kCaption), quoted(seg.caption));
+    if (seg.title) w.key(std::string(key::kTitle), quoted(*seg.title));
     if (!seg.path) {
-      w.key("hold", number(seg.hold));
+      w.key(std::string(key::kHold), number(seg.hold));
     } else if (seg.duration) {
-      w.key("duration", number(*seg.duration));
+      w.key(std::string(key::kDuration), number(*seg.duration));
     } else if (seg.speed) {
-      w.key("speed", number(*seg.speed));
+      w.key(std::string(key::kSpeed), number(*seg.speed));
     } else {
-      w.computed("duration", "its length at the storyboard's speed (see [animation])");
+      w.computed(std::string(key::kDuration), "its length at the storyboard's speed (see [animation])");
     }
     // A scene of several surfaces names each segment's (scenes of one print as before).
     if (spec.surfaceCount() > 1) {
       if (seg.surface && i > 0) {
-        w.key("transition", quoted(seg.transition == SegmentSpec::Transition::Fade ? "fade" : "cut"));
-        if (seg.transition == SegmentSpec::Transition::Fade) w.key("fade_seconds", number(seg.fadeSeconds));
+        w.key(std::string(key::kTransition), *printedValue(rowOf(segmentKeys(), key::kTransition), seg));
+        if (seg.transition == SegmentSpec::Transition::Fade)
+          w.key(std::string(key::kFadeSeconds), number(seg.fadeSeconds));
       }
       if (!seg.surface)
-        w.computed("surface", fmt::format("surface {} (a {}), as {}", spec.surfaceIndexOf(i),
+        w.computed(std::string(key::kSurface), fmt::format("surface {} (a {}), as {}", spec.surfaceIndexOf(i),
                                           toString(spec.surfaceOf(i).kind), spec.surfaceKeyOf(i)));
     }
     if (seg.surface) {
@@ -212,7 +213,7 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   w.section("figure");
   writeKeys(w, figureKeys(), spec.figure);
 
-  w.section("labels");
+  w.section(std::string(key::kLabels));
   if (spec.labels.facts) {
     std::string list;
     for (const Fact f : *spec.labels.facts) list += (list.empty() ? "" : ", ") + quoted(toString(f));

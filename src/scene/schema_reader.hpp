@@ -91,6 +91,16 @@ class Reader {
   // (bounds, non-empty text, non-zero direction) and stored in `target`.
   template <class S>
   void readKeys(const toml::table* t, const std::string& section, const KeyTable<S>& rows, S& target);
+  // One row, whatever its byRule says: rule code reads a key where its rules allow.
+  template <class S>
+  void readRow(const toml::table* t, const std::string& section, const KeyRow<S>& row, S& target) {
+    std::visit([&](auto field) { readField(t, section, row, target, field); }, row.field);
+  }
+  // A value rule code read, against its row's bounds.
+  template <class S>
+  void checkRow(const KeyRow<S>& row, const std::string& full, double v) const {
+    checkValue(full, row.noun, row.unitWord, row.expected, row.accepts, row.bounds, v, fmt::format("{}", v));
+  }
   template <class S, class F>
   void readField(const toml::table* t, const std::string& section, const KeyRow<S>& row, S& target, F field);
   void checkValue(const std::string& full, std::string_view noun, std::string_view unitWord,
@@ -128,7 +138,7 @@ class Reader {
 template <class S>
 void Reader::readKeys(const toml::table* t, const std::string& section, const KeyTable<S>& rows, S& target) {
   for (const KeyRow<S>& row : rows)
-    if (!row.byRule) std::visit([&](auto field) { readField(t, section, row, target, field); }, row.field);
+    if (!row.byRule) readRow(t, section, row, target);
 }
 
 Vec3 unitVector(const Vec3& v, double len);

@@ -39,28 +39,29 @@ void Reader::readSegments() {
     spec_.locations[prefix] = locOf(prefix, entry);
     const toml::table& table = *entry.as_table();
     for (auto&& [k, v] : table) {
-      static const std::set<std::string> kSegmentKeys = keysOf("segment");
+      static const std::set<std::string> kSegmentKeys = namesOf(segmentKeys());
       if (!kSegmentKeys.contains(std::string(k.str())))
         throw unknownKey(locOf(prefix + "." + std::string(k.str()), v), prefix + "." + std::string(k.str()),
                          std::string(k.str()), "a segment", kSegmentKeys);
     }
     SegmentSpec seg;
-    const toml::table* path = subTable(table, "path", prefix + ".path", pathTableKeys());
+    const toml::table* path = subTable(table, std::string(key::kPath), dotted(prefix, key::kPath), pathTableKeys());
     readSegmentSurface(table, prefix, path != nullptr, seg);
     spec_.segments.push_back(seg);  // surfaceOf(i) below reads it
     const SurfaceSpec& surface = spec_.surfaceOf(i);
     const bool onPlane = surface.kind == SurfaceKind::Plane;
     // The first motion on a new surface starts where its own keys say.
     const bool newSurface = i == 0 || seg.surface.has_value();
-    const std::optional<double> hold = number(&table, prefix, "hold");
+    const std::string holdKey = dotted(prefix, key::kHold);
+    const std::optional<double> hold = number(&table, prefix, std::string(key::kHold));
     if (path == nullptr && !hold)
       throw badInput(where(prefix), "{}: expected path = {{ kind = ..., ... }} (a motion) or hold = SECONDS (a rest)",
                      prefix);
     if (path != nullptr && hold)
-      failAt(prefix + ".hold", "a segment either moves (path) or holds (hold), not both; split it into two segments");
+      failAt(holdKey, "a segment either moves (path) or holds (hold), not both; split it into two segments");
     if (path != nullptr) {
       seg.path = PathSpec{};
-      const PathKind pk = readPath(path, prefix + ".path", *seg.path, surface, spec_.surfaceKeyOf(i));
+      const PathKind pk = readPath(path, dotted(prefix, key::kPath), *seg.path, surface, spec_.surfaceKeyOf(i));
       // On a plane, segments after the first continue from the previous end
       // point along its end heading (tangent-continuous).
       const bool placedByPrevious = pk == PathKind::Line || pk == PathKind::Circle || pk == PathKind::Clothoid;
@@ -69,24 +70,24 @@ void Reader::readSegments() {
                "a segment after the first starts where the previous one ended, along its end heading "
                "(tangent-continuous); remove direction_vector");
     } else {
-      if (!(*hold > 0.0 && *hold <= 3600.0))
-        failAt(prefix + ".hold", fmt::format("expected a hold in (0, 3600] seconds, got {}", *hold));
+      checkRow(rowOf(segmentKeys(), key::kHold), holdKey, *hold);
       seg.hold = *hold;
     }
-    if ((seg.duration = number(&table, prefix, "duration"))) {
-      if (!path) failAt(prefix + ".duration", "applies to a motion (a segment with a path); a hold's length is hold");
-      if (!(*seg.duration > 0.0 && *seg.duration <= 36000.0))
-        failAt(prefix + ".duration", fmt::format("expected a duration in (0, 36000] seconds, got {}", *seg.duration));
+    const std::string durationKey = dotted(prefix, key::kDuration), speedKey = dotted(prefix, key::kSpeed);
+    if ((seg.duration = number(&table, prefix, std::string(key::kDuration)))) {
+      if (!path) failAt(durationKey, "applies to a motion (a segment with a path); a hold's length is hold");
+      checkRow(rowOf(segmentKeys(), key::kDuration), durationKey, *seg.duration);
     }
-    if ((seg.speed = number(&table, prefix, "speed"))) {
-      if (!path) failAt(prefix + ".speed", "applies to a motion (a segment with a path); a hold's length is hold");
-      if (!(*seg.speed > 0.0)) failAt(prefix + ".speed", fmt::format("expected an arc length per second > 0, got {}", *seg.speed));
+    if ((seg.speed = number(&table, prefix, std::string(key::kSpeed)))) {
+      if (!path) failAt(speedKey, "applies to a motion (a segment with a path); a hold's length is hold");
+      checkRow(rowOf(segmentKeys(), key::kSpeed), speedKey, *seg.speed);
       if (seg.duration)
-        failAt(prefix + ".speed", fmt::format("conflicts with {}.duration: give the duration or the speed, not both", prefix));
+        failAt(speedKey, fmt::format("conflicts with {}: give the duration or the speed, not both", durationKey));
     }
-    if (auto c = anyText(&table, prefix, "caption")) seg.caption = *c;
-    seg.title = anyText(&table, prefix, "title");
-    seg.camera = readCamera(subTable(table, "camera", prefix + ".camera", namesOf(segmentCameraKeys())), prefix + ".camera");
+    readRow(&table, prefix, rowOf(segmentKeys(), key::kCaption), seg);
+    readRow(&table, prefix, rowOf(segmentKeys(), key::kTitle), seg);
+    const std::string cameraKey = dotted(prefix, key::kCamera);
+    seg.camera = readCamera(subTable(table, std::string(key::kCamera), cameraKey, namesOf(segmentCameraKeys())), cameraKey);
     spec_.segments.back() = std::move(seg);
   }
   // A segment's camera target stops a follow, and follow = true drops a
@@ -94,8 +95,8 @@ void Reader::readSegments() {
   for (std::size_t i = 0; i < spec_.segments.size(); ++i) {
     const CameraSpec& c = spec_.segments[i].camera;
     if (c.target && c.follow && *c.follow)
-      failAt(SceneSpec::segmentKey(i) + ".camera.target",
-             "conflicts with follow = true in the same camera (the camera then targets the ball)");
+      failAt(dotted(dotted(SceneSpec::segmentKey(i), key::kCamera), key::kTarget),
+             fmt::format("conflicts with {} = true in the same camera (the camera then targets the ball)", key::kFollow));
   }
 }
 
@@ -103,33 +104,33 @@ void Reader::readSegments() {
 // to a motion (a hold rests where the ball is); transition and
 // fade_seconds apply only where the surface changes.
 void Reader::readSegmentSurface(const toml::table& table, const std::string& prefix, bool moves, SegmentSpec& seg) {
-  if (const toml::table* surface = subTable(table, "surface", prefix + ".surface", keysOf("surface"))) {
+  const std::string surfaceKey = dotted(prefix, key::kSurface);
+  if (const toml::table* surface = subTable(table, std::string(key::kSurface), surfaceKey, keysOf("surface"))) {
     if (!moves)
-      failAt(prefix + ".surface", "a hold rests where the previous motion ended, on its surface; give the surface "
+      failAt(surfaceKey, "a hold rests where the previous motion ended, on its surface; give the surface "
                                   "to the next segment with a path");
     seg.surface = SurfaceSpec{};
-    readSurface(surface, prefix + ".surface", *seg.surface);
+    readSurface(surface, surfaceKey, *seg.surface);
   }
   const bool changes = seg.surface && prefix != SceneSpec::segmentKey(0);
-  auto onlyAtChange = [&](const std::string& key) {
-    if (!changes && spec_.locations.contains(prefix + "." + key))
-      failAt(prefix + "." + key,
+  auto onlyAtChange = [&](std::string_view name) {
+    if (!changes && spec_.locations.contains(dotted(prefix, name)))
+      failAt(dotted(prefix, name),
              prefix == SceneSpec::segmentKey(0)
                  ? "applies where the surface changes; the first segment has nothing to change from"
                  : "applies where the surface changes; this segment keeps the previous segment's surface (give it "
                    "surface = { kind = ..., ... })");
   };
-  if (auto t = text(&table, prefix, "transition", keyChoices("segment", "transition")))
-    seg.transition = *t == "fade" ? SegmentSpec::Transition::Fade : SegmentSpec::Transition::Cut;
-  onlyAtChange("transition");
-  if (auto f = number(&table, prefix, "fade_seconds")) {
-    if (!(*f > 0.0 && *f <= 10.0))
-      failAt(prefix + ".fade_seconds", fmt::format("expected a fade in (0, 10] seconds, got {}", *f));
+  readRow(&table, prefix, rowOf(segmentKeys(), key::kTransition), seg);
+  onlyAtChange(key::kTransition);
+  const std::string fadeKey = dotted(prefix, key::kFadeSeconds);
+  if (auto f = number(&table, prefix, std::string(key::kFadeSeconds))) {
+    checkRow(rowOf(segmentKeys(), key::kFadeSeconds), fadeKey, *f);
     if (seg.transition != SegmentSpec::Transition::Fade)
-      failAt(prefix + ".fade_seconds", "applies to transition = \"fade\"; this segment cuts");
+      failAt(fadeKey, fmt::format("applies to {} = \"fade\"; this segment cuts", key::kTransition));
     seg.fadeSeconds = *f;
   }
-  onlyAtChange("fade_seconds");
+  onlyAtChange(key::kFadeSeconds);
 }
 
 // [render] — image size, layout, strobe, text, camera (render issue): the
@@ -191,10 +192,11 @@ void Reader::readFigure() {
 // [labels] — which facts of the scene are printed (after [surface] and
 // [path]: a fact must apply to their kinds).
 void Reader::readLabels() {
-  const toml::table* labels = section("labels", namesOf(labelsKeys()));
-  const toml::node* node = get(labels, "labels", std::string(key::kFacts));
+  const std::string labelsSection(key::kLabels);
+  const toml::table* labels = section(labelsSection, namesOf(labelsKeys()));
+  const toml::node* node = get(labels, labelsSection, std::string(key::kFacts));
   if (node == nullptr) return;
-  const std::string key = dotted("labels", key::kFacts);
+  const std::string key = dotted(labelsSection, key::kFacts);
   std::string names;
   for (const auto& n : kFactNames) names += (names.empty() ? "" : ", ") + ("\"" + n + "\"");
   const std::string expected = "\"auto\", \"none\" or a list of facts from " + names;

@@ -306,7 +306,7 @@ class Scene {
                       media::OutputUse::Still, 0, source_.text};
     still->job = app::prepareDrawJob(still->request);
     // As `render --still`: a scene with [figure] keys keeps the figure's composition.
-    if (app::setsFigureKeys(still->job.spec)) app::fitTextToFigure(still->job.spec);
+    if (app::setsFigureKeys(still->job.spec)) still->job.figureText = app::fitTextToFigure(still->job.spec);
     still->drawer = app::makeDrawer(still->job);
     return *stills_.emplace(key, std::move(still)).first->second;
   }
@@ -349,7 +349,7 @@ struct Image {
       // for the printed size, not the pixels'.
       app::DrawJob job = app::prepareDrawJob(still->request);
       const media::OutputMetadata remembered = metadata(job.spec, true);
-      app::fitTextToFigure(job.spec);
+      job.figureText = app::fitTextToFigure(job.spec);
       const render::DrawList figureList = app::makeDrawer(job, s)->draw(app::stillFrame(job, s));
       const std::lock_guard lock(sharedGl().mutex);
       dropSharedGl();  // the figure job makes its own context

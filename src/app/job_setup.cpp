@@ -48,7 +48,7 @@ DrawJob prepareDrawJob(const DrawJobRequest& r) {
 std::unique_ptr<draw::SceneDrawer> makeDrawer(const DrawJob& job, std::optional<double> figureStillAt) {
   const auto texture = job.spec.render.layout == scene::RenderLayout::Twin ? nullptr : loadBallTexture(job.spec);
   return std::make_unique<draw::SceneDrawer>(job.spec, job.model, texture, motion::makeSceneFacts(job.spec, job.model),
-                                             figureStillAt);
+                                             figureStillAt, job.figureText);
 }
 
 GlRenderer::GlRenderer(const scene::SceneSpec& spec, const std::filesystem::path& shaderDir)

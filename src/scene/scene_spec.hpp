@@ -122,7 +122,6 @@ struct RenderSpec {
   long long jpegQuality = 92;  // JPEG stills, 1 … 100
   double dpi = 300.0;  // vector figures: resolution of their raster parts (the shaded ball and surfaces)
   double fontScale = 1.0;   // text size × this (docs/rendering.md#stills-and-images); body line ≥ 1/28 of the height at 1
-  double leastTextScale = 0.0;  // not a key: a figure's least text size over its body size (6 pt over figure.font_size_pt; app/figure_job)
   bool twinCameraFixed = true;  // twin_camera: "fixed" (the first shot's view throughout) or "linked"
   // GL context (render/gl_backends.cpp): "auto" or a backend of the table, and
   // for EGL a device index or DRM path; unset: ROLLSPIN_GL / ROLLSPIN_EGL_DEVICE.

@@ -31,6 +31,7 @@
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/scene_tables.hpp"
 #include "scene/scene_writer.hpp"
 
 namespace rollspin::app {
@@ -116,9 +117,9 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
       throw badInput({"--quality " + *o.quality}, "expected low (854x480@15), medium (1280x720@30), "
                                                   "high (1920x1080@60) or 4k (3840x2160@60)");
     const std::string flag = "--quality " + *o.quality;
-    presetFlags.push_back({flag, fmt::format("render.width={}", preset->width)});
-    presetFlags.push_back({flag, fmt::format("render.height={}", preset->height)});
-    presetFlags.push_back({flag, fmt::format("animation.fps={}", preset->fps)});
+    presetFlags.push_back(flagOverride(flag, "render", scene::key::kWidth, (long long)preset->width, true));
+    presetFlags.push_back(flagOverride(flag, "render", scene::key::kHeight, (long long)preset->height, true));
+    presetFlags.push_back(flagOverride(flag, "animation", scene::key::kFps, (long long)preset->fps, true));
   }
   // Measured: a 1080p MP4 render peaks ~235 bytes per pixel above the still's
   // estimate (three queued RGBA frames, the yuv420p frame and the converter's

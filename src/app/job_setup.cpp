@@ -6,6 +6,7 @@
 #include "app/render_jobs.hpp"
 #include "core/output_path.hpp"
 #include "motion/scene_facts.hpp"
+#include "scene/scene_tables.hpp"
 
 namespace rollspin::app {
 
@@ -18,9 +19,10 @@ DrawJob prepareDrawJob(const DrawJobRequest& r) {
   // --set), then --width/--height; all validated by the scene loader, and an
   // error names the flag typed.
   std::vector<FlagOverride> flags = r.presetFlags;
-  if (r.width) flags.push_back({"--width " + std::to_string(*r.width), "render.width=" + std::to_string(*r.width)});
-  if (r.height) flags.push_back({"--height " + std::to_string(*r.height), "render.height=" + std::to_string(*r.height)});
-  if (r.transparent) flags.push_back({"--transparent", "render.transparent=true"});
+  if (r.width) flags.push_back(flagOverride("--width " + std::to_string(*r.width), "render", scene::key::kWidth, *r.width));
+  if (r.height)
+    flags.push_back(flagOverride("--height " + std::to_string(*r.height), "render", scene::key::kHeight, *r.height));
+  if (r.transparent) flags.push_back(flagOverride("--transparent", "render", scene::key::kTransparent, true));
   DrawJob job{loadSceneWithFlags(r.scenePath, r.overrides, flags, r.sceneText), nullptr, {}};
   scene::SceneSpec& spec = job.spec;
   if (!r.sceneName.empty()) spec.name = r.sceneName;

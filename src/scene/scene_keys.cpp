@@ -32,7 +32,6 @@ Bounds above(double lo) { return {lo, std::nullopt, true, false}; }
 Bounds atLeast(double lo) { return {lo, std::nullopt, false, false}; }
 Bounds closed(double lo, double hi) { return {lo, hi, false, false}; }
 Bounds openRange(double lo, double hi) { return {lo, hi, true, true}; }
-Bounds leftOpen(double lo, double hi) { return {lo, hi, true, false}; }
 
 struct Row {
   std::string type, defaultText;

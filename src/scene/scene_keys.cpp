@@ -168,7 +168,7 @@ std::vector<KeyInfo> buildRegistry() {
   };
   appendTable(keys, "ball", ballKeys());
   for (KeyInfo& k : surfaceKeyInfos(d.surface)) keys.push_back(std::move(k));
-  keys.push_back(info("plate", "radius", {"number", "(required)", above(0), {}, "", "length", "Brockett's plate: the radius R1 of the circle each plate point describes"}));
+  appendTable(keys, "plate", plateKeys());
   for (KeyInfo& k : pathKeyInfos(d.path)) keys.push_back(std::move(k));
 
   appendTable(keys, "solver", solverKeys());

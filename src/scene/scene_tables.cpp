@@ -96,6 +96,16 @@ const KeyTable<BallSpec>& ballKeys() {
   return rows;
 }
 
+// [plate]: its one key is required, so rule code reads it (Reader::read).
+const KeyTable<PlateSpec>& plateKeys() {
+  static const KeyTable<PlateSpec> rows{
+      {.name = key::kRadius, .type = "number", .field = &PlateSpec::radius, .bounds = tableAbove(0),
+       .noun = "a radius", .defaultText = "(required)", .units = "length",
+       .meaning = "Brockett's plate: the radius R1 of the circle each plate point describes", .byRule = true},
+  };
+  return rows;
+}
+
 const KeyTable<SolverSpec>& solverKeys() {
   static const KeyTable<SolverSpec> rows = [] {
     std::vector<std::string> methods;

@@ -1,4 +1,4 @@
-// The scene schema, one table per section: every key of [ball], [solver],
+// The scene schema, one table per section: every key of [ball], [plate], [solver],
 // [timeline], [render], [figure], [labels], [animation], [[segment]] and a
 // segment's camera is one KeyRow (key_row.hpp) in scene_tables.cpp, the only file that
 // spells its name. The loader, `scene --print`, `rollspin keys` and
@@ -15,6 +15,7 @@
 namespace rollspin::scene {
 
 [[nodiscard]] const KeyTable<BallSpec>& ballKeys();
+[[nodiscard]] const KeyTable<PlateSpec>& plateKeys();
 [[nodiscard]] const KeyTable<SolverSpec>& solverKeys();
 [[nodiscard]] const KeyTable<TimelineSpec>& timelineKeys();
 [[nodiscard]] const KeyTable<RenderSpec>& renderKeys();

@@ -196,7 +196,7 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
 
   if (spec.plate) {
     w.section("plate");
-    w.key("radius", number(spec.plate->radius));
+    writeKeys(w, plateKeys(), *spec.plate);
   }
 
   if (!spec.isStoryboard()) {

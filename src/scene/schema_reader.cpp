@@ -512,12 +512,14 @@ SceneSpec Reader::read() {
   readSurface(section("surface", keysOf("surface")), "surface", spec_.surface);
 
   // [plate] — Brockett's upper plate; the contact path is then derived.
-  const toml::table* plate = section("plate", keysOf("plate"));
+  const toml::table* plate = section("plate", namesOf(plateKeys()));
   if (plate != nullptr) {
     PlateSpec p;
-    auto r1 = number(plate, "plate", "radius");
-    if (!r1) throw badInput(where("plate"), "plate.radius: missing; [plate] needs the radius R1 of the circle each plate point describes");
-    if (*r1 <= 0.0) failAt("plate.radius", fmt::format("expected a radius > 0, got {}", *r1));
+    const KeyRow<PlateSpec>& radius = rowOf(plateKeys(), key::kRadius);
+    const std::string radiusKey = dotted("plate", radius.name);
+    auto r1 = number(plate, "plate", std::string(radius.name));
+    if (!r1) throw badInput(where("plate"), "{}: missing; [plate] needs the radius R1 of the circle each plate point describes", radiusKey);
+    checkRow(radius, radiusKey, *r1);
     p.radius = *r1;
     spec_.plate = p;
   }

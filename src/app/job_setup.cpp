@@ -23,7 +23,7 @@ DrawJob prepareDrawJob(const DrawJobRequest& r) {
   if (r.height)
     flags.push_back(flagOverride("--height " + std::to_string(*r.height), "render", scene::key::kHeight, *r.height));
   if (r.transparent) flags.push_back(flagOverride("--transparent", "render", scene::key::kTransparent, true));
-  DrawJob job{loadSceneWithFlags(r.scenePath, r.overrides, flags, r.sceneText), nullptr, {}};
+  DrawJob job{loadSceneWithFlags(r.scenePath, r.overrides, flags, r.sceneText), nullptr, {}, {}};
   scene::SceneSpec& spec = job.spec;
   if (!r.sceneName.empty()) spec.name = r.sceneName;
   const media::OutputFormat& format = chooseOutputFormat(spec, r.output, r.use);

@@ -29,9 +29,6 @@ std::string vectorText(const Vec3& v) { return fmt::format("[{}, {}, {}]", v[0],
 std::string inQuotes(std::string_view s) { return fmt::format("\"{}\"", s); }
 
 Bounds above(double lo) { return {lo, std::nullopt, true, false}; }
-Bounds atLeast(double lo) { return {lo, std::nullopt, false, false}; }
-Bounds closed(double lo, double hi) { return {lo, hi, false, false}; }
-Bounds openRange(double lo, double hi) { return {lo, hi, true, true}; }
 
 struct Row {
   std::string type, defaultText;
@@ -115,43 +112,16 @@ std::vector<KeyInfo> surfaceKeyInfos(const SurfaceSpec& d) {
 
 // [path], and a segment's path: which keys apply to which kinds comes from
 // the path kind table (path_kinds.cpp).
-std::vector<KeyInfo> pathKeyInfos(const PathSpec& d) {
+std::vector<KeyInfo> pathKeyInfos() {
   std::vector<std::string> kindNames;
   for (const auto& row : pathKinds()) kindNames.emplace_back(row.name);
   std::vector<KeyInfo> out{info("path", "kind",
                                 {"string", "\"circle\" on a plane, else the surface's own (parallel or meridian)",
                                  {}, kindNames, "", "", "the curve the contact point follows"})};
-  const std::map<std::string, Row> rows{
-      {"turns", {"number", num(d.turns), above(0), {}, "", "turns", "how many times round"}},
-      {"direction", {"string", d.counterClockwise ? "\"ccw\"" : "\"cw\"", {}, {"ccw", "cw"}, "", "", "the sense of rotation, seen from the normal's side"}},
-      {"length", {"number", num(d.length) + " (geodesic: 6)", above(0), {}, "", "length", "the arc length travelled"}},
-      {"direction_vector", {"[x, y, z]", "horizontal in the plane", {}, {}, "non-zero; in the plane on a plane", "", "the start heading"}},
-      {"radius", {"number", num(d.radius) + " (paraboloid parallel: 2)", above(0), {}, "", "length", "circle: the contact circle's radius; paraboloid parallel: its radius"}},
-      {"colatitude_deg", {"number", num(d.colatitudeDeg), openRange(0, 180), {}, "", "degrees", "the parallel's colatitude θ on a sphere"}},
-      {"tube_angle_deg", {"number", num(d.tubeAngleDeg), {}, {}, "", "degrees", "the angle ψ up the torus tube (0 = outer equator)"}},
-      {"height", {"number", num(d.height), {}, {}, "", "length", "the start height along the cylinder's axis"}},
-      {"azimuth_deg", {"number", num(d.azimuthDeg), {}, {}, "", "degrees", "the start azimuth φ0"}},
-      {"start_azimuth_deg", {"number", num(d.startAzimuthDeg), {}, {}, "", "degrees", "the azimuth a parallel starts at (0: see Conventions)"}},
-      {"colatitude_start_deg", {"number", num(d.colatitudeStartDeg), openRange(0, 180), {}, "", "degrees", "the start colatitude θ0"}},
-      {"colatitude_end_deg", {"number", num(d.colatitudeEndDeg), openRange(0, 180), {}, "!= colatitude_start_deg", "degrees", "the end colatitude θ1"}},
-      {"pitch_angle_deg", {"number", num(d.pitchAngleDeg), openRange(-90, 90), {}, "", "degrees", "the helix's angle β from the parallels"}},
-      {"heading_deg", {"number", num(d.headingDeg), openRange(-90, 90), {}, "", "degrees", "the loxodrome's heading α from the meridians"}},
-      {"start_point", {"[x, y, z]", "per surface", {}, {}, "", "length", "the geodesic's start, projected onto the surface"}},
-      {"u", {"expression", inQuotes(d.u), {}, {}, "muparser syntax in t", "", "the first surface parameter as a function of t"}},
-      {"v", {"expression", inQuotes(d.v), {}, {}, "muparser syntax in t", "", "the second surface parameter as a function of t"}},
-      {"t_start", {"number", num(d.tStart), {}, {}, "", "", "where t starts"}},
-      {"t_end", {"number", num(d.tEnd), {}, {}, "> t_start", "", "where t ends"}},
-      {"points", {"array of [u, v] or [x, y, z]", "(required)", {}, {}, "at least 2 points (3 when closed)", "", "the points the path passes through"}},
-      {"closed", {"boolean", d.closed ? "true" : "false", {}, {}, "", "", "a periodic spline or a closed polygon"}},
-      {"interpolation", {"string", inQuotes(d.interpolation), {}, {"spline", "polyline"}, "", "", "a cubic spline through the points, or straight pieces"}},
-      {"corner_radius", {"number", num(d.cornerRadius), atLeast(0), {}, "", "length", "a polyline's corners rounded by arcs of this radius"}},
-      {"curvature_start", {"number", num(d.curvatureStart), closed(-1e6, 1e6), {}, "", "1/length", "the clothoid's geodesic curvature κ₀ at s = 0"}},
-      {"curvature_rate", {"number", num(d.curvatureRate), closed(-1e6, 1e6), {}, "", "1/length²", "α in κ_g = κ₀ + α s"}},
-  };
   for (const std::string& key : allPathKeys()) {
-    const auto it = rows.find(key);
-    const Row row = it != rows.end() ? it->second : Row{"?", "", {}, {}, "", "", "(undocumented path key)"};
-    out.push_back(info("path", key, row, "kind = " + pathKeyRule(key, PathKind::Line, SurfaceKind::Plane).kinds));
+    KeyInfo k = keyInfoOf("path", rowOf(pathKeys(), key));
+    k.appliesTo = "kind = " + pathKeyRule(key, PathKind::Line, SurfaceKind::Plane).kinds;
+    out.push_back(std::move(k));
   }
   return out;
 }
@@ -169,7 +139,7 @@ std::vector<KeyInfo> buildRegistry() {
   appendTable(keys, "ball", ballKeys());
   for (KeyInfo& k : surfaceKeyInfos(d.surface)) keys.push_back(std::move(k));
   appendTable(keys, "plate", plateKeys());
-  for (KeyInfo& k : pathKeyInfos(d.path)) keys.push_back(std::move(k));
+  for (KeyInfo& k : pathKeyInfos()) keys.push_back(std::move(k));
 
   appendTable(keys, "solver", solverKeys());
   appendTable(keys, "timeline", timelineKeys());

@@ -79,6 +79,7 @@ inline constexpr double kMinFigureWidthMm = 10.0, kMaxFigureWidthMm = 2000.0;
 inline constexpr double kMinFontSizePt = 2.0, kMaxFontSizePt = 72.0;
 inline constexpr double kMinDpi = 30.0, kMaxDpi = 2400.0;
 inline constexpr double kMaxCrf = 51.0;
+inline constexpr double kMaxCurvature = 1e6;  // a clothoid's |κ₀| and |α|
 inline constexpr long long kMaxJpegQuality = 100;
 inline constexpr std::array<long long, 3> kMsaaSamples{1, 2, 4};
 

@@ -5,6 +5,7 @@
 #include "scene/scene_tables.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "media/output_format.hpp"
@@ -21,6 +22,13 @@ const std::string_view kWidth = "width", kHeight = "height", kTransparent = "tra
 const std::string_view kWidthMm = "width_mm", kWidthIn = "width_in", kFontSizePt = "font_size_pt";
 const std::string_view kFacts = "facts", kLabels = "labels";
 const std::string_view kFps = "fps", kDuration = "duration", kSpeed = "speed", kHold = "hold";
+const std::string_view kLength = "length", kDirectionVector = "direction_vector", kTurns = "turns", kDirection =
+    "direction", kStartAzimuthDeg = "start_azimuth_deg", kColatitudeDeg = "colatitude_deg", kTubeAngleDeg =
+    "tube_angle_deg", kAzimuthDeg = "azimuth_deg", kColatitudeStartDeg = "colatitude_start_deg",
+    kColatitudeEndDeg = "colatitude_end_deg", kPitchAngleDeg = "pitch_angle_deg", kHeadingDeg = "heading_deg",
+    kStartPoint = "start_point", kU = "u", kV = "v", kTStart = "t_start", kTEnd = "t_end", kPoints = "points",
+    kClosed = "closed", kInterpolation = "interpolation", kCornerRadius = "corner_radius", kCurvatureStart =
+    "curvature_start", kCurvatureRate = "curvature_rate";
 const std::string_view kPath = "path", kSurface = "surface", kCamera = "camera", kCaption = "caption",
                        kTransition = "transition", kFadeSeconds = "fade_seconds";
 }  // namespace key
@@ -41,6 +49,7 @@ std::string tomlQuoted(std::string_view text) {
 namespace {
 
 Bounds tableAbove(double lo) { return {lo, std::nullopt, true, false}; }
+Bounds tableAtLeast(double lo) { return {lo, std::nullopt, false, false}; }
 Bounds tableClosed(double lo, double hi) { return {lo, hi, false, false}; }
 Bounds tableOpen(double lo, double hi) { return {lo, hi, true, true}; }
 Bounds tableLeftOpen(double lo, double hi) { return {lo, hi, true, false}; }
@@ -103,6 +112,91 @@ const KeyTable<PlateSpec>& plateKeys() {
        .noun = "a radius", .defaultText = "(required)", .units = "length",
        .meaning = "Brockett's plate: the radius R1 of the circle each plate point describes", .byRule = true},
   };
+  return rows;
+}
+
+// [path], and a segment's path: which keys apply to which kinds is the path
+// kind table's (path_kinds.cpp, through these constants). Rows the rule
+// code reads: a direction in the plane, the expressions, the points.
+const KeyTable<PathSpec>& pathKeys() {
+  static const KeyTable<PathSpec> rows = [] {
+    const PathSpec d;
+    const ChoiceField<PathSpec> direction{[](const PathSpec& p) { return std::size_t(p.counterClockwise ? 0 : 1); },
+                                          [](PathSpec& p, std::size_t i) { p.counterClockwise = i == 0; }};
+    const std::string heading = fmt::format(
+        "a heading in (-{0}, {0}) degrees from the meridians ({0} is a parallel: use kind = \"parallel\")", 90);
+    const std::string curvature = fmt::format("|value| <= 1e{}", int(std::lround(std::log10(kMaxCurvature))));
+    return KeyTable<PathSpec>{
+        {.name = key::kLength, .type = "number", .field = &PathSpec::length, .bounds = tableAbove(0),
+         .noun = "a length", .defaultText = tomlNumber(d.length) + " (geodesic: 6)", .units = "length",
+         .meaning = "the arc length travelled"},
+        {.name = key::kDirectionVector, .type = "[x, y, z]", .field = &PathSpec::directionVector,
+         .noun = "a non-zero vector", .defaultText = "horizontal in the plane",
+         .rangeNote = "non-zero; in the plane on a plane", .meaning = "the start heading", .byRule = true},
+        {.name = key::kTurns, .type = "number", .field = &PathSpec::turns, .bounds = tableAbove(0),
+         .noun = "a number of turns", .units = "turns", .meaning = "how many times round"},
+        {.name = key::kDirection, .type = "string", .field = direction, .choices = {"ccw", "cw"},
+         .meaning = "the sense of rotation, seen from the normal's side"},
+        {.name = key::kRadius, .type = "number", .field = &PathSpec::radius, .bounds = tableAbove(0),
+         .noun = "a radius", .defaultText = tomlNumber(d.radius) + " (paraboloid parallel: 2)", .units = "length",
+         .meaning = "circle: the contact circle's radius; paraboloid parallel: its radius"},
+        {.name = key::kStartAzimuthDeg, .type = "number", .field = &PathSpec::startAzimuthDeg, .units = "degrees",
+         .meaning = "the azimuth a parallel starts at (0: see Conventions)"},
+        {.name = key::kColatitudeDeg, .type = "number", .field = &PathSpec::colatitudeDeg, .bounds = tableOpen(0, 180),
+         .noun = "a colatitude", .unitWord = "degrees", .units = "degrees",
+         .meaning = "the parallel's colatitude θ on a sphere"},
+        {.name = key::kTubeAngleDeg, .type = "number", .field = &PathSpec::tubeAngleDeg, .units = "degrees",
+         .meaning = "the angle ψ up the torus tube (0 = outer equator)"},
+        {.name = key::kHeight, .type = "number", .field = &PathSpec::height, .units = "length",
+         .meaning = "the start height along the cylinder's axis"},
+        {.name = key::kAzimuthDeg, .type = "number", .field = &PathSpec::azimuthDeg, .units = "degrees",
+         .meaning = "the start azimuth φ0"},
+        {.name = key::kColatitudeStartDeg, .type = "number", .field = &PathSpec::colatitudeStartDeg,
+         .bounds = tableOpen(0, 180), .noun = "a colatitude", .unitWord = "degrees", .units = "degrees",
+         .meaning = "the start colatitude θ0"},
+        {.name = key::kColatitudeEndDeg, .type = "number", .field = &PathSpec::colatitudeEndDeg,
+         .bounds = tableOpen(0, 180), .noun = "a colatitude", .unitWord = "degrees",
+         .rangeNote = "!= colatitude_start_deg", .units = "degrees", .meaning = "the end colatitude θ1"},
+        {.name = key::kPitchAngleDeg, .type = "number", .field = &PathSpec::pitchAngleDeg, .bounds = tableOpen(-90, 90),
+         .noun = "a pitch angle", .unitWord = "degrees", .units = "degrees",
+         .meaning = "the helix's angle β from the parallels"},
+        {.name = key::kHeadingDeg, .type = "number", .field = &PathSpec::headingDeg, .bounds = tableOpen(-90, 90),
+         .expected = heading, .units = "degrees", .meaning = "the loxodrome's heading α from the meridians"},
+        // Printed by writePath: its computed default depends on where the path starts.
+        {.name = key::kStartPoint, .type = "[x, y, z]", .field = &PathSpec::startPoint, .defaultText = "per surface",
+         .units = "length", .meaning = "the geodesic's start, projected onto the surface"},
+        {.name = key::kU, .type = "expression", .field = &PathSpec::u, .rangeNote = "muparser syntax in t",
+         .meaning = "the first surface parameter as a function of t", .byRule = true},
+        {.name = key::kV, .type = "expression", .field = &PathSpec::v, .rangeNote = "muparser syntax in t",
+         .meaning = "the second surface parameter as a function of t", .byRule = true},
+        {.name = key::kTStart, .type = "number", .field = &PathSpec::tStart, .meaning = "where t starts"},
+        {.name = key::kTEnd, .type = "number", .field = &PathSpec::tEnd, .rangeNote = "> t_start",
+         .meaning = "where t ends"},
+        {.name = key::kPoints, .type = "array of [u, v] or [x, y, z]", .defaultText = "(required)",
+         .rangeNote = "at least 2 points (3 when closed)", .meaning = "the points the path passes through",
+         .byRule = true, .printText = [](const PathSpec& p) -> std::optional<std::string> {
+           std::string list = "[";
+           for (std::size_t i = 0; i < p.points.size(); ++i) {
+             list += i ? ", [" : "[";
+             for (std::size_t j = 0; j < p.points[i].size(); ++j) list += (j ? ", " : "") + tomlNumber(p.points[i][j]);
+             list += "]";
+           }
+           return list + "]";
+         }},
+        {.name = key::kClosed, .type = "boolean", .field = &PathSpec::closed,
+         .meaning = "a periodic spline or a closed polygon"},
+        {.name = key::kInterpolation, .type = "string", .field = &PathSpec::interpolation,
+         .choices = {"spline", "polyline"}, .meaning = "a cubic spline through the points, or straight pieces"},
+        {.name = key::kCornerRadius, .type = "number", .field = &PathSpec::cornerRadius, .bounds = tableAtLeast(0),
+         .noun = "a radius", .units = "length", .meaning = "a polyline's corners rounded by arcs of this radius"},
+        {.name = key::kCurvatureStart, .type = "number", .field = &PathSpec::curvatureStart,
+         .bounds = tableClosed(-kMaxCurvature, kMaxCurvature), .expected = curvature, .units = "1/length",
+         .meaning = "the clothoid's geodesic curvature κ₀ at s = 0"},
+        {.name = key::kCurvatureRate, .type = "number", .field = &PathSpec::curvatureRate,
+         .bounds = tableClosed(-kMaxCurvature, kMaxCurvature), .expected = curvature, .units = "1/length²",
+         .meaning = "α in κ_g = κ₀ + α s"},
+    };
+  }();
   return rows;
 }
 

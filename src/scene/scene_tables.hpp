@@ -1,7 +1,7 @@
-// The scene schema, one table per section: every key of [ball], [plate], [solver],
-// [timeline], [render], [figure], [labels], [animation], [[segment]] and a
-// segment's camera is one KeyRow (key_row.hpp) in scene_tables.cpp, the only file that
-// spells its name. The loader, `scene --print`, `rollspin keys` and
+// The scene schema, one table per section: every key of [ball], [plate],
+// [path], [solver], [timeline], [render], [figure], [labels], [animation],
+// [[segment]] and a segment's camera is one KeyRow (key_row.hpp) in
+// scene_tables.cpp, the only file that spells its name. The loader, `scene --print`, `rollspin keys` and
 // docs/scene-reference.md all walk these tables; rule code (cross-key checks)
 // names a key through the constants below.
 #pragma once
@@ -16,6 +16,7 @@ namespace rollspin::scene {
 
 [[nodiscard]] const KeyTable<BallSpec>& ballKeys();
 [[nodiscard]] const KeyTable<PlateSpec>& plateKeys();
+[[nodiscard]] const KeyTable<PathSpec>& pathKeys();
 [[nodiscard]] const KeyTable<SolverSpec>& solverKeys();
 [[nodiscard]] const KeyTable<TimelineSpec>& timelineKeys();
 [[nodiscard]] const KeyTable<RenderSpec>& renderKeys();
@@ -41,6 +42,10 @@ extern const std::string_view kWidth, kHeight, kTransparent, kTitle, kTarget, kF
 extern const std::string_view kWidthMm, kWidthIn, kFontSizePt;
 extern const std::string_view kFacts, kLabels;
 extern const std::string_view kFps, kDuration, kSpeed, kHold;
+extern const std::string_view kLength, kDirectionVector, kTurns, kDirection, kStartAzimuthDeg, kColatitudeDeg,
+    kTubeAngleDeg, kAzimuthDeg, kColatitudeStartDeg, kColatitudeEndDeg, kPitchAngleDeg, kHeadingDeg,
+    kStartPoint, kU, kV, kTStart, kTEnd, kPoints, kClosed, kInterpolation, kCornerRadius, kCurvatureStart,
+    kCurvatureRate;
 extern const std::string_view kPath, kSurface, kCamera, kCaption, kTransition, kFadeSeconds;
 }  // namespace key
 

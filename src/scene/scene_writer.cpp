@@ -13,9 +13,8 @@ namespace {
 std::string quoted(const std::string& s) { return tomlQuoted(s); }
 
 // Shortest text that reads back as the same double (fmt's default).
-std::string number(double v) { return fmt::format("{}", v); }
-std::string vec(const Vec3& v) { return fmt::format("[{}, {}, {}]", v[0], v[1], v[2]); }
-std::string boolean(bool b) { return b ? "true" : "false"; }
+std::string number(double v) { return tomlNumber(v); }
+std::string vec(const Vec3& v) { return tomlVector(v); }
 
 class Writer {
  public:
@@ -80,46 +79,18 @@ void writePath(Writer& w, const PathSpec& p, SurfaceKind sk, bool plate, PathDef
   for (const auto& key : allPathKeys()) {
     if (!pathKeyRule(key, pk, sk).applies) continue;
     // With [plate] the circle's radius is derived, and setting it is an error.
-    if (key == "radius" && plate) continue;
-    if (key == "turns") w.key(key, number(p.turns));
-    else if (key == "direction") w.key(key, quoted(p.counterClockwise ? "ccw" : "cw"));
-    else if (key == "length") w.key(key, number(p.length));
-    else if (key == "direction_vector") {
-      if (p.directionVector) w.key(key, vec(*p.directionVector));
-      else if (defaults == PathDefaults::Own) w.computed(key, "the default direction on this surface");
+    if (key == key::kRadius && plate) continue;
+    // Unset placements: the surface's default start, or the previous segment's end.
+    if (key == key::kDirectionVector && !p.directionVector) {
+      if (defaults == PathDefaults::Own) w.computed(key, "the default direction on this surface");
       else if (sk == SurfaceKind::Plane && pk != PathKind::Geodesic) continue;  // setting it is an error here
       else w.computed(key, "the previous segment's end heading");
-    } else if (key == "radius") w.key(key, number(p.radius));
-    else if (key == "colatitude_deg") w.key(key, number(p.colatitudeDeg));
-    else if (key == "tube_angle_deg") w.key(key, number(p.tubeAngleDeg));
-    else if (key == "height") w.key(key, number(p.height));
-    else if (key == "azimuth_deg") w.key(key, number(p.azimuthDeg));
-    else if (key == "start_azimuth_deg") w.key(key, number(p.startAzimuthDeg));
-    else if (key == "colatitude_start_deg") w.key(key, number(p.colatitudeStartDeg));
-    else if (key == "colatitude_end_deg") w.key(key, number(p.colatitudeEndDeg));
-    else if (key == "pitch_angle_deg") w.key(key, number(p.pitchAngleDeg));
-    else if (key == "heading_deg") w.key(key, number(p.headingDeg));
-    else if (key == "start_point") {
-      if (p.startPoint) w.key(key, vec(*p.startPoint));
-      else w.computed(key, defaults == PathDefaults::Own ? "the default start on this surface"
-                                                         : "the previous segment's end point");
-    } else if (key == "u") w.key(key, quoted(p.u));
-    else if (key == "v") w.key(key, quoted(p.v));
-    else if (key == "t_start") w.key(key, number(p.tStart));
-    else if (key == "t_end") w.key(key, number(p.tEnd));
-    else if (key == "points") {
-      std::string list = "[";
-      for (std::size_t i = 0; i < p.points.size(); ++i) {
-        list += i ? ", [" : "[";
-        for (std::size_t j = 0; j < p.points[i].size(); ++j) list += (j ? ", " : "") + number(p.points[i][j]);
-        list += "]";
-      }
-      w.key(key, list + "]");
-    } else if (key == "closed") w.key(key, boolean(p.closed));
-    else if (key == "interpolation") w.key(key, quoted(p.interpolation));
-    else if (key == "corner_radius") w.key(key, number(p.cornerRadius));
-    else if (key == "curvature_start") w.key(key, number(p.curvatureStart));
-    else if (key == "curvature_rate") w.key(key, number(p.curvatureRate));
+    } else if (key == key::kStartPoint && !p.startPoint) {
+      w.computed(key, defaults == PathDefaults::Own ? "the default start on this surface"
+                                                    : "the previous segment's end point");
+    } else {
+      w.key(key, *printedValue(rowOf(pathKeys(), key), p));
+    }
   }
 }
 

@@ -397,99 +397,48 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
   }
   const bool onSphere = sk == SurfaceKind::Sphere;
   const bool meridian = pk == PathKind::Meridian;
+  auto dottedKey = [&](std::string_view name) { return dotted(prefix, name); };
 
-  if (auto t = number(path, prefix, "turns")) {
-    if (*t <= 0.0) failAt(prefix + ".turns", fmt::format("expected a number of turns > 0, got {}", *t));
-    target.turns = *t;
-  }
-  if (auto d = text(path, prefix, "direction", keyChoices("path", "direction"))) target.counterClockwise = *d == "ccw";
-  if (pk == PathKind::Geodesic && !spec_.locations.contains(prefix + ".length")) target.length = 6.0;
-  if (auto len = number(path, prefix, "length")) {
-    if (*len <= 0.0) failAt(prefix + ".length", fmt::format("expected a length > 0, got {}", *len));
-    target.length = *len;
-  }
-  if (auto dv = vector(path, prefix, "direction_vector")) {
-    const double len = norm3(*dv);
-    if (len < 1e-12) failAt(prefix + ".direction_vector", "expected a non-zero vector, got [0, 0, 0]");
-    const Vec3 d = unitVector(*dv, len);
-    if (sk == SurfaceKind::Plane) {
-      const Vec3& n = surface.params.vector("normal");
-      const double along = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
-      if (std::abs(along) > 1e-9)
-        failAt(prefix + ".direction_vector",
-               fmt::format("the {} leaves the surface: its direction has a component {:.6g} along the plane "
-                           "normal [{}, {}, {}]; expected a vector in the plane",
-                           pkName, along, n[0], n[1], n[2]));
-    }
-    target.directionVector = d;
-  }
-  if (auto r = number(path, prefix, "radius")) {
-    if (*r <= 0.0) failAt(prefix + ".radius", fmt::format("expected a radius > 0, got {}", *r));
-    target.radius = *r;
+  // A geodesic's own default length; the table's rows (only the kind's keys
+  // are present: the others were refused above), then the rules between keys.
+  if (pk == PathKind::Geodesic && !spec_.locations.contains(dottedKey(key::kLength))) target.length = 6.0;
+  readKeys(path, prefix, pathKeys(), target);
+  readRow(path, prefix, rowOf(pathKeys(), key::kDirectionVector), target);
+  if (target.directionVector && sk == SurfaceKind::Plane) {
+    const Vec3& d = *target.directionVector;
+    const Vec3& n = surface.params.vector("normal");
+    const double along = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+    if (std::abs(along) > 1e-9)
+      failAt(dottedKey(key::kDirectionVector),
+             fmt::format("the {} leaves the surface: its direction has a component {:.6g} along the plane "
+                         "normal [{}, {}, {}]; expected a vector in the plane",
+                         pkName, along, n[0], n[1], n[2]));
   }
   if (pk == PathKind::Parallel) {
     const geometry::SurfaceKindRow& surfaceRow = *surfaceKindRow(sk).geometry;
     if (surfaceRow.revolutionProblem)
       if (auto problem = surfaceRow.revolutionProblem(surface.params))
         failAt(pathKindGiven ? (prefix + ".kind") : blamedKey(underTable(*problem, surfaceKey)), problem->message);
-    if (surfaceRow.parallelRadius && !spec_.locations.contains(prefix + ".radius"))
+    if (surfaceRow.parallelRadius && !spec_.locations.contains(dottedKey(key::kRadius)))
       target.radius = *surfaceRow.parallelRadius;
   }
-  auto colatitude = [&](const std::string& key, double& out) {
-    if (auto th = number(path, prefix, key)) {
-      if (!(*th > 0.0 && *th < 180.0))
-        failAt(prefix + "." + key, fmt::format("expected a colatitude in (0, 180) degrees, got {}", *th));
-      out = *th;
-    }
-  };
-  colatitude("colatitude_deg", target.colatitudeDeg);
-  colatitude("colatitude_start_deg", target.colatitudeStartDeg);
-  colatitude("colatitude_end_deg", target.colatitudeEndDeg);
   if ((meridian && onSphere) || pk == PathKind::Loxodrome) {
     if (target.colatitudeStartDeg == target.colatitudeEndDeg)
-      failAt(prefix + ".colatitude_end_deg", "expected colatitude_end_deg != colatitude_start_deg (an empty path)");
+      failAt(dottedKey(key::kColatitudeEndDeg),
+             fmt::format("expected {} != {} (an empty path)", key::kColatitudeEndDeg, key::kColatitudeStartDeg));
   }
-  if (auto v = number(path, prefix, "tube_angle_deg")) target.tubeAngleDeg = *v;
-  if (auto v = number(path, prefix, "height")) target.height = *v;
-  if (auto v = number(path, prefix, "azimuth_deg")) target.azimuthDeg = *v;
-  if (auto v = number(path, prefix, "start_azimuth_deg")) target.startAzimuthDeg = *v;
-  if (auto v = number(path, prefix, "pitch_angle_deg")) {
-    if (!(std::abs(*v) < 90.0))
-      failAt(prefix + ".pitch_angle_deg", fmt::format("expected a pitch angle in (-90, 90) degrees, got {}", *v));
-    target.pitchAngleDeg = *v;
-  }
-  if (auto v = number(path, prefix, "heading_deg")) {
-    if (!(std::abs(*v) < 90.0))
-      failAt(prefix + ".heading_deg", fmt::format("expected a heading in (-90, 90) degrees from the meridians "
-                                             "(90 is a parallel: use kind = \"parallel\"), got {}", *v));
-    target.headingDeg = *v;
-  }
-  if (auto p = vector(path, prefix, "start_point")) target.startPoint = *p;
-  if (auto e = expression(path, prefix, "u")) target.u = *e;
-  if (auto e = expression(path, prefix, "v")) target.v = *e;
-  if (auto v = number(path, prefix, "t_start")) target.tStart = *v;
-  if (auto v = number(path, prefix, "t_end")) target.tEnd = *v;
+  if (auto e = expression(path, prefix, std::string(key::kU))) target.u = *e;
+  if (auto e = expression(path, prefix, std::string(key::kV))) target.v = *e;
   if (pk == PathKind::Uv && !(target.tEnd > target.tStart))
-    failAt(spec_.locations.contains(prefix + ".t_end") ? (prefix + ".t_end") : (prefix + ".t_start"),
-           fmt::format("expected t_end > t_start, got [{}, {}]", target.tStart, target.tEnd));
-  if (auto pts = pointList(path, prefix, "points")) target.points = *pts;
-  if (auto c = boolean(path, prefix, "closed")) target.closed = *c;
-  if (auto i = text(path, prefix, "interpolation", keyChoices("path", "interpolation"))) target.interpolation = *i;
-  if (auto r = number(path, prefix, "corner_radius")) {
-    if (*r < 0.0) failAt(prefix + ".corner_radius", fmt::format("expected a radius >= 0, got {}", *r));
-    target.cornerRadius = *r;
-  }
-  for (const char* key : {"curvature_start", "curvature_rate"}) {
-    if (auto v = number(path, prefix, key)) {
-      if (std::abs(*v) > 1e6) failAt(prefix + "." + key, fmt::format("expected |value| <= 1e6, got {}", *v));
-      (std::string(key) == "curvature_start" ? target.curvatureStart : target.curvatureRate) = *v;
-    }
-  }
+    failAt(spec_.locations.contains(dottedKey(key::kTEnd)) ? dottedKey(key::kTEnd) : dottedKey(key::kTStart),
+           fmt::format("expected {} > {}, got [{}, {}]", key::kTEnd, key::kTStart, target.tStart, target.tEnd));
+  if (auto pts = pointList(path, prefix, std::string(key::kPoints))) target.points = *pts;
   if (pk == PathKind::Points) {
     const std::size_t need = target.closed ? 3 : 2;
+    const std::string points = dottedKey(key::kPoints);
     if (target.points.size() < need)
-      throw badInput(spec_.locations.contains(prefix + ".points") ? where(prefix + ".points") : where(prefix),
-                     "{}.points: expected at least {} points for {} path, got {}", prefix, need,
+      throw badInput(spec_.locations.contains(points) ? where(points) : where(prefix),
+                     "{}: expected at least {} points for {} path, got {}", points, need,
                      target.closed ? "a closed" : "an open", target.points.size());
   }
   return pk;

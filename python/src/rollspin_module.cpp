@@ -228,7 +228,7 @@ class Scene {
                       media::OutputUse::Still, 0, source_.text};
     still->job = jobs::prepareDrawJob(still->request);
     // As `render --still`: a scene with [figure] keys keeps the figure's composition.
-    if (jobs::setsFigureKeys(still->job.spec)) jobs::fitTextToFigure(still->job.spec);
+    if (jobs::setsFigureKeys(still->job.spec)) still->job.figureText = jobs::fitTextToFigure(still->job.spec);
     still->drawer = jobs::makeDrawer(still->job);
     return *stills_.emplace(key, std::move(still)).first->second;
   }
@@ -271,7 +271,7 @@ struct Image {
       // for the printed size, not the pixels'.
       jobs::DrawJob job = jobs::prepareDrawJob(still->request);
       const media::OutputMetadata remembered = metadata(job.spec, true);
-      jobs::fitTextToFigure(job.spec);
+      job.figureText = jobs::fitTextToFigure(job.spec);
       const render::DrawList figureList = jobs::makeDrawer(job, s)->draw(jobs::stillFrame(job, s));
       const std::lock_guard lock(sharedGl().mutex);
       dropSharedGl();  // the figure job makes its own context

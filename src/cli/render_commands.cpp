@@ -331,8 +331,9 @@ void registerRenderCommands(CLI::App& cli, CommandHandler& handler) {
                      "default), srt (NAME.vtt and NAME.srt) or none; the clip's subtitle track carries them "
                      "whatever this says");
   render->add_flag("--quiet", options->quiet, "No progress bar or summary line (a still: no \"wrote FILE\" line)");
-  render->add_option("--width", options->width, "Image width in pixels (1..8192)");
-  render->add_option("--height", options->height, "Image height in pixels (1..8192)");
+  const std::string sides = fmt::format("({}..{})", scene::kMinImageSide, scene::kMaxImageSide);
+  render->add_option("--width", options->width, "Image width in pixels " + sides);
+  render->add_option("--height", options->height, "Image height in pixels " + sides);
   render->add_flag("--transparent", options->still.transparent, "No background: alpha in a PNG still or PNG frames, a WebM (VP9) or MOV "
                                                          "(ProRes 4444) clip, a PDF/SVG figure; GIF: 1-bit");
   render->add_option("--set", options->still.overrides, "Override a scene key: --set key.sub=value (repeatable)");

@@ -284,8 +284,8 @@ SurfaceAsDrawn chartSurface(const geometry::Surface& surface, const SweptBox& bo
 BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& model,
                    std::shared_ptr<const render::TextureImage> ballTexture,
                    std::shared_ptr<const motion::SceneFacts> facts, const Vec3& markerBody,
-                   std::shared_ptr<render::MeshData> dotMesh)
-    : spec_(spec), model_(model), markerBody_(markerBody), ballTexture_(std::move(ballTexture)),
+                   std::shared_ptr<render::MeshData> dotMesh, FigureText figureText)
+    : spec_(spec), figureText_(figureText), model_(model), markerBody_(markerBody), ballTexture_(std::move(ballTexture)),
       facts_(std::move(facts)), dotMesh_(std::move(dotMesh)) {
   const double R = model.ballRadius;
   const double length = model.path->length();
@@ -697,7 +697,7 @@ void BallView::addMarks(render::DrawList& list, double s, bool plateShown, int v
     number.anchor = toGlm(onPath - std::copysign(0.4 * R, f.geodesicCurvature) * f.tangentNormal);
     number.worldAnchored = true;
     number.align = render::Align::Center;
-    number.sizePx = std::max(text * 0.9f, text * float(spec_.render.leastTextScale));  // a figure's 6 pt at least
+    number.sizePx = std::max(text * 0.9f, text * float(figureText_.leastScale));  // a figure's 6 pt at least
     number.bold = true;
     number.color = done ? kTextColor : glm::vec4(0.12f, 0.13f, 0.16f, 1.0f);
     list.labels.push_back(number);

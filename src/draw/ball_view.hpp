@@ -15,6 +15,7 @@
 #include "motion/frame_sampling.hpp"
 #include "motion/scene_facts.hpp"
 #include "render/draw_list.hpp"
+#include "draw/figure_text.hpp"
 #include "scene/scene_spec.hpp"
 
 namespace rollspin::draw {
@@ -25,7 +26,7 @@ class BallView {
   // the path is sampled (the camera framing still reads it).
   BallView(const scene::SceneSpec& spec, const model::RollingModel& model,
            std::shared_ptr<const render::TextureImage> ballTexture, std::shared_ptr<const motion::SceneFacts> facts,
-           const geometry::Vec3& markerBody, std::shared_ptr<render::MeshData> dotMesh);
+           const geometry::Vec3& markerBody, std::shared_ptr<render::MeshData> dotMesh, FigureText figureText);
 
   // What the default camera must keep in view.
   [[nodiscard]] const FrameExtent& extent() const { return extent_; }
@@ -85,6 +86,7 @@ class BallView {
   std::pair<geometry::Vec3, double> plateDisc(double s) const;
 
   const scene::SceneSpec& spec_;
+  FigureText figureText_;
   const model::RollingModel& model_;
   geometry::Vec3 markerBody_;
   std::vector<geometry::Vec3> pathPoints_;  // dense samples of P(s)

@@ -68,8 +68,9 @@ TextBlock captionBlock(const std::string& caption, float text, float leastPx, fl
 
 SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model,
                          std::shared_ptr<const render::TextureImage> ballTexture,
-                         std::shared_ptr<const SceneFacts> facts, std::optional<double> figureStillAt)
-    : spec_(spec) {
+                         std::shared_ptr<const SceneFacts> facts, std::optional<double> figureStillAt,
+                         FigureText figureText)
+    : spec_(spec), figureText_(figureText) {
   const geometry::DarbouxSample start = model.path->at(0.0);
   markerBody_ = spec.ball.marker ? Vec3((*spec.ball.marker)[0], (*spec.ball.marker)[1], (*spec.ball.marker)[2])
                                  : start.normal;
@@ -84,14 +85,15 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
   // model for its twin and the whole clip's marker.
   for (const motion::SurfaceStretch& stretch : stretches_) {
     parts_.push_back(std::unique_ptr<SceneDrawer>(
-        new SceneDrawer(stretch, model, ballTexture, facts, markerBody_)));
+        new SceneDrawer(stretch, model, ballTexture, facts, markerBody_, figureText_)));
   }
 }
 
 SceneDrawer::SceneDrawer(const motion::SurfaceStretch& stretch, const RollingModel& whole,
                          std::shared_ptr<const render::TextureImage> ballTexture,
-                         std::shared_ptr<const SceneFacts> facts, const geometry::Vec3& markerBody)
-    : spec_(stretch.spec), stretchStart_(stretch.start), markerBody_(markerBody) {
+                         std::shared_ptr<const SceneFacts> facts, const geometry::Vec3& markerBody,
+                         FigureText figureText)
+    : spec_(stretch.spec), figureText_(figureText), stretchStart_(stretch.start), markerBody_(markerBody) {
   build(stretch.model, whole, std::move(ballTexture), std::move(facts));
 }
 
@@ -117,8 +119,9 @@ void SceneDrawer::build(const RollingModel& model, const RollingModel& whole,
 
   auto dotMesh = render::uvSphere(24, 12);  // small dots need few triangles
   if (spec.render.layout != scene::RenderLayout::Ball)
-    twin_ = std::make_unique<TwinView>(spec, whole, facts, markerBody_, dotMesh);
-  ball_ = std::make_unique<BallView>(spec, model, std::move(ballTexture), std::move(facts), markerBody_, dotMesh);
+    twin_ = std::make_unique<TwinView>(spec, whole, facts, markerBody_, dotMesh, figureText_);
+  ball_ = std::make_unique<BallView>(spec, model, std::move(ballTexture), std::move(facts), markerBody_, dotMesh,
+                                     figureText_);
   if (&model != &whole) ball_->showWholeArcLength(stretchStart_, whole.path->length());
   camera_ = std::make_unique<CameraFraming>(spec, model, stillAt_ ? ball_->stillExtent(*stillAt_) : ball_->extent());
   layOut(model);
@@ -160,9 +163,9 @@ SceneDrawer::Rects SceneDrawer::rects() const {
 
 // A figure's text never prints under 6 pt (figure_job sets the scale);
 // a clip's has no such floor.
-float SceneDrawer::leastText() const { return text() * float(spec_.render.leastTextScale); }
+float SceneDrawer::leastText() const { return text() * float(figureText_.leastScale); }
 
-bool SceneDrawer::figure() const { return spec_.render.leastTextScale > 0.0; }
+bool SceneDrawer::figure() const { return figureText_.figure(); }
 
 // A figure leaves out a title whose band would take over a fifth of its
 // height (a narrow column in large text): its caption says it.

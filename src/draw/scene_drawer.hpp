@@ -17,6 +17,7 @@
 #include "draw/ball_view.hpp"
 #include "draw/clip_layout.hpp"
 #include "draw/camera_framing.hpp"
+#include "draw/figure_text.hpp"
 #include "draw/twin_view.hpp"
 #include "motion/frame_sampling.hpp"
 #include "motion/scene_facts.hpp"
@@ -49,10 +50,13 @@ class SceneDrawer {
   // `figureStillAt`: a figure drawn at this arc length only, framed and laid
   // out for that still (the ball where it is, not its sweep over the clip);
   // ignored unless the text is laid out for a printed size (figure()), a
-  // strobe shows one ball, and the scene has one surface.
+  // strobe shows one ball, and the scene has one surface. `figureText`: a
+  // clip's text, or a printed figure's with its least size
+  // (jobs::fitTextToFigure).
   SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model,
               std::shared_ptr<const render::TextureImage> ballTexture,
-              std::shared_ptr<const SceneFacts> facts = nullptr, std::optional<double> figureStillAt = std::nullopt);
+              std::shared_ptr<const SceneFacts> facts = nullptr, std::optional<double> figureStillAt = std::nullopt,
+              FigureText figureText = {});
   ~SceneDrawer();
 
   [[nodiscard]] render::DrawList draw(const FrameOrientations& frame) const;
@@ -89,7 +93,7 @@ class SceneDrawer {
   // direction of the whole clip.
   SceneDrawer(const motion::SurfaceStretch& stretch, const RollingModel& whole,
               std::shared_ptr<const render::TextureImage> ballTexture, std::shared_ptr<const SceneFacts> facts,
-              const geometry::Vec3& markerBody);
+              const geometry::Vec3& markerBody, FigureText figureText);
   void build(const RollingModel& ball, const RollingModel& whole, std::shared_ptr<const render::TextureImage> ballTexture,
              std::shared_ptr<const SceneFacts> facts);
   // The stretch that shows segment k, and a frame in its own arc length
@@ -127,6 +131,7 @@ class SceneDrawer {
   bool moveCaptionsBelow(const ViewLayout& layout, const std::vector<TextBlock>& blocks, float viewWidth);
 
   const scene::SceneSpec& spec_;
+  FigureText figureText_;
   std::vector<motion::SurfaceStretch> stretches_;  // empty: one surface, drawn here
   std::vector<std::unique_ptr<SceneDrawer>> parts_;  // one per stretch
   double stretchStart_ = 0.0;                         // a stretch's drawer: where it lies on the whole path

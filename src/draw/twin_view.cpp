@@ -23,8 +23,8 @@ using geometry::Vec3;
 
 TwinView::TwinView(const scene::SceneSpec& spec, const model::RollingModel& model,
                    const std::shared_ptr<const motion::SceneFacts>& facts, const Vec3& markerBody,
-                   std::shared_ptr<render::MeshData> dotMesh)
-    : spec_(spec), model_(model), markerBody_(markerBody), dotMesh_(std::move(dotMesh)) {
+                   std::shared_ptr<render::MeshData> dotMesh, FigureText figureText)
+    : spec_(spec), figureText_(figureText), model_(model), markerBody_(markerBody), dotMesh_(std::move(dotMesh)) {
   StageLog::instance().record("twin-geometry");
   blochSphereMesh_ = render::uvSphere(64, 32);
   trailGridCount_ = motion::trailGrid(spec, model).count;
@@ -208,7 +208,7 @@ void TwinView::addLabels(render::DrawList& list, const render::View& v, int view
   list.labels[list.labels.size() - 2].offsetPx = glm::vec2(poleOffset * text, 0.0f);
 }
 
-bool TwinView::closeLabels() const { return spec_.render.fontScale > 1.0 || spec_.render.leastTextScale > 0.0; }
+bool TwinView::closeLabels() const { return spec_.render.fontScale > 1.0 || figureText_.figure(); }
 
 std::vector<TextBlock> TwinView::textBlocks(bool inset, float text, float maxWidth) const {
   std::vector<TextBlock> blocks(2);

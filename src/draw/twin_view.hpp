@@ -12,6 +12,7 @@
 #include "motion/frame_sampling.hpp"
 #include "motion/scene_facts.hpp"
 #include "render/draw_list.hpp"
+#include "draw/figure_text.hpp"
 #include "scene/scene_spec.hpp"
 
 namespace rollspin::draw {
@@ -20,7 +21,7 @@ class TwinView {
  public:
   TwinView(const scene::SceneSpec& spec, const model::RollingModel& model,
            const std::shared_ptr<const motion::SceneFacts>& facts, const geometry::Vec3& markerBody,
-           std::shared_ptr<render::MeshData> dotMesh);
+           std::shared_ptr<render::MeshData> dotMesh, FigureText figureText);
 
   // Seen from the orbit angles and field of view of `aim`.
   void add(render::DrawList& list, const motion::FrameOrientations& frame, int view,
@@ -47,6 +48,7 @@ class TwinView {
   void addArrows(render::DrawList& list, const motion::FrameOrientations& frame, int view) const;
   void addLabels(render::DrawList& list, const render::View& v, int view) const;
   const scene::SceneSpec& spec_;
+  FigureText figureText_;
   const model::RollingModel& model_;
   geometry::Vec3 markerBody_;
   NdcWindow window_;

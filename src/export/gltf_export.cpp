@@ -326,9 +326,11 @@ Built build(const ExportRequest& r) {
   const std::vector<motion::SurfaceStretch> stretches = motion::surfaceStretches(spec, model);
   std::vector<std::unique_ptr<draw::BallView>> views;
   if (stretches.empty())
-    views.push_back(std::make_unique<draw::BallView>(spec, model, r.ballTexture, nullptr, markerBody, render::uvSphere(8, 4)));
+    views.push_back(std::make_unique<draw::BallView>(spec, model, r.ballTexture, nullptr, markerBody, render::uvSphere(8, 4),
+                                                     draw::FigureText{}));
   for (const motion::SurfaceStretch& st : stretches)
-    views.push_back(std::make_unique<draw::BallView>(st.spec, st.model, r.ballTexture, nullptr, markerBody, render::uvSphere(8, 4)));
+    views.push_back(std::make_unique<draw::BallView>(st.spec, st.model, r.ballTexture, nullptr, markerBody, render::uvSphere(8, 4),
+                                                     draw::FigureText{}));
   Built out;
   GltfBuilder& b = out.builder;
   Nodes nodes;

@@ -32,6 +32,7 @@
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/scene_tables.hpp"
 #include "scene/scene_writer.hpp"
 
 namespace rollspin::jobs {
@@ -120,9 +121,9 @@ std::vector<FlagOverride> qualityFlags(const std::optional<std::string>& quality
     throw badInput({"--quality " + *quality}, "expected low (854x480@15), medium (1280x720@30), "
                                               "high (1920x1080@60) or 4k (3840x2160@60)");
   const std::string flag = "--quality " + *quality;
-  flags.push_back({flag, fmt::format("render.width={}", preset->width)});
-  flags.push_back({flag, fmt::format("render.height={}", preset->height)});
-  flags.push_back({flag, fmt::format("animation.fps={}", preset->fps)});
+  flags.push_back(flagOverride(flag, "render", scene::key::kWidth, (long long)preset->width, true));
+  flags.push_back(flagOverride(flag, "render", scene::key::kHeight, (long long)preset->height, true));
+  flags.push_back(flagOverride(flag, "animation", scene::key::kFps, (long long)preset->fps, true));
   return flags;
 }
 

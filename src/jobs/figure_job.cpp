@@ -22,7 +22,7 @@ namespace rollspin::jobs {
 
 namespace {
 
-constexpr int kMaxRasterSide = 8192;  // the renderer's limit (render.width)
+constexpr int kMaxRasterSide = int(scene::kMaxImageSide);  // the renderer's limit (render.width)
 
 // The figure's raster size: render.dpi over the physical width.
 std::pair<int, int> rasterSize(const scene::SceneSpec& spec) {
@@ -67,14 +67,14 @@ bool setsFigureKeys(const scene::SceneSpec& spec) {
                      [](const auto& entry) { return entry.first.rfind("figure.", 0) == 0; });
 }
 
-void fitTextToFigure(scene::SceneSpec& spec, bool say) {
+draw::FigureText fitTextToFigure(scene::SceneSpec& spec, bool say) {
   const double unit = spec.figure.widthMm / 25.4 * 72.0 / double(spec.render.width);
   const double bodyPx = figureTextPt(spec) * render::figureFontHeightPerEm(spec.figure.font) / unit;
   const double atScaleOne = draw::bodyTextPx(int(spec.render.width), int(spec.render.height), 1.0);
   spec.render.fontScale = bodyPx / atScaleOne;
   // The sizes are ascent + descent; a bold face's is up to 2 % more per em,
   // so the floor keeps that much above 6 pt.
-  spec.render.leastTextScale = 1.02 * kLeastFigureTextPt / figureTextPt(spec);
+  const draw::FigureText figureText{1.02 * kLeastFigureTextPt / figureTextPt(spec)};
   if (say && StageLog::instance().echo())
     fmt::print(stderr, "figure: {:.0f} mm wide, body text {:.1f} pt in {} ({:.1f} px of the {}x{} layout)\n",
                spec.figure.widthMm, figureTextPt(spec), spec.figure.font, bodyPx, spec.render.width,
@@ -87,10 +87,11 @@ void fitTextToFigure(scene::SceneSpec& spec, bool say) {
     const float text = draw::bodyTextPx(int(spec.render.width), int(spec.render.height), spec.render.fontScale);
     for (const std::string& title : titles)
       if (!title.empty() && !draw::titleFitsFigure(title, text, float(spec.render.width), float(spec.render.height),
-                                                   text * float(spec.render.leastTextScale)))
+                                                   text * float(figureText.leastScale)))
         fmt::print(stderr, "figure: the title \"{}\" would take over a fifth of the height at this size: left out "
                            "(docs/figures.md, The title)\n", title);
   }
+  return figureText;
 }
 
 void writeFigureStill(const scene::SceneSpec& spec, const render::DrawList& list, const std::filesystem::path& out,

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "draw/figure_text.hpp"
 #include "media/output_format.hpp"
 #include "render/draw_list.hpp"
 #include "render/vector_figure.hpp"
@@ -35,9 +36,10 @@ inline constexpr double kLeastFigureTextPt = 6.0;
 // Lays the still's text out for the figure's physical size: sets
 // render.font_scale so that the body text, in the DrawList's pixels, is
 // figureTextPt at figure.width_mm over render.width (plates, line steps and
-// the free slots then follow the printed size). With --verbose (and
-// `say`), prints the size.
-void fitTextToFigure(scene::SceneSpec& spec, bool say = true);
+// the free slots then follow the printed size), and returns the drawer's
+// text policy: a figure's least text size. With --verbose (and `say`),
+// prints the size.
+[[nodiscard]] draw::FigureText fitTextToFigure(scene::SceneSpec& spec, bool say = true);
 
 // The vector backend's style for the still's list: the page width, the
 // font and the body size the list was laid out for.

@@ -22,39 +22,28 @@ std::string explicitSetting(const std::vector<std::string>& overrides, const std
 
 }  // namespace
 
+FlagOverride flagOverride(const std::string& flag, const std::string& section, std::string_view key,
+                          std::variant<long long, double, bool, std::string> value, bool preset) {
+  return {flag, scene::KeySetting{section, key, std::move(value), SourceLoc{flag}}, preset};
+}
+
 scene::SceneSpec loadSceneWithFlags(const std::string& file, std::vector<std::string> overrides,
                                     const std::vector<FlagOverride>& flags,
                                     const std::optional<std::string>& sceneText) {
-  const std::vector<std::string> explicitOnes = overrides;
-  std::vector<const FlagOverride*> applied;
+  std::vector<scene::KeySetting> settings;
   for (const FlagOverride& f : flags) {
     // An explicit --set is what the user asked for; a preset is only a default.
-    const std::string mine = f.flag.rfind("--quality", 0) == 0 ? explicitSetting(explicitOnes, keyOf(f.setting)) : "";
+    const std::string mine = f.preset ? explicitSetting(overrides, f.setting.dottedKey()) : "";
     if (!mine.empty()) {
-      std::fprintf(stderr, "rollspin: note: %s would set %s; keeping --set %s\n", f.flag.c_str(), f.setting.c_str(),
-                   mine.c_str());
+      std::fprintf(stderr, "rollspin: note: %s would set %s=%s; keeping --set %s\n", f.flag.c_str(),
+                   f.setting.dottedKey().c_str(), f.setting.valueText().c_str(), mine.c_str());
       continue;
     }
-    overrides.push_back(f.setting);
-    applied.push_back(&f);
+    settings.push_back(f.setting);
   }
-  // Which flag gave a setting: the last one applied wins, like the loader.
-  auto flagFor = [&](const std::string& setLabel) -> const FlagOverride* {
-    const FlagOverride* found = nullptr;
-    for (const FlagOverride* f : applied)
-      if ("--set " + f->setting == setLabel) found = f;
-    return found;
-  };
-  scene::SceneSpec spec;
-  try {
-    spec = sceneText ? scene::loadSceneText(*sceneText, file, overrides) : model::loadScene(file, overrides);
-  } catch (const Error& e) {
-    if (const FlagOverride* f = flagFor(e.where().file)) throw Error(e.kind(), SourceLoc{f->flag}, e.message());
-    throw;
-  }
-  for (auto& [key, where] : spec.locations)
-    if (const FlagOverride* f = flagFor(where.file)) where = SourceLoc{f->flag};
-  return spec;
+  // Each key a flag sets remembers the flag (SourceLoc), so its messages name it.
+  return sceneText ? scene::loadSceneText(*sceneText, file, overrides, settings)
+                   : model::loadScene(file, overrides, settings);
 }
 
 }  // namespace rollspin::jobs

@@ -6,21 +6,24 @@
 #include "jobs/render_jobs.hpp"
 #include "core/output_path.hpp"
 #include "motion/scene_facts.hpp"
+#include "scene/scene_tables.hpp"
 
 namespace rollspin::jobs {
 
 DrawJob prepareDrawJob(const DrawJobRequest& r) {
   for (const auto& [flag, value] : {std::pair{"--width", r.width}, std::pair{"--height", r.height}})
-    if (value && (*value < 1 || *value > 8192))
-      throw badInput({flag}, "expected an image size in [1, 8192] pixels, got {}", *value);
+    if (value && (*value < scene::kMinImageSide || *value > scene::kMaxImageSide))
+      throw badInput({flag}, "expected an image size in [{}, {}] pixels, got {}", scene::kMinImageSide,
+                     scene::kMaxImageSide, *value);
   // Later overrides win: --set, then --quality (but not over a key given with
   // --set), then --width/--height; all validated by the scene loader, and an
   // error names the flag typed.
   std::vector<FlagOverride> flags = r.presetFlags;
-  if (r.width) flags.push_back({"--width " + std::to_string(*r.width), "render.width=" + std::to_string(*r.width)});
-  if (r.height) flags.push_back({"--height " + std::to_string(*r.height), "render.height=" + std::to_string(*r.height)});
-  if (r.transparent) flags.push_back({"--transparent", "render.transparent=true"});
-  DrawJob job{loadSceneWithFlags(r.scenePath, r.overrides, flags, r.sceneText), nullptr, {}};
+  if (r.width) flags.push_back(flagOverride("--width " + std::to_string(*r.width), "render", scene::key::kWidth, *r.width));
+  if (r.height)
+    flags.push_back(flagOverride("--height " + std::to_string(*r.height), "render", scene::key::kHeight, *r.height));
+  if (r.transparent) flags.push_back(flagOverride("--transparent", "render", scene::key::kTransparent, true));
+  DrawJob job{loadSceneWithFlags(r.scenePath, r.overrides, flags, r.sceneText), nullptr, {}, {}};
   scene::SceneSpec& spec = job.spec;
   if (!r.sceneName.empty()) spec.name = r.sceneName;
   const media::OutputFormat& format = chooseOutputFormat(spec, r.output, r.use);
@@ -47,7 +50,7 @@ DrawJob prepareDrawJob(const DrawJobRequest& r) {
 std::unique_ptr<draw::SceneDrawer> makeDrawer(const DrawJob& job, std::optional<double> figureStillAt) {
   const auto texture = job.spec.render.layout == scene::RenderLayout::Twin ? nullptr : loadBallTexture(job.spec);
   return std::make_unique<draw::SceneDrawer>(job.spec, job.model, texture, motion::makeSceneFacts(job.spec, job.model),
-                                             figureStillAt);
+                                             figureStillAt, job.figureText);
 }
 
 GlRenderer::GlRenderer(const scene::SceneSpec& spec, const std::filesystem::path& shaderDir)

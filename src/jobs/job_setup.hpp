@@ -42,6 +42,7 @@ struct DrawJob {
   scene::SceneSpec spec;
   const media::OutputFormat* format = nullptr;
   model::RollingModel model;
+  draw::FigureText figureText;  // a clip's text, or a figure's (fitTextToFigure)
 };
 
 // Everything up to the model; throws BadInput naming the flag, key or -o.

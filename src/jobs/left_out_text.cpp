@@ -35,15 +35,15 @@ render::DrawList drawnAt(DrawJob& job, const std::optional<std::string>& at, dou
   const auto width = spec.figure.widthMm;
   const auto size = spec.figure.fontSizePt;
   const auto fontScale = spec.render.fontScale;
-  const auto leastTextScale = spec.render.leastTextScale;
+  const draw::FigureText figureText = job.figureText;
   spec.figure.widthMm = widthMm;
   spec.figure.fontSizePt = fontPt;
-  fitTextToFigure(spec, false);
+  job.figureText = fitTextToFigure(spec, false);
   render::DrawList list = drawStill(job, at);
   spec.figure.widthMm = width;
   spec.figure.fontSizePt = size;
   spec.render.fontScale = fontScale;
-  spec.render.leastTextScale = leastTextScale;
+  job.figureText = figureText;
   return list;
 }
 

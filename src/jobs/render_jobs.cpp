@@ -201,7 +201,7 @@ std::filesystem::path renderStill(const StillOptions& o) {
                                                 {figure ? JobRecord::Kind::Figure : JobRecord::Kind::Still,
                                                  job.spec.name, o.at, std::nullopt, figureLayout}))
                  : std::nullopt;
-  if (figure || figureLayout) fitTextToFigure(job.spec);
+  if (figure || figureLayout) job.figureText = fitTextToFigure(job.spec);
   const scene::SceneSpec& spec = job.spec;
 
   // output/ is made only once the still is drawn (--at and the texture checked) and about to be written.

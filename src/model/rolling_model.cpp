@@ -201,9 +201,10 @@ RollingModel buildModel(const scene::SceneSpec& spec) {
   return model;
 }
 
-scene::SceneSpec loadScene(const std::string& file, const std::vector<std::string>& overrides) {
+scene::SceneSpec loadScene(const std::string& file, const std::vector<std::string>& overrides,
+                           std::span<const scene::KeySetting> settings) {
   StageLog::instance().record("scene");
-  return scene::loadSceneFile(file, overrides);
+  return scene::loadSceneFile(file, overrides, settings);
 }
 
 RollingModel buildSceneModel(const scene::SceneSpec& spec) {

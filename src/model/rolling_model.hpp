@@ -4,11 +4,13 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "geometry/contact_path.hpp"
 #include "geometry/surface.hpp"
+#include "scene/scene_loader.hpp"
 #include "scene/scene_spec.hpp"
 
 namespace rollspin::model {
@@ -54,7 +56,9 @@ inline constexpr double kJoinTolerance = 1e-6;
 
 // The same two steps as every command runs them, recorded in the StageLog
 // ("scene", "model").
-[[nodiscard]] scene::SceneSpec loadScene(const std::string& file, const std::vector<std::string>& overrides);
+// `settings`: keys command-line flags set (scene_loader.hpp).
+[[nodiscard]] scene::SceneSpec loadScene(const std::string& file, const std::vector<std::string>& overrides,
+                                         std::span<const scene::KeySetting> settings = {});
 [[nodiscard]] RollingModel buildSceneModel(const scene::SceneSpec& spec);
 
 }  // namespace rollspin::model

@@ -1,5 +1,7 @@
 #include "scene/path_kinds.hpp"
 
+#include "scene/scene_tables.hpp"
+
 #include <algorithm>
 #include <cassert>
 
@@ -9,47 +11,47 @@ namespace {
 using S = SurfaceKind;
 const std::vector<PathKindRow>& pathTable() {
   static const std::vector<PathKindRow> rows{
-      {PathKind::Line, "line", LiesOn::Plane, {{"length", {}}, {"direction_vector", {}}}},
-      {PathKind::Circle, "circle", LiesOn::Plane, {{"turns", {}}, {"direction", {}}, {"radius", {}}}},
+      {PathKind::Line, "line", LiesOn::Plane, {{std::string(key::kLength), {}}, {std::string(key::kDirectionVector), {}}}},
+      {PathKind::Circle, "circle", LiesOn::Plane, {{std::string(key::kTurns), {}}, {std::string(key::kDirection), {}}, {std::string(key::kRadius), {}}}},
       {PathKind::Parallel,
        "parallel",
        LiesOn::Revolution,
-       {{"turns", {}},
-        {"direction", {}},
-        {"start_azimuth_deg", {}},
-        {"radius", {S::Paraboloid}},
-        {"colatitude_deg", {S::Sphere}},
-        {"tube_angle_deg", {S::Torus}},
-        {"height", {S::Cylinder}}}},
+       {{std::string(key::kTurns), {}},
+        {std::string(key::kDirection), {}},
+        {std::string(key::kStartAzimuthDeg), {}},
+        {std::string(key::kRadius), {S::Paraboloid}},
+        {std::string(key::kColatitudeDeg), {S::Sphere}},
+        {std::string(key::kTubeAngleDeg), {S::Torus}},
+        {std::string(key::kHeight), {S::Cylinder}}}},
       {PathKind::Meridian,
        "meridian",
        LiesOn::Curved,
-       {{"turns", {S::Torus}},
-        {"direction", {S::Torus}},
-        {"length", {S::Cylinder, S::Paraboloid, S::Saddle, S::Height}},
-        {"tube_angle_deg", {S::Torus}},
-        {"height", {S::Cylinder}},
-        {"azimuth_deg", {}},
-        {"colatitude_start_deg", {S::Sphere}},
-        {"colatitude_end_deg", {S::Sphere}}}},
+       {{std::string(key::kTurns), {S::Torus}},
+        {std::string(key::kDirection), {S::Torus}},
+        {std::string(key::kLength), {S::Cylinder, S::Paraboloid, S::Saddle, S::Height}},
+        {std::string(key::kTubeAngleDeg), {S::Torus}},
+        {std::string(key::kHeight), {S::Cylinder}},
+        {std::string(key::kAzimuthDeg), {}},
+        {std::string(key::kColatitudeStartDeg), {S::Sphere}},
+        {std::string(key::kColatitudeEndDeg), {S::Sphere}}}},
       {PathKind::Helix,
        "helix",
        LiesOn::Cylinder,
-       {{"turns", {}}, {"direction", {}}, {"height", {}}, {"pitch_angle_deg", {}}}},
+       {{std::string(key::kTurns), {}}, {std::string(key::kDirection), {}}, {std::string(key::kHeight), {}}, {std::string(key::kPitchAngleDeg), {}}}},
       {PathKind::Loxodrome,
        "loxodrome",
        LiesOn::Sphere,
-       {{"azimuth_deg", {}}, {"colatitude_start_deg", {}}, {"colatitude_end_deg", {}}, {"heading_deg", {}}}},
-      {PathKind::Geodesic, "geodesic", LiesOn::Any, {{"length", {}}, {"direction_vector", {}}, {"start_point", {}}}},
-      {PathKind::Uv, "uv", LiesOn::Any, {{"u", {}}, {"v", {}}, {"t_start", {}}, {"t_end", {}}}},
+       {{std::string(key::kAzimuthDeg), {}}, {std::string(key::kColatitudeStartDeg), {}}, {std::string(key::kColatitudeEndDeg), {}}, {std::string(key::kHeadingDeg), {}}}},
+      {PathKind::Geodesic, "geodesic", LiesOn::Any, {{std::string(key::kLength), {}}, {std::string(key::kDirectionVector), {}}, {std::string(key::kStartPoint), {}}}},
+      {PathKind::Uv, "uv", LiesOn::Any, {{std::string(key::kU), {}}, {std::string(key::kV), {}}, {std::string(key::kTStart), {}}, {std::string(key::kTEnd), {}}}},
       {PathKind::Points,
        "points",
        LiesOn::Any,
-       {{"points", {}}, {"closed", {}}, {"interpolation", {}}, {"corner_radius", {}}}},
+       {{std::string(key::kPoints), {}}, {std::string(key::kClosed), {}}, {std::string(key::kInterpolation), {}}, {std::string(key::kCornerRadius), {}}}},
       {PathKind::Clothoid,
        "clothoid",
        LiesOn::Plane,
-       {{"length", {}}, {"direction_vector", {}}, {"curvature_start", {}}, {"curvature_rate", {}}}},
+       {{std::string(key::kLength), {}}, {std::string(key::kDirectionVector), {}}, {std::string(key::kCurvatureStart), {}}, {std::string(key::kCurvatureRate), {}}}},
   };
   return rows;
 }

@@ -14,6 +14,7 @@
 #include "media/output_format.hpp"
 #include "render/gl_context.hpp"
 #include "scene/scene_spec.hpp"
+#include "scene/scene_tables.hpp"
 #include "scene/surface_kinds.hpp"
 #include "spin/propagator.hpp"
 
@@ -28,10 +29,6 @@ std::string vectorText(const Vec3& v) { return fmt::format("[{}, {}, {}]", v[0],
 std::string inQuotes(std::string_view s) { return fmt::format("\"{}\"", s); }
 
 Bounds above(double lo) { return {lo, std::nullopt, true, false}; }
-Bounds atLeast(double lo) { return {lo, std::nullopt, false, false}; }
-Bounds closed(double lo, double hi) { return {lo, hi, false, false}; }
-Bounds openRange(double lo, double hi) { return {lo, hi, true, true}; }
-Bounds leftOpen(double lo, double hi) { return {lo, hi, true, false}; }
 
 struct Row {
   std::string type, defaultText;
@@ -115,139 +112,44 @@ std::vector<KeyInfo> surfaceKeyInfos(const SurfaceSpec& d) {
 
 // [path], and a segment's path: which keys apply to which kinds comes from
 // the path kind table (path_kinds.cpp).
-std::vector<KeyInfo> pathKeyInfos(const PathSpec& d) {
+std::vector<KeyInfo> pathKeyInfos() {
   std::vector<std::string> kindNames;
   for (const auto& row : pathKinds()) kindNames.emplace_back(row.name);
   std::vector<KeyInfo> out{info("path", "kind",
                                 {"string", "\"circle\" on a plane, else the surface's own (parallel or meridian)",
                                  {}, kindNames, "", "", "the curve the contact point follows"})};
-  const std::map<std::string, Row> rows{
-      {"turns", {"number", num(d.turns), above(0), {}, "", "turns", "how many times round"}},
-      {"direction", {"string", d.counterClockwise ? "\"ccw\"" : "\"cw\"", {}, {"ccw", "cw"}, "", "", "the sense of rotation, seen from the normal's side"}},
-      {"length", {"number", num(d.length) + " (geodesic: 6)", above(0), {}, "", "length", "the arc length travelled"}},
-      {"direction_vector", {"[x, y, z]", "horizontal in the plane", {}, {}, "non-zero; in the plane on a plane", "", "the start heading"}},
-      {"radius", {"number", num(d.radius) + " (paraboloid parallel: 2)", above(0), {}, "", "length", "circle: the contact circle's radius; paraboloid parallel: its radius"}},
-      {"colatitude_deg", {"number", num(d.colatitudeDeg), openRange(0, 180), {}, "", "degrees", "the parallel's colatitude θ on a sphere"}},
-      {"tube_angle_deg", {"number", num(d.tubeAngleDeg), {}, {}, "", "degrees", "the angle ψ up the torus tube (0 = outer equator)"}},
-      {"height", {"number", num(d.height), {}, {}, "", "length", "the start height along the cylinder's axis"}},
-      {"azimuth_deg", {"number", num(d.azimuthDeg), {}, {}, "", "degrees", "the start azimuth φ0"}},
-      {"start_azimuth_deg", {"number", num(d.startAzimuthDeg), {}, {}, "", "degrees", "the azimuth a parallel starts at (0: see Conventions)"}},
-      {"colatitude_start_deg", {"number", num(d.colatitudeStartDeg), openRange(0, 180), {}, "", "degrees", "the start colatitude θ0"}},
-      {"colatitude_end_deg", {"number", num(d.colatitudeEndDeg), openRange(0, 180), {}, "!= colatitude_start_deg", "degrees", "the end colatitude θ1"}},
-      {"pitch_angle_deg", {"number", num(d.pitchAngleDeg), openRange(-90, 90), {}, "", "degrees", "the helix's angle β from the parallels"}},
-      {"heading_deg", {"number", num(d.headingDeg), openRange(-90, 90), {}, "", "degrees", "the loxodrome's heading α from the meridians"}},
-      {"start_point", {"[x, y, z]", "per surface", {}, {}, "", "length", "the geodesic's start, projected onto the surface"}},
-      {"u", {"expression", inQuotes(d.u), {}, {}, "muparser syntax in t", "", "the first surface parameter as a function of t"}},
-      {"v", {"expression", inQuotes(d.v), {}, {}, "muparser syntax in t", "", "the second surface parameter as a function of t"}},
-      {"t_start", {"number", num(d.tStart), {}, {}, "", "", "where t starts"}},
-      {"t_end", {"number", num(d.tEnd), {}, {}, "> t_start", "", "where t ends"}},
-      {"points", {"array of [u, v] or [x, y, z]", "(required)", {}, {}, "at least 2 points (3 when closed)", "", "the points the path passes through"}},
-      {"closed", {"boolean", d.closed ? "true" : "false", {}, {}, "", "", "a periodic spline or a closed polygon"}},
-      {"interpolation", {"string", inQuotes(d.interpolation), {}, {"spline", "polyline"}, "", "", "a cubic spline through the points, or straight pieces"}},
-      {"corner_radius", {"number", num(d.cornerRadius), atLeast(0), {}, "", "length", "a polyline's corners rounded by arcs of this radius"}},
-      {"curvature_start", {"number", num(d.curvatureStart), closed(-1e6, 1e6), {}, "", "1/length", "the clothoid's geodesic curvature κ₀ at s = 0"}},
-      {"curvature_rate", {"number", num(d.curvatureRate), closed(-1e6, 1e6), {}, "", "1/length²", "α in κ_g = κ₀ + α s"}},
-  };
   for (const std::string& key : allPathKeys()) {
-    const auto it = rows.find(key);
-    const Row row = it != rows.end() ? it->second : Row{"?", "", {}, {}, "", "", "(undocumented path key)"};
-    out.push_back(info("path", key, row, "kind = " + pathKeyRule(key, PathKind::Line, SurfaceKind::Plane).kinds));
+    KeyInfo k = keyInfoOf("path", rowOf(pathKeys(), key));
+    k.appliesTo = "kind = " + pathKeyRule(key, PathKind::Line, SurfaceKind::Plane).kinds;
+    out.push_back(std::move(k));
   }
   return out;
 }
 
-// The camera keys of [render] and of a segment's camera table.
-std::vector<KeyInfo> cameraKeyInfos(const std::string& section, const RenderSpec& d, bool segment) {
-  auto dflt = [&](const std::string& value) { return segment ? std::string("the previous segment's") : value; };
-  return {
-      info(section, "azimuth_deg", {"number", dflt(num(d.azimuthDeg)), {}, {}, "", "degrees", "the camera's azimuth about the target"}),
-      info(section, "elevation_deg", {"number", dflt(num(d.elevationDeg)), openRange(-90, 90), {}, "", "degrees", "the camera's elevation above the horizon"}),
-      info(section, "distance", {"number", dflt("frames the whole path"), above(0), {}, "", "length", "the camera's distance from the target"}),
-      info(section, "target", {"[x, y, z]", dflt("the path's centre"), {}, {}, "", "length", "the point the camera looks at"}),
-      info(section, "follow", {"boolean", dflt(d.follow ? "true" : "false"), {}, {}, "", "", "the camera follows the ball"}),
-      info(section, "fov_deg", {"number", dflt(num(d.fovDeg)), closed(5, 120), {}, "", "degrees", "the vertical field of view"}),
-  };
+template <class S>
+void appendTable(std::vector<KeyInfo>& keys, const std::string& section, const KeyTable<S>& rows) {
+  for (const KeyRow<S>& row : rows) keys.push_back(keyInfoOf(section, row));
 }
 
 std::vector<KeyInfo> buildRegistry() {
   const SceneSpec d;
   std::vector<KeyInfo> keys{
       info("", "extends", {"string", "(none)", {}, {}, "", "", "a base scene whose keys this one overrides: a file relative to this one, else a bundled scene's name (\"storyboard\")"}),
-      info("ball", "radius", {"number", num(d.ball.radius), above(0), {}, "", "length", "the ball's radius R"}),
-      info("ball", "texture", {"string", "the built-in tennis ball", {}, {}, "non-empty", "", "an equirectangular PNG/JPG painted on the ball (relative to the scene file)"}),
-      info("ball", "marker", {"[x, y, z]", "the top n(0)", {}, {}, "non-zero; normalised", "", "the body direction whose trail is the tracked Bloch vector"}),
   };
+  appendTable(keys, "ball", ballKeys());
   for (KeyInfo& k : surfaceKeyInfos(d.surface)) keys.push_back(std::move(k));
-  keys.push_back(info("plate", "radius", {"number", "(required)", above(0), {}, "", "length", "Brockett's plate: the radius R1 of the circle each plate point describes"}));
-  for (KeyInfo& k : pathKeyInfos(d.path)) keys.push_back(std::move(k));
+  appendTable(keys, "plate", plateKeys());
+  for (KeyInfo& k : pathKeyInfos()) keys.push_back(std::move(k));
 
-  std::vector<std::string> methods;
-  for (spin::Method m : spin::allMethods()) methods.emplace_back(spin::methodName(m));
-  keys.push_back(info("solver", "method", {"string", inQuotes(d.solver.method) + " (frame6a with only a tolerance)", {}, methods, "", "", "the propagator"}));
-  keys.push_back(info("solver", "steps", {"integer", "automatic", closed(1, double(kMaxSolverSteps)), {}, "fixed-step methods only", "", "the number of steps"}));
-  keys.push_back(info("solver", "tolerance", {"number", num(SolverSpec::kDefaultTolerance), closed(1e-15, 1), {}, "adaptive methods only", "", "the adaptive methods' error per unit length"}));
-  keys.push_back(info("solver", "error_estimate", {"boolean", d.solver.errorEstimate ? "true" : "false", {}, {}, "", "", "the a posteriori error estimate of U(L), a second solve (docs/solver.md); false skips it and its cost (and automatic steps' refinement)"}));
-  keys.push_back(info("timeline", "samples", {"integer", "60 per turn, + 1", closed(2, double(kMaxTimelineSamples)), {}, "", "", "rows of `rollspin timeline`'s CSV"}));
+  appendTable(keys, "solver", solverKeys());
+  appendTable(keys, "timeline", timelineKeys());
+  appendTable(keys, "render", renderKeys());
+  appendTable(keys, "figure", figureKeys());
+  appendTable(keys, std::string(key::kLabels), labelsKeys());
+  appendTable(keys, "animation", animationKeys());
 
-  const RenderSpec& r = d.render;
-  std::set<std::string> formats;
-  for (const media::OutputFormat& f : media::kOutputFormats) formats.emplace(f.name);
-  auto add = [&](const std::string& section, const std::string& key, Row row) { keys.push_back(info(section, key, std::move(row))); };
-  add("render", "width", {"integer", num(double(r.width)), closed(1, 8192), {}, "", "pixels", "the image width"});
-  add("render", "height", {"integer", num(double(r.height)), closed(1, 8192), {}, "", "pixels", "the image height"});
-  add("render", "layout", {"string", inQuotes(toString(r.layout)), {}, {"side-by-side", "inset", "ball", "twin"}, "", "", "the views: the scene and the Bloch sphere side by side, the sphere inset, the ball alone, or the twin"});
-  add("render", "strobe", {"integer", num(double(r.strobe)), closed(0, 200), {}, "not 1 (0 is off)", "", "the ball at N evenly spaced positions in one image"});
-  add("render", "title", {"string", "\"\" (none)", {}, {}, "", "", "a title over the image"});
-  add("render", "labels", {"boolean", r.labels ? "true" : "false", {}, {}, "", "", "axis, pole and live labels (s, angles)"});
-  add("render", "transparent", {"boolean", r.transparent ? "true" : "false", {}, {}, "", "", "no background (PNG, WebM, MOV keep the alpha)"});
-  add("render", "burn_captions", {"boolean", r.burnCaptions ? "true" : "false", {}, {}, "", "", "draw the title and the storyboard captions into the pixels (false: only the subtitle track and .vtt carry them)"});
-  add("render", "msaa", {"integer", num(double(r.msaa)), closed(1, 4), {}, "1, 2 or 4", "samples", "multisample anti-aliasing"});
-  for (KeyInfo& k : cameraKeyInfos("render", r, false)) keys.push_back(std::move(k));
-  add("render", "format", {"string", "from the output's extension, else mp4 (a clip) or png (a still)", {}, {formats.begin(), formats.end()}, "", "", "the output format (docs/rendering.md)"});
-  add("render", "trails", {"boolean", r.trails ? "true" : "false", {}, {}, "", "", "the marker's and the field's trails"});
-  add("render", "shadow", {"boolean", r.shadow ? "true" : "false", {}, {}, "", "", "the key light's shadow"});
-  add("render", "dpi", {"number", num(r.dpi), closed(30, 2400), {}, "", "dpi", "PDF/SVG figures: the resolution of their raster parts"});
-  add("render", "jpeg_quality", {"integer", num(double(r.jpegQuality)), closed(1, 100), {}, "", "", "JPEG stills' quality"});
-  add("render", "font_scale", {"number", num(r.fontScale), closed(0.25, 4), {}, "", "", "the text size, times this"});
-  add("render", "twin_camera", {"string", r.twinCameraFixed ? "\"fixed\"" : "\"linked\"", {}, {"fixed", "linked"}, "", "", "twin layout: the first shot's view throughout, or the scene camera's"});
-  const std::vector<std::string> backends = render::backendNames();
-  add("render", "backend", {"string", "ROLLSPIN_GL, else \"auto\"", {}, backends, "", "", "the GL backend (docs/gl-backends.md)"});
-  add("render", "device", {"integer or string", "ROLLSPIN_EGL_DEVICE", {}, {}, "an EGL device index >= 0 or a DRM path \"/dev/dri/…\"", "", "the GPU an EGL render uses"});
-
-  const FigureSpec& f = d.figure;
-  add("figure", "width", {"string", "(width_mm)", {}, {"column", "page"}, "not with width_mm or width_in", "", "a preset width: \"column\" = 85 mm, \"page\" = 175 mm"});
-  add("figure", "width_mm", {"number", num(f.widthMm), closed(10, 2000), {}, "", "mm", "the figure's printed width"});
-  add("figure", "width_in", {"number", "(width_mm)", closed(10 / 25.4, 2000 / 25.4), {}, "not with width_mm", "inches", "the width in inches instead"});
-  add("figure", "font", {"string", inQuotes(f.font), {}, {}, "non-empty", "", "the labels' font family (fontconfig name)"});
-  add("figure", "font_size_pt", {"number", "8", closed(2, 72), {}, "", "pt", "the body text size"});
-  add("figure", "transparent", {"boolean", f.transparent ? "true" : "false", {}, {}, "", "", "a transparent page (false: the views' backdrops)"});
-
-  std::string facts;
-  for (const auto& n : kFactNames) facts += (facts.empty() ? "" : ", ") + n;
-  add("labels", "facts", {"string or array", "\"auto\"", {}, {}, "\"auto\", \"none\" or a list of: " + facts, "", "which facts of the scene are printed beside the paper's closed form"});
-
-  const AnimationSpec& a = d.animation;
-  add("animation", "fps", {"number or string", a.fps.text(), closed(1, 240), {}, "an integer, 23.976 | 29.97 | 59.94, or \"num/den\"", "1/s", "frames per second"});
-  add("animation", "duration", {"number", num(a.duration), leftOpen(0, 36000), {}, "", "seconds", "how long the whole path takes"});
-  add("animation", "speed", {"number", "(duration)", above(0), {}, "not with duration", "length/s", "arc length per second instead of a duration"});
-  add("animation", "easing", {"string", a.easing == Easing::Smooth ? "\"smooth\"" : "\"linear\"", {}, {"smooth", "linear"}, "", "", "ease in and out, or a constant speed"});
-  add("animation", "hold", {"number", num(a.hold), closed(0, 3600), {}, "", "seconds", "how long the first and the last frame are held"});
-  add("animation", "crf", {"number", "the format's (18 H.264, 31 VP9)", closed(0, 51), {}, "", "", "the encoder's constant rate factor (lower: better)"});
-  add("animation", "preset", {"string", inQuotes(a.preset), {}, {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}, "", "", "the x264 preset (WebM maps it to libvpx's cpu-used)"});
-  add("animation", "loop", {"boolean", a.loop ? "true" : "false", {}, {}, "", "", "a GIF loops forever (false: plays once)"});
-
-  const SegmentSpec s;
-  add("segment", "path", {"table", "(a hold)", {}, {}, "the [path] keys", "", "the segment's motion: path = { kind = ..., ... }"});
-  add("segment", "hold", {"number", "(a motion)", leftOpen(0, 3600), {}, "not with path", "seconds", "the ball rests this long"});
-  add("segment", "duration", {"number", "the motion's share of animation.duration", leftOpen(0, 36000), {}, "with path only", "seconds", "how long the motion takes"});
-  add("segment", "speed", {"number", "(duration)", above(0), {}, "with path only; not with duration", "length/s", "arc length per second instead of a duration"});
-  add("segment", "caption", {"string", inQuotes(s.caption), {}, {}, "", "", "the caption shown while the segment plays"});
-  add("segment", "title", {"string", "render.title", {}, {}, "", "", "replaces render.title while the segment plays"});
-  add("segment", "surface", {"table", "the previous segment's ([surface] for the first)", {}, {}, "the [surface] keys; with path only", "", "the surface this motion rolls on: surface = { kind = ..., ... }; a change cuts the clip"});
-  add("segment", "transition", {"string", s.transition == SegmentSpec::Transition::Fade ? "\"fade\"" : "\"cut\"", {}, {"cut", "fade"}, "where the surface changes", "", "how the clip passes to the new surface's view"});
-  add("segment", "fade_seconds", {"number", num(s.fadeSeconds), leftOpen(0, 10), {}, "with transition = \"fade\"", "seconds", "how long the cross-fade to the new surface's view takes"});
-  add("segment", "camera", {"table", "(unchanged)", {}, {}, "the segment.camera keys", "", "a camera change laid over the previous segment's"});
-  for (KeyInfo& k : cameraKeyInfos("segment.camera", r, true)) keys.push_back(std::move(k));
+  appendTable(keys, "segment", segmentKeys());
+  appendTable(keys, "segment.camera", segmentCameraKeys());
   return keys;
 }
 

@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstdlib>
 
+#include "scene/scene_loader.hpp"
 #include "scene/scene_sources.hpp"
 
 namespace rollspin::scene {
@@ -78,5 +79,16 @@ void applyOverride(toml::table& root, const std::string& arg, std::map<std::stri
   locs[key] = loc;
 }
 
+void applySetting(toml::table& root, const KeySetting& setting, std::map<std::string, SourceLoc>& locs) {
+  toml::node* section = root.get(setting.section);
+  if (section == nullptr) {
+    root.insert(setting.section, toml::table{});
+    section = root.get(setting.section);
+  }
+  if (!section->is_table())
+    throw badInput(setting.from, "'{}' is not a table, cannot set '{}'", setting.section, setting.dottedKey());
+  std::visit([&](const auto& v) { section->as_table()->insert_or_assign(setting.key, v); }, setting.value);
+  locs[setting.dottedKey()] = setting.from;
+}
 
 }  // namespace rollspin::scene

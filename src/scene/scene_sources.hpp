@@ -24,5 +24,8 @@ toml::table resolveExtends(toml::table root, const std::filesystem::path& file,
                            std::vector<std::filesystem::path>& chain, std::map<std::string, SourceLoc>& locations);
 // "key.sub=value" (from --set) laid into the document; the key's location becomes the argument.
 void applyOverride(toml::table& root, const std::string& arg, std::map<std::string, SourceLoc>& locs);
+// A flag's key (scene_loader.hpp) laid into the document; its location becomes the flag.
+struct KeySetting;
+void applySetting(toml::table& root, const KeySetting& setting, std::map<std::string, SourceLoc>& locs);
 
 }  // namespace rollspin::scene

@@ -65,9 +65,23 @@ struct PlateSpec {
   double radius = 0.0;  // R1: radius of the circle each plate point describes
 };
 
-// Limits (docs/getting-started.md#limits-and-errors).
+// Limits (docs/getting-started.md#limits-and-errors), each named once: the
+// key tables (scene_tables.cpp) and the jobs that check a flag use these.
 inline constexpr long long kMaxSolverSteps = 100'000'000'000LL;  // ~10 min of magnus4
 inline constexpr long long kMaxTimelineSamples = 100'000'000LL;
+inline constexpr long long kMinImageSide = 1, kMaxImageSide = 8192;  // "8K": the renderer's size limit
+inline constexpr long long kMaxStrobe = 200;
+inline constexpr double kMinFps = 1.0, kMaxFps = 240.0;
+inline constexpr double kMaxDurationSeconds = 36000.0, kMaxHoldSeconds = 3600.0, kMaxFadeSeconds = 10.0;
+inline constexpr double kMinFovDeg = 5.0, kMaxFovDeg = 120.0;
+inline constexpr double kMinFontScale = 0.25, kMaxFontScale = 4.0;
+inline constexpr double kMinFigureWidthMm = 10.0, kMaxFigureWidthMm = 2000.0;
+inline constexpr double kMinFontSizePt = 2.0, kMaxFontSizePt = 72.0;
+inline constexpr double kMinDpi = 30.0, kMaxDpi = 2400.0;
+inline constexpr double kMaxCrf = 51.0;
+inline constexpr double kMaxCurvature = 1e6;  // a clothoid's |κ₀| and |α|
+inline constexpr long long kMaxJpegQuality = 100;
+inline constexpr std::array<long long, 3> kMsaaSamples{1, 2, 4};
 
 struct SolverSpec {
   std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4 | frame4 | cf4 | magnus6 | rk45 | frame6a
@@ -109,7 +123,6 @@ struct RenderSpec {
   long long jpegQuality = 92;  // JPEG stills, 1 … 100
   double dpi = 300.0;  // vector figures: resolution of their raster parts (the shaded ball and surfaces)
   double fontScale = 1.0;   // text size × this (docs/rendering.md#stills-and-images); body line ≥ 1/28 of the height at 1
-  double leastTextScale = 0.0;  // not a key: a figure's least text size over its body size (6 pt over figure.font_size_pt; jobs/figure_job)
   bool twinCameraFixed = true;  // twin_camera: "fixed" (the first shot's view throughout) or "linked"
   // GL context (render/gl_backends.cpp): "auto" or a backend of the table, and
   // for EGL a device index or DRM path; unset: ROLLSPIN_GL / ROLLSPIN_EGL_DEVICE.
@@ -160,8 +173,6 @@ struct CameraSpec {
   std::optional<Vec3> target;
   std::optional<bool> follow;
 };
-inline const std::vector<std::string> kCameraKeys{"azimuth_deg", "elevation_deg", "distance", "target", "follow",
-                                                  "fov_deg"};
 
 // [[segment]]: one step of a storyboard (docs/scenes.md#storyboards): a motion
 // along its own path, or a hold; with its caption, title and camera.

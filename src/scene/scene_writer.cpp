@@ -2,27 +2,19 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
+#include "scene/scene_tables.hpp"
+
 namespace rollspin::scene {
 
 namespace {
 
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (c == '\n') {
-      out += "\\n";
-      continue;
-    }
-    out += c;
-  }
-  return out + "\"";
-}
+std::string quoted(const std::string& s) { return tomlQuoted(s); }
 
 // Shortest text that reads back as the same double (fmt's default).
-std::string number(double v) { return fmt::format("{}", v); }
-std::string vec(const Vec3& v) { return fmt::format("[{}, {}, {}]", v[0], v[1], v[2]); }
-std::string boolean(bool b) { return b ? "true" : "false"; }
+std::string number(double v) { return tomlNumber(v); }
+std::string vec(const Vec3& v) { return tomlVector(v); }
 
 class Writer {
  public:
@@ -58,6 +50,23 @@ class Writer {
   std::string out_;
 };
 
+// A table's printed rows, in `scene --print`'s order: a row's printOrder
+// where it has one, else its place in the table.
+template <class S>
+void writeKeys(Writer& w, const KeyTable<S>& rows, const S& s) {
+  std::vector<std::pair<int, const KeyRow<S>*>> order;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    order.emplace_back(rows[i].printOrder >= 0 ? rows[i].printOrder : int(i), &rows[i]);
+  std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& entry : order) {
+    const KeyRow<S>& row = *entry.second;
+    if (!row.printed) continue;
+    const std::string name(row.name);
+    if (auto text = printedValue(row, s)) w.key(name, *text);
+    else if (!row.unsetNote.empty()) w.computed(name, row.unsetNote);
+  }
+}
+
 std::string pathKindName(PathKind k) { return toString(k); }
 
 // How a path's unset placement keys are resolved: by the surface (a scene's
@@ -70,46 +79,18 @@ void writePath(Writer& w, const PathSpec& p, SurfaceKind sk, bool plate, PathDef
   for (const auto& key : allPathKeys()) {
     if (!pathKeyRule(key, pk, sk).applies) continue;
     // With [plate] the circle's radius is derived, and setting it is an error.
-    if (key == "radius" && plate) continue;
-    if (key == "turns") w.key(key, number(p.turns));
-    else if (key == "direction") w.key(key, quoted(p.counterClockwise ? "ccw" : "cw"));
-    else if (key == "length") w.key(key, number(p.length));
-    else if (key == "direction_vector") {
-      if (p.directionVector) w.key(key, vec(*p.directionVector));
-      else if (defaults == PathDefaults::Own) w.computed(key, "the default direction on this surface");
+    if (key == key::kRadius && plate) continue;
+    // Unset placements: the surface's default start, or the previous segment's end.
+    if (key == key::kDirectionVector && !p.directionVector) {
+      if (defaults == PathDefaults::Own) w.computed(key, "the default direction on this surface");
       else if (sk == SurfaceKind::Plane && pk != PathKind::Geodesic) continue;  // setting it is an error here
       else w.computed(key, "the previous segment's end heading");
-    } else if (key == "radius") w.key(key, number(p.radius));
-    else if (key == "colatitude_deg") w.key(key, number(p.colatitudeDeg));
-    else if (key == "tube_angle_deg") w.key(key, number(p.tubeAngleDeg));
-    else if (key == "height") w.key(key, number(p.height));
-    else if (key == "azimuth_deg") w.key(key, number(p.azimuthDeg));
-    else if (key == "start_azimuth_deg") w.key(key, number(p.startAzimuthDeg));
-    else if (key == "colatitude_start_deg") w.key(key, number(p.colatitudeStartDeg));
-    else if (key == "colatitude_end_deg") w.key(key, number(p.colatitudeEndDeg));
-    else if (key == "pitch_angle_deg") w.key(key, number(p.pitchAngleDeg));
-    else if (key == "heading_deg") w.key(key, number(p.headingDeg));
-    else if (key == "start_point") {
-      if (p.startPoint) w.key(key, vec(*p.startPoint));
-      else w.computed(key, defaults == PathDefaults::Own ? "the default start on this surface"
-                                                         : "the previous segment's end point");
-    } else if (key == "u") w.key(key, quoted(p.u));
-    else if (key == "v") w.key(key, quoted(p.v));
-    else if (key == "t_start") w.key(key, number(p.tStart));
-    else if (key == "t_end") w.key(key, number(p.tEnd));
-    else if (key == "points") {
-      std::string list = "[";
-      for (std::size_t i = 0; i < p.points.size(); ++i) {
-        list += i ? ", [" : "[";
-        for (std::size_t j = 0; j < p.points[i].size(); ++j) list += (j ? ", " : "") + number(p.points[i][j]);
-        list += "]";
-      }
-      w.key(key, list + "]");
-    } else if (key == "closed") w.key(key, boolean(p.closed));
-    else if (key == "interpolation") w.key(key, quoted(p.interpolation));
-    else if (key == "corner_radius") w.key(key, number(p.cornerRadius));
-    else if (key == "curvature_start") w.key(key, number(p.curvatureStart));
-    else if (key == "curvature_rate") w.key(key, number(p.curvatureRate));
+    } else if (key == key::kStartPoint && !p.startPoint) {
+      w.computed(key, defaults == PathDefaults::Own ? "the default start on this surface"
+                                                    : "the previous segment's end point");
+    } else {
+      w.key(key, *printedValue(rowOf(pathKeys(), key), p));
+    }
   }
 }
 
@@ -133,25 +114,26 @@ void writeSegments(Writer& w, const SceneSpec& spec) {
     const SegmentSpec& seg = spec.segments[i];
     const std::string prefix = SceneSpec::segmentKey(i);
     w.header("[[segment]]", prefix);
-    if (!seg.caption.empty()) w.key("caption", quoted(seg.caption));
-    if (seg.title) w.key("title", quoted(*seg.title));
+    if (!seg.caption.empty()) w.key(std::string(key::kCaption), quoted(seg.caption));
+    if (seg.title) w.key(std::string(key::kTitle), quoted(*seg.title));
     if (!seg.path) {
-      w.key("hold", number(seg.hold));
+      w.key(std::string(key::kHold), number(seg.hold));
     } else if (seg.duration) {
-      w.key("duration", number(*seg.duration));
+      w.key(std::string(key::kDuration), number(*seg.duration));
     } else if (seg.speed) {
-      w.key("speed", number(*seg.speed));
+      w.key(std::string(key::kSpeed), number(*seg.speed));
     } else {
-      w.computed("duration", "its length at the storyboard's speed (see [animation])");
+      w.computed(std::string(key::kDuration), "its length at the storyboard's speed (see [animation])");
     }
     // A scene of several surfaces names each segment's (scenes of one print as before).
     if (spec.surfaceCount() > 1) {
       if (seg.surface && i > 0) {
-        w.key("transition", quoted(seg.transition == SegmentSpec::Transition::Fade ? "fade" : "cut"));
-        if (seg.transition == SegmentSpec::Transition::Fade) w.key("fade_seconds", number(seg.fadeSeconds));
+        w.key(std::string(key::kTransition), *printedValue(rowOf(segmentKeys(), key::kTransition), seg));
+        if (seg.transition == SegmentSpec::Transition::Fade)
+          w.key(std::string(key::kFadeSeconds), number(seg.fadeSeconds));
       }
       if (!seg.surface)
-        w.computed("surface", fmt::format("surface {} (a {}), as {}", spec.surfaceIndexOf(i),
+        w.computed(std::string(key::kSurface), fmt::format("surface {} (a {}), as {}", spec.surfaceIndexOf(i),
                                           toString(spec.surfaceOf(i).kind), spec.surfaceKeyOf(i)));
     }
     if (seg.surface) {
@@ -166,12 +148,7 @@ void writeSegments(Writer& w, const SceneSpec& spec) {
     const CameraSpec& c = seg.camera;
     if (c.azimuthDeg || c.elevationDeg || c.distance || c.target || c.follow || c.fovDeg) {
       w.header("[segment.camera]", prefix + ".camera");
-      if (c.azimuthDeg) w.key("azimuth_deg", number(*c.azimuthDeg));
-      if (c.elevationDeg) w.key("elevation_deg", number(*c.elevationDeg));
-      if (c.distance) w.key("distance", number(*c.distance));
-      if (c.target) w.key("target", vec(*c.target));
-      if (c.follow) w.key("follow", boolean(*c.follow));
-      if (c.fovDeg) w.key("fov_deg", number(*c.fovDeg));
+      writeKeys(w, segmentCameraKeys(), c);
     }
   }
 }
@@ -183,18 +160,14 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   const SurfaceKind sk = spec.surface.kind;
 
   w.section("ball");
-  w.key("radius", number(spec.ball.radius));
-  if (!spec.ball.texture.empty()) w.key("texture", quoted(spec.ball.texture));
-  else w.computed("texture", "the built-in tennis ball");
-  if (spec.ball.marker) w.key("marker", vec(*spec.ball.marker));
-  else w.computed("marker", "the top of the ball at s = 0");
+  writeKeys(w, ballKeys(), spec.ball);
 
   w.section("surface");
   writeSurface(w, spec.surface);
 
   if (spec.plate) {
     w.section("plate");
-    w.key("radius", number(spec.plate->radius));
+    writeKeys(w, plateKeys(), *spec.plate);
   }
 
   if (!spec.isStoryboard()) {
@@ -203,79 +176,27 @@ std::string writeScene(const SceneSpec& spec, const std::map<std::string, std::s
   }
 
   w.section("solver");
-  w.key("method", quoted(spec.solver.method));
-  if (spec.solver.steps) w.key("steps", std::to_string(*spec.solver.steps));
-  else w.computed("steps", "automatic");
-  if (spec.solver.tolerance) w.key("tolerance", number(*spec.solver.tolerance));
-  // Only when off: the resolved text (and the hash of it in a video's
-  // metadata) of every scene that keeps the default stays as it was.
-  if (!spec.solver.errorEstimate) w.key("error_estimate", boolean(false));
-
+  writeKeys(w, solverKeys(), spec.solver);
   w.section("timeline");
-  if (spec.timeline.samples) w.key("samples", std::to_string(*spec.timeline.samples));
-  else w.computed("samples", "60 per turn + 1");
-
-  const RenderSpec& r = spec.render;
+  writeKeys(w, timelineKeys(), spec.timeline);
   w.section("render");
-  w.key("width", std::to_string(r.width));
-  w.key("height", std::to_string(r.height));
-  w.key("layout", quoted(toString(r.layout)));
-  w.key("strobe", std::to_string(r.strobe));
-  w.key("title", quoted(r.title));
-  w.key("labels", boolean(r.labels));
-  w.key("trails", boolean(r.trails));
-  w.key("shadow", boolean(r.shadow));
-  w.key("transparent", boolean(r.transparent));
-  w.key("burn_captions", boolean(r.burnCaptions));
-  w.key("msaa", std::to_string(r.msaa));
-  w.key("azimuth_deg", number(r.azimuthDeg));
-  w.key("elevation_deg", number(r.elevationDeg));
-  if (r.distance) w.key("distance", number(*r.distance));
-  else w.computed("distance", "framed automatically");
-  if (r.target) w.key("target", vec(*r.target));
-  else w.computed("target", "framed automatically");
-  w.key("follow", boolean(r.follow));
-  w.key("fov_deg", number(r.fovDeg));
-  w.key("font_scale", number(r.fontScale));
-  w.key("twin_camera", quoted(r.twinCameraFixed ? "fixed" : "linked"));
-  if (r.format) w.key("format", quoted(*r.format));
-  else w.computed("format", "from the output's extension, else mp4 (a still: png)");
-  w.key("jpeg_quality", std::to_string(r.jpegQuality));
-  w.key("dpi", number(r.dpi));
-  if (r.backend) w.key("backend", quoted(*r.backend));
-  else w.computed("backend", "ROLLSPIN_GL, else \"auto\"");
-  if (r.device) w.key("device", r.device->front() == '/' ? quoted(*r.device) : *r.device);
-  else w.computed("device", "ROLLSPIN_EGL_DEVICE, else the first GPU");
-
+  writeKeys(w, renderKeys(), spec.render);
   w.section("figure");
-  w.key("width_mm", number(spec.figure.widthMm));
-  w.key("font", quoted(spec.figure.font));
-  if (spec.figure.fontSizePt) w.key("font_size_pt", number(*spec.figure.fontSizePt));
-  else w.computed("font_size_pt", "the still's proportions");
-  w.key("transparent", boolean(spec.figure.transparent));
+  writeKeys(w, figureKeys(), spec.figure);
 
-  w.section("labels");
+  w.section(std::string(key::kLabels));
   if (spec.labels.facts) {
     std::string list;
     for (const Fact f : *spec.labels.facts) list += (list.empty() ? "" : ", ") + quoted(toString(f));
-    w.key("facts", spec.labels.facts->empty() ? quoted("none") : "[" + list + "]");
+    w.key(std::string(key::kFacts), spec.labels.facts->empty() ? quoted("none") : "[" + list + "]");
   } else {
     std::string chosen;
     for (const Fact f : resolveFacts(spec)) chosen += (chosen.empty() ? "" : ", ") + toString(f);
-    w.key("facts", quoted("auto") + "  # for this scene: " + (chosen.empty() ? "none" : chosen));
+    w.key(std::string(key::kFacts), quoted("auto") + "  # for this scene: " + (chosen.empty() ? "none" : chosen));
   }
 
-  const AnimationSpec& a = spec.animation;
   w.section("animation");
-  w.key("fps", a.fps.den == 1 ? a.fps.text() : quoted(a.fps.text()));
-  if (a.speed) w.key("speed", number(*a.speed));
-  else w.key("duration", number(a.duration));
-  w.key("easing", quoted(a.easing == Easing::Linear ? "linear" : "smooth"));
-  w.key("hold", number(a.hold));
-  if (a.crf) w.key("crf", number(*a.crf));
-  else w.computed("crf", "the format's: 18 for mp4 (H.264), 31 for webm (VP9)");
-  w.key("preset", quoted(a.preset));
-  w.key("loop", boolean(a.loop));
+  writeKeys(w, animationKeys(), spec.animation);
   writeSegments(w, spec);
   return w.text();
 }

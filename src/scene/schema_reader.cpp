@@ -79,6 +79,43 @@ std::set<std::string> pathTableKeys() { return keysOf("path"); }
 
 namespace {
 
+// A bound as messages write it: 1e11 and 1e8 (the step and sample limits)
+// as powers of ten, anything else in the shortest round-trip form.
+std::string boundNumber(double v) {
+  if (std::abs(v) >= 1e7) {
+    const double exponent = std::round(std::log10(std::abs(v)));
+    if (std::pow(10.0, exponent) == std::abs(v)) return fmt::format("{}1e{}", v < 0 ? "-" : "", exponent);
+  }
+  return fmt::format("{}", v);
+}
+
+std::string boundsPhrase(const Bounds& b) {
+  if (b.lo && b.hi)
+    return fmt::format("in {}{}, {}{}", b.loOpen ? "(" : "[", boundNumber(*b.lo), boundNumber(*b.hi), b.hiOpen ? ")" : "]");
+  if (b.lo) return fmt::format("{} {}", b.loOpen ? ">" : ">=", boundNumber(*b.lo));
+  if (b.hi) return fmt::format("{} {}", b.hiOpen ? "<" : "<=", boundNumber(*b.hi));
+  return "";
+}
+
+}  // namespace
+
+std::string expectation(std::string_view noun, std::string_view unitWord, std::string_view expected,
+                        const std::optional<Bounds>& bounds) {
+  if (!expected.empty()) return std::string(expected);
+  std::string out(noun);
+  if (bounds) out += " " + boundsPhrase(*bounds);
+  if (!unitWord.empty()) out += " " + std::string(unitWord);
+  return out;
+}
+
+bool withinBounds(const Bounds& b, double v) {
+  if (b.lo && !(b.loOpen ? v > *b.lo : v >= *b.lo)) return false;
+  if (b.hi && !(b.hiOpen ? v < *b.hi : v <= *b.hi)) return false;
+  return true;
+}
+
+namespace {
+
 // "\"frame6a\", \"rk45\"": the adaptive methods of spin's table, for messages.
 std::string adaptiveNames() {
   std::set<std::string> names;
@@ -360,99 +397,48 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
   }
   const bool onSphere = sk == SurfaceKind::Sphere;
   const bool meridian = pk == PathKind::Meridian;
+  auto dottedKey = [&](std::string_view name) { return dotted(prefix, name); };
 
-  if (auto t = number(path, prefix, "turns")) {
-    if (*t <= 0.0) failAt(prefix + ".turns", fmt::format("expected a number of turns > 0, got {}", *t));
-    target.turns = *t;
-  }
-  if (auto d = text(path, prefix, "direction", keyChoices("path", "direction"))) target.counterClockwise = *d == "ccw";
-  if (pk == PathKind::Geodesic && !spec_.locations.contains(prefix + ".length")) target.length = 6.0;
-  if (auto len = number(path, prefix, "length")) {
-    if (*len <= 0.0) failAt(prefix + ".length", fmt::format("expected a length > 0, got {}", *len));
-    target.length = *len;
-  }
-  if (auto dv = vector(path, prefix, "direction_vector")) {
-    const double len = norm3(*dv);
-    if (len < 1e-12) failAt(prefix + ".direction_vector", "expected a non-zero vector, got [0, 0, 0]");
-    const Vec3 d = unitVector(*dv, len);
-    if (sk == SurfaceKind::Plane) {
-      const Vec3& n = surface.params.vector("normal");
-      const double along = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
-      if (std::abs(along) > 1e-9)
-        failAt(prefix + ".direction_vector",
-               fmt::format("the {} leaves the surface: its direction has a component {:.6g} along the plane "
-                           "normal [{}, {}, {}]; expected a vector in the plane",
-                           pkName, along, n[0], n[1], n[2]));
-    }
-    target.directionVector = d;
-  }
-  if (auto r = number(path, prefix, "radius")) {
-    if (*r <= 0.0) failAt(prefix + ".radius", fmt::format("expected a radius > 0, got {}", *r));
-    target.radius = *r;
+  // A geodesic's own default length; the table's rows (only the kind's keys
+  // are present: the others were refused above), then the rules between keys.
+  if (pk == PathKind::Geodesic && !spec_.locations.contains(dottedKey(key::kLength))) target.length = 6.0;
+  readKeys(path, prefix, pathKeys(), target);
+  readRow(path, prefix, rowOf(pathKeys(), key::kDirectionVector), target);
+  if (target.directionVector && sk == SurfaceKind::Plane) {
+    const Vec3& d = *target.directionVector;
+    const Vec3& n = surface.params.vector("normal");
+    const double along = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+    if (std::abs(along) > 1e-9)
+      failAt(dottedKey(key::kDirectionVector),
+             fmt::format("the {} leaves the surface: its direction has a component {:.6g} along the plane "
+                         "normal [{}, {}, {}]; expected a vector in the plane",
+                         pkName, along, n[0], n[1], n[2]));
   }
   if (pk == PathKind::Parallel) {
     const geometry::SurfaceKindRow& surfaceRow = *surfaceKindRow(sk).geometry;
     if (surfaceRow.revolutionProblem)
       if (auto problem = surfaceRow.revolutionProblem(surface.params))
         failAt(pathKindGiven ? (prefix + ".kind") : blamedKey(underTable(*problem, surfaceKey)), problem->message);
-    if (surfaceRow.parallelRadius && !spec_.locations.contains(prefix + ".radius"))
+    if (surfaceRow.parallelRadius && !spec_.locations.contains(dottedKey(key::kRadius)))
       target.radius = *surfaceRow.parallelRadius;
   }
-  auto colatitude = [&](const std::string& key, double& out) {
-    if (auto th = number(path, prefix, key)) {
-      if (!(*th > 0.0 && *th < 180.0))
-        failAt(prefix + "." + key, fmt::format("expected a colatitude in (0, 180) degrees, got {}", *th));
-      out = *th;
-    }
-  };
-  colatitude("colatitude_deg", target.colatitudeDeg);
-  colatitude("colatitude_start_deg", target.colatitudeStartDeg);
-  colatitude("colatitude_end_deg", target.colatitudeEndDeg);
   if ((meridian && onSphere) || pk == PathKind::Loxodrome) {
     if (target.colatitudeStartDeg == target.colatitudeEndDeg)
-      failAt(prefix + ".colatitude_end_deg", "expected colatitude_end_deg != colatitude_start_deg (an empty path)");
+      failAt(dottedKey(key::kColatitudeEndDeg),
+             fmt::format("expected {} != {} (an empty path)", key::kColatitudeEndDeg, key::kColatitudeStartDeg));
   }
-  if (auto v = number(path, prefix, "tube_angle_deg")) target.tubeAngleDeg = *v;
-  if (auto v = number(path, prefix, "height")) target.height = *v;
-  if (auto v = number(path, prefix, "azimuth_deg")) target.azimuthDeg = *v;
-  if (auto v = number(path, prefix, "start_azimuth_deg")) target.startAzimuthDeg = *v;
-  if (auto v = number(path, prefix, "pitch_angle_deg")) {
-    if (!(std::abs(*v) < 90.0))
-      failAt(prefix + ".pitch_angle_deg", fmt::format("expected a pitch angle in (-90, 90) degrees, got {}", *v));
-    target.pitchAngleDeg = *v;
-  }
-  if (auto v = number(path, prefix, "heading_deg")) {
-    if (!(std::abs(*v) < 90.0))
-      failAt(prefix + ".heading_deg", fmt::format("expected a heading in (-90, 90) degrees from the meridians "
-                                             "(90 is a parallel: use kind = \"parallel\"), got {}", *v));
-    target.headingDeg = *v;
-  }
-  if (auto p = vector(path, prefix, "start_point")) target.startPoint = *p;
-  if (auto e = expression(path, prefix, "u")) target.u = *e;
-  if (auto e = expression(path, prefix, "v")) target.v = *e;
-  if (auto v = number(path, prefix, "t_start")) target.tStart = *v;
-  if (auto v = number(path, prefix, "t_end")) target.tEnd = *v;
+  if (auto e = expression(path, prefix, std::string(key::kU))) target.u = *e;
+  if (auto e = expression(path, prefix, std::string(key::kV))) target.v = *e;
   if (pk == PathKind::Uv && !(target.tEnd > target.tStart))
-    failAt(spec_.locations.contains(prefix + ".t_end") ? (prefix + ".t_end") : (prefix + ".t_start"),
-           fmt::format("expected t_end > t_start, got [{}, {}]", target.tStart, target.tEnd));
-  if (auto pts = pointList(path, prefix, "points")) target.points = *pts;
-  if (auto c = boolean(path, prefix, "closed")) target.closed = *c;
-  if (auto i = text(path, prefix, "interpolation", keyChoices("path", "interpolation"))) target.interpolation = *i;
-  if (auto r = number(path, prefix, "corner_radius")) {
-    if (*r < 0.0) failAt(prefix + ".corner_radius", fmt::format("expected a radius >= 0, got {}", *r));
-    target.cornerRadius = *r;
-  }
-  for (const char* key : {"curvature_start", "curvature_rate"}) {
-    if (auto v = number(path, prefix, key)) {
-      if (std::abs(*v) > 1e6) failAt(prefix + "." + key, fmt::format("expected |value| <= 1e6, got {}", *v));
-      (std::string(key) == "curvature_start" ? target.curvatureStart : target.curvatureRate) = *v;
-    }
-  }
+    failAt(spec_.locations.contains(dottedKey(key::kTEnd)) ? dottedKey(key::kTEnd) : dottedKey(key::kTStart),
+           fmt::format("expected {} > {}, got [{}, {}]", key::kTEnd, key::kTStart, target.tStart, target.tEnd));
+  if (auto pts = pointList(path, prefix, std::string(key::kPoints))) target.points = *pts;
   if (pk == PathKind::Points) {
     const std::size_t need = target.closed ? 3 : 2;
+    const std::string points = dottedKey(key::kPoints);
     if (target.points.size() < need)
-      throw badInput(spec_.locations.contains(prefix + ".points") ? where(prefix + ".points") : where(prefix),
-                     "{}.points: expected at least {} points for {} path, got {}", prefix, need,
+      throw badInput(spec_.locations.contains(points) ? where(points) : where(prefix),
+                     "{}: expected at least {} points for {} path, got {}", points, need,
                      target.closed ? "a closed" : "an open", target.points.size());
   }
   return pk;
@@ -470,30 +456,19 @@ SceneSpec Reader::read() {
   }
 
   // [ball]
-  const toml::table* ball = section("ball", keysOf("ball"));
-  if (auto r = number(ball, "ball", "radius")) {
-    if (*r <= 0.0) failAt("ball.radius", fmt::format("expected a radius > 0, got {}", *r));
-    spec_.ball.radius = *r;
-  }
-  if (auto t = anyText(ball, "ball", "texture")) {
-    if (t->empty()) failAt("ball.texture", "expected a PNG or JPG file name, got an empty string");
-    spec_.ball.texture = *t;
-  }
-  if (auto m = vector(ball, "ball", "marker")) {
-    const double len = norm3(*m);
-    if (len < 1e-12) failAt("ball.marker", "expected a non-zero vector (a direction in the ball), got [0, 0, 0]");
-    spec_.ball.marker = unitVector(*m, len);
-  }
+  readKeys(section("ball", namesOf(ballKeys())), "ball", ballKeys(), spec_.ball);
   // [surface]
   readSurface(section("surface", keysOf("surface")), "surface", spec_.surface);
 
   // [plate] — Brockett's upper plate; the contact path is then derived.
-  const toml::table* plate = section("plate", keysOf("plate"));
+  const toml::table* plate = section("plate", namesOf(plateKeys()));
   if (plate != nullptr) {
     PlateSpec p;
-    auto r1 = number(plate, "plate", "radius");
-    if (!r1) throw badInput(where("plate"), "plate.radius: missing; [plate] needs the radius R1 of the circle each plate point describes");
-    if (*r1 <= 0.0) failAt("plate.radius", fmt::format("expected a radius > 0, got {}", *r1));
+    const KeyRow<PlateSpec>& radius = rowOf(plateKeys(), key::kRadius);
+    const std::string radiusKey = dotted("plate", radius.name);
+    auto r1 = number(plate, "plate", std::string(radius.name));
+    if (!r1) throw badInput(where("plate"), "{}: missing; [plate] needs the radius R1 of the circle each plate point describes", radiusKey);
+    checkRow(radius, radiusKey, *r1);
     p.radius = *r1;
     spec_.plate = p;
   }
@@ -517,41 +492,25 @@ SceneSpec Reader::read() {
   readSegments();
 
   // [solver]
-  const toml::table* solver = section("solver", keysOf("solver"));
+  const toml::table* solver = section("solver", namesOf(solverKeys()));
   // The method names are spin's (one table there); the scene keeps the text.
-  if (auto m = text(solver, "solver", "method", keyChoices("solver", "method"))) spec_.solver.method = *m;
-  if (auto n = integer(solver, "solver", "steps")) {
-    if (*n < 1 || *n > kMaxSolverSteps)
-      failAt("solver.steps", fmt::format("expected an integer in [1, 1e11], got {}", *n));
-    spec_.solver.steps = *n;
-  }
-  if (auto tol = number(solver, "solver", "tolerance")) {
-    if (!(*tol >= 1e-15 && *tol <= 1.0))
-      failAt("solver.tolerance", fmt::format("expected a tolerance in [1e-15, 1], got {}", *tol));
-    spec_.solver.tolerance = *tol;
-  }
-  if (auto estimate = boolean(solver, "solver", "error_estimate")) spec_.solver.errorEstimate = *estimate;
+  readKeys(solver, "solver", solverKeys(), spec_.solver);
   // A tolerance and no step count: the adaptive geometric method by default.
   // Steps and tolerance each belong to one kind of method.
-  const bool methodGiven = spec_.locations.contains("solver.method");
+  const bool methodGiven = spec_.locations.contains(dotted("solver", key::kMethod));
   const bool adaptive = spin::isAdaptive(*spin::parseMethod(spec_.solver.method));  // a name from the table
   if (!methodGiven && spec_.solver.tolerance && !spec_.solver.steps)
     spec_.solver.method = spin::methodName(spin::Method::Frame6a);
   else if (spec_.solver.tolerance && !adaptive)
-    failAt("solver.tolerance", fmt::format("applies to the adaptive methods ({}), but "
-                                           "solver.method is \"{}\"; remove solver.tolerance or solver.steps",
-                                           adaptiveNames(), spec_.solver.method));
+    failAt(dotted("solver", key::kTolerance),
+           fmt::format("applies to the adaptive methods ({}), but solver.{} is \"{}\"; remove solver.{} or solver.{}",
+                       adaptiveNames(), key::kMethod, spec_.solver.method, key::kTolerance, key::kSteps));
   if (adaptive && spec_.solver.steps)
-    failAt("solver.steps", fmt::format("method \"{}\" chooses its own steps; set solver.tolerance instead",
-                                       spec_.solver.method));
+    failAt(dotted("solver", key::kSteps), fmt::format("method \"{}\" chooses its own steps; set solver.{} instead",
+                                                  spec_.solver.method, key::kTolerance));
 
   // [timeline]
-  const toml::table* timeline = section("timeline", keysOf("timeline"));
-  if (auto n = integer(timeline, "timeline", "samples")) {
-    if (*n < 2 || *n > kMaxTimelineSamples)
-      failAt("timeline.samples", fmt::format("expected an integer in [2, 1e8], got {}", *n));
-    spec_.timeline.samples = *n;
-  }
+  readKeys(section("timeline", namesOf(timelineKeys())), "timeline", timelineKeys(), spec_.timeline);
 
   readRender();
   readFigure();

@@ -13,17 +13,7 @@ namespace rollspin::scene::schema {
 
 CameraSpec Reader::readCamera(const toml::table* t, const std::string& section) {
   CameraSpec c;
-  c.azimuthDeg = number(t, section, "azimuth_deg");
-  if ((c.elevationDeg = number(t, section, "elevation_deg")) && !(*c.elevationDeg > -90.0 && *c.elevationDeg < 90.0))
-    failAt(section + ".elevation_deg",
-           fmt::format("expected an elevation in (-90, 90) degrees, got {}", *c.elevationDeg));
-  if ((c.distance = number(t, section, "distance")) && *c.distance <= 0.0)
-    failAt(section + ".distance", fmt::format("expected a camera distance > 0, got {}", *c.distance));
-  c.target = vector(t, section, "target");
-  c.follow = boolean(t, section, "follow");
-  if ((c.fovDeg = number(t, section, "fov_deg")) && !(*c.fovDeg >= 5.0 && *c.fovDeg <= 120.0))
-    failAt(section + ".fov_deg",
-           fmt::format("expected a vertical field of view in [5, 120] degrees, got {}", *c.fovDeg));
+  readKeys(t, section, segmentCameraKeys(), c);
   return c;
 }
 
@@ -49,28 +39,29 @@ void Reader::readSegments() {
     spec_.locations[prefix] = locOf(prefix, entry);
     const toml::table& table = *entry.as_table();
     for (auto&& [k, v] : table) {
-      static const std::set<std::string> kSegmentKeys = keysOf("segment");
+      static const std::set<std::string> kSegmentKeys = namesOf(segmentKeys());
       if (!kSegmentKeys.contains(std::string(k.str())))
         throw unknownKey(locOf(prefix + "." + std::string(k.str()), v), prefix + "." + std::string(k.str()),
                          std::string(k.str()), "a segment", kSegmentKeys);
     }
     SegmentSpec seg;
-    const toml::table* path = subTable(table, "path", prefix + ".path", pathTableKeys());
+    const toml::table* path = subTable(table, std::string(key::kPath), dotted(prefix, key::kPath), pathTableKeys());
     readSegmentSurface(table, prefix, path != nullptr, seg);
     spec_.segments.push_back(seg);  // surfaceOf(i) below reads it
     const SurfaceSpec& surface = spec_.surfaceOf(i);
     const bool onPlane = surface.kind == SurfaceKind::Plane;
     // The first motion on a new surface starts where its own keys say.
     const bool newSurface = i == 0 || seg.surface.has_value();
-    const std::optional<double> hold = number(&table, prefix, "hold");
+    const std::string holdKey = dotted(prefix, key::kHold);
+    const std::optional<double> hold = number(&table, prefix, std::string(key::kHold));
     if (path == nullptr && !hold)
       throw badInput(where(prefix), "{}: expected path = {{ kind = ..., ... }} (a motion) or hold = SECONDS (a rest)",
                      prefix);
     if (path != nullptr && hold)
-      failAt(prefix + ".hold", "a segment either moves (path) or holds (hold), not both; split it into two segments");
+      failAt(holdKey, "a segment either moves (path) or holds (hold), not both; split it into two segments");
     if (path != nullptr) {
       seg.path = PathSpec{};
-      const PathKind pk = readPath(path, prefix + ".path", *seg.path, surface, spec_.surfaceKeyOf(i));
+      const PathKind pk = readPath(path, dotted(prefix, key::kPath), *seg.path, surface, spec_.surfaceKeyOf(i));
       // On a plane, segments after the first continue from the previous end
       // point along its end heading (tangent-continuous).
       const bool placedByPrevious = pk == PathKind::Line || pk == PathKind::Circle || pk == PathKind::Clothoid;
@@ -79,24 +70,24 @@ void Reader::readSegments() {
                "a segment after the first starts where the previous one ended, along its end heading "
                "(tangent-continuous); remove direction_vector");
     } else {
-      if (!(*hold > 0.0 && *hold <= 3600.0))
-        failAt(prefix + ".hold", fmt::format("expected a hold in (0, 3600] seconds, got {}", *hold));
+      checkRow(rowOf(segmentKeys(), key::kHold), holdKey, *hold);
       seg.hold = *hold;
     }
-    if ((seg.duration = number(&table, prefix, "duration"))) {
-      if (!path) failAt(prefix + ".duration", "applies to a motion (a segment with a path); a hold's length is hold");
-      if (!(*seg.duration > 0.0 && *seg.duration <= 36000.0))
-        failAt(prefix + ".duration", fmt::format("expected a duration in (0, 36000] seconds, got {}", *seg.duration));
+    const std::string durationKey = dotted(prefix, key::kDuration), speedKey = dotted(prefix, key::kSpeed);
+    if ((seg.duration = number(&table, prefix, std::string(key::kDuration)))) {
+      if (!path) failAt(durationKey, "applies to a motion (a segment with a path); a hold's length is hold");
+      checkRow(rowOf(segmentKeys(), key::kDuration), durationKey, *seg.duration);
     }
-    if ((seg.speed = number(&table, prefix, "speed"))) {
-      if (!path) failAt(prefix + ".speed", "applies to a motion (a segment with a path); a hold's length is hold");
-      if (!(*seg.speed > 0.0)) failAt(prefix + ".speed", fmt::format("expected an arc length per second > 0, got {}", *seg.speed));
+    if ((seg.speed = number(&table, prefix, std::string(key::kSpeed)))) {
+      if (!path) failAt(speedKey, "applies to a motion (a segment with a path); a hold's length is hold");
+      checkRow(rowOf(segmentKeys(), key::kSpeed), speedKey, *seg.speed);
       if (seg.duration)
-        failAt(prefix + ".speed", fmt::format("conflicts with {}.duration: give the duration or the speed, not both", prefix));
+        failAt(speedKey, fmt::format("conflicts with {}: give the duration or the speed, not both", durationKey));
     }
-    if (auto c = anyText(&table, prefix, "caption")) seg.caption = *c;
-    seg.title = anyText(&table, prefix, "title");
-    seg.camera = readCamera(subTable(table, "camera", prefix + ".camera", keysOf("segment.camera")), prefix + ".camera");
+    readRow(&table, prefix, rowOf(segmentKeys(), key::kCaption), seg);
+    readRow(&table, prefix, rowOf(segmentKeys(), key::kTitle), seg);
+    const std::string cameraKey = dotted(prefix, key::kCamera);
+    seg.camera = readCamera(subTable(table, std::string(key::kCamera), cameraKey, namesOf(segmentCameraKeys())), cameraKey);
     spec_.segments.back() = std::move(seg);
   }
   // A segment's camera target stops a follow, and follow = true drops a
@@ -104,8 +95,8 @@ void Reader::readSegments() {
   for (std::size_t i = 0; i < spec_.segments.size(); ++i) {
     const CameraSpec& c = spec_.segments[i].camera;
     if (c.target && c.follow && *c.follow)
-      failAt(SceneSpec::segmentKey(i) + ".camera.target",
-             "conflicts with follow = true in the same camera (the camera then targets the ball)");
+      failAt(dotted(dotted(SceneSpec::segmentKey(i), key::kCamera), key::kTarget),
+             fmt::format("conflicts with {} = true in the same camera (the camera then targets the ball)", key::kFollow));
   }
 }
 
@@ -113,149 +104,99 @@ void Reader::readSegments() {
 // to a motion (a hold rests where the ball is); transition and
 // fade_seconds apply only where the surface changes.
 void Reader::readSegmentSurface(const toml::table& table, const std::string& prefix, bool moves, SegmentSpec& seg) {
-  if (const toml::table* surface = subTable(table, "surface", prefix + ".surface", keysOf("surface"))) {
+  const std::string surfaceKey = dotted(prefix, key::kSurface);
+  if (const toml::table* surface = subTable(table, std::string(key::kSurface), surfaceKey, keysOf("surface"))) {
     if (!moves)
-      failAt(prefix + ".surface", "a hold rests where the previous motion ended, on its surface; give the surface "
+      failAt(surfaceKey, "a hold rests where the previous motion ended, on its surface; give the surface "
                                   "to the next segment with a path");
     seg.surface = SurfaceSpec{};
-    readSurface(surface, prefix + ".surface", *seg.surface);
+    readSurface(surface, surfaceKey, *seg.surface);
   }
   const bool changes = seg.surface && prefix != SceneSpec::segmentKey(0);
-  auto onlyAtChange = [&](const std::string& key) {
-    if (!changes && spec_.locations.contains(prefix + "." + key))
-      failAt(prefix + "." + key,
+  auto onlyAtChange = [&](std::string_view name) {
+    if (!changes && spec_.locations.contains(dotted(prefix, name)))
+      failAt(dotted(prefix, name),
              prefix == SceneSpec::segmentKey(0)
                  ? "applies where the surface changes; the first segment has nothing to change from"
                  : "applies where the surface changes; this segment keeps the previous segment's surface (give it "
                    "surface = { kind = ..., ... })");
   };
-  if (auto t = text(&table, prefix, "transition", keyChoices("segment", "transition")))
-    seg.transition = *t == "fade" ? SegmentSpec::Transition::Fade : SegmentSpec::Transition::Cut;
-  onlyAtChange("transition");
-  if (auto f = number(&table, prefix, "fade_seconds")) {
-    if (!(*f > 0.0 && *f <= 10.0))
-      failAt(prefix + ".fade_seconds", fmt::format("expected a fade in (0, 10] seconds, got {}", *f));
+  readRow(&table, prefix, rowOf(segmentKeys(), key::kTransition), seg);
+  onlyAtChange(key::kTransition);
+  const std::string fadeKey = dotted(prefix, key::kFadeSeconds);
+  if (auto f = number(&table, prefix, std::string(key::kFadeSeconds))) {
+    checkRow(rowOf(segmentKeys(), key::kFadeSeconds), fadeKey, *f);
     if (seg.transition != SegmentSpec::Transition::Fade)
-      failAt(prefix + ".fade_seconds", "applies to transition = \"fade\"; this segment cuts");
+      failAt(fadeKey, fmt::format("applies to {} = \"fade\"; this segment cuts", key::kTransition));
     seg.fadeSeconds = *f;
   }
-  onlyAtChange("fade_seconds");
+  onlyAtChange(key::kFadeSeconds);
 }
 
-// [render] — image size, layout, strobe, text, camera (render issue).
+// [render] — image size, layout, strobe, text, camera (render issue): the
+// table's rows, then the rule that a followed camera has no target.
 void Reader::readRender() {
-  const toml::table* render = section("render", keysOf("render"));
-  RenderSpec& r = spec_.render;
-  constexpr long long kMaxSide = 8192;  // "8K": the renderer's size limit
-  for (const char* key : {"width", "height"}) {
-    if (auto n = integer(render, "render", key)) {
-      if (*n < 1 || *n > kMaxSide)
-        failAt(std::string("render.") + key, fmt::format("expected an image size in [1, {}] pixels, got {}", kMaxSide, *n));
-      (std::string(key) == "width" ? r.width : r.height) = *n;
-    }
-  }
-  if (auto l = text(render, "render", "layout", keyChoices("render", "layout")))
-    r.layout = *l == "side-by-side" ? RenderLayout::SideBySide
-             : *l == "inset"        ? RenderLayout::Inset
-             : *l == "ball"         ? RenderLayout::Ball
-                                    : RenderLayout::Twin;
-  if (auto n = integer(render, "render", "strobe")) {
-    if (*n < 0 || *n == 1 || *n > 200)
-      failAt("render.strobe", fmt::format("expected 0 (off) or a number of positions in [2, 200], got {}", *n));
-    r.strobe = *n;
-  }
-  if (auto t = anyText(render, "render", "title")) r.title = *t;
-  if (auto b = boolean(render, "render", "labels")) r.labels = *b;
-  if (auto b = boolean(render, "render", "transparent")) r.transparent = *b;
-  if (auto b = boolean(render, "render", "burn_captions")) r.burnCaptions = *b;
-  if (auto n = integer(render, "render", "msaa")) {
-    if (*n != 1 && *n != 2 && *n != 4) failAt("render.msaa", fmt::format("expected 1, 2 or 4 samples, got {}", *n));
-    r.msaa = *n;
-  }
-  const CameraSpec camera = readCamera(render, "render");
-  if (camera.azimuthDeg) r.azimuthDeg = *camera.azimuthDeg;
-  if (camera.elevationDeg) r.elevationDeg = *camera.elevationDeg;
-  if (camera.distance) r.distance = *camera.distance;
-  if (camera.target) r.target = *camera.target;
-  if (camera.follow) r.follow = *camera.follow;
-  if (camera.fovDeg) r.fovDeg = *camera.fovDeg;
-  if (auto t = boolean(render, "render", "trails")) r.trails = *t;
-  if (auto f = number(render, "render", "font_scale")) {
-    if (!(*f >= 0.25 && *f <= 4.0)) failAt("render.font_scale", fmt::format("expected a text scale in [0.25, 4], got {}", *f));
-    r.fontScale = *f;
-  }
-  if (auto t = text(render, "render", "twin_camera", keyChoices("render", "twin_camera"))) r.twinCameraFixed = *t == "fixed";
-  if (auto sh = boolean(render, "render", "shadow")) r.shadow = *sh;
-  if (r.follow && spec_.locations.contains("render.target"))
-    failAt("render.target", "conflicts with render.follow = true (the camera then targets the ball)");
-  // The names are media's output-format table's (output_formats.def), through the registry.
-  if (auto f = text(render, "render", "format", keyChoices("render", "format"))) r.format = *f;
-  if (auto q = integer(render, "render", "jpeg_quality")) {
-    if (*q < 1 || *q > 100) failAt("render.jpeg_quality", fmt::format("expected a JPEG quality in [1, 100], got {}", *q));
-    r.jpegQuality = *q;
-  }
-  if (auto d = number(render, "render", "dpi")) {
-    if (!(*d >= 30.0 && *d <= 2400.0)) failAt("render.dpi", fmt::format("expected a resolution in [30, 2400] dpi, got {}", *d));
-    r.dpi = *d;
-  }
+  const toml::table* render = section("render", namesOf(renderKeys()));
+  readKeys(render, "render", renderKeys(), spec_.render);
+  if (spec_.render.follow && spec_.locations.contains(dotted("render", key::kTarget)))
+    failAt(dotted("render", key::kTarget),
+           fmt::format("conflicts with render.{} = true (the camera then targets the ball)", key::kFollow));
   readGlContext(render);
 }
 
 // render.backend and render.device: the GL context. The names are render's
 // table (gl_backends.cpp); the scene keeps the text.
 void Reader::readGlContext(const toml::table* table) {
-  if (auto b = text(table, "render", "backend", keyChoices("render", "backend")))
-    spec_.render.backend = *b;
-  if (const toml::node* node = get(table, "render", "device")) {
-    const SourceLoc at = locOf("render.device", *node);
+  const std::string device = dotted("render", key::kDevice);
+  if (const toml::node* node = get(table, "render", std::string(key::kDevice))) {
+    const SourceLoc at = locOf(device, *node);
     const std::string expected = "an EGL device index (0, 1, …) or a DRM device path (\"/dev/dri/renderD128\")";
     if (node->is_integer() && node->as_integer()->get() >= 0) spec_.render.device = std::to_string(node->as_integer()->get());
     else if (node->is_string() && node->as_string()->get().rfind('/', 0) == 0) spec_.render.device = node->as_string()->get();
-    else fail("render.device", at, expected, describeNode(*node));
+    else fail(device, at, expected, describeNode(*node));
     if (spec_.render.backend && !render::backendTakesDevice(*spec_.render.backend))
-      failAt("render.device", fmt::format("applies to a backend that renders on a device (\"egl\" or \"auto\"), but "
-                                          "render.backend is \"{}\"", *spec_.render.backend));
+      failAt(device, fmt::format("applies to a backend that renders on a device (\"egl\" or \"auto\"), but "
+                                 "render.{} is \"{}\"", key::kBackend, *spec_.render.backend));
   }
 }
 
-// [figure] — a still as a PDF/SVG figure (docs/figures.md).
+// [figure] — a still as a PDF/SVG figure (docs/figures.md). The width is
+// given once, by one of three keys; the other keys are the table's.
 void Reader::readFigure() {
-  const toml::table* figure = section("figure", keysOf("figure"));
+  const toml::table* figure = section("figure", namesOf(figureKeys()));
   FigureSpec& f = spec_.figure;
-  const auto mm = number(figure, "figure", "width_mm");
-  const auto in = number(figure, "figure", "width_in");
-  if (mm && in) failAt("figure.width_in", "conflicts with figure.width_mm: give the width once");
+  const std::string widthMm = dotted("figure", key::kWidthMm), widthIn = dotted("figure", key::kWidthIn);
+  const auto mm = number(figure, "figure", std::string(key::kWidthMm));
+  const auto in = number(figure, "figure", std::string(key::kWidthIn));
+  if (mm && in) failAt(widthIn, fmt::format("conflicts with {}: give the width once", widthMm));
   // The journals' two widths by name: a column (85 mm) or the page's text
   // block (175 mm).
-  if (auto preset = text(figure, "figure", "width", {"column", "page"})) {
-    if (mm || in) failAt("figure.width", fmt::format("conflicts with figure.{}: give the width once", mm ? "width_mm" : "width_in"));
-    f.widthMm = *preset == "column" ? 85.0 : 175.0;
+  const KeyRow<FigureSpec>& preset = figureKeys().front();
+  if (auto named = text(figure, "figure", std::string(preset.name), {preset.choices.begin(), preset.choices.end()})) {
+    if (mm || in)
+      failAt(dotted("figure", preset.name),
+             fmt::format("conflicts with figure.{}: give the width once", mm ? key::kWidthMm : key::kWidthIn));
+    f.widthMm = *named == preset.choices.front() ? 85.0 : 175.0;
   }
   if (mm || in) {
-    const double widthMm = mm ? *mm : *in * 25.4;
-    if (!(widthMm >= 10.0 && widthMm <= 2000.0))
-      failAt(mm ? "figure.width_mm" : "figure.width_in",
-             fmt::format("expected a figure width in [10, 2000] mm ([0.39, 78.7] in), got {} mm", widthMm));
-    f.widthMm = widthMm;
+    const double width = mm ? *mm : *in * 25.4;
+    if (!(width >= kMinFigureWidthMm && width <= kMaxFigureWidthMm))
+      failAt(mm ? widthMm : widthIn,
+             fmt::format("expected a figure width in [{}, {}] mm ([{:.2f}, {:.1f}] in), got {} mm", kMinFigureWidthMm,
+                         kMaxFigureWidthMm, kMinFigureWidthMm / 25.4, kMaxFigureWidthMm / 25.4, width));
+    f.widthMm = width;
   }
-  if (auto t = anyText(figure, "figure", "font")) {
-    if (t->empty()) failAt("figure.font", "expected a font family name (e.g. \"Latin Modern Roman\"), got an empty string");
-    f.font = *t;
-  }
-  if (auto pt = number(figure, "figure", "font_size_pt")) {
-    if (!(*pt >= 2.0 && *pt <= 72.0)) failAt("figure.font_size_pt", fmt::format("expected a size in [2, 72] pt, got {}", *pt));
-    f.fontSizePt = *pt;
-  }
-  if (auto b = boolean(figure, "figure", "transparent")) f.transparent = *b;
+  readKeys(figure, "figure", figureKeys(), f);
 }
 
 // [labels] — which facts of the scene are printed (after [surface] and
 // [path]: a fact must apply to their kinds).
 void Reader::readLabels() {
-  const toml::table* labels = section("labels", keysOf("labels"));
-  const toml::node* node = get(labels, "labels", "facts");
+  const std::string labelsSection(key::kLabels);
+  const toml::table* labels = section(labelsSection, namesOf(labelsKeys()));
+  const toml::node* node = get(labels, labelsSection, std::string(key::kFacts));
   if (node == nullptr) return;
-  const std::string key = "labels.facts";
+  const std::string key = dotted(labelsSection, key::kFacts);
   std::string names;
   for (const auto& n : kFactNames) names += (names.empty() ? "" : ", ") + ("\"" + n + "\"");
   const std::string expected = "\"auto\", \"none\" or a list of facts from " + names;
@@ -272,7 +213,7 @@ void Reader::readLabels() {
       fail(key, where,
            fmt::format("{}; a list even for one fact: {}", expected,
                        where.file.starts_with("--set") ? fmt::format("--set '{}=[\"{}\"]'", key, word->get())
-                                                       : fmt::format("{} = [\"{}\"]", "facts", word->get())),
+                                                       : fmt::format("{} = [\"{}\"]", key::kFacts, word->get())),
            describeNode(*node));
     fail(key, where, expected, describeNode(*node));
   }
@@ -293,53 +234,35 @@ void Reader::readLabels() {
   spec_.labels.facts = facts;
 }
 
-// [animation] — frame time → arc length, and the H.264 settings (video issue).
+// [animation] — frame time → arc length, and the H.264 settings (video
+// issue): the frame rate's forms, the table's rows, then the rule that the
+// speed replaces the duration.
 void Reader::readAnimation() {
-  const toml::table* animation =
-      section("animation", keysOf("animation"));
+  const toml::table* animation = section("animation", namesOf(animationKeys()));
   AnimationSpec& a = spec_.animation;
-  if (const toml::node* node = get(animation, "animation", "fps")) {
-    const std::string expected =
-        "frames per second in [1, 240]: an integer, an NTSC rate 23.976 | 29.97 | 59.94 (exactly 24000/1001 …), a "
-        "decimal with at most 3 places, or a string \"num/den\" such as \"30000/1001\"";
+  const std::string fps = dotted("animation", key::kFps);
+  if (const toml::node* node = get(animation, "animation", std::string(key::kFps))) {
+    const std::string expected = fmt::format(
+        "frames per second in [{}, {}]: an integer, an NTSC rate 23.976 | 29.97 | 59.94 (exactly 24000/1001 …), a "
+        "decimal with at most 3 places, or a string \"num/den\" such as \"30000/1001\"", kMinFps, kMaxFps);
     std::optional<FrameRate> rate;
     if (node->is_integer()) {
       const long long n = node->as_integer()->get();
-      if (n >= 1 && n <= 240) rate = FrameRate{n, 1};
+      if (n >= kMinFps && n <= kMaxFps) rate = FrameRate{n, 1};
     } else if (node->is_floating_point()) {
       rate = frameRateFromDecimal(node->as_floating_point()->get());
     } else if (node->is_string()) {
       rate = frameRateFromText(node->as_string()->get());
     }
-    if (!rate || !(rate->value() >= 1.0 && rate->value() <= 240.0))
-      fail("animation.fps", locOf("animation.fps", *node), expected, describeNode(*node));
+    if (!rate || !(rate->value() >= kMinFps && rate->value() <= kMaxFps))
+      fail(fps, locOf(fps, *node), expected, describeNode(*node));
     a.fps = *rate;
   }
-  if (auto d = number(animation, "animation", "duration")) {
-    if (!(*d > 0.0 && *d <= 36000.0))
-      failAt("animation.duration", fmt::format("expected a duration in (0, 36000] seconds, got {}", *d));
-    a.duration = *d;
-  }
-  if (auto v = number(animation, "animation", "speed")) {
-    if (!(*v > 0.0)) failAt("animation.speed", fmt::format("expected an arc length per second > 0, got {}", *v));
-    if (spec_.locations.contains("animation.duration"))
-      failAt("animation.speed", "conflicts with animation.duration: give the duration or the speed, not both");
-    a.speed = *v;
-  }
-  if (auto e = text(animation, "animation", "easing", keyChoices("animation", "easing")))
-    a.easing = *e == "linear" ? Easing::Linear : Easing::Smooth;
-  if (auto h = number(animation, "animation", "hold")) {
-    if (!(*h >= 0.0 && *h <= 3600.0))
-      failAt("animation.hold", fmt::format("expected a hold in [0, 3600] seconds, got {}", *h));
-    a.hold = *h;
-  }
-  if (auto c = number(animation, "animation", "crf")) {
-    if (!(*c >= 0.0 && *c <= 51.0)) failAt("animation.crf", fmt::format("expected a CRF in [0, 51], got {}", *c));
-    a.crf = *c;
-  }
-  if (auto p = text(animation, "animation", "preset", keyChoices("animation", "preset")))
-    a.preset = *p;
-  if (auto l = boolean(animation, "animation", "loop")) a.loop = *l;
+  readKeys(animation, "animation", animationKeys(), a);
+  const std::string duration = dotted("animation", key::kDuration);
+  if (a.speed && spec_.locations.contains(duration))
+    failAt(dotted("animation", key::kSpeed),
+           fmt::format("conflicts with {}: give the duration or the speed, not both", duration));
 }
 
 

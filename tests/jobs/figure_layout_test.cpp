@@ -84,7 +84,7 @@ struct Figure {
 Figure figureOf(jobs::DrawJob& job, double mm, double pt, const fs::path& pdf) {
   job.spec.figure.widthMm = mm;
   job.spec.figure.fontSizePt = pt;
-  jobs::fitTextToFigure(job.spec);
+  job.figureText = jobs::fitTextToFigure(job.spec);
   const render::DrawList list = jobs::drawStill(job, std::nullopt);
   const render::FigureStyle style = jobs::figureStyleOf(job.spec, list);
   render::writeFigure(pdf, render::FigureFormat::Pdf, list, render::FigureRasters{}, style);
@@ -257,7 +257,7 @@ TEST(FigureLayout, TheBlochSphereFillsTheRoomItsTextLeaves) {
       const double pt = sizeFor(i, w);
       job.spec.figure.widthMm = kWidthsMm[w];
       job.spec.figure.fontSizePt = pt;
-      jobs::fitTextToFigure(job.spec);
+      job.figureText = jobs::fitTextToFigure(job.spec);
       const render::DrawList list = jobs::drawStill(job, std::nullopt);
       const FigureLayout layout = render::figureLayout(list, jobs::figureStyleOf(job.spec, list));
       checkTwin(list, layout,

@@ -108,7 +108,7 @@ TEST(FigureSubject, DISABLED_TheSurfaceAndTheBallSpanHalfTheBallViewAtJournalSiz
     for (std::size_t w = 0; w < kWidthsMm.size(); ++w) {
       job.spec.figure.widthMm = kWidthsMm[w];
       job.spec.figure.fontSizePt = kSizesPt[(i + w) % kSizesPt.size()];
-      jobs::fitTextToFigure(job.spec);
+      job.figureText = jobs::fitTextToFigure(job.spec);
       const render::DrawList list = jobs::drawStill(job, std::nullopt);
       const int view = ballView(list);
       ASSERT_GE(view, 0) << scenes[i];
@@ -180,7 +180,7 @@ TEST(FigureSubject, ACaptionNeverBreaksNarrowerThanTwelveEm) {
     for (std::size_t w = 0; w < kWidthsMm.size(); ++w) {
       job.spec.figure.widthMm = kWidthsMm[w];
       job.spec.figure.fontSizePt = kSizesPt[(i + w) % kSizesPt.size()];
-      jobs::fitTextToFigure(job.spec);
+      job.figureText = jobs::fitTextToFigure(job.spec);
       const render::DrawList list = jobs::drawStill(job, std::nullopt);
       const std::string where = scenes[i].stem().string() + " at " + std::to_string(int(kWidthsMm[w])) + " mm";
       // The still's caption: the segment whose caption's words the list draws, bold.

@@ -14,6 +14,7 @@
 #include <system_error>
 
 #include "core/error.hpp"
+#include "core/temp_files.hpp"
 #include "core/text.hpp"
 #include "media/av_support.hpp"
 #include "media/container_tags.hpp"
@@ -316,7 +317,7 @@ void expectContiguous(const std::vector<const Part*>& sorted) {
 struct Output {
   AVFormatContext* format = nullptr;
   fs::path writePath;
-  bool direct = false, opened = false, committed = false;
+  bool direct = false, opened = false, committed = false, registered = false;
   ~Output() {
     if (format != nullptr) {
       if (format->pb != nullptr) avio_closep(&format->pb);
@@ -326,6 +327,7 @@ struct Output {
       std::error_code ec;
       fs::remove(writePath, ec);
     }
+    if (registered) unregisterTemporary(writePath);
   }
 };
 
@@ -514,7 +516,13 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
   out.direct = av::isDevice(output);  // e.g. /dev/null: written in place, in the parts' container
   const AVOutputFormat* container = joinedContainer(out, output, ref, outLoc);
   out.writePath = output;
-  if (!out.direct) out.writePath.replace_filename(fmt::format(".{}.{}.tmp", output.filename().string(), ::getpid()));
+  if (!out.direct) {
+    out.writePath.replace_filename(fmt::format(".{}.{}.tmp", output.filename().string(), ::getpid()));
+    removeStaleTemporaries(output);  // a join that was killed (SIGKILL) left its temporary behind
+    // A SIGINT/SIGTERM that ends the process removes it (core/temp_files.hpp).
+    registerTemporary(out.writePath, output);
+    out.registered = true;
+  }
   const std::string url = "file:" + out.writePath.string();
   const SourceLoc where{output.string()};
   const AVStream* stream = createJoinMuxer(out, container, url, ref, where);

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "jobs/render_jobs.hpp"
 #include "bench_size.hpp"
 #include "draw/scene_drawer.hpp"
+#include "jobs/render_jobs.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"
@@ -25,7 +25,8 @@ namespace {
 // benchmark, for experiments; the lollipop by default.
 std::string benchScenePath() {
   const char* name = std::getenv("ROLLSPIN_BENCH_SCENE");
-  return std::string(rollspin::bench::kSceneDir) + "/" + (name != nullptr && *name != '\0' ? name : "lollipop") + ".toml";
+  return std::string(rollspin::bench::kSceneDir) + "/" + (name != nullptr && *name != '\0' ? name : "lollipop") +
+         ".toml";
 }
 
 std::vector<std::string> sizeOverrides() {
@@ -51,7 +52,7 @@ void BM_RenderFrame1080p(benchmark::State& state) {
   // ROLLSPIN_SHADER_DIR: time edited shaders without rebuilding (development).
   const char* shaderDir = std::getenv("ROLLSPIN_SHADER_DIR");
   render::Renderer renderer(*context, render::ShaderLibrary{shaderDir != nullptr ? shaderDir : ""});
-  renderer.setRetainLayers(false);  // a still's cost: the frame drawn whole
+  renderer.setRetainLayers(false);            // a still's cost: the frame drawn whole
   (void)renderer.render(drawer.draw(frame));  // warm-up: shader JIT, uploads
   // CPU time of the whole process (llvmpipe's worker threads included): on a
   // busy shared machine wall time mostly measures the neighbours, this does
@@ -138,7 +139,12 @@ void BM_ClipFrames1080p(benchmark::State& state) {
                  (state.range(0) == 1 ? ", camera follows the ball" : ", fixed camera") +
                  (count == 300 ? ", the whole clip in order" : ""));
 }
-BENCHMARK(BM_ClipFrames1080p)->Args({0, 24})->Args({1, 24})->Args({0, 300})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ClipFrames1080p)
+    ->Args({0, 24})
+    ->Args({1, 24})
+    ->Args({0, 300})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // The CPU-side half alone: (scene, orientations) → DrawList.
 void BM_DrawList1080p(benchmark::State& state) {

@@ -10,11 +10,11 @@
 #include <memory>
 #include <string>
 
+#include "bench_size.hpp"
 #include "geometry/analytic_paths.hpp"
 #include "model/rolling_model.hpp"
 #include "motion/solve_job.hpp"
 #include "scene/scene_loader.hpp"
-#include "bench_size.hpp"
 #include "spin/propagator.hpp"
 
 using namespace rollspin;
@@ -23,8 +23,8 @@ namespace {
 
 std::unique_ptr<geometry::ContactPath> lollipop() {
   auto plane = std::make_shared<const geometry::Plane>(Eigen::Vector3d::UnitZ());
-  return std::make_unique<geometry::PlaneCirclePath>(plane, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 3.0,
-                                                     1.0, true);
+  return std::make_unique<geometry::PlaneCirclePath>(plane, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 3.0, 1.0,
+                                                     true);
 }
 
 double errorWith(const geometry::ContactPath& path, spin::Method m, long long steps) {
@@ -85,7 +85,9 @@ void runAdaptiveAtAccuracy(benchmark::State& state, spin::Method m, double targe
   state.counters["error"] = error;
   state.counters["tolerance"] = tol;
 }
-static void BM_LollipopRevolution_Rk45_1e11(benchmark::State& s) { runAdaptiveAtAccuracy(s, spin::Method::Rk45, 1e-11); }
+static void BM_LollipopRevolution_Rk45_1e11(benchmark::State& s) {
+  runAdaptiveAtAccuracy(s, spin::Method::Rk45, 1e-11);
+}
 BENCHMARK(BM_LollipopRevolution_Rk45_1e11)->Unit(benchmark::kMicrosecond);
 static void BM_LollipopRevolution_Magnus6_1e11(benchmark::State& s) { runAtAccuracy(s, spin::Method::Magnus6, 1e-11); }
 BENCHMARK(BM_LollipopRevolution_Magnus6_1e11)->Unit(benchmark::kMicrosecond);

@@ -30,6 +30,8 @@
 
 #include <unistd.h>
 
+#include "core/error.hpp"
+#include "core/temp_files.hpp"
 #include "heap_huge_pages.hpp"
 #include "jobs/animation_job.hpp"
 #include "jobs/export_job.hpp"
@@ -40,8 +42,6 @@
 #include "jobs/scene_print.hpp"
 #include "jobs/timeline_csv.hpp"
 #include "jobs/viewer_job.hpp"
-#include "core/error.hpp"
-#include "core/temp_files.hpp"
 #include "media/image_io.hpp"
 #include "media/sink_factory.hpp"
 #include "model/rolling_model.hpp"
@@ -68,7 +68,7 @@ struct SceneSource {
   std::string name;                 // the path as given, or "<string>"
   std::optional<std::string> text;  // loads(): the TOML itself
   std::vector<std::string> overrides;
-  std::string sceneName;            // load_output(): the name the output's job records
+  std::string sceneName;  // load_output(): the name the output's job records
 };
 
 // One still size and alpha of a scene: the drawing job (spec with the size
@@ -183,11 +183,14 @@ class Scene {
       // The step count the solve settles on (refined until its error
       // estimate is met), as `rollspin timeline` samples with.
       (void)motion::solveScene(spec_, model_, choice);
-      stats = jobs::sampleTimeline(model_, choice, samples, [&](std::size_t index, const jobs::TimelineRow& row) {
-        for (py::ssize_t c = 0; c < columns; ++c) out[c * rows + static_cast<py::ssize_t>(index)] = row.values[c];
-        if (segmented) segmentOut[index] = static_cast<long long>(row.segment);
-        if (surfaced) surfaceOut[index] = static_cast<long long>(row.surface);
-      }, source_.name);
+      stats = jobs::sampleTimeline(
+          model_, choice, samples,
+          [&](std::size_t index, const jobs::TimelineRow& row) {
+            for (py::ssize_t c = 0; c < columns; ++c) out[c * rows + static_cast<py::ssize_t>(index)] = row.values[c];
+            if (segmented) segmentOut[index] = static_cast<long long>(row.segment);
+            if (surfaced) surfaceOut[index] = static_cast<long long>(row.surface);
+          },
+          source_.name);
     }
     py::list names;
     for (const auto name : jobs::kTimelineColumns) names.append(std::string(name));
@@ -197,7 +200,8 @@ class Scene {
   }
 
   // B(s) at each arc length (N × 3), from the field code the solver uses.
-  [[nodiscard]] py::array_t<double> field(const py::array_t<double, py::array::c_style | py::array::forcecast>& s) const {
+  [[nodiscard]] py::array_t<double> field(
+      const py::array_t<double, py::array::c_style | py::array::forcecast>& s) const {
     const double length = model_.path->length();
     const auto n = s.size();
     const double* sd = s.data();
@@ -224,8 +228,8 @@ class Scene {
     auto found = stills_.find(key);
     if (found != stills_.end()) return *found->second;
     auto still = std::make_unique<StillJob>();
-    still->request = {source_.name, source_.overrides, {}, width, height, transparent, {},
-                      media::OutputUse::Still, 0, source_.text};
+    still->request = {source_.name, source_.overrides,       {}, width,       height, transparent,
+                      {},           media::OutputUse::Still, 0,  source_.text};
     still->job = jobs::prepareDrawJob(still->request);
     // As `render --still`: a scene with [figure] keys keeps the figure's composition.
     if (jobs::setsFigureKeys(still->job.spec)) still->job.figureText = jobs::fitTextToFigure(still->job.spec);
@@ -257,8 +261,8 @@ struct Image {
   // before a figure's text is fitted (loading it lays it out again).
   [[nodiscard]] media::OutputMetadata metadata(const scene::SceneSpec& unfitted, bool figure) const {
     return jobs::outputMetadata(unfitted, still->job.model,
-                               {figure ? jobs::JobRecord::Kind::Figure : jobs::JobRecord::Kind::Still, unfitted.name, at,
-                                std::nullopt, jobs::setsFigureKeys(unfitted)});
+                                {figure ? jobs::JobRecord::Kind::Figure : jobs::JobRecord::Kind::Still, unfitted.name,
+                                 at, std::nullopt, jobs::setsFigureKeys(unfitted)});
   }
 
   [[nodiscard]] fs::path save(const fs::path& path) const {
@@ -289,8 +293,9 @@ struct Image {
     std::string bytes;
     {
       py::gil_scoped_release release;
-      const fs::path file = fs::temp_directory_path() / ("rollspin-repr-" + std::to_string(::getpid()) + "-" +
-                                                       std::to_string(reinterpret_cast<std::uintptr_t>(this)) + ".png");
+      const fs::path file =
+          fs::temp_directory_path() / ("rollspin-repr-" + std::to_string(::getpid()) + "-" +
+                                       std::to_string(reinterpret_cast<std::uintptr_t>(this)) + ".png");
       media::writePng(file, pixels.view(),
                       still->job.spec.render.transparent ? media::PngChannels::Rgba : media::PngChannels::Rgb);
       std::ifstream in(file, std::ios::binary);
@@ -324,9 +329,9 @@ std::shared_ptr<Image> renderStillImage(const std::shared_ptr<const Scene>& scen
 
 // An animation through the CLI's job: (written ("" for nothing), frames written, frames
 // requested, the signal that stopped it or 0).
-py::tuple renderClip(const std::shared_ptr<const Scene>& scene, const fs::path& output, std::optional<std::string> frames,
-                     std::optional<std::string> quality, std::optional<long long> width,
-                     std::optional<long long> height, bool transparent, bool quiet,
+py::tuple renderClip(const std::shared_ptr<const Scene>& scene, const fs::path& output,
+                     std::optional<std::string> frames, std::optional<std::string> quality,
+                     std::optional<long long> width, std::optional<long long> height, bool transparent, bool quiet,
                      std::function<void(long long, long long)> onFrame) {
   jobs::AnimationOptions o;
   o.scenePath = scene->source().name;
@@ -345,7 +350,8 @@ py::tuple renderClip(const std::shared_ptr<const Scene>& scene, const fs::path& 
     py::gil_scoped_release release;
     const std::lock_guard lock(sharedGl().mutex);
     dropSharedGl();  // the animation job makes its own context
-    (void)python::markHeapForHugePages(width.value_or(scene->spec().render.width), height.value_or(scene->spec().render.height));
+    (void)python::markHeapForHugePages(width.value_or(scene->spec().render.width),
+                                       height.value_or(scene->spec().render.height));
     result = jobs::renderAnimation(o);
   }
   return py::make_tuple(result.written.string(), result.framesWritten, result.framesRequested, result.interruptedBy);
@@ -381,8 +387,8 @@ void translateErrors() {
       const py::module_ errors = py::module_::import("rollspin._errors");
       const py::object make = errors.attr("_from_core");
       const SourceLoc& at = e.where();
-      const py::object error = make(e.kind() == ErrorKind::BadInput, std::string(e.what()), e.message(), at.file,
-                                    at.line, at.column);
+      const py::object error =
+          make(e.kind() == ErrorKind::BadInput, std::string(e.what()), e.message(), at.file, at.line, at.column);
       PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(error.ptr())), error.ptr());
     }
   });
@@ -391,23 +397,33 @@ void translateErrors() {
 }  // namespace
 
 PYBIND11_MODULE(_rollspin, m) {
-  m.doc() = "rollspin's C++ core (scene loader, solve, timeline, still, figure and animation jobs); "
-            "use the `rollspin` package's API, not this module directly.";
+  m.doc() =
+      "rollspin's C++ core (scene loader, solve, timeline, still, figure and animation jobs); "
+      "use the `rollspin` package's API, not this module directly.";
   translateErrors();
   m.attr("SOURCE_SCENES") = rollspin::python::kSourceScenes;
 
   py::class_<Scene, std::shared_ptr<Scene>>(m, "Scene")
-      .def_static("load", [](const std::string& path, const std::vector<std::string>& overrides) {
-        return Scene::open({path, std::nullopt, overrides});
-      }, py::arg("path"), py::arg("overrides") = std::vector<std::string>{})
-      .def_static("loads", [](const std::string& text, const std::string& name, const std::vector<std::string>& overrides) {
-        return Scene::open({name, text, overrides});
-      }, py::arg("text"), py::arg("name") = "<string>", py::arg("overrides") = std::vector<std::string>{})
+      .def_static(
+          "load",
+          [](const std::string& path, const std::vector<std::string>& overrides) {
+            return Scene::open({path, std::nullopt, overrides});
+          },
+          py::arg("path"), py::arg("overrides") = std::vector<std::string>{})
+      .def_static(
+          "loads",
+          [](const std::string& text, const std::string& name, const std::vector<std::string>& overrides) {
+            return Scene::open({name, text, overrides});
+          },
+          py::arg("text"), py::arg("name") = "<string>", py::arg("overrides") = std::vector<std::string>{})
       // An output that remembers its scene (jobs/remembered_output.hpp): a still, figure, clip or timeline.
-      .def_static("load_output", [](const std::string& path, const std::vector<std::string>& overrides) {
-        const jobs::RememberedOutput remembered = jobs::readRememberedOutput(path);
-        return Scene::open({remembered.sourceName, remembered.metadata.scene, overrides, remembered.sceneName});
-      }, py::arg("path"), py::arg("overrides") = std::vector<std::string>{})
+      .def_static(
+          "load_output",
+          [](const std::string& path, const std::vector<std::string>& overrides) {
+            const jobs::RememberedOutput remembered = jobs::readRememberedOutput(path);
+            return Scene::open({remembered.sourceName, remembered.metadata.scene, overrides, remembered.sceneName});
+          },
+          py::arg("path"), py::arg("overrides") = std::vector<std::string>{})
       .def("with_overrides", &Scene::withOverrides, py::arg("overrides"))
       .def("toml", &Scene::toml)
       .def("solve", &Scene::solve)
@@ -430,26 +446,32 @@ PYBIND11_MODULE(_rollspin, m) {
       .def_property_readonly("s", [](const Image& i) { return i.s; })
       .def_property_readonly("transparent", [](const Image& i) { return i.still->job.spec.render.transparent; })
       // H × W × 4 uint8, a view of the image's own pixels (kept alive by the array).
-      .def_property_readonly("array", [](const std::shared_ptr<Image>& i) {
-        auto* owner = new std::shared_ptr<Image>(i);
-        py::capsule keep(owner, [](void* p) { delete static_cast<std::shared_ptr<Image>*>(p); });
-        return py::array_t<std::uint8_t>({i->pixels.height, i->pixels.width, 4}, i->pixels.rgba.data(), keep);
-      })
+      .def_property_readonly(
+          "array",
+          [](const std::shared_ptr<Image>& i) {
+            auto* owner = new std::shared_ptr<Image>(i);
+            py::capsule keep(owner, [](void* p) { delete static_cast<std::shared_ptr<Image>*>(p); });
+            return py::array_t<std::uint8_t>({i->pixels.height, i->pixels.width, 4}, i->pixels.rgba.data(), keep);
+          })
       .def("save", &Image::save, py::arg("path"))
       .def("png", &Image::png);
 
   // Where a bare scene name is looked for: the package names its own data
   // folders (the executable is python3, whose ../share is not rollspin's).
-  m.def("set_scene_folders", [](const std::vector<fs::path>& folders) { scene::setProgramSceneFolders(folders); },
-        py::arg("folders"));
+  m.def(
+      "set_scene_folders", [](const std::vector<fs::path>& folders) { scene::setProgramSceneFolders(folders); },
+      py::arg("folders"));
   m.def("scene_folders", [] { return scene::sceneFolders(); });
   m.def("scene_search", [] { return scene::sceneSearchText(); });
   // The CLI's spinor angle ψ in [0, 4π) and its axis (`rollspin solve`).
-  m.def("spinor_angle", [](double w, double x, double y, double z) {
-    const spin::Su2 q{w, x, y, z};
-    const auto axis = spin::rotationAngleAxis(q).axis;
-    return py::make_tuple(spin::spinorAngle(q), py::make_tuple(axis.x(), axis.y(), axis.z()));
-  }, py::arg("qw"), py::arg("qx"), py::arg("qy"), py::arg("qz"));
+  m.def(
+      "spinor_angle",
+      [](double w, double x, double y, double z) {
+        const spin::Su2 q{w, x, y, z};
+        const auto axis = spin::rotationAngleAxis(q).axis;
+        return py::make_tuple(spin::spinorAngle(q), py::make_tuple(axis.x(), axis.y(), axis.z()));
+      },
+      py::arg("qw"), py::arg("qx"), py::arg("qy"), py::arg("qz"));
   m.def("still", &renderStillImage, py::arg("scene"), py::arg("at") = std::nullopt, py::arg("width") = std::nullopt,
         py::arg("height") = std::nullopt, py::arg("transparent") = false);
   m.def("render", &renderClip, py::arg("scene"), py::arg("output"), py::arg("frames") = std::nullopt,
@@ -457,12 +479,15 @@ PYBIND11_MODULE(_rollspin, m) {
         py::arg("transparent") = false, py::arg("quiet") = true, py::arg("on_frame") = py::none());
   m.def("viewer_html", &viewerHtml, py::arg("scene"));
   m.def("export_gltf", &exportGltf, py::arg("scene"), py::arg("path"), py::arg("metadata") = true);
-  m.def("drop_gl", [] {
-          py::gil_scoped_release release;
-          const std::lock_guard lock(sharedGl().mutex);
-          dropSharedGl();
-        },
-        "Destroy the shared still renderer's GL context (a fresh one is made by the next still).");
-  m.def("huge_pages_marked", [] { return python::markHeapForHugePages(0, 0); },
-        "Bytes of malloc's heap marked for huge pages before the first GL context (0: not applicable here).");
+  m.def(
+      "drop_gl",
+      [] {
+        py::gil_scoped_release release;
+        const std::lock_guard lock(sharedGl().mutex);
+        dropSharedGl();
+      },
+      "Destroy the shared still renderer's GL context (a fresh one is made by the next still).");
+  m.def(
+      "huge_pages_marked", [] { return python::markHeapForHugePages(0, 0); },
+      "Bytes of malloc's heap marked for huge pages before the first GL context (0: not applicable here).");
 }

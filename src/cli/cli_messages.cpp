@@ -73,8 +73,9 @@ std::string describeParseError(const CLI::App& cli, const CLI::ParseError& error
 
 std::string withMemoryWayOut(const std::string& message) {
   if (message.find("out of memory") == std::string::npos) return message;
-  return message + "; to need less, render with --set render.msaa=1 (no multisampling), a smaller size "
-                   "(--width/--height, or --quality low for a clip), or raise the limit (ulimit -v)";
+  return message +
+         "; to need less, render with --set render.msaa=1 (no multisampling), a smaller size "
+         "(--width/--height, or --quality low for a clip), or raise the limit (ulimit -v)";
 }
 
 }  // namespace rollspin::cli

@@ -37,11 +37,12 @@ int runScenes(const HelpOptions& o) {
     if (o.names) fmt::print("{}\n", s.name);
     else fmt::print("{:<{}}  {}\n", s.name, width, s.description);
   }
-  if (!o.names) fmt::print("\nRun one with `rollspin render NAME --still` or `rollspin solve NAME`; folders: {}\n", [] {
-    std::string list;
-    for (const auto& f : scene::sceneFolders()) list += (list.empty() ? "" : ", ") + f.string();
-    return list;
-  }());
+  if (!o.names)
+    fmt::print("\nRun one with `rollspin render NAME --still` or `rollspin solve NAME`; folders: {}\n", [] {
+      std::string list;
+      for (const auto& f : scene::sceneFolders()) list += (list.empty() ? "" : ", ") + f.string();
+      return list;
+    }());
   return 0;
 }
 
@@ -49,10 +50,12 @@ int runScenes(const HelpOptions& o) {
 
 void registerHelpCommands(CLI::App& cli, CommandHandler& handler) {
   auto options = std::make_shared<HelpOptions>();
-  cli.footer("SCENE: a TOML file, or a bundled scene's name (`rollspin scenes` lists them). Every scene key: "
-             "`rollspin keys [SECTION]`. More: `man rollspin`, `rollspin COMMAND --help`.");
+  cli.footer(
+      "SCENE: a TOML file, or a bundled scene's name (`rollspin scenes` lists them). Every scene key: "
+      "`rollspin keys [SECTION]`. More: `man rollspin`, `rollspin COMMAND --help`.");
 
-  CLI::App* keys = cli.add_subcommand("keys", "List every scene key with its default, allowed values, units and meaning");
+  CLI::App* keys =
+      cli.add_subcommand("keys", "List every scene key with its default, allowed values, units and meaning");
   keys->add_option("section", options->section, "Only this table (ball, surface, path, render, animation, …)");
   keys->add_flag("--markdown", options->markdown, "Print the scene reference as Markdown (docs/scene-reference.md)");
   keys->callback([options, &handler] {
@@ -69,11 +72,15 @@ void registerHelpCommands(CLI::App& cli, CommandHandler& handler) {
   // Run by the build (src/cli/CMakeLists.txt) and listed in --help.
   CLI::App* generate = cli.add_subcommand(
       "generate", "Print the man page or a bash/zsh completion script (what `cmake --install` puts in place)");
-  generate->add_option("what", options->what, "man | bash | zsh")->required()->check(CLI::IsMember({"man", "bash", "zsh"}));
+  generate->add_option("what", options->what, "man | bash | zsh")
+      ->required()
+      ->check(CLI::IsMember({"man", "bash", "zsh"}));
   generate->callback([options, &cli, &handler] {
     handler = [options, &cli] {
       const std::string& w = options->what;
-      fmt::print("{}", w == "man" ? manPage(cli, ROLLSPIN_VERSION) : w == "bash" ? bashCompletion(cli) : zshCompletion(cli));
+      fmt::print("{}", w == "man"    ? manPage(cli, ROLLSPIN_VERSION)
+                       : w == "bash" ? bashCompletion(cli)
+                                     : zshCompletion(cli));
       return 0;
     };
   });

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "cli/commands.hpp"
-#include "jobs/interrupt_guard.hpp"
 #include "core/error.hpp"
+#include "jobs/interrupt_guard.hpp"
 #include "media/join_parts.hpp"
 
 namespace rollspin::cli {
@@ -24,7 +24,8 @@ struct JoinOptions {
 };
 
 int runJoin(const JoinOptions& o) {
-  if (o.output.empty()) throw badInput({"-o"}, "expected -o OUT, the joined clip's file name (e.g. -o output/clip.mp4)");
+  if (o.output.empty())
+    throw badInput({"-o"}, "expected -o OUT, the joined clip's file name (e.g. -o output/clip.mp4)");
   const media::SidecarFormats sidecarFormats = media::parseSidecarFormats(o.subtitles, "--subtitles");
   const std::vector<std::filesystem::path> parts(o.parts.begin(), o.parts.end());
   // A Ctrl-C stops between packets and leaves nothing (not even the temporary file).
@@ -47,12 +48,13 @@ int runJoin(const JoinOptions& o) {
 void registerJoinCommand(CLI::App& cli, CommandHandler& handler) {
   auto options = std::make_shared<JoinOptions>();
   CLI::App* join = cli.add_subcommand(
-      "join", "Join the parts of a split render (render --shard K/N) into one clip: checked, stream copy, no re-encode");
+      "join",
+      "Join the parts of a split render (render --shard K/N) into one clip: checked, stream copy, no re-encode");
   join->add_option("parts", options->parts, "The part files (any order), e.g. output/clip.part-*-of-8.mp4")->required();
   join->add_option("-o,--output", options->output, "The joined clip (same container as the parts)");
   join->add_option("--subtitles", options->subtitles,
-                    "The joined clip's captions as files beside it: vtt (NAME.vtt, the default), srt (NAME.vtt "
-                    "and NAME.srt) or none");
+                   "The joined clip's captions as files beside it: vtt (NAME.vtt, the default), srt (NAME.vtt "
+                   "and NAME.srt) or none");
   join->add_flag("--quiet", options->quiet, "No summary line");
   join->callback([options, &handler] { handler = [options] { return runJoin(*options); }; });
 }

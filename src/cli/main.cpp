@@ -10,14 +10,14 @@
 #include <string>
 #include <vector>
 
-#include "jobs/address_space.hpp"
 #include "cli/cli_messages.hpp"
 #include "cli/commands.hpp"
-#include "jobs/huge_pages.hpp"
 #include "cli/version_info.hpp"
 #include "core/error.hpp"
 #include "core/stage_log.hpp"
 #include "core/temp_files.hpp"
+#include "jobs/address_space.hpp"
+#include "jobs/huge_pages.hpp"
 
 namespace {
 
@@ -114,7 +114,8 @@ int main(int argc, char** argv) {
   bool verbose = false;
   cli.add_flag("-v,--verbose", verbose, "List the pipeline stages as they run");
   bool versionShown = false;  // handled before parsing (printedVersion); listed for --help
-  cli.add_flag("--version", versionShown, "Print the version and git describe (with --verbose, the GL backend) and exit");
+  cli.add_flag("--version", versionShown,
+               "Print the version and git describe (with --verbose, the GL backend) and exit");
   CommandHandler handler;
   registerCommands(cli, handler);
   if (printedVersion(argc, argv)) return 0;

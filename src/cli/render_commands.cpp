@@ -9,12 +9,12 @@
 #include <optional>
 #include <vector>
 
-#include "jobs/animation_job.hpp"
 #include "cli/commands.hpp"
+#include "core/output_path.hpp"
+#include "core/text.hpp"
+#include "jobs/animation_job.hpp"
 #include "jobs/remembered_output.hpp"
 #include "jobs/render_jobs.hpp"
-#include "core/text.hpp"
-#include "core/output_path.hpp"
 #include "media/image_compare.hpp"
 #include "media/image_io.hpp"
 
@@ -33,8 +33,8 @@ struct RenderCliOptions {
   long long width = 0, height = 0;
   std::string frames, quality, shard, subtitles;
   bool quiet = false;
-  std::string from;          // --from FILE: an output that remembers its scene and job
-  bool noMetadata = false;   // --no-metadata
+  std::string from;                           // --from FILE: an output that remembers its scene and job
+  bool noMetadata = false;                    // --no-metadata
   bool atGiven = false, framesGiven = false;  // by the flag, or by the job --from remembers
 };
 
@@ -99,7 +99,8 @@ int runRender(RenderCliOptions& o, const CLI::App& command) {
     throw badInput({"render"}, "give a scene file (or a bundled scene's name), or --from FILE");
   if (!o.stillFlag) return runAnimation(o, command);
   for (const char* animationOnly : {"--frames", "--shard", "--quality", "--subtitles"})
-    if (command.count(animationOnly) > 0) throw badInput({animationOnly}, "applies to animations only (without --still)");
+    if (command.count(animationOnly) > 0)
+      throw badInput({animationOnly}, "applies to animations only (without --still)");
   if (o.atGiven) o.still.at = o.at;
   if (command.count("--width") > 0) o.still.width = o.width;
   if (command.count("--height") > 0) o.still.height = o.height;
@@ -198,8 +199,8 @@ void printText(const CompareOptions& o, const std::vector<ReferenceResult>& resu
 }
 
 int runCompareChecked(const CompareOptions& o) {
-  for (const auto& [flag, value] : {std::pair{"--max-delta", std::optional<double>(o.maxDelta)},
-                                    std::pair{"--mean-delta", o.meanDelta}})
+  for (const auto& [flag, value] :
+       {std::pair{"--max-delta", std::optional<double>(o.maxDelta)}, std::pair{"--mean-delta", o.meanDelta}})
     if (value && !(*value >= 0.0 && *value <= 255.0))
       throw badInput({flag}, "expected a tolerance in [0, 255], got {}", *value);
   if (o.minSsim && !(*o.minSsim >= -1.0 && *o.minSsim <= 1.0))
@@ -274,16 +275,17 @@ int runCompareChecked(const CompareOptions& o) {
           measured(std::to_string(d.differingPixels)), measured(std::to_string(r.overMaxDelta)),
           measured(fmt::format("{:.9f}", r.ssim)), r.pass, jsonList(r.failed), jsonList(r.why));
     }
-    fmt::print("{{\n  \"image\": {},\n  \"width\": {},\n  \"height\": {},\n  \"pass\": {},\n  \"matched\": {},\n"
-               "  \"thresholds\": {{\"max_delta\": {}, \"max_pixels\": {}, \"mean_delta\": {}, \"min_ssim\": {}}},\n"
-               "  \"diff\": {},\n  \"references\": [\n{}\n  ]\n}}\n",
-               jsonString(o.a), a.width, a.height, pass, pass ? jsonString(results[best].path) : "null",
-               jsonNumber(o.maxDelta),
-               o.maxPixels.empty() ? "0" : jsonString(o.maxPixels), jsonNumber(o.meanDelta), jsonNumber(o.minSsim),
-               o.diff.empty() ? "null" : jsonString(o.diff), refs);
+    fmt::print(
+        "{{\n  \"image\": {},\n  \"width\": {},\n  \"height\": {},\n  \"pass\": {},\n  \"matched\": {},\n"
+        "  \"thresholds\": {{\"max_delta\": {}, \"max_pixels\": {}, \"mean_delta\": {}, \"min_ssim\": {}}},\n"
+        "  \"diff\": {},\n  \"references\": [\n{}\n  ]\n}}\n",
+        jsonString(o.a), a.width, a.height, pass, pass ? jsonString(results[best].path) : "null",
+        jsonNumber(o.maxDelta), o.maxPixels.empty() ? "0" : jsonString(o.maxPixels), jsonNumber(o.meanDelta),
+        jsonNumber(o.minSsim), o.diff.empty() ? "null" : jsonString(o.diff), refs);
   } else {
     printText(o, results, a);
-    if (results.size() > 1) fmt::print("{}\n", pass ? "matches " + results[best].path : "DIFFERENT from every reference");
+    if (results.size() > 1)
+      fmt::print("{}\n", pass ? "matches " + results[best].path : "DIFFERENT from every reference");
   }
   return pass ? 0 : 1;
 }
@@ -304,8 +306,9 @@ int runCompare(const CompareOptions& o) {
 void registerRenderCommands(CLI::App& cli, CommandHandler& handler) {
   auto options = std::make_shared<RenderCliOptions>();
   CLI::App* render =
-      cli.add_subcommand("render", "Render a scene: a clip (MP4, WebM, MOV, GIF or PNG frames), or with --still an "
-                                   "image (PNG, JPEG) or a figure (PDF, SVG)");
+      cli.add_subcommand("render",
+                         "Render a scene: a clip (MP4, WebM, MOV, GIF or PNG frames), or with --still an "
+                         "image (PNG, JPEG) or a figure (PDF, SVG)");
   render->add_option("scene", options->still.scenePath,
                      "Scene file (TOML), or a bundled scene's name (rollspin scenes); or give --from FILE");
   render->add_option("--from", options->from,
@@ -319,7 +322,8 @@ void registerRenderCommands(CLI::App& cli, CommandHandler& handler) {
                      "Output; its extension picks the format: a clip FILE.mp4|.webm|.mov|.gif or a folder for PNG "
                      "frames; with --still FILE.png|.jpg|.pdf|.svg (default: output/<scene>.mp4, or "
                      "output/<scene>.png; render.format overrides)");
-  render->add_option("--frames", options->frames, "Render only frames FIRST:LAST (0-based, inclusive) of the animation");
+  render->add_option("--frames", options->frames,
+                     "Render only frames FIRST:LAST (0-based, inclusive) of the animation");
   render->add_option("--shard", options->shard,
                      "Render the K-th of N near-equal frame ranges (K/N, 1-based) to NAME.part-K-of-N.mp4 "
                      "(PNG frames: into the clip's folder); `rollspin join` makes the parts whole");
@@ -334,21 +338,23 @@ void registerRenderCommands(CLI::App& cli, CommandHandler& handler) {
   const std::string sides = fmt::format("({}..{})", scene::kMinImageSide, scene::kMaxImageSide);
   render->add_option("--width", options->width, "Image width in pixels " + sides);
   render->add_option("--height", options->height, "Image height in pixels " + sides);
-  render->add_flag("--transparent", options->still.transparent, "No background: alpha in a PNG still or PNG frames, a WebM (VP9) or MOV "
-                                                         "(ProRes 4444) clip, a PDF/SVG figure; GIF: 1-bit");
+  render->add_flag("--transparent", options->still.transparent,
+                   "No background: alpha in a PNG still or PNG frames, a WebM (VP9) or MOV "
+                   "(ProRes 4444) clip, a PDF/SVG figure; GIF: 1-bit");
   render->add_option("--set", options->still.overrides, "Override a scene key: --set key.sub=value (repeatable)");
   render->add_option("--layout-json", options->still.layoutJson,
                      "With --still and a PDF/SVG figure: also write its layout (text boxes, plates, arrows, paths; "
                      "page points) as JSON");
-  render->add_option("--shader-dir", options->shaderDir, "Read shaders from this folder instead of the built-in copies");
-  render->callback([options, render, &handler] {
-    handler = [options, render] { return runRender(*options, *render); };
-  });
+  render->add_option("--shader-dir", options->shaderDir,
+                     "Read shaders from this folder instead of the built-in copies");
+  render->callback(
+      [options, render, &handler] { handler = [options, render] { return runRender(*options, *render); }; });
 
   auto compare = std::make_shared<CompareOptions>();
   CLI::App* cmp = cli.add_subcommand(
-      "compare", "Compare an image with one or more references (exit 0: matches one, 1: differs from all, 2: bad "
-                 "input or environment)");
+      "compare",
+      "Compare an image with one or more references (exit 0: matches one, 1: differs from all, 2: bad "
+      "input or environment)");
   cmp->add_option("a", compare->a, "The image to check (PNG/JPG)")->required();
   cmp->add_option("references", compare->references, "Reference images: passes if any one matches")->required();
   // Out-of-range tolerances are bad input (exit 2), not "different": checked in runCompare.
@@ -357,10 +363,12 @@ void registerRenderCommands(CLI::App& cli, CommandHandler& handler) {
   cmp->add_option("--max-pixels", compare->maxPixels,
                   "How many pixels may differ by more than --max-delta: a count or a percentage (e.g. 0.1%; "
                   "default 0)");
-  cmp->add_option("--mean-delta", compare->meanDelta, "Largest allowed mean per-channel difference (not checked "
-                                                      "by default)");
-  cmp->add_option("--min-ssim", compare->minSsim, "Smallest allowed SSIM of the luma (Gaussian 11x11 window; 1 is "
-                                                  "identical; not checked by default)");
+  cmp->add_option("--mean-delta", compare->meanDelta,
+                  "Largest allowed mean per-channel difference (not checked "
+                  "by default)");
+  cmp->add_option("--min-ssim", compare->minSsim,
+                  "Smallest allowed SSIM of the luma (Gaussian 11x11 window; 1 is "
+                  "identical; not checked by default)");
   cmp->add_option("--diff", compare->diff, "Write a heat map of the difference (PNG) against the best reference");
   cmp->add_flag("--json", compare->json, "Print the measurements and the verdict as JSON");
   cmp->callback([compare, &handler] { handler = [compare] { return runCompare(*compare); }; });

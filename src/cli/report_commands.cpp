@@ -5,16 +5,16 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <system_error>
 #include <memory>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "cli/commands.hpp"
-#include "model/rolling_model.hpp"
 #include "core/error.hpp"
 #include "core/output_path.hpp"
 #include "core/temp_files.hpp"
+#include "model/rolling_model.hpp"
 #include "report/report.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -69,8 +69,8 @@ int runErrors(const ReportArgs& a) {
     for (const std::string& file : a.scenes) {
       const scene::SceneSpec spec = scene::loadSceneFile(file, a.overrides);
       RollingModel model = buildModel(spec);
-      scenes.push_back({spec.name, model.path->describe(), std::shared_ptr<const geometry::ContactPath>(std::move(model.path)),
-                        model.ballRadius});
+      scenes.push_back({spec.name, model.path->describe(),
+                        std::shared_ptr<const geometry::ContactPath>(std::move(model.path)), model.ballRadius});
     }
   }
   return writeReport(a, [&](report::ReportOptions options) {
@@ -85,11 +85,14 @@ void registerReportCommands(CLI::App& cli, CommandHandler& handler) {
   auto args = std::make_shared<ReportArgs>();
   CLI::App* report = cli.add_subcommand("report", "Accuracy and cost reports (output/report/)");
   report->require_subcommand(1);
-  auto addOut = [&](CLI::App* c) { c->add_option("-o,--output-dir", args->outDir, "Output folder (default output/report)"); };
+  auto addOut = [&](CLI::App* c) {
+    c->add_option("-o,--output-dir", args->outDir, "Output folder (default output/report)");
+  };
 
   CLI::App* errors = report->add_subcommand("errors", "Error against run time for every method (CSV, PNG, Markdown)");
-  errors->add_option("scenes", args->scenes, "Scene files or bundled scenes' names (default: a built-in set: plane, sphere outside/inside, "
-                                             "torus knot, clothoid, stiff lollipop)");
+  errors->add_option("scenes", args->scenes,
+                     "Scene files or bundled scenes' names (default: a built-in set: plane, sphere outside/inside, "
+                     "torus knot, clothoid, stiff lollipop)");
   errors->add_option("--set", args->overrides, "Override a key in every given scene: --set key.sub=value");
   addOut(errors);
   errors->callback([args, &handler] { handler = [args] { return runErrors(*args); }; });

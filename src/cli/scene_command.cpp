@@ -46,8 +46,9 @@ int runScene(const SceneOptions& o) {
 
 void registerSceneCommand(CLI::App& cli, CommandHandler& handler) {
   auto options = std::make_shared<SceneOptions>();
-  CLI::App* sceneCmd = cli.add_subcommand("scene", "Show a scene as the engine will run it, or the scene an output "
-                                                   "remembers (--from)");
+  CLI::App* sceneCmd = cli.add_subcommand("scene",
+                                          "Show a scene as the engine will run it, or the scene an output "
+                                          "remembers (--from)");
   sceneCmd->add_option("scene", options->scenePath, "Scene file (TOML), or a bundled scene's name (rollspin scenes)");
   sceneCmd->add_option("--set", options->overrides, "Override a scene key: --set key.sub=value (repeatable)");
   sceneCmd->add_flag("--print", options->print, "Print the fully resolved scene as TOML");

@@ -3,26 +3,26 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "cli/commands.hpp"
-#include "jobs/scene_print.hpp"
-#include "motion/frame_clock.hpp"
-#include "model/rolling_model.hpp"
-#include "motion/solve_job.hpp"
-#include "jobs/timeline_csv.hpp"
-#include "scene/scene_loader.hpp"
-#include "scene/scene_writer.hpp"
 #include "core/output_path.hpp"
 #include "core/stage_log.hpp"
+#include "jobs/scene_print.hpp"
+#include "jobs/timeline_csv.hpp"
+#include "model/rolling_model.hpp"
+#include "motion/frame_clock.hpp"
+#include "motion/solve_job.hpp"
+#include "scene/scene_loader.hpp"
+#include "scene/scene_writer.hpp"
 #include "spin/su2.hpp"
 
 namespace rollspin::cli {
@@ -63,8 +63,9 @@ int runSolve(const SolveOptions& o) {
         "  \"error_estimate\": {},\n  \"error_estimate_basis\": \"{}\",\n"
         "  \"error_estimate_seconds\": {:.6g},\n  \"error_estimate_skipped\": {}\n}}\n",
         spec.name, model.path->length(), spin::methodName(choice.method), stats.steps, q.w, q.x, q.y, q.z, aa.angle,
-        aa.axis.x(), aa.axis.y(), aa.axis.z(), psi, stats.unitarityError, stats.seconds, jsonNumber(stats.errorEstimate),
-        stats.errorEstimateBasis, stats.errorEstimateSeconds, spec.solver.errorEstimate ? "false" : "true");
+        aa.axis.x(), aa.axis.y(), aa.axis.z(), psi, stats.unitarityError, stats.seconds,
+        jsonNumber(stats.errorEstimate), stats.errorEstimateBasis, stats.errorEstimateSeconds,
+        spec.solver.errorEstimate ? "false" : "true");
     return 0;
   }
   constexpr double deg = 180.0 / std::numbers::pi;
@@ -74,10 +75,10 @@ int runSolve(const SolveOptions& o) {
   fmt::print("length           {:.17g}\n", model.path->length());
   fmt::print("method           {} ({} steps{})\n", spin::methodName(choice.method), stats.steps,
              choice.method == spin::Method::Exact ? ", closed form"
-             : spin::isAdaptive(choice.method)    ? fmt::format(", adaptive, tolerance {:g}, {} rejected",
-                                                                choice.tolerance, stats.rejectedSteps)
-             : choice.automaticSteps              ? ", automatic"
-                                                  : "");
+             : spin::isAdaptive(choice.method)
+                 ? fmt::format(", adaptive, tolerance {:g}, {} rejected", choice.tolerance, stats.rejectedSteps)
+             : choice.automaticSteps ? ", automatic"
+                                     : "");
   fmt::print("quaternion       [{:.17g}, {:.17g}, {:.17g}, {:.17g}]  (qw, qx, qy, qz)\n", q.w, q.x, q.y, q.z);
   fmt::print("rotation angle   {:.17g} rad ({:.12g} deg)\n", aa.angle, aa.angle * deg);
   fmt::print("rotation axis    [{:.17g}, {:.17g}, {:.17g}]\n", aa.axis.x(), aa.axis.y(), aa.axis.z());
@@ -88,8 +89,7 @@ int runSolve(const SolveOptions& o) {
   if (spec.solver.errorEstimate)
     fmt::print("error estimate   {:.2g} rad  ({}; took {:.3g} s)\n", stats.errorEstimate, stats.errorEstimateBasis,
                stats.errorEstimateSeconds);
-  else
-    fmt::print("error estimate   {}\n", stats.errorEstimateBasis);
+  else fmt::print("error estimate   {}\n", stats.errorEstimateBasis);
   return 0;
 }
 
@@ -117,7 +117,7 @@ std::vector<double> readArcLengths(const std::string& path, double length) {
 }
 
 int runTimeline(const SolveOptions& o) {
-  if (!o.output.empty()) {  // before the solve, not after
+  if (!o.output.empty()) {                          // before the solve, not after
     checkOutputFile(o.output, {"-o " + o.output});  // a folder, a missing folder: said first
     (void)jobs::timelineFormatOf(o.output, {"-o " + o.output});
   }
@@ -130,7 +130,8 @@ int runTimeline(const SolveOptions& o) {
   std::vector<double> atS;  // --at-s: the file's arc lengths instead of the scene's sampling
   if (!o.atS.empty()) atS = readArcLengths(o.atS, model.path->length());
   const spin::SampleArcLengths samples = atS.empty() ? timelineArcLengths(spec, model) : spin::SampleArcLengths(atS);
-  const std::filesystem::path out = o.output.empty() ? defaultOutputFile(spec.name + ".csv") : std::filesystem::path(o.output);
+  const std::filesystem::path out =
+      o.output.empty() ? defaultOutputFile(spec.name + ".csv") : std::filesystem::path(o.output);
   createOutputParent(out);  // output/: only now, with the timeline solved
   const spin::SolveStats stats =
       jobs::writeTimelineFile(out, model, choice, samples, solved, {scene::writeScene(spec), o.commentHeader});
@@ -145,17 +146,21 @@ void registerSolveCommands(CLI::App& cli, CommandHandler& handler) {
   auto options = std::make_shared<SolveOptions>();
 
   CLI::App* solve = cli.add_subcommand("solve", "Propagate the rolling spinor and print the final orientation");
-  solve->add_option("scene", options->scenePath, "Scene file (TOML), or a bundled scene's name (rollspin scenes)")->required();
+  solve->add_option("scene", options->scenePath, "Scene file (TOML), or a bundled scene's name (rollspin scenes)")
+      ->required();
   solve->add_option("--set", options->overrides, "Override a scene key: --set key.sub=value (repeatable)");
   solve->add_flag("--json", options->json, "Print JSON");
   solve->callback([options, &handler] { handler = [options] { return runSolve(*options); }; });
 
-  CLI::App* timeline = cli.add_subcommand("timeline", "Write the orientation timeline as CSV (with a NAME.csv.json "
-                                                      "sidecar), JSON, or numpy's .npy/.npz");
-  timeline->add_option("scene", options->scenePath, "Scene file (TOML), or a bundled scene's name (rollspin scenes)")->required();
+  CLI::App* timeline = cli.add_subcommand("timeline",
+                                          "Write the orientation timeline as CSV (with a NAME.csv.json "
+                                          "sidecar), JSON, or numpy's .npy/.npz");
+  timeline->add_option("scene", options->scenePath, "Scene file (TOML), or a bundled scene's name (rollspin scenes)")
+      ->required();
   timeline->add_option("--set", options->overrides, "Override a scene key: --set key.sub=value (repeatable)");
-  timeline->add_option("-o,--output", options->output,
-                       "Output: its extension picks the format, .csv, .json, .npy or .npz (default: output/<scene>.csv)");
+  timeline->add_option(
+      "-o,--output", options->output,
+      "Output: its extension picks the format, .csv, .json, .npy or .npz (default: output/<scene>.csv)");
   timeline->add_flag("--comment-header", options->commentHeader,
                      "CSV: put the '# rollspin timeline: method, steps, error estimate' line above the header row");
   timeline->add_option("--at-s", options->atS,

@@ -14,9 +14,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path folderOf(const fs::path& p) {
-  return p.has_parent_path() ? p.parent_path() : fs::path(".");
-}
+fs::path folderOf(const fs::path& p) { return p.has_parent_path() ? p.parent_path() : fs::path("."); }
 
 // The nearest ancestor of `p` that exists (p itself included), "." at worst.
 fs::path nearestExisting(fs::path p) {
@@ -54,8 +52,7 @@ void requireNoFileInTheWay(const fs::path& folder, const fs::path& output, const
 void checkOutputFile(const fs::path& file, const SourceLoc& where) {
   std::error_code ec;
   const fs::file_status status = fs::status(file, ec);
-  if (fs::is_directory(status))
-    throw badInput(where, "'{}' is a directory; give a file name", file.string());
+  if (fs::is_directory(status)) throw badInput(where, "'{}' is a directory; give a file name", file.string());
   if (fs::exists(status) && !fs::is_regular_file(status)) return;  // a device or pipe, written in place
   if (!file.has_filename() || file.filename() == "." || file.filename() == "..")
     throw badInput(where, "'{}' names a folder; give a file name", file.string());
@@ -82,8 +79,9 @@ void createOutputParent(const fs::path& file) {
   if (!file.has_parent_path()) return;
   std::error_code ec;
   fs::create_directories(file.parent_path(), ec);
-  if (ec) throw runtimeError(SourceLoc{file.string()}, "cannot create the folder {}: {}", file.parent_path().string(),
-                             ec.message());
+  if (ec)
+    throw runtimeError(SourceLoc{file.string()}, "cannot create the folder {}: {}", file.parent_path().string(),
+                       ec.message());
 }
 
 }  // namespace rollspin

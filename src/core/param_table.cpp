@@ -8,7 +8,7 @@ std::string ParamDecl::range() const {
   switch (type) {
     case ParamType::Number:
       return lowerBound == -std::numeric_limits<double>::infinity() ? "any finite number"
-                                                                      : fmt::format("> {}", lowerBound);
+                                                                    : fmt::format("> {}", lowerBound);
     case ParamType::Direction: return "a non-zero vector [x, y, z] (normalised)";
     case ParamType::Choice: {
       std::string out;

@@ -25,12 +25,12 @@ struct ParamDecl {
   std::string key;
   ParamType type = ParamType::Number;
   ParamValue defaultValue = 0.0;
-  std::string units;    // "length", "" for none
-  std::string meaning;  // one line
+  std::string units;                                             // "length", "" for none
+  std::string meaning;                                           // one line
   double lowerBound = -std::numeric_limits<double>::infinity();  // Number: exclusive
-  std::string noun = "a value";         // Number: "expected <noun> > lowerBound" in messages
-  std::vector<std::string> choices;     // Choice: the accepted words, the default first
-  std::vector<std::string> variables;   // Expression: its free variables
+  std::string noun = "a value";                                  // Number: "expected <noun> > lowerBound" in messages
+  std::vector<std::string> choices;                              // Choice: the accepted words, the default first
+  std::vector<std::string> variables;                            // Expression: its free variables
 
   // The allowed range as one line: "> 0", "\"outside\" | \"inside\"", ...
   [[nodiscard]] std::string range() const;

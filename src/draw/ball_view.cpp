@@ -10,11 +10,11 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/stage_log.hpp"
+#include "draw/clip_layout.hpp"
 #include "draw/draw_facts.hpp"
 #include "draw/draw_style.hpp"
 #include "draw/surface_looks.hpp"
 #include "draw/text_blocks.hpp"
-#include "draw/clip_layout.hpp"
 #include "render/mesh_builders.hpp"
 #include "render/procedural_textures.hpp"
 
@@ -29,8 +29,13 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
                    std::shared_ptr<const render::TextureImage> ballTexture,
                    std::shared_ptr<const motion::SceneFacts> facts, const Vec3& markerBody,
                    std::shared_ptr<render::MeshData> dotMesh, FigureText figureText)
-    : spec_(spec), figureText_(figureText), model_(model), markerBody_(markerBody), ballTexture_(std::move(ballTexture)),
-      facts_(std::move(facts)), dotMesh_(std::move(dotMesh)) {
+    : spec_(spec),
+      figureText_(figureText),
+      model_(model),
+      markerBody_(markerBody),
+      ballTexture_(std::move(ballTexture)),
+      facts_(std::move(facts)),
+      dotMesh_(std::move(dotMesh)) {
   const double R = model.ballRadius;
   const double length = model.path->length();
   const int samples = 1 + static_cast<int>(std::clamp(480.0 * std::max(1.0, model.path->turns()), 480.0, 20000.0));
@@ -60,12 +65,10 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
   // whole sphere, or its own chart.
   const geometry::SurfaceLook look = model.surface ? model.surface->look() : geometry::SurfaceLook{};
   SurfaceAsDrawn shape{nullptr, matteCheckerMaterial(), box, {}, {}, {}, {}};
-  if (model.surface && look.mesh == geometry::SurfaceLook::Mesh::Board)
-    shape = boardSurface(look, box, R);
+  if (model.surface && look.mesh == geometry::SurfaceLook::Mesh::Board) shape = boardSurface(look, box, R);
   else if (model.surface && look.mesh == geometry::SurfaceLook::Mesh::Sphere)
     shape = sphereSurface(look, box, spec, model, pathPoints_);
-  else if (model.surface)
-    shape = chartSurface(*model.surface, box, R, pathPoints_, extent_.points);
+  else if (model.surface) shape = chartSurface(*model.surface, box, R, pathPoints_, extent_.points);
   surfaceMesh_ = std::move(shape.mesh);
   surfaceMaterial_ = shape.material;
   cutRim_ = std::move(shape.cutRim);
@@ -101,7 +104,8 @@ void BallView::framePlate(Vec3& lo, Vec3& hi) {
   plateCircleCentre_ = std::abs(kg) > 1e-12 ? Vec3(start.point + start.tangentNormal / kg) : Vec3(start.point);
   hi = hi.cwiseMax(model_.plate->initialTopPoint + 0.2 * R * start.normal.cwiseAbs());
   const std::size_t pathFramePoints = extent_.points.size();
-  for (std::size_t i = 0; i < pathFramePoints; ++i) extent_.points.push_back(extent_.points[i] + 1.2 * R * start.normal);
+  for (std::size_t i = 0; i < pathFramePoints; ++i)
+    extent_.points.push_back(extent_.points[i] + 1.2 * R * start.normal);
   // The glass disc reaches beyond the path (the plate's marked point
   // circles at R1 = 2r): its rim, wherever the plate moves, must stay in
   // frame and inside the far plane.
@@ -297,15 +301,17 @@ void BallView::addBall(render::DrawList& list, const OrientedSample& pose, int v
   markerMaterial.shininess = 80.0f;
   const Vec3 c = model_.path->at(pose.s).centre(R);
   const glm::mat4 worldFromBody = rotationOf(pose.q);
-  list.meshes.push_back({sphereMesh_,
-                         glm::translate(glm::mat4(1.0f), toGlm(c)) * worldFromBody * glm::scale(glm::mat4(1.0f), glm::vec3(float(R))),
-                         ballMaterial, view});
+  list.meshes.push_back(
+      {sphereMesh_,
+       glm::translate(glm::mat4(1.0f), toGlm(c)) * worldFromBody * glm::scale(glm::mat4(1.0f), glm::vec3(float(R))),
+       ballMaterial, view});
   list.meshes.back().dynamic = true;
   list.meshes.back().sphere = true;
   const Vec3 marker = c + 0.97 * R * pose.q.rotate(markerBody_);
-  list.meshes.push_back({dotMesh_,
-                         glm::translate(glm::mat4(1.0f), toGlm(marker)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.13 * R))),
-                         markerMaterial, view});
+  list.meshes.push_back(
+      {dotMesh_,
+       glm::translate(glm::mat4(1.0f), toGlm(marker)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.13 * R))),
+       markerMaterial, view});
   list.meshes.back().dynamic = true;
   list.meshes.back().sphere = true;
 }
@@ -345,7 +351,7 @@ void BallView::addPlate(render::DrawList& list, double s, int view) const {
   disc[3] = glm::vec4(toGlm(discCentre), 1.0f);
   list.meshes.push_back({discMesh_, disc, glassMaterial({0.55f, 0.80f, 0.95f}, 0.14f, 0.9f, 120.0f), view});
   list.meshes.back().dynamic = true;  // the plate moves with the ball
-  render::PolylineItem rim;  // the glass edge, so the plate reads as a sheet
+  render::PolylineItem rim;           // the glass edge, so the plate reads as a sheet
   rim.color = opaqueLine({0.85f, 0.95f, 1.0f}, 0.9f);
   rim.widthPx = std::max(1.2f, float(list.height) / 450.0f);
   rim.view = view;
@@ -419,16 +425,18 @@ void BallView::addMarks(render::DrawList& list, double s, bool plateShown, int v
     dot.castsShadow = false;
     const geometry::DarbouxSample f = model_.path->at(m.s[k]);
     const Vec3 onPath = f.point + 0.02 * R * f.normal;
-    list.meshes.push_back({dotMesh_,
-                           glm::translate(glm::mat4(1.0f), toGlm(onPath)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.06 * R))),
-                           dot, view});
+    list.meshes.push_back(
+        {dotMesh_,
+         glm::translate(glm::mat4(1.0f), toGlm(onPath)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.06 * R))), dot,
+         view});
     list.meshes.back().figureDisc = true;  // a vector disc in PDF/SVG figures
     list.meshes.back().sphere = true;
     if (model_.plate && plateShown && done) {
       const Vec3 onPlate = platePoint(m.s[k], 0.06 * R);
-      list.meshes.push_back({dotMesh_,
-                             glm::translate(glm::mat4(1.0f), toGlm(onPlate)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.05 * R))),
-                             dot, view});
+      list.meshes.push_back(
+          {dotMesh_,
+           glm::translate(glm::mat4(1.0f), toGlm(onPlate)) * glm::scale(glm::mat4(1.0f), glm::vec3(float(0.05 * R))),
+           dot, view});
       list.meshes.back().figureDisc = true;
       list.meshes.back().sphere = true;
     }
@@ -454,10 +462,11 @@ std::vector<TextBlock> BallView::textBlocks(const FrameOrientations& frame, floa
   // where there is room.
   TextBlock& facts = blocks[0];
   facts.slots = {Slot::TopLeft, Slot::TopRight};
-  facts.keep = 3;  // the heading and the first fact; later lines give way where there is no room
+  facts.keep = 3;      // the heading and the first fact; later lines give way where there is no room
   facts.givesWay = 0;  // before the running values
-  facts.lines.push_back({frame.strobe.empty() ? "rolling ball" : fmt::format("rolling ball at {} positions", frame.strobe.size()),
-                         text * 1.1f, true, kTextColor, false});
+  facts.lines.push_back(
+      {frame.strobe.empty() ? "rolling ball" : fmt::format("rolling ball at {} positions", frame.strobe.size()),
+       text * 1.1f, true, kTextColor, false});
   if (facts_) {
     const std::vector<FactLine> lines = factLines(*facts_, frame, model_.path->length());
     // Lines too long for the view shrink rather than leave it.
@@ -497,7 +506,8 @@ void BallView::markImportant(Occupancy& occupancy, const render::View& v, double
   const glm::vec2 ball = project(model_.path->at(s).centre(R), depth);
   // A sphere's outline is a little wider than R f / depth; its shadow and
   // the marker dot stay within 1.15 R of the centre.
-  if (depth > float(R)) occupancy.disc(ball, 1.15f * float(R) * focalPx / std::sqrt(depth * depth - float(R * R)) + 2.0f);
+  if (depth > float(R))
+    occupancy.disc(ball, 1.15f * float(R) * focalPx / std::sqrt(depth * depth - float(R * R)) + 2.0f);
   // The marker's trail lies on the ball's positions before s: seen by this
   // camera (which may move with s: follow, orbit), their discs bound it.
   if (withPath && spec_.render.trails)
@@ -526,11 +536,13 @@ void BallView::markImportant(Occupancy& occupancy, const render::View& v, double
   for (const std::vector<geometry::Vec3>& edge : framedEdges_)
     markCurve([&](std::size_t i) { return edge[i]; }, edge.size());
   const std::size_t step = std::max<std::size_t>(1, pathPoints_.size() / 400);
-  if (withPath) markCurve([&](std::size_t i) { return pathPoints_[std::min(i * step, pathPoints_.size() - 1)]; },
-                          (pathPoints_.size() + step - 1) / step + 1);
+  if (withPath)
+    markCurve([&](std::size_t i) { return pathPoints_[std::min(i * step, pathPoints_.size() - 1)]; },
+              (pathPoints_.size() + step - 1) / step + 1);
   if (model_.plate && spec_.render.strobe <= 1)
-    markCurve([&](std::size_t i) { return platePoint(std::min(pathS_[std::min(i * step, pathS_.size() - 1)], s), 0.0); },
-              (pathS_.size() + step - 1) / step + 1);
+    markCurve(
+        [&](std::size_t i) { return platePoint(std::min(pathS_[std::min(i * step, pathS_.size() - 1)], s), 0.0); },
+        (pathS_.size() + step - 1) / step + 1);
 }
 
 }  // namespace rollspin::draw

@@ -11,11 +11,11 @@
 #include <vector>
 
 #include "draw/camera_framing.hpp"
+#include "draw/figure_text.hpp"
 #include "model/rolling_model.hpp"
 #include "motion/frame_sampling.hpp"
 #include "motion/scene_facts.hpp"
 #include "render/draw_list.hpp"
-#include "draw/figure_text.hpp"
 #include "scene/scene_spec.hpp"
 
 namespace rollspin::draw {
@@ -92,10 +92,10 @@ class BallView {
   std::vector<geometry::Vec3> pathPoints_;  // dense samples of P(s)
   std::vector<double> pathS_;
   std::size_t trailGridCount_ = 0;  // the trail grid's points (frame_sampling.hpp)
-  double shownStart_ = 0.0;             // showWholeArcLength
+  double shownStart_ = 0.0;         // showWholeArcLength
   std::optional<double> shownLength_;
   FrameExtent extent_;
-  std::size_t centrePoints_ = 0;  // extent_.points' first: the ball's centres over the clip
+  std::size_t centrePoints_ = 0;            // extent_.points' first: the ball's centres over the clip
   std::vector<std::size_t> surfacePoints_;  // extent_.points on the surface (ascending)
   std::shared_ptr<const render::TextureImage> ballTexture_;
   std::shared_ptr<const motion::SceneFacts> facts_;
@@ -103,7 +103,8 @@ class BallView {
   render::Material surfaceMaterial_;
   geometry::Vec3 plateCircleCentre_ = geometry::Vec3::Zero();
   std::vector<geometry::Vec3> cutRim_;
-  std::vector<std::vector<geometry::Vec3>> framedEdges_;  // stretches of the surface's edge the framing holds  // inside a sphere: the edge of the cut-away
+  std::vector<std::vector<geometry::Vec3>>
+      framedEdges_;  // stretches of the surface's edge the framing holds  // inside a sphere: the edge of the cut-away
 };
 
 }  // namespace rollspin::draw

@@ -4,10 +4,10 @@
 
 #include <algorithm>
 #include <bit>
-#include <tuple>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <numbers>
+#include <tuple>
 
 #include "draw/draw_style.hpp"
 #include "motion/frame_clock.hpp"
@@ -173,8 +173,8 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
     if (freeCamera(shot)) {
       const motion::FrameClock clock(model.path->length(), spec);
       const double seconds = double(clock.motionFrames()) / clock.fps().value();
-      const Unhidden u = unhiddenAngles(sceneAngles, 0.0, model.path->length(), !azimuthGiven, !elevationGiven, true,
-                                        360.0, seconds);
+      const Unhidden u =
+          unhiddenAngles(sceneAngles, 0.0, model.path->length(), !azimuthGiven, !elevationGiven, true, 360.0, seconds);
       shot.azimuth = u.angles.azimuth;
       shot.elevation = u.angles.elevation;
       shot.orbits = u.orbits;
@@ -288,10 +288,8 @@ std::vector<std::string> CameraFraming::hiddenWarnings() const { return hiddenWa
 // lines at the clip's frames (every frame, or about 600 spread over a long
 // clip) and name the seconds it hides the ball in.
 void CameraFraming::findHiddenSpans() {
-  if (!extent_.surface)
-    return;
-  if (model_.surface && model_.surface->look().cutAwayTowardEye)
-    return; // cut open towards the eye
+  if (!extent_.surface) return;
+  if (model_.surface && model_.surface->look().cutAwayTowardEye) return;  // cut open towards the eye
   const motion::FrameClock clock = motion::clipClock(spec_, model_);
   const long long frames = clock.frameCount();
   const long long step = std::max<long long>(1, frames / 600);
@@ -358,10 +356,14 @@ CameraFraming::Aim CameraFraming::aimOf(const Shot &shot, int w, int h, double s
 }
 
 std::pair<Vec3, double> CameraFraming::framedFit(const OrbitAngles &a, double fovDeg, double aspect, bool held) const {
-  const FitKey key{std::bit_cast<std::uint64_t>(a.azimuth), std::bit_cast<std::uint64_t>(a.elevation),
-                   std::bit_cast<std::uint64_t>(fovDeg),    std::bit_cast<std::uint64_t>(aspect),
-                   std::bit_cast<std::uint64_t>(window_.x0), std::bit_cast<std::uint64_t>(window_.x1),
-                   std::bit_cast<std::uint64_t>(window_.y0), std::bit_cast<std::uint64_t>(window_.y1),
+  const FitKey key{std::bit_cast<std::uint64_t>(a.azimuth),
+                   std::bit_cast<std::uint64_t>(a.elevation),
+                   std::bit_cast<std::uint64_t>(fovDeg),
+                   std::bit_cast<std::uint64_t>(aspect),
+                   std::bit_cast<std::uint64_t>(window_.x0),
+                   std::bit_cast<std::uint64_t>(window_.x1),
+                   std::bit_cast<std::uint64_t>(window_.y0),
+                   std::bit_cast<std::uint64_t>(window_.y1),
                    (std::uint64_t(innerEdges_.left) << 0) | (std::uint64_t(innerEdges_.right) << 1) |
                        (std::uint64_t(innerEdges_.bottom) << 2) | (std::uint64_t(innerEdges_.top) << 3) |
                        (std::uint64_t(held) << 4)};
@@ -479,7 +481,8 @@ void CameraFraming::keepOffViewEdges(const Vec3 &target, double &distance, const
       for (std::size_t i = 0; i < extent_.points.size(); ++i) {
         const Vec3 d = extent_.points[i] - target;
         const double w = std::max(distance - d.dot(toEye), 1e-9), pad = extent_.padOf(i, R);
-        const double hi = (d.dot(axes[axis]) + pad) / (w * tans[axis]), lo = -(d.dot(axes[axis]) - pad) / (w * tans[axis]);
+        const double hi = (d.dot(axes[axis]) + pad) / (w * tans[axis]),
+                     lo = -(d.dot(axes[axis]) - pad) / (w * tans[axis]);
         for (const auto &[reach, limit] : {std::pair{hi, limitHi}, std::pair{lo, limitLo}}) {
           if (reach <= limit || limit <= 0.0) continue;
           // reach · w / (w + (k − 1) distance) = limit
@@ -556,5 +559,3 @@ render::View CameraFraming::ballCamera(int x, int y, int w, int h, double s, con
 }
 
 }  // namespace rollspin::draw
-
-

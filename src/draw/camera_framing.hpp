@@ -193,8 +193,7 @@ class CameraFraming {
   // Moves `target` across the view so that the outline stays inside the
   // inner edges, as far as the subject's points stay inside the window,
   // then steps back by up to kOutlineStepBack where it is still cut.
-  void holdOutline(geometry::Vec3 &target, double &distance, const OrbitAngles &a, double fovDeg,
-                   double aspect) const;
+  void holdOutline(geometry::Vec3 &target, double &distance, const OrbitAngles &a, double fovDeg, double aspect) const;
   // How far back holdOutline may step (a slightly wider framing).
   static constexpr double kOutlineStepBack = 1.2;
   // Steps back where the subject's points (padded by R) come closer than

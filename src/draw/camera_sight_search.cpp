@@ -62,7 +62,8 @@ struct SightEyes {
   double followDistance;
 
   [[nodiscard]] Vec3 still(const OrbitAngles &a) const {
-    const auto [target, distance] = fitPoints(extent.points, model.ballRadius, a, spec.render.fovDeg, aspect, extent.pads);
+    const auto [target, distance] =
+        fitPoints(extent.points, model.ballRadius, a, spec.render.fovDeg, aspect, extent.pads);
     return Vec3(target + spec.render.distance.value_or(distance) * towardEye(a));
   }
   // The eye at s for the orbit angles a (`still`: the still eye for a).
@@ -82,8 +83,8 @@ struct StillCandidate {
 // segment may also look from lower down, `mayLower`: round a torus's tube
 // or down a sphere's meridian the ball passes under the rim a high view
 // sees.) A view from below stays below.
-std::vector<StillCandidate> stillViewsNear(const OrbitAngles &base, bool azimuthFree, bool elevationFree,
-                                           bool mayLower, double maxTurnDeg) {
+std::vector<StillCandidate> stillViewsNear(const OrbitAngles &base, bool azimuthFree, bool elevationFree, bool mayLower,
+                                           double maxTurnDeg) {
   std::vector<StillCandidate> candidates;
   const double below = base.elevation < 0.0 ? -1.0 : 1.0;
   for (const double turn : {0.0, 30.0, -30.0, 60.0, -60.0, 90.0, -90.0, 135.0, -135.0, 180.0}) {
@@ -295,12 +296,9 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(OrbitAngles base, double s
                                                       bool elevationFree, bool mayOrbit, double maxTurnDeg,
                                                       double seconds, bool mayLower, bool follow) const {
   Unhidden out{base, false, 0.0};
-  const bool cutOpen =
-      model_.surface && model_.surface->look().cutAwayTowardEye;
-  if (!extent_.surface || cutOpen || !(azimuthFree || elevationFree))
-    return out;
-  const double aspect = double(spec_.render.width) /
-                        double(std::max<long long>(spec_.render.height, 1));
+  const bool cutOpen = model_.surface && model_.surface->look().cutAwayTowardEye;
+  if (!extent_.surface || cutOpen || !(azimuthFree || elevationFree)) return out;
+  const double aspect = double(spec_.render.width) / double(std::max<long long>(spec_.render.height, 1));
   const double R = model_.ballRadius;
   const SightEyes eyes{spec_, model_, extent_, aspect, follow, fitDistance(4.0 * R, spec_.render.fovDeg, aspect)};
   const std::vector<StillCandidate> candidates = stillViewsNear(base, azimuthFree, elevationFree, mayLower, maxTurnDeg);
@@ -354,7 +352,8 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(OrbitAngles base, double s
   // view itself.
   const bool anchored = maxTurnDeg < 360.0;
   if (mayOrbit && azimuthFree && elevationFree && s1 > s0) {
-    if (const std::optional<TurningPath> path = turningWithBall(eyes, base, s0, s1, seconds, anchored, kMaxFreeMoveDeg)) {
+    if (const std::optional<TurningPath> path =
+            turningWithBall(eyes, base, s0, s1, seconds, anchored, kMaxFreeMoveDeg)) {
       std::vector<Keyframe> keys(path->s.size());
       for (std::size_t i = 0; i < keys.size(); ++i) keys[i] = {path->s[i], path->angles[i]};
       out = {keys.front().angles, false, 0.0, path->share};

@@ -10,7 +10,8 @@
 namespace rollspin::draw {
 
 Occupancy::Occupancy(int width, int height)
-    : width_(std::max(width, 1)), height_(std::max(height, 1)),
+    : width_(std::max(width, 1)),
+      height_(std::max(height, 1)),
       // About 160 cells across the view's height: fine enough for text rows.
       cell_(std::max(1.0f, float(std::max(height, 1)) / 160.0f)) {
   cellsX_ = int(std::ceil(float(width_) / cell_));
@@ -19,7 +20,8 @@ Occupancy::Occupancy(int width, int height)
 }
 
 void Occupancy::mark(int cx, int cy) {
-  if (cx >= 0 && cy >= 0 && cx < cellsX_ && cy < cellsY_) cells_[std::size_t(cy) * std::size_t(cellsX_) + std::size_t(cx)] = 1;
+  if (cx >= 0 && cy >= 0 && cx < cellsX_ && cy < cellsY_)
+    cells_[std::size_t(cy) * std::size_t(cellsX_) + std::size_t(cx)] = 1;
 }
 
 void Occupancy::disc(glm::vec2 c, float r) {
@@ -64,8 +66,10 @@ void Occupancy::disc(glm::vec2 c, float r) {
 }
 
 void Occupancy::rect(glm::vec2 lo, glm::vec2 hi) {
-  for (int y = std::max(0, int(std::floor(lo.y / cell_))); y <= std::min(cellsY_ - 1, int(std::floor(hi.y / cell_))); ++y)
-    for (int x = std::max(0, int(std::floor(lo.x / cell_))); x <= std::min(cellsX_ - 1, int(std::floor(hi.x / cell_))); ++x)
+  for (int y = std::max(0, int(std::floor(lo.y / cell_))); y <= std::min(cellsY_ - 1, int(std::floor(hi.y / cell_)));
+       ++y)
+    for (int x = std::max(0, int(std::floor(lo.x / cell_))); x <= std::min(cellsX_ - 1, int(std::floor(hi.x / cell_)));
+         ++x)
       mark(x, y);
 }
 
@@ -192,7 +196,8 @@ glm::vec2 blockSize(const TextBlock& block) {
     width = std::max(width, textWidthPx(l.text, l.sizePx, l.bold));
     height += kLineStep * l.sizePx;
   }
-  return glm::max(block.minSize, glm::vec2(width + 2.0f * pad, height + 2.0f * pad - 0.25f * block.lines.back().sizePx));
+  return glm::max(block.minSize,
+                  glm::vec2(width + 2.0f * pad, height + 2.0f * pad - 0.25f * block.lines.back().sizePx));
 }
 
 std::vector<std::string> wholeLines(const TextBlock& block) {
@@ -567,8 +572,8 @@ void addTextBlock(render::DrawList& list, const TextBlock& block, glm::vec2 orig
     // angle = ") stay: a retained layer keeps them (left-aligned only).
     if (line.live && !block.centred) l.staticPrefixBytes = wordsBeforeTheFirstNumber(line.text);
     // The anchor is the middle of the capital height.
-    const float x = block.centred ? origin.x + 0.5f * (size.x - textWidthPx(line.text, line.sizePx, line.bold))
-                                  : origin.x + pad;
+    const float x =
+        block.centred ? origin.x + 0.5f * (size.x - textWidthPx(line.text, line.sizePx, line.bold)) : origin.x + pad;
     l.anchor = glm::vec3(x, y + 0.5f * line.sizePx, 0.0f);
     l.sizePx = line.sizePx;
     l.bold = line.bold;

@@ -55,7 +55,8 @@ struct TextLine {
   float sizePx = 16.0f;
   bool bold = false;
   glm::vec4 color{0.0f, 0.0f, 0.0f, 1.0f};
-  bool live = true;  // its text may change every frame; false: the same over a span of frames (a retained layer keeps it)
+  bool live =
+      true;  // its text may change every frame; false: the same over a span of frames (a retained layer keeps it)
   bool continued = false;  // the rest of the line above, broken to fit (they stay or go together)
 };
 

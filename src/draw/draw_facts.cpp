@@ -87,7 +87,8 @@ void phaseLines(const PhaseSplitFact& p, bool endShown, std::vector<FactLine>& o
   out.push_back("  off by " + value(fmt::format("{:.1e} rad", std::abs(p.residual))));
   out.push_back("Berry: (1/2)∫|B| ds = " + value(fmt::format("{:.4f}", p.adiabaticDynamic)));
   out.push_back("−(1/2)Ω(B) = " + value(fmt::format("{:.6f}", p.berryGeometric)) + " (the blue cone)");
-  out.push_back(fmt::format("|Ω(B)| = 2π(1 − cos {:.1f}°) = {:.6f}", p.coneAngle / kDeg, 2.0 * std::abs(p.berryClosedForm)));
+  out.push_back(
+      fmt::format("|Ω(B)| = 2π(1 − cos {:.1f}°) = {:.6f}", p.coneAngle / kDeg, 2.0 * std::abs(p.berryClosedForm)));
 }
 
 }  // namespace
@@ -103,16 +104,10 @@ std::vector<FactLine> factLines(const SceneFacts& facts, const FrameOrientations
   const double labNow = spin::rotationAngleAxis(frame.current.q).angle;
   for (const scene::Fact f : facts.facts()) {
     switch (f) {
-      case scene::Fact::Delta:
-        deltaLines(*facts.delta, live, labNow, atEnd, endShown, facts.pathTurns(), out);
-        break;
+      case scene::Fact::Delta: deltaLines(*facts.delta, live, labNow, atEnd, endShown, facts.pathTurns(), out); break;
       case scene::Fact::Marks: marksLines(facts, frame, strobe, out); break;
-      case scene::Fact::Turns:
-        turnsLines(*facts.turns, live, atEnd, endShown, out);
-        break;
-      case scene::Fact::PhaseSplit:
-        phaseLines(*facts.phaseSplit, endShown, out);
-        break;
+      case scene::Fact::Turns: turnsLines(*facts.turns, live, atEnd, endShown, out); break;
+      case scene::Fact::PhaseSplit: phaseLines(*facts.phaseSplit, endShown, out); break;
     }
   }
   return out;
@@ -128,7 +123,8 @@ std::shared_ptr<render::MeshData> coneMesh(const std::vector<geometry::Vec3>& lo
     v.normal = glm::normalize(v.position);
     mesh->vertices.push_back(v);
   }
-  for (std::uint32_t i = 1; i + 1 < mesh->vertices.size(); ++i) mesh->indices.insert(mesh->indices.end(), {0, i, i + 1});
+  for (std::uint32_t i = 1; i + 1 < mesh->vertices.size(); ++i)
+    mesh->indices.insert(mesh->indices.end(), {0, i, i + 1});
   return mesh;
 }
 

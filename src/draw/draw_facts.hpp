@@ -28,7 +28,7 @@ struct FactLine {
   std::string text;
   bool live = false;
   FactLine(std::string t, bool isLive = false) : text(std::move(t)), live(isLive) {}  // NOLINT: implicit from text
-  FactLine(const char* t) : text(t) {}                                                 // NOLINT
+  FactLine(const char* t) : text(t) {}                                                // NOLINT
 };
 
 // The lines for the facts the scene shows, at the frame's s (live values

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <utility>
 #include <numbers>
+#include <utility>
 
 #include <glm/glm.hpp>
 

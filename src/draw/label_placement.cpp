@@ -32,7 +32,9 @@ bool inside(glm::vec2 p, const Box& b) { return p.x >= b.lo.x && p.x <= b.hi.x &
 
 // Whether the segments a–b and c–d cross.
 bool crossing(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d) {
-  auto side = [](glm::vec2 o, glm::vec2 p, glm::vec2 q) { return (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x); };
+  auto side = [](glm::vec2 o, glm::vec2 p, glm::vec2 q) {
+    return (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x);
+  };
   const float d1 = side(c, d, a), d2 = side(c, d, b), d3 = side(a, b, c), d4 = side(a, b, d);
   return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
 }
@@ -142,13 +144,17 @@ struct LabelBoxAt {
   glm::vec2 anchor;
   float width, pad, shift, sizePx;
   LabelBoxAt(const render::LabelItem& l, glm::vec2 anchor, bool nearestToAnchor)
-      : anchor(anchor), width(textWidthPx(l.text, l.sizePx, l.bold)),
+      : anchor(anchor),
+        width(textWidthPx(l.text, l.sizePx, l.bold)),
         pad((nearestToAnchor ? 0.125f : 0.25f) * l.sizePx),
-        shift(l.align == render::Align::Left ? 0.5f * width : l.align == render::Align::Right ? -0.5f * width : 0.0f),
+        shift(l.align == render::Align::Left    ? 0.5f * width
+              : l.align == render::Align::Right ? -0.5f * width
+                                                : 0.0f),
         sizePx(l.sizePx) {}
   [[nodiscard]] Box operator()(glm::vec2 offset) const {
     const glm::vec2 c = anchor + offset + glm::vec2(shift, 0.0f);
-    return Box{c - glm::vec2(0.5f * width + pad, 0.5f * sizePx + pad), c + glm::vec2(0.5f * width + pad, 0.5f * sizePx + pad)};
+    return Box{c - glm::vec2(0.5f * width + pad, 0.5f * sizePx + pad),
+               c + glm::vec2(0.5f * width + pad, 0.5f * sizePx + pad)};
   }
 };
 
@@ -214,10 +220,12 @@ void addLeaderLines(render::DrawList& list, int view, const std::vector<LabelLea
     const glm::vec2 d = centre - leader.anchor;
     const glm::vec2 half = 0.5f * (leader.box.hi - leader.box.lo);
     const float t = 1.0f - std::min(half.x / std::max(std::abs(d.x), 1e-3f), half.y / std::max(std::abs(d.y), 1e-3f));
-    const glm::vec2 start = leader.anchor + 0.25f * l.sizePx * glm::normalize(d), end = leader.anchor + std::max(t, 0.0f) * d;
+    const glm::vec2 start = leader.anchor + 0.25f * l.sizePx * glm::normalize(d),
+                    end = leader.anchor + std::max(t, 0.0f) * d;
     auto unproject = [&](glm::vec2 px) {
-      const glm::vec4 p = worldFromClip * glm::vec4(2.0f * px.x / float(v.width) - 1.0f, 1.0f - 2.0f * px.y / float(v.height),
-                                                    anchorClip.z / anchorClip.w, 1.0f);
+      const glm::vec4 p =
+          worldFromClip * glm::vec4(2.0f * px.x / float(v.width) - 1.0f, 1.0f - 2.0f * px.y / float(v.height),
+                                    anchorClip.z / anchorClip.w, 1.0f);
       return glm::vec3(p) / p.w;
     };
     render::PolylineItem line;

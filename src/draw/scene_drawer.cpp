@@ -72,8 +72,8 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
                          FigureText figureText)
     : spec_(spec), figureText_(figureText) {
   const geometry::DarbouxSample start = model.path->at(0.0);
-  markerBody_ = spec.ball.marker ? Vec3((*spec.ball.marker)[0], (*spec.ball.marker)[1], (*spec.ball.marker)[2])
-                                 : start.normal;
+  markerBody_ =
+      spec.ball.marker ? Vec3((*spec.ball.marker)[0], (*spec.ball.marker)[1], (*spec.ball.marker)[2]) : start.normal;
   markerBody_.normalize();
   stretches_ = motion::surfaceStretches(spec, model);
   if (stretches_.empty()) {
@@ -84,8 +84,8 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
   // Several surfaces: a drawer per stretch, each with the whole clip's
   // model for its twin and the whole clip's marker.
   for (const motion::SurfaceStretch& stretch : stretches_) {
-    parts_.push_back(std::unique_ptr<SceneDrawer>(
-        new SceneDrawer(stretch, model, ballTexture, facts, markerBody_, figureText_)));
+    parts_.push_back(
+        std::unique_ptr<SceneDrawer>(new SceneDrawer(stretch, model, ballTexture, facts, markerBody_, figureText_)));
   }
 }
 
@@ -109,8 +109,8 @@ void SceneDrawer::build(const RollingModel& model, const RollingModel& whole,
   // The band is as tall as the longest title of the clip needs.
   auto countLines = [&](const std::string& title) {
     if (shownTitle(title).empty()) return;
-    titleLines_ = std::max(titleLines_, draw::titleLines(title, text(), float(spec.render.width), float(spec.render.height),
-                                                         leastText(), figure())
+    titleLines_ = std::max(titleLines_, draw::titleLines(title, text(), float(spec.render.width),
+                                                         float(spec.render.height), leastText(), figure())
                                             .lines.size());
   };
   countLines(spec.render.title);
@@ -178,7 +178,9 @@ std::string SceneDrawer::shownTitle(const std::string& title) const {
   return fits ? title : std::string();
 }
 
-float SceneDrawer::text() const { return bodyTextPx(int(spec_.render.width), int(spec_.render.height), spec_.render.fontScale); }
+float SceneDrawer::text() const {
+  return bodyTextPx(int(spec_.render.width), int(spec_.render.height), spec_.render.fontScale);
+}
 
 std::vector<TextBlock> SceneDrawer::ballBlocks(const FrameOrientations& frame, float viewWidth) const {
   std::vector<TextBlock> blocks = ball_->textBlocks(frame, text());
@@ -190,8 +192,8 @@ std::vector<TextBlock> SceneDrawer::ballBlocks(const FrameOrientations& frame, f
   const Rects r = rects();
   const bool viewOnTheRight = !r.inset && r.ball.x + r.ball.width < int(spec_.render.width) && !blocks.empty();
   if (viewOnTheRight) std::erase(blocks[0].slots, Slot::TopRight);
-  blocks.push_back(captionBlock(captionBandLines_ > 0 ? std::string() : captionAt(frame.story), text(), leastText(),
-                                viewWidth));
+  blocks.push_back(
+      captionBlock(captionBandLines_ > 0 ? std::string() : captionAt(frame.story), text(), leastText(), viewWidth));
   for (TextBlock& b : blocks) {
     wrapToWidth(b, 0.94f * viewWidth, leastText());
     b.bandOnly = compactText(int(spec_.render.width), int(spec_.render.height));  // a column leaves no subject
@@ -203,8 +205,8 @@ std::vector<TextBlock> SceneDrawer::ballBlocks(const FrameOrientations& frame, f
 std::vector<TextBlock> SceneDrawer::twinBlocks(const FrameOrientations& frame, float viewWidth, bool inset) const {
   std::vector<TextBlock> blocks = twin_->textBlocks(inset, text(), 0.94f * viewWidth);
   if (spec_.render.layout == scene::RenderLayout::Twin)
-    blocks.push_back(captionBlock(captionBandLines_ > 0 ? std::string() : captionAt(frame.story), text(), leastText(),
-                                  viewWidth));
+    blocks.push_back(
+        captionBlock(captionBandLines_ > 0 ? std::string() : captionAt(frame.story), text(), leastText(), viewWidth));
   for (TextBlock& b : blocks) {
     wrapToWidth(b, 0.94f * viewWidth, leastText());
     b.bandOnly = compactText(int(spec_.render.width), int(spec_.render.height));
@@ -214,10 +216,13 @@ std::vector<TextBlock> SceneDrawer::twinBlocks(const FrameOrientations& frame, f
 
 const std::string& SceneDrawer::captionAt(const StoryPlace& story) const {
   static const std::string none;
-  return spec_.segments.empty() || !spec_.render.burnCaptions ? none : spec_.segments[std::min(story.segment, spec_.segments.size() - 1)].caption;
+  return spec_.segments.empty() || !spec_.render.burnCaptions
+             ? none
+             : spec_.segments[std::min(story.segment, spec_.segments.size() - 1)].caption;
 }
 
-bool SceneDrawer::captionCramped(const ViewLayout& layout, const std::vector<TextBlock>& blocks, float viewWidth) const {
+bool SceneDrawer::captionCramped(const ViewLayout& layout, const std::vector<TextBlock>& blocks,
+                                 float viewWidth) const {
   if (blocks.empty() || layout.lines.size() != blocks.size()) return false;
   const TextBlock& caption = blocks.back();  // ballBlocks, twinBlocks: the caption comes last
   if (caption.lines.empty()) return false;
@@ -233,9 +238,9 @@ bool SceneDrawer::moveCaptionsBelow(const ViewLayout& layout, const std::vector<
   if (!figure() || captionBandLines_ > 0 || !captionCramped(layout, blocks, viewWidth)) return false;
   for (const scene::SegmentSpec& segment : spec_.segments)
     if (!segment.caption.empty())
-      captionBandLines_ = std::max(
-          captionBandLines_,
-          captionBandLines(segment.caption, std::max(text(), leastText()), float(spec_.render.width)).size());
+      captionBandLines_ =
+          std::max(captionBandLines_,
+                   captionBandLines(segment.caption, std::max(text(), leastText()), float(spec_.render.width)).size());
   if (captionBandLines_ == 0) return false;
   ballLayout_ = twinLayout_ = ViewLayout{};
   ballReserved_.clear();
@@ -328,7 +333,7 @@ bool SceneDrawer::layOutBallView(const RollingModel& model, const Rects& r, doub
   // not beside it).
   if (!r.inset)
     camera_->setInnerEdges({r.ball.x > 0, r.ball.x + r.ball.width < int(spec_.render.width),
-                            r.ball.y + r.ball.height < int(spec_.render.height), r.ball.y > 0});
+                            r.ball.y + r.ball.height<int(spec_.render.height), r.ball.y> 0});
   const std::vector<TextBlock> blocks = widestBlocks(
       [&](const FrameOrientations& f) { return ballBlocks(f, float(r.ball.width)); }, samples, float(r.ball.width));
   for (const TextBlock& b : blocks) ballReserved_.push_back(b.minSize);
@@ -387,9 +392,9 @@ bool SceneDrawer::layOutBallView(const RollingModel& model, const Rects& r, doub
 // The twin view's text, and the window its camera frames the sphere into;
 // true where a caption moved below the views (lay out again).
 bool SceneDrawer::layOutTwinView(const Rects& r, double minWindow, const std::vector<FrameOrientations>& samples) {
-  const std::vector<TextBlock> blocks = widestBlocks(
-      [&](const FrameOrientations& f) { return twinBlocks(f, float(r.twin.width), r.inset); }, samples,
-      float(r.twin.width));
+  const std::vector<TextBlock> blocks =
+      widestBlocks([&](const FrameOrientations& f) { return twinBlocks(f, float(r.twin.width), r.inset); }, samples,
+                   float(r.twin.width));
   for (const TextBlock& b : blocks) twinReserved_.push_back(b.minSize);
   auto occupancyFor = [&](const NdcWindow& window) {
     twin_->setWindow(window);

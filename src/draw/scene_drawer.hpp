@@ -15,14 +15,14 @@
 #include <vector>
 
 #include "draw/ball_view.hpp"
-#include "draw/clip_layout.hpp"
 #include "draw/camera_framing.hpp"
+#include "draw/clip_layout.hpp"
 #include "draw/figure_text.hpp"
 #include "draw/twin_view.hpp"
+#include "model/rolling_model.hpp"
 #include "motion/frame_sampling.hpp"
 #include "motion/scene_facts.hpp"
 #include "motion/surface_stretches.hpp"
-#include "model/rolling_model.hpp"
 #include "render/draw_list.hpp"
 #include "scene/scene_spec.hpp"
 #include "spin/su2.hpp"
@@ -94,8 +94,8 @@ class SceneDrawer {
   SceneDrawer(const motion::SurfaceStretch& stretch, const RollingModel& whole,
               std::shared_ptr<const render::TextureImage> ballTexture, std::shared_ptr<const SceneFacts> facts,
               const geometry::Vec3& markerBody, FigureText figureText);
-  void build(const RollingModel& ball, const RollingModel& whole, std::shared_ptr<const render::TextureImage> ballTexture,
-             std::shared_ptr<const SceneFacts> facts);
+  void build(const RollingModel& ball, const RollingModel& whole,
+             std::shared_ptr<const render::TextureImage> ballTexture, std::shared_ptr<const SceneFacts> facts);
   // The stretch that shows segment k, and a frame in its own arc length
   // and segment numbers (its trail and strobe cut to the stretch).
   [[nodiscard]] std::size_t stretchOf(std::size_t segment) const;
@@ -110,9 +110,9 @@ class SceneDrawer {
     bool inset = false;
   };
   [[nodiscard]] Rects rects() const;
-  [[nodiscard]] float text() const;  // body text size in pixels
+  [[nodiscard]] float text() const;       // body text size in pixels
   [[nodiscard]] float leastText() const;  // the least text size in pixels (a figure's 6 pt; 0 in a clip)
-  [[nodiscard]] bool figure() const;  // text laid out for a printed size (jobs/figure_job)
+  [[nodiscard]] bool figure() const;      // text laid out for a printed size (jobs/figure_job)
   // The title as drawn: a figure leaves out one that needs over a fifth of its height.
   [[nodiscard]] std::string shownTitle(const std::string& title) const;
   [[nodiscard]] const std::string& captionAt(const StoryPlace& story) const;
@@ -125,25 +125,26 @@ class SceneDrawer {
   render::DrawList drawList(const FrameOrientations& frame, const FrameOrientations& whole) const;
   // Whether a caption would break narrower than kLeastCaptionEm, or find
   // no room, in its view (the ball view's blocks as laid out).
-  [[nodiscard]] bool captionCramped(const ViewLayout& layout, const std::vector<TextBlock>& blocks, float viewWidth) const;
+  [[nodiscard]] bool captionCramped(const ViewLayout& layout, const std::vector<TextBlock>& blocks,
+                                    float viewWidth) const;
   // If so in a figure: the captions go below the views (captionBandLines_);
   // true when the views must be laid out again.
   bool moveCaptionsBelow(const ViewLayout& layout, const std::vector<TextBlock>& blocks, float viewWidth);
 
   const scene::SceneSpec& spec_;
   FigureText figureText_;
-  std::vector<motion::SurfaceStretch> stretches_;  // empty: one surface, drawn here
+  std::vector<motion::SurfaceStretch> stretches_;    // empty: one surface, drawn here
   std::vector<std::unique_ptr<SceneDrawer>> parts_;  // one per stretch
-  double stretchStart_ = 0.0;                         // a stretch's drawer: where it lies on the whole path
-  std::optional<double> stillAt_;                     // a figure framed for its still at this s (figureStillAt)
+  double stretchStart_ = 0.0;                        // a stretch's drawer: where it lies on the whole path
+  std::optional<double> stillAt_;                    // a figure framed for its still at this s (figureStillAt)
   geometry::Vec3 markerBody_;
-  bool titleBand_ = false;  // render.title or any segment's title: the band is kept for the whole clip
-  std::size_t titleLines_ = 1;  // the lines the longest title takes (text_blocks: titleLines)
+  bool titleBand_ = false;            // render.title or any segment's title: the band is kept for the whole clip
+  std::size_t titleLines_ = 1;        // the lines the longest title takes (text_blocks: titleLines)
   std::size_t captionBandLines_ = 0;  // a figure's captions below the views: the most lines one takes (0: in a view)
-  std::unique_ptr<TwinView> twin_;  // null when the layout shows no twin
-  std::unique_ptr<BallView> ball_;  // with layout = "twin", only its path samples (for the framing)
+  std::unique_ptr<TwinView> twin_;    // null when the layout shows no twin
+  std::unique_ptr<BallView> ball_;    // with layout = "twin", only its path samples (for the framing)
   std::unique_ptr<CameraFraming> camera_;
-  ViewLayout ballLayout_, twinLayout_;  // decided per clip (layOut)
+  ViewLayout ballLayout_, twinLayout_;                  // decided per clip (layOut)
   std::vector<glm::vec2> ballReserved_, twinReserved_;  // each block's size over the clip
 };
 

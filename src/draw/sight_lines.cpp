@@ -119,7 +119,8 @@ double SightLines::visibleShare(const Vec3& eye, const Vec3& centre, double radi
   for (int k = 0; k < rays; ++k) {
     // Sunflower spread: equal areas of the disc per ray.
     const double rho = std::sqrt((k + 0.5) / rays), phi = 2.399963229728653 * k;
-    const Vec3 p = centre + radius * (rho * (std::cos(phi) * u + std::sin(phi) * v) - std::sqrt(1.0 - rho * rho) * view);
+    const Vec3 p =
+        centre + radius * (rho * (std::cos(phi) * u + std::sin(phi) * v) - std::sqrt(1.0 - rho * rho) * view);
     if (!blocked(eye, p, 1e-6 * radius)) ++seen;
   }
   return double(seen) / rays;

@@ -167,7 +167,7 @@ SurfaceAsDrawn boardSurface(const geometry::SurfaceLook& look, const SweptBox& b
 // widest outline seen from the path's side, which a view's edge would
 // otherwise cut in the middle of the frame.
 SurfaceAsDrawn sphereSurface(const geometry::SurfaceLook& look, const SweptBox& box, const scene::SceneSpec& spec,
-                           const model::RollingModel& model, const std::vector<Vec3>& pathPoints) {
+                             const model::RollingModel& model, const std::vector<Vec3>& pathPoints) {
   SurfaceAsDrawn shape{nullptr, matteCheckerMaterial(), box, {}, {}, {}, {}};
   const double r = look.radius;
   const double c0 = 0.0, c1 = std::numbers::pi;
@@ -220,7 +220,7 @@ SurfaceAsDrawn sphereSurface(const geometry::SurfaceLook& look, const SweptBox& 
 // x(u, v) meshed over the parameter box the path visits; where the chart's
 // cells vary a lot, world cubes of R show cells of about R everywhere.
 SurfaceAsDrawn chartSurface(const geometry::Surface& surface, const SweptBox& box, double R,
-                          const std::vector<Vec3>& pathPoints, const std::vector<Vec3>& centres) {
+                            const std::vector<Vec3>& pathPoints, const std::vector<Vec3>& centres) {
   SurfaceAsDrawn shape{nullptr, matteCheckerMaterial(), box, {}, {}, {}, {}};
   const std::optional<ChartBox> chart = chartBoxOfPath(surface, pathPoints, R);
   if (!chart) return shape;

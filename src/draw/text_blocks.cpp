@@ -46,8 +46,8 @@ bool titleFitsFigure(const std::string& title, float text, float width, float he
   return float(titleBandHeight(lines, text, true)) <= kFigureTitleShare * height;
 }
 
-int addTitleBand(render::DrawList& list, const std::string& titleText, float text, std::size_t bandLines,
-                 float leastPx, bool figure) {
+int addTitleBand(render::DrawList& list, const std::string& titleText, float text, std::size_t bandLines, float leastPx,
+                 bool figure) {
   const int top = titleBandHeight(bandLines, text, figure);
   render::View band;
   band.width = list.width;
@@ -62,8 +62,8 @@ int addTitleBand(render::DrawList& list, const std::string& titleText, float tex
   for (std::size_t k = 0; k < title.lines.size(); ++k) {
     render::LabelItem line;
     line.text = title.lines[k];
-    line.anchor = glm::vec3(0.5f * list.width,
-                            0.5f * top + (float(k) - 0.5f * float(title.lines.size() - 1)) * step, 0.0f);
+    line.anchor =
+        glm::vec3(0.5f * list.width, 0.5f * top + (float(k) - 0.5f * float(title.lines.size() - 1)) * step, 0.0f);
     line.align = render::Align::Center;
     line.sizePx = title.sizePx;
     line.bold = true;
@@ -91,13 +91,15 @@ void addCaptionBand(render::DrawList& list, const std::string& caption, float te
   band.backgroundTop = band.backgroundBottom;  // continues the views' bottom colour
   band.light.shadow = false;
   list.views.push_back(band);
-  const std::vector<std::string> lines = caption.empty() ? std::vector<std::string>{} : captionBandLines(caption, text, float(list.width));
+  const std::vector<std::string> lines =
+      caption.empty() ? std::vector<std::string>{} : captionBandLines(caption, text, float(list.width));
   const float step = kLineStep * text;
   for (std::size_t k = 0; k < lines.size(); ++k) {
     render::LabelItem line;
     line.text = lines[k];
-    line.anchor = glm::vec3(0.5f * list.width,
-                            float(band.y) + 0.5f * float(height) + (float(k) - 0.5f * float(lines.size() - 1)) * step, 0.0f);
+    line.anchor =
+        glm::vec3(0.5f * list.width,
+                  float(band.y) + 0.5f * float(height) + (float(k) - 0.5f * float(lines.size() - 1)) * step, 0.0f);
     line.align = render::Align::Center;
     line.sizePx = text;
     line.bold = true;

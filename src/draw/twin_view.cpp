@@ -9,10 +9,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/stage_log.hpp"
+#include "draw/clip_layout.hpp"
 #include "draw/draw_facts.hpp"
 #include "draw/draw_style.hpp"
 #include "draw/text_blocks.hpp"
-#include "draw/clip_layout.hpp"
 #include "motion/frame_sampling.hpp"
 #include "render/mesh_builders.hpp"
 #include "spin/field.hpp"
@@ -61,12 +61,12 @@ void TwinView::aimAtSphere(render::View& v, const CameraFraming::Aim& aim) const
   // Framed into the window the text leaves free (the whole view by default).
   const Lens lens = windowLens(window_, aim.fovDeg, aspect);
   const double distance = fitDistance(sceneRadius, lens.fovDeg, lens.aspect);
-  render::View oriented = orbitView(v.x, v.y, v.width, v.height, glm::vec3(0.0f, 0.0f, -0.04f), distance, a,
-                                    aim.fovDeg, sceneRadius);
+  render::View oriented =
+      orbitView(v.x, v.y, v.width, v.height, glm::vec3(0.0f, 0.0f, -0.04f), distance, a, aim.fovDeg, sceneRadius);
   if (!isWholeView(window_))
-    oriented.camera.clipFromView = offAxisProjection(window_, aim.fovDeg, aspect,
-                                                     float(std::max(0.02 * distance, distance - 2.5 * sceneRadius)),
-                                                     float(distance + 4.0 * sceneRadius));
+    oriented.camera.clipFromView =
+        offAxisProjection(window_, aim.fovDeg, aspect, float(std::max(0.02 * distance, distance - 2.5 * sceneRadius)),
+                          float(distance + 4.0 * sceneRadius));
   v.camera = oriented.camera;
   v.light = keyLight(glm::vec3(0, 0, 1), glm::normalize(v.camera.position), glm::vec3(0.0f), 1.5f);
   v.light.shadow = false;
@@ -129,8 +129,8 @@ void TwinView::addTrails(render::DrawList& list, const motion::FrameOrientations
   blochTrail.view = fieldTrail.view = view;
   blochTrail.labelsKeepOff = fieldTrail.labelsKeepOff = true;
   // The trail's points but the last lie on the trail grid (frame_sampling.hpp).
-  const std::size_t settled = settledPoints(frame.trail.size() - std::min<std::size_t>(1, frame.trail.size()),
-                                            trailGridCount_);
+  const std::size_t settled =
+      settledPoints(frame.trail.size() - std::min<std::size_t>(1, frame.trail.size()), trailGridCount_);
   std::size_t fieldSettled = 0;
   for (std::size_t i = 0; i < frame.trail.size(); ++i) {
     const auto& t = frame.trail[i];

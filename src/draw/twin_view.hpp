@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "draw/camera_framing.hpp"
+#include "draw/figure_text.hpp"
 #include "model/rolling_model.hpp"
 #include "motion/frame_sampling.hpp"
 #include "motion/scene_facts.hpp"
 #include "render/draw_list.hpp"
-#include "draw/figure_text.hpp"
 #include "scene/scene_spec.hpp"
 
 namespace rollspin::draw {

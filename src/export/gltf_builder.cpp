@@ -80,10 +80,12 @@ int GltfBuilder::addIndices(const std::vector<std::uint32_t>& indices) {
   // 16-bit indices where every vertex fits (half the bytes; core glTF).
   if (std::all_of(indices.begin(), indices.end(), [](std::uint32_t i) { return i <= 0xFFFFu; })) {
     const std::vector<std::uint16_t> narrow(indices.begin(), indices.end());
-    const int view = addView(narrow.data(), narrow.size() * sizeof(std::uint16_t), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    const int view =
+        addView(narrow.data(), narrow.size() * sizeof(std::uint16_t), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
     return addAccessor(view, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, indices.size(), TINYGLTF_TYPE_SCALAR);
   }
-  const int view = addView(indices.data(), indices.size() * sizeof(std::uint32_t), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  const int view =
+      addView(indices.data(), indices.size() * sizeof(std::uint32_t), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
   return addAccessor(view, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, indices.size(), TINYGLTF_TYPE_SCALAR);
 }
 
@@ -120,7 +122,8 @@ int GltfBuilder::addMaterial(const std::string& name, const render::Material& m,
   material.pbrMetallicRoughness.baseColorFactor = {colour.r, colour.g, colour.b, m.opacity};
   material.pbrMetallicRoughness.metallicFactor = 0.0;
   const double sharpness = std::min(1.0, 2.0 * double(m.specular));
-  material.pbrMetallicRoughness.roughnessFactor = 1.0 - sharpness * (1.0 - std::sqrt(2.0 / (double(m.shininess) + 2.0)));
+  material.pbrMetallicRoughness.roughnessFactor =
+      1.0 - sharpness * (1.0 - std::sqrt(2.0 / (double(m.shininess) + 2.0)));
   if (texture >= 0) material.pbrMetallicRoughness.baseColorTexture.index = texture;
   if (m.opacity < 1.0f) material.alphaMode = "BLEND";
   material.doubleSided = m.cull == render::Cull::None;

@@ -69,7 +69,9 @@ render::MeshData surfaceForExport(const render::MeshData& mesh, const render::Ma
     v.uv *= 0.5f * scale;
     out.vertices.push_back(v);
   }
-  auto kept = [&](std::uint32_t i) { return glm::dot(material.cutPlane, glm::vec4(mesh.vertices[i].position, 1.0f)) >= 0.0f; };
+  auto kept = [&](std::uint32_t i) {
+    return glm::dot(material.cutPlane, glm::vec4(mesh.vertices[i].position, 1.0f)) >= 0.0f;
+  };
   for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
     if (kept(mesh.indices[t]) || kept(mesh.indices[t + 1]) || kept(mesh.indices[t + 2]))
       out.indices.insert(out.indices.end(), {mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]});
@@ -245,11 +247,12 @@ int addSurface(GltfBuilder& b, const draw::BallView& view, const scene::SceneSpe
   // The renders' grid is fine everywhere (4 vertices a checker cell); the
   // file keeps only the rows and columns its curvature needs.
   const render::MeshData shown =
-      mesh ? surfaceForExport(thinGrid(*mesh, tolerance, tolerance), view.surfaceMaterial())
-           : render::MeshData{};
+      mesh ? surfaceForExport(thinGrid(*mesh, tolerance, tolerance), view.surfaceMaterial()) : render::MeshData{};
   if (shown.indices.empty())
-    throw badInput(spec.where("surface.kind"), "surface.kind: the {} surface cannot be meshed where the path runs "
-                   "(no finite patch of it holds the path), so it cannot be exported", spec.surface.kind.name());
+    throw badInput(spec.where("surface.kind"),
+                   "surface.kind: the {} surface cannot be meshed where the path runs "
+                   "(no finite patch of it holds the path), so it cannot be exported",
+                   spec.surface.kind.name());
   const render::Material& material = view.surfaceMaterial();
   const int texture = b.addTexture(*render::checkerTexture(material.color, material.color2), name + "-checker");
   return b.addNode(name, b.addMesh(name, shown, b.addMaterial(name, material, texture), true));
@@ -285,8 +288,8 @@ void addBloch(GltfBuilder& b, Nodes& nodes, const Vec3& markerBody) {
   arrow.specular = render::kArrowSpecular;
   arrow.shininess = render::kArrowShininess;
   arrow.color = draw::kMarkerColor;
-  nodes.spin = b.addNode("spin", b.addMesh("spin", arrowMesh(draw::toGlm(markerBody), kArrowRadius),
-                                           b.addMaterial("spin", arrow), false));
+  nodes.spin = b.addNode(
+      "spin", b.addMesh("spin", arrowMesh(draw::toGlm(markerBody), kArrowRadius), b.addMaterial("spin", arrow), false));
   arrow.color = draw::kFieldColor;
   nodes.field = b.addNode("field", b.addMesh("field", arrowMesh(glm::vec3(0, 0, 1), 0.8f * kArrowRadius),
                                              b.addMaterial("field", arrow), false));
@@ -306,7 +309,8 @@ void placeBloch(Built& out, const std::vector<std::unique_ptr<draw::BallView>>& 
   for (const auto& view : views) {
     for (const Vec3& p : view->extent().points) grow(p);
     if (view->surfaceMesh())
-      for (const render::Vertex& v : view->surfaceMesh()->vertices) grow(Vec3(v.position.x, v.position.y, v.position.z));
+      for (const render::Vertex& v : view->surfaceMesh()->vertices)
+        grow(Vec3(v.position.x, v.position.y, v.position.z));
   }
   out.blochRadius = std::max(2.0 * R, 0.15 * (hi - lo).norm());
   out.blochCentre = Vec3(hi.x() + 1.5 * out.blochRadius, 0.5 * (lo.y() + hi.y()), 0.5 * (lo.z() + hi.z()));
@@ -326,11 +330,11 @@ Built build(const ExportRequest& r) {
   const std::vector<motion::SurfaceStretch> stretches = motion::surfaceStretches(spec, model);
   std::vector<std::unique_ptr<draw::BallView>> views;
   if (stretches.empty())
-    views.push_back(std::make_unique<draw::BallView>(spec, model, r.ballTexture, nullptr, markerBody, render::uvSphere(8, 4),
-                                                     draw::FigureText{}));
+    views.push_back(std::make_unique<draw::BallView>(spec, model, r.ballTexture, nullptr, markerBody,
+                                                     render::uvSphere(8, 4), draw::FigureText{}));
   for (const motion::SurfaceStretch& st : stretches)
-    views.push_back(std::make_unique<draw::BallView>(st.spec, st.model, r.ballTexture, nullptr, markerBody, render::uvSphere(8, 4),
-                                                     draw::FigureText{}));
+    views.push_back(std::make_unique<draw::BallView>(st.spec, st.model, r.ballTexture, nullptr, markerBody,
+                                                     render::uvSphere(8, 4), draw::FigureText{}));
   Built out;
   GltfBuilder& b = out.builder;
   Nodes nodes;

@@ -88,9 +88,9 @@ struct ExportRequest {
   const scene::SceneSpec* spec = nullptr;
   const model::RollingModel* model = nullptr;
   std::shared_ptr<const render::TextureImage> ballTexture;  // null: the tennis ball
-  std::string version;    // extras.rollspin.version
-  std::string sceneText;  // extras.rollspin.scene
-  bool metadata = true;   // false: no "scene" in extras (--no-metadata)
+  std::string version;                                      // extras.rollspin.version
+  std::string sceneText;                                    // extras.rollspin.scene
+  bool metadata = true;                                     // false: no "scene" in extras (--no-metadata)
   bool animation = true;  // false: no animation "roll" and no extras (the web viewer poses the nodes itself)
 };
 

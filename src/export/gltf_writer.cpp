@@ -72,7 +72,8 @@ void checkGltfOutput(const std::filesystem::path& output) {
   const SourceLoc where{"-o " + output.string()};
   const std::string ext = lowerExtension(output);
   if (ext != ".glb" && ext != ".gltf")
-    throw badInput(where, "expected a .glb or .gltf file name (got {})", ext.empty() ? "no extension" : "'" + ext + "'");
+    throw badInput(where, "expected a .glb or .gltf file name (got {})",
+                   ext.empty() ? "no extension" : "'" + ext + "'");
   checkOutputFile(output, where);
   if (ext == ".gltf") checkOutputFile(std::filesystem::path(output).replace_extension(".bin"), where);
 }

@@ -60,9 +60,10 @@ render::MeshData thinGrid(const render::MeshData& mesh, double columnTolerance, 
   const auto vertex = [&](int i, int j) -> const glm::vec3& {
     return mesh.vertices[std::size_t(j * (grid.na + 1) + i)].position;
   };
-  const std::vector<int> columns =
-      keptLines(grid.na, grid.nb, [&](int i, int j) { return vertex(i, j); }, columnTolerance);
-  const std::vector<int> rows = keptLines(grid.nb, grid.na, [&](int j, int i) { return vertex(i, j); }, rowTolerance);
+  const std::vector<int> columns = keptLines(
+      grid.na, grid.nb, [&](int i, int j) { return vertex(i, j); }, columnTolerance);
+  const std::vector<int> rows = keptLines(
+      grid.nb, grid.na, [&](int j, int i) { return vertex(i, j); }, rowTolerance);
   render::MeshData out;
   for (const int j : rows)
     for (const int i : columns) out.vertices.push_back(mesh.vertices[std::size_t(j * (grid.na + 1) + i)]);

@@ -35,8 +35,8 @@ std::string PlaneLinePath::describe() const {
 
 // ---- circle on a plane -------------------------------------------------
 
-PlaneCirclePath::PlaneCirclePath(std::shared_ptr<const Plane> plane, const Vec3& centre, const Vec3& e1,
-                                 double radius, double turns, bool counterClockwise)
+PlaneCirclePath::PlaneCirclePath(std::shared_ptr<const Plane> plane, const Vec3& centre, const Vec3& e1, double radius,
+                                 double turns, bool counterClockwise)
     : plane_(std::move(plane)),
       centre_(centre),
       e1_(e1.normalized()),

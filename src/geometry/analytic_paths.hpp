@@ -40,8 +40,8 @@ class PlaneCirclePath final : public ContactPath {
   // A circle of `radius` about `centre` in the plane, starting at
   // centre + radius·e1 (e1 a unit vector in the plane), counter-clockwise
   // about the plane normal when counterClockwise (seen from the ball's side).
-  PlaneCirclePath(std::shared_ptr<const Plane> plane, const Vec3& centre, const Vec3& e1, double radius,
-                  double turns, bool counterClockwise);
+  PlaneCirclePath(std::shared_ptr<const Plane> plane, const Vec3& centre, const Vec3& e1, double radius, double turns,
+                  bool counterClockwise);
   [[nodiscard]] double length() const override;
   [[nodiscard]] DarbouxSample at(double s) const override;
   [[nodiscard]] Vec3 point(double s) const override;

@@ -12,20 +12,22 @@ namespace rollspin::geometry {
 namespace {
 constexpr int kDegree = 16;
 // 20-point Gauss–Legendre on [−1, 1] (half the nodes; symmetric).
-constexpr std::array<double, 10> kGlX{0.0765265211334973, 0.2277858511416451, 0.3737060887154195,
-                                      0.5108670019508271, 0.6360536807265150, 0.7463319064601508,
-                                      0.8391169718222188, 0.9122344282513259, 0.9639719272779138,
-                                      0.9931285991850949};
-constexpr std::array<double, 10> kGlW{0.1527533871307258, 0.1491729864726037, 0.1420961093183820,
-                                      0.1316886384491766, 0.1181945319615184, 0.1019301198172404,
-                                      0.0832767415767048, 0.0626720483341091, 0.0406014298003869,
-                                      0.0176140071391521};
+constexpr std::array<double, 10> kGlX{0.0765265211334973, 0.2277858511416451, 0.3737060887154195, 0.5108670019508271,
+                                      0.6360536807265150, 0.7463319064601508, 0.8391169718222188, 0.9122344282513259,
+                                      0.9639719272779138, 0.9931285991850949};
+constexpr std::array<double, 10> kGlW{0.1527533871307258, 0.1491729864726037, 0.1420961093183820, 0.1316886384491766,
+                                      0.1181945319615184, 0.1019301198172404, 0.0832767415767048, 0.0626720483341091,
+                                      0.0406014298003869, 0.0176140071391521};
 }  // namespace
 
 PlaneClothoidPath::PlaneClothoidPath(std::shared_ptr<const Plane> plane, const Vec3& start, const Vec3& e1,
                                      double curvature0, double curvatureRate, double length)
-    : plane_(std::move(plane)), start_(start), e1_(e1.normalized()), kappa0_(curvature0),
-      curvatureRate_(curvatureRate), length_(length) {
+    : plane_(std::move(plane)),
+      start_(start),
+      e1_(e1.normalized()),
+      kappa0_(curvature0),
+      curvatureRate_(curvatureRate),
+      length_(length) {
   assert(std::abs(e1_.dot(plane_->normal())) < 1e-12);
   e2_ = plane_->normal().cross(e1_);
   // Panels: the tangent turns by ≤ 0.25 rad across each, and none is longer
@@ -98,7 +100,8 @@ std::unique_ptr<PlaneClothoidPath> PlaneClothoidPath::symmetricSweep(double curv
 Vec3 PlaneClothoidPath::point(double s) const {
   s = std::clamp(s, 0.0, length_);
   const auto it = std::upper_bound(panelStarts_.begin(), panelStarts_.end(), s);
-  const std::size_t p = std::min<std::size_t>(cx_.size() - 1, static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, it - panelStarts_.begin() - 1)));
+  const std::size_t p = std::min<std::size_t>(
+      cx_.size() - 1, static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, it - panelStarts_.begin() - 1)));
   const double a = panelStarts_[p], b = panelStarts_[p + 1];
   const double xi = std::clamp((2.0 * s - a - b) / (b - a), -1.0, 1.0);
   auto clenshaw = [xi](const std::vector<double>& c) {

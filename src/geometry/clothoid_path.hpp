@@ -39,9 +39,9 @@ class PlaneClothoidPath final : public ContactPath {
   std::shared_ptr<const Plane> plane_;
   Vec3 start_, e1_, e2_;
   double kappa0_, curvatureRate_, length_;
-  std::vector<double> panelStarts_;                // s at each panel start (+ length at the end)
-  std::vector<std::vector<double>> cx_, cy_;       // Chebyshev coefficients of the offset along e1, e2
-  std::vector<double> x0_, y0_;                    // in-plane position at each panel start
+  std::vector<double> panelStarts_;           // s at each panel start (+ length at the end)
+  std::vector<std::vector<double>> cx_, cy_;  // Chebyshev coefficients of the offset along e1, e2
+  std::vector<double> x0_, y0_;               // in-plane position at each panel start
 };
 
 }  // namespace rollspin::geometry

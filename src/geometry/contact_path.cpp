@@ -5,8 +5,7 @@
 namespace rollspin::geometry {
 
 Vec3 darbouxVector(const DarbouxSample& f) {
-  return f.geodesicTorsion * f.tangent - f.normalCurvature * f.tangentNormal +
-         f.geodesicCurvature * f.normal;
+  return f.geodesicTorsion * f.tangent - f.normalCurvature * f.tangentNormal + f.geodesicCurvature * f.normal;
 }
 
 std::string describeNumber(double v) {

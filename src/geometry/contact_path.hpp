@@ -20,13 +20,13 @@ using Vec3 = Eigen::Vector3d;
 // Frame and curvatures at one arc length.
 struct DarbouxSample {
   double s = 0.0;
-  Vec3 point = Vec3::Zero();          // P(s)
-  Vec3 tangent = Vec3::UnitX();       // t
-  Vec3 normal = Vec3::UnitZ();        // n, towards the ball centre
-  Vec3 tangentNormal = Vec3::UnitY(); // u = n × t
-  double normalCurvature = 0.0;       // κ_n
-  double geodesicCurvature = 0.0;     // κ_g
-  double geodesicTorsion = 0.0;       // τ_g (the paper's τ_r)
+  Vec3 point = Vec3::Zero();           // P(s)
+  Vec3 tangent = Vec3::UnitX();        // t
+  Vec3 normal = Vec3::UnitZ();         // n, towards the ball centre
+  Vec3 tangentNormal = Vec3::UnitY();  // u = n × t
+  double normalCurvature = 0.0;        // κ_n
+  double geodesicCurvature = 0.0;      // κ_g
+  double geodesicTorsion = 0.0;        // τ_g (the paper's τ_r)
 
   [[nodiscard]] Vec3 centre(double ballRadius) const { return point + ballRadius * normal; }
 };

@@ -12,8 +12,30 @@ namespace {
 
 // Our own callbacks for muparser: their addresses identify the function in
 // the compiled bytecode, so the Jet evaluator knows which derivative to apply.
-enum class Fn { Neg, Plus, Sin, Cos, Tan, Asin, Acos, Atan, Sinh, Cosh, Tanh, Asinh, Acosh, Atanh, Exp, Log, Log10,
-                Log2, Sqrt, Abs, Atan2, Pow };
+enum class Fn {
+  Neg,
+  Plus,
+  Sin,
+  Cos,
+  Tan,
+  Asin,
+  Acos,
+  Atan,
+  Sinh,
+  Cosh,
+  Tanh,
+  Asinh,
+  Acosh,
+  Atanh,
+  Exp,
+  Log,
+  Log10,
+  Log2,
+  Sqrt,
+  Abs,
+  Atan2,
+  Pow
+};
 
 double fNeg(double a) { return -a; }
 double fPlus(double a) { return a; }
@@ -44,17 +66,35 @@ struct Unary {
   Fn id;
 };
 constexpr Unary kUnary[] = {
-    {"sin", fSin, Fn::Sin},       {"cos", fCos, Fn::Cos},       {"tan", fTan, Fn::Tan},
-    {"asin", fAsin, Fn::Asin},    {"acos", fAcos, Fn::Acos},    {"atan", fAtan, Fn::Atan},
-    {"sinh", fSinh, Fn::Sinh},    {"cosh", fCosh, Fn::Cosh},    {"tanh", fTanh, Fn::Tanh},
-    {"asinh", fAsinh, Fn::Asinh}, {"acosh", fAcosh, Fn::Acosh}, {"atanh", fAtanh, Fn::Atanh},
-    {"exp", fExp, Fn::Exp},       {"log", fLog, Fn::Log},       {"ln", fLog, Fn::Log},
-    {"log10", fLog10, Fn::Log10}, {"log2", fLog2, Fn::Log2},    {"sqrt", fSqrt, Fn::Sqrt},
-    {"abs", fAbs, Fn::Abs},
+    {"sin", fSin, Fn::Sin},    {"cos", fCos, Fn::Cos},       {"tan", fTan, Fn::Tan},       {"asin", fAsin, Fn::Asin},
+    {"acos", fAcos, Fn::Acos}, {"atan", fAtan, Fn::Atan},    {"sinh", fSinh, Fn::Sinh},    {"cosh", fCosh, Fn::Cosh},
+    {"tanh", fTanh, Fn::Tanh}, {"asinh", fAsinh, Fn::Asinh}, {"acosh", fAcosh, Fn::Acosh}, {"atanh", fAtanh, Fn::Atanh},
+    {"exp", fExp, Fn::Exp},    {"log", fLog, Fn::Log},       {"ln", fLog, Fn::Log},        {"log10", fLog10, Fn::Log10},
+    {"log2", fLog2, Fn::Log2}, {"sqrt", fSqrt, Fn::Sqrt},    {"abs", fAbs, Fn::Abs},
 };
 
-enum class Op { Value, Variable, Add, Sub, Mul, Div, Pow, Lt, Le, Gt, Ge, Eq, Ne, And, Or, Call1, Call2, If, Else,
-                EndIf };
+enum class Op {
+  Value,
+  Variable,
+  Add,
+  Sub,
+  Mul,
+  Div,
+  Pow,
+  Lt,
+  Le,
+  Gt,
+  Ge,
+  Eq,
+  Ne,
+  And,
+  Or,
+  Call1,
+  Call2,
+  If,
+  Else,
+  EndIf
+};
 
 struct Instruction {
   Op op = Op::Value;
@@ -69,8 +109,8 @@ constexpr double kLog2e = 1.44269504088896340736;
 
 template <typename T>
 T applyUnary(Fn f, const T& x) {
-  using std::abs, std::acos, std::acosh, std::asin, std::asinh, std::atan, std::atanh, std::cos, std::cosh,
-      std::exp, std::log, std::sin, std::sinh, std::sqrt, std::tan, std::tanh;
+  using std::abs, std::acos, std::acosh, std::asin, std::asinh, std::atan, std::atanh, std::cos, std::cosh, std::exp,
+      std::log, std::sin, std::sinh, std::sqrt, std::tan, std::tanh;
   switch (f) {
     case Fn::Neg: return -x;
     case Fn::Plus: return x;
@@ -127,8 +167,10 @@ Expression::Expression(std::string text, std::vector<std::string> variables)
   parser.EnableOptimizer(false);  // keep the plain RPN: no fused tokens
   parser.DefineInfixOprt("-", fNeg);
   parser.DefineInfixOprt("+", fPlus);
-  std::map<void*, Fn> functions{{reinterpret_cast<void*>(fNeg), Fn::Neg}, {reinterpret_cast<void*>(fPlus), Fn::Plus},
-                                {reinterpret_cast<void*>(fAtan2), Fn::Atan2}, {reinterpret_cast<void*>(fPow), Fn::Pow}};
+  std::map<void*, Fn> functions{{reinterpret_cast<void*>(fNeg), Fn::Neg},
+                                {reinterpret_cast<void*>(fPlus), Fn::Plus},
+                                {reinterpret_cast<void*>(fAtan2), Fn::Atan2},
+                                {reinterpret_cast<void*>(fPow), Fn::Pow}};
   for (const Unary& u : kUnary) {
     parser.DefineFun(u.name, u.fn);
     functions[reinterpret_cast<void*>(u.fn)] = u.id;
@@ -159,7 +201,11 @@ Expression::Expression(std::string text, std::vector<std::string> variables)
     const mu::SToken& tok = tokens[i];
     Instruction ins;
     switch (tok.Cmd) {
-      case mu::cmVAL: ins.op = Op::Value; ins.value = tok.Val.data2; ++depth; break;
+      case mu::cmVAL:
+        ins.op = Op::Value;
+        ins.value = tok.Val.data2;
+        ++depth;
+        break;
       case mu::cmVAR:
         ins.op = Op::Variable;
         ins.variable = tok.Val.ptr == &storage[1] ? 1 : 0;
@@ -178,8 +224,14 @@ Expression::Expression(std::string text, std::vector<std::string> variables)
       case mu::cmNEQ: ins.op = Op::Ne; break;
       case mu::cmLAND: ins.op = Op::And; break;
       case mu::cmLOR: ins.op = Op::Or; break;
-      case mu::cmIF: ins.op = Op::If; ins.offset = tok.Oprt.offset; break;
-      case mu::cmELSE: ins.op = Op::Else; ins.offset = tok.Oprt.offset; break;
+      case mu::cmIF:
+        ins.op = Op::If;
+        ins.offset = tok.Oprt.offset;
+        break;
+      case mu::cmELSE:
+        ins.op = Op::Else;
+        ins.offset = tok.Oprt.offset;
+        break;
       case mu::cmENDIF: ins.op = Op::EndIf; break;
       case mu::cmFUNC: {
         const auto it = functions.find(reinterpret_cast<void*>(tok.Fun.cb._pRawFun));
@@ -189,7 +241,8 @@ Expression::Expression(std::string text, std::vector<std::string> variables)
         ins.fn = it->second;
         break;
       }
-      default: throw ExpressionError(0, "unsupported construct in the expression (code " + std::to_string(tok.Cmd) + ")");
+      default:
+        throw ExpressionError(0, "unsupported construct in the expression (code " + std::to_string(tok.Cmd) + ")");
     }
     compiled_->maxStack = std::max(compiled_->maxStack, depth);
     compiled_->program.push_back(ins);
@@ -217,17 +270,50 @@ T Expression::evaluate(const T& a, const T& b) const {
     switch (ins.op) {
       case Op::Value: stack[++top] = T(ins.value); break;
       case Op::Variable: stack[++top] = ins.variable == 0 ? a : b; break;
-      case Op::Add: --top; stack[top] = stack[top] + stack[top + 1]; break;
-      case Op::Sub: --top; stack[top] = stack[top] - stack[top + 1]; break;
-      case Op::Mul: --top; stack[top] = stack[top] * stack[top + 1]; break;
-      case Op::Div: --top; stack[top] = stack[top] / stack[top + 1]; break;
-      case Op::Pow: --top; stack[top] = power(stack[top], stack[top + 1]); break;
-      case Op::Lt: --top; stack[top] = T(valueOf(stack[top]) < valueOf(stack[top + 1]) ? 1.0 : 0.0); break;
-      case Op::Le: --top; stack[top] = T(valueOf(stack[top]) <= valueOf(stack[top + 1]) ? 1.0 : 0.0); break;
-      case Op::Gt: --top; stack[top] = T(valueOf(stack[top]) > valueOf(stack[top + 1]) ? 1.0 : 0.0); break;
-      case Op::Ge: --top; stack[top] = T(valueOf(stack[top]) >= valueOf(stack[top + 1]) ? 1.0 : 0.0); break;
-      case Op::Eq: --top; stack[top] = T(valueOf(stack[top]) == valueOf(stack[top + 1]) ? 1.0 : 0.0); break;
-      case Op::Ne: --top; stack[top] = T(valueOf(stack[top]) != valueOf(stack[top + 1]) ? 1.0 : 0.0); break;
+      case Op::Add:
+        --top;
+        stack[top] = stack[top] + stack[top + 1];
+        break;
+      case Op::Sub:
+        --top;
+        stack[top] = stack[top] - stack[top + 1];
+        break;
+      case Op::Mul:
+        --top;
+        stack[top] = stack[top] * stack[top + 1];
+        break;
+      case Op::Div:
+        --top;
+        stack[top] = stack[top] / stack[top + 1];
+        break;
+      case Op::Pow:
+        --top;
+        stack[top] = power(stack[top], stack[top + 1]);
+        break;
+      case Op::Lt:
+        --top;
+        stack[top] = T(valueOf(stack[top]) < valueOf(stack[top + 1]) ? 1.0 : 0.0);
+        break;
+      case Op::Le:
+        --top;
+        stack[top] = T(valueOf(stack[top]) <= valueOf(stack[top + 1]) ? 1.0 : 0.0);
+        break;
+      case Op::Gt:
+        --top;
+        stack[top] = T(valueOf(stack[top]) > valueOf(stack[top + 1]) ? 1.0 : 0.0);
+        break;
+      case Op::Ge:
+        --top;
+        stack[top] = T(valueOf(stack[top]) >= valueOf(stack[top + 1]) ? 1.0 : 0.0);
+        break;
+      case Op::Eq:
+        --top;
+        stack[top] = T(valueOf(stack[top]) == valueOf(stack[top + 1]) ? 1.0 : 0.0);
+        break;
+      case Op::Ne:
+        --top;
+        stack[top] = T(valueOf(stack[top]) != valueOf(stack[top + 1]) ? 1.0 : 0.0);
+        break;
       case Op::And:
         --top;
         stack[top] = T(valueOf(stack[top]) != 0.0 && valueOf(stack[top + 1]) != 0.0 ? 1.0 : 0.0);
@@ -237,7 +323,10 @@ T Expression::evaluate(const T& a, const T& b) const {
         stack[top] = T(valueOf(stack[top]) != 0.0 || valueOf(stack[top + 1]) != 0.0 ? 1.0 : 0.0);
         break;
       case Op::Call1: stack[top] = applyUnary(ins.fn, stack[top]); break;
-      case Op::Call2: --top; stack[top] = applyBinary(ins.fn, stack[top], stack[top + 1]); break;
+      case Op::Call2:
+        --top;
+        stack[top] = applyBinary(ins.fn, stack[top], stack[top + 1]);
+        break;
       case Op::If:
         // muparser's convention: a false condition jumps to the else branch.
         if (valueOf(stack[top--]) == 0.0) i += static_cast<std::size_t>(ins.offset);

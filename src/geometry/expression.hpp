@@ -21,8 +21,7 @@ namespace rollspin::geometry {
 
 class ExpressionError : public std::runtime_error {
  public:
-  ExpressionError(int position, const std::string& message)
-      : std::runtime_error(message), position_(position) {}
+  ExpressionError(int position, const std::string& message) : std::runtime_error(message), position_(position) {}
   // 0-based character offset of the offending token in the expression text.
   [[nodiscard]] int position() const { return position_; }
 

@@ -14,16 +14,24 @@
 namespace rollspin::geometry {
 
 struct Jet {
-  double v = 0.0;                  // value
-  double da = 0.0, db = 0.0;       // first derivatives
+  double v = 0.0;                          // value
+  double da = 0.0, db = 0.0;               // first derivatives
   double daa = 0.0, dab = 0.0, dbb = 0.0;  // second derivatives
 
   Jet() = default;
   Jet(double value) : v(value) {}  // NOLINT: constants promote implicitly
   Jet(double value, double a, double b, double aa, double ab, double bb)
       : v(value), da(a), db(b), daa(aa), dab(ab), dbb(bb) {}
-  static Jet variableA(double value) { Jet j(value); j.da = 1.0; return j; }
-  static Jet variableB(double value) { Jet j(value); j.db = 1.0; return j; }
+  static Jet variableA(double value) {
+    Jet j(value);
+    j.da = 1.0;
+    return j;
+  }
+  static Jet variableB(double value) {
+    Jet j(value);
+    j.db = 1.0;
+    return j;
+  }
 };
 
 // g(f) with g' = d1, g'' = d2 at f.v.
@@ -65,20 +73,35 @@ inline Jet& operator+=(Jet& a, const Jet& b) { return a = a + b; }
 inline Jet& operator-=(Jet& a, const Jet& b) { return a = a - b; }
 inline Jet& operator*=(Jet& a, const Jet& b) { return a = a * b; }
 
-inline Jet sin(const Jet& a) { const double s = std::sin(a.v), c = std::cos(a.v); return chain(a, s, c, -s); }
-inline Jet cos(const Jet& a) { const double s = std::sin(a.v), c = std::cos(a.v); return chain(a, c, -s, -c); }
+inline Jet sin(const Jet& a) {
+  const double s = std::sin(a.v), c = std::cos(a.v);
+  return chain(a, s, c, -s);
+}
+inline Jet cos(const Jet& a) {
+  const double s = std::sin(a.v), c = std::cos(a.v);
+  return chain(a, c, -s, -c);
+}
 inline Jet tan(const Jet& a) {
   const double t = std::tan(a.v), sec2 = 1.0 + t * t;
   return chain(a, t, sec2, 2.0 * t * sec2);
 }
-inline Jet exp(const Jet& a) { const double e = std::exp(a.v); return chain(a, e, e, e); }
+inline Jet exp(const Jet& a) {
+  const double e = std::exp(a.v);
+  return chain(a, e, e, e);
+}
 inline Jet log(const Jet& a) { return chain(a, std::log(a.v), 1.0 / a.v, -1.0 / (a.v * a.v)); }
 inline Jet sqrt(const Jet& a) {
   const double r = std::sqrt(a.v);
   return chain(a, r, 0.5 / r, -0.25 / (r * a.v));
 }
-inline Jet sinh(const Jet& a) { const double s = std::sinh(a.v), c = std::cosh(a.v); return chain(a, s, c, s); }
-inline Jet cosh(const Jet& a) { const double s = std::sinh(a.v), c = std::cosh(a.v); return chain(a, c, s, c); }
+inline Jet sinh(const Jet& a) {
+  const double s = std::sinh(a.v), c = std::cosh(a.v);
+  return chain(a, s, c, s);
+}
+inline Jet cosh(const Jet& a) {
+  const double s = std::sinh(a.v), c = std::cosh(a.v);
+  return chain(a, c, s, c);
+}
 inline Jet tanh(const Jet& a) {
   const double t = std::tanh(a.v), d = 1.0 - t * t;
   return chain(a, t, d, -2.0 * t * d);

@@ -16,8 +16,8 @@ JoinedPath::JoinedPath(std::vector<std::unique_ptr<ContactPath>> pieces) : owned
 
 std::size_t JoinedPath::pieceAt(double s) const {
   // The last piece whose start is ≤ s: a join belongs to the piece after it.
-  const auto it = std::upper_bound(pieces_.begin(), pieces_.end(), s,
-                                   [](double x, const PathPiece& p) { return x < p.start; });
+  const auto it =
+      std::upper_bound(pieces_.begin(), pieces_.end(), s, [](double x, const PathPiece& p) { return x < p.start; });
   return it == pieces_.begin() ? 0 : static_cast<std::size_t>(it - pieces_.begin()) - 1;
 }
 

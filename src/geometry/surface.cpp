@@ -36,7 +36,9 @@ SurfaceShape shapeFromJet(const SurfaceJet& j, double orientation) {
   return sh;
 }
 
-SurfaceShape shapeAt(const Surface& surface, const Vec2& uv) { return shapeFromJet(surface.jet(uv), surface.orientation()); }
+SurfaceShape shapeAt(const Surface& surface, const Vec2& uv) {
+  return shapeFromJet(surface.jet(uv), surface.orientation());
+}
 
 // ---- plane ---------------------------------------------------------------
 

@@ -66,11 +66,11 @@ struct SurfaceLook {
     Sphere,  // the whole sphere of radius `radius` about the origin
   };
   Mesh mesh = Mesh::Chart;
-  Vec3 up = Vec3::UnitZ();      // Board: the plane's normal (walls and ceilings are framed and lit by it)
-  bool orientedByUp = false;    // the camera's default angles and the key light follow `up`
-  double radius = 0.0;          // Sphere: r
+  Vec3 up = Vec3::UnitZ();        // Board: the plane's normal (walls and ceilings are framed and lit by it)
+  bool orientedByUp = false;      // the camera's default angles and the key light follow `up`
+  double radius = 0.0;            // Sphere: r
   bool cutAwayTowardEye = false;  // the ball rolls inside: the cap facing the eye is cut away, the whole surface framed
-  bool canHideBall = true;      // the surface can stand between the eye and the ball (a board under it cannot)
+  bool canHideBall = true;        // the surface can stand between the eye and the ball (a board under it cannot)
 };
 
 class Surface {

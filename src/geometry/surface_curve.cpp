@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <limits>
-#include <optional>
 #include <numbers>
+#include <optional>
 
 namespace rollspin::geometry {
 
@@ -125,7 +125,8 @@ double SurfaceCurvePath::panelArcLength(double sigmaStart, double sigma) const {
   const GaussLegendre& g = gauss();
   const double mid = 0.5 * (sigmaStart + sigma), half = 0.5 * (sigma - sigmaStart);
   double sum = 0.0;
-  for (int i = 0; i < kGaussPoints; ++i) sum += g.w[static_cast<std::size_t>(i)] * speed(mid + half * g.x[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < kGaussPoints; ++i)
+    sum += g.w[static_cast<std::size_t>(i)] * speed(mid + half * g.x[static_cast<std::size_t>(i)]);
   return half * sum;
 }
 
@@ -203,7 +204,8 @@ void SurfaceCurvePath::buildSegment(double sigmaStart, double sigmaEnd) {
     if (const auto at = kinkBetween(a, b)) {
       const LocalFrame before = localFrame(*surface_, *curve_, *at - 1e-9 * (1.0 + std::abs(*at)));
       const LocalFrame after = localFrame(*surface_, *curve_, *at + 1e-9 * (1.0 + std::abs(*at)));
-      const double turn = std::acos(std::clamp(before.tangent.dot(after.tangent), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+      const double turn =
+          std::acos(std::clamp(before.tangent.dot(after.tangent), -1.0, 1.0)) * 180.0 / std::numbers::pi;
       const double fold = std::acos(std::clamp(before.normal.dot(after.normal), -1.0, 1.0)) * 180.0 / std::numbers::pi;
       throw GeometryError("the path has a corner at curve parameter " + describeNumber(*at) +
                           " (the tangent turns by " + describeNumber(turn) + " deg, the surface normal by " +
@@ -214,7 +216,8 @@ void SurfaceCurvePath::buildSegment(double sigmaStart, double sigmaEnd) {
   }
   for (int p = 0; p < kInitialPanels; ++p) {
     const double a = sigmaStart + (sigmaEnd - sigmaStart) * p / kInitialPanels;
-    const double b = p + 1 == kInitialPanels ? sigmaEnd : sigmaStart + (sigmaEnd - sigmaStart) * (p + 1) / kInitialPanels;
+    const double b =
+        p + 1 == kInitialPanels ? sigmaEnd : sigmaStart + (sigmaEnd - sigmaStart) * (p + 1) / kInitialPanels;
     fitPanel(a, b, length_, 0);
     length_ = panels_.back().sEnd;
   }

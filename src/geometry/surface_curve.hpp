@@ -72,9 +72,9 @@ class SurfaceCurvePath final : public ContactPath {
 
  private:
   struct Panel {
-    double sigmaStart, sigmaEnd;      // σ range
-    double sStart, sEnd;              // s range
-    std::vector<double> coefficients; // σ − sigmaStart as a Chebyshev series in s
+    double sigmaStart, sigmaEnd;       // σ range
+    double sStart, sEnd;               // s range
+    std::vector<double> coefficients;  // σ − sigmaStart as a Chebyshev series in s
   };
   [[nodiscard]] double speed(double sigma) const;
   [[nodiscard]] Vec2 cachedUvAt(double s) const;
@@ -95,10 +95,10 @@ class SurfaceCurvePath final : public ContactPath {
 // Where the ball stops touching the surface at a single point along a path.
 struct ContactCheck {
   bool ok = true;
-  std::string reason;             // "" when ok
-  double s = 0.0;                 // first failing arc length
+  std::string reason;  // "" when ok
+  double s = 0.0;      // first failing arc length
   Vec3 point = Vec3::Zero();
-  double curvature = 0.0;         // largest principal curvature towards the ball there
+  double curvature = 0.0;  // largest principal curvature towards the ball there
 };
 
 // A ball of radius R touches a surface at one point (locally) only while

@@ -1,7 +1,7 @@
 #include "geometry/surface_kinds.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+#include <cmath>
 #include <numbers>
 
 #include "geometry/analytic_paths.hpp"
@@ -21,21 +21,36 @@ Vec3 toVec(const std::array<double, 3>& v) { return {v[0], v[1], v[2]}; }
 
 // The keys several kinds share, declared once.
 ParamDecl sideKey() {
-  return {.key = "side", .type = ParamType::Choice, .defaultValue = std::string("outside"), .units = "",
+  return {.key = "side",
+          .type = ParamType::Choice,
+          .defaultValue = std::string("outside"),
+          .units = "",
           .meaning = "the ball's side: away from the axis or centre (outside) or towards it (inside)",
           .choices = {"outside", "inside"}};
 }
 ParamDecl heightSideKey() {
-  return {.key = "side", .type = ParamType::Choice, .defaultValue = std::string("above"), .units = "",
-          .meaning = "the ball's side of the height field z = f(x, y)", .choices = {"above", "below"}};
+  return {.key = "side",
+          .type = ParamType::Choice,
+          .defaultValue = std::string("above"),
+          .units = "",
+          .meaning = "the ball's side of the height field z = f(x, y)",
+          .choices = {"above", "below"}};
 }
 ParamDecl positiveKey(std::string key, double value, std::string meaning, std::string noun = "a value") {
-  return {.key = std::move(key), .type = ParamType::Number, .defaultValue = value, .units = "length",
-          .meaning = std::move(meaning), .lowerBound = 0.0, .noun = std::move(noun)};
+  return {.key = std::move(key),
+          .type = ParamType::Number,
+          .defaultValue = value,
+          .units = "length",
+          .meaning = std::move(meaning),
+          .lowerBound = 0.0,
+          .noun = std::move(noun)};
 }
 ParamDecl directionKey(std::string key, std::string meaning) {
-  return {.key = std::move(key), .type = ParamType::Direction, .defaultValue = std::array<double, 3>{0.0, 0.0, 1.0},
-          .units = "", .meaning = std::move(meaning)};
+  return {.key = std::move(key),
+          .type = ParamType::Direction,
+          .defaultValue = std::array<double, 3>{0.0, 0.0, 1.0},
+          .units = "",
+          .meaning = std::move(meaning)};
 }
 
 Side sideOf(const ParamSet& p) { return p.text("side") == "outside" ? Side::Outside : Side::Inside; }
@@ -45,9 +60,9 @@ bool above(const ParamSet& p) { return p.text("side") == "above"; }
 // there. Blames ball.radius when the scene gave it, else the surface's key.
 std::optional<SurfaceProblem> mustFit(double R, double limit, const std::string& what, const std::string& key) {
   if (R < limit) return std::nullopt;
-  return SurfaceProblem{{"ball.radius", "surface." + key},
-                        fmt::format("a ball of radius {} does not fit inside {} (needs ball.radius < {})", R, what,
-                                    limit)};
+  return SurfaceProblem{
+      {"ball.radius", "surface." + key},
+      fmt::format("a ball of radius {} does not fit inside {} (needs ball.radius < {})", R, what, limit)};
 }
 
 template <typename Concrete>
@@ -118,8 +133,8 @@ const std::vector<SurfaceKindRow>& rows() {
        .curve = [](const std::shared_ptr<const Surface>& s, CurveFamily family,
                    const CurveRequest& c) -> std::unique_ptr<SurfaceCurvePath> {
          switch (family) {
-           case CurveFamily::Parallel: return cylinderParallel(as<Cylinder>(s), c.height, c.turns, c.counterClockwise,
-                                                                        c.startAzimuth);
+           case CurveFamily::Parallel:
+             return cylinderParallel(as<Cylinder>(s), c.height, c.turns, c.counterClockwise, c.startAzimuth);
            case CurveFamily::Meridian: return cylinderMeridian(as<Cylinder>(s), c.azimuth, c.height, c.length);
            case CurveFamily::Helix:
              return cylinderHelix(as<Cylinder>(s), c.pitchAngle, c.height, c.turns, c.counterClockwise);
@@ -139,9 +154,9 @@ const std::vector<SurfaceKindRow>& rows() {
        .check = [](const ParamSet& p, double R) -> std::optional<SurfaceProblem> {
          const double A = p.number("major_radius"), a = p.number("minor_radius");
          if (!(a < A))
-           return SurfaceProblem{{"surface.minor_radius", "surface.major_radius"},
-                                 fmt::format("expected minor_radius < major_radius (a ring torus), got {} and {}", a,
-                                             A)};
+           return SurfaceProblem{
+               {"surface.minor_radius", "surface.major_radius"},
+               fmt::format("expected minor_radius < major_radius (a ring torus), got {} and {}", a, A)};
          if (sideOf(p) != Side::Inside) return std::nullopt;
          return mustFit(R, a, fmt::format("a torus tube of radius {}", a), "minor_radius");
        },
@@ -158,8 +173,7 @@ const std::vector<SurfaceKindRow>& rows() {
                   positiveKey("b", 4.0, "z = (x²/a + y²/b)/2: curvature radius along y")},
        .ofRevolution = true,
        .defaultPath = "parallel",
-       .create =
-           [](const ParamSet& p) { return HeightField::quadric(p.number("a"), p.number("b"), false, above(p)); },
+       .create = [](const ParamSet& p) { return HeightField::quadric(p.number("a"), p.number("b"), false, above(p)); },
        .revolutionProblem = [](const ParamSet& p) -> std::optional<SurfaceProblem> {
          if (p.number("a") == p.number("b")) return std::nullopt;
          return SurfaceProblem{{"surface.a"},
@@ -188,15 +202,18 @@ const std::vector<SurfaceKindRow>& rows() {
        }},
       {.name = "height",
        .params = {heightSideKey(),
-                  {.key = "z", .type = ParamType::Expression, .defaultValue = std::string("0"), .units = "length",
-                   .meaning = "the height z = f(x, y), a muparser formula", .variables = {"x", "y"}}},
+                  {.key = "z",
+                   .type = ParamType::Expression,
+                   .defaultValue = std::string("0"),
+                   .units = "length",
+                   .meaning = "the height z = f(x, y), a muparser formula",
+                   .variables = {"x", "y"}}},
        .ofRevolution = false,
        .defaultPath = "meridian",
        .create =
            [](const ParamSet& p) {
-             return HeightField::fromExpression(std::make_shared<const Expression>(p.text("z"),
-                                                                                   std::vector<std::string>{"x", "y"}),
-                                                above(p));
+             return HeightField::fromExpression(
+                 std::make_shared<const Expression>(p.text("z"), std::vector<std::string>{"x", "y"}), above(p));
            },
        .curve = [](const std::shared_ptr<const Surface>& s, CurveFamily family,
                    const CurveRequest& c) -> std::unique_ptr<SurfaceCurvePath> {

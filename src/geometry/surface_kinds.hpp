@@ -25,15 +25,15 @@ namespace rollspin::geometry {
 struct CurveRequest {
   double turns = 1.0;
   bool counterClockwise = true;
-  double height = 0.0;          // cylinder: start height along the axis
-  double tubeAngle = 0.0;       // torus: ψ
-  double radius = 3.0;          // height field of revolution: ρ of the parallel
-  double azimuth = 0.0;         // φ0
+  double height = 0.0;                                // cylinder: start height along the axis
+  double tubeAngle = 0.0;                             // torus: ψ
+  double radius = 3.0;                                // height field of revolution: ρ of the parallel
+  double azimuth = 0.0;                               // φ0
   double colatitudeStart = 0.0, colatitudeEnd = 0.0;  // sphere: θ0, θ1
   double length = 10.0;
-  double pitchAngle = 0.0;      // helix: β
-  double heading = 0.0;         // loxodrome: α
-  double startAzimuth = 0.0;    // parallel: the azimuth it starts at
+  double pitchAngle = 0.0;    // helix: β
+  double heading = 0.0;       // loxodrome: α
+  double startAzimuth = 0.0;  // parallel: the azimuth it starts at
 };
 enum class CurveFamily { Parallel, Meridian, Helix, Loxodrome };
 
@@ -41,15 +41,15 @@ enum class CurveFamily { Parallel, Meridian, Helix, Loxodrome };
 // a line, circle or clothoid on a plane, a parallel on a sphere.
 enum class ClosedFormCurve { Line, Circle, Clothoid, Parallel };
 struct ClosedFormRequest {
-  Vec3 start = Vec3::Zero();      // line, clothoid: the start; circle: the centre
-  Vec3 direction = Vec3::UnitX(); // line, clothoid: the start's tangent; circle: centre → start
+  Vec3 start = Vec3::Zero();       // line, clothoid: the start; circle: the centre
+  Vec3 direction = Vec3::UnitX();  // line, clothoid: the start's tangent; circle: centre → start
   double length = 10.0;
-  double radius = 3.0;            // circle
+  double radius = 3.0;  // circle
   double turns = 1.0;
   bool counterClockwise = true;
   double curvatureStart = 0.0, curvatureRate = 0.0;  // clothoid: κ_g = κ₀ + α s
-  double colatitude = 0.0;        // parallel: θ
-  double startAzimuth = 0.0;      // parallel: the azimuth it starts at
+  double colatitude = 0.0;                           // parallel: θ
+  double startAzimuth = 0.0;                         // parallel: the azimuth it starts at
 };
 
 // A scene value that the kind refuses: the message, and the keys to blame

@@ -44,40 +44,50 @@ std::string fromAzimuth(double startAzimuth) { return startAzimuth == 0.0 ? "" :
 std::unique_ptr<SurfaceCurvePath> sphereParallel(std::shared_ptr<const Sphere> sphere, double colatitude, double turns,
                                                  bool ccw, double startAzimuth) {
   const double sense = ccw ? 1.0 : -1.0;
-  return wrap(sphere,
-              [=](const Jet& t) { return std::array<Jet, 2>{Jet(colatitude), parallelAzimuth(t, sense, startAzimuth)}; },
-              0.0, 2.0 * kPi * turns, "parallel at colatitude " + deg(colatitude) + fromAzimuth(startAzimuth),
-              closedCircuit(turns));
+  return wrap(
+      sphere,
+      [=](const Jet& t) {
+        return std::array<Jet, 2>{Jet(colatitude), parallelAzimuth(t, sense, startAzimuth)};
+      },
+      0.0, 2.0 * kPi * turns, "parallel at colatitude " + deg(colatitude) + fromAzimuth(startAzimuth),
+      closedCircuit(turns));
 }
 
 std::unique_ptr<SurfaceCurvePath> cylinderParallel(std::shared_ptr<const Cylinder> cylinder, double height,
                                                    double turns, bool ccw, double startAzimuth) {
   const double sense = ccw ? 1.0 : -1.0;
-  return wrap(cylinder,
-              [=](const Jet& t) { return std::array<Jet, 2>{parallelAzimuth(t, sense, startAzimuth), Jet(height)}; },
-              0.0, 2.0 * kPi * turns, "parallel at height " + describeNumber(height) + fromAzimuth(startAzimuth),
-              closedCircuit(turns));
+  return wrap(
+      cylinder,
+      [=](const Jet& t) {
+        return std::array<Jet, 2>{parallelAzimuth(t, sense, startAzimuth), Jet(height)};
+      },
+      0.0, 2.0 * kPi * turns, "parallel at height " + describeNumber(height) + fromAzimuth(startAzimuth),
+      closedCircuit(turns));
 }
 
 std::unique_ptr<SurfaceCurvePath> torusParallel(std::shared_ptr<const Torus> torus, double tubeAngle, double turns,
                                                 bool ccw, double startAzimuth) {
   const double sense = ccw ? 1.0 : -1.0;
-  return wrap(torus,
-              [=](const Jet& t) { return std::array<Jet, 2>{parallelAzimuth(t, sense, startAzimuth), Jet(tubeAngle)}; },
-              0.0, 2.0 * kPi * turns, "parallel at tube angle " + deg(tubeAngle) + fromAzimuth(startAzimuth),
-              closedCircuit(turns));
+  return wrap(
+      torus,
+      [=](const Jet& t) {
+        return std::array<Jet, 2>{parallelAzimuth(t, sense, startAzimuth), Jet(tubeAngle)};
+      },
+      0.0, 2.0 * kPi * turns, "parallel at tube angle " + deg(tubeAngle) + fromAzimuth(startAzimuth),
+      closedCircuit(turns));
 }
 
 std::unique_ptr<SurfaceCurvePath> heightFieldParallel(std::shared_ptr<const HeightField> field, double radius,
                                                       double turns, bool ccw, double startAzimuth) {
   const double sense = ccw ? 1.0 : -1.0;
-  return wrap(field,
-              [=](const Jet& t) {
-                const Jet phi = parallelAzimuth(t, sense, startAzimuth);
-                return std::array<Jet, 2>{radius * cos(phi), radius * sin(phi)};
-              },
-              0.0, 2.0 * kPi * turns, "parallel of radius " + describeNumber(radius) + fromAzimuth(startAzimuth),
-              closedCircuit(turns));
+  return wrap(
+      field,
+      [=](const Jet& t) {
+        const Jet phi = parallelAzimuth(t, sense, startAzimuth);
+        return std::array<Jet, 2>{radius * cos(phi), radius * sin(phi)};
+      },
+      0.0, 2.0 * kPi * turns, "parallel of radius " + describeNumber(radius) + fromAzimuth(startAzimuth),
+      closedCircuit(turns));
 }
 
 // ---- meridians ---------------------------------------------------------------
@@ -86,32 +96,47 @@ std::unique_ptr<SurfaceCurvePath> sphereMeridian(std::shared_ptr<const Sphere> s
                                                  double colatitudeStart, double colatitudeEnd) {
   // σ ∈ [0, 1] so that the curve may run either way in θ.
   const double span = colatitudeEnd - colatitudeStart;
-  return wrap(sphere, [=](const Jet& t) { return std::array<Jet, 2>{colatitudeStart + span * t, Jet(azimuth)}; },
-              0.0, 1.0,
-              "meridian at azimuth " + deg(azimuth) + " from colatitude " + deg(colatitudeStart) + " to " +
-                  deg(colatitudeEnd),
-              closedCircuit(0.0));  // a great circle: κ_n = ∓1/r, κ_g = τ_g = 0
+  return wrap(
+      sphere,
+      [=](const Jet& t) {
+        return std::array<Jet, 2>{colatitudeStart + span * t, Jet(azimuth)};
+      },
+      0.0, 1.0,
+      "meridian at azimuth " + deg(azimuth) + " from colatitude " + deg(colatitudeStart) + " to " + deg(colatitudeEnd),
+      closedCircuit(0.0));  // a great circle: κ_n = ∓1/r, κ_g = τ_g = 0
 }
 
 std::unique_ptr<SurfaceCurvePath> torusMeridian(std::shared_ptr<const Torus> torus, double azimuth,
                                                 double tubeAngleStart, double turns, bool ccw) {
   const double sense = ccw ? 1.0 : -1.0;
-  return wrap(torus,
-              [=](const Jet& t) { return std::array<Jet, 2>{Jet(azimuth), tubeAngleStart + sense * t}; }, 0.0,
-              2.0 * kPi * turns, "meridian (round the tube) at azimuth " + deg(azimuth), closedCircuit(turns));
+  return wrap(
+      torus,
+      [=](const Jet& t) {
+        return std::array<Jet, 2>{Jet(azimuth), tubeAngleStart + sense * t};
+      },
+      0.0, 2.0 * kPi * turns, "meridian (round the tube) at azimuth " + deg(azimuth), closedCircuit(turns));
 }
 
 std::unique_ptr<SurfaceCurvePath> cylinderMeridian(std::shared_ptr<const Cylinder> cylinder, double azimuth,
                                                    double height, double length) {
-  return wrap(cylinder, [=](const Jet& t) { return std::array<Jet, 2>{Jet(azimuth), height + t}; }, 0.0, length,
-              "generator line at azimuth " + deg(azimuth) + " of length " + describeNumber(length), closedCircuit(0.0));
+  return wrap(
+      cylinder,
+      [=](const Jet& t) {
+        return std::array<Jet, 2>{Jet(azimuth), height + t};
+      },
+      0.0, length, "generator line at azimuth " + deg(azimuth) + " of length " + describeNumber(length),
+      closedCircuit(0.0));
 }
 
 std::unique_ptr<SurfaceCurvePath> heightFieldMeridian(std::shared_ptr<const HeightField> field, double azimuth,
                                                       double length) {
   const double c = std::cos(azimuth), s = std::sin(azimuth);
-  return wrap(field, [=](const Jet& t) { return std::array<Jet, 2>{c * t, s * t}; }, -0.5 * length, 0.5 * length,
-              "vertical section through the z axis at azimuth " + deg(azimuth));
+  return wrap(
+      field,
+      [=](const Jet& t) {
+        return std::array<Jet, 2>{c * t, s * t};
+      },
+      -0.5 * length, 0.5 * length, "vertical section through the z axis at azimuth " + deg(azimuth));
 }
 
 // ---- helix and loxodrome ---------------------------------------------------------
@@ -119,21 +144,27 @@ std::unique_ptr<SurfaceCurvePath> heightFieldMeridian(std::shared_ptr<const Heig
 std::unique_ptr<SurfaceCurvePath> cylinderHelix(std::shared_ptr<const Cylinder> cylinder, double pitchAngle,
                                                 double height, double turns, bool ccw) {
   const double sense = ccw ? 1.0 : -1.0, rise = cylinder->radius() * std::tan(pitchAngle);
-  return wrap(cylinder, [=](const Jet& t) { return std::array<Jet, 2>{sense * t, height + rise * t}; }, 0.0,
-              2.0 * kPi * turns, "helix with pitch angle " + deg(pitchAngle), closedCircuit(turns));
+  return wrap(
+      cylinder,
+      [=](const Jet& t) {
+        return std::array<Jet, 2>{sense * t, height + rise * t};
+      },
+      0.0, 2.0 * kPi * turns, "helix with pitch angle " + deg(pitchAngle), closedCircuit(turns));
 }
 
-std::unique_ptr<SurfaceCurvePath> sphereLoxodrome(std::shared_ptr<const Sphere> sphere, double heading,
-                                                  double azimuth, double colatitudeStart, double colatitudeEnd) {
+std::unique_ptr<SurfaceCurvePath> sphereLoxodrome(std::shared_ptr<const Sphere> sphere, double heading, double azimuth,
+                                                  double colatitudeStart, double colatitudeEnd) {
   const double span = colatitudeEnd - colatitudeStart, k = std::tan(heading);
   const double logStart = std::log(std::tan(0.5 * colatitudeStart));
-  return wrap(sphere,
-              [=](const Jet& t) {
-                const Jet theta = colatitudeStart + span * t;
-                return std::array<Jet, 2>{theta, azimuth + k * (log(tan(0.5 * theta)) - logStart)};
-              },
-              0.0, 1.0, "loxodrome at heading " + deg(heading) + " from colatitude " + deg(colatitudeStart) +
-                            " to " + deg(colatitudeEnd));
+  return wrap(
+      sphere,
+      [=](const Jet& t) {
+        const Jet theta = colatitudeStart + span * t;
+        return std::array<Jet, 2>{theta, azimuth + k * (log(tan(0.5 * theta)) - logStart)};
+      },
+      0.0, 1.0,
+      "loxodrome at heading " + deg(heading) + " from colatitude " + deg(colatitudeStart) + " to " +
+          deg(colatitudeEnd));
 }
 
 // ---- geodesics -----------------------------------------------------------------
@@ -171,8 +202,7 @@ State rk4(const Surface& surface, const State& y, double h) { return y + rk4Incr
 // the frame methods integrate as κ_g), for one surface evaluation a point.
 class MarchedGeodesicCurve final : public UvCurve {
  public:
-  MarchedGeodesicCurve(std::shared_ptr<const Surface> surface, const std::vector<State>& nodes, double h,
-                       double length)
+  MarchedGeodesicCurve(std::shared_ptr<const Surface> surface, const std::vector<State>& nodes, double h, double length)
       : surface_(std::move(surface)), h_(h), length_(length) {
     for (const State& y : nodes) {
       const State rate = geodesicRate(*surface_, y);
@@ -252,8 +282,9 @@ std::unique_ptr<SurfaceCurvePath> greatCircle(std::shared_ptr<const Sphere> sphe
   const std::complex<double> A(a.x(), a.y()), B(b.x(), b.y()), I(0.0, 1.0);
   const std::complex<double> P = 0.5 * (A - I * B), Q = 0.5 * (A + I * B);
   if (!(std::abs(std::abs(P) - std::abs(Q)) > 1e-9))
-    throw GeometryError("the geodesic (a great circle) passes through a pole of the sphere, where the azimuth "
-                        "is undefined");
+    throw GeometryError(
+        "the geodesic (a great circle) passes through a pole of the sphere, where the azimuth "
+        "is undefined");
   const bool forward = std::abs(P) > std::abs(Q);
   const std::complex<double> lead = forward ? P : Q, ratio = forward ? Q / P : P / Q;
   const double k = std::abs(ratio), gamma = std::arg(ratio), base = std::arg(lead), sense = forward ? 1.0 : -1.0;
@@ -325,7 +356,8 @@ std::unique_ptr<SurfaceCurvePath> geodesicPath(std::shared_ptr<const Surface> su
   auto dense = [&](double s) {
     const auto k = std::clamp<long long>(static_cast<long long>(s / h), 0, steps - 1);
     const double ds = s - static_cast<double>(k) * h;
-    const State y = ds == 0.0 ? nodes[static_cast<std::size_t>(k)] : rk4(*surface, nodes[static_cast<std::size_t>(k)], ds);
+    const State y =
+        ds == 0.0 ? nodes[static_cast<std::size_t>(k)] : rk4(*surface, nodes[static_cast<std::size_t>(k)], ds);
     return Vec2(y[0], y[1]);
   };
   // Chebyshev panels of length ≤ 1/2 (halved until the fit matches the
@@ -335,7 +367,8 @@ std::unique_ptr<SurfaceCurvePath> geodesicPath(std::shared_ptr<const Surface> su
   for (int attempt = 0;; ++attempt) {
     const auto panels = static_cast<long long>(std::ceil(length / panelLength));
     std::vector<double> cuts;
-    for (long long p = 0; p <= panels; ++p) cuts.push_back(length * static_cast<double>(p) / static_cast<double>(panels));
+    for (long long p = 0; p <= panels; ++p)
+      cuts.push_back(length * static_cast<double>(p) / static_cast<double>(panels));
     auto curve = std::make_shared<PiecewiseChebyshevUvCurve>(
         dense, cuts, kDegree, "geodesic of length " + describeNumber(length) + " (integrated, RK4 + Chebyshev panels)");
     double worst = 0.0, scale = 1.0;
@@ -367,15 +400,20 @@ std::unique_ptr<SurfaceCurvePath> uvExpressionPath(std::shared_ptr<const Surface
                                                    std::shared_ptr<const Expression> v, double tStart, double tEnd) {
   const std::string description = "curve u = " + u->text() + ", v = " + v->text() + " for t in [" +
                                   describeNumber(tStart) + ", " + describeNumber(tEnd) + "]";
-  return wrap(surface, [u, v](const Jet& t) { return std::array<Jet, 2>{u->jet(t), v->jet(t)}; }, tStart, tEnd,
-              description);
+  return wrap(
+      surface,
+      [u, v](const Jet& t) {
+        return std::array<Jet, 2>{u->jet(t), v->jet(t)};
+      },
+      tStart, tEnd, description);
 }
 
 std::unique_ptr<SurfaceCurvePath> pointsPath(std::shared_ptr<const Surface> surface, const std::vector<Vec2>& pointsUv,
                                              bool closed, PointsInterpolation interpolation, double cornerRadius) {
-  std::shared_ptr<const UvCurve> curve = interpolation == PointsInterpolation::CubicSpline
-                                             ? std::static_pointer_cast<const UvCurve>(SplineUvCurve::cubic(pointsUv, closed))
-                                             : SplineUvCurve::roundedPolyline(pointsUv, closed, cornerRadius);
+  std::shared_ptr<const UvCurve> curve =
+      interpolation == PointsInterpolation::CubicSpline
+          ? std::static_pointer_cast<const UvCurve>(SplineUvCurve::cubic(pointsUv, closed))
+          : SplineUvCurve::roundedPolyline(pointsUv, closed, cornerRadius);
   SurfaceCurveOptions options;
   options.turns = closed ? 1.0 : 0.0;
   return std::make_unique<SurfaceCurvePath>(std::move(surface), std::move(curve), options);

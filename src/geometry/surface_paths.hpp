@@ -62,13 +62,12 @@ namespace rollspin::geometry {
 // is the same geodesic marched at half the step (compensated sums, no fit,
 // in arc length), for the error estimate.
 [[nodiscard]] std::unique_ptr<SurfaceCurvePath> geodesicPath(std::shared_ptr<const Surface> surface,
-                                                             const Vec2& startUv, const Vec3& direction,
-                                                             double length);
+                                                             const Vec2& startUv, const Vec3& direction, double length);
 
 [[nodiscard]] std::unique_ptr<SurfaceCurvePath> uvExpressionPath(std::shared_ptr<const Surface> surface,
-                                                                  std::shared_ptr<const Expression> u,
-                                                                  std::shared_ptr<const Expression> v, double tStart,
-                                                                  double tEnd);
+                                                                 std::shared_ptr<const Expression> u,
+                                                                 std::shared_ptr<const Expression> v, double tStart,
+                                                                 double tEnd);
 
 enum class PointsInterpolation { CubicSpline, Polyline };
 [[nodiscard]] std::unique_ptr<SurfaceCurvePath> pointsPath(std::shared_ptr<const Surface> surface,

@@ -77,9 +77,7 @@ std::string Cylinder::describe() const {
          (side_ == Side::Outside ? " (outside)" : " (inside)");
 }
 
-std::string Cylinder::parameterNames() const {
-  return "(φ, z): azimuth in radians about the axis and height along it";
-}
+std::string Cylinder::parameterNames() const { return "(φ, z): azimuth in radians about the axis and height along it"; }
 
 // ---- torus -----------------------------------------------------------------
 
@@ -166,9 +164,7 @@ std::optional<Vec2> HeightField::parametersOf(const Vec3& point) const { return 
 
 Vec3 HeightField::normalAt(const Vec3& point) const { return normal(Vec2(point.x(), point.y())); }
 
-double HeightField::distance(const Vec3& point) const {
-  return point.z() - f_(Jet(point.x()), Jet(point.y())).v;
-}
+double HeightField::distance(const Vec3& point) const { return point.z() - f_(Jet(point.x()), Jet(point.y())).v; }
 
 std::string HeightField::parameterNames() const { return "(x, y): the horizontal coordinates"; }
 

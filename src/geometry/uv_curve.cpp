@@ -83,8 +83,8 @@ std::shared_ptr<SplineUvCurve> SplineUvCurve::cubic(const std::vector<Vec2>& poi
     curve->pieces_.push_back(piece);
     curve->knots_.push_back(curve->knots_.back() + h[i]);
   }
-  curve->description_ = std::string(closed ? "closed" : "open") + " cubic spline through " + std::to_string(n) +
-                        " points";
+  curve->description_ =
+      std::string(closed ? "closed" : "open") + " cubic spline through " + std::to_string(n) + " points";
   return curve;
 }
 
@@ -101,8 +101,7 @@ std::shared_ptr<SplineUvCurve> SplineUvCurve::roundedPolyline(const std::vector<
   for (std::size_t i = 0; i < legs; ++i) {
     legLength[i] = (P(i + 1) - P(i)).norm();
     if (!(legLength[i] > 0.0))
-      throw GeometryError("points " + std::to_string(i + 1) + " and " + std::to_string((i + 1) % n + 1) +
-                          " coincide");
+      throw GeometryError("points " + std::to_string(i + 1) + " and " + std::to_string((i + 1) % n + 1) + " coincide");
     dir[i] = (P(i + 1) - P(i)) / legLength[i];
   }
   // Corner k sits at point k, between leg k−1 and leg k; turn angle θ_k.

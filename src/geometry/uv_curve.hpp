@@ -127,7 +127,7 @@ class SplineUvCurve final : public UvCurve {
   // One piece on [knots_[i], knots_[i+1]]: p(τ) = Σ c_k τ^k, τ = σ − knot.
   struct Piece {
     Vec2 c0 = Vec2::Zero(), c1 = Vec2::Zero(), c2 = Vec2::Zero(), c3 = Vec2::Zero();
-    bool arc = false;          // a circular arc instead of a cubic
+    bool arc = false;            // a circular arc instead of a cubic
     Vec2 centre = Vec2::Zero();  // arc: p = centre + r (cos(θ0 + wτ), sin(θ0 + wτ))
     double radius = 0.0, theta0 = 0.0, rate = 0.0;
   };

@@ -46,8 +46,7 @@ void fitToAddressSpaceLimit(bool verbose) {
   if (plan.oneArena) mallopt(M_ARENA_MAX, 1);
   if (plan.llvmpipeThreads) setenv("LP_NUM_THREADS", std::to_string(*plan.llvmpipeThreads).c_str(), 1);
   if (verbose && limit)
-    std::fprintf(stderr,
-                 "rollspin: memory: address space limited to %llu MiB (ulimit -v): one malloc arena%s\n",
+    std::fprintf(stderr, "rollspin: memory: address space limited to %llu MiB (ulimit -v): one malloc arena%s\n",
                  static_cast<unsigned long long>(*limit / kMiB),
                  plan.llvmpipeThreads
                      ? (", llvmpipe threads " + std::to_string(*plan.llvmpipeThreads) + " (LP_NUM_THREADS)").c_str()

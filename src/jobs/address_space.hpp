@@ -15,8 +15,8 @@
 namespace rollspin::jobs {
 
 struct AddressSpacePlan {
-  bool oneArena = false;                  // mallopt(M_ARENA_MAX, 1)
-  std::optional<int> llvmpipeThreads;     // LP_NUM_THREADS to set, if any
+  bool oneArena = false;               // mallopt(M_ARENA_MAX, 1)
+  std::optional<int> llvmpipeThreads;  // LP_NUM_THREADS to set, if any
 };
 
 // With no limit nothing changes. Under one: one malloc arena, and unless the

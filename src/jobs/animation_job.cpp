@@ -13,6 +13,10 @@
 #include <stdexcept>
 #include <thread>
 
+#include "core/bounded_queue.hpp"
+#include "core/output_path.hpp"
+#include "core/stage_log.hpp"
+#include "core/temp_files.hpp"
 #include "jobs/clip_captions.hpp"
 #include "jobs/flag_overrides.hpp"
 #include "jobs/interrupt_guard.hpp"
@@ -21,10 +25,6 @@
 #include "jobs/remembered_output.hpp"
 #include "jobs/render_jobs.hpp"
 #include "jobs/shard_range.hpp"
-#include "core/bounded_queue.hpp"
-#include "core/output_path.hpp"
-#include "core/stage_log.hpp"
-#include "core/temp_files.hpp"
 #include "media/container_tags.hpp"
 #include "media/sink_factory.hpp"
 #include "motion/frame_clock.hpp"
@@ -118,8 +118,9 @@ std::vector<FlagOverride> qualityFlags(const std::optional<std::string>& quality
   if (!quality) return flags;
   const QualityPreset* preset = findQualityPreset(*quality);
   if (preset == nullptr)
-    throw badInput({"--quality " + *quality}, "expected low (854x480@15), medium (1280x720@30), "
-                                              "high (1920x1080@60) or 4k (3840x2160@60)");
+    throw badInput({"--quality " + *quality},
+                   "expected low (854x480@15), medium (1280x720@30), "
+                   "high (1920x1080@60) or 4k (3840x2160@60)");
   const std::string flag = "--quality " + *quality;
   flags.push_back(flagOverride(flag, "render", scene::key::kWidth, (long long)preset->width, true));
   flags.push_back(flagOverride(flag, "render", scene::key::kHeight, (long long)preset->height, true));
@@ -153,9 +154,9 @@ ClipPart planClipPart(const DrawJob& job, const FrameClock& clock, const Animati
                    format.name, format.name, joinable, format.name);
   }
   ClipPart part;
-  part.range = o.frames  ? parseFrameRange(*o.frames, clock.frameCount())
-               : shard ? shardFrames(*shard, clock.frameCount())
-                       : FrameRange{0, clock.frameCount() - 1};
+  part.range = o.frames ? parseFrameRange(*o.frames, clock.frameCount())
+               : shard  ? shardFrames(*shard, clock.frameCount())
+                        : FrameRange{0, clock.frameCount() - 1};
   part.folder = format.isFolder();
   part.out = o.output;
   if (part.out.empty()) {
@@ -182,13 +183,13 @@ media::SinkOptions clipSinkOptions(const DrawJob& job, const FrameClock& clock, 
   sinkOpts.fpsDen = static_cast<int>(clock.fps().den);
   sinkOpts.firstIndex = range.first;
   sinkOpts.wholeClip = range.first == 0 && range.last == clock.frameCount() - 1;
-  sinkOpts.containerMetadata = media::containerMetadata(media::ContainerTags{
-      media::sha256Hex(scene::writeScene(spec)), ROLLSPIN_VERSION,
-      fmt::format("{} preset={} crf={} {}{}x{} {}/{} fps", job.format->name, sinkOpts.preset,
-                  sinkOpts.crf ? fmt::format("{}", *sinkOpts.crf) : std::string("default"),
-                  sinkOpts.alpha ? "alpha " : "", spec.render.width, spec.render.height, sinkOpts.fpsNum,
-                  sinkOpts.fpsDen),
-      range.first, range.last, clock.frameCount()});
+  sinkOpts.containerMetadata = media::containerMetadata(
+      media::ContainerTags{media::sha256Hex(scene::writeScene(spec)), ROLLSPIN_VERSION,
+                           fmt::format("{} preset={} crf={} {}{}x{} {}/{} fps", job.format->name, sinkOpts.preset,
+                                       sinkOpts.crf ? fmt::format("{}", *sinkOpts.crf) : std::string("default"),
+                                       sinkOpts.alpha ? "alpha " : "", spec.render.width, spec.render.height,
+                                       sinkOpts.fpsNum, sinkOpts.fpsDen),
+                           range.first, range.last, clock.frameCount()});
   // The captions as text: the part's own cues in its track, the whole
   // clip's in the sidecars; shown unasked when the pixels leave them out.
   sinkOpts.subtitles = media::cuesOfPart(cues, range.first, range.last);
@@ -361,10 +362,11 @@ void finishInterrupted(media::FrameSink& sink, const ClipPart& part, AnimationRe
   } else {
     std::error_code ec;
     const std::string untouched = fs::exists(part.out, ec) ? fmt::format("; {} is unchanged", part.out.string()) : "";
-    std::fprintf(stderr, "rollspin: interrupted (%s) after %lld of %lld frames: %s holds complete frames %05lld to "
-                         "%05lld only%s\n",
-                 name, result.framesWritten, result.framesRequested, result.written.string().c_str(),
-                 part.range.first, part.range.first + result.framesWritten - 1, untouched.c_str());
+    std::fprintf(stderr,
+                 "rollspin: interrupted (%s) after %lld of %lld frames: %s holds complete frames %05lld to "
+                 "%05lld only%s\n",
+                 name, result.framesWritten, result.framesRequested, result.written.string().c_str(), part.range.first,
+                 part.range.first + result.framesWritten - 1, untouched.c_str());
   }
 }
 
@@ -374,9 +376,9 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   // Measured: a 1080p MP4 render peaks ~235 bytes per pixel above the still's
   // estimate (three queued RGBA frames, the yuv420p frame and the converter's
   // copy of the last RGBA frame, x264's look-ahead).
-  const DrawJob job = prepareDrawJob({o.scenePath, o.overrides, qualityFlags(o.quality), o.width, o.height,
-                                      o.transparent, o.output, media::OutputUse::Animation, 256, o.sceneText,
-                                      o.sceneName});
+  const DrawJob job =
+      prepareDrawJob({o.scenePath, o.overrides, qualityFlags(o.quality), o.width, o.height, o.transparent, o.output,
+                      media::OutputUse::Animation, 256, o.sceneText, o.sceneName});
   const scene::SceneSpec& spec = job.spec;
   if (job.format->kind == media::OutputKind::Viewer) return writeViewerOutput(job, o);
   const FrameClock clock = clipClock(spec, job.model);
@@ -424,10 +426,10 @@ AnimationResult renderAnimation(const AnimationOptions& o) {
   result.written = sink->finish();
   if (sidecars) sidecars->commit();
   if (!o.quiet)
-    std::fprintf(stderr, "rollspin: wrote %s: %lld frames, %dx%d @ %s fps (%.2f s of video) in %.1f s (%.1f frames/s)\n",
-                 result.written.string().c_str(), result.framesWritten, int(spec.render.width),
-                 int(spec.render.height), clock.fps().describe().c_str(),
-                 double(result.framesWritten) / clock.fps().value(), seconds,
+    std::fprintf(stderr,
+                 "rollspin: wrote %s: %lld frames, %dx%d @ %s fps (%.2f s of video) in %.1f s (%.1f frames/s)\n",
+                 result.written.string().c_str(), result.framesWritten, int(spec.render.width), int(spec.render.height),
+                 clock.fps().describe().c_str(), double(result.framesWritten) / clock.fps().value(), seconds,
                  seconds > 0.0 ? double(result.framesWritten) / seconds : 0.0);
   return result;
 }

@@ -22,20 +22,20 @@ namespace rollspin::jobs {
 
 struct AnimationOptions {
   std::string scenePath;
-  std::vector<std::string> overrides;          // --set
-  std::filesystem::path output;                // "" → output/<scene>.EXT or output/<scene>/
-  std::optional<std::string> frames;           // "A:B", inclusive
-  std::optional<std::string> shard;            // "K/N": the K-th of N near-equal ranges (shard_range.hpp)
-  std::optional<std::string> quality;          // low | medium | high | 4k
+  std::vector<std::string> overrides;  // --set
+  std::filesystem::path output;        // "" → output/<scene>.EXT or output/<scene>/
+  std::optional<std::string> frames;   // "A:B", inclusive
+  std::optional<std::string> shard;    // "K/N": the K-th of N near-equal ranges (shard_range.hpp)
+  std::optional<std::string> quality;  // low | medium | high | 4k
   std::optional<long long> width, height;
   bool transparent = false;
   bool quiet = false;
   // A whole MP4, WebM or MOV clip's captions beside it: NAME.vtt (and NAME.srt).
   media::SidecarFormats sidecars = media::SidecarFormats::Vtt;
   std::filesystem::path shaderDir;
-  std::optional<std::string> sceneText;        // the scene itself (Python's loads()); scenePath names it
-  std::string sceneName;                       // with sceneText from --from: the scene's name
-  bool metadata = true;                        // false: --no-metadata (remembered_output.hpp)
+  std::optional<std::string> sceneText;  // the scene itself (Python's loads()); scenePath names it
+  std::string sceneName;                 // with sceneText from --from: the scene's name
+  bool metadata = true;                  // false: --no-metadata (remembered_output.hpp)
   // Called on the rendering thread after each frame is handed on (done, of
   // total including a GIF's palette pass); the Python binding's progress bar.
   std::function<void(long long done, long long total)> onFrame;
@@ -45,7 +45,7 @@ struct AnimationResult {
   std::filesystem::path written;  // empty when interrupted before any frame
   long long framesWritten = 0;
   long long framesRequested = 0;
-  int interruptedBy = 0;          // the signal, or 0
+  int interruptedBy = 0;  // the signal, or 0
 };
 
 // Quality presets (Manim's spirit): size and frame rate.

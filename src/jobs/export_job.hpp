@@ -13,9 +13,9 @@ namespace rollspin::jobs {
 
 struct ExportJob {
   const scene::SceneSpec* spec = nullptr;
-  std::string sceneSource;        // the scene's path or name, for the remembered scene text
-  std::filesystem::path output;   // "" → output/<scene>.glb
-  bool metadata = true;           // false: leave the resolved scene text out
+  std::string sceneSource;       // the scene's path or name, for the remembered scene text
+  std::filesystem::path output;  // "" → output/<scene>.glb
+  bool metadata = true;          // false: leave the resolved scene text out
 };
 
 // Checks an output name before any work is done (extension, folder).

@@ -8,13 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "jobs/job_setup.hpp"
-#include "jobs/render_jobs.hpp"
 #include "core/error.hpp"
 #include "core/memory_budget.hpp"
 #include "core/stage_log.hpp"
 #include "draw/draw_style.hpp"
 #include "draw/text_blocks.hpp"
+#include "jobs/job_setup.hpp"
+#include "jobs/render_jobs.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 
@@ -88,8 +88,10 @@ draw::FigureText fitTextToFigure(scene::SceneSpec& spec, bool say) {
     for (const std::string& title : titles)
       if (!title.empty() && !draw::titleFitsFigure(title, text, float(spec.render.width), float(spec.render.height),
                                                    text * float(figureText.leastScale)))
-        fmt::print(stderr, "figure: the title \"{}\" would take over a fifth of the height at this size: left out "
-                           "(docs/figures.md, The title)\n", title);
+        fmt::print(stderr,
+                   "figure: the title \"{}\" would take over a fifth of the height at this size: left out "
+                   "(docs/figures.md, The title)\n",
+                   title);
   }
   return figureText;
 }

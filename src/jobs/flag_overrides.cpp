@@ -2,8 +2,8 @@
 
 #include <cstdio>
 
-#include "model/rolling_model.hpp"
 #include "core/error.hpp"
+#include "model/rolling_model.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace rollspin::jobs {

@@ -15,9 +15,9 @@
 namespace rollspin::jobs {
 
 struct FlagOverride {
-  std::string flag;             // as typed: "--width 641", "--quality medium"
-  scene::KeySetting setting;    // the key (a row's constant) and its value
-  bool preset = false;          // a preset's key (--quality): only a default
+  std::string flag;           // as typed: "--width 641", "--quality medium"
+  scene::KeySetting setting;  // the key (a row's constant) and its value
+  bool preset = false;        // a preset's key (--quality): only a default
 };
 // A flag's override of `section`.`key`.
 [[nodiscard]] FlagOverride flagOverride(const std::string& flag, const std::string& section, std::string_view key,

@@ -58,10 +58,8 @@ void restartWithHugePages(char** argv) {
   ::setenv(kRestartMarker, "1", 1);
   std::fflush(nullptr);
   ::execv(self.c_str(), argv);
-  if (facts.tunables)
-    ::setenv("GLIBC_TUNABLES", facts.tunables->c_str(), 1);
-  else
-    ::unsetenv("GLIBC_TUNABLES");
+  if (facts.tunables) ::setenv("GLIBC_TUNABLES", facts.tunables->c_str(), 1);
+  else ::unsetenv("GLIBC_TUNABLES");
   ::unsetenv(kRestartMarker);
 }
 

@@ -27,7 +27,8 @@ class InterruptGuard {
   static constexpr long long kSameInterruptionNanoseconds = 250'000'000;
 
  private:
-  struct sigaction previousInt_ {}, previousTerm_ {};
+  struct sigaction previousInt_ {
+  }, previousTerm_{};
 };
 
 }  // namespace rollspin::jobs

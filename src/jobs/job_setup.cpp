@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "jobs/render_jobs.hpp"
 #include "core/output_path.hpp"
+#include "jobs/render_jobs.hpp"
 #include "motion/scene_facts.hpp"
 #include "scene/scene_tables.hpp"
 
@@ -19,7 +19,8 @@ DrawJob prepareDrawJob(const DrawJobRequest& r) {
   // --set), then --width/--height; all validated by the scene loader, and an
   // error names the flag typed.
   std::vector<FlagOverride> flags = r.presetFlags;
-  if (r.width) flags.push_back(flagOverride("--width " + std::to_string(*r.width), "render", scene::key::kWidth, *r.width));
+  if (r.width)
+    flags.push_back(flagOverride("--width " + std::to_string(*r.width), "render", scene::key::kWidth, *r.width));
   if (r.height)
     flags.push_back(flagOverride("--height " + std::to_string(*r.height), "render", scene::key::kHeight, *r.height));
   if (r.transparent) flags.push_back(flagOverride("--transparent", "render", scene::key::kTransparent, true));
@@ -31,12 +32,14 @@ DrawJob prepareDrawJob(const DrawJobRequest& r) {
   // What the format's row asks of the output. A GIF: its own default size
   // when neither the scene nor a flag gives one (height by the aspect
   // ratio), and a frame rate capped so frames last whole 1/100 s.
-  if (format.defaultWidth > 0 && !spec.locations.contains("render.width") && !spec.locations.contains("render.height")) {
+  if (format.defaultWidth > 0 && !spec.locations.contains("render.width") &&
+      !spec.locations.contains("render.height")) {
     const long long w = spec.render.width, h = spec.render.height;
     spec.render.width = format.defaultWidth;
     spec.render.height = std::max<long long>(1, std::llround(double(format.defaultWidth) * double(h) / double(w)));
   }
-  if (format.fpsCap > 0 && spec.animation.fps.value() > format.fpsCap) spec.animation.fps = scene::FrameRate{format.fpsCap, 1};
+  if (format.fpsCap > 0 && spec.animation.fps.value() > format.fpsCap)
+    spec.animation.fps = scene::FrameRate{format.fpsCap, 1};
   if (!r.output.empty()) {  // before any work: a folder for frames, else a file
     const SourceLoc where{"-o " + r.output.string()};
     if (format.isFolder()) checkOutputFolder(r.output, where);

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "jobs/flag_overrides.hpp"
 #include "draw/scene_drawer.hpp"
+#include "jobs/flag_overrides.hpp"
 #include "media/output_format.hpp"
 #include "model/rolling_model.hpp"
 #include "render/gl_context.hpp"
@@ -27,15 +27,15 @@ namespace rollspin::jobs {
 
 struct DrawJobRequest {
   std::string scenePath;
-  std::vector<std::string> overrides;         // --set
-  std::vector<FlagOverride> presetFlags;      // --quality: before --width/--height
-  std::optional<long long> width, height;     // --width, --height: [1, 8192]
-  bool transparent = false;                   // --transparent
-  std::filesystem::path output;               // -o ("" = the job's default name)
+  std::vector<std::string> overrides;      // --set
+  std::vector<FlagOverride> presetFlags;   // --quality: before --width/--height
+  std::optional<long long> width, height;  // --width, --height: [1, 8192]
+  bool transparent = false;                // --transparent
+  std::filesystem::path output;            // -o ("" = the job's default name)
   media::OutputUse use = media::OutputUse::Still;
-  std::uint64_t extraBytesPerPixel = 0;       // what the job adds to the renderer's frame memory
-  std::optional<std::string> sceneText;       // the scene itself (Python's loads()); scenePath names it
-  std::string sceneName;                      // with sceneText: the scene's name ("" = keep the loader's)
+  std::uint64_t extraBytesPerPixel = 0;  // what the job adds to the renderer's frame memory
+  std::optional<std::string> sceneText;  // the scene itself (Python's loads()); scenePath names it
+  std::string sceneName;                 // with sceneText: the scene's name ("" = keep the loader's)
 };
 
 struct DrawJob {
@@ -52,7 +52,7 @@ struct DrawJob {
 // scene's facts. `figureStillAt`: a figure of the still at that arc length
 // (SceneDrawer: framed for that still alone).
 [[nodiscard]] std::unique_ptr<draw::SceneDrawer> makeDrawer(const DrawJob& job,
-                                                         std::optional<double> figureStillAt = std::nullopt);
+                                                            std::optional<double> figureStillAt = std::nullopt);
 
 // One GL context, its shaders and the renderer over them, in that order.
 struct GlRenderer {

@@ -77,13 +77,15 @@ std::vector<render::FigureLayout::LeftOut> whereLeftOutIsKept(DrawJob& job, cons
 
 void reportLeftOut(const std::vector<render::FigureLayout::LeftOut>& leftOut, double widthMm, double fontPt) {
   for (const auto& l : leftOut) {
-    const std::string wider = l.keptAtWidthMm ? fmt::format("kept at {:g} mm wide", *l.keptAtWidthMm)
-                                              : fmt::format("not kept at any width up to {:g} mm",
-                                                            std::end(kLeftOutWidthsMm)[-1]);
+    const std::string wider = l.keptAtWidthMm
+                                  ? fmt::format("kept at {:g} mm wide", *l.keptAtWidthMm)
+                                  : fmt::format("not kept at any width up to {:g} mm", std::end(kLeftOutWidthsMm)[-1]);
     const std::string smaller = l.keptAtFontPt ? fmt::format("at {:g} pt", *l.keptAtFontPt)
                                                : fmt::format("at no size down to {:g} pt", kLeastFigureTextPt);
-    fmt::print(stderr, "figure: \"{}\" left out: no room at {:g} mm and {:g} pt; {}, or {} "
-                       "(figure.width_mm, figure.font_size_pt)\n", l.text, widthMm, fontPt, wider, smaller);
+    fmt::print(stderr,
+               "figure: \"{}\" left out: no room at {:g} mm and {:g} pt; {}, or {} "
+               "(figure.width_mm, figure.font_size_pt)\n",
+               l.text, widthMm, fontPt, wider, smaller);
   }
 }
 

@@ -25,8 +25,8 @@ inline constexpr double kLeftOutFontStepPt = 0.5;
 // list.leftOut, each with the least width and the largest body size tried
 // that keep it (nullopt where none does). job.spec is restored.
 [[nodiscard]] std::vector<render::FigureLayout::LeftOut> whereLeftOutIsKept(DrawJob& job,
-                                                                           const std::optional<std::string>& at,
-                                                                           const render::DrawList& list);
+                                                                            const std::optional<std::string>& at,
+                                                                            const render::DrawList& list);
 
 // One stderr line for each: what is left out at this width and size, and
 // what keeps it.

@@ -71,7 +71,8 @@ JobRecord parseJobRecord(const std::string& text, const std::string& where) {
 
 std::string describeScene(const scene::SceneSpec& spec, const model::RollingModel& model) {
   // The path's own description names its surface ("circle of radius 3 (1 turns, ccw) on a plane …").
-  const std::string motion = fmt::format("A ball of radius {:g} rolls along a {}", model.ballRadius, model.path->describe());
+  const std::string motion =
+      fmt::format("A ball of radius {:g} rolls along a {}", model.ballRadius, model.path->describe());
   switch (spec.render.layout) {
     case scene::RenderLayout::SideBySide: return motion + "; beside it the spin on the Bloch sphere.";
     case scene::RenderLayout::Inset: return motion + "; in an inset the spin on the Bloch sphere.";
@@ -93,8 +94,8 @@ media::OutputMetadata outputMetadata(const scene::SceneSpec& spec, const model::
 }
 
 std::vector<std::pair<std::string, std::string>> metadataTags(const media::OutputMetadata& m) {
-  return {{"title", m.title}, {kDescriptionTag, m.description}, {"comment", m.description},
-          {kSceneTag, m.scene}, {kJobTag, m.job}, {kSoftwareTag, m.software}};
+  return {{"title", m.title}, {kDescriptionTag, m.description}, {"comment", m.description}, {kSceneTag, m.scene},
+          {kJobTag, m.job},   {kSoftwareTag, m.software}};
 }
 
 namespace {
@@ -109,8 +110,10 @@ media::OutputMetadata fromJson(const std::string& bytes, const std::string& name
       if (node.value("name", "") == "ball" && node.contains("extras") && node["extras"].contains("rollspin") &&
           node["extras"]["rollspin"].contains("scene") && node["extras"]["rollspin"]["scene"].is_string())
         return {"", node["extras"]["rollspin"]["scene"].get<std::string>(), "", "", ""};
-    throw badInput(SourceLoc{name}, "'{}' carries no rollspin metadata: no node named 'ball' with "
-                                    "extras.rollspin.scene", name);
+    throw badInput(SourceLoc{name},
+                   "'{}' carries no rollspin metadata: no node named 'ball' with "
+                   "extras.rollspin.scene",
+                   name);
   }
   if (!doc.is_object() || !doc.contains("scene") || !doc["scene"].is_string())
     throw badInput(SourceLoc{name}, "'{}' carries no rollspin metadata: no \"scene\" string", name);
@@ -153,9 +156,12 @@ media::OutputMetadata fromContainer(const std::filesystem::path& file) {
     return it == tags.end() ? nullptr : &it->second;
   };
   if (!tag(kSceneTag))
-    throw badInput(SourceLoc{name}, "'{}' carries no rollspin metadata: no '{}' tag (was it written by rollspin "
-                                    "render, without --no-metadata?)", name, kSceneTag);
-  if (!tag(kJobTag)) throw badInput(SourceLoc{name}, "'{}': the '{}' tag is missing (its metadata is incomplete)", name, kJobTag);
+    throw badInput(SourceLoc{name},
+                   "'{}' carries no rollspin metadata: no '{}' tag (was it written by rollspin "
+                   "render, without --no-metadata?)",
+                   name, kSceneTag);
+  if (!tag(kJobTag))
+    throw badInput(SourceLoc{name}, "'{}': the '{}' tag is missing (its metadata is incomplete)", name, kJobTag);
   media::OutputMetadata m;
   m.scene = *tag(kSceneTag);
   m.job = *tag(kJobTag);

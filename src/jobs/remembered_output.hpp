@@ -56,8 +56,8 @@ struct JobRecord {
 struct RememberedOutput {
   media::OutputMetadata metadata;
   std::string sourceName;
-  std::string sceneName;          // the job's, else the file's stem
-  std::optional<JobRecord> job;   // none for a timeline, a glTF or a viewer page
+  std::string sceneName;         // the job's, else the file's stem
+  std::optional<JobRecord> job;  // none for a timeline, a glTF or a viewer page
 };
 [[nodiscard]] RememberedOutput readRememberedOutput(const std::filesystem::path& file);
 

@@ -18,10 +18,10 @@
 #include "jobs/job_setup.hpp"
 #include "jobs/left_out_text.hpp"
 #include "jobs/remembered_output.hpp"
-#include "motion/frame_poses.hpp"
 #include "media/h264_levels.hpp"
 #include "media/image_io.hpp"
 #include "media/sink_factory.hpp"
+#include "motion/frame_poses.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"
@@ -70,7 +70,8 @@ std::shared_ptr<const render::TextureImage> loadBallTexture(const scene::SceneSp
     file = std::filesystem::path(spec.sourceFile).parent_path() / file;
   media::Image image = media::loadImage(file, where);
   if (image.width > 16384 || image.height > 16384)
-    throw badInput(where, "ball.texture: {}x{} is larger than the 16384 px a texture may have", image.width, image.height);
+    throw badInput(where, "ball.texture: {}x{} is larger than the 16384 px a texture may have", image.width,
+                   image.height);
   auto texture = std::make_shared<render::TextureImage>();
   texture->width = image.width;
   texture->height = image.height;
@@ -95,8 +96,9 @@ void checkFrameMemory(const scene::SceneSpec& spec, std::uint64_t extraBytesPerP
   const auto available = availableMemoryBytes();
   if (available && needed > *available) {
     const std::string key = spec.locations.contains("render.height") ? "render.height" : "render.width";
-    throw badInput(spec.where(key), "{}x{} with {}x MSAA needs about {} MiB for its frame buffers{}, but "
-                                    "only {} MiB are available (out of memory)",
+    throw badInput(spec.where(key),
+                   "{}x{} with {}x MSAA needs about {} MiB for its frame buffers{}, but "
+                   "only {} MiB are available (out of memory)",
                    spec.render.width, spec.render.height, spec.render.msaa, needed >> 20,
                    addressSpaceLimitBytes() ? " and, under ulimit -v, the GL driver's own address space" : "",
                    *available >> 20);
@@ -113,15 +115,17 @@ void checkH264Limits(const scene::SceneSpec& spec, const media::OutputFormat& fo
   constexpr const char* elsewhere = "\"mov\" (ProRes), \"webm\" (VP9) or PNG frames (\"png\") hold it";
   if (!media::h264HoldsFrame(width, height)) {
     const std::string key = spec.locations.contains("render.height") ? "render.height" : "render.width";
-    throw badInput(spec.where(key), "{}: {}x{} is {} macroblocks of 16x16, over H.264's largest frame (level 6.2: "
-                                    "{} macroblocks, such as 8192x4320), so \"{}\" cannot hold it; {}",
+    throw badInput(spec.where(key),
+                   "{}: {}x{} is {} macroblocks of 16x16, over H.264's largest frame (level 6.2: "
+                   "{} macroblocks, such as 8192x4320), so \"{}\" cannot hold it; {}",
                    key, width, height, media::h264Macroblocks(width, height), media::kH264LargestFrameMacroblocks,
                    format.name, elsewhere);
   }
   if (!media::lowestH264Level(width, height, spec.animation.fps.value()))
-    throw badInput(spec.where("animation.fps"), "animation.fps: {} frames a second of {}x{} is over H.264's largest "
-                                                "rate (level 6.2: 16711680 macroblocks a second), so \"{}\" cannot "
-                                                "hold it; lower the rate or the size, or {}",
+    throw badInput(spec.where("animation.fps"),
+                   "animation.fps: {} frames a second of {}x{} is over H.264's largest "
+                   "rate (level 6.2: 16711680 macroblocks a second), so \"{}\" cannot "
+                   "hold it; lower the rate or the size, or {}",
                    spec.animation.fps.text(), width, height, format.name, elsewhere);
 }
 
@@ -135,15 +139,18 @@ const media::OutputFormat& chooseOutputFormat(const scene::SceneSpec& spec, cons
     for (const media::OutputFormat& f : media::kOutputFormats)
       if (f.use() == use && f.alpha != media::AlphaSupport::None)
         withAlpha += fmt::format("{}{}", withAlpha.empty() ? "" : ", ", f.name);
-    throw badInput(spec.where("render.transparent"), "render.transparent: \"{}\" has no alpha channel ({}); for "
-                                                     "transparency use {}",
+    throw badInput(spec.where("render.transparent"),
+                   "render.transparent: \"{}\" has no alpha channel ({}); for "
+                   "transparency use {}",
                    format.name, format.name == "jpg" ? "JPEG has none" : "its codec has none", withAlpha);
   }
   if (format.evenSize)
-    for (const auto& [key, value] : {std::pair{"render.width", spec.render.width}, std::pair{"render.height", spec.render.height}})
+    for (const auto& [key, value] :
+         {std::pair{"render.width", spec.render.width}, std::pair{"render.height", spec.render.height}})
       if (value % 2 != 0)
-        throw badInput(spec.where(key), "{}: \"{}\" needs an even size (its chroma is subsampled), got {} (use {} or {})",
-                       key, format.name, value, value - 1, value + 1);
+        throw badInput(spec.where(key),
+                       "{}: \"{}\" needs an even size (its chroma is subsampled), got {} (use {} or {})", key,
+                       format.name, value, value - 1, value + 1);
   if (format.encodesH264()) checkH264Limits(spec, format);
   return format;
 }
@@ -184,8 +191,17 @@ render::DrawList drawStill(const DrawJob& job, const std::optional<std::string>&
 }
 
 std::filesystem::path renderStill(const StillOptions& o) {
-  DrawJob job = prepareDrawJob({o.scenePath, o.overrides, {}, o.width, o.height, o.transparent, o.output,
-                                media::OutputUse::Still, 0, o.sceneText, o.sceneName});
+  DrawJob job = prepareDrawJob({o.scenePath,
+                                o.overrides,
+                                {},
+                                o.width,
+                                o.height,
+                                o.transparent,
+                                o.output,
+                                media::OutputUse::Still,
+                                0,
+                                o.sceneText,
+                                o.sceneName});
   const media::OutputFormat& format = *job.format;
   const auto figure = figureFormatOf(format);  // PDF/SVG: drawn by the vector backend (figure_job.hpp)
   if (figure) checkFigureSpec(job.spec);
@@ -205,7 +221,8 @@ std::filesystem::path renderStill(const StillOptions& o) {
   const scene::SceneSpec& spec = job.spec;
 
   // output/ is made only once the still is drawn (--at and the texture checked) and about to be written.
-  const std::filesystem::path out = o.output.empty() ? defaultOutputFile(spec.name + format.defaultExtension()) : o.output;
+  const std::filesystem::path out =
+      o.output.empty() ? defaultOutputFile(spec.name + format.defaultExtension()) : o.output;
   const render::DrawList list = drawStill(job, o.at);
   if (figure) {
     createOutputParent(out);

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "draw/scene_drawer.hpp"
-#include "model/rolling_model.hpp"
 #include "media/image_view.hpp"
 #include "media/sink_factory.hpp"
+#include "model/rolling_model.hpp"
 #include "render/draw_list.hpp"
 #include "render/gl_context.hpp"
 #include "scene/scene_spec.hpp"

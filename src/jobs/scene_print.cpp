@@ -22,7 +22,8 @@ std::string resolvedSceneText(const std::string& sourceName, const scene::SceneS
   std::map<std::string, std::string> notes;
   if (choice.method != spin::Method::Exact && choice.automaticSteps)
     notes["solver.steps"] = fmt::format("automatic: {} steps", choice.steps);
-  if (!spec.timeline.samples) notes["timeline.samples"] = fmt::format("{} (60 per turn + 1)", defaultSampleCount(model));
+  if (!spec.timeline.samples)
+    notes["timeline.samples"] = fmt::format("{} (60 per turn + 1)", defaultSampleCount(model));
   if (spec.isStoryboard()) {
     // What each segment will do: where on the path, for how long.
     const FrameClock clock(model.segments, spec);
@@ -39,7 +40,8 @@ std::string resolvedSceneText(const std::string& sourceName, const scene::SceneS
         const bool own = segment.duration || segment.speed;
         notes[scene::SceneSpec::segmentKey(k) + (!segment.duration && segment.speed ? ".speed" : ".duration")] =
             own ? fmt::format("this segment lasts {:.6g} s ({}), not the clip", seconds[k], range)
-                : fmt::format("{:.6g} s: this segment ({}) at the storyboard's speed (see [animation])", seconds[k], range);
+                : fmt::format("{:.6g} s: this segment ({}) at the storyboard's speed (see [animation])", seconds[k],
+                              range);
       }
       notes[scene::SceneSpec::segmentKey(k)] =
           spec.segments[k].path
@@ -48,8 +50,8 @@ std::string resolvedSceneText(const std::string& sourceName, const scene::SceneS
               : fmt::format("segment {}: rests at s = {:.6g} for {:.6g} s, {} frames", k + 1, span.start,
                             spec.segments[k].hold, std::llround(spec.segments[k].hold * fps));
       if (model.surfaces.size() > 1)
-        notes[scene::SceneSpec::segmentKey(k)] += fmt::format(", on surface {} (a {})", span.surface,
-                                                              scene::toString(spec.surfaceOf(k).kind));
+        notes[scene::SceneSpec::segmentKey(k)] +=
+            fmt::format(", on surface {} (a {})", span.surface, scene::toString(spec.surfaceOf(k).kind));
     }
     const double clipSeconds = static_cast<double>(clock.frameCount()) / fps;
     notes[spec.animation.speed ? "animation.speed" : "animation.duration"] =
@@ -59,8 +61,9 @@ std::string resolvedSceneText(const std::string& sourceName, const scene::SceneS
                     clipSeconds, clock.frameCount());
   }
   if (model.plate)
-    notes["plate.radius"] = fmt::format("the contact circle's radius is derived: R1/{} = {}",
-                                        model.plate->contactSpeedRatio, model.plate->radius / model.plate->contactSpeedRatio);
+    notes["plate.radius"] =
+        fmt::format("the contact circle's radius is derived: R1/{} = {}", model.plate->contactSpeedRatio,
+                    model.plate->radius / model.plate->contactSpeedRatio);
   return fmt::format("# {} resolved: every default filled in, extends and --set applied.\n# path: {}, length {}\n\n{}",
                      sourceName, model.path->describe(), model.path->length(), scene::writeScene(spec, notes));
 }

@@ -43,14 +43,33 @@ spin::SolveStats sampleTimeline(const RollingModel& model, const SolverChoice& c
   auto sink = [&](std::size_t index, double s, const spin::Su2& q) {
     const geometry::DarbouxSample f = model.path->at(s);
     const geometry::Vec3 c = f.centre(R), b = spin::fieldB(f, R);
-    row.values = {s,   f.point.x(),   f.point.y(),   f.point.z(),   f.normal.x(),        f.normal.y(),
-                  f.normal.z(), c.x(), c.y(), c.z(), q.w, q.x, q.y, q.z, b.x(), b.y(), b.z(),
-                  f.tangent.x(), f.tangent.y(), f.tangent.z(), f.normalCurvature, f.geodesicCurvature,
+    row.values = {s,
+                  f.point.x(),
+                  f.point.y(),
+                  f.point.z(),
+                  f.normal.x(),
+                  f.normal.y(),
+                  f.normal.z(),
+                  c.x(),
+                  c.y(),
+                  c.z(),
+                  q.w,
+                  q.x,
+                  q.y,
+                  q.z,
+                  b.x(),
+                  b.y(),
+                  b.z(),
+                  f.tangent.x(),
+                  f.tangent.y(),
+                  f.tangent.z(),
+                  f.normalCurvature,
+                  f.geodesicCurvature,
                   f.geodesicTorsion};
     if (!motions.empty()) {
       // The motion that starts last at or before s: a join's row belongs to the segment starting there.
-      const auto it = std::upper_bound(motions.begin(), motions.end(), s,
-                                       [](double x, const auto& m) { return x < m.first; });
+      const auto it =
+          std::upper_bound(motions.begin(), motions.end(), s, [](double x, const auto& m) { return x < m.first; });
       row.segment = (it == motions.begin() ? motions.front() : *(it - 1)).second;
       row.surface = model.segments[row.segment - 1].surface;
     }

@@ -25,9 +25,9 @@
 #include <string>
 #include <string_view>
 
+#include "core/error.hpp"
 #include "model/rolling_model.hpp"
 #include "motion/solve_job.hpp"
-#include "core/error.hpp"
 #include "spin/propagator.hpp"
 
 namespace rollspin::jobs {
@@ -38,8 +38,8 @@ using motion::SolverChoice;
 // The columns every row has, in order (the CSV header and the Python
 // Timeline's names); a storyboard adds "segment".
 inline constexpr std::array<std::string_view, 23> kTimelineColumns{
-    "s",  "px", "py", "pz", "nx", "ny", "nz", "cx", "cy", "cz", "qw",      "qx",     "qy",
-    "qz", "Bx", "By", "Bz", "tx", "ty", "tz", "kappa_n", "kappa_g", "tau_g"};
+    "s",  "px", "py", "pz", "nx", "ny", "nz", "cx", "cy",      "cz",      "qw",   "qx",
+    "qy", "qz", "Bx", "By", "Bz", "tx", "ty", "tz", "kappa_n", "kappa_g", "tau_g"};
 
 struct TimelineRow {
   std::array<double, kTimelineColumns.size()> values{};

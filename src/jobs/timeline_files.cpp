@@ -12,10 +12,10 @@
 #include <optional>
 #include <vector>
 
-#include "jobs/timeline_csv.hpp"
 #include "core/atomic_file.hpp"
 #include "core/checksum.hpp"
 #include "core/text.hpp"
+#include "jobs/timeline_csv.hpp"
 
 namespace rollspin::jobs {
 
@@ -56,10 +56,11 @@ std::string commentLine(const SolverChoice& choice, const spin::SolveStats& solv
   if (std::isnan(solved.errorEstimate))
     return fmt::format("# rollspin timeline: {} with {} steps; error estimate of U(L) {} (the solve {:.3g} s)\n",
                        spin::methodName(choice.method), solved.steps, solved.errorEstimateBasis, solved.seconds);
-  return fmt::format("# rollspin timeline: {} with {} steps; error estimate of U(L) {:.2g} rad ({}; took {:.3g} s, "
-                     "the solve {:.3g} s)\n",
-                     spin::methodName(choice.method), solved.steps, solved.errorEstimate, solved.errorEstimateBasis,
-                     solved.errorEstimateSeconds, solved.seconds);
+  return fmt::format(
+      "# rollspin timeline: {} with {} steps; error estimate of U(L) {:.2g} rad ({}; took {:.3g} s, "
+      "the solve {:.3g} s)\n",
+      spin::methodName(choice.method), solved.steps, solved.errorEstimate, solved.errorEstimateBasis,
+      solved.errorEstimateSeconds, solved.seconds);
 }
 
 // Rows go through `buffer`, handed to the file in ~1 MiB chunks.
@@ -163,35 +164,38 @@ TimelineFormat timelineFormatOf(const std::filesystem::path& out, const SourceLo
 namespace {
 
 spin::SolveStats writeText(AtomicFile& file, TimelineFormat format, const std::filesystem::path& out,
-                           const RollingModel& model, const SolverChoice& choice,
-                           const spin::SampleArcLengths& sampleS, const spin::SolveStats& solved,
-                           const TimelineFileOptions& o) {
+                           const RollingModel& model, const SolverChoice& choice, const spin::SampleArcLengths& sampleS,
+                           const spin::SolveStats& solved, const TimelineFileOptions& o) {
   ChunkedWriter writer(file);
   auto& buffer = writer.buffer();
   const bool json = format == TimelineFormat::Json, segments = timelineHasSegments(model);
   const bool surfaces = timelineHasSurfaces(model);
   if (json) {
-    fmt::format_to(std::back_inserter(buffer), "{{\n{},\n  \"rows\": [", describeSolve(out, model, choice, sampleS, solved, o));
+    fmt::format_to(std::back_inserter(buffer), "{{\n{},\n  \"rows\": [",
+                   describeSolve(out, model, choice, sampleS, solved, o));
   } else {
     if (o.commentHeader) fmt::format_to(std::back_inserter(buffer), "{}", commentLine(choice, solved));
     fmt::format_to(std::back_inserter(buffer), "{}\n", fmt::join(columnsOf(model), ","));
   }
-  const spin::SolveStats stats = sampleTimeline(model, choice, sampleS, [&](std::size_t index, const TimelineRow& row) {
-    if (json) {
-      fmt::format_to(std::back_inserter(buffer), "{}\n    [", index == 0 ? "" : ",");
-      for (std::size_t k = 0; k < row.values.size(); ++k)
-        fmt::format_to(std::back_inserter(buffer), "{}{}", k == 0 ? "" : ", ", jsonNumber(row.values[k]));
-      if (segments) fmt::format_to(std::back_inserter(buffer), ", {}", row.segment);
-      if (surfaces) fmt::format_to(std::back_inserter(buffer), ", {}", row.surface);
-      buffer.push_back(']');
-    } else {
-      fmt::format_to(std::back_inserter(buffer), "{:.17g}", fmt::join(row.values, ","));
-      if (segments) fmt::format_to(std::back_inserter(buffer), ",{}", row.segment);
-      if (surfaces) fmt::format_to(std::back_inserter(buffer), ",{}", row.surface);
-      buffer.push_back('\n');
-    }
-    writer.maybeFlush();
-  }, out.string());
+  const spin::SolveStats stats = sampleTimeline(
+      model, choice, sampleS,
+      [&](std::size_t index, const TimelineRow& row) {
+        if (json) {
+          fmt::format_to(std::back_inserter(buffer), "{}\n    [", index == 0 ? "" : ",");
+          for (std::size_t k = 0; k < row.values.size(); ++k)
+            fmt::format_to(std::back_inserter(buffer), "{}{}", k == 0 ? "" : ", ", jsonNumber(row.values[k]));
+          if (segments) fmt::format_to(std::back_inserter(buffer), ", {}", row.segment);
+          if (surfaces) fmt::format_to(std::back_inserter(buffer), ", {}", row.surface);
+          buffer.push_back(']');
+        } else {
+          fmt::format_to(std::back_inserter(buffer), "{:.17g}", fmt::join(row.values, ","));
+          if (segments) fmt::format_to(std::back_inserter(buffer), ",{}", row.segment);
+          if (surfaces) fmt::format_to(std::back_inserter(buffer), ",{}", row.surface);
+          buffer.push_back('\n');
+        }
+        writer.maybeFlush();
+      },
+      out.string());
   if (json) fmt::format_to(std::back_inserter(buffer), "\n  ]\n}}\n");
   writer.flush();
   return stats;
@@ -211,31 +215,39 @@ spin::SolveStats writeNumpy(AtomicFile& file, TimelineFormat format, const std::
     std::vector<std::string> fields;
     for (const std::string_view c : names) fields.push_back(fmt::format("('{}', '{}')", c, typeOf(c)));
     ChunkedWriter writer(file);
-    const std::string header = npyHeader(fmt::format("[{}]", fmt::join(fields, ", ")), fmt::format("({},)", sampleS.size()));
+    const std::string header =
+        npyHeader(fmt::format("[{}]", fmt::join(fields, ", ")), fmt::format("({},)", sampleS.size()));
     writer.buffer().append(header.data(), header.data() + header.size());
     std::string record;
-    const spin::SolveStats stats = sampleTimeline(model, choice, sampleS, [&](std::size_t, const TimelineRow& row) {
-      record.clear();
-      for (const double v : row.values) appendRaw(record, v);
-      if (segments) appendRaw(record, static_cast<std::int64_t>(row.segment));
-      if (surfaces) appendRaw(record, static_cast<std::int64_t>(row.surface));
-      writer.buffer().append(record.data(), record.data() + record.size());
-      writer.maybeFlush();
-    }, out.string());
+    const spin::SolveStats stats = sampleTimeline(
+        model, choice, sampleS,
+        [&](std::size_t, const TimelineRow& row) {
+          record.clear();
+          for (const double v : row.values) appendRaw(record, v);
+          if (segments) appendRaw(record, static_cast<std::int64_t>(row.segment));
+          if (surfaces) appendRaw(record, static_cast<std::int64_t>(row.surface));
+          writer.buffer().append(record.data(), record.data() + record.size());
+          writer.maybeFlush();
+        },
+        out.string());
     writer.flush();
     return stats;
   }
   std::vector<std::string> columns(names.size());
-  const spin::SolveStats stats = sampleTimeline(model, choice, sampleS, [&](std::size_t, const TimelineRow& row) {
-    for (std::size_t k = 0; k < row.values.size(); ++k) appendRaw(columns[k], row.values[k]);
-    const std::size_t extra = row.values.size();
-    if (segments) appendRaw(columns[extra], static_cast<std::int64_t>(row.segment));
-    if (surfaces) appendRaw(columns[extra + (segments ? 1 : 0)], static_cast<std::int64_t>(row.surface));
-  }, out.string());
+  const spin::SolveStats stats = sampleTimeline(
+      model, choice, sampleS,
+      [&](std::size_t, const TimelineRow& row) {
+        for (std::size_t k = 0; k < row.values.size(); ++k) appendRaw(columns[k], row.values[k]);
+        const std::size_t extra = row.values.size();
+        if (segments) appendRaw(columns[extra], static_cast<std::int64_t>(row.segment));
+        if (surfaces) appendRaw(columns[extra + (segments ? 1 : 0)], static_cast<std::int64_t>(row.surface));
+      },
+      out.string());
   std::vector<std::pair<std::string, std::string>> members;
   for (std::size_t k = 0; k < names.size(); ++k)
-    members.emplace_back(fmt::format("{}.npy", names[k]),
-                         npyHeader(fmt::format("'{}'", typeOf(names[k])), fmt::format("({},)", sampleS.size())) + columns[k]);
+    members.emplace_back(
+        fmt::format("{}.npy", names[k]),
+        npyHeader(fmt::format("'{}'", typeOf(names[k])), fmt::format("({},)", sampleS.size())) + columns[k]);
   file.write(storedZip(members, out.string()));
   return stats;
 }

@@ -7,13 +7,13 @@
 #include <utility>
 #include <vector>
 
-#include "jobs/scene_print.hpp"
-#include "jobs/viewer_timeline.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/stage_log.hpp"
-#include "jobs/render_jobs.hpp"
 #include "export/gltf_export.hpp"
+#include "jobs/render_jobs.hpp"
+#include "jobs/scene_print.hpp"
+#include "jobs/viewer_timeline.hpp"
 
 namespace rollspin::jobs {
 
@@ -75,8 +75,7 @@ std::string base64(std::string_view bytes) {
   for (std::size_t i = 0; i < bytes.size(); i += 3) {
     const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
     std::uint32_t chunk = 0;
-    for (std::size_t k = 0; k < 3; ++k)
-      chunk = (chunk << 8) | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
+    for (std::size_t k = 0; k < 3; ++k) chunk = (chunk << 8) | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
     for (std::size_t k = 0; k < 4; ++k) out += k <= n ? kAlphabet[(chunk >> (18 - 6 * k)) & 63u] : '=';
   }
   return out;

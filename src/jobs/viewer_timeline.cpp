@@ -31,7 +31,8 @@ double largestFieldRate(const model::RollingModel& model, const std::vector<doub
   for (int k = 1; k <= kFieldProbes; ++k) {
     const geometry::Vec3 b = field(k * ds);
     // A difference across a break is a jump, not a rate: the knots land on breaks.
-    const bool acrossBreak = std::any_of(breaks.begin(), breaks.end(), [&](double x) { return x > (k - 1) * ds && x <= k * ds; });
+    const bool acrossBreak =
+        std::any_of(breaks.begin(), breaks.end(), [&](double x) { return x > (k - 1) * ds && x <= k * ds; });
     const double swing = acrossBreak ? 0.0 : 2.0 * std::sqrt((b - previous).norm() / ds);
     largest = std::max(largest, b.norm() + swing);
     previous = b;
@@ -56,7 +57,8 @@ std::vector<std::size_t> segmentStretches(const scene::SceneSpec& spec, const mo
   std::vector<std::size_t> out(spec.segments.size(), 0);
   const std::vector<motion::SurfaceStretch> stretches = motion::surfaceStretches(spec, model);
   for (std::size_t k = 0; k < stretches.size(); ++k)
-    for (std::size_t seg = stretches[k].firstSegment; seg < stretches[k].endSegment && seg < out.size(); ++seg) out[seg] = k;
+    for (std::size_t seg = stretches[k].firstSegment; seg < stretches[k].endSegment && seg < out.size(); ++seg)
+      out[seg] = k;
   return out;
 }
 
@@ -132,13 +134,19 @@ ViewerTimeline sampleViewerTimeline(const scene::SceneSpec& spec, const model::R
   timeline.viewDeg = {spec.render.azimuthDeg, spec.render.elevationDeg};
   const std::vector<double> arcs = viewerKnotArcLengths(model);
   timeline.knots.resize(arcs.size());
-  sampleTimeline(model, choice, spin::SampleArcLengths(arcs), [&](std::size_t index, const TimelineRow& row) {
-    const auto& v = row.values;  // kTimelineColumns
-    const geometry::Vec3 t(v[17], v[18], v[19]), n(v[4], v[5], v[6]), u = n.cross(t);
-    const geometry::Vec3 rate = (1.0 - v[20] * R) * t - R * v[22] * u;
-    timeline.knots[index] = {v[0], {v[10], v[11], v[12], v[13]}, {v[14], v[15], v[16]},
-                             {v[7], v[8], v[9]}, {rate.x(), rate.y(), rate.z()}};
-  }, spec.sourceFile.empty() ? spec.name : spec.sourceFile);
+  sampleTimeline(
+      model, choice, spin::SampleArcLengths(arcs),
+      [&](std::size_t index, const TimelineRow& row) {
+        const auto& v = row.values;  // kTimelineColumns
+        const geometry::Vec3 t(v[17], v[18], v[19]), n(v[4], v[5], v[6]), u = n.cross(t);
+        const geometry::Vec3 rate = (1.0 - v[20] * R) * t - R * v[22] * u;
+        timeline.knots[index] = {v[0],
+                                 {v[10], v[11], v[12], v[13]},
+                                 {v[14], v[15], v[16]},
+                                 {v[7], v[8], v[9]},
+                                 {rate.x(), rate.y(), rate.z()}};
+      },
+      spec.sourceFile.empty() ? spec.name : spec.sourceFile);
   const std::vector<std::size_t> stretchOfSegment = segmentStretches(spec, model);
   for (std::size_t k = 0; k < spec.segments.size() && k < model.segments.size(); ++k) {
     const scene::SegmentSpec& seg = spec.segments[k];
@@ -161,19 +169,21 @@ std::string viewerTimelineJson(const ViewerTimeline& timeline) {
   }
   std::string chapters;
   for (const ViewerChapter& ch : timeline.chapters)
-    chapters += fmt::format("{}{{\"number\": {}, \"start\": {:.17g}, \"end\": {:.17g}, \"caption\": {}, \"title\": {}, "
-                            "\"surface\": {}}}",
-                            chapters.empty() ? "" : ", ", ch.number, ch.start, ch.end, quoted(ch.caption),
-                            quoted(ch.title), ch.surface);
+    chapters += fmt::format(
+        "{}{{\"number\": {}, \"start\": {:.17g}, \"end\": {:.17g}, \"caption\": {}, \"title\": {}, "
+        "\"surface\": {}}}",
+        chapters.empty() ? "" : ", ", ch.number, ch.start, ch.end, quoted(ch.caption), quoted(ch.title), ch.surface);
   const ViewerClock& clock = timeline.clock;
   const std::string clockJson =
       fmt::format("{{\"seconds\": [{:.17g}], \"s0\": [{:.17g}], \"s1\": [{:.17g}], \"smooth\": {}}}",
                   fmt::join(clock.seconds, ","), fmt::join(clock.s0, ","), fmt::join(clock.s1, ","), clock.smooth);
   return fmt::format(
-      "{{\"length\": {:.17g}, \"seconds\": {:.17g}, \"ballRadius\": {:.17g}, \"marker\": [{:.17g}], \"viewDeg\": [{:.17g}], \"chapters\": [{}],\n\"clock\": {},\n"
+      "{{\"length\": {:.17g}, \"seconds\": {:.17g}, \"ballRadius\": {:.17g}, \"marker\": [{:.17g}], \"viewDeg\": "
+      "[{:.17g}], \"chapters\": [{}],\n\"clock\": {},\n"
       "\"s\": [{:.17g}],\n\"q\": [{:.17g}],\n\"B\": [{:.17g}],\n\"centre\": [{:.17g}],\n\"centreRate\": [{:.17g}]}}",
-      timeline.length, timeline.seconds, timeline.ballRadius, fmt::join(timeline.marker, ", "), fmt::join(timeline.viewDeg, ", "), chapters, clockJson, fmt::join(s, ","),
-      fmt::join(q, ","), fmt::join(b, ","), fmt::join(c, ","), fmt::join(dc, ","));
+      timeline.length, timeline.seconds, timeline.ballRadius, fmt::join(timeline.marker, ", "),
+      fmt::join(timeline.viewDeg, ", "), chapters, clockJson, fmt::join(s, ","), fmt::join(q, ","), fmt::join(b, ","),
+      fmt::join(c, ","), fmt::join(dc, ","));
 }
 
 }  // namespace rollspin::jobs

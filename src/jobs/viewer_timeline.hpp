@@ -32,8 +32,8 @@ inline constexpr std::size_t kViewerLeastKnots = 200;
 
 struct ViewerKnot {
   double s = 0.0;
-  std::array<double, 4> q{};   // qw, qx, qy, qz as the timeline writes them (sign kept)
-  std::array<double, 3> b{};   // the field B(s) on the side of the interval after s
+  std::array<double, 4> q{};  // qw, qx, qy, qz as the timeline writes them (sign kept)
+  std::array<double, 3> b{};  // the field B(s) on the side of the interval after s
   std::array<double, 3> centre{}, centreRate{};
 };
 
@@ -59,8 +59,8 @@ struct ViewerClock {
 
 struct ViewerTimeline {
   double length = 0.0, ballRadius = 1.0;
-  double seconds = 1.0;  // how long the clip's motion lasts (holds left out): playback at 1×
-  std::array<double, 3> marker{};  // the body point whose image is the Bloch vector
+  double seconds = 1.0;             // how long the clip's motion lasts (holds left out): playback at 1×
+  std::array<double, 3> marker{};   // the body point whose image is the Bloch vector
   std::array<double, 2> viewDeg{};  // render.azimuth_deg, render.elevation_deg: where the views look from
   std::vector<ViewerKnot> knots;
   std::vector<ViewerChapter> chapters;  // empty unless a storyboard

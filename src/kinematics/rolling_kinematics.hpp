@@ -65,8 +65,8 @@ class RollingKinematics {
   const geometry::ContactPath& path_;
   double ballRadius_;
   KinematicSettings settings_;
-  std::vector<double> cuts_;  // 0, breakpoints, L
-  std::vector<double> fdSteps_;         // finite-difference spacing per segment
+  std::vector<double> cuts_;             // 0, breakpoints, L
+  std::vector<double> fdSteps_;          // finite-difference spacing per segment
   std::vector<long long> segmentSteps_;  // RK4 steps per segment
 };
 

@@ -41,7 +41,7 @@ struct SurfaceRolling {
 // direction startDirection (a 3-vector in the tangent plane; projected and
 // normalised) for arc length `length`, N = `steps`.
 [[nodiscard]] SurfaceRolling rollAlongGeodesic(const geometry::Surface& surface, const Eigen::Vector2d& startUv,
-                                               const Eigen::Vector3d& startDirection, double length,
-                                               double ballRadius, long long steps);
+                                               const Eigen::Vector3d& startDirection, double length, double ballRadius,
+                                               long long steps);
 
 }  // namespace rollspin::kinematics

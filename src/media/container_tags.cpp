@@ -59,7 +59,8 @@ std::optional<ContainerTags> parseContainerTags(const std::map<std::string, std:
 }
 
 void applyContainerTags(AVFormatContext* format, const ContainerTags& tags, AVDictionary** muxerOptions) {
-  for (const auto& [key, value] : containerMetadata(tags)) av_dict_set(&format->metadata, key.c_str(), value.c_str(), 0);
+  for (const auto& [key, value] : containerMetadata(tags))
+    av_dict_set(&format->metadata, key.c_str(), value.c_str(), 0);
   allowCustomContainerKeys(format, muxerOptions);
 }
 
@@ -72,7 +73,8 @@ void allowCustomContainerKeys(AVFormatContext* format, AVDictionary** muxerOptio
 
 std::optional<FramesRetag> retagPartial(AVFormatContext* format, long long framesWritten) {
   std::map<std::string, std::string> metadata;
-  for (const AVDictionaryEntry* e = nullptr; (e = av_dict_get(format->metadata, "", e, AV_DICT_IGNORE_SUFFIX)) != nullptr;)
+  for (const AVDictionaryEntry* e = nullptr;
+       (e = av_dict_get(format->metadata, "", e, AV_DICT_IGNORE_SUFFIX)) != nullptr;)
     metadata[e->key] = e->value;
   std::optional<ContainerTags> tags = parseContainerTags(metadata);
   if (!tags || framesWritten <= 0) return std::nullopt;

@@ -88,13 +88,14 @@ struct GifWriter::Graphs {
   void openPaletteGraph() {
     paletteGraph.reset(avfilter_graph_alloc());
     if (!paletteGraph) throw runtimeError(SourceLoc{file.string()}, "out of memory");
-    paletteIn = addFilter(paletteGraph.get(), "buffer", "frames", bufferArgs(settings.width, settings.height, AV_PIX_FMT_RGBA));
+    paletteIn =
+        addFilter(paletteGraph.get(), "buffer", "frames", bufferArgs(settings.width, settings.height, AV_PIX_FMT_RGBA));
     // stats_mode=full: every pixel of every shown frame counts, so large
     // still areas (the backdrop) get their share of the 256 colours. With
     // alpha, one entry is kept for "transparent".
-    AVFilterContext* gen = addFilter(paletteGraph.get(), "palettegen", "palettegen",
-                                     fmt::format("max_colors=256:stats_mode=full:reserve_transparent={}",
-                                                 settings.alpha ? 1 : 0));
+    AVFilterContext* gen =
+        addFilter(paletteGraph.get(), "palettegen", "palettegen",
+                  fmt::format("max_colors=256:stats_mode=full:reserve_transparent={}", settings.alpha ? 1 : 0));
     paletteOut = addFilter(paletteGraph.get(), "buffersink", "palette", "");
     check(avfilter_link(paletteIn, 0, gen, 0), "linking palettegen");
     check(avfilter_link(gen, 0, paletteOut, 0), "linking palettegen");
@@ -110,7 +111,8 @@ struct GifWriter::Graphs {
 
     useGraph.reset(avfilter_graph_alloc());
     if (!useGraph) throw runtimeError(SourceLoc{file.string()}, "out of memory");
-    frameIn = addFilter(useGraph.get(), "buffer", "frames", bufferArgs(settings.width, settings.height, AV_PIX_FMT_RGBA));
+    frameIn =
+        addFilter(useGraph.get(), "buffer", "frames", bufferArgs(settings.width, settings.height, AV_PIX_FMT_RGBA));
     AVFilterContext* paletteSource =
         addFilter(useGraph.get(), "buffer", "palette", bufferArgs(palette->width, palette->height, palette->format));
     // Bayer (ordered) dithering: no banding in the gradient, and unlike

@@ -14,7 +14,7 @@
 namespace rollspin::media {
 
 struct H264Level {
-  int idc;                    // level_idc as the stream carries it: 31 for 3.1
+  int idc;                               // level_idc as the stream carries it: 31 for 3.1
   std::int64_t maxMacroblocksPerSecond;  // MaxMBPS
   std::int64_t maxFrameMacroblocks;      // MaxFS
 };

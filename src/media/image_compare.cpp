@@ -57,13 +57,15 @@ std::vector<double> gaussianBlur(const std::vector<double>& in, int w, int h) {
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       double s = 0.0;
-      for (int k = -radius; k <= radius; ++k) s += taps[k + radius] * in[std::size_t(y) * w + std::clamp(x + k, 0, w - 1)];
+      for (int k = -radius; k <= radius; ++k)
+        s += taps[k + radius] * in[std::size_t(y) * w + std::clamp(x + k, 0, w - 1)];
       rows[std::size_t(y) * w + x] = s;
     }
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       double s = 0.0;
-      for (int k = -radius; k <= radius; ++k) s += taps[k + radius] * rows[std::size_t(std::clamp(y + k, 0, h - 1)) * w + x];
+      for (int k = -radius; k <= radius; ++k)
+        s += taps[k + radius] * rows[std::size_t(std::clamp(y + k, 0, h - 1)) * w + x];
       out[std::size_t(y) * w + x] = s;
     }
   return out;
@@ -91,8 +93,8 @@ double structuralSimilarity(const ImageView& a, const ImageView& b) {
   double sum = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const double varA = saa[i] - ma[i] * ma[i], varB = sbb[i] - mb[i] * mb[i], cov = sab[i] - ma[i] * mb[i];
-    sum += ((2.0 * ma[i] * mb[i] + c1) * (2.0 * cov + c2)) /
-           ((ma[i] * ma[i] + mb[i] * mb[i] + c1) * (varA + varB + c2));
+    sum +=
+        ((2.0 * ma[i] * mb[i] + c1) * (2.0 * cov + c2)) / ((ma[i] * ma[i] + mb[i] * mb[i] + c1) * (varA + varB + c2));
   }
   return sum / double(n);
 }

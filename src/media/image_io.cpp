@@ -1,15 +1,15 @@
 #include "media/image_io.hpp"
 
+#include <fmt/format.h>
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <fstream>
-#include <limits>
 #include <iterator>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -42,8 +42,8 @@ void writePng(const std::filesystem::path& file, const ImageView& image, PngChan
   const int comp = channels == PngChannels::Rgba ? 4 : 3;
   const std::vector<std::uint8_t> packed = packRows(image, comp);
   std::string bytes;
-  if (stbi_write_png_to_func(appendBytes, &bytes, image.width, image.height, comp, packed.data(),
-                             image.width * comp) == 0) {
+  if (stbi_write_png_to_func(appendBytes, &bytes, image.width, image.height, comp, packed.data(), image.width * comp) ==
+      0) {
     throw runtimeError({file.string()}, "PNG encoding failed ({}x{})", image.width, image.height);
   }
   if (metadata) bytes = withPngMetadata(bytes, *metadata);
@@ -52,8 +52,7 @@ void writePng(const std::filesystem::path& file, const ImageView& image, PngChan
   out.commit();
 }
 
-void writeJpeg(const std::filesystem::path& file, const ImageView& image, int quality,
-               const OutputMetadata* metadata) {
+void writeJpeg(const std::filesystem::path& file, const ImageView& image, int quality, const OutputMetadata* metadata) {
   const std::vector<std::uint8_t> packed = packRows(image, 3);
   std::string bytes;
   if (stbi_write_jpg_to_func(appendBytes, &bytes, image.width, image.height, 3, packed.data(), quality) == 0)
@@ -79,7 +78,9 @@ namespace {
 // in a first DC scan, its AC table in an AC scan). The reason, or nothing
 // when every table fits (or it is not a JPEG).
 std::string jpegHuffmanTableFault(std::string_view bytes) {
-  const auto at = [&](std::size_t k) -> unsigned { return k < bytes.size() ? static_cast<unsigned char>(bytes[k]) : 0U; };
+  const auto at = [&](std::size_t k) -> unsigned {
+    return k < bytes.size() ? static_cast<unsigned char>(bytes[k]) : 0U;
+  };
   // stb_image skips fill bytes (0xFF) before every marker, SOI included:
   // "FF FF D8" is a JPEG to it (found by fuzz_image), so it is one here.
   if (at(0) != 0xFF) return {};  // not a JPEG
@@ -102,7 +103,7 @@ std::string jpegHuffmanTableFault(std::string_view bytes) {
     if (marker == 0xD9) break;  // EOI
     const std::size_t length = (at(pos + 2) << 8) | at(pos + 3);
     if (marker == 0xC2) progressive = true;  // SOF2
-    if (marker == 0xDA) {  // SOS: Ns, then (Cs, Td << 4 | Ta) per component, Ss, Se, Ah << 4 | Al
+    if (marker == 0xDA) {                    // SOS: Ns, then (Cs, Td << 4 | Ta) per component, Ss, Se, Ah << 4 | Al
       const std::size_t components = at(pos + 4);
       const unsigned ss = at(pos + 5 + 2 * components), ah = at(pos + 7 + 2 * components) >> 4;
       const bool usesDc = !progressive || (ss == 0 && ah == 0), usesAc = !progressive || ss > 0;
@@ -182,8 +183,7 @@ Image decodeImage(std::string_view bytes, const std::string& name, const SourceL
   int w = 0, h = 0, comp = 0;
   // The header first: a few bytes may claim an image of gigabytes, which
   // would be allocated before the data is found missing.
-  if (stbi_info_from_memory(data, size, &w, &h, &comp) != 0 &&
-      static_cast<std::int64_t>(w) * h > maxPixels)
+  if (stbi_info_from_memory(data, size, &w, &h, &comp) != 0 && static_cast<std::int64_t>(w) * h > maxPixels)
     throw badInput(where, "'{}' claims {}x{} pixels, more than the {} an image may have", name, w, h, maxPixels);
   stbi_uc* pixels = stbi_load_from_memory(data, size, &w, &h, &comp, 4);
   if (pixels == nullptr)

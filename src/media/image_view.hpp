@@ -32,8 +32,12 @@ struct Image {
 
   Image() = default;
   Image(int w, int h) : width(w), height(h), rgba(static_cast<std::size_t>(w) * h * 4, 0) {}
-  [[nodiscard]] ImageView view() const { return {width, height, std::ptrdiff_t{width} * 4, rgba.data(), RowOrder::TopDown}; }
-  [[nodiscard]] std::uint8_t* pixel(int x, int y) { return rgba.data() + (static_cast<std::size_t>(y) * width + x) * 4; }
+  [[nodiscard]] ImageView view() const {
+    return {width, height, std::ptrdiff_t{width} * 4, rgba.data(), RowOrder::TopDown};
+  }
+  [[nodiscard]] std::uint8_t* pixel(int x, int y) {
+    return rgba.data() + (static_cast<std::size_t>(y) * width + x) * 4;
+  }
   [[nodiscard]] const std::uint8_t* pixel(int x, int y) const {
     return rgba.data() + (static_cast<std::size_t>(y) * width + x) * 4;
   }

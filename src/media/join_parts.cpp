@@ -52,7 +52,7 @@ struct Part {
   std::map<std::string, std::string> metadata;  // every tag (the scene a part remembers, jobs/remembered_output.hpp)
   std::unique_ptr<AVCodecParameters, ParametersFreer> codec;
   std::unique_ptr<AVCodecParameters, ParametersFreer> subtitleCodec;  // null: no subtitle track
-  std::vector<InBandCue> cues;  // the part's captions, in its own frames
+  std::vector<InBandCue> cues;                                        // the part's captions, in its own frames
   AVRational timeBase{0, 1}, frameRate{0, 1};
   long long packets = 0;
   std::int64_t firstPts = 0;  // the smallest presentation timestamp
@@ -75,8 +75,10 @@ Input openPart(const fs::path& path, const SourceLoc& loc) {
     throw badInput(loc, "cannot read this part's streams: {}", av::errorText(ret));
   const bool subtitles = input->nb_streams == 2 && input->streams[1]->codecpar->codec_type == AVMEDIA_TYPE_SUBTITLE;
   if ((input->nb_streams != 1 && !subtitles) || input->streams[0]->codecpar->codec_type != AVMEDIA_TYPE_VIDEO)
-    throw badInput(loc, "expected one video stream and at most one subtitle track (a part rendered by rollspin), "
-                   "found {} stream(s)", input->nb_streams);
+    throw badInput(loc,
+                   "expected one video stream and at most one subtitle track (a part rendered by rollspin), "
+                   "found {} stream(s)",
+                   input->nb_streams);
   return input;
 }
 
@@ -84,7 +86,8 @@ std::map<std::string, std::string> metadataOf(const AVFormatContext& input) {
   std::map<std::string, std::string> out;
   const AVDictionaryEntry* e = nullptr;
   // Matroska (WebM) stores tag names in upper case.
-  while ((e = av_dict_get(input.metadata, "", e, AV_DICT_IGNORE_SUFFIX)) != nullptr) out[asciiLowercase(e->key)] = e->value;
+  while ((e = av_dict_get(input.metadata, "", e, AV_DICT_IGNORE_SUFFIX)) != nullptr)
+    out[asciiLowercase(e->key)] = e->value;
   return out;
 }
 
@@ -193,7 +196,8 @@ void expectSameRender(const Part& p, const Part& ref) {
   if (p.codec->extradata_size != ref.codec->extradata_size ||
       (p.codec->extradata_size > 0 &&
        std::memcmp(p.codec->extradata, ref.codec->extradata, static_cast<std::size_t>(p.codec->extradata_size)) != 0))
-    throw badInput(p.loc(), "its codec extradata ({} bytes: the SPS/PPS) differ from {}'s ({} bytes): the parts were "
+    throw badInput(p.loc(),
+                   "its codec extradata ({} bytes: the SPS/PPS) differ from {}'s ({} bytes): the parts were "
                    "not encoded alike, and one decoder could not play them in one stream",
                    p.codec->extradata_size, r, ref.codec->extradata_size);
   if (av_cmp_q(p.timeBase, ref.timeBase) != 0 || av_cmp_q(p.frameRate, ref.frameRate) != 0)
@@ -223,8 +227,7 @@ std::vector<InBandCue> clipCaptions(const std::vector<const Part*>& sorted) {
       c.cue.endFrame += part->tags.firstFrame;
       if (!out.empty() && out.back().cue.endFrame == c.cue.firstFrame && out.back().payload == c.payload)
         out.back().cue.endFrame = c.cue.endFrame;
-      else
-        out.push_back(std::move(c));
+      else out.push_back(std::move(c));
     }
   return out;
 }
@@ -282,8 +285,7 @@ void expectWholePart(const Part& p) {
   if (p.packets != p.tags.frameCount())
     throw badInput(p.loc(), "holds {} frames, but its tags say {} ({} frames): an interrupted or damaged part",
                    p.packets, p.range(), p.tags.frameCount());
-  if (!p.startsWithKeyframe)
-    throw badInput(p.loc(), "does not start with a keyframe: a decoder could not begin there");
+  if (!p.startsWithKeyframe) throw badInput(p.loc(), "does not start with a keyframe: a decoder could not begin there");
 }
 
 // Sorted by first frame, the ranges must tile 0 … total − 1.
@@ -299,12 +301,11 @@ void expectContiguous(const std::vector<const Part*>& sorted) {
     std::error_code ec;
     if (fs::equivalent(prev.path, cur.path, ec)) throw badInput(cur.loc(), "is given twice");
     if (cur.tags.firstFrame > prev.tags.lastFrame + 1)
-      throw badInput(cur.loc(), "frames {}-{} are missing between {} ({}) and this part ({})",
-                     prev.tags.lastFrame + 1, cur.tags.firstFrame - 1, prev.name, prev.range(), cur.range());
+      throw badInput(cur.loc(), "frames {}-{} are missing between {} ({}) and this part ({})", prev.tags.lastFrame + 1,
+                     cur.tags.firstFrame - 1, prev.name, prev.range(), cur.range());
     if (cur.tags.firstFrame <= prev.tags.lastFrame)
       throw badInput(cur.loc(), "overlaps {} at frames {}-{} (this part: {}; that one: {})", prev.name,
-                     cur.tags.firstFrame, std::min(prev.tags.lastFrame, cur.tags.lastFrame), cur.range(),
-                     prev.range());
+                     cur.tags.firstFrame, std::min(prev.tags.lastFrame, cur.tags.lastFrame), cur.range(), prev.range());
   }
   const Part& last = *sorted.back();
   if (last.tags.lastFrame != total - 1)
@@ -379,8 +380,10 @@ std::vector<const Part*> partsInClipOrder(const std::vector<Part>& parts) {
 const AVOutputFormat* joinedContainer(const Output& out, const fs::path& output, const Part& ref,
                                       const SourceLoc& outLoc) {
   if (!out.direct && asciiLowercase(output.extension().string()) != ref.extension)
-    throw badInput(outLoc, "the parts are '{}' files, so the joined clip must be one too (streams are copied, not "
-                   "re-encoded)", ref.extension);
+    throw badInput(outLoc,
+                   "the parts are '{}' files, so the joined clip must be one too (streams are copied, not "
+                   "re-encoded)",
+                   ref.extension);
   const AVOutputFormat* container = av_guess_format(nullptr, ("clip" + ref.extension).c_str(), nullptr);
   if (container == nullptr) throw badInput(outLoc, "libavformat has no muxer for '{}'", ref.extension);
   return container;
@@ -469,8 +472,9 @@ bool copyPartPackets(const std::vector<const Part*>& sorted, const Part& ref, Ou
         packet->dts += shift;
         if (packet->dts <= lastDts) {
           av_packet_unref(packet.get());
-          throw badInput(part->loc(), "its decoding order runs back into the previous part's (a different B-frame "
-                                      "delay): the parts were not encoded alike");
+          throw badInput(part->loc(),
+                         "its decoding order runs back into the previous part's (a different B-frame "
+                         "delay): the parts were not encoded alike");
         }
         lastDts = packet->dts;
       }
@@ -533,7 +537,8 @@ JoinSummary joinParts(const std::vector<fs::path>& paths, const fs::path& output
   whole.firstFrame = 0;
   whole.lastFrame = whole.clipFrames - 1;
   writeJoinedHeader(out, whole, ref, url, where);
-  if (!copyPartPackets(sorted, ref, out, stream, captions, where, stop)) return {};  // ~Output removes the temporary file
+  if (!copyPartPackets(sorted, ref, out, stream, captions, where, stop))
+    return {};  // ~Output removes the temporary file
   captions.writeUpTo(std::numeric_limits<std::int64_t>::max());
   finishJoinedFile(out, output, where);
 
@@ -559,4 +564,3 @@ std::map<std::string, std::string> readContainerMetadata(const fs::path& path, c
 }
 
 }  // namespace rollspin::media
-

@@ -12,9 +12,9 @@
 namespace rollspin::media {
 
 struct Mp4Settings {
-  int width = 0, height = 0;  // both even (yuv420p halves the chroma planes)
+  int width = 0, height = 0;    // both even (yuv420p halves the chroma planes)
   int fpsNum = 30, fpsDen = 1;  // frames per second as a rational (30000/1001 for NTSC 29.97)
-  double crf = 18.0;           // constant rate factor, 0 … 51
+  double crf = 18.0;            // constant rate factor, 0 … 51
   std::string preset = "medium";
   std::string encoder = "libx264";
 };

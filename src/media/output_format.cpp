@@ -17,9 +17,7 @@ std::string quoted(std::string_view name) { return fmt::format("\"{}\"", name); 
 
 }  // namespace
 
-std::string OutputFormat::defaultExtension() const {
-  return std::string(extensions.substr(0, extensions.find(' ')));
-}
+std::string OutputFormat::defaultExtension() const { return std::string(extensions.substr(0, extensions.find(' '))); }
 
 bool OutputFormat::hasExtension(std::string_view ext) const {
   std::string_view rest = extensions;
@@ -79,8 +77,9 @@ const OutputFormat& chooseFormat(const std::optional<std::string>& requested, co
     // render.format describes the clip: a still of the same scene keeps
     // choosing by its own -o. A clip cannot be a still format.
     if (f == nullptr && animation)
-      throw badInput(requestedAt, "render.format = \"{}\" is a still format (pass --still for one image); {} is "
-                                  "written as {}",
+      throw badInput(requestedAt,
+                     "render.format = \"{}\" is a still format (pass --still for one image); {} is "
+                     "written as {}",
                      *requested, job, describeFormats(use));
     if (f != nullptr) {
       if (f->isFolder() && !ext.empty() && !isDirectory)
@@ -90,8 +89,8 @@ const OutputFormat& chooseFormat(const std::optional<std::string>& requested, co
         throw badInput(outputAt, "render.format = \"{}\" needs a file name, but {} is a folder", f->name,
                        output.string());
       if (!f->isFolder() && !ext.empty() && !f->hasExtension(ext))
-        throw badInput(requestedAt, "render.format = \"{}\" writes {} files, but -o names {}", f->name,
-                       f->extensions, output.string());
+        throw badInput(requestedAt, "render.format = \"{}\" writes {} files, but -o names {}", f->name, f->extensions,
+                       output.string());
       return *f;
     }
   }
@@ -109,8 +108,9 @@ const OutputFormat& chooseFormat(const std::optional<std::string>& requested, co
   if (const OutputFormat* f = rowFor(use)) return *f;
   if (const OutputFormat* other = rowFor(animation ? OutputUse::Still : OutputUse::Animation)) {
     if (animation && other->name == "png")
-      throw badInput(outputAt, "an animation's PNG frames go to a folder (e.g. -o output/frames/); for one image "
-                               "pass --still");
+      throw badInput(outputAt,
+                     "an animation's PNG frames go to a folder (e.g. -o output/frames/); for one image "
+                     "pass --still");
     if (animation)
       throw badInput(outputAt, "{} is a still format (pass --still for one image); {} is written as {}", ext, job,
                      describeFormats(use));

@@ -34,8 +34,10 @@ std::uint32_t bigEndian(std::string_view bytes, std::size_t at, int count) {
 }
 
 [[noreturn]] void notRollspins(const std::string& file, std::string_view what) {
-  throw badInput(SourceLoc{file}, "'{}' carries no rollspin metadata: {} (was it written by rollspin render, "
-                                  "without --no-metadata?)", file, what);
+  throw badInput(SourceLoc{file},
+                 "'{}' carries no rollspin metadata: {} (was it written by rollspin render, "
+                 "without --no-metadata?)",
+                 file, what);
 }
 
 // The values found under each key (a piece of a split value appended).
@@ -233,9 +235,10 @@ OutputMetadata parseGif(std::string_view bytes, const std::string& file) {
 
 // <rollspin:scene>…</rollspin:scene> and the like: the rollspin elements.
 std::string rollspinElements(const OutputMetadata& m) {
-  return fmt::format("<rollspin:scene>{}</rollspin:scene><rollspin:job>{}</rollspin:job>"
-                     "<rollspin:software>{}</rollspin:software>",
-                     xmlEscaped(m.scene), xmlEscaped(m.job), xmlEscaped(m.software));
+  return fmt::format(
+      "<rollspin:scene>{}</rollspin:scene><rollspin:job>{}</rollspin:job>"
+      "<rollspin:software>{}</rollspin:software>",
+      xmlEscaped(m.scene), xmlEscaped(m.job), xmlEscaped(m.software));
 }
 
 // The text of the first <tag>…</tag> in `xml`, unescaped; nullopt when absent.
@@ -286,10 +289,11 @@ std::string withSvgMetadata(std::string_view svg, const OutputMetadata& m) {
   const std::size_t open = svg.find("<svg");
   const std::size_t end = open == std::string_view::npos ? open : svg.find('>', open);
   if (end == std::string_view::npos) throw runtimeError(SourceLoc{"SVG writer"}, "the SVG has no <svg> element");
-  return fmt::format("{}\n<title>{}</title>\n<desc>{}</desc>\n<metadata><rollspin:metadata xmlns:rollspin=\"{}\">{}"
-                     "</rollspin:metadata></metadata>{}",
-                     svg.substr(0, end + 1), xmlEscaped(m.title), xmlEscaped(m.description), kNamespace,
-                     rollspinElements(m), svg.substr(end + 1));
+  return fmt::format(
+      "{}\n<title>{}</title>\n<desc>{}</desc>\n<metadata><rollspin:metadata xmlns:rollspin=\"{}\">{}"
+      "</rollspin:metadata></metadata>{}",
+      svg.substr(0, end + 1), xmlEscaped(m.title), xmlEscaped(m.description), kNamespace, rollspinElements(m),
+      svg.substr(end + 1));
 }
 
 namespace {

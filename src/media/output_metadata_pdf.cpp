@@ -70,8 +70,8 @@ std::string creationDate() {
   const std::time_t t = sourceDateEpoch().value_or(static_cast<long long>(std::time(nullptr)));
   std::tm utc{};
   gmtime_r(&t, &utc);
-  return fmt::format("D:{:04}{:02}{:02}{:02}{:02}{:02}Z", utc.tm_year + 1900, utc.tm_mon + 1, utc.tm_mday,
-                     utc.tm_hour, utc.tm_min, utc.tm_sec);
+  return fmt::format("D:{:04}{:02}{:02}{:02}{:02}{:02}Z", utc.tm_year + 1900, utc.tm_mon + 1, utc.tm_mday, utc.tm_hour,
+                     utc.tm_min, utc.tm_sec);
 }
 
 constexpr std::string_view kAltOpen = "<rdf:Alt><rdf:li xml:lang=\"x-default\">", kAltClose = "</rdf:li></rdf:Alt>";
@@ -85,8 +85,8 @@ std::string xmpPacket(const OutputMetadata& m) {
       "<dc:title>{0}{2}{1}</dc:title>\n<dc:description>{0}{3}{1}</dc:description>\n"
       "<xmp:CreatorTool>{4}</xmp:CreatorTool>\n<rollspin:scene>{5}</rollspin:scene>\n<rollspin:job>{6}</rollspin:job>\n"
       "</rdf:Description></rdf:RDF></x:xmpmeta>\n<?xpacket end=\"w\"?>",
-      kAltOpen, kAltClose, xmlEscaped(m.title), xmlEscaped(m.description), xmlEscaped(m.software),
-      xmlEscaped(m.scene), xmlEscaped(m.job));
+      kAltOpen, kAltClose, xmlEscaped(m.title), xmlEscaped(m.description), xmlEscaped(m.software), xmlEscaped(m.scene),
+      xmlEscaped(m.job));
 }
 
 // The text between the last `open` and the `close` after it, unescaped; "" when absent.
@@ -121,7 +121,8 @@ std::string withPdfMetadata(std::string_view pdf, const OutputMetadata& m) {
   const std::string_view trailer = pdf.substr(trailerAt, startxrefAt - trailerAt);
   const long long size = trailerNumber(trailer, "/Size"), root = trailerNumber(trailer, "/Root");
   const long long previous = trailerNumber(pdf.substr(startxrefAt), "startxref");
-  if (size <= 0 || root <= 0 || previous <= 0) throw runtimeError(SourceLoc{"PDF writer"}, "the PDF's trailer is not cairo's");
+  if (size <= 0 || root <= 0 || previous <= 0)
+    throw runtimeError(SourceLoc{"PDF writer"}, "the PDF's trailer is not cairo's");
   std::string out(pdf);
   if (out.back() != '\n') out += '\n';
   const long long info = size, xmp = size + 1;
@@ -129,11 +130,12 @@ std::string withPdfMetadata(std::string_view pdf, const OutputMetadata& m) {
   offsets.emplace_back(root, out.size());
   out += fmt::format("{} 0 obj\n<<{}   /Metadata {} 0 R\n>>\nendobj\n", root, catalogBody(pdf, root), xmp);
   offsets.emplace_back(info, out.size());
-  out += fmt::format("{} 0 obj\n<< /Title {}\n   /Subject {}\n   /Creator {}\n   /Producer {}\n   /Keywords {}\n"
-                     "   /CreationDate ({})\n   /RollspinScene {}\n   /RollspinJob {}\n>>\nendobj\n",
-                     info, pdfTextString(m.title), pdfTextString(m.description), pdfTextString(m.software),
-                     pdfTextString(m.software), pdfTextString("rollspin, rolling sphere, spin-1/2, Bloch sphere"),
-                     creationDate(), pdfHexBytes(m.scene), pdfHexBytes(m.job));
+  out += fmt::format(
+      "{} 0 obj\n<< /Title {}\n   /Subject {}\n   /Creator {}\n   /Producer {}\n   /Keywords {}\n"
+      "   /CreationDate ({})\n   /RollspinScene {}\n   /RollspinJob {}\n>>\nendobj\n",
+      info, pdfTextString(m.title), pdfTextString(m.description), pdfTextString(m.software), pdfTextString(m.software),
+      pdfTextString("rollspin, rolling sphere, spin-1/2, Bloch sphere"), creationDate(), pdfHexBytes(m.scene),
+      pdfHexBytes(m.job));
   const std::string packet = xmpPacket(m);
   offsets.emplace_back(xmp, out.size());
   out += fmt::format("{} 0 obj\n<< /Type /Metadata /Subtype /XML /Length {} >>\nstream\n{}\nendstream\nendobj\n", xmp,
@@ -161,10 +163,14 @@ OutputMetadata parsePdfMetadata(std::string_view bytes, const std::string& file)
   };
   const auto scene = hexValue("RollspinScene");
   if (!scene)
-    throw badInput(SourceLoc{file}, "'{}' carries no rollspin metadata: its Info dictionary has no RollspinScene "
-                                    "(was it written by rollspin render, without --no-metadata?)", file);
+    throw badInput(SourceLoc{file},
+                   "'{}' carries no rollspin metadata: its Info dictionary has no RollspinScene "
+                   "(was it written by rollspin render, without --no-metadata?)",
+                   file);
   const auto job = hexValue("RollspinJob");
-  if (!job) throw badInput(SourceLoc{file}, "'{}': the PDF Info key 'RollspinJob' is missing (its metadata is incomplete)", file);
+  if (!job)
+    throw badInput(SourceLoc{file}, "'{}': the PDF Info key 'RollspinJob' is missing (its metadata is incomplete)",
+                   file);
   OutputMetadata m;
   m.scene = *scene;
   m.job = *job;

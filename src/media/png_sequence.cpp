@@ -93,8 +93,9 @@ void PngSequenceWriter::moveFramesInto(const fs::path& target, Stale stale) {
   }
   for (long long k = first_; k < first_ + written_; ++k) {
     fs::rename(framePath(staging_, k), framePath(target, k), ec);
-    if (ec) throw runtimeError(SourceLoc{framePath(target, k).string()}, "cannot move the frame into place: {}",
-                               ec.message());
+    if (ec)
+      throw runtimeError(SourceLoc{framePath(target, k).string()}, "cannot move the frame into place: {}",
+                         ec.message());
   }
   fs::remove_all(staging_, ec);
   unregisterTemporary(staging_);
@@ -103,10 +104,8 @@ void PngSequenceWriter::moveFramesInto(const fs::path& target, Stale stale) {
 
 fs::path PngSequenceWriter::finish() {
   const long long end = first_ + written_;
-  if (scope_ == PngSequenceScope::WholeClip)
-    moveFramesInto(folder_, [end](long long index) { return index >= end; });
-  else
-    moveFramesInto(folder_, [](long long) { return false; });
+  if (scope_ == PngSequenceScope::WholeClip) moveFramesInto(folder_, [end](long long index) { return index >= end; });
+  else moveFramesInto(folder_, [](long long) { return false; });
   return folder_;
 }
 

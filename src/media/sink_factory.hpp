@@ -18,19 +18,19 @@ namespace rollspin::media {
 
 // Everything any format may need; each factory reads what applies to it.
 struct SinkOptions {
-  std::filesystem::path path;    // the final name (a folder for frame folders)
+  std::filesystem::path path;  // the final name (a folder for frame folders)
   int width = 0, height = 0;
-  int fpsNum = 30, fpsDen = 1;   // exact rational frames per second
-  bool alpha = false;            // keep transparency (render.transparent)
-  std::optional<double> crf;     // animation.crf when the scene sets it; else the format's default
-  std::string preset = "medium"; // animation.preset (x264's names; other encoders map them)
-  bool loop = true;              // animation.loop: a GIF plays forever (else once)
-  int jpegQuality = 92;          // render.jpeg_quality
-  long long firstIndex = 0;      // frame folders: the first frame's index in the clip
-  bool wholeClip = true;         // frame folders: the whole clip (stale frames go) or a part
-  OptionList containerMetadata;  // file-level tags of video containers (VideoSettings)
-  SubtitleCues subtitles;        // MP4, WebM, MOV: the captions' track (VideoSettings), in this file's frames
-  bool subtitlesByDefault = false;  // the track shows unasked (when the pixels carry no captions)
+  int fpsNum = 30, fpsDen = 1;             // exact rational frames per second
+  bool alpha = false;                      // keep transparency (render.transparent)
+  std::optional<double> crf;               // animation.crf when the scene sets it; else the format's default
+  std::string preset = "medium";           // animation.preset (x264's names; other encoders map them)
+  bool loop = true;                        // animation.loop: a GIF plays forever (else once)
+  int jpegQuality = 92;                    // render.jpeg_quality
+  long long firstIndex = 0;                // frame folders: the first frame's index in the clip
+  bool wholeClip = true;                   // frame folders: the whole clip (stale frames go) or a part
+  OptionList containerMetadata;            // file-level tags of video containers (VideoSettings)
+  SubtitleCues subtitles;                  // MP4, WebM, MOV: the captions' track (VideoSettings), in this file's frames
+  bool subtitlesByDefault = false;         // the track shows unasked (when the pixels carry no captions)
   std::optional<OutputMetadata> metadata;  // stills and GIF: written into the file (none: --no-metadata)
 };
 

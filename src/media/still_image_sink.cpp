@@ -7,7 +7,10 @@ namespace rollspin::media {
 
 StillImageSink::StillImageSink(std::filesystem::path file, StillEncoding encoding, bool alpha, int jpegQuality,
                                std::optional<OutputMetadata> metadata)
-    : file_(std::move(file)), encoding_(encoding), alpha_(alpha), jpegQuality_(jpegQuality),
+    : file_(std::move(file)),
+      encoding_(encoding),
+      alpha_(alpha),
+      jpegQuality_(jpegQuality),
       metadata_(std::move(metadata)) {}
 
 void StillImageSink::write(const ImageView& frame) {

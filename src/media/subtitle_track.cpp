@@ -103,8 +103,8 @@ SidecarFormats parseSidecarFormats(const std::string& value, const std::string& 
   throw badInput({flag + " " + value}, "expected vtt (NAME.vtt beside the video), srt (NAME.vtt and NAME.srt) or none");
 }
 
-SubtitleSidecars::SubtitleSidecars(const fs::path& video, SidecarFormats formats, const SubtitleCues& cues,
-                                   int fpsNum, int fpsDen) {
+SubtitleSidecars::SubtitleSidecars(const fs::path& video, SidecarFormats formats, const SubtitleCues& cues, int fpsNum,
+                                   int fpsDen) {
   std::error_code ec;
   const auto status = fs::status(video, ec);
   const bool device = !ec && fs::exists(status) && !fs::is_regular_file(status);

@@ -118,7 +118,8 @@ struct VideoWriter::Impl {
   ~Impl() {
     // Unfinished after its header: the trailer frees what the muxer still
     // holds (queued packets); the file it completes is removed below.
-    if (!done && headerWritten && !trailerCalled && format != nullptr && format->pb != nullptr) av_write_trailer(format);
+    if (!done && headerWritten && !trailerCalled && format != nullptr && format->pb != nullptr)
+      av_write_trailer(format);
     release();
     if (!done && fileOpen && !direct) {
       std::error_code ec;
@@ -239,7 +240,8 @@ struct VideoWriter::Impl {
                          "prores_aw and gif)",
                          settings.encoder);
     pixelFormat = av_get_pix_fmt(settings.pixelFormat.c_str());
-    if (pixelFormat == AV_PIX_FMT_NONE) throw runtimeError(where, "libavutil has no pixel format '{}'", settings.pixelFormat);
+    if (pixelFormat == AV_PIX_FMT_NONE)
+      throw runtimeError(where, "libavutil has no pixel format '{}'", settings.pixelFormat);
     return encoder;
   }
 
@@ -303,7 +305,8 @@ struct VideoWriter::Impl {
     check(avcodec_parameters_from_context(stream->codecpar, c), "configuring the stream");
     stream->time_base = c->time_base;
     stream->avg_frame_rate = c->framerate;
-    for (const auto& [key, value] : settings.streamMetadata) av_dict_set(&stream->metadata, key.c_str(), value.c_str(), 0);
+    for (const auto& [key, value] : settings.streamMetadata)
+      av_dict_set(&stream->metadata, key.c_str(), value.c_str(), 0);
   }
 
   void allocateFrame() {
@@ -446,7 +449,9 @@ fs::path VideoWriter::finish() {
   if (!m.direct) {
     std::error_code ec;
     fs::rename(m.writePath, m.finalPath, ec);
-    if (ec) throw runtimeError(SourceLoc{m.finalPath.string()}, "cannot rename the finished video into place: {}", ec.message());
+    if (ec)
+      throw runtimeError(SourceLoc{m.finalPath.string()}, "cannot rename the finished video into place: {}",
+                         ec.message());
   }
   m.done = true;
   return m.finalPath;
@@ -473,7 +478,8 @@ fs::path VideoWriter::finishPartial() {
   const fs::path partial = partialName(m.finalPath);
   std::error_code ec;
   fs::rename(m.writePath, partial, ec);
-  if (ec) throw runtimeError(SourceLoc{partial.string()}, "cannot rename the partial video into place: {}", ec.message());
+  if (ec)
+    throw runtimeError(SourceLoc{partial.string()}, "cannot rename the partial video into place: {}", ec.message());
   m.done = true;
   return partial;
 }
@@ -490,4 +496,3 @@ std::string VideoWriter::verboseSummary() const {
 }
 
 }  // namespace rollspin::media
-

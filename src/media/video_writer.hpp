@@ -35,19 +35,19 @@ using OptionList = std::vector<std::pair<std::string, std::string>>;
 
 struct VideoSettings {
   int width = 0, height = 0;
-  int fpsNum = 30, fpsDen = 1;   // frames per second as a rational (30000/1001 for NTSC 29.97)
-  std::string container;         // libavformat muxer: "mp4", "webm", "mov", "gif"
-  std::string encoder;           // libavcodec encoder: "libx264", "libvpx-vp9", "prores_aw", "gif"
-  std::string pixelFormat;       // the encoder's input: "yuv420p", "yuva420p", "yuva444p10le", "pal8"
-  bool evenSize = true;          // chroma subsampling: width and height must be even
-  bool yuvBt709 = true;          // BT.709 matrix and tags, limited range (false: RGB/palette formats)
-  OptionList codecOptions;       // av_opt_set on the encoder ("crf", "preset", "profile", …)
-  OptionList muxerOptions;       // given to avformat_write_header ("movflags", "loop", …)
-  OptionList streamMetadata;     // the stream's tags ("alpha_mode" = "1" for WebM with alpha)
+  int fpsNum = 30, fpsDen = 1;  // frames per second as a rational (30000/1001 for NTSC 29.97)
+  std::string container;        // libavformat muxer: "mp4", "webm", "mov", "gif"
+  std::string encoder;          // libavcodec encoder: "libx264", "libvpx-vp9", "prores_aw", "gif"
+  std::string pixelFormat;      // the encoder's input: "yuv420p", "yuva420p", "yuva444p10le", "pal8"
+  bool evenSize = true;         // chroma subsampling: width and height must be even
+  bool yuvBt709 = true;         // BT.709 matrix and tags, limited range (false: RGB/palette formats)
+  OptionList codecOptions;      // av_opt_set on the encoder ("crf", "preset", "profile", …)
+  OptionList muxerOptions;      // given to avformat_write_header ("movflags", "loop", …)
+  OptionList streamMetadata;    // the stream's tags ("alpha_mode" = "1" for WebM with alpha)
   // The container's own tags (title, comment, …): set on the format context
   // before the header is written. The one place for file-level metadata.
   OptionList containerMetadata;
-  std::string describe;          // for error messages: "H.264 (libx264, crf 18, preset medium)"
+  std::string describe;  // for error messages: "H.264 (libx264, crf 18, preset medium)"
   // A subtitle track: its libavcodec encoder ("mov_text" for MP4/MOV,
   // "webvtt" for WebM; "" = none) and its cues, in this file's frames; each
   // cue is muxed as its first frame is written. No cues: no track.

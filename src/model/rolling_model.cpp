@@ -5,10 +5,10 @@
 
 #include <numbers>
 
-#include "model/surface_kinds.hpp"
-#include "model/surface_model.hpp"
 #include "geometry/joined_path.hpp"
 #include "geometry/surface_kinds.hpp"
+#include "model/surface_kinds.hpp"
+#include "model/surface_model.hpp"
 #include "spin/field.hpp"
 
 namespace rollspin::model {
@@ -41,7 +41,7 @@ RollingModel buildPathModel(const scene::SceneSpec& spec, const Placement& place
   c.length = spec.path.length;
   if (spec.surface.kind == scene::SurfaceKind::Plane) {
     const geometry::Vec3 n = model.surface->normalAt(geometry::Vec3::Zero());  // the plane's normal
-    const geometry::Vec3 e1 = place.heading                ? *place.heading
+    const geometry::Vec3 e1 = place.heading               ? *place.heading
                               : spec.path.directionVector ? toVec(*spec.path.directionVector)
                                                           : geometry::defaultTangentFor(n);
     c.start = place.start;
@@ -185,8 +185,10 @@ RollingModel buildStoryboardModel(const scene::SceneSpec& spec) {
     pieces.push_back(std::move(part.path));
   }
   if (pieces.empty())
-    throw badInput(spec.where("segment"), "segment: a storyboard needs at least one segment with a path (a motion); "
-                                          "all {} are holds", spec.segments.size());
+    throw badInput(spec.where("segment"),
+                   "segment: a storyboard needs at least one segment with a path (a motion); "
+                   "all {} are holds",
+                   spec.segments.size());
   model.surface = model.surfaces.front();
   model.path = std::make_unique<geometry::JoinedPath>(std::move(pieces));
   return model;

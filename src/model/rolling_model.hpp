@@ -16,8 +16,8 @@
 namespace rollspin::model {
 
 struct PlateModel {
-  double radius = 0.0;                    // R1, the circle each plate point describes
-  double contactSpeedRatio = 2.0;         // |v_plate| / |v_contact| from the rolling constraint
+  double radius = 0.0;                                      // R1, the circle each plate point describes
+  double contactSpeedRatio = 2.0;                           // |v_plate| / |v_contact| from the rolling constraint
   geometry::Vec3 initialTopPoint = geometry::Vec3::Zero();  // plate touches the ball here at s = 0
 };
 

@@ -17,8 +17,9 @@ using geometry::Vec3;
 Vec2 parametersOf(const scene::SceneSpec& spec, const geometry::Surface& surface, const Vec3& point,
                   const std::string& key) {
   const auto uv = surface.parametersOf(point);
-  if (!uv) throw badInput(spec.where(key), "{}: the point ({}, {}, {}) has no surface parameters here ({})", key,
-                          point.x(), point.y(), point.z(), surface.parameterNames());
+  if (!uv)
+    throw badInput(spec.where(key), "{}: the point ({}, {}, {}) has no surface parameters here ({})", key, point.x(),
+                   point.y(), point.z(), surface.parameterNames());
   return *uv;
 }
 
@@ -129,11 +130,13 @@ RollingModel buildSurfaceModel(const scene::SceneSpec& spec) {
     }
     const std::string key = "surface." + formula;
     const std::string names = model.surface->parameterNames();  // "(x, y): the horizontal coordinates"
-    throw badInput(spec.where(key), "{}: \"{}\" is undefined (not finite, or its slope is not) at {} = ({}, {}), "
-                                    "where the path goes{}; the path must stay where the formula is defined",
-                   key, spec.surface.params.text(formula), names.substr(0, names.find(':')),
-                   geometry::describeNumber(e.at().x()), geometry::describeNumber(e.at().y()),
-                   std::isfinite(e.arcLength()) ? " (arc length ≈ " + geometry::describeNumber(e.arcLength()) + ")" : "");
+    throw badInput(
+        spec.where(key),
+        "{}: \"{}\" is undefined (not finite, or its slope is not) at {} = ({}, {}), "
+        "where the path goes{}; the path must stay where the formula is defined",
+        key, spec.surface.params.text(formula), names.substr(0, names.find(':')), geometry::describeNumber(e.at().x()),
+        geometry::describeNumber(e.at().y()),
+        std::isfinite(e.arcLength()) ? " (arc length ≈ " + geometry::describeNumber(e.arcLength()) + ")" : "");
   } catch (const geometry::GeometryError& e) {
     const std::string key = keyForPathError(spec);
     throw badInput(spec.where(key), "{}: {}", key, e.what());

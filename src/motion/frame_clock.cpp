@@ -22,8 +22,8 @@ FrameClock::FrameClock(double pathLength, const scene::SceneSpec& spec)
   const double motion = std::round(seconds * rate);
   const double hold = std::round(a.hold * rate);
   if (!(motion >= 2.0))
-    throw badInput(spec.where(timeKey), "{}: {:.6g} s at {} fps is {} frame(s); an animation needs at least 2",
-                   timeKey, seconds, fps_.describe(), motion);
+    throw badInput(spec.where(timeKey), "{}: {:.6g} s at {} fps is {} frame(s); an animation needs at least 2", timeKey,
+                   seconds, fps_.describe(), motion);
   if (motion + 2.0 * hold > double(kMaxFrames))
     throw badInput(spec.where(motion > double(kMaxFrames) / 2 ? timeKey : "animation.hold"),
                    "the clip would have {:.0f} frames ({:.6g} s of motion, {:.6g} s holds at {} fps); the limit is {}",

@@ -91,9 +91,9 @@ class FrameClock {
   struct Stage {
     long long first = 0, frames = 0;  // frame range [first, first + frames)
     std::size_t segment = 0;
-    long long segmentFirst = 0;       // the segment's own first frame
-    long long segmentFrames = 0;      // and how many frames it plays (not counting the clip's holds)
-    double s0 = 0.0, s1 = 0.0;        // a motion from s0 to s1; a hold: s0 = s1
+    long long segmentFirst = 0;   // the segment's own first frame
+    long long segmentFrames = 0;  // and how many frames it plays (not counting the clip's holds)
+    double s0 = 0.0, s1 = 0.0;    // a motion from s0 to s1; a hold: s0 = s1
     bool motion = false;
   };
   std::vector<Stage> stages_;

@@ -4,9 +4,9 @@
 
 #include <algorithm>
 
-#include "motion/solve_job.hpp"
 #include "core/error.hpp"
 #include "core/stage_log.hpp"
+#include "motion/solve_job.hpp"
 
 namespace rollspin::motion {
 
@@ -100,11 +100,13 @@ FramePoseStream::FramePoseStream(const scene::SceneSpec& spec, const RollingMode
         // One non-decreasing list for the march; each sample back to its place.
         std::vector<std::size_t> order(strobeS.size());
         for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return strobeS[a] < strobeS[b]; });
+        std::stable_sort(order.begin(), order.end(),
+                         [&](std::size_t a, std::size_t b) { return strobeS[a] < strobeS[b]; });
         std::vector<double> sorted;
         for (std::size_t i : order) sorted.push_back(strobeS[i]);
-        marchScene(spec_, model_, sorted,
-                   [&](std::size_t i, double s, const spin::Su2& q) { early[order[i]] = {s, q}; });
+        marchScene(spec_, model_, sorted, [&](std::size_t i, double s, const spin::Su2& q) {
+          early[order[i]] = {s, q};
+        });
       }
       const auto split = early.begin() + static_cast<std::ptrdiff_t>(strobeCount);
       march({early.begin(), split}, {split, early.end()});

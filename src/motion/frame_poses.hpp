@@ -20,9 +20,9 @@
 #include <vector>
 
 #include "core/bounded_queue.hpp"
-#include "motion/frame_sampling.hpp"
-#include "motion/frame_clock.hpp"
 #include "model/rolling_model.hpp"
+#include "motion/frame_clock.hpp"
+#include "motion/frame_sampling.hpp"
 #include "scene/scene_spec.hpp"
 #include "spin/propagator.hpp"
 

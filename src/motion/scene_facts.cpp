@@ -6,9 +6,9 @@
 
 #include <Eigen/Geometry>
 
-#include "motion/solve_job.hpp"
 #include "core/error.hpp"
 #include "core/stage_log.hpp"
+#include "motion/solve_job.hpp"
 #include "spin/closed_forms.hpp"
 #include "spin/field.hpp"
 #include "spin/propagator.hpp"
@@ -221,7 +221,9 @@ PhaseSplitFact SceneFacts::measurePhaseSplit(const scene::SceneSpec& spec, doubl
   // Both loops are cones about the frame's turning axis (X(s) = W(s) X₀:
   // V(s) turns about X₀'s own axis): measure each about that axis, on the
   // loop's side (either side for a great circle, where the mean vanishes).
-  auto coneAxis = [&](const Vec3& mean) { return mean.dot(revolutionAxis_) < 0.0 ? Vec3(-revolutionAxis_) : revolutionAxis_; };
+  auto coneAxis = [&](const Vec3& mean) {
+    return mean.dot(revolutionAxis_) < 0.0 ? Vec3(-revolutionAxis_) : revolutionAxis_;
+  };
   const Vec3 cx = coneAxis(meanX), cb = coneAxis(meanB);
   double omegaX = 0.0, omegaB = 0.0;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
@@ -288,4 +290,3 @@ std::shared_ptr<const SceneFacts> makeSceneFacts(const scene::SceneSpec& spec, c
 }
 
 }  // namespace rollspin::motion
-

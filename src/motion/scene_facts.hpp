@@ -28,39 +28,39 @@ using model::RollingModel;
 using model::SegmentSpan;
 
 struct DeltaFact {
-  double measured = 0.0;      // rad, unwrapped rotation relative to the rolling frame after the path
-  double closedForm = 0.0;    // rad
-  bool onSphere = false;      // which closed form (the derived one on a sphere, docs/solver.md#notes-on-the-paper)
-  double labAngle = 0.0;      // the lab rotation angle of U(L) in [0, π]
-  double closedFormMod = 0.0; // |remainder(closedForm, 2π)|: what labAngle must be after whole circuits
-  bool wholeCircuits = true;  // else the frame's own turn is in U(L) too, and labAngle ≠ closedFormMod
+  double measured = 0.0;       // rad, unwrapped rotation relative to the rolling frame after the path
+  double closedForm = 0.0;     // rad
+  bool onSphere = false;       // which closed form (the derived one on a sphere, docs/solver.md#notes-on-the-paper)
+  double labAngle = 0.0;       // the lab rotation angle of U(L) in [0, π]
+  double closedFormMod = 0.0;  // |remainder(closedForm, 2π)|: what labAngle must be after whole circuits
+  bool wholeCircuits = true;   // else the frame's own turn is in U(L) too, and labAngle ≠ closedFormMod
 };
 
 struct MarksFact {
-  double beta = 0.0;               // path angle per mark (rad): π/√(1 + (r/R)²)
-  double circleRadius = 0.0;       // r
-  std::vector<double> s;           // arc length of each mark in [0, L]
-  std::vector<spin::Su2> rolling;  // V(s_k), the rolling-frame spinor at each mark
-  std::vector<double> turn;        // angle of V(s_{k+1}) V(s_k)† (rad), one per interval
+  double beta = 0.0;                   // path angle per mark (rad): π/√(1 + (r/R)²)
+  double circleRadius = 0.0;           // r
+  std::vector<double> s;               // arc length of each mark in [0, L]
+  std::vector<spin::Su2> rolling;      // V(s_k), the rolling-frame spinor at each mark
+  std::vector<double> turn;            // angle of V(s_{k+1}) V(s_k)† (rad), one per interval
   std::vector<double> axisFromNormal;  // angle of that rotation's axis to n(0) (rad), folded into [0, π/2]
 };
 
 struct TurnsFact {
-  double lab = 0.0;    // signed lab angle about the revolution axis after the path (rad)
-  double frame = 0.0;  // the radius line's turn (rad, > 0)
+  double lab = 0.0;         // signed lab angle about the revolution axis after the path (rad)
+  double frame = 0.0;       // the radius line's turn (rad, > 0)
   bool paperPenny = false;  // inside, r = 3R: the paper's penny, which it counts as 1 turn
 };
 
 struct PhaseSplitFact {
-  double total = 0.0;       // phase of U(L) on the cyclic spin, in (−π, π]
-  double dynamic = 0.0;     // ½∫ B·X ds
-  double geometric = 0.0;   // −½ Ω(X)
-  double residual = 0.0;    // total − dynamic − geometric, wrapped into (−π, π]
-  double spinFromField = 0.0;     // angle between X₀ and B̂(0)
-  double adiabaticDynamic = 0.0;  // ½∫|B| ds
-  double berryGeometric = 0.0;    // −½ Ω(B̂), quadrature of B̂'s loop
-  double coneAngle = 0.0;         // α, the half-angle of B̂'s cone about the path's turning axis
-  double berryClosedForm = 0.0;   // −½ · (±2π·turns·(1 − cos α)), the sign of Ω(B̂)
+  double total = 0.0;                     // phase of U(L) on the cyclic spin, in (−π, π]
+  double dynamic = 0.0;                   // ½∫ B·X ds
+  double geometric = 0.0;                 // −½ Ω(X)
+  double residual = 0.0;                  // total − dynamic − geometric, wrapped into (−π, π]
+  double spinFromField = 0.0;             // angle between X₀ and B̂(0)
+  double adiabaticDynamic = 0.0;          // ½∫|B| ds
+  double berryGeometric = 0.0;            // −½ Ω(B̂), quadrature of B̂'s loop
+  double coneAngle = 0.0;                 // α, the half-angle of B̂'s cone about the path's turning axis
+  double berryClosedForm = 0.0;           // −½ · (±2π·turns·(1 − cos α)), the sign of Ω(B̂)
   std::vector<geometry::Vec3> fieldLoop;  // B̂ along the path (closed), for the twin's cone
 };
 
@@ -117,8 +117,7 @@ class SceneFacts {
 // The facts the image shows (resolveFacts, less the lines when labels are off
 // or the layout has no ball view; marks need the ball view, the cone of B the
 // twin), computed; null when none. Records the "facts" stage.
-[[nodiscard]] std::shared_ptr<const SceneFacts> makeSceneFacts(const scene::SceneSpec& spec,
-                                                               const RollingModel& model);
+[[nodiscard]] std::shared_ptr<const SceneFacts> makeSceneFacts(const scene::SceneSpec& spec, const RollingModel& model);
 
 // Rotation vector of the smaller rotation of q (angle ≤ π): the log used to
 // unwrap increments.

@@ -26,7 +26,9 @@ std::pair<std::string, SourceLoc> pathSizeKey(const scene::SceneSpec& spec) {
 // budget falls monotonically as R grows).
 void throwIfTheBallIsTooSmall(const scene::SceneSpec& spec, const RollingModel& model, double needed) {
   const double limit = static_cast<double>(scene::kMaxSolverSteps);
-  auto stepsFor = [&](double radius) { return kAutomaticStepsPerRadian * spin::integratedStepBudget(*model.path, radius); };
+  auto stepsFor = [&](double radius) {
+    return kAutomaticStepsPerRadian * spin::integratedStepBudget(*model.path, radius);
+  };
   const double length = model.path->length();
   double fits = std::max(length, model.ballRadius);
   if (!(stepsFor(fits) <= limit)) return;  // the path itself is too long or too curved
@@ -151,9 +153,10 @@ void addPathError(const RollingModel& model, const SolverChoice& choice, spin::S
   const spin::SolveStats other =
       spin::Propagator(*finer, model.ballRadius, choice.method, choice.steps, choice.tolerance).solveFinal();
   stats.errorEstimate += other.status == spin::SolveStatus::Ok ? spin::rotationDistance(stats.final, other.final)
-                                                                : std::numeric_limits<double>::infinity();
-  stats.errorEstimateBasis += " + the path's own error (difference to the same solve on the geodesic marched at half "
-                              "the step)";
+                                                               : std::numeric_limits<double>::infinity();
+  stats.errorEstimateBasis +=
+      " + the path's own error (difference to the same solve on the geodesic marched at half "
+      "the step)";
   stats.errorEstimateSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -178,8 +181,8 @@ spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& mo
     stats.errorEstimateSeconds = 0.0;
     return stats;
   }
-  const double budget = std::isfinite(choice.stepBudget) ? choice.stepBudget
-                                                          : spin::integratedStepBudget(*model.path, model.ballRadius);
+  const double budget =
+      std::isfinite(choice.stepBudget) ? choice.stepBudget : spin::integratedStepBudget(*model.path, model.ballRadius);
   spin::estimateError(first, stats, budget);
   // Automatic steps: refine while the estimate says the a priori count fell
   // short. Each doubling reuses the previous solve as its coarse one, so the
@@ -187,9 +190,8 @@ spin::SolveStats solveScene(const scene::SceneSpec& spec, const RollingModel& mo
   // longer falls (round-off dominates) or the step limit is near.
   if (choice.automaticSteps && choice.method != spin::Method::Exact) {
     double seconds = stats.seconds, estimateSeconds = stats.errorEstimateSeconds;
-    for (int round = 0; round < 4 && stats.errorEstimate > kAutomaticEstimateTarget &&
-                        steps <= scene::kMaxSolverSteps / 2;
-         ++round) {
+    for (int round = 0;
+         round < 4 && stats.errorEstimate > kAutomaticEstimateTarget && steps <= scene::kMaxSolverSteps / 2; ++round) {
       spin::SolveStats finer = solve(2 * steps);
       finer.errorEstimate = spin::rotationDistance(finer.final, stats.final);
       finer.errorEstimateBasis =

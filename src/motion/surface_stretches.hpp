@@ -18,7 +18,7 @@ namespace rollspin::motion {
 struct SurfaceStretch {
   std::size_t firstSegment = 0, endSegment = 0;  // [first, end) of the scene's segments
   double start = 0.0, end = 0.0;                 // where it lies on the whole path
-  scene::SceneSpec spec;     // its segments (each motion's duration fixed as the whole clip times it), its surface
+  scene::SceneSpec spec;      // its segments (each motion's duration fixed as the whole clip times it), its surface
   model::RollingModel model;  // built from `spec`: the same pieces, from s = 0
 };
 

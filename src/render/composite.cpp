@@ -14,8 +14,8 @@ glm::vec3 encodeSrgb(const glm::vec3& linear) {
   return out;
 }
 
-void compositeSpan(const std::uint32_t* begin, const std::uint32_t* end, std::uint32_t* out,
-                   const glm::vec3& backdrop, std::uint32_t opaqueAlpha) {
+void compositeSpan(const std::uint32_t* begin, const std::uint32_t* end, std::uint32_t* out, const glm::vec3& backdrop,
+                   std::uint32_t opaqueAlpha) {
   auto over = [&](std::uint32_t t) {
     const std::uint32_t a = t >> 24u;
     const float uncovered = float(255u - a);

@@ -19,7 +19,7 @@ namespace rollspin::render {
 // clamped to 255; alpha at least opaqueAlpha. Pixels the scene covers fully
 // keep their word, and those it leaves empty take the backdrop's, computed
 // once.
-void compositeSpan(const std::uint32_t* begin, const std::uint32_t* end, std::uint32_t* out,
-                   const glm::vec3& backdrop, std::uint32_t opaqueAlpha);
+void compositeSpan(const std::uint32_t* begin, const std::uint32_t* end, std::uint32_t* out, const glm::vec3& backdrop,
+                   std::uint32_t opaqueAlpha);
 
 }  // namespace rollspin::render

@@ -46,7 +46,7 @@ struct Material {
   float specular = 0.25f;
   float shininess = 48.0f;
   Pattern pattern = Pattern::Plain;
-  glm::vec2 patternScale{1.0f};  // Checker: cells per unit of uv; SolidChecker: cells per world unit (x)
+  glm::vec2 patternScale{1.0f};                 // Checker: cells per unit of uv; SolidChecker: cells per world unit (x)
   std::shared_ptr<const TextureImage> texture;  // Pattern::Texture
   bool lit = true;
   bool castsShadow = true;
@@ -167,10 +167,10 @@ struct View {
   int x = 0, y = 0, width = 0, height = 0;  // pixels, top-left origin
   Camera camera;
   Light light;
-  bool background = true;  // gradient; off for transparent output
+  bool background = true;                           // gradient; off for transparent output
   glm::vec3 backgroundTop{0.30f, 0.38f, 0.50f};     // linear RGB: a soft slate-blue sky
   glm::vec3 backgroundBottom{0.82f, 0.84f, 0.87f};  // that lightens towards the horizon
-  bool frame = false;  // thin border (an inset)
+  bool frame = false;                               // thin border (an inset)
   bool operator==(const View&) const = default;
 };
 

@@ -63,11 +63,11 @@ enum class Pass { Samples, Coverage };
 // The state a draw depends on. beginView makes one for the view and the
 // framebuffer it binds; a step narrows a copy of it for its draws.
 struct DrawScope {
-  const View* view = nullptr;       // its camera, light and viewport
-  glm::mat4 clipFromWorld{1.0f};    // the view's camera, multiplied once
-  ShadowSetup shadow;               // the view's shadow map's, if any
-  int samples = 1;                  // a ray-cast sphere needs 1 (see impostorRect)
-  bool depthOnly = false;           // colour writes are off (see drawOpaqueAtCentres)
+  const View* view = nullptr;     // its camera, light and viewport
+  glm::mat4 clipFromWorld{1.0f};  // the view's camera, multiplied once
+  ShadowSetup shadow;             // the view's shadow map's, if any
+  int samples = 1;                // a ray-cast sphere needs 1 (see impostorRect)
+  bool depthOnly = false;         // colour writes are off (see drawOpaqueAtCentres)
   // Over a retained layer (and for a tile drawn in samples): the
   // rectangles an island redraws; a mesh, a line or a label draws only its
   // parts that reach one. Null: everywhere.

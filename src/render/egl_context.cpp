@@ -44,7 +44,7 @@ struct EglApi {
   decltype(&eglMakeCurrent) makeCurrent = nullptr;
   decltype(&eglDestroyContext) destroyContext = nullptr;
   decltype(&eglReleaseThread) releaseThread = nullptr;
-  PFNEGLQUERYDEVICESEXTPROC queryDevices = nullptr;          // null without EGL_EXT_device_enumeration
+  PFNEGLQUERYDEVICESEXTPROC queryDevices = nullptr;            // null without EGL_EXT_device_enumeration
   PFNEGLQUERYDEVICESTRINGEXTPROC queryDeviceString = nullptr;  // null without EGL_EXT_device_query
   std::string clientExtensions;  // EGL_EXTENSIONS of EGL_NO_DISPLAY: the platforms libEGL offers
 };
@@ -187,7 +187,8 @@ EglDevices listDevices(const EglApi& api) {
         return std::string(s != nullptr ? s : "");
       };
       if (hasExtension(extensions, "EGL_EXT_device_drm")) d.drmPath = query(EGL_DRM_DEVICE_FILE_EXT);
-      if (hasExtension(extensions, "EGL_EXT_device_drm_render_node")) d.renderNode = query(EGL_DRM_RENDER_NODE_FILE_EXT);
+      if (hasExtension(extensions, "EGL_EXT_device_drm_render_node"))
+        d.renderNode = query(EGL_DRM_RENDER_NODE_FILE_EXT);
       if (hasExtension(extensions, "EGL_EXT_device_query_name")) d.name = query(EGL_RENDERER_EXT);
       (void)api.getError();  // a string the device lacks is not an error here
     }
@@ -223,13 +224,15 @@ const EglDevice& requestedDevice(const DeviceChoice& choice, const EglDevices& d
   const std::string& text = choice.text;
   const bool isIndex = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
   if (!isIndex && (text.empty() || text[0] != '/'))
-    throw badInput(choice.where, "expected an EGL device index (0, 1, …) or a DRM device path such as "
-                                 "/dev/dri/renderD128, got \"{}\"", text);
+    throw badInput(choice.where,
+                   "expected an EGL device index (0, 1, …) or a DRM device path such as "
+                   "/dev/dri/renderD128, got \"{}\"",
+                   text);
   for (const auto& d : devices.list) {
     if (isIndex ? std::to_string(d.index) == text : (d.drmPath == text || d.renderNode == text)) return d;
   }
-  throw runtimeError(choice.where, "no EGL device {} here ({}); choose one of those, or leave the device unset",
-                     text, describeDevices(devices));
+  throw runtimeError(choice.where, "no EGL device {} here ({}); choose one of those, or leave the device unset", text,
+                     describeDevices(devices));
 }
 
 // A sanitizer build keeps the DRI driver Mesa loaded (swrast_dri.so, or a
@@ -294,9 +297,10 @@ class EglContext final : public GlContext {
     // A device asked for by name or picked as hardware, but the CPU renders:
     // say so instead of silently being slow.
     if (device != nullptr && info_.software)
-      info_.notes.push_back(fmt::format("{} EGL device {} renders in software (GL_RENDERER {}): no GPU is doing the "
-                                        "work",
-                                        requested ? "the requested" : "the", device->describe(), info_.renderer));
+      info_.notes.push_back(
+          fmt::format("{} EGL device {} renders in software (GL_RENDERER {}): no GPU is doing the "
+                      "work",
+                      requested ? "the requested" : "the", device->describe(), info_.renderer));
   }
   ~EglContext() override {
     api_.makeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
@@ -312,8 +316,7 @@ class EglContext final : public GlContext {
     const char* ext = api_.queryString(display_, EGL_EXTENSIONS);
     const std::string extensions = ext != nullptr ? ext : "";
     if (!hasExtension(extensions, "EGL_KHR_surfaceless_context"))
-      throw runtimeError({}, "EGL on {} lacks EGL_KHR_surfaceless_context (a context with no surface)",
-                         where);
+      throw runtimeError({}, "EGL on {} lacks EGL_KHR_surfaceless_context (a context with no surface)", where);
     if (!api_.bindApi(EGL_OPENGL_API)) fail("eglBindAPI(EGL_OPENGL_API)", "this EGL driver offers no desktop OpenGL");
     // No config is needed for a context that never draws to a surface; a
     // driver without EGL_KHR_no_config_context gets any OpenGL config.
@@ -326,8 +329,9 @@ class EglContext final : public GlContext {
         fail("eglChooseConfig (an OpenGL config)", "the driver offers no desktop OpenGL config");
     }
     // EGL 1.5 / EGL_KHR_create_context attributes (the same values).
-    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                 EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    const EGLint attributes[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     context_ = api_.createContext(display_, config, EGL_NO_CONTEXT, attributes);
     if (context_ == EGL_NO_CONTEXT)
       fail(fmt::format("eglCreateContext (OpenGL 4.5 core) on {}", where),
@@ -391,8 +395,9 @@ std::unique_ptr<GlContext> create(const std::optional<DeviceChoice>& choice) {
   if (choice) {
     const EglDevice& device = requestedDevice(*choice, devices);
     if (!platformDevice)
-      throw runtimeError(choice->where, "this libEGL lacks EGL_EXT_platform_device: it cannot render on a chosen "
-                                        "device; leave the device unset");
+      throw runtimeError(choice->where,
+                         "this libEGL lacks EGL_EXT_platform_device: it cannot render on a chosen "
+                         "device; leave the device unset");
     return std::make_unique<EglContext>(*api, &device, true);
   }
   // A GPU when there is one; else the surfaceless platform; else whatever
@@ -402,16 +407,17 @@ std::unique_ptr<GlContext> create(const std::optional<DeviceChoice>& choice) {
   if (hasExtension(api->clientExtensions, "EGL_MESA_platform_surfaceless"))
     return std::make_unique<EglContext>(*api, nullptr, false);
   if (!devices.list.empty() && platformDevice) return std::make_unique<EglContext>(*api, &devices.list.front(), false);
-  throw runtimeError({}, "EGL offers no device (EGL_EXT_platform_device) and no surfaceless platform "
-                         "(EGL_MESA_platform_surfaceless), {}; {}",
+  throw runtimeError({},
+                     "EGL offers no device (EGL_EXT_platform_device) and no surfaceless platform "
+                     "(EGL_MESA_platform_surfaceless), {}; {}",
                      describeDevices(devices), kAdvice);
 }
 
 }  // namespace
 
 extern const GlBackend kEglBackend{
-    "egl",   "EGL: a GPU through EGL_EXT_platform_device, else Mesa's surfaceless platform (llvmpipe)", true,
-    kAdvice, &probe,
-    &create};
+    "egl",  "EGL: a GPU through EGL_EXT_platform_device, else Mesa's surfaceless platform (llvmpipe)",
+    true,   kAdvice,
+    &probe, &create};
 
 }  // namespace rollspin::render

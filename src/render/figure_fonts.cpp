@@ -119,8 +119,10 @@ void checkFigureFont(const std::string& family, const SourceLoc& where) {
   const bool found = match != nullptr && sameFamily(match, family);
   if (match != nullptr) FcPatternDestroy(match);
   if (!found)
-    throw badInput(where, "figure.font: no font family '{}' is installed (`fc-list : family` lists them; "
-                          "Debian's fonts-lmodern gives \"Latin Modern Roman\")", family);
+    throw badInput(where,
+                   "figure.font: no font family '{}' is installed (`fc-list : family` lists them; "
+                   "Debian's fonts-lmodern gives \"Latin Modern Roman\")",
+                   family);
 }
 
 }  // namespace rollspin::render

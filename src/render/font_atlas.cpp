@@ -30,10 +30,9 @@ struct Range {
 // punctuation (‐ – — ‘ ’ “ ” • … ′ ″); superscripts and subscripts
 // (⁰ ⁱ ⁴…⁹ ⁺ ⁻ ⁼ ⁽ ⁾ ⁿ, ₀…₉ ₊ ₋); ℏ; arrows (→ ↦ ⇒); mathematical operators
 // (− √ ≈ ∫ ∮ ∞ …); ● and ⟨ ⟩. A code point outside them renders as '?'.
-constexpr Range kRanges[] = {{0x20, 0x7E},     {0xA0, 0xFF},     {0x391, 0x3C9},   {0x3D1, 0x3D1},
-                             {0x3D5, 0x3D6},   {0x3F5, 0x3F5},   {0x2010, 0x2027}, {0x2030, 0x2033},
-                             {0x2070, 0x208E}, {0x210F, 0x210F}, {0x2190, 0x21FF}, {0x2200, 0x22FF},
-                             {0x25CF, 0x25CF}, {0x27E8, 0x27E9}};
+constexpr Range kRanges[] = {{0x20, 0x7E},     {0xA0, 0xFF},     {0x391, 0x3C9},   {0x3D1, 0x3D1},   {0x3D5, 0x3D6},
+                             {0x3F5, 0x3F5},   {0x2010, 0x2027}, {0x2030, 0x2033}, {0x2070, 0x208E}, {0x210F, 0x210F},
+                             {0x2190, 0x21FF}, {0x2200, 0x22FF}, {0x25CF, 0x25CF}, {0x27E8, 0x27E9}};
 
 // The font file's bytes and stb_truetype's view of them (which points into
 // the bytes: keep both together).
@@ -83,14 +82,15 @@ std::shared_ptr<const std::vector<unsigned char>> fontFileBytes(const std::files
   const std::lock_guard<std::mutex> lock(mutex);
   if (const auto it = read.find(fontFile); it != read.end()) return it->second;
   auto unreadable = [&] {
-    return runtimeError({fontFile.string()}, "cannot read the label font (install fonts-dejavu-core, or turn "
-                                             "labels off with render.labels = false)");
+    return runtimeError({fontFile.string()},
+                        "cannot read the label font (install fonts-dejavu-core, or turn "
+                        "labels off with render.labels = false)");
   };
   // Opened at its end: the size first, then one read into one allocation.
   std::ifstream in(fontFile, std::ios::binary | std::ios::ate);
   if (!in) throw unreadable();
-  auto bytes = std::make_shared<std::vector<unsigned char>>(
-      static_cast<std::size_t>(std::max<std::streamoff>(in.tellg(), 0)));
+  auto bytes =
+      std::make_shared<std::vector<unsigned char>>(static_cast<std::size_t>(std::max<std::streamoff>(in.tellg(), 0)));
   in.seekg(0);
   in.read(reinterpret_cast<char*>(bytes->data()), static_cast<std::streamsize>(bytes->size()));
   if (!in) throw unreadable();
@@ -144,7 +144,8 @@ FontAtlas::FontAtlas(const std::filesystem::path& fontFile, float pixelHeight) :
   // from the first side whose square can hold the glyphs at all.
   const long long leastArea = packedArea(info, stbtt_ScaleForPixelHeight(&info, pixelHeight));
   for (int side = 256;; side *= 2) {
-    if (side > 8192) throw runtimeError({fontFile.string()}, "label size {} px too large for a glyph atlas", pixelHeight);
+    if (side > 8192)
+      throw runtimeError({fontFile.string()}, "label size {} px too large for a glyph atlas", pixelHeight);
     if (static_cast<long long>(side) * side < leastArea) continue;
     width_ = height_ = side;
     coverage_.assign(static_cast<std::size_t>(side) * side, 0);

@@ -15,10 +15,8 @@ GlObject textureOf(GLenum target) {
 GlObject renderbuffer(int samples, GLenum format, int w, int h) {
   GlObject rb = GlObject::generate(GlKind::Renderbuffer);
   glBindRenderbuffer(GL_RENDERBUFFER, rb);
-  if (samples > 0)
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, w, h);
-  else
-    glRenderbufferStorage(GL_RENDERBUFFER, format, w, h);
+  if (samples > 0) glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, w, h);
+  else glRenderbufferStorage(GL_RENDERBUFFER, format, w, h);
   return rb;
 }
 
@@ -44,9 +42,9 @@ bool FrameTargets::ensure(int w, int h, int s) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   sceneDepth = renderbuffer(0, GL_DEPTH_COMPONENT24, w, h);
-  sceneFbo = makeFramebuffer({{GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, sceneColor},
-                              {GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, sceneDepth}},
-                             w, h, what);
+  sceneFbo = makeFramebuffer(
+      {{GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, sceneColor}, {GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, sceneDepth}}, w, h,
+      what);
   if (s > 1) {
     // A texture, viewed as packed words by the resolve pass.
     opaqueColor = textureOf(GL_TEXTURE_2D_MULTISAMPLE);
@@ -75,9 +73,9 @@ void FrameTargets::ensureSnapshot() {
   snapshotColor = textureOf(GL_TEXTURE_2D);
   glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, width, height);
   snapshotDepth = renderbuffer(0, GL_DEPTH_COMPONENT24, width, height);
-  snapshotFbo = makeFramebuffer({{GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, snapshotColor},
-                                 {GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, snapshotDepth}},
-                                width, height, what);
+  snapshotFbo = makeFramebuffer(
+      {{GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, snapshotColor}, {GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, snapshotDepth}},
+      width, height, what);
   if (opaqueFbo != 0) {
     snapshotSamplesColor = renderbuffer(samples, GL_RGBA8, width, height);
     snapshotSamplesDepth = renderbuffer(samples, GL_DEPTH_COMPONENT24, width, height);

@@ -68,11 +68,12 @@ Choice resolve(const ContextRequest& request) {
     // Asked for in the same place as the backend: contradictory. From the
     // environment (set for other runs): ignored, and said so.
     if (deviceFromRequest)
-      throw badInput(c.device->where, "a device (\"{}\") applies to the egl backend, but the backend is \"{}\"{}; "
-                                      "remove the device or choose render.backend = \"egl\"",
+      throw badInput(c.device->where,
+                     "a device (\"{}\") applies to the egl backend, but the backend is \"{}\"{}; "
+                     "remove the device or choose render.backend = \"egl\"",
                      c.device->text, c.backend, c.where.empty() ? "" : " (" + c.where.str() + ")");
-    c.notes.push_back(fmt::format("{}={} ignored: the {} backend takes no device", kDeviceVariable, c.device->text,
-                                  c.backend));
+    c.notes.push_back(
+        fmt::format("{}={} ignored: the {} backend takes no device", kDeviceVariable, c.device->text, c.backend));
     c.device.reset();
   }
   return c;
@@ -139,8 +140,9 @@ std::unique_ptr<GlContext> createAuto(Choice& c) {
       failures.push_back(fmt::format("{}: {}; {}", backend->name, probe.detail, backend->advice));
   std::string reasons;
   for (const auto& f : failures) reasons += (reasons.empty() ? "" : " | ") + f;
-  throw runtimeError({}, "no GL backend could make an OpenGL 4.5 core context (render.backend = \"auto\"): {} "
-                         "(docs/gl-backends.md explains each message)",
+  throw runtimeError({},
+                     "no GL backend could make an OpenGL 4.5 core context (render.backend = \"auto\"): {} "
+                     "(docs/gl-backends.md explains each message)",
                      reasons);
 }
 
@@ -197,9 +199,9 @@ std::string describeContext(const ContextInfo& i) {
   std::string out = fmt::format("backend     {}{}\n", i.backend, i.platform.empty() ? "" : " (" + i.platform + ")");
   out += fmt::format("GL_VENDOR   {}\nGL_RENDERER {}{}\nGL_VERSION  {}\n", i.vendor, i.renderer,
                      i.software ? " (software: the CPU renders)" : "", i.version);
-  out += fmt::format("device      {}\n", !i.device.empty()          ? i.device
-                                          : i.platform == "surfaceless" ? "none (EGL surfaceless platform)"
-                                                                        : "none");
+  out += fmt::format("device      {}\n", !i.device.empty()             ? i.device
+                                         : i.platform == "surfaceless" ? "none (EGL surfaceless platform)"
+                                                                       : "none");
   for (const auto& note : i.notes) out += "note        " + note + "\n";
   return out;
 }

@@ -17,13 +17,13 @@ namespace rollspin::render {
 
 // What a context runs on, for --verbose, `rollspin info` and tests.
 struct ContextInfo {
-  std::string backend;   // the table's name: "egl", …
-  std::string platform;  // how the backend reached GL: "device", "surfaceless", "" (no choice)
-  std::string device;    // the GPU or device used ("0: /dev/dri/renderD128 (hardware)"); "" = none
-  std::string vendor;    // GL_VENDOR
-  std::string renderer;  // GL_RENDERER
-  std::string version;   // GL_VERSION
-  bool software = false; // GL_RENDERER is a CPU rasteriser (llvmpipe, softpipe, …)
+  std::string backend;             // the table's name: "egl", …
+  std::string platform;            // how the backend reached GL: "device", "surfaceless", "" (no choice)
+  std::string device;              // the GPU or device used ("0: /dev/dri/renderD128 (hardware)"); "" = none
+  std::string vendor;              // GL_VENDOR
+  std::string renderer;            // GL_RENDERER
+  std::string version;             // GL_VERSION
+  bool software = false;           // GL_RENDERER is a CPU rasteriser (llvmpipe, softpipe, …)
   std::vector<std::string> notes;  // backends auto passed over and why; a requested device that renders in software
 };
 

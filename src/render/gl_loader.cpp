@@ -47,8 +47,8 @@ void loadGlFunctions(GlProcResolver resolve, std::string_view library) {
   // Contexts are made on several threads in tests; the table is process-wide.
   static std::mutex mutex;
   const std::lock_guard lock(mutex);
-#define ROLLSPIN_GL_LOAD(name)                                                                     \
-  name = reinterpret_cast<gl_api::name##_type>(resolve(#name));                                    \
+#define ROLLSPIN_GL_LOAD(name) \
+  name = reinterpret_cast<gl_api::name##_type>(resolve(#name)); \
   if (name == nullptr) throw runtimeError({}, "{} does not provide {}: OpenGL 4.5 needed", library, #name);
   ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_LOAD)
 #undef ROLLSPIN_GL_LOAD

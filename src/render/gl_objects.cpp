@@ -43,10 +43,8 @@ GlObject makeFramebuffer(std::initializer_list<Attachment> attachments, int widt
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   std::vector<GLenum> colours;
   for (const Attachment& a : attachments) {
-    if (a.target == GL_RENDERBUFFER)
-      glFramebufferRenderbuffer(GL_FRAMEBUFFER, a.point, GL_RENDERBUFFER, a.name);
-    else
-      glFramebufferTexture2D(GL_FRAMEBUFFER, a.point, a.target, a.name, 0);
+    if (a.target == GL_RENDERBUFFER) glFramebufferRenderbuffer(GL_FRAMEBUFFER, a.point, GL_RENDERBUFFER, a.name);
+    else glFramebufferTexture2D(GL_FRAMEBUFFER, a.point, a.target, a.name, 0);
     if (a.point != GL_DEPTH_ATTACHMENT) colours.push_back(a.point);
   }
   // One colour attachment draws by default; none: a depth map.

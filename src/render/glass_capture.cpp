@@ -13,8 +13,15 @@ const SphereCapture& SphereCaptures::of(const Drawable& d, const PixelRect& rect
                                         const glm::mat4& worldFromClip, const glm::vec4& viewport,
                                         const DrawScope& scope, int fbHeight, Programs& programs, RenderStats& stats) {
   const View& v = *scope.view;
-  SphereInputs inputs{d.worldFromModel, scope.clipFromWorld, glm::normalize(v.light.towardLight), v.light.color,
-                      v.camera.position, v.light.ambient,    viewport,        rect,          *d.material};
+  SphereInputs inputs{d.worldFromModel,
+                      scope.clipFromWorld,
+                      glm::normalize(v.light.towardLight),
+                      v.light.color,
+                      v.camera.position,
+                      v.light.ambient,
+                      viewport,
+                      rect,
+                      *d.material};
   for (const SphereCapture& c : captures_)
     if (c.inputs == inputs) return c;
   if (captures_.size() == kKept) captures_.pop_front();
@@ -35,8 +42,9 @@ const SphereCapture& SphereCaptures::of(const Drawable& d, const PixelRect& rect
   glGetIntegerv(GL_SCISSOR_BOX, scissorBox);
   const bool scissored = glIsEnabled(GL_SCISSOR_TEST), blended = glIsEnabled(GL_BLEND),
              depthTested = glIsEnabled(GL_DEPTH_TEST);
-  c.fbo = makeFramebuffer({{GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, c.color}, {GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, c.depth}},
-                          width, height, "float framebuffer");
+  c.fbo =
+      makeFramebuffer({{GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, c.color}, {GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, c.depth}},
+                      width, height, "float framebuffer");
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
@@ -73,7 +81,7 @@ const SphereCapture& SphereCaptures::of(const Drawable& d, const PixelRect& rect
 // The sphere's parts (parts_, see SpherePass::draw) from its capture: two
 // triangles a part, two texel fetches a pixel.
 void SpherePass::replayCaptured(const Drawable& d, const DrawScope& scope, const PixelRect& rect, int pattern,
-                        const glm::mat4& worldFromClip, const glm::vec4& viewport, const SphereDrawing& with) {
+                                const glm::mat4& worldFromClip, const glm::vec4& viewport, const SphereDrawing& with) {
   const int fbHeight = with.fbHeight;
   const SphereCapture& capture =
       with.captures.of(d, rect, pattern, worldFromClip, viewport, scope, fbHeight, with.programs, with.stats);

@@ -31,8 +31,8 @@ struct MeshChunk {
 struct GpuMesh {
   GlObject vao, vbo, ebo;
   GLsizei indexCount = 0;
-  glm::vec4 bound{0.0f};  // a bounding sphere in model coordinates: centre, radius
-  glm::vec3 lo{0.0f}, hi{0.0f};  // the bounding box in model coordinates
+  glm::vec4 bound{0.0f};          // a bounding sphere in model coordinates: centre, radius
+  glm::vec3 lo{0.0f}, hi{0.0f};   // the bounding box in model coordinates
   std::vector<MeshChunk> chunks;  // the triangles in runs of kChunkTriangles, in index order
 };
 

@@ -27,13 +27,14 @@ bool sameItems(const std::vector<Item>& kept, const std::vector<Item>& items) {
 // `keptPaired` says which kept items found one.
 template <typename Item, typename Pairs>
 std::vector<int> alignItems(const std::vector<Item>& kept, const std::vector<const Item*>& now, Pairs pairs,
-                                   std::vector<bool>& keptPaired) {
+                            std::vector<bool>& keptPaired) {
   const std::size_t n = kept.size(), m = now.size();
   std::vector<int> best((n + 1) * (m + 1), 0);  // best[i*(m+1)+j]: LCS of kept[i…], now[j…]
   for (std::size_t i = n; i-- > 0;)
     for (std::size_t j = m; j-- > 0;)
-      best[i * (m + 1) + j] = pairs(kept[i], *now[j]) ? best[(i + 1) * (m + 1) + j + 1] + 1
-                                                      : std::max(best[(i + 1) * (m + 1) + j], best[i * (m + 1) + j + 1]);
+      best[i * (m + 1) + j] = pairs(kept[i], *now[j])
+                                  ? best[(i + 1) * (m + 1) + j + 1] + 1
+                                  : std::max(best[(i + 1) * (m + 1) + j], best[i * (m + 1) + j + 1]);
   std::vector<int> partner(m, -1);
   keptPaired.assign(n, false);
   for (std::size_t i = 0, j = 0; i < n && j < m;) {
@@ -214,8 +215,8 @@ void markLineChanges(const LayerDiff& diff, const std::vector<PolylineItem>& kep
     const PolylineItem& before = kept[static_cast<std::size_t>(linePartner[j])];
     if (before == now) continue;
     const std::size_t shared = std::min(before.points.size(), now.points.size());
-    const bool prefix = std::equal(before.points.begin(), before.points.begin() + std::ptrdiff_t(shared),
-                                   now.points.begin());
+    const bool prefix =
+        std::equal(before.points.begin(), before.points.begin() + std::ptrdiff_t(shared), now.points.begin());
     const std::size_t first = prefix && shared > 0 ? shared - 1 : 0;
     addLine(before, first);
     addLine(now, first);
@@ -232,8 +233,8 @@ void markLabelChanges(const LayerDiff& diff, const std::vector<LabelItem>& kept)
     if (diff.compared(l)) staticLabels.push_back(std::move(l));
   std::vector<const LabelItem*> labels;
   for (const LabelItem& l : staticLabels) labels.push_back(&l);
-  const auto labelPartner =
-      alignItems(kept, labels, [](const LabelItem& a, const LabelItem& b) { return a.view == b.view; }, keptPaired);
+  const auto labelPartner = alignItems(
+      kept, labels, [](const LabelItem& a, const LabelItem& b) { return a.view == b.view; }, keptPaired);
   auto addLabel = [&](const LabelItem& l) {
     if (l.view < 0) {
       diff.grid.add(diff.bounds.label(l, nullptr, glm::mat4(1.0f)));
@@ -271,8 +272,8 @@ std::optional<std::vector<PixelRect>> layerChanges(const StaticKey& k, const Dra
   return grid.rects();
 }
 
-void addSegmentBounds(const PolylineItem& p, const View& v, const glm::mat4& clipFromWorld,
-                             std::size_t first, TileGrid& grid) {
+void addSegmentBounds(const PolylineItem& p, const View& v, const glm::mat4& clipFromWorld, std::size_t first,
+                      TileGrid& grid) {
   const float margin = 0.7072f * p.widthPx + 2.0f;
   for (std::size_t k = first; k + 1 < p.points.size(); ++k) {
     const glm::vec3 ends[2] = {p.points[k], p.points[k + 1]};

@@ -70,7 +70,10 @@ struct TileGrid {
   int cols, rows, width, height;
   std::vector<std::uint8_t> dirty;
   TileGrid(int w, int h)
-      : cols((w + kTile - 1) / kTile), rows((h + kTile - 1) / kTile), width(w), height(h),
+      : cols((w + kTile - 1) / kTile),
+        rows((h + kTile - 1) / kTile),
+        width(w),
+        height(h),
         dirty(static_cast<std::size_t>(cols) * rows, 0) {}
   void add(const PixelRect& r) {
     if (r.empty()) return;

@@ -23,7 +23,8 @@ void addCap(MeshData& m, int segments, float z, float sign) {
   m.vertices.push_back({{0, 0, z}, {0, 0, sign}, {0.5f, 0.5f}});
   for (int i = 0; i <= segments; ++i) {
     const float phi = kTwoPi * i / segments;
-    m.vertices.push_back({{std::cos(phi), std::sin(phi), z}, {0, 0, sign}, {0.5f + 0.5f * std::cos(phi), 0.5f + 0.5f * std::sin(phi)}});
+    m.vertices.push_back(
+        {{std::cos(phi), std::sin(phi), z}, {0, 0, sign}, {0.5f + 0.5f * std::cos(phi), 0.5f + 0.5f * std::sin(phi)}});
   }
   for (int i = 0; i < segments; ++i) {
     const std::uint32_t a = centre + 1 + i, b = a + 1;

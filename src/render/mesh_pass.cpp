@@ -118,9 +118,9 @@ void MeshPass::draw(const Drawable& d, const DrawScope& scope, bool shadowOn, Cu
   mesh.use();
   setMeshUniforms(mesh, d, scope, clipToShadowBox);
   if (impostor) {
-    spheres_.draw(d, scope, mesh, *impostor, pattern, shadowOn && m.lit,
-                  SphereDrawing{programs, with.streams, with.captures, with.stats, with.targets.width,
-                                with.targets.height});
+    spheres_.draw(
+        d, scope, mesh, *impostor, pattern, shadowOn && m.lit,
+        SphereDrawing{programs, with.streams, with.captures, with.stats, with.targets.width, with.targets.height});
     return;
   }
   if (cull == Cull::None) {

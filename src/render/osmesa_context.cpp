@@ -62,13 +62,22 @@ const OsMesaApi* loadOsMesa(std::string& why) {
 class OsMesaContext final : public GlContext {
  public:
   explicit OsMesaContext(const OsMesaApi& api) : api_(api) {
-    const std::array<int, 11> attribs{OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE,
-                                      OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 4,
-                                      OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
+    const std::array<int, 11> attribs{OSMESA_FORMAT,
+                                      OSMESA_RGBA,
+                                      OSMESA_DEPTH_BITS,
+                                      0,
+                                      OSMESA_PROFILE,
+                                      OSMESA_CORE_PROFILE,
+                                      OSMESA_CONTEXT_MAJOR_VERSION,
+                                      4,
+                                      OSMESA_CONTEXT_MINOR_VERSION,
+                                      5,
+                                      0};
     context_ = api_.createContextAttribs(attribs.data(), nullptr);
     if (context_ == nullptr) {
-      throw runtimeError({}, "OSMesa could not create an OpenGL 4.5 core context (OSMesaCreateContextAttribs "
-                             "failed: is libosmesa6 from Mesa >= 20 installed? try scripts/install-deps.sh)");
+      throw runtimeError({},
+                         "OSMesa could not create an OpenGL 4.5 core context (OSMesaCreateContextAttribs "
+                         "failed: is libosmesa6 from Mesa >= 20 installed? try scripts/install-deps.sh)");
     }
     // All drawing goes to the renderer's FBOs; OSMesa still wants a buffer
     // to make the context current, so give it a tiny one.
@@ -111,8 +120,8 @@ std::unique_ptr<GlContext> create(const std::optional<DeviceChoice>& /*device*/)
 }  // namespace
 
 extern const GlBackend kOsMesaBackend{
-    "osmesa", "Mesa's off-screen library: software (llvmpipe) only, no GPU; gone from Mesa >= 25.1", false,
-    kAdvice,  &probe,
-    &create};
+    "osmesa", "Mesa's off-screen library: software (llvmpipe) only, no GPU; gone from Mesa >= 25.1",
+    false,    kAdvice,
+    &probe,   &create};
 
 }  // namespace rollspin::render

@@ -39,7 +39,8 @@ std::shared_ptr<const TextureImage> drawTennisBall(int width) {
   std::vector<double> nearestCos(static_cast<std::size_t>(width) * height, -2.0);
   for (int k = 0; k < kSeamSamples; ++k) {
     const double t = 2.0 * std::numbers::pi * k / kSeamSamples;
-    const glm::dvec3 p(a * std::cos(t) + b * std::cos(3 * t), a * std::sin(t) - b * std::sin(3 * t), c * std::sin(2 * t));
+    const glm::dvec3 p(a * std::cos(t) + b * std::cos(3 * t), a * std::sin(t) - b * std::sin(3 * t),
+                       c * std::sin(2 * t));
     const double thetaP = std::acos(std::clamp(p.z, -1.0, 1.0));
     const double phiP = std::atan2(p.y, p.x);
     const int yFirst = std::max(0, int(std::floor((thetaP - reach) / texel - 0.5)));

@@ -18,6 +18,7 @@ namespace rollspin::render {
 // RGB, stored sRGB-encoded) in the top-left and bottom-right cell, `color2`
 // in the others. Repeated at uv · patternScale / 2 it shows the cells the
 // renderer draws at uv · patternScale (cell (0, 0) is `color`).
-[[nodiscard]] std::shared_ptr<const TextureImage> checkerTexture(glm::vec3 color, glm::vec3 color2, int cellPixels = 32);
+[[nodiscard]] std::shared_ptr<const TextureImage> checkerTexture(glm::vec3 color, glm::vec3 color2,
+                                                                 int cellPixels = 32);
 
 }  // namespace rollspin::render

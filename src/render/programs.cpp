@@ -13,8 +13,8 @@ Programs::Programs(const ShaderLibrary& lib)
       sphereReplay(lib, "sphere_replay.vert", "sphere_replay.frag"),
       library_(lib) {}
 
-Program& Programs::mesh(int pattern, bool shadowed, bool lit, bool specular, int impostor, bool vertexLit,
-                        bool capture, bool coneCut) {
+Program& Programs::mesh(int pattern, bool shadowed, bool lit, bool specular, int impostor, bool vertexLit, bool capture,
+                        bool coneCut) {
   const int key = (coneCut ? 512 : 0) + (capture ? 256 : 0) + (vertexLit ? 128 : 0) + impostor * 32 + pattern * 8 +
                   (shadowed ? 4 : 0) + (lit ? 2 : 0) + (specular ? 1 : 0);
   auto it = meshVariants_.find(key);

@@ -26,9 +26,9 @@ class Readback {
   void pixels(const DrawList& list, media::Image& image, const PixelRect& r, GLuint sceneFbo);
 
  private:
-  std::vector<std::uint32_t> rows_;                       // as read, bottom-up
+  std::vector<std::uint32_t> rows_;                         // as read, bottom-up
   std::vector<std::pair<glm::vec3, glm::vec3>> backdrops_;  // per view, sRGB-encoded
-  std::vector<int> cuts_;                                 // per row: where views begin and end
+  std::vector<int> cuts_;                                   // per row: where views begin and end
 };
 
 // The depth of the framebuffer `sceneFbo`, width × height, top-down.

@@ -153,9 +153,7 @@ struct Renderer::Impl {
   // previous setting back when it ends, also when the drawing throws.
   class RetainLayersOff {
    public:
-    explicit RetainLayersOff(Impl& impl) : impl_(impl), previous_(impl.retainLayers) {
-      impl_.setRetainLayers(false);
-    }
+    explicit RetainLayersOff(Impl& impl) : impl_(impl), previous_(impl.retainLayers) { impl_.setRetainLayers(false); }
     ~RetainLayersOff() { impl_.setRetainLayers(previous_); }
     RetainLayersOff(const RetainLayersOff&) = delete;
     RetainLayersOff& operator=(const RetainLayersOff&) = delete;

@@ -150,9 +150,9 @@ std::vector<PixelRect> Renderer::Impl::dirtyRects(const DrawList& list, const st
 // clipped to the rects (scope.clips); `whole(view)` for a fresh view, in
 // the views' order.
 void Renderer::Impl::forEachIsland(const RedrawJob& job, const std::vector<PixelRect>& rects, GLuint fbo,
-                                  std::vector<PixelRect>* under,
-                                  const std::function<void(std::size_t, const PixelRect&, const DrawScope&)>& island,
-                                  const std::function<void(std::size_t)>& whole) {
+                                   std::vector<PixelRect>* under,
+                                   const std::function<void(std::size_t, const PixelRect&, const DrawScope&)>& island,
+                                   const std::function<void(std::size_t)>& whole) {
   std::vector<PixelRect> islandRects;
   for (std::size_t i = 0; i < job.list.views.size(); ++i) {
     const View& v = job.list.views[i];
@@ -245,7 +245,8 @@ void Renderer::Impl::redrawRects(const RedrawJob& job, const std::vector<PixelRe
       [&](std::size_t i) {
         if (which == Items::StaticOnly) return;
         const View& v = list.views[i];
-        std::vector<PixelRect> sampled = drawViewOpaque(list, v, job.perView[i], false, under);  // cleared with the scene
+        std::vector<PixelRect> sampled =
+            drawViewOpaque(list, v, job.perView[i], false, under);  // cleared with the scene
         DrawScope scope = beginView(list, v, job.perView[i], nullptr);
         scope.under = under;
         drawViewAfterOpaque(list, static_cast<int>(i), job.perView[i], std::move(sampled), scope);

@@ -153,8 +153,8 @@ std::vector<PixelRect> rectsOfTiles(const std::vector<std::uint8_t>& dirty, int 
       while (end < cols && dirty[static_cast<std::size_t>(ty) * cols + end]) ++end;
       const int x0 = tx * tile, x1 = std::min(width, end * tile);
       const int y0 = ty * tile, y1 = std::min(height, (ty + 1) * tile);
-      auto same = std::find_if(open.begin(), open.end(),
-                               [&](std::size_t r) { return rects[r].x0 == x0 && rects[r].x1 == x1; });
+      auto same =
+          std::find_if(open.begin(), open.end(), [&](std::size_t r) { return rects[r].x0 == x0 && rects[r].x1 == x1; });
       if (same != open.end()) {
         rects[*same].y1 = y1;
         nowOpen.push_back(*same);

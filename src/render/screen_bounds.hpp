@@ -41,10 +41,8 @@ class RunsOfParts {
   };
   void clear() { runs_.clear(); }
   void add(std::size_t begin, std::size_t end) {
-    if (!runs_.empty() && runs_.back().end == begin)
-      runs_.back().end = end;
-    else
-      runs_.push_back({begin, end});
+    if (!runs_.empty() && runs_.back().end == begin) runs_.back().end = end;
+    else runs_.push_back({begin, end});
   }
   [[nodiscard]] const std::vector<Run>& runs() const { return runs_; }
 
@@ -77,8 +75,8 @@ class RunsOfParts {
 // The set tiles of a cols × rows mask of `tile`-pixel tiles over a width ×
 // height image, as disjoint rectangles: runs along each tile row, a run
 // continuing the rectangle above it when it spans the same columns.
-[[nodiscard]] std::vector<PixelRect> rectsOfTiles(const std::vector<std::uint8_t>& dirty, int cols, int rows,
-                                                  int tile, int width, int height);
+[[nodiscard]] std::vector<PixelRect> rectsOfTiles(const std::vector<std::uint8_t>& dirty, int cols, int rows, int tile,
+                                                  int width, int height);
 
 // Disjoint rectangles inside `area` gathered into islands: boxes that hold
 // every rectangle touching another, widened by one pixel (a scissor needs

@@ -37,7 +37,8 @@ std::string ShaderLibrary::source(const std::string& name, int depth) const {
   std::string out, line;
   constexpr std::string_view directive = "#include \"";
   while (std::getline(in, line)) {
-    if (line.rfind(directive, 0) == 0 && line.size() > directive.size() && line.find('"', directive.size()) != std::string::npos) {
+    if (line.rfind(directive, 0) == 0 && line.size() > directive.size() &&
+        line.find('"', directive.size()) != std::string::npos) {
       const std::size_t end = line.find('"', directive.size());
       out += source(line.substr(directive.size(), end - directive.size()), depth + 1);
     } else {

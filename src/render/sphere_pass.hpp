@@ -32,8 +32,8 @@ class SpherePass {
   // The sphere `d` in its screen rectangle `rect` of scope's view, with the
   // program `mesh` (in use, its uniforms set) and the pattern it uses;
   // `shadowed`: it samples the shadow map (never replayed).
-  void draw(const Drawable& d, const DrawScope& scope, Program& mesh, const PixelRect& rect, int pattern,
-            bool shadowed, const SphereDrawing& with);
+  void draw(const Drawable& d, const DrawScope& scope, Program& mesh, const PixelRect& rect, int pattern, bool shadowed,
+            const SphereDrawing& with);
 
  private:
   // The parts of a translucent sphere from its capture (glass_capture.cpp).
@@ -47,7 +47,6 @@ class SpherePass {
 
 // One triangle of impostor.vert per rectangle, each scissored to it inside
 // the scissor in force, in a framebuffer fbWidth × fbHeight.
-void drawImpostorParts(Program& program, const View& v, const std::vector<PixelRect>& rects, int fbWidth,
-                       int fbHeight);
+void drawImpostorParts(Program& program, const View& v, const std::vector<PixelRect>& rects, int fbWidth, int fbHeight);
 
 }  // namespace rollspin::render

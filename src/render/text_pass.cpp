@@ -81,8 +81,7 @@ void drawLabelAs(const LabelItem& label, Items which, glm::vec2 viewportSize, co
     std::vector<GlyphQuad> quads;
     GpuFont* f = labelQuads(l, viewportSize, clipFromWorld, quads, with.caches);
     if (f == nullptr || quads.empty()) return;
-    if (scope.clips != nullptr && !reachesAny(*scope.clips, glyphBounds(quads, scope.view->x, scope.view->y)))
-      return;
+    if (scope.clips != nullptr && !reachesAny(*scope.clips, glyphBounds(quads, scope.view->x, scope.view->y))) return;
     drawQuads(quads, viewportSize, l.color, f->texture, false, with);
   };
   if (which == Items::StaticOnly) {

@@ -4,8 +4,8 @@
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
 #include <cairo.h>
-#include <fontconfig/fontconfig.h>
 #include <fmt/format.h>
+#include <fontconfig/fontconfig.h>
 
 #include <algorithm>
 #include <cmath>
@@ -141,7 +141,8 @@ void addVisiblePath(cairo_t* cr, const PolylineItem& p, const ViewProjection& pr
 
 // Convex hull (Andrew's monotone chain), counter-clockwise.
 std::vector<glm::dvec2> convexHull(std::vector<glm::dvec2> pts) {
-  std::sort(pts.begin(), pts.end(), [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  std::sort(pts.begin(), pts.end(),
+            [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   if (pts.size() < 3) return pts;
   auto cross = [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
     return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
@@ -205,8 +206,7 @@ void drawArrow(cairo_t* cr, const ArrowItem& a, const ViewProjection& project) {
   setColor(cr, a.color, 1.0f);
   for (const auto* solid : {&arrow->shaft, &arrow->head}) {
     const std::vector<glm::dvec2> hull = convexHull(*solid);
-    for (std::size_t k = 0; k < hull.size(); ++k)
-      (k == 0 ? cairo_move_to : cairo_line_to)(cr, hull[k].x, hull[k].y);
+    for (std::size_t k = 0; k < hull.size(); ++k) (k == 0 ? cairo_move_to : cairo_line_to)(cr, hull[k].x, hull[k].y);
     cairo_close_path(cr);
     cairo_fill(cr);
   }
@@ -237,7 +237,8 @@ void drawDisc(cairo_t* cr, const MeshItem& m, const View& v, const ViewProjectio
 void paintRaster(cairo_t* cr, const media::Image& image, const PixelRect& rect, double kx, double ky) {
   if (image.rgba.empty()) return;
   const int x0 = std::clamp(rect.x, 0, image.width), y0 = std::clamp(rect.y, 0, image.height);
-  const int x1 = std::clamp(rect.x + rect.width, 0, image.width), y1 = std::clamp(rect.y + rect.height, 0, image.height);
+  const int x1 = std::clamp(rect.x + rect.width, 0, image.width),
+            y1 = std::clamp(rect.y + rect.height, 0, image.height);
   int lx = x1, ly = y1, hx = x0 - 1, hy = y0 - 1;
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; ++x)
@@ -405,8 +406,8 @@ DrawList meshLayerOf(const DrawList& list, MeshLayer layer, int width, int heigh
     View scaled = v;
     const PixelRect r = scaledRect(v, kx, ky);
     scaled.x = r.x, scaled.y = r.y, scaled.width = r.width, scaled.height = r.height;
-    scaled.background = false;  // the page shows through
-    scaled.frame = false;       // drawn as a vector
+    scaled.background = false;                                    // the page shows through
+    scaled.frame = false;                                         // drawn as a vector
     if (layer != MeshLayer::Opaque) scaled.light.shadow = false;  // glass takes no shadow
     out.views.push_back(scaled);
   }
@@ -543,7 +544,8 @@ void drawFigureView(cairo_t* cr, const DrawList& list, std::size_t i, const Figu
   paintRaster(cr, with.rasters.opaque, rasterRect, with.kx, with.ky);
   // Marks are opaque meshes too: under the lines, as GL draws them.
   for (const MeshItem& m : list.meshes)
-    if (m.view == index && m.mesh && m.figureDisc && m.material.opacity >= 1.0f) drawDisc(cr, m, v, project, with.depth);
+    if (m.view == index && m.mesh && m.figureDisc && m.material.opacity >= 1.0f)
+      drawDisc(cr, m, v, project, with.depth);
   strokeViewLines(cr, list, index, true, project, with.depth);
   for (const ArrowItem& a : list.arrows)
     if (a.view == index) drawArrow(cr, a, project);
@@ -579,8 +581,7 @@ void writeFigure(const std::filesystem::path& out, FigureFormat format, const Dr
   for (std::size_t i = 0; i < list.views.size(); ++i) drawFigureView(cr, list, i, with);
   // Image-level labels (the title) over everything.
   for (const LabelItem& l : list.labels)
-    if (l.view < 0)
-      drawLabel(cr, fonts, l, glm::dvec2(0.0), nullptr, fontScale);
+    if (l.view < 0) drawLabel(cr, fonts, l, glm::dvec2(0.0), nullptr, fontScale);
 
   cairo_destroy(cr);
   cairo_surface_finish(surface);
@@ -624,7 +625,9 @@ FigureLayout figureLayout(const DrawList& list, const FigureStyle& style) {
   FigureFonts fonts(style.font);
   const double fontScale = labelScale(fonts, style, unit);
   ScratchContext scratch;
-  auto box = [&](glm::dvec2 lo, glm::dvec2 hi) { return FigureBox{lo.x * unit, lo.y * unit, hi.x * unit, hi.y * unit}; };
+  auto box = [&](glm::dvec2 lo, glm::dvec2 hi) {
+    return FigureBox{lo.x * unit, lo.y * unit, hi.x * unit, hi.y * unit};
+  };
   auto addText = [&](const LabelItem& l, const ViewProjection* project, const glm::dvec2& origin) {
     const PlacedLabel placed = placeLabel(scratch.cr, fonts, l, origin, project, fontScale);
     if (!placed.valid || l.text.empty()) return;
@@ -643,9 +646,11 @@ FigureLayout figureLayout(const DrawList& list, const FigureStyle& style) {
     const ViewProjection project = projectionOf(v);
     layout.views.push_back(box({v.x, v.y}, {v.x + v.width, v.y + v.height}));
     // A view that draws nothing but text (the title's band) is its text's plate.
-    const bool textOnly = std::none_of(list.meshes.begin(), list.meshes.end(), [&](const MeshItem& m) { return m.view == index; }) &&
-                          std::none_of(list.arrows.begin(), list.arrows.end(), [&](const ArrowItem& a) { return a.view == index; }) &&
-                          std::none_of(list.polylines.begin(), list.polylines.end(), [&](const PolylineItem& p) { return p.view == index; });
+    const bool textOnly =
+        std::none_of(list.meshes.begin(), list.meshes.end(), [&](const MeshItem& m) { return m.view == index; }) &&
+        std::none_of(list.arrows.begin(), list.arrows.end(), [&](const ArrowItem& a) { return a.view == index; }) &&
+        std::none_of(list.polylines.begin(), list.polylines.end(),
+                     [&](const PolylineItem& p) { return p.view == index; });
     if (textOnly) layout.plates.push_back(layout.views.back());
     for (const MeshItem& m : list.meshes) {
       if (m.view != index || !m.textPlate || !m.mesh) continue;

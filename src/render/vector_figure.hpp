@@ -37,9 +37,9 @@ struct FigureStyle {
 // scaled). Empty images: no such meshes.
 struct FigureRasters {
   int width = 0, height = 0;
-  media::Image opaque;              // opaque meshes over nothing, straight alpha
-  std::vector<float> opaqueDepth;   // their window depth in [0, 1], top row first (empty: all 1)
-  media::Image translucent;         // translucent meshes, alpha 0 where an opaque mesh is in front
+  media::Image opaque;             // opaque meshes over nothing, straight alpha
+  std::vector<float> opaqueDepth;  // their window depth in [0, 1], top row first (empty: all 1)
+  media::Image translucent;        // translucent meshes, alpha 0 where an opaque mesh is in front
 };
 
 // The meshes the figure takes as raster, as a DrawList of their own at
@@ -75,9 +75,9 @@ struct FigureLayout {
   double widthPt = 0.0, heightPt = 0.0;
   struct Text {
     std::string text;
-    FigureBox box;       // advance width × the font's ascent + descent
+    FigureBox box;           // advance width × the font's ascent + descent
     glm::dvec2 anchor{0.0};  // the label's anchor (projected), before its offset
-    bool free = false;   // a world-anchored label (axis, pole, mark number): on no plate
+    bool free = false;       // a world-anchored label (axis, pole, mark number): on no plate
     int view = -1;
     double sizePt = 0.0;  // the printed em size (figure.font_size_pt for body text)
   };

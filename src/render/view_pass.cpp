@@ -117,9 +117,8 @@ void Renderer::Impl::meshBounds(const View& v, const glm::mat4& clipFromWorld, c
 // moves drew its ball view's floor in samples in full.
 // Returns the tiles drawn in samples: the only pixels that the meshes
 // cover in part (alpha strictly between 0 and 1).
-std::vector<PixelRect> Renderer::Impl::drawViewOpaque(const DrawList& list, const View& v,
-                                                      const ViewItems& viewItems, bool clear,
-                                                      std::vector<PixelRect>* under) {
+std::vector<PixelRect> Renderer::Impl::drawViewOpaque(const DrawList& list, const View& v, const ViewItems& viewItems,
+                                                      bool clear, std::vector<PixelRect>* under) {
   DrawScope scope = beginView(list, v, viewItems, nullptr);
   scope.under = under;
   if (clear) {
@@ -209,7 +208,8 @@ void Renderer::Impl::drawRest(const DrawList& list, int index, const ViewItems& 
   glDepthMask(GL_FALSE);
   glEnable(GL_BLEND);
   for (const PolylineItem& p : list.polylines)
-    if (p.view == index && p.depthTested && takes(which, p.dynamic)) lines.draw(p, scope, programs.line, streams, targets.height, stats);
+    if (p.view == index && p.depthTested && takes(which, p.dynamic))
+      lines.draw(p, scope, programs.line, streams, targets.height, stats);
 
   // Far to near. A closed translucent mesh shows its front half only: its
   // back half would double the blending cost for little visual gain.
@@ -227,13 +227,14 @@ void Renderer::Impl::drawRest(const DrawList& list, int index, const ViewItems& 
   glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);
   for (const PolylineItem& p : list.polylines)
-    if (p.view == index && !p.depthTested && takes(which, p.dynamic)) lines.draw(p, scope, programs.line, streams, targets.height, stats);
+    if (p.view == index && !p.depthTested && takes(which, p.dynamic))
+      lines.draw(p, scope, programs.line, streams, targets.height, stats);
   for (const LabelItem& l : list.labels)
     if (l.view == index) drawLabelAs(l, which, glm::vec2(v.width, v.height), &clipFromWorld, scope, textDrawing());
   if (v.frame && which != Items::DynamicOnly) {
     const float w = float(v.width), h = float(v.height), t = std::max(1.0f, h / 300.0f);
-    const std::vector<GlyphQuad> border{{0, 0, w, t, 0, 0, 0, 0}, {0, h - t, w, h, 0, 0, 0, 0},
-                                        {0, 0, t, h, 0, 0, 0, 0}, {w - t, 0, w, h, 0, 0, 0, 0}};
+    const std::vector<GlyphQuad> border{
+        {0, 0, w, t, 0, 0, 0, 0}, {0, h - t, w, h, 0, 0, 0, 0}, {0, 0, t, h, 0, 0, 0, 0}, {w - t, 0, w, h, 0, 0, 0, 0}};
     drawQuads(border, glm::vec2(w, h), glm::vec4(0.35f, 0.38f, 0.42f, 1.0f), 0, true, textDrawing());
   }
   glDepthMask(GL_TRUE);

@@ -14,8 +14,8 @@
 #include "geometry/analytic_paths.hpp"
 #include "geometry/clothoid_path.hpp"
 #include "geometry/joined_path.hpp"
-#include "geometry/surface_paths.hpp"
 #include "geometry/surface_curve.hpp"
+#include "geometry/surface_paths.hpp"
 #include "geometry/surfaces.hpp"
 #include "report/report.hpp"
 #include "report/report_support.hpp"
@@ -24,10 +24,10 @@
 namespace rollspin::report {
 
 namespace {
-using std::numbers::pi;
 using geometry::Vec3;
-constexpr double kTimeCap = 0.05;         // s per solve: the sweep's last point
-constexpr std::size_t kSamples = 65;      // timeline samples for the max error
+using std::numbers::pi;
+constexpr double kTimeCap = 0.05;     // s per solve: the sweep's last point
+constexpr std::size_t kSamples = 65;  // timeline samples for the max error
 constexpr double kTargets[] = {1e-6, 1e-9, 1e-12};
 
 struct Point {
@@ -96,7 +96,8 @@ SpeedRatio magnus4VersusRk45() {
   const spin::Su2 exact = spin::Propagator(path, 1.0, spin::Method::Exact, 0).solveFinal().final;
   SpeedRatio r;
   for (long long n = 64; n < (1 << 22); n += 64) {
-    r.magnusError = spin::spinorDistance(spin::Propagator(path, 1.0, spin::Method::Magnus4, n).solveFinal().final, exact);
+    r.magnusError =
+        spin::spinorDistance(spin::Propagator(path, 1.0, spin::Method::Magnus4, n).solveFinal().final, exact);
     if (r.magnusError <= 1e-11) {
       r.magnusSteps = n;
       break;
@@ -152,15 +153,17 @@ std::vector<ReportScene> defaultErrorScenes() {
     // without a closed form).
     auto torus = std::make_shared<const geometry::Torus>(3.0, 1.0, geometry::Side::Outside);
     auto curve = std::make_shared<geometry::FunctionUvCurve>(
-        [](const geometry::Jet& t) { return std::array<geometry::Jet, 2>{2.0 * t, 3.0 * t}; }, 0.0, 2.0 * pi,
-        "(2, 3) torus knot");
-    scenes.push_back({"torus-knot", "outside a torus (A = 3, a = 1) along a (2, 3) torus knot, R = 0.3",
-                      std::make_shared<geometry::SurfaceCurvePath>(torus, curve, geometry::SurfaceCurveOptions{false, 1.0}),
-                      0.3});
+        [](const geometry::Jet& t) {
+          return std::array<geometry::Jet, 2>{2.0 * t, 3.0 * t};
+        },
+        0.0, 2.0 * pi, "(2, 3) torus knot");
+    scenes.push_back(
+        {"torus-knot", "outside a torus (A = 3, a = 1) along a (2, 3) torus knot, R = 0.3",
+         std::make_shared<geometry::SurfaceCurvePath>(torus, curve, geometry::SurfaceCurveOptions{false, 1.0}), 0.3});
   }
-  scenes.push_back({"clothoid", "plane, clothoid κ_g = s − 10 on [0, 20] (a Landau–Zener sweep), R = 1",
-                    std::shared_ptr<const geometry::ContactPath>(geometry::PlaneClothoidPath::symmetricSweep(1.0, 20.0)),
-                    1.0});
+  scenes.push_back(
+      {"clothoid", "plane, clothoid κ_g = s − 10 on [0, 20] (a Landau–Zener sweep), R = 1",
+       std::shared_ptr<const geometry::ContactPath>(geometry::PlaneClothoidPath::symmetricSweep(1.0, 20.0)), 1.0});
   scenes.push_back({"stiff-lollipop", "plane, circle r = 1, R = 0.01: 100 ball turns per circuit (stiff)",
                     std::make_shared<geometry::PlaneCirclePath>(plane, Vec3::Zero(), Vec3::UnitX(), 1.0, 1.0, true),
                     0.01});
@@ -172,8 +175,8 @@ std::vector<ReportScene> defaultErrorScenes() {
     const std::vector<geometry::Vec2> corners{{0.0, 0.0}, {3.0, 0.5}, {3.5, 3.0}, {0.5, 4.0}, {-1.0, 2.0}};
     scenes.push_back({"polyline-corners",
                       "tilted plane, polyline through 5 points, corner radius 0.004, R = 0.88 (tight corners)",
-                      std::shared_ptr<const geometry::ContactPath>(geometry::pointsPath(
-                          tilted, corners, false, geometry::PointsInterpolation::Polyline, 0.004)),
+                      std::shared_ptr<const geometry::ContactPath>(
+                          geometry::pointsPath(tilted, corners, false, geometry::PointsInterpolation::Polyline, 0.004)),
                       0.88});
   }
   {
@@ -189,8 +192,9 @@ std::vector<ReportScene> defaultErrorScenes() {
     const geometry::Vec2 along = geodesic->curve().at(geodesic->parameterAt(geodesic->length())).d1.normalized();
     const geometry::Vec2 left(-along.y(), along.x());
     pieces.push_back(std::move(geodesic));
-    pieces.push_back(geometry::pointsPath(paraboloid, {from, from + along, from + along + 0.8 * left, from + 1.6 * left},
-                                          false, geometry::PointsInterpolation::Polyline, 0.05));
+    pieces.push_back(geometry::pointsPath(paraboloid,
+                                          {from, from + along, from + along + 0.8 * left, from + 1.6 * left}, false,
+                                          geometry::PointsInterpolation::Polyline, 0.05));
     scenes.push_back({"paraboloid-storyboard",
                       "paraboloid z = (x² + y²)/4: half a parallel ρ = 1, a geodesic, a polyline with corner radius "
                       "0.05, R = 0.5",
@@ -254,8 +258,8 @@ void writeErrorsPlot(const std::vector<ReportScene>& scenes, const std::vector<P
                                    block++, static_cast<int>(mi) + 4, static_cast<int>(mi) + 1,
                                    spin::methodName(methods[mi])));
     }
-    curves.push_back(fmt::format("{:.6e} with lines dt 2 lw 2 lc rgb 'black' title 'round-off floor ε∫|B|ds'",
-                                 refs[si].floor));
+    curves.push_back(
+        fmt::format("{:.6e} with lines dt 2 lw 2 lc rgb 'black' title 'round-off floor ε∫|B|ds'", refs[si].floor));
     plots += fmt::format("set title '{}'\nplot ", scenes[si].name);
     for (std::size_t k = 0; k < curves.size(); ++k) plots += (k ? ", \\\n     " : "") + curves[k];
     plots += "\n";
@@ -266,7 +270,8 @@ void writeErrorsPlot(const std::vector<ReportScene>& scenes, const std::vector<P
   const std::filesystem::path png = outDir / "errors.png";
   const std::filesystem::path tempPng = outDir / ".errors.png.tmp";
   const int cols = scenes.size() > 4 ? 3 : static_cast<int>(std::min<std::size_t>(2, scenes.size()));
-  const int rowsN = static_cast<int>((scenes.size() + static_cast<std::size_t>(cols) - 1) / static_cast<std::size_t>(cols));
+  const int rowsN =
+      static_cast<int>((scenes.size() + static_cast<std::size_t>(cols) - 1) / static_cast<std::size_t>(cols));
   std::string script = fmt::format(
       "# Generated by `rollspin report errors`: error against solver time, one panel per scene.\n"
       "set encoding utf8\nset terminal pngcairo size {},{} font 'DejaVu Sans,10'\n"
@@ -302,13 +307,15 @@ std::string errorsSceneSection(const ReportScene& sc, const Reference& ref, cons
                                double worstUnder, std::string& tightest) {
   std::string md = fmt::format("## {}\n\n{}. Reference: {}", sc.name, sc.description, ref.source);
   if (ref.kinematicCheck >= 0) md += fmt::format("; independent kinematics agrees to {}", fmtNum(ref.kinematicCheck));
-  md += fmt::format(". Round-off floor ε∫|B|ds = {}. Error estimate (`error_estimate` in the CSV: the "
-                    "difference to the same method at half the steps, or 32× the tolerance): worst (final error − "
-                    "1e-13) / estimate over the sweep {:.2g} (the tests require ≤ 3 on resolved grids; the "
-                    "sweep's first, grossly coarse grids may alias).\n\n",
-                    fmtNum(ref.floor), worstUnder);
-  md += "| target | fastest | time | error | settings | fastest stepping method | time | to use it |\n"
-        "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+  md += fmt::format(
+      ". Round-off floor ε∫|B|ds = {}. Error estimate (`error_estimate` in the CSV: the "
+      "difference to the same method at half the steps, or 32× the tolerance): worst (final error − "
+      "1e-13) / estimate over the sweep {:.2g} (the tests require ≤ 3 on resolved grids; the "
+      "sweep's first, grossly coarse grids may alias).\n\n",
+      fmtNum(ref.floor), worstUnder);
+  md +=
+      "| target | fastest | time | error | settings | fastest stepping method | time | to use it |\n"
+      "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
   for (double target : kTargets) {
     const Point* best = nullptr;
     const Point* bestStepping = nullptr;
@@ -321,15 +328,15 @@ std::string errorsSceneSection(const ReportScene& sc, const Reference& ref, cons
     // What to type for the fastest run.
     const Point* advice = best;
     const std::string line = advice ? commandLineSettings(*advice) : "";
-    if (advice) tightest = fmt::format("{}: {:.0e} in {} with {}", sc.name, target, fmtSeconds(advice->run.seconds), line);
-    md += fmt::format("| {:.0e} | {} | {} | {} | {} | {} | {} | {} |\n", target,
-                      best ? std::string(spin::methodName(best->method)) : "none reached it",
-                      best ? fmtSeconds(best->run.seconds) : "—", best ? fmtNum(best->run.timelineError) : "—",
-                      runSettingsCell(best),
-                      bestStepping ? fmt::format("{} ({})", spin::methodName(bestStepping->method), runSettingsCell(bestStepping))
-                                   : "none reached it",
-                      bestStepping ? fmtSeconds(bestStepping->run.seconds) : "—",
-                      advice ? "`" + line + "`" : "—");
+    if (advice)
+      tightest = fmt::format("{}: {:.0e} in {} with {}", sc.name, target, fmtSeconds(advice->run.seconds), line);
+    md += fmt::format(
+        "| {:.0e} | {} | {} | {} | {} | {} | {} | {} |\n", target,
+        best ? std::string(spin::methodName(best->method)) : "none reached it",
+        best ? fmtSeconds(best->run.seconds) : "—", best ? fmtNum(best->run.timelineError) : "—", runSettingsCell(best),
+        bestStepping ? fmt::format("{} ({})", spin::methodName(bestStepping->method), runSettingsCell(bestStepping))
+                     : "none reached it",
+        bestStepping ? fmtSeconds(bestStepping->run.seconds) : "—", advice ? "`" + line + "`" : "—");
   }
   std::string failed;
   for (const Point& p : all)
@@ -388,8 +395,10 @@ ReportOutcome errorsReport(const std::vector<ReportScene>& scenes, const ReportO
 
   // ---- Markdown summary ----
   std::string md = "# rollspin report errors\n\n";
-  md += "Error = spinor distance (rad, 4π-aware) to the reference, max over 65 timeline samples; time = the "
-        "solver alone (`solveFinal`), median of repeats after a warm-up. Methods: " + methodList() + ".\n\n";
+  md +=
+      "Error = spinor distance (rad, 4π-aware) to the reference, max over 65 timeline samples; time = the "
+      "solver alone (`solveFinal`), median of repeats after a warm-up. Methods: " +
+      methodList() + ".\n\n";
   md += "Plot: [errors.png](errors.png); data: [errors.csv](errors.csv).\n\n";
   std::vector<std::string> tightest(scenes.size());  // per scene: the last (tightest) target with advice
   for (std::size_t si = 0; si < scenes.size(); ++si)
@@ -403,14 +412,16 @@ ReportOutcome errorsReport(const std::vector<ReportScene>& scenes, const ReportO
   if (!options.lollipopSpeedRatio) {
     // The user's scenes: the fastest stepping settings for the tightest target each reached.
     outcome.headline = "fastest stepping run for the tightest target reached (paste the --set options):";
-    for (const std::string& t : tightest) outcome.headline += "\n  " + (t.empty() ? std::string("(no method reached 1e-6)") : t);
+    for (const std::string& t : tightest)
+      outcome.headline += "\n  " + (t.empty() ? std::string("(no method reached 1e-6)") : t);
     outcome.headline += fmt::format("\nreport errors took {:.1f} s", total);
     return outcome;
   }
   outcome.headline = fmt::format(
       "magnus4 reaches 1e-11 on one lollipop revolution in {} ({} steps), rk45 in {} (tol {:.3g}): ratio {:.1f}\n"
       "report errors took {:.1f} s",
-      fmtSeconds(ratio.magnusSeconds), ratio.magnusSteps, fmtSeconds(ratio.rkSeconds), ratio.rkTolerance, speedup, total);
+      fmtSeconds(ratio.magnusSeconds), ratio.magnusSteps, fmtSeconds(ratio.rkSeconds), ratio.rkTolerance, speedup,
+      total);
   return outcome;
 }
 

@@ -101,8 +101,9 @@ Row spinorRow(std::string where, std::shared_ptr<const geometry::ContactPath> pa
 // ---- plane claims: the lollipop, the tennis ball, Brockett's plate ----
 
 Claim lollipopClaim(double R) {
-  Claim c{"lollipop", "After one circuit of a circle of radius r the ball is turned by δ = 2π√(1 + (r/R)²) "
-                      "about the stick (eq. delta1), the spinor changed in sign (sec. IV)",
+  Claim c{"lollipop",
+          "After one circuit of a circle of radius r the ball is turned by δ = 2π√(1 + (r/R)²) "
+          "about the stick (eq. delta1), the spinor changed in sign (sec. IV)",
           "U(L) against −exp(−(i/2) δ ê·σ), ê ∝ r u₀ − R n (spinor distance)"};
   for (double r : {0.1, 0.5, 1.0, std::sqrt(3.0), 3.0, 10.0, 100.0}) {
     auto path = circle(r);
@@ -110,9 +111,9 @@ Claim lollipopClaim(double R) {
     const Vec3 stick = (r * f.tangentNormal - R * f.normal).normalized();
     const double delta = closed_form::planeCircleDelta(r, R);
     const spin::Su2 predicted = -spin::expRotation(delta * stick);
-    c.rows.push_back(spinorRow(fmt::format("r/R = {:g}", r / R), path, R,
-                               [&](const spin::Su2& u) { return spin::spinorDistance(u, predicted); },
-                               fmt::format("δ = {:.9f}", delta)));
+    c.rows.push_back(spinorRow(
+        fmt::format("r/R = {:g}", r / R), path, R,
+        [&](const spin::Su2& u) { return spin::spinorDistance(u, predicted); }, fmt::format("δ = {:.9f}", delta)));
   }
   return c;
 }
@@ -126,17 +127,18 @@ Claim tennisBallClaim(double R) {
     const geometry::DarbouxSample f = path->at(0.0);
     const Vec3 axis45 = (f.tangentNormal - f.normal).normalized();
     const spin::Su2 predicted = spin::expRotation(beta * f.normal) * spin::expRotation(k * pi * axis45);
-    Row row = spinorRow(fmt::format("k = {}", k), path, R,
-                        [&](const spin::Su2& u) { return spin::spinorDistance(u, predicted); },
-                        fmt::format("{}π about ê₄₅", k));
+    Row row = spinorRow(
+        fmt::format("k = {}", k), path, R, [&](const spin::Su2& u) { return spin::spinorDistance(u, predicted); },
+        fmt::format("{}π about ê₄₅", k));
     c.rows.push_back(row);
   }
   return c;
 }
 
 Claim brockettPlateClaim(double R) {
-  Claim c{"brockett-plate", "A plate each of whose points describes a circle of radius R1 drives the ball's "
-                            "contact point on a circle of radius R1/2 (the top moves at twice the contact speed)",
+  Claim c{"brockett-plate",
+          "A plate each of whose points describes a circle of radius R1 drives the ball's "
+          "contact point on a circle of radius R1/2 (the top moves at twice the contact speed)",
           "max over 400 samples of |v_top − 2t|, v_top = dC/ds + R ω × n from the kinematic oracle (finite "
           "differences of C, no curvature); 2t is the plate velocity for a contact circle of radius R1/2"};
   for (double r1 : {0.5, 1.0, 2.0, 6.0}) {
@@ -170,9 +172,9 @@ Claim sphereOutsideClaim(double R, const std::vector<double>& thetas) {
       if (th == 90) continue;  // tan θ: the formula's limit is the great circle
       const double t = th * pi / 180;
       const double delta = closed_form::paperOutsideDelta(r, t, R);
-      c.rows.push_back(spinorRow(fmt::format("r/R = {:g}, θ = {:g}°", r / R, th), parallel(r, true, t), R,
-                                 [&](const spin::Su2& u) { return angleDeviation(-u, delta); },
-                                 fmt::format("δ₊ = {:.9f}", delta)));
+      c.rows.push_back(spinorRow(
+          fmt::format("r/R = {:g}, θ = {:g}°", r / R, th), parallel(r, true, t), R,
+          [&](const spin::Su2& u) { return angleDeviation(-u, delta); }, fmt::format("δ₊ = {:.9f}", delta)));
     }
   return c;
 }
@@ -182,9 +184,9 @@ Claim sphereOutsideEqualRadiiClaim(double R, const std::vector<double>& thetas) 
           "U(L) against +1 (rotating frame −U(L) = a 2π turn = −1)"};
   for (double th : thetas) {
     const double t = th * pi / 180;
-    c.rows.push_back(spinorRow(fmt::format("θ = {:g}°", th), parallel(R, true, t), R,
-                               [](const spin::Su2& u) { return spin::spinorDistance(u, spin::Su2::identity()); },
-                               "δ = 2π"));
+    c.rows.push_back(spinorRow(
+        fmt::format("θ = {:g}°", th), parallel(R, true, t), R,
+        [](const spin::Su2& u) { return spin::spinorDistance(u, spin::Su2::identity()); }, "δ = 2π"));
   }
   return c;
 }
@@ -193,8 +195,9 @@ Claim sphereOutsideEqualRadiiClaim(double R, const std::vector<double>& thetas) 
 void addSphereInsideClaims(double R, const std::vector<double>& thetas, std::vector<Claim>& claims) {
   Claim c{"sphere-inside", "Inside: δ₋ = 2π √(1 + sin²θ (r − 3R)(r − R)/R²)",
           "rotating-frame rotation −U(L): spinor angle against δ₋"};
-  c.note = "docs/solver.md#notes-on-the-paper: the paper keeps the outside u = −e_θ inside, where u = +e_θ; the "
-           "kinematics gives δ = 2π√(ρ²/R² + cos²θ), ρ = r sin θ, on both sides (claim sphere-inside-derived)";
+  c.note =
+      "docs/solver.md#notes-on-the-paper: the paper keeps the outside u = −e_θ inside, where u = +e_θ; the "
+      "kinematics gives δ = 2π√(ρ²/R² + cos²θ), ρ = r sin θ, on both sides (claim sphere-inside-derived)";
   Claim d{"sphere-inside-derived", "(rollspin's derivation, not the paper's) inside: δ = 2π √(ρ²/R² + cos²θ)",
           "as sphere-inside"};
   for (double r : {1.5, 2.0, 3.0, 5.0, 10.0})
@@ -204,32 +207,35 @@ void addSphereInsideClaims(double R, const std::vector<double>& thetas, std::vec
       const double derived = closed_form::sphereParallelDelta(r, t, R);
       auto path = parallel(r, false, t);
       const std::string where = fmt::format("r/R = {:g}, θ = {:g}°", r / R, th);
-      c.rows.push_back(spinorRow(where, path, R, [&](const spin::Su2& u) { return angleDeviation(-u, paper); },
-                                 fmt::format("δ₋ = {:.9f}", paper)));
-      d.rows.push_back(spinorRow(where, path, R,
-                                 [&](const spin::Su2& u) { return angleDeviation(-u, derived); },
-                                 fmt::format("δ = {:.9f}", derived)));
+      c.rows.push_back(spinorRow(
+          where, path, R, [&](const spin::Su2& u) { return angleDeviation(-u, paper); },
+          fmt::format("δ₋ = {:.9f}", paper)));
+      d.rows.push_back(spinorRow(
+          where, path, R, [&](const spin::Su2& u) { return angleDeviation(-u, derived); },
+          fmt::format("δ = {:.9f}", derived)));
     }
   claims.push_back(std::move(c));
   claims.push_back(std::move(d));
 }
 
 Claim sphereInsideThreeRadiiClaim(double R, const std::vector<double>& thetas) {
-  Claim c{"sphere-inside-r=3R", "Inside with r = 3R the rotation is 2π regardless of latitude",
-          "U(L) against +1"};
-  c.note = "follows from the inside formula (docs/solver.md#notes-on-the-paper); at the equator 2π and the kinematic 6π are the same spinor";
+  Claim c{"sphere-inside-r=3R", "Inside with r = 3R the rotation is 2π regardless of latitude", "U(L) against +1"};
+  c.note =
+      "follows from the inside formula (docs/solver.md#notes-on-the-paper); at the equator 2π and the kinematic 6π are "
+      "the same spinor";
   for (double th : thetas) {
     const double t = th * pi / 180;
-    c.rows.push_back(spinorRow(fmt::format("θ = {:g}°", th), parallel(3 * R, false, t), R,
-                               [](const spin::Su2& u) { return spin::spinorDistance(u, spin::Su2::identity()); },
-                               "δ = 2π"));
+    c.rows.push_back(spinorRow(
+        fmt::format("θ = {:g}°", th), parallel(3 * R, false, t), R,
+        [](const spin::Su2& u) { return spin::spinorDistance(u, spin::Su2::identity()); }, "δ = 2π"));
   }
   return c;
 }
 
 Claim axisTanBetaClaim(double R) {
-  Claim c{"axis-tan-beta", "Outside, the rotating-frame axis makes an angle β with the xy plane, "
-                           "tan β = tan θ − R/(r + R) · 1/(sin θ cos θ) (eq. newrot)",
+  Claim c{"axis-tan-beta",
+          "Outside, the rotating-frame axis makes an angle β with the xy plane, "
+          "tan β = tan θ − R/(r + R) · 1/(sin θ cos θ) (eq. newrot)",
           "|elevation| of the axis of −U(L) against |β| (the axis orientation is not fixed by the claim)"};
   // r = R is left out: there δ₊ = 2π, a rotation without an axis.
   for (double r : {0.5, 2.0, 3.0, 10.0})
@@ -259,9 +265,10 @@ void addAdiabaticClaims(std::vector<Claim>& claims) {
             "spinor angle of −U(L) against Δφ₊, R/r = 1e-1 … 1e-4 (r = 1): the deviation must vanish"};
   Claim in{"adiabatic-inside", "R ≪ r, inside: Δφ₋ = 2π r sin θ / R − 4π sin θ (a geometric phase twice the spin's)",
            "as adiabatic-outside"};
-  in.note = "docs/solver.md#notes-on-the-paper: with the inside u the kinematic δ expands to 2πρ/R + O(R/ρ) on both sides; "
-            "the −4π sin θ rests on the paper's sign of u (`report stress` shows the dynamic − geometric split "
-            "holding inside and out)";
+  in.note =
+      "docs/solver.md#notes-on-the-paper: with the inside u the kinematic δ expands to 2πρ/R + O(R/ρ) on both sides; "
+      "the −4π sin θ rests on the paper's sign of u (`report stress` shows the dynamic − geometric split "
+      "holding inside and out)";
   out.asymptotic = in.asymptotic = true;
   for (double th : {30.0, 60.0})
     for (double ratio : {1e-1, 1e-2, 1e-3, 1e-4}) {
@@ -269,12 +276,12 @@ void addAdiabaticClaims(std::vector<Claim>& claims) {
       const double pOut = 2 * pi * r * std::sin(t) / Rb;
       const double pIn = pOut - 4 * pi * std::sin(t);
       const std::string where = fmt::format("θ = {:g}°, R/r = {:.0e}", th, ratio);
-      out.rows.push_back(spinorRow(where, parallel(r, true, t), Rb,
-                                   [&](const spin::Su2& u) { return angleDeviation(-u, pOut); },
-                                   fmt::format("{:.6f}", pOut)));
-      in.rows.push_back(spinorRow(where, parallel(r, false, t), Rb,
-                                  [&](const spin::Su2& u) { return angleDeviation(-u, pIn); },
-                                  fmt::format("{:.6f}", pIn)));
+      out.rows.push_back(spinorRow(
+          where, parallel(r, true, t), Rb, [&](const spin::Su2& u) { return angleDeviation(-u, pOut); },
+          fmt::format("{:.6f}", pOut)));
+      in.rows.push_back(spinorRow(
+          where, parallel(r, false, t), Rb, [&](const spin::Su2& u) { return angleDeviation(-u, pIn); },
+          fmt::format("{:.6f}", pIn)));
     }
   claims.push_back(std::move(out));
   claims.push_back(std::move(in));
@@ -303,8 +310,9 @@ Claim pennyClaim(double R) {
     }
     prevG = g;
   }
-  Claim c{"penny", "Inside a circle of radius 3R (the equator of r = 3R) the penny turns once in the rotating "
-                   "frame and twice in the lab",
+  Claim c{"penny",
+          "Inside a circle of radius 3R (the equator of r = 3R) the penny turns once in the rotating "
+          "frame and twice in the lab",
           "turns counted on the kinematic oracle: lab = Σ|ΔQ|/2π, rotating frame = Σ|ΔG|/2π with G = Fᵀ Q F(0)"};
   Row labRow;
   labRow.where = "lab";
@@ -317,7 +325,9 @@ Claim pennyClaim(double R) {
   rotRow.measured = fmt::format("{:.9f} turns", rolling / (2 * pi));
   rotRow.deviation = std::abs(rolling - 2 * pi);
   c.rows = {labRow, rotRow};
-  c.note = "docs/solver.md#notes-on-the-paper: ∫|g| ds = 6πR · (1/R) = 6π, three turns relative to the frame; the lab count agrees";
+  c.note =
+      "docs/solver.md#notes-on-the-paper: ∫|g| ds = 6πR · (1/R) = 6π, three turns relative to the frame; the lab count "
+      "agrees";
   return c;
 }
 
@@ -332,8 +342,8 @@ void checkWorstRowWithOracle(Claim& c) {
   }
   if (!worst) return;
   c.checkedAt = worst->where;
-  const long long steps = std::max<long long>(
-      20000, std::llround(200.0 * spin::integratedStepBudget(*worst->path, worst->ballRadius)));
+  const long long steps =
+      std::max<long long>(20000, std::llround(200.0 * spin::integratedStepBudget(*worst->path, worst->ballRadius)));
   const Eigen::Quaterniond kq(
       kinematics::RollingKinematics(*worst->path, worst->ballRadius, {std::min<long long>(steps, 400000), 0.0})
           .finalOrientation());
@@ -349,28 +359,31 @@ struct PaperTables {
 PaperTables paperTables(const std::vector<Claim>& claims) {
   PaperTables t;
   t.csv = "claim,where,predicted,measured,deviation_rad,verdict\n";
-  t.summary = "# rollspin report paper\n\n"
-              "Each closed-form claim of Rojo & Bloch on a parameter grid (R = 1 unless stated) against the "
-              "solver (frame6a, tolerance 1e-12). Closed-form claims agree when every deviation is ≤ 1e-8 rad; "
-              "asymptotic ones when the deviation falls like R/r (by ≥ 500) as R/r goes from 1e-1 to 1e-4. The last column "
-              "is the independent kinematic oracle against the solver at the claim's worst point, or the worst "
-              "one the oracle can afford (∫|B| ds ≤ 2000; SO(3) distance). Derivations of the disagreements: docs/solver.md#notes-on-the-paper.\n\n"
-              "| claim | verdict | largest deviation (rad) | where | solver vs kinematics there |\n"
-              "| --- | --- | --- | --- | --- |\n";
+  t.summary =
+      "# rollspin report paper\n\n"
+      "Each closed-form claim of Rojo & Bloch on a parameter grid (R = 1 unless stated) against the "
+      "solver (frame6a, tolerance 1e-12). Closed-form claims agree when every deviation is ≤ 1e-8 rad; "
+      "asymptotic ones when the deviation falls like R/r (by ≥ 500) as R/r goes from 1e-1 to 1e-4. The last column "
+      "is the independent kinematic oracle against the solver at the claim's worst point, or the worst "
+      "one the oracle can afford (∫|B| ds ≤ 2000; SO(3) distance). Derivations of the disagreements: "
+      "docs/solver.md#notes-on-the-paper.\n\n"
+      "| claim | verdict | largest deviation (rad) | where | solver vs kinematics there |\n"
+      "| --- | --- | --- | --- | --- |\n";
   for (const Claim& c : claims) {
     const auto worst = std::max_element(c.rows.begin(), c.rows.end(), [](const Row& a, const Row& b) {
-      return (std::isfinite(a.deviation) ? a.deviation : INFINITY) < (std::isfinite(b.deviation) ? b.deviation : INFINITY);
+      return (std::isfinite(a.deviation) ? a.deviation : INFINITY) <
+             (std::isfinite(b.deviation) ? b.deviation : INFINITY);
     });
     t.agree += c.verdict.rfind("agree", 0) == 0;
-    t.summary += fmt::format("| {} | {} | {} | {} | {} |\n", c.id,
-                             c.verdict == "disagree" ? "**disagree**" : c.verdict,
-                             worst != c.rows.end() ? fmtNum(worst->deviation) : "—",
-                             worst != c.rows.end() ? worst->where : "—",
-                             c.kinematicCheck < 0 ? std::string("(oracle itself)")
-                             : c.checkedAt == (worst != c.rows.end() ? worst->where : "")
-                                 ? fmtNum(c.kinematicCheck)
-                                 : fmt::format("{} (at {})", fmtNum(c.kinematicCheck), c.checkedAt));
-    t.details += fmt::format("## {}\n\n{}.\n\nMeasured: {}. Verdict: **{}**.", c.id, c.statement, c.measuredAs, c.verdict);
+    t.summary +=
+        fmt::format("| {} | {} | {} | {} | {} |\n", c.id, c.verdict == "disagree" ? "**disagree**" : c.verdict,
+                    worst != c.rows.end() ? fmtNum(worst->deviation) : "—", worst != c.rows.end() ? worst->where : "—",
+                    c.kinematicCheck < 0 ? std::string("(oracle itself)")
+                    : c.checkedAt == (worst != c.rows.end() ? worst->where : "")
+                        ? fmtNum(c.kinematicCheck)
+                        : fmt::format("{} (at {})", fmtNum(c.kinematicCheck), c.checkedAt));
+    t.details +=
+        fmt::format("## {}\n\n{}.\n\nMeasured: {}. Verdict: **{}**.", c.id, c.statement, c.measuredAs, c.verdict);
     if (!c.note.empty()) t.details += " " + c.note + ".";
     t.details += "\n\n| where | claim | solver | deviation |\n| --- | --- | --- | --- |\n";
     for (const Row& r : c.rows) {

@@ -30,7 +30,8 @@ namespace {
 std::vector<spin::Su2> runAt(const geometry::ContactPath& path, double R, spin::Method m, long long steps,
                              const std::vector<double>& s, spin::SolveStatus& status) {
   std::vector<spin::Su2> out(s.size());
-  status = spin::Propagator(path, R, m, steps).run(s, [&](std::size_t j, double, const spin::Su2& q) { out[j] = q; }).status;
+  status =
+      spin::Propagator(path, R, m, steps).run(s, [&](std::size_t j, double, const spin::Su2& q) { out[j] = q; }).status;
   return out;
 }
 
@@ -63,12 +64,11 @@ Reference makeReference(const geometry::ContactPath& path, double ballRadius, st
       if (ref.selfCheck < std::max(1e-13, 10.0 * ref.floor)) break;
     }
     ref.samples = std::move(coarse);
-    ref.source = fmt::format("{}, {} steps ({} against half as many)", spin::methodName(fineMethod), n,
-                             fmtNum(ref.selfCheck));
+    ref.source =
+        fmt::format("{}, {} steps ({} against half as many)", spin::methodName(fineMethod), n, fmtNum(ref.selfCheck));
   }
   if (kinematicSteps > 0) {
-    const Eigen::Matrix3d q =
-        kinematics::RollingKinematics(path, ballRadius, {kinematicSteps, 0.0}).finalOrientation();
+    const Eigen::Matrix3d q = kinematics::RollingKinematics(path, ballRadius, {kinematicSteps, 0.0}).finalOrientation();
     const Eigen::Quaterniond kq(q);
     ref.kinematicCheck = spin::rotationDistance(ref.samples.back(), spin::Su2{kq.w(), kq.x(), kq.y(), kq.z()});
   }
@@ -87,10 +87,9 @@ RunResult measureRun(const geometry::ContactPath& path, double ballRadius, spin:
     return std::max(spin::spinorDistance(q, ref), std::abs(q.norm() - 1.0));
   };
   double worst = 0.0;
-  const spin::SolveStats st =
-      propagator.run(ref.sampleS, [&](std::size_t j, double, const spin::Su2& q) {
-        worst = std::max(worst, errorOf(q, ref.samples[j]));
-      });
+  const spin::SolveStats st = propagator.run(ref.sampleS, [&](std::size_t j, double, const spin::Su2& q) {
+    worst = std::max(worst, errorOf(q, ref.samples[j]));
+  });
   r.status = st.status;
   r.steps = st.steps;
   r.rejected = st.rejectedSteps;

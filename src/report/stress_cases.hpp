@@ -21,11 +21,11 @@ struct StressCase {
   std::string what;  // one line: why it is hard
   std::shared_ptr<const geometry::ContactPath> path;
   double ballRadius = 1.0;
-  long long fixedSteps = 64;    // for the fixed-step methods
-  std::string grid;             // how fixedSteps was chosen, for the table
-  double tolerance = 1e-9;      // for the adaptive methods
+  long long fixedSteps = 64;                           // for the fixed-step methods
+  std::string grid;                                    // how fixedSteps was chosen, for the table
+  double tolerance = 1e-9;                             // for the adaptive methods
   spin::Method referenceMethod = spin::Method::Exact;  // Exact: closed form; else converged fine grid
-  bool stiff = false;           // R/r ≤ 1e-3: the "stiff plane and sphere" cases
+  bool stiff = false;                                  // R/r ≤ 1e-3: the "stiff plane and sphere" cases
 };
 
 [[nodiscard]] std::vector<StressCase> stressCases();

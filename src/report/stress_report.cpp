@@ -20,8 +20,8 @@
 namespace rollspin::report {
 
 namespace {
-using std::numbers::pi;
 using geometry::Vec3;
+using std::numbers::pi;
 
 // Signed solid angle enclosed by the closed loop of B̂(s) = −ω̂(s), seen
 // from +z: ∮ (1 − cos ϑ) dφ, counter-clockwise positive (the loop must not
@@ -53,25 +53,26 @@ std::vector<StressCase> stressCases() {
   const std::string perTurn = "64 per circuit";
   c.push_back({"plane R/r=1e-6", "ball 1e-6 of the circle: h|B| ≈ 1e5 per step on 64 steps", circle(1.0), 1e-6, 64,
                perTurn, 1e-9, spin::Method::Exact, true});
-  c.push_back({"plane R/r=1e-3", "h|B| ≈ 98 per step", circle(1.0), 1e-3, 64, perTurn, 1e-9, spin::Method::Exact, true});
+  c.push_back(
+      {"plane R/r=1e-3", "h|B| ≈ 98 per step", circle(1.0), 1e-3, 64, perTurn, 1e-9, spin::Method::Exact, true});
   c.push_back({"plane R/r=1", "benign", circle(1.0), 1.0, 64, perTurn, 1e-9});
   c.push_back({"plane R/r=1e3", "circle 1e-3 of the ball: the frame turns fast", circle(1e-3), 1.0, 64, perTurn, 1e-9});
   c.push_back({"sphere out R/r=1e-6", "parallel at 60°, h|B| ≈ 5e4 per step", parallel(1.0, true, pi / 3), 1e-6, 64,
                perTurn, 1e-9, spin::Method::Exact, true});
-  c.push_back({"sphere out R/r=1e3", "sphere 1e-3 of the ball, parallel at 60°", parallel(1e-3, true, pi / 3), 1.0,
-               64, perTurn, 1e-9});
-  c.push_back({"sphere out θ=1e-6", "parallel 1e-6 rad from the north pole: κ_g ≈ 1e6", parallel(1.0, true, 1e-6),
-               0.5, 64, perTurn, 1e-9});
-  c.push_back({"sphere out θ=π−1e-6", "1e-6 rad from the south pole", parallel(1.0, true, pi - 1e-6), 0.5, 64,
+  c.push_back({"sphere out R/r=1e3", "sphere 1e-3 of the ball, parallel at 60°", parallel(1e-3, true, pi / 3), 1.0, 64,
                perTurn, 1e-9});
-  c.push_back({"sphere in θ=1e-6", "inside, 1e-6 rad from the pole", parallel(1.0, false, 1e-6), 0.5, 64, perTurn,
-               1e-9});
+  c.push_back({"sphere out θ=1e-6", "parallel 1e-6 rad from the north pole: κ_g ≈ 1e6", parallel(1.0, true, 1e-6), 0.5,
+               64, perTurn, 1e-9});
+  c.push_back(
+      {"sphere out θ=π−1e-6", "1e-6 rad from the south pole", parallel(1.0, true, pi - 1e-6), 0.5, 64, perTurn, 1e-9});
+  c.push_back(
+      {"sphere in θ=1e-6", "inside, 1e-6 rad from the pole", parallel(1.0, false, 1e-6), 0.5, 64, perTurn, 1e-9});
   c.push_back({"sphere in 1−R/r=1e-9", "inside, R = r(1 − 1e-9) at 60°: ω ≈ 1e-9 u/R", parallel(1.0, false, pi / 3),
                1.0 - 1e-9, 64, perTurn, 1e-9});
-  c.push_back({"sphere in 1−κ_nR=0", "inside, equator, R = r: ω = 0 (no rotation at all)",
-               parallel(1.0, false, pi / 2), 1.0, 64, perTurn, 1e-9});
-  c.push_back({"1e6 turns", "lollipop r = 3, R = 1, 1e6 circuits: drift of unitarity and orientation",
-               circle(3.0, 1e6), 1.0, 16'000'000, "16 per circuit", 1e-9});
+  c.push_back({"sphere in 1−κ_nR=0", "inside, equator, R = r: ω = 0 (no rotation at all)", parallel(1.0, false, pi / 2),
+               1.0, 64, perTurn, 1e-9});
+  c.push_back({"1e6 turns", "lollipop r = 3, R = 1, 1e6 circuits: drift of unitarity and orientation", circle(3.0, 1e6),
+               1.0, 16'000'000, "16 per circuit", 1e-9});
   {
     auto plane = std::make_shared<const geometry::Plane>(Vec3::UnitZ());
     const std::vector<geometry::Vec2> corners{{0, 0}, {2, 0}, {2, 2}, {0, 2}};
@@ -81,8 +82,8 @@ std::vector<StressCase> stressCases() {
                  0.3, 2000, "2000 (≥ 1 per piece)", 1e-9, spin::Method::Frame4});
   }
   c.push_back({"clothoid κ_g=s−20", "Cornu spiral, κ_g from −20 to 20: a Landau–Zener sweep",
-               std::shared_ptr<const geometry::ContactPath>(geometry::PlaneClothoidPath::symmetricSweep(1.0, 40.0)), 1.0,
-               1000, "1000", 1e-9, spin::Method::Magnus6});
+               std::shared_ptr<const geometry::ContactPath>(geometry::PlaneClothoidPath::symmetricSweep(1.0, 40.0)),
+               1.0, 1000, "1000", 1e-9, spin::Method::Magnus6});
   return c;
 }
 
@@ -103,7 +104,8 @@ struct StressCells {
 
 StressCells stressMethodCells(const std::function<void(const std::string&)>& say) {
   StressCells t;
-  t.csv = "case,method,steps_requested,tolerance,status,verdict,error,unitarity_error,steps,seconds,bound,roundoff_floor\n";
+  t.csv =
+      "case,method,steps_requested,tolerance,status,verdict,error,unitarity_error,steps,seconds,bound,roundoff_floor\n";
   t.detail =
       "| case | method | settings | error | unitarity drift | steps | time | bound | verdict |\n"
       "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
@@ -115,8 +117,9 @@ StressCells stressMethodCells(const std::function<void(const std::string&)>& say
 
   for (const StressCase& c : stressCases()) {
     say(fmt::format("stress: {}", c.name));
-    const Reference ref = makeReference(*c.path, c.ballRadius, 2, 0,
-                                        c.referenceMethod == spin::Method::Exact ? spin::Method::Magnus6 : c.referenceMethod);
+    const Reference ref =
+        makeReference(*c.path, c.ballRadius, 2, 0,
+                      c.referenceMethod == spin::Method::Exact ? spin::Method::Magnus6 : c.referenceMethod);
     const double bound = stressBound(c);
     const double hB = c.path->length() / static_cast<double>(c.fixedSteps) *
                       spin::angularVelocity(c.path->at(0.0), c.ballRadius).norm();
@@ -127,8 +130,8 @@ StressCells stressMethodCells(const std::function<void(const std::string&)>& say
       const double tol = adaptive ? c.tolerance : 0.0;
       // rk45 gets 5e6 attempted steps: enough for every benign case, and a
       // bounded cost where it cannot win (R/r = 1e-6 needs ~1e8).
-      const RunResult r = measureRun(*c.path, c.ballRadius, m, steps, tol, ref, true,
-                                     m == spin::Method::Rk45 ? 5'000'000 : 50'000'000);
+      const RunResult r =
+          measureRun(*c.path, c.ballRadius, m, steps, tol, ref, true, m == spin::Method::Rk45 ? 5'000'000 : 50'000'000);
       std::string verdict;
       if (r.status == spin::SolveStatus::ExactNeedsConstantCurvature) verdict = "n/a";
       else if (!r.ok()) verdict = failureWord(r.status);
@@ -148,7 +151,7 @@ StressCells stressMethodCells(const std::function<void(const std::string&)>& say
       t.detail += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", mdCell(c.name), spin::methodName(m),
                               settings, err, fmtNum(r.unitarity), r.steps, r.ok() ? fmtSeconds(r.seconds) : "—",
                               fmtNum(bound), verdict == "pass" ? verdict : "**" + verdict + "**");
-      t.matrix += verdict == "pass" ? fmt::format(" pass {} |", err)
+      t.matrix += verdict == "pass"  ? fmt::format(" pass {} |", err)
                   : verdict == "n/a" ? " n/a |"
                                      : fmt::format(" **{}** {} |", verdict, r.ok() ? err : "");
     }
@@ -172,7 +175,8 @@ StressSection landauZenerSweep() {
       "again) against P_LZ = exp(−π/(2αR²)) = {:.6f}. frame6a at tolerance 1e-11; the last column is the finite-S "
       "correction times S: it stays O(1) while S grows 16-fold, i.e. P approaches P_LZ like 1/S (oscillating), the "
       "slow approach expected of a finite sweep — not an error of the solver (magnus6 on a fine grid agrees to the "
-      "digits shown).\n\n| S | P (solver) | P_LZ | P − P_LZ | S·(P − P_LZ) | magnus6 check |\n| --- | --- | --- | --- | --- | --- |\n",
+      "digits shown).\n\n| S | P (solver) | P_LZ | P − P_LZ | S·(P − P_LZ) | magnus6 check |\n| --- | --- | --- | --- "
+      "| --- | --- |\n",
       alpha, R, pLz);
   lz.csv = "S,P,P_LZ,difference,S_times_difference,magnus6_check\n";
   for (double S : {5.0, 10.0, 20.0, 40.0, 80.0}) {

@@ -25,9 +25,7 @@ std::optional<FrameRate> reduced(long long num, long long den) {
 
 std::string FrameRate::text() const { return den == 1 ? std::to_string(num) : fmt::format("{}/{}", num, den); }
 
-std::string FrameRate::describe() const {
-  return den == 1 ? text() : fmt::format("{} ({:.6g})", text(), value());
-}
+std::string FrameRate::describe() const { return den == 1 ? text() : fmt::format("{} ({:.6g})", text(), value()); }
 
 std::optional<FrameRate> frameRateFromDecimal(double value) {
   if (!std::isfinite(value) || value <= 0.0 || value > 1e6) return std::nullopt;

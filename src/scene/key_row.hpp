@@ -54,8 +54,8 @@ struct KeyRow {
   std::string units{};
   std::string meaning{};
   std::string appliesTo{};
-  bool byRule = false;  // read by the section's rule code, not by the generic reader
-  bool printed = true;  // written by `scene --print`
+  bool byRule = false;      // read by the section's rule code, not by the generic reader
+  bool printed = true;      // written by `scene --print`
   std::string unsetNote{};  // printed as "# key = NOTE" when the value is unset (an empty optional or text)
   // Printed text in place of the field's; nullopt: unset (see unsetNote).
   std::optional<std::string> (*printText)(const S&) = nullptr;
@@ -106,8 +106,11 @@ template <class S>
 // A row's registry entry: `keys` and the reference show it.
 template <class S>
 [[nodiscard]] KeyInfo keyInfoOf(const std::string& section, const KeyRow<S>& row) {
-  return {section,   std::string(row.name), row.type,  row.defaultText.empty() ? printedValue(row, S{}).value_or("") : row.defaultText,
-          row.bounds, row.choices,          row.rangeNote, row.units, row.meaning, row.appliesTo};
+  return {section,       std::string(row.name),
+          row.type,      row.defaultText.empty() ? printedValue(row, S{}).value_or("") : row.defaultText,
+          row.bounds,    row.choices,
+          row.rangeNote, row.units,
+          row.meaning,   row.appliesTo};
 }
 
 // "section.key" (a dotted key as locations and messages spell it).

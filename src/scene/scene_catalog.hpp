@@ -42,9 +42,9 @@ void setProgramSceneFolders(std::vector<std::filesystem::path> folders);
 [[nodiscard]] std::filesystem::path resolveScene(const std::string& given);
 
 struct BundledScene {
-  std::string name;                // the file's stem: what `rollspin render NAME` takes
+  std::string name;  // the file's stem: what `rollspin render NAME` takes
   std::filesystem::path file;
-  std::string description;         // the first sentence of the file's leading comment
+  std::string description;  // the first sentence of the file's leading comment
 };
 // Every scene of sceneFolders(), sorted by name; a name in an earlier folder hides a later one's.
 [[nodiscard]] std::vector<BundledScene> bundledScenes();

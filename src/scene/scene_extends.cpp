@@ -12,9 +12,9 @@ toml::table parseText(std::string_view text, const std::string& sourceName) {
   try {
     return toml::parse(text, sourceName);
   } catch (const toml::parse_error& e) {
-    throw badInput(SourceLoc{sourceName, static_cast<int>(e.source().begin.line),
-                             static_cast<int>(e.source().begin.column)},
-                   "TOML syntax error: {}", e.description());
+    throw badInput(
+        SourceLoc{sourceName, static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column)},
+        "TOML syntax error: {}", e.description());
   }
 }
 

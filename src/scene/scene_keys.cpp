@@ -4,10 +4,10 @@
 
 #include <algorithm>
 #include <limits>
-#include <type_traits>
-#include <variant>
 #include <map>
 #include <stdexcept>
+#include <type_traits>
+#include <variant>
 
 #include "core/error.hpp"
 #include "core/text.hpp"
@@ -38,9 +38,9 @@ struct Row {
 };
 
 KeyInfo info(std::string section, std::string key, Row r, std::string appliesTo = "") {
-  return {std::move(section), std::move(key), std::move(r.type),      std::move(r.defaultText),
-          r.bounds,           std::move(r.choices), std::move(r.rangeNote), std::move(r.units),
-          std::move(r.meaning), std::move(appliesTo)};
+  return {
+      std::move(section),   std::move(key),         std::move(r.type),  std::move(r.defaultText), r.bounds,
+      std::move(r.choices), std::move(r.rangeNote), std::move(r.units), std::move(r.meaning),     std::move(appliesTo)};
 }
 
 // [surface]: each kind declares its own keys (geometry/surface_kinds.cpp,
@@ -71,9 +71,9 @@ std::string declType(ParamType type) {
 std::vector<KeyInfo> surfaceKeyInfos(const SurfaceSpec& d) {
   std::vector<std::string> kindNames;
   for (const auto& row : surfaceKinds()) kindNames.emplace_back(row.name);
-  std::vector<KeyInfo> out{info("surface", "kind",
-                                {"string", inQuotes(toString(d.kind)), {}, kindNames, "", "",
-                                 "the surface the ball rolls on"})};
+  std::vector<KeyInfo> out{
+      info("surface", "kind",
+           {"string", inQuotes(toString(d.kind)), {}, kindNames, "", "", "the surface the ball rolls on"})};
   for (const std::string& key : allSurfaceKeys()) {
     // (kind, declaration) for every kind that declares the key.
     std::vector<std::pair<std::string, const ParamDecl*>> decls;
@@ -95,8 +95,9 @@ std::vector<KeyInfo> surfaceKeyInfos(const SurfaceSpec& d) {
       for (const auto& [value, kinds] : groups) joined += (joined.empty() ? "" : "; ") + kinds + ": " + value;
       return joined;
     };
-    Row row{declType(first.type), perKind(declDefault), {}, {}, "", first.units,
-            perKind([](const ParamDecl& decl) { return decl.meaning; })};
+    Row row{declType(first.type), perKind(declDefault), {}, {}, "", first.units, perKind([](const ParamDecl& decl) {
+              return decl.meaning;
+            })};
     if (first.type == ParamType::Number && first.lowerBound > -std::numeric_limits<double>::infinity())
       row.bounds = above(first.lowerBound);
     for (const auto& [kind, decl] : decls)
@@ -116,8 +117,13 @@ std::vector<KeyInfo> pathKeyInfos() {
   std::vector<std::string> kindNames;
   for (const auto& row : pathKinds()) kindNames.emplace_back(row.name);
   std::vector<KeyInfo> out{info("path", "kind",
-                                {"string", "\"circle\" on a plane, else the surface's own (parallel or meridian)",
-                                 {}, kindNames, "", "", "the curve the contact point follows"})};
+                                {"string",
+                                 "\"circle\" on a plane, else the surface's own (parallel or meridian)",
+                                 {},
+                                 kindNames,
+                                 "",
+                                 "",
+                                 "the curve the contact point follows"})};
   for (const std::string& key : allPathKeys()) {
     KeyInfo k = keyInfoOf("path", rowOf(pathKeys(), key));
     k.appliesTo = "kind = " + pathKeyRule(key, PathKind::Line, SurfaceKind::Plane).kinds;
@@ -134,7 +140,15 @@ void appendTable(std::vector<KeyInfo>& keys, const std::string& section, const K
 std::vector<KeyInfo> buildRegistry() {
   const SceneSpec d;
   std::vector<KeyInfo> keys{
-      info("", "extends", {"string", "(none)", {}, {}, "", "", "a base scene whose keys this one overrides: a file relative to this one, else a bundled scene's name (\"storyboard\")"}),
+      info("", "extends",
+           {"string",
+            "(none)",
+            {},
+            {},
+            "",
+            "",
+            "a base scene whose keys this one overrides: a file relative to this one, else a bundled scene's name "
+            "(\"storyboard\")"}),
   };
   appendTable(keys, "ball", ballKeys());
   for (KeyInfo& k : surfaceKeyInfos(d.surface)) keys.push_back(std::move(k));

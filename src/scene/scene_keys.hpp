@@ -24,14 +24,14 @@ struct Bounds {
 struct KeyInfo {
   std::string section;  // "ball", "path", "segment", "segment.camera"; "" for the top level
   std::string key;
-  std::string type;     // "number", "integer", "boolean", "string", "[x, y, z]", "expression", "table", …
+  std::string type;  // "number", "integer", "boolean", "string", "[x, y, z]", "expression", "table", …
   std::string defaultText;
   std::optional<Bounds> bounds;      // numbers: the loader rejects values outside
   std::vector<std::string> choices;  // text keys with a fixed set of values
   std::string rangeNote;             // anything else the loader checks (e.g. "> t_start")
   std::string units;
   std::string meaning;
-  std::string appliesTo;             // "" = always; else the kinds it applies to
+  std::string appliesTo;  // "" = always; else the kinds it applies to
 };
 
 // The tables of a scene, in the reference's order ("" first: `extends`).

@@ -5,8 +5,8 @@
 #include <type_traits>
 
 #include "scene/scene_catalog.hpp"
-#include "scene/schema_reader.hpp"
 #include "scene/scene_sources.hpp"
+#include "scene/schema_reader.hpp"
 
 namespace rollspin::scene {
 

@@ -19,7 +19,7 @@ namespace rollspin::scene {
 // the document after the --set overrides and validated the same way, with
 // the flag as where the value came from in messages and locations.
 struct KeySetting {
-  std::string section;  // "render"
+  std::string section;   // "render"
   std::string_view key;  // a key constant of the section's table (scene_tables.hpp: key::kWidth)
   std::variant<long long, double, bool, std::string> value;
   SourceLoc from;  // the flag as typed: "--width 641"

@@ -31,7 +31,8 @@ void applyOverride(toml::table& root, const std::string& arg, std::map<std::stri
     const auto open = p.find('[');
     if (open != std::string::npos && i + 1 < parts.size() && p.back() == ']' && open + 2 < p.size()) {
       const std::string digits = p.substr(open + 1, p.size() - open - 2);
-      if (digits.size() <= 6 && std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+      if (digits.size() <= 6 &&
+          std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; })) {
         index[i] = std::stoul(digits);
         if (index[i] == 0) throw badInput(loc, "'{}': entries are counted from 1", p);
         p.resize(open);
@@ -52,8 +53,9 @@ void applyOverride(toml::table& root, const std::string& arg, std::map<std::stri
     char* end = nullptr;
     std::strtod(value.c_str(), &end);
     if (errno == ERANGE && !value.empty() && end == value.c_str() + value.size())
-      throw badInput(loc, "'{}' is out of range: a number here is at most about 1.8e308 in size and, unless 0, at "
-                          "least about 2.2e-308",
+      throw badInput(loc,
+                     "'{}' is out of range: a number here is at most about 1.8e308 in size and, unless 0, at "
+                     "least about 2.2e-308",
                      value);
     parsed = toml::table{};
     parsed.insert("v", value);  // a bare word: take it as a string

@@ -37,7 +37,8 @@ KeyRule pathKeyRule(const std::string& key, PathKind pk, SurfaceKind sk) {
       if (k.key != key) continue;
       std::vector<std::string> on;
       for (SurfaceKind s : k.on) on.emplace_back(surfaceKindRow(s).name);
-      (on.empty() ? everywhere : somewhere).push_back(std::string(row.name) + (on.empty() ? "" : " on a " + orList(on)));
+      (on.empty() ? everywhere : somewhere)
+          .push_back(std::string(row.name) + (on.empty() ? "" : " on a " + orList(on)));
       if (row.kind == pk && (k.on.empty() || std::find(k.on.begin(), k.on.end(), sk) != k.on.end())) applies = true;
     }
   }
@@ -104,7 +105,8 @@ KeyRule factRule(Fact f, const SceneSpec& spec) {
   // A storyboard's facts are its captions: the closed forms are about one path.
   if (spec.isStoryboard()) return {false, "a scene with one [path] (a storyboard's segments have captions)"};
   switch (f) {
-    case Fact::Delta: return {planeCircle(spec) || sphereParallel(spec), "a circle on a plane or a parallel on a sphere"};
+    case Fact::Delta:
+      return {planeCircle(spec) || sphereParallel(spec), "a circle on a plane or a parallel on a sphere"};
     case Fact::Marks: return {planeCircle(spec), "a circle on a plane"};
     case Fact::Turns: return {sphereParallel(spec) && onEquator(spec), "a parallel on a sphere at colatitude_deg = 90"};
     case Fact::PhaseSplit:
@@ -121,7 +123,8 @@ std::vector<Fact> resolveFacts(const SceneSpec& spec) {
   if (planeCircle(spec)) return {Fact::Delta};
   if (sphereParallel(spec)) {
     if (onEquator(spec)) return {Fact::Turns};
-    if (spec.ball.radius <= 0.1 * spec.surface.number("radius") && wholeTurns(spec.path.turns)) return {Fact::PhaseSplit};
+    if (spec.ball.radius <= 0.1 * spec.surface.number("radius") && wholeTurns(spec.path.turns))
+      return {Fact::PhaseSplit};
     return {Fact::Delta};
   }
   return {};

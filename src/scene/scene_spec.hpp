@@ -20,8 +20,8 @@ namespace rollspin::scene {
 using Vec3 = std::array<double, 3>;
 
 struct BallSpec {
-  double radius = 1.0;  // R
-  std::string texture;  // equirectangular PNG/JPG (relative to the scene file); "" = built-in tennis ball
+  double radius = 1.0;         // R
+  std::string texture;         // equirectangular PNG/JPG (relative to the scene file); "" = built-in tennis ball
   std::optional<Vec3> marker;  // body point whose direction is the tracked Bloch vector; default: the top n(0)
 };
 
@@ -35,30 +35,30 @@ struct SurfaceSpec {
 
 struct PathSpec {
   PathKind kind = PathKind::Circle;
-  double turns = 1.0;                 // circle, parallel
-  bool counterClockwise = true;       // direction = "ccw" | "cw"
-  double length = 10.0;               // line
+  double turns = 1.0;                   // circle, parallel
+  bool counterClockwise = true;         // direction = "ccw" | "cw"
+  double length = 10.0;                 // line
   std::optional<Vec3> directionVector;  // line; default: horizontal in the plane (docs/scenes.md#the-file-format)
-  double radius = 3.0;                // circle: contact circle radius r
-  double colatitudeDeg = 60.0;        // parallel: θ in degrees
-  double startAzimuthDeg = 0.0;       // parallel: the azimuth φ at s = 0 (docs/conventions.md)
+  double radius = 3.0;                  // circle: contact circle radius r
+  double colatitudeDeg = 60.0;          // parallel: θ in degrees
+  double startAzimuthDeg = 0.0;         // parallel: the azimuth φ at s = 0 (docs/conventions.md)
   // Curved surfaces (issue 3). Angles in degrees; docs/scenes.md#curved-surfaces-and-curves.
-  double tubeAngleDeg = 0.0;          // torus parallel / meridian start: ψ (0 = outer equator)
-  double height = 0.0;                // cylinder parallel / helix / meridian: start height along the axis
-  double azimuthDeg = 0.0;            // meridian, loxodrome: φ0
-  double colatitudeStartDeg = 30.0;   // sphere meridian, loxodrome: θ0
-  double colatitudeEndDeg = 150.0;    // sphere meridian, loxodrome: θ1
-  double pitchAngleDeg = 30.0;        // helix: β from the parallels
-  double headingDeg = 45.0;           // loxodrome: α from the meridians
-  std::optional<Vec3> startPoint;     // geodesic: projected onto the surface; default per surface
-  std::string u = "0.5 + t", v = "t";  // uv: surface parameters as expressions of t (valid on every surface)
-  double tStart = 0.0, tEnd = 1.0;    // uv: range of t
+  double tubeAngleDeg = 0.0;                // torus parallel / meridian start: ψ (0 = outer equator)
+  double height = 0.0;                      // cylinder parallel / helix / meridian: start height along the axis
+  double azimuthDeg = 0.0;                  // meridian, loxodrome: φ0
+  double colatitudeStartDeg = 30.0;         // sphere meridian, loxodrome: θ0
+  double colatitudeEndDeg = 150.0;          // sphere meridian, loxodrome: θ1
+  double pitchAngleDeg = 30.0;              // helix: β from the parallels
+  double headingDeg = 45.0;                 // loxodrome: α from the meridians
+  std::optional<Vec3> startPoint;           // geodesic: projected onto the surface; default per surface
+  std::string u = "0.5 + t", v = "t";       // uv: surface parameters as expressions of t (valid on every surface)
+  double tStart = 0.0, tEnd = 1.0;          // uv: range of t
   std::vector<std::vector<double>> points;  // points: [u, v] parameters or [x, y, z] points
-  bool closed = false;                // points: periodic spline / closed polygon
-  std::string interpolation = "spline";  // points: "spline" | "polyline"
-  double cornerRadius = 0.0;          // points, polyline: arc radius rounding each corner
-  double curvatureStart = -4.0;       // clothoid: κ_g at s = 0
-  double curvatureRate = 1.0;         // clothoid: α in κ_g = κ₀ + α s
+  bool closed = false;                      // points: periodic spline / closed polygon
+  std::string interpolation = "spline";     // points: "spline" | "polyline"
+  double cornerRadius = 0.0;                // points, polyline: arc radius rounding each corner
+  double curvatureStart = -4.0;             // clothoid: κ_g at s = 0
+  double curvatureRate = 1.0;               // clothoid: α in κ_g = κ₀ + α s
 };
 
 struct PlateSpec {
@@ -84,8 +84,8 @@ inline constexpr long long kMaxJpegQuality = 100;
 inline constexpr std::array<long long, 3> kMsaaSamples{1, 2, 4};
 
 struct SolverSpec {
-  std::string method = "magnus4";  // exact | magnus2 | magnus4 | rk4 | frame4 | cf4 | magnus6 | rk45 | frame6a
-  std::optional<long long> steps;  // default: automatic (docs/solver.md#how-many-steps-and-how-accurate)
+  std::string method = "magnus4";   // exact | magnus2 | magnus4 | rk4 | frame4 | cf4 | magnus6 | rk45 | frame6a
+  std::optional<long long> steps;   // default: automatic (docs/solver.md#how-many-steps-and-how-accurate)
   std::optional<double> tolerance;  // adaptive methods; default kDefaultTolerance; alone → frame6a
   bool errorEstimate = true;        // the a posteriori estimate of U(L) (a second solve); false skips it
   static constexpr double kDefaultTolerance = 1e-10;
@@ -110,7 +110,7 @@ struct RenderSpec {
   bool shadow = true;    // the key light's shadow map
   bool transparent = false;
   bool burnCaptions = true;  // false: title and captions only in the subtitle track and sidecars, not the pixels
-  long long msaa = 4;    // 1 | 2 | 4
+  long long msaa = 4;        // 1 | 2 | 4
   double azimuthDeg = -60.0;
   double elevationDeg = 28.0;
   std::optional<double> distance;
@@ -121,8 +121,9 @@ struct RenderSpec {
   // default: from the output's extension, else mp4 (a clip) or png (a still).
   std::optional<std::string> format;
   long long jpegQuality = 92;  // JPEG stills, 1 … 100
-  double dpi = 300.0;  // vector figures: resolution of their raster parts (the shaded ball and surfaces)
-  double fontScale = 1.0;   // text size × this (docs/rendering.md#stills-and-images); body line ≥ 1/28 of the height at 1
+  double dpi = 300.0;          // vector figures: resolution of their raster parts (the shaded ball and surfaces)
+  double fontScale =
+      1.0;  // text size × this (docs/rendering.md#stills-and-images); body line ≥ 1/28 of the height at 1
   bool twinCameraFixed = true;  // twin_camera: "fixed" (the first shot's view throughout) or "linked"
   // GL context (render/gl_backends.cpp): "auto" or a backend of the table, and
   // for EGL a device index or DRM path; unset: ROLLSPIN_GL / ROLLSPIN_EGL_DEVICE.
@@ -133,10 +134,10 @@ struct RenderSpec {
 // [figure]: a still as a publication figure (PDF/SVG, docs/figures.md): its
 // physical width, the labels' font and size, the page.
 struct FigureSpec {
-  double widthMm = 120.0;                // figure.width_mm, or figure.width_in × 25.4
-  std::string font = "DejaVu Sans";      // a fontconfig family name
-  std::optional<double> fontSizePt;      // body text size; default: the still's proportions
-  bool transparent = true;               // false: the views' backdrop gradients, as in the PNG
+  double widthMm = 120.0;            // figure.width_mm, or figure.width_in × 25.4
+  std::string font = "DejaVu Sans";  // a fontconfig family name
+  std::optional<double> fontSizePt;  // body text size; default: the still's proportions
+  bool transparent = true;           // false: the views' backdrop gradients, as in the PNG
 };
 
 // [labels]: facts of the scene, computed from the solver (motion/scene_facts)
@@ -157,14 +158,14 @@ enum class Easing { Linear, Smooth };
 // [animation]: how frame time maps to arc length, and the encoder's settings.
 // The motion lasts `duration` seconds, or L/speed when `speed` is given.
 struct AnimationSpec {
-  FrameRate fps;                 // 30/1; exact rationals for NTSC (30000/1001)
-  double duration = 10.0;        // seconds for the whole path
-  std::optional<double> speed;   // arc length per second (instead of duration)
+  FrameRate fps;                // 30/1; exact rationals for NTSC (30000/1001)
+  double duration = 10.0;       // seconds for the whole path
+  std::optional<double> speed;  // arc length per second (instead of duration)
   Easing easing = Easing::Smooth;
-  double hold = 0.5;             // seconds the first and the last frame are held
-  std::optional<double> crf;     // constant rate factor, 0 … 51; default: the format's (18 H.264, 31 VP9)
-  std::string preset = "medium"; // x264 preset (WebM maps it to libvpx's cpu-used)
-  bool loop = true;              // a GIF loops forever (false: plays once)
+  double hold = 0.5;              // seconds the first and the last frame are held
+  std::optional<double> crf;      // constant rate factor, 0 … 51; default: the format's (18 H.264, 31 VP9)
+  std::string preset = "medium";  // x264 preset (WebM maps it to libvpx's cpu-used)
+  bool loop = true;               // a GIF loops forever (false: plays once)
 };
 
 // A camera change: render's camera keys, each optional (absent = unchanged).
@@ -177,13 +178,13 @@ struct CameraSpec {
 // [[segment]]: one step of a storyboard (docs/scenes.md#storyboards): a motion
 // along its own path, or a hold; with its caption, title and camera.
 struct SegmentSpec {
-  std::optional<PathSpec> path;    // a motion; absent: a hold
-  double hold = 0.0;               // a hold: seconds the ball rests
-  std::optional<double> duration;  // a motion: seconds
-  std::optional<double> speed;     // a motion: arc length per second (instead of duration)
-  std::string caption;             // shown while the segment plays ("" = none)
+  std::optional<PathSpec> path;      // a motion; absent: a hold
+  double hold = 0.0;                 // a hold: seconds the ball rests
+  std::optional<double> duration;    // a motion: seconds
+  std::optional<double> speed;       // a motion: arc length per second (instead of duration)
+  std::string caption;               // shown while the segment plays ("" = none)
   std::optional<std::string> title;  // replaces render.title while the segment plays
-  CameraSpec camera;               // laid over the previous segment's camera (the first: over [render])
+  CameraSpec camera;                 // laid over the previous segment's camera (the first: over [render])
   // A motion's own surface (docs/scenes.md#surfaces-per-segment); absent: the
   // previous segment's (the first: [surface]). Where it changes, the clip
   // cuts, or cross-fades over fadeSeconds.
@@ -210,7 +211,9 @@ struct SceneSpec {
 
   [[nodiscard]] bool isStoryboard() const { return !segments.empty(); }
   // "segment[k]" (k counts from 1), the prefix of segment k's keys.
-  [[nodiscard]] static std::string segmentKey(std::size_t index) { return "segment[" + std::to_string(index + 1) + "]"; }
+  [[nodiscard]] static std::string segmentKey(std::size_t index) {
+    return "segment[" + std::to_string(index + 1) + "]";
+  }
   // The surface segment `index` rolls on (its own, else the last one a
   // segment before it gave, else [surface]) and its index among the scene's
   // surfaces (0: [surface], or the first segment's own); surfaceCount() ≥ 1.

@@ -12,6 +12,10 @@
 #include "render/gl_context.hpp"
 #include "spin/propagator.hpp"
 
+// The tables keep one row per key as written, each row's fields wrapped by
+// hand; clang-format would put every field of a row on a line of its own
+// (the file would double and the tables stop reading as tables).
+// clang-format off
 namespace rollspin::scene {
 
 namespace key {
@@ -467,3 +471,4 @@ const KeyTable<CameraSpec>& segmentCameraKeys() {
 }
 
 }  // namespace rollspin::scene
+// clang-format on

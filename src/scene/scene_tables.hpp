@@ -38,14 +38,14 @@ template <class S>
 // scene_tables.cpp).
 namespace key {
 extern const std::string_view kRadius, kMethod, kSteps, kTolerance;
-extern const std::string_view kWidth, kHeight, kTransparent, kTitle, kTarget, kFollow, kDistance, kFormat, kBackend, kDevice, kMsaa;
+extern const std::string_view kWidth, kHeight, kTransparent, kTitle, kTarget, kFollow, kDistance, kFormat, kBackend,
+    kDevice, kMsaa;
 extern const std::string_view kWidthMm, kWidthIn, kFontSizePt;
 extern const std::string_view kFacts, kLabels;
 extern const std::string_view kFps, kDuration, kSpeed, kHold;
 extern const std::string_view kLength, kDirectionVector, kTurns, kDirection, kStartAzimuthDeg, kColatitudeDeg,
-    kTubeAngleDeg, kAzimuthDeg, kColatitudeStartDeg, kColatitudeEndDeg, kPitchAngleDeg, kHeadingDeg,
-    kStartPoint, kU, kV, kTStart, kTEnd, kPoints, kClosed, kInterpolation, kCornerRadius, kCurvatureStart,
-    kCurvatureRate;
+    kTubeAngleDeg, kAzimuthDeg, kColatitudeStartDeg, kColatitudeEndDeg, kPitchAngleDeg, kHeadingDeg, kStartPoint, kU,
+    kV, kTStart, kTEnd, kPoints, kClosed, kInterpolation, kCornerRadius, kCurvatureStart, kCurvatureRate;
 extern const std::string_view kPath, kSurface, kCamera, kCaption, kTransition, kFadeSeconds;
 }  // namespace key
 

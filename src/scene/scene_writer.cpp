@@ -134,7 +134,7 @@ void writeSegments(Writer& w, const SceneSpec& spec) {
       }
       if (!seg.surface)
         w.computed(std::string(key::kSurface), fmt::format("surface {} (a {}), as {}", spec.surfaceIndexOf(i),
-                                          toString(spec.surfaceOf(i).kind), spec.surfaceKeyOf(i)));
+                                                           toString(spec.surfaceOf(i).kind), spec.surfaceKeyOf(i)));
     }
     if (seg.surface) {
       w.header("[segment.surface]", prefix + ".surface");

@@ -43,7 +43,8 @@ struct UnitSuffix {
   std::string_view unit;
 };
 constexpr std::array<UnitSuffix, 3> kUnitSuffixes{{{"_deg", "degrees"}, {"_mm", "millimetres"}, {"_pt", "points"}}};
-constexpr std::array<std::string_view, 7> kTypedUnitSuffixes{"_degrees", "_deg", "_radians", "_rad", "_mm", "_cm", "_pt"};
+constexpr std::array<std::string_view, 7> kTypedUnitSuffixes{"_degrees", "_deg", "_radians", "_rad",
+                                                             "_mm",      "_cm",  "_pt"};
 
 std::string_view withoutUnit(std::string_view key) {
   for (const std::string_view suffix : kTypedUnitSuffixes)
@@ -54,7 +55,7 @@ std::string_view withoutUnit(std::string_view key) {
 // `colatitude` or `colatitude_rad` for `colatitude_deg`: the accepted key
 // that is the typed one with the schema's unit; nullopt when there is none.
 std::optional<std::pair<std::string, std::string_view>> sameKeyInItsUnit(const std::string& typed,
-                                                                          const std::set<std::string>& allowed) {
+                                                                         const std::set<std::string>& allowed) {
   for (const std::string& key : allowed)
     for (const UnitSuffix& u : kUnitSuffixes)
       if (key != typed && key.ends_with(u.suffix) && withoutUnit(key) == withoutUnit(typed))
@@ -64,8 +65,8 @@ std::optional<std::pair<std::string, std::string_view>> sameKeyInItsUnit(const s
 
 }  // namespace
 
-Error unknownKey(const SourceLoc& loc, const std::string& fullKey, const std::string& typed,
-                 const std::string& table, const std::set<std::string>& allowed) {
+Error unknownKey(const SourceLoc& loc, const std::string& fullKey, const std::string& typed, const std::string& table,
+                 const std::set<std::string>& allowed) {
   // The same key in the schema's unit is the answer; the whole list would bury it.
   if (const auto inUnit = sameKeyInItsUnit(typed, allowed))
     return badInput(loc, "{}: unknown key; did you mean `{}` (in {})?", fullKey, inUnit->first, inUnit->second);
@@ -91,7 +92,8 @@ std::string boundNumber(double v) {
 
 std::string boundsPhrase(const Bounds& b) {
   if (b.lo && b.hi)
-    return fmt::format("in {}{}, {}{}", b.loOpen ? "(" : "[", boundNumber(*b.lo), boundNumber(*b.hi), b.hiOpen ? ")" : "]");
+    return fmt::format("in {}{}, {}{}", b.loOpen ? "(" : "[", boundNumber(*b.lo), boundNumber(*b.hi),
+                       b.hiOpen ? ")" : "]");
   if (b.lo) return fmt::format("{} {}", b.loOpen ? ">" : ">=", boundNumber(*b.lo));
   if (b.hi) return fmt::format("{} {}", b.hiOpen ? "<" : "<=", boundNumber(*b.hi));
   return "";
@@ -151,7 +153,7 @@ const toml::table* Reader::section(const std::string& name, const std::set<std::
 // `parent`'s key `name` as a table whose keys are all in `allowed`; `full`
 // names it in messages and locations ("render", "segment[2].camera").
 const toml::table* Reader::subTable(const toml::table& parent, const std::string& name, const std::string& full,
-                                   const std::set<std::string>& allowed) {
+                                    const std::set<std::string>& allowed) {
   const toml::node* node = parent.get(name);
   if (node == nullptr) return nullptr;
   const toml::table* t = node->as_table();
@@ -160,7 +162,8 @@ const toml::table* Reader::subTable(const toml::table& parent, const std::string
   spec_.locations[full] = locOf(full, *node);
   for (auto&& [k, v] : *t) {
     const std::string key = full + "." + std::string(k.str());
-    if (!allowed.contains(std::string(k.str()))) throw unknownKey(locOf(key, v), key, std::string(k.str()), what, allowed);
+    if (!allowed.contains(std::string(k.str())))
+      throw unknownKey(locOf(key, v), key, std::string(k.str()), what, allowed);
   }
   return t;
 }
@@ -186,7 +189,8 @@ std::optional<long long> Reader::integer(const toml::table* t, const std::string
   const toml::node* node = get(t, section, key);
   if (node == nullptr) return std::nullopt;
   const std::string full = section + "." + key;
-  // 1e5 is how docs/getting-started.md#limits-and-errors writes limits: a float that is exactly an integer counts as one.
+  // 1e5 is how docs/getting-started.md#limits-and-errors writes limits: a float that is exactly an integer counts as
+  // one.
   if (const auto* f = node->as_floating_point()) {
     const double v = f->get();
     if (std::isfinite(v) && v == std::trunc(v) && std::fabs(v) < 9.2e18) return static_cast<long long>(v);
@@ -248,7 +252,8 @@ std::optional<std::string> Reader::expression(const toml::table* t, const std::s
   const toml::node* node = get(t, section, key);
   if (node == nullptr) return std::nullopt;
   const std::string full = section + "." + key;
-  if (!node->is_string()) fail(full, locOf(full, *node), "an expression string such as \"0.3*sin(x)\"", describeNode(*node));
+  if (!node->is_string())
+    fail(full, locOf(full, *node), "an expression string such as \"0.3*sin(x)\"", describeNode(*node));
   std::string v = node->as_string()->get();
   if (v.find_first_not_of(" \t") == std::string::npos) fail(full, locOf(full, *node), "a non-empty expression", "\"\"");
   return v;
@@ -282,8 +287,7 @@ std::optional<std::vector<std::vector<double>>> Reader::pointList(const toml::ta
   return points;
 }
 
-void Reader::forbid(const toml::table* t, const std::string& section, const std::string& key,
-                    const std::string& why) {
+void Reader::forbid(const toml::table* t, const std::string& section, const std::string& key, const std::string& why) {
   if (t == nullptr) return;
   if (const toml::node* node = t->get(key)) {
     const std::string full = section + "." + key;
@@ -384,12 +388,13 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
   const std::string needs = describe(pathKindRow(pk).liesOn);
   if (!lies) {
     const std::string key = pathKindGiven ? (prefix + ".kind") : surfaceKey + ".kind";
-    failAt(key, fmt::format("a {} path lies on a {}, but {}.kind is \"{}\" (the path would leave the surface)",
-                            pkName, needs, surfaceKey, skName));
+    failAt(key, fmt::format("a {} path lies on a {}, but {}.kind is \"{}\" (the path would leave the surface)", pkName,
+                            needs, surfaceKey, skName));
   }
   auto only = [&](const std::string& key, bool applies, const std::string& kinds) {
-    if (!applies) forbid(path, prefix, key, "applies to path kind " + kinds + " only; this path is a " + pkName +
-                                                " on a " + skName);
+    if (!applies)
+      forbid(path, prefix, key,
+             "applies to path kind " + kinds + " only; this path is a " + pkName + " on a " + skName);
   };
   for (const auto& key : allPathKeys()) {
     const KeyRule rule = pathKeyRule(key, pk, sk);
@@ -467,7 +472,9 @@ SceneSpec Reader::read() {
     const KeyRow<PlateSpec>& radius = rowOf(plateKeys(), key::kRadius);
     const std::string radiusKey = dotted("plate", radius.name);
     auto r1 = number(plate, "plate", std::string(radius.name));
-    if (!r1) throw badInput(where("plate"), "{}: missing; [plate] needs the radius R1 of the circle each plate point describes", radiusKey);
+    if (!r1)
+      throw badInput(where("plate"),
+                     "{}: missing; [plate] needs the radius R1 of the circle each plate point describes", radiusKey);
     checkRow(radius, radiusKey, *r1);
     p.radius = *r1;
     spec_.plate = p;
@@ -476,8 +483,9 @@ SceneSpec Reader::read() {
   // [path]
   const toml::table* path = section("path", pathTableKeys());
   if (path != nullptr && root_.get("segment") != nullptr)
-    throw badInput(where("path"), "path: a scene has either one [path] or a storyboard of [[segment]] entries, "
-                                  "not both; move the [path] keys into a segment's path = {{ ... }}");
+    throw badInput(where("path"),
+                   "path: a scene has either one [path] or a storyboard of [[segment]] entries, "
+                   "not both; move the [path] keys into a segment's path = {{ ... }}");
   const PathKind pk = readPath(path, "path", spec_.path, spec_.surface, "surface");
   const bool pathKindGiven = path != nullptr && path->get("kind") != nullptr;
   if (spec_.plate) {
@@ -485,8 +493,9 @@ SceneSpec Reader::read() {
       failAt(pathKindGiven ? "path.kind" : "surface.kind",
              "with [plate] the contact path is the circle the plate drives; expected path.kind = \"circle\"");
     if (spec_.locations.contains("path.radius"))
-      failAt("path.radius", "conflicts with [plate]: the contact circle's radius follows from plate.radius "
-                            "(R1/2); remove path.radius");
+      failAt("path.radius",
+             "conflicts with [plate]: the contact circle's radius follows from plate.radius "
+             "(R1/2); remove path.radius");
   }
 
   readSegments();
@@ -507,7 +516,7 @@ SceneSpec Reader::read() {
                        adaptiveNames(), key::kMethod, spec_.solver.method, key::kTolerance, key::kSteps));
   if (adaptive && spec_.solver.steps)
     failAt(dotted("solver", key::kSteps), fmt::format("method \"{}\" chooses its own steps; set solver.{} instead",
-                                                  spec_.solver.method, key::kTolerance));
+                                                      spec_.solver.method, key::kTolerance));
 
   // [timeline]
   readKeys(section("timeline", namesOf(timelineKeys())), "timeline", timelineKeys(), spec_.timeline);

@@ -24,8 +24,8 @@ std::string joinKeys(const std::set<std::string>& keys);
 // "KEY: unknown key; did you mean `NEAR`? TABLE accepts: …" (the nearest
 // accepted key when the typed one is a likely typo); "did you mean
 // `colatitude_deg` (in degrees)?" alone for the key without its unit suffix.
-Error unknownKey(const SourceLoc& loc, const std::string& fullKey, const std::string& typed,
-                 const std::string& table, const std::set<std::string>& allowed);
+Error unknownKey(const SourceLoc& loc, const std::string& fullKey, const std::string& typed, const std::string& table,
+                 const std::set<std::string>& allowed);
 // "an image size in [1, 8192] pixels": what a row's messages say it expects.
 std::string expectation(std::string_view noun, std::string_view unitWord, std::string_view expected,
                         const std::optional<Bounds>& bounds);
@@ -103,8 +103,8 @@ class Reader {
   }
   template <class S, class F>
   void readField(const toml::table* t, const std::string& section, const KeyRow<S>& row, S& target, F field);
-  void checkValue(const std::string& full, std::string_view noun, std::string_view unitWord,
-                  std::string_view expected, bool (*accepts)(double), const std::optional<Bounds>& bounds, double v,
+  void checkValue(const std::string& full, std::string_view noun, std::string_view unitWord, std::string_view expected,
+                  bool (*accepts)(double), const std::optional<Bounds>& bounds, double v,
                   const std::string& shown) const {
     if (accepts != nullptr ? accepts(v) : (!bounds || withinBounds(*bounds, v))) return;
     failAt(full, fmt::format("expected {}, got {}", expectation(noun, unitWord, expected, bounds), shown));

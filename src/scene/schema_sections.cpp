@@ -29,8 +29,9 @@ void Reader::readSegments() {
     fail("segment", locOf("segment", *node), "[[segment]] tables (an array of tables)", describeNode(*node));
   spec_.locations["segment"] = locOf("segment", *node);
   if (spec_.plate)
-    failAt("plate", "a storyboard's segments have their own paths; [plate] drives one circle, so it cannot be "
-                    "combined with [[segment]]");
+    failAt("plate",
+           "a storyboard's segments have their own paths; [plate] drives one circle, so it cannot be "
+           "combined with [[segment]]");
   if (entries->size() > kMaxSegments)
     throw badInput(where("segment"), "segment: expected at most {} segments, got {}", kMaxSegments, entries->size());
   for (std::size_t i = 0; i < entries->size(); ++i) {
@@ -87,7 +88,8 @@ void Reader::readSegments() {
     readRow(&table, prefix, rowOf(segmentKeys(), key::kCaption), seg);
     readRow(&table, prefix, rowOf(segmentKeys(), key::kTitle), seg);
     const std::string cameraKey = dotted(prefix, key::kCamera);
-    seg.camera = readCamera(subTable(table, std::string(key::kCamera), cameraKey, namesOf(segmentCameraKeys())), cameraKey);
+    seg.camera =
+        readCamera(subTable(table, std::string(key::kCamera), cameraKey, namesOf(segmentCameraKeys())), cameraKey);
     spec_.segments.back() = std::move(seg);
   }
   // A segment's camera target stops a follow, and follow = true drops a
@@ -95,8 +97,9 @@ void Reader::readSegments() {
   for (std::size_t i = 0; i < spec_.segments.size(); ++i) {
     const CameraSpec& c = spec_.segments[i].camera;
     if (c.target && c.follow && *c.follow)
-      failAt(dotted(dotted(SceneSpec::segmentKey(i), key::kCamera), key::kTarget),
-             fmt::format("conflicts with {} = true in the same camera (the camera then targets the ball)", key::kFollow));
+      failAt(
+          dotted(dotted(SceneSpec::segmentKey(i), key::kCamera), key::kTarget),
+          fmt::format("conflicts with {} = true in the same camera (the camera then targets the ball)", key::kFollow));
   }
 }
 
@@ -107,8 +110,9 @@ void Reader::readSegmentSurface(const toml::table& table, const std::string& pre
   const std::string surfaceKey = dotted(prefix, key::kSurface);
   if (const toml::table* surface = subTable(table, std::string(key::kSurface), surfaceKey, keysOf("surface"))) {
     if (!moves)
-      failAt(surfaceKey, "a hold rests where the previous motion ended, on its surface; give the surface "
-                                  "to the next segment with a path");
+      failAt(surfaceKey,
+             "a hold rests where the previous motion ended, on its surface; give the surface "
+             "to the next segment with a path");
     seg.surface = SurfaceSpec{};
     readSurface(surface, surfaceKey, *seg.surface);
   }
@@ -151,12 +155,15 @@ void Reader::readGlContext(const toml::table* table) {
   if (const toml::node* node = get(table, "render", std::string(key::kDevice))) {
     const SourceLoc at = locOf(device, *node);
     const std::string expected = "an EGL device index (0, 1, …) or a DRM device path (\"/dev/dri/renderD128\")";
-    if (node->is_integer() && node->as_integer()->get() >= 0) spec_.render.device = std::to_string(node->as_integer()->get());
-    else if (node->is_string() && node->as_string()->get().rfind('/', 0) == 0) spec_.render.device = node->as_string()->get();
+    if (node->is_integer() && node->as_integer()->get() >= 0)
+      spec_.render.device = std::to_string(node->as_integer()->get());
+    else if (node->is_string() && node->as_string()->get().rfind('/', 0) == 0)
+      spec_.render.device = node->as_string()->get();
     else fail(device, at, expected, describeNode(*node));
     if (spec_.render.backend && !render::backendTakesDevice(*spec_.render.backend))
       failAt(device, fmt::format("applies to a backend that renders on a device (\"egl\" or \"auto\"), but "
-                                 "render.{} is \"{}\"", key::kBackend, *spec_.render.backend));
+                                 "render.{} is \"{}\"",
+                                 key::kBackend, *spec_.render.backend));
   }
 }
 
@@ -222,8 +229,10 @@ void Reader::readLabels() {
   std::vector<Fact> facts;
   for (std::size_t i = 0; i < list->size(); ++i) {
     const toml::node& e = *list->get(i);
-    const auto it = e.is_string() ? std::find(kFactNames.begin(), kFactNames.end(), e.as_string()->get()) : kFactNames.end();
-    if (it == kFactNames.end()) fail(key, locOf(key, *node), expected, "element " + std::to_string(i) + " = " + describeNode(e));
+    const auto it =
+        e.is_string() ? std::find(kFactNames.begin(), kFactNames.end(), e.as_string()->get()) : kFactNames.end();
+    if (it == kFactNames.end())
+      fail(key, locOf(key, *node), expected, "element " + std::to_string(i) + " = " + describeNode(e));
     const Fact f = static_cast<Fact>(it - kFactNames.begin());
     if (std::find(facts.begin(), facts.end(), f) != facts.end())
       failAt(key, fmt::format("\"{}\" is listed twice", *it));
@@ -244,7 +253,8 @@ void Reader::readAnimation() {
   if (const toml::node* node = get(animation, "animation", std::string(key::kFps))) {
     const std::string expected = fmt::format(
         "frames per second in [{}, {}]: an integer, an NTSC rate 23.976 | 29.97 | 59.94 (exactly 24000/1001 …), a "
-        "decimal with at most 3 places, or a string \"num/den\" such as \"30000/1001\"", kMinFps, kMaxFps);
+        "decimal with at most 3 places, or a string \"num/den\" such as \"30000/1001\"",
+        kMinFps, kMaxFps);
     std::optional<FrameRate> rate;
     if (node->is_integer()) {
       const long long n = node->as_integer()->get();

@@ -41,10 +41,10 @@ enum class PathKind;
 
 struct SurfaceKindRow {
   SurfaceKind kind;
-  std::string_view name;  // kind.name()
-  std::vector<std::string> keys;  // its own keys of [surface] (besides kind)
-  bool ofRevolution;              // parallels lie on it (a paraboloid only when a = b)
-  PathKind defaultPath;           // [path] without a kind
+  std::string_view name;                     // kind.name()
+  std::vector<std::string> keys;             // its own keys of [surface] (besides kind)
+  bool ofRevolution;                         // parallels lie on it (a paraboloid only when a = b)
+  PathKind defaultPath;                      // [path] without a kind
   const geometry::SurfaceKindRow* geometry;  // its keys' declarations and its factory
 };
 

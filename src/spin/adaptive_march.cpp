@@ -24,10 +24,10 @@ constexpr double kA[7][6] = {
     {35.0 / 384, 0.0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84},
 };
 // b₅ − b₄ (the error weights).
-constexpr std::array<double, 7> kE{71.0 / 57600,      0.0,         -71.0 / 16695, 71.0 / 1920,
+constexpr std::array<double, 7> kE{71.0 / 57600,      0.0,        -71.0 / 16695, 71.0 / 1920,
                                    -17253.0 / 339200, 22.0 / 525, -1.0 / 40};
 constexpr double kGaussOffset = 0.38729833462074168852;  // √15/10
-constexpr double kMaxFrameTurn = 2.5;                     // rad per step, < π
+constexpr double kMaxFrameTurn = 2.5;                    // rad per step, < π
 
 struct Quat {
   double v[4];
@@ -87,7 +87,8 @@ struct GaussData {
   double turnRate = 0.0;  // max |d| at the nodes
 };
 Su2 frame6Element(const Su2& phiA, const Su2& phiB, const GaussData& gd, double ballRadius, double h) {
-  const Vec3 g[3] = {{0.0, 1.0 / ballRadius, -gd.kappaG[0]}, {0.0, 1.0 / ballRadius, -gd.kappaG[1]},
+  const Vec3 g[3] = {{0.0, 1.0 / ballRadius, -gd.kappaG[0]},
+                     {0.0, 1.0 / ballRadius, -gd.kappaG[1]},
                      {0.0, 1.0 / ballRadius, -gd.kappaG[2]}};
   Su2 turn = phiB * phiA.conjugate();
   const Su2 predicted = expRotation(h * gd.darbouxMid);
@@ -148,8 +149,7 @@ StepAttempt attemptDormandPrince(const Omega& omega, const Su2& u, double here, 
 // also capped so the frame turns by at most maxFrameTurn. end: the step's
 // end (the breakpoint itself on the segment's last step).
 StepAttempt attemptFrame6a(const geometry::ContactPath& path, double ballRadius, const Su2& u, const Su2& phiStart,
-                           double here, double step, double end, double tolerance, double length,
-                           double maxFrameTurn) {
+                           double here, double step, double end, double tolerance, double length, double maxFrameTurn) {
   StepAttempt t;
   const double half = 0.5 * step;
   const GaussData full = gaussData(path, here, step), left = gaussData(path, here, half),
@@ -254,10 +254,9 @@ SolveStats adaptiveRun(const geometry::ContactPath& path, double ballRadius, Met
       if (!(step > 1e-14 * std::max(1.0, std::abs(b)))) return stop(SolveStatus::StepSizeUnderflow, u);
 
       const double end = last ? b : here + step;
-      const StepAttempt attempt =
-          method == Method::Rk45
-              ? attemptDormandPrince(omega, u, here, step, tolerance)
-              : attemptFrame6a(path, ballRadius, u, phiStart, here, step, end, tolerance, length, maxFrameTurn);
+      const StepAttempt attempt = method == Method::Rk45 ? attemptDormandPrince(omega, u, here, step, tolerance)
+                                                         : attemptFrame6a(path, ballRadius, u, phiStart, here, step,
+                                                                          end, tolerance, length, maxFrameTurn);
       if (attempt.nonFinite) return stop(SolveStatus::NonFinite, attempt.candidate);
       const double factor = attempt.factor;
 

@@ -30,7 +30,7 @@ void fillRotationPowers(RotationPowers& out, const Vec3& darboux, double h) {
 // compiler vectorises them; target_clones adds an AVX2 build picked at run
 // time, with identical results.
 __attribute__((target_clones("avx2", "default"))) Su2 rigidMagnusBlock(int order, double h, const Vec3* anchors,
-                                                                           const RotationPowers& powers) {
+                                                                       const RotationPowers& powers) {
   constexpr std::size_t n = kBlockSteps;
   alignas(64) double ox[n], oy[n], oz[n];
   const double(*r)[n] = powers.m;

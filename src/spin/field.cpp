@@ -12,8 +12,8 @@ template <typename F>
 std::vector<double> integratePerSegment(const geometry::ContactPath& path, F&& f) {
   static constexpr double x[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
                                   0.9061798459386640};
-  static constexpr double wts[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
-                                    0.4786286704993665, 0.2369268850561891};
+  static constexpr double wts[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+                                    0.2369268850561891};
   std::vector<double> cuts{0.0};
   for (double b : path.breakpoints())
     if (b > 0.0 && b < path.length()) cuts.push_back(b);  // as the steppers cut it

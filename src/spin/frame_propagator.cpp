@@ -17,7 +17,7 @@ Su2 frameSpinor(const geometry::DarbouxSample& f) {
 
 Su2 frame4Element(const geometry::ContactPath& path, double ballRadius, double s, double h, double end) {
   constexpr double c = 0.28867513459481288225;  // √3/6: Gauss points ½ ∓ √3/6
-  constexpr double k = 0.14433756729740644113;    // √3/12
+  constexpr double k = 0.14433756729740644113;  // √3/12
   const geometry::DarbouxSample fa = path.at(s), fb = path.at(end);
   const geometry::DarbouxSample f1 = path.at(s + (0.5 - c) * h), f2 = path.at(s + (0.5 + c) * h);
   const Vec3 g1 = frameAngularVelocity(f1, ballRadius), g2 = frameAngularVelocity(f2, ballRadius);

@@ -29,8 +29,7 @@ namespace rollspin::spin {
 // The frame4 step element E with U(s + h) = E U(s). A march passes `end`,
 // its own next node (s + h up to rounding), so that consecutive steps share
 // the frame at their common node and the frame factors telescope.
-[[nodiscard]] Su2 frame4Element(const geometry::ContactPath& path, double ballRadius, double s, double h,
-                                double end);
+[[nodiscard]] Su2 frame4Element(const geometry::ContactPath& path, double ballRadius, double s, double h, double end);
 [[nodiscard]] inline Su2 frame4Element(const geometry::ContactPath& path, double ballRadius, double s, double h) {
   return frame4Element(path, ballRadius, s, h, s + h);
 }

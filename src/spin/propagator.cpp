@@ -6,8 +6,8 @@
 #include <chrono>
 #include <cmath>
 
-#include <Eigen/Geometry>
 #include <fmt/format.h>
+#include <Eigen/Geometry>
 #include <limits>
 
 #include "spin/adaptive_march.hpp"
@@ -23,9 +23,9 @@ namespace {
 struct MethodRow {
   Method method;
   std::string_view name;
-  int order;        // of accuracy (0: exact)
-  bool adaptive;    // chooses its own steps from a tolerance
-  bool geometric;   // multiplies exact SU(2) elements (unitary to round-off)
+  int order;       // of accuracy (0: exact)
+  bool adaptive;   // chooses its own steps from a tolerance
+  bool geometric;  // multiplies exact SU(2) elements (unitary to round-off)
 };
 constexpr std::array<MethodRow, 9> kMethodTable{{
     {Method::Exact, "exact", 0, false, true},
@@ -93,7 +93,11 @@ Propagator::Propagator(const geometry::ContactPath& path, double ballRadius, Met
 
 Propagator::Propagator(const geometry::ContactPath& path, double ballRadius, Method method, long long steps,
                        double tolerance, std::shared_ptr<const SegmentBudgets> budgets)
-    : path_(path), ballRadius_(ballRadius), method_(method), steps_(steps), tolerance_(tolerance),
+    : path_(path),
+      ballRadius_(ballRadius),
+      method_(method),
+      steps_(steps),
+      tolerance_(tolerance),
       budgets_(std::move(budgets)) {
   const bool fixedStep = method_ != Method::Exact && !isAdaptive(method_);
   const auto pieces = path_.pieces();
@@ -527,8 +531,7 @@ void estimateError(const Propagator& solved, SolveStats& stats, double stepBudge
   if (method == Method::Exact) {
     // No grid to halve: the closed form's error is the rounding of its two
     // exponentials' angles, at most a few ε per radian they turn.
-    stats.errorEstimate =
-        8.0 * std::numeric_limits<double>::epsilon() * (1.0 + stepBudget);
+    stats.errorEstimate = 8.0 * std::numeric_limits<double>::epsilon() * (1.0 + stepBudget);
     stats.errorEstimateBasis = "round-off bound of the closed form, 8 eps (1 + integral of |w| + |d| ds)";
   } else {
     const bool adaptive = isAdaptive(method);
@@ -545,7 +548,7 @@ void estimateError(const Propagator& solved, SolveStats& stats, double stepBudge
       otherSteps = 2 * steps;
       otherTolerance = tolerance / 32.0;
       other = adaptive ? Propagator(path, ballRadius, method, 0, otherTolerance).solveFinal()
-                     : solved.withSteps(otherSteps).solveFinal();
+                       : solved.withSteps(otherSteps).solveFinal();
       which = adaptive ? "1/32 of the tolerance" : "twice the steps";
     }
     stats.errorEstimate = other.status == SolveStatus::Ok ? rotationDistance(stats.final, other.final)

@@ -41,9 +41,9 @@
 #include <functional>
 #include <limits>
 #include <memory>
-#include <string>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 

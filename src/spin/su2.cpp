@@ -8,7 +8,7 @@ Mat3 Su2::rotationMatrix() const {
   const double ww = w * w, xx = x * x, yy = y * y, zz = z * z;
   Mat3 m;
   m << ww + xx - yy - zz, 2 * (x * y - w * z), 2 * (x * z + w * y),  //
-      2 * (x * y + w * z), ww - xx + yy - zz, 2 * (y * z - w * x),    //
+      2 * (x * y + w * z), ww - xx + yy - zz, 2 * (y * z - w * x),   //
       2 * (x * z - w * y), 2 * (y * z + w * x), ww - xx - yy + zz;
   return m;
 }

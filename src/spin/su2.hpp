@@ -47,15 +47,25 @@ struct Su2 {
 // relative), libm beyond. Shared by every exponential so that scalar and
 // vectorised steps give bit-identical results.
 inline constexpr double kShortSeriesX2 = 1e-4, kLongSeriesX2 = 0.0625;
-inline double cosHalfShort(double t) { return 1.0 + t * (-1.0 / 2 + t * (1.0 / 24 + t * (-1.0 / 720 + t * (1.0 / 40320)))); }
-inline double sincHalfShort(double t) { return 1.0 + t * (-1.0 / 6 + t * (1.0 / 120 + t * (-1.0 / 5040 + t * (1.0 / 362880)))); }
+inline double cosHalfShort(double t) {
+  return 1.0 + t * (-1.0 / 2 + t * (1.0 / 24 + t * (-1.0 / 720 + t * (1.0 / 40320))));
+}
+inline double sincHalfShort(double t) {
+  return 1.0 + t * (-1.0 / 6 + t * (1.0 / 120 + t * (-1.0 / 5040 + t * (1.0 / 362880))));
+}
 inline double cosHalfLong(double t) {
-  return 1.0 + t * (-1.0 / 2 + t * (1.0 / 24 + t * (-1.0 / 720 + t * (1.0 / 40320 + t * (-1.0 / 3628800 +
-         t * (1.0 / 479001600 + t * (-1.0 / 87178291200.0)))))));
+  return 1.0 +
+         t * (-1.0 / 2 +
+              t * (1.0 / 24 +
+                   t * (-1.0 / 720 + t * (1.0 / 40320 +
+                                          t * (-1.0 / 3628800 + t * (1.0 / 479001600 + t * (-1.0 / 87178291200.0)))))));
 }
 inline double sincHalfLong(double t) {
-  return 1.0 + t * (-1.0 / 6 + t * (1.0 / 120 + t * (-1.0 / 5040 + t * (1.0 / 362880 + t * (-1.0 / 39916800 +
-         t * (1.0 / 6227020800.0 + t * (-1.0 / 1307674368000.0)))))));
+  return 1.0 +
+         t * (-1.0 / 6 +
+              t * (1.0 / 120 + t * (-1.0 / 5040 +
+                                    t * (1.0 / 362880 + t * (-1.0 / 39916800 + t * (1.0 / 6227020800.0 +
+                                                                                    t * (-1.0 / 1307674368000.0)))))));
 }
 
 // exp(−(i/2) v·σ): the spinor of a rotation by |v| about v/|v|.

@@ -31,19 +31,43 @@ const BadCase kCases[] = {
     {"unknown surface kind", "[surface]\nkind = \"cube\"\n", {}, "surface.kind", ":2:", "\"plane\""},
     {"zero normal", "[surface]\nnormal = [0, 0, 0]\n", {}, "surface.normal", ":2:", "non-zero"},
     {"short normal", "[surface]\nnormal = [1, 2]\n", {}, "surface.normal", ":2:", "3 finite numbers"},
-    {"ball does not fit inside", "[ball]\nradius = 3\n[surface]\nkind = \"sphere\"\nradius = 2\nside = \"inside\"\n", {},
-     "ball.radius", ":2:", "does not fit"},
-    {"ball equal to the sphere inside", "[surface]\nkind = \"sphere\"\nradius = 1\nside = \"inside\"\n", {},
-     "surface.radius", ":3:", "does not fit"},
-    {"colatitude zero", "[surface]\nkind = \"sphere\"\n[path]\nkind = \"parallel\"\ncolatitude_deg = 0\n", {},
-     "path.colatitude_deg", ":5:", "(0, 180)"},
-    {"colatitude 180", "[surface]\nkind = \"sphere\"\n[path]\ncolatitude_deg = 180\n", {}, "path.colatitude_deg", ":4:",
+    {"ball does not fit inside",
+     "[ball]\nradius = 3\n[surface]\nkind = \"sphere\"\nradius = 2\nside = \"inside\"\n",
+     {},
+     "ball.radius",
+     ":2:",
+     "does not fit"},
+    {"ball equal to the sphere inside",
+     "[surface]\nkind = \"sphere\"\nradius = 1\nside = \"inside\"\n",
+     {},
+     "surface.radius",
+     ":3:",
+     "does not fit"},
+    {"colatitude zero",
+     "[surface]\nkind = \"sphere\"\n[path]\nkind = \"parallel\"\ncolatitude_deg = 0\n",
+     {},
+     "path.colatitude_deg",
+     ":5:",
      "(0, 180)"},
-    {"circle on a sphere", "[surface]\nkind = \"sphere\"\n[path]\nkind = \"circle\"\n", {}, "path.kind", ":4:",
+    {"colatitude 180",
+     "[surface]\nkind = \"sphere\"\n[path]\ncolatitude_deg = 180\n",
+     {},
+     "path.colatitude_deg",
+     ":4:",
+     "(0, 180)"},
+    {"circle on a sphere",
+     "[surface]\nkind = \"sphere\"\n[path]\nkind = \"circle\"\n",
+     {},
+     "path.kind",
+     ":4:",
      "leave the surface"},
     {"parallel on a plane", "[path]\nkind = \"parallel\"\n", {}, "path.kind", ":2:", "leave the surface"},
-    {"line leaves the plane", "[path]\nkind = \"line\"\ndirection_vector = [1, 0, 1]\n", {}, "path.direction_vector",
-     ":3:", "leaves the surface"},
+    {"line leaves the plane",
+     "[path]\nkind = \"line\"\ndirection_vector = [1, 0, 1]\n",
+     {},
+     "path.direction_vector",
+     ":3:",
+     "leaves the surface"},
     {"negative circle radius", "[path]\nradius = -2\n", {}, "path.radius", ":2:", "> 0"},
     {"zero turns", "[path]\nturns = 0\n", {}, "path.turns", ":2:", "> 0"},
     {"bad direction", "[path]\ndirection = \"left\"\n", {}, "path.direction", ":2:", "\"ccw\""},
@@ -63,8 +87,12 @@ const BadCase kCases[] = {
     {"override unknown key", "", {"ball.weight=3"}, "ball.weight", "--set ball.weight=3", "unknown key"},
     {"override without value", "", {"ball.radius"}, "--set", "--set ball.radius", "key.sub=value"},
     {"override wrong type", "", {"path.radius=abc"}, "path.radius", "--set path.radius=abc", "number"},
-    {"override kind makes file key invalid", "[surface]\nnormal = [0, 1, 0]\n", {"surface.kind=sphere"},
-     "surface.normal", ":2:", "plane"},
+    {"override kind makes file key invalid",
+     "[surface]\nnormal = [0, 1, 0]\n",
+     {"surface.kind=sphere"},
+     "surface.normal",
+     ":2:",
+     "plane"},
     {"override into a non-table", "ball = 3\n", {"ball.radius=2"}, "ball", "--set ball.radius=2", "not a table"},
 };
 
@@ -107,16 +135,16 @@ TEST(BadInput, MissingSceneFileIsBadInput) {
 
 // Refused before the solve: a path that cannot work is the caller's mistake.
 TEST(BadInput, OutputInAMissingFolderIsBadInputAndLeavesNothing) {
-  const auto r = runRollspin({"timeline", (rollspin::test::sourceDir() / "scenes/lollipop.toml").string(), "-o",
-                              "/nonexistent-dir/out.csv"});
+  const auto r = runRollspin(
+      {"timeline", (rollspin::test::sourceDir() / "scenes/lollipop.toml").string(), "-o", "/nonexistent-dir/out.csv"});
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
 }
 
 TEST(BadInput, FullDiskIsReported) {
   if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
-  const auto r = runRollspin(
-      {"timeline", (rollspin::test::sourceDir() / "scenes/lollipop.toml").string(), "-o", "/dev/full"});
+  const auto r =
+      runRollspin({"timeline", (rollspin::test::sourceDir() / "scenes/lollipop.toml").string(), "-o", "/dev/full"});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("write failed"), std::string::npos) << r.err;
 }
@@ -149,7 +177,8 @@ TEST(BadInput, ARefusedCommandCreatesNoOutputFolder) {
     const auto dir = freshTempDir("no_output_folder");
     const auto r = runRollspin(args, dir);
     EXPECT_EQ(r.exitCode, 2) << line << "\n" << r.err;
-    EXPECT_TRUE(std::filesystem::is_empty(dir)) << line << ": left " << std::filesystem::directory_iterator(dir)->path();
+    EXPECT_TRUE(std::filesystem::is_empty(dir))
+        << line << ": left " << std::filesystem::directory_iterator(dir)->path();
     std::filesystem::remove_all(dir);
   }
 }
@@ -158,7 +187,8 @@ TEST(BadInput, ARefusedCommandCreatesNoOutputFolder) {
 // 8192x8192 as MP4 is refused with the limit and the formats that hold it.
 TEST(BadInput, AnMp4BeyondH264sLargestFrameNamesTheLimitAndTheFormatsThatHoldIt) {
   const auto dir = freshTempDir("h264_limit");
-  const auto r = runRollspin({"render", "lollipop", "--width", "8192", "--height", "8192", "-o", (dir / "big.mp4").string()});
+  const auto r =
+      runRollspin({"render", "lollipop", "--width", "8192", "--height", "8192", "-o", (dir / "big.mp4").string()});
   EXPECT_EQ(r.exitCode, 2) << r.err;
   for (const char* part : {"--height", "8192x8192", "262144 macroblocks", "level 6.2", "139264", "8192x4320",
                            "\"mov\" (ProRes)", "\"webm\"", "PNG frames"})

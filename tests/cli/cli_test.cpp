@@ -40,8 +40,8 @@ double jsonNumber(const std::string& json, const std::string& key) {
 TEST(Cli, SolveJsonHasEveryKeyAndTheLollipopAngle) {
   const auto r = runRollspin({"solve", scenePath("lollipop.toml"), "--json"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  for (const char* key : {"length", "method", "steps", "quaternion", "angle", "axis", "spinor_angle",
-                          "unitarity_error", "solve_seconds"})
+  for (const char* key :
+       {"length", "method", "steps", "quaternion", "angle", "axis", "spinor_angle", "unitarity_error", "solve_seconds"})
     EXPECT_NE(r.out.find(std::string("\"") + key + "\""), std::string::npos) << key;
   // δ = 2π√10 reduced to [0, π].
   const double delta = 2 * std::numbers::pi * std::sqrt(10.0);
@@ -51,8 +51,8 @@ TEST(Cli, SolveJsonHasEveryKeyAndTheLollipopAngle) {
 }
 
 TEST(Cli, SetOverridesTheScene) {
-  const auto r = runRollspin({"solve", scenePath("lollipop.toml"), "--json", "--set", "path.radius=1",
-                              "--set", "solver.method=exact"});
+  const auto r = runRollspin(
+      {"solve", scenePath("lollipop.toml"), "--json", "--set", "path.radius=1", "--set", "solver.method=exact"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NEAR(jsonNumber(r.out, "length"), 2 * std::numbers::pi, 1e-12);
   EXPECT_NE(r.out.find("\"exact\""), std::string::npos);
@@ -63,14 +63,14 @@ TEST(Cli, TimelineHasTheNamedColumnsAndShowsTheSpinorSign) {
   const auto out = dir / "t.csv";
   // r/R = √3: δ = 4π per circuit. Over two circuits the SO(3) rotation is the
   // identity after each, but q runs from +1 through −1 back to +1.
-  const auto r = runRollspin({"timeline", scenePath("lollipop.toml"), "-o", out.string(), "--set",
-                              "path.radius=1.7320508075688772", "--set", "path.turns=2", "--set",
-                              "timeline.samples=241"});
+  const auto r =
+      runRollspin({"timeline", scenePath("lollipop.toml"), "-o", out.string(), "--set",
+                   "path.radius=1.7320508075688772", "--set", "path.turns=2", "--set", "timeline.samples=241"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto rows = readCsv(out);
   ASSERT_EQ(rows.size(), 242u);
-  const std::vector<std::string> named{"s", "px", "py", "pz", "nx", "ny", "nz", "cx", "cy", "cz",
-                                       "qw", "qx", "qy", "qz", "Bx", "By", "Bz"};
+  const std::vector<std::string> named{"s",  "px", "py", "pz", "nx", "ny", "nz", "cx", "cy",
+                                       "cz", "qw", "qx", "qy", "qz", "Bx", "By", "Bz"};
   for (std::size_t i = 0; i < named.size(); ++i) EXPECT_EQ(rows[0][i], named[i]);
   auto qw = [&](std::size_t row) { return std::stod(rows[row][10]); };
   EXPECT_NEAR(qw(1), 1.0, 1e-15);
@@ -84,8 +84,8 @@ TEST(Cli, TimelineHasTheNamedColumnsAndShowsTheSpinorSign) {
 }
 
 TEST(Cli, EveryFoundationSceneSolves) {
-  for (const char* name : {"lollipop.toml", "wall.toml", "tennis-ball.toml", "sphere-outside.toml",
-                           "sphere-inside.toml", "penny.toml"}) {
+  for (const char* name :
+       {"lollipop.toml", "wall.toml", "tennis-ball.toml", "sphere-outside.toml", "sphere-inside.toml", "penny.toml"}) {
     const auto r = runRollspin({"solve", scenePath(name), "--json"});
     EXPECT_EQ(r.exitCode, 0) << name << "\n" << r.err;
   }
@@ -130,11 +130,11 @@ TEST(ScenePrint, EverySceneRoundTripsThroughItsPrintedForm) {
 TEST(ScenePrint, ShowsDefaultsOverridesAndDerivedValues) {
   const auto r = runRollspin({"scene", scenePath("tennis-ball.toml"), "--print", "--set", "ball.radius=0.5"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(r.out.find("radius = 0.5"), std::string::npos);                  // the override
-  EXPECT_NE(r.out.find("direction = \"ccw\""), std::string::npos);            // a default
-  EXPECT_NE(r.out.find("derived: R1/2 = 1"), std::string::npos) << r.out;     // Brockett's circle
-  EXPECT_NE(r.out.find("# steps = automatic: "), std::string::npos);         // the automatic step count
-  EXPECT_EQ(r.out.find("colatitude_deg"), std::string::npos);                // keys of other kinds are not shown
+  EXPECT_NE(r.out.find("radius = 0.5"), std::string::npos);                // the override
+  EXPECT_NE(r.out.find("direction = \"ccw\""), std::string::npos);         // a default
+  EXPECT_NE(r.out.find("derived: R1/2 = 1"), std::string::npos) << r.out;  // Brockett's circle
+  EXPECT_NE(r.out.find("# steps = automatic: "), std::string::npos);       // the automatic step count
+  EXPECT_EQ(r.out.find("colatitude_deg"), std::string::npos);              // keys of other kinds are not shown
 }
 
 // render.backend and render.device (the GL context): printed when set, a
@@ -146,7 +146,7 @@ TEST(ScenePrint, GlContextKeysRoundTrip) {
   EXPECT_NE(unset.out.find("# backend = ROLLSPIN_GL, else \"auto\""), std::string::npos) << unset.out;
   EXPECT_NE(unset.out.find("# device = ROLLSPIN_EGL_DEVICE, else the first GPU"), std::string::npos) << unset.out;
   for (const std::vector<std::string>& set : {std::vector<std::string>{"render.backend=\"egl\"", "render.device=1"},
-                                             {"render.backend=\"auto\"", "render.device=\"/dev/dri/renderD128\""}}) {
+                                              {"render.backend=\"auto\"", "render.device=\"/dev/dri/renderD128\""}}) {
     const auto first = runRollspin({"scene", scenePath("lollipop.toml"), "--print", "--set", set[0], "--set", set[1]});
     ASSERT_EQ(first.exitCode, 0) << first.err;
     const std::string device = set[1].substr(set[1].find('=') + 1);
@@ -184,8 +184,8 @@ TEST(Cli, ErrorEstimateCanBeSkippedByItsKey) {
   EXPECT_NE(text.out.find("error estimate   skipped (solver.error_estimate = false)"), std::string::npos) << text.out;
   const auto dir = freshTempDir("no-estimate");
   const auto out = dir / "t.csv";
-  const auto tl = runRollspin({"timeline", scenePath("lollipop.toml"), "-o", out.string(), "--set",
-                               "solver.error_estimate=false"});
+  const auto tl =
+      runRollspin({"timeline", scenePath("lollipop.toml"), "-o", out.string(), "--set", "solver.error_estimate=false"});
   ASSERT_EQ(tl.exitCode, 0) << tl.err;
   // The CSV starts with its header row; the estimate is in the sidecar, and
   // in the '#' line above the header row with --comment-header.

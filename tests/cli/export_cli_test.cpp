@@ -36,18 +36,20 @@ TEST(ExportCli, WritesTheDefaultGlbAndAGltfWithItsBin) {
   EXPECT_TRUE(has(json, "\"uri\": \"p.bin\"")) << json.substr(0, 400);
   EXPECT_TRUE(has(json, "radius = 0.625")) << "the resolved scene, --set included, in the ball's extras";
   EXPECT_GT(fs::file_size(dir / "p.bin"), 1000u);
-  const auto bare = test::runRollspin(
-      {"export", test::shippedScenePath("penny"), "--no-metadata", "-o", (dir / "q.gltf").string()});
+  const auto bare =
+      test::runRollspin({"export", test::shippedScenePath("penny"), "--no-metadata", "-o", (dir / "q.gltf").string()});
   ASSERT_EQ(bare.exitCode, 0) << bare.err;
   EXPECT_FALSE(has(test::readFile(dir / "q.gltf"), "radius =")) << "--no-metadata leaves the scene out";
-  EXPECT_EQ(entries(dir), (std::vector<std::string>{"output", "output/penny.glb", "p.bin", "p.gltf", "q.bin", "q.gltf"}));
+  EXPECT_EQ(entries(dir),
+            (std::vector<std::string>{"output", "output/penny.glb", "p.bin", "p.gltf", "q.bin", "q.gltf"}));
 }
 
 TEST(ExportCli, BadInputIsExitTwoWithTheReasonAndNothingWritten) {
   const fs::path dir = test::freshTempDir("export_cli_bad");
-  std::ofstream(dir / "dome.toml") << "[ball]\nradius = 0.5\n[surface]\nkind = \"height\"\nz = \"sqrt(9 - x^2 - y^2)\"\n"
-                                      "[path]\nkind = \"uv\"\nu = \"2*cos(t)\"\nv = \"2*sin(t)\"\nt_start = 0\n"
-                                      "t_end = 6.283185307179586\n";
+  std::ofstream(dir / "dome.toml")
+      << "[ball]\nradius = 0.5\n[surface]\nkind = \"height\"\nz = \"sqrt(9 - x^2 - y^2)\"\n"
+         "[path]\nkind = \"uv\"\nu = \"2*cos(t)\"\nv = \"2*sin(t)\"\nt_start = 0\n"
+         "t_end = 6.283185307179586\n";
   const std::string lollipop = test::shippedScenePath("lollipop");
   const struct {
     std::vector<std::string> args;
@@ -74,8 +76,8 @@ TEST(ExportCli, InterruptLeavesNothing) {
   const fs::path dir = test::freshTempDir("export_cli_interrupt");
   // A clip of 5.5 hours: 600 000 frames, seconds of work, long enough to stop.
   for (const char* name : {"long.glb", "long.gltf"}) {
-    test::SpawnedRollspin child({"export", test::shippedScenePath("lollipop"), "--set", "animation.duration=20000", "-v",
-                                 "-o", (dir / name).string()},
+    test::SpawnedRollspin child({"export", test::shippedScenePath("lollipop"), "--set", "animation.duration=20000",
+                                 "-v", "-o", (dir / name).string()},
                                 dir.parent_path() / "export_cli_interrupt.stderr");
     const fs::path err = dir.parent_path() / "export_cli_interrupt.stderr";
     EXPECT_TRUE(child.waitUntil([&] { return has(test::readFile(err), "stage: gltf-keys"); })) << test::readFile(err);

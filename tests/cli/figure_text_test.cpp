@@ -9,13 +9,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
-#include <sstream>
 #include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
-#include "support/pdf_text_boxes.hpp"
 #include "support/cli_runner.hpp"
+#include "support/pdf_text_boxes.hpp"
 #include "support/sweep.hpp"
 #include "support/test_files.hpp"
 
@@ -41,13 +41,16 @@ TEST(FigureText, EveryScenesFigureKeepsItsTextApartAndOnThePageAtJournalSizes) {
   for (const auto& [scene, extra] : cases)
     for (const double mm : {60.0, 85.0, 120.0, 175.0})
       for (const double pt : {6.0, 8.0, 10.0}) {
-        const bool strobeSize = std::find(strobeSizes.begin(), strobeSizes.end(), std::pair{mm, pt}) != strobeSizes.end();
+        const bool strobeSize =
+            std::find(strobeSizes.begin(), strobeSizes.end(), std::pair{mm, pt}) != strobeSizes.end();
         if (extra.empty() ? !(mm == 85.0 && pt == 8.0) : !strobeSize) continue;
         const std::filesystem::path pdf = dir / ("f" + std::to_string(figures++) + ".pdf");
-        std::vector<std::string> args{"render", scene, "--still", "-o", pdf.string(), "--quiet", "--set",
-                                      "figure.width_mm=" + std::to_string(mm), "--set",
-                                      "figure.font_size_pt=" + std::to_string(pt), "--set",
-                                      "figure.font=Latin Modern Roman"};
+        std::vector<std::string> args{"render",     scene,
+                                      "--still",    "-o",
+                                      pdf.string(), "--quiet",
+                                      "--set",      "figure.width_mm=" + std::to_string(mm),
+                                      "--set",      "figure.font_size_pt=" + std::to_string(pt),
+                                      "--set",      "figure.font=Latin Modern Roman"};
         args.insert(args.end(), extra.begin(), extra.end());
         const test::CliResult r = test::runRollspin(args);
         ASSERT_EQ(r.exitCode, 0) << scene << " " << mm << " mm " << pt << " pt: " << r.err;
@@ -69,19 +72,22 @@ TEST(FigureText, EveryScenesFigureKeepsItsTextApartAndOnThePageAtJournalSizes) {
 
 TEST(FigureText, TheDefaultBodyTextIsBetweenSevenAndNinePointsAtAnyWidth) {
   const std::filesystem::path dir = test::freshTempDir("figure_text_default");
-  for (const std::string width : {"figure.width_mm=60", "figure.width=column", "figure.width_mm=120", "figure.width=page"}) {
+  for (const std::string width :
+       {"figure.width_mm=60", "figure.width=column", "figure.width_mm=120", "figure.width=page"}) {
     const test::CliResult r = test::runRollspin({"--verbose", "render", test::shippedScenePath("lollipop"), "--still",
                                                  "-o", (dir / "f.pdf").string(), "--set", width});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     std::smatch m;
-    ASSERT_TRUE(std::regex_search(r.err, m, std::regex(R"(figure: ([0-9]+) mm wide, body text ([0-9.]+) pt)"))) << r.err;
+    ASSERT_TRUE(std::regex_search(r.err, m, std::regex(R"(figure: ([0-9]+) mm wide, body text ([0-9.]+) pt)")))
+        << r.err;
     const double pt = std::stod(m[2]);
     EXPECT_GE(pt, 7.0) << width;
     EXPECT_LE(pt, 9.0) << width;
   }
   // The presets are the journals' widths, and a preset with a width conflicts.
-  const test::CliResult column = test::runRollspin({"--verbose", "render", test::shippedScenePath("lollipop"), "--still",
-                                                    "-o", (dir / "c.pdf").string(), "--set", "figure.width=column"});
+  const test::CliResult column =
+      test::runRollspin({"--verbose", "render", test::shippedScenePath("lollipop"), "--still", "-o",
+                         (dir / "c.pdf").string(), "--set", "figure.width=column"});
   EXPECT_NE(column.err.find("figure: 85 mm wide"), std::string::npos) << column.err;
   const test::CliResult both =
       test::runRollspin({"render", test::shippedScenePath("lollipop"), "--still", "-o", (dir / "b.pdf").string(),
@@ -100,7 +106,8 @@ struct LeftOutEntry {
 
 std::vector<LeftOutEntry> leftOutOf(const std::string& json) {
   std::vector<LeftOutEntry> entries;
-  const std::regex entry(R"re(\{"text": "([^"]*)", "kept_at_width_mm": ([0-9.]+|null), "kept_at_font_size_pt": ([0-9.]+|null)\})re");
+  const std::regex entry(
+      R"re(\{"text": "([^"]*)", "kept_at_width_mm": ([0-9.]+|null), "kept_at_font_size_pt": ([0-9.]+|null)\})re");
   for (auto it = std::sregex_iterator(json.begin(), json.end(), entry); it != std::sregex_iterator(); ++it) {
     auto number = [](const std::string& v) { return v == "null" ? std::nullopt : std::optional<double>(std::stod(v)); };
     entries.push_back({(*it)[1], number((*it)[2]), number((*it)[3])});
@@ -121,10 +128,10 @@ bool drawn(const std::string& json, const std::string& text) {
 TEST(FigureText, ATextLeftOutIsNamedWithTheWidthAndTheSizeThatKeepIt) {
   const std::filesystem::path dir = test::freshTempDir("figure_left_out");
   auto figure = [&](const std::string& width, const std::string& name) {
-    const test::CliResult r = test::runRollspin({"render", test::shippedScenePath("torus"), "--still", "-o",
-                                                 (dir / (name + ".pdf")).string(), "--set", "render.dpi=60", "--set",
-                                                 "figure.width_mm=" + width, "--set", "figure.font_size_pt=8",
-                                                 "--layout-json", (dir / (name + ".json")).string()});
+    const test::CliResult r =
+        test::runRollspin({"render", test::shippedScenePath("torus"), "--still", "-o", (dir / (name + ".pdf")).string(),
+                           "--set", "render.dpi=60", "--set", "figure.width_mm=" + width, "--set",
+                           "figure.font_size_pt=8", "--layout-json", (dir / (name + ".json")).string()});
     EXPECT_EQ(r.exitCode, 0) << r.err;
     return std::pair{r.err, test::readFile(dir / (name + ".json"))};
   };

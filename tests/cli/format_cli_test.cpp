@@ -172,8 +172,8 @@ TEST(FormatCli, JpegStillsAndFormatsThatDoNotFitAreExitTwo) {
   const media::Image a = media::loadImage(dir / "still.jpg", {}), b = media::loadImage(dir / "still.png", {});
   const Difference d = compare(a, b);
   EXPECT_LE(d.colour, 3.0) << "quality 92";
-  auto low = std::vector<std::string>{"render", lollipop(), "--still", "--set", "render.jpeg_quality=30", "-o",
-                                      (dir / "low.jpg").string()};
+  auto low = std::vector<std::string>{
+      "render", lollipop(), "--still", "--set", "render.jpeg_quality=30", "-o", (dir / "low.jpg").string()};
   low.insert(low.end(), size.begin(), size.end());
   ASSERT_EQ(test::runRollspin(low).exitCode, 0);
   EXPECT_LT(fs::file_size(dir / "low.jpg"), bytes.size());
@@ -214,8 +214,8 @@ TEST(FormatCli, GifDefaultsToA480PixelWide25FpsLoopAndFramesWork) {
 
   // --frames: a part of a WebM and of a GIF, each with just its frames.
   for (const char* ext : {"webm", "gif"}) {
-    const auto p = test::runRollspin(clip({"render", lollipop(), "--frames", "3:8", "-o",
-                                           (dir / fmt::format("part.{}", ext)).string()}));
+    const auto p = test::runRollspin(
+        clip({"render", lollipop(), "--frames", "3:8", "-o", (dir / fmt::format("part.{}", ext)).string()}));
     ASSERT_EQ(p.exitCode, 0) << p.err;
     EXPECT_EQ(test::probeVideo(dir / fmt::format("part.{}", ext)).ptsSeconds.size(), 6u) << ext;
   }

@@ -25,8 +25,8 @@ TEST(Gallery, EverySceneRendersAStill) {
   for (const fs::path& file : test::sweep(test::bundledSceneFiles())) {
     const std::string name = file.stem().string();
     const fs::path out = dir / (name + ".png");
-    const auto r = test::runRollspin({"render", file.string(), "--still", "--width", "192", "--height", "108",
-                                      "--verbose", "-o", out.string()});
+    const auto r = test::runRollspin(
+        {"render", file.string(), "--still", "--width", "192", "--height", "108", "--verbose", "-o", out.string()});
     ASSERT_EQ(r.exitCode, 0) << name << ": " << r.err;
     const media::Image img = media::loadImage(out, {});
     EXPECT_EQ(img.width, 192) << name;
@@ -45,19 +45,22 @@ TEST(Gallery, EverySceneRendersAStill) {
 TEST(Gallery, FactsAreComputedOnlyWhenTheImageShowsThem) {
   const fs::path dir = test::freshTempDir("gallery_facts");
   auto factsRan = [&](const std::string& name, const std::vector<std::string>& sets) {
-    std::vector<std::string> args{"render", (test::sourceDir() / "scenes" / (name + ".toml")).string(), "--still",
-                                  "--width", "96", "--height", "54", "--verbose", "-o", (dir / "a.png").string()};
+    std::vector<std::string> args{"render",  (test::sourceDir() / "scenes" / (name + ".toml")).string(),
+                                  "--still", "--width",
+                                  "96",      "--height",
+                                  "54",      "--verbose",
+                                  "-o",      (dir / "a.png").string()};
     for (const auto& s : sets) args.insert(args.end(), {"--set", s});
     const auto r = test::runRollspin(args);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     return r.err.find("rollspin: stage: facts") != std::string::npos;
   };
   EXPECT_TRUE(factsRan("lollipop", {}));
-  EXPECT_FALSE(factsRan("lollipop", {"render.labels=false"}));       // delta is text only
-  EXPECT_FALSE(factsRan("lollipop", {"render.layout=twin"}));        // its lines belong to the ball view
-  EXPECT_TRUE(factsRan("tennis-ball", {"render.labels=false"}));     // the marks are drawn
+  EXPECT_FALSE(factsRan("lollipop", {"render.labels=false"}));    // delta is text only
+  EXPECT_FALSE(factsRan("lollipop", {"render.layout=twin"}));     // its lines belong to the ball view
+  EXPECT_TRUE(factsRan("tennis-ball", {"render.labels=false"}));  // the marks are drawn
   EXPECT_FALSE(factsRan("tennis-ball", {"render.layout=twin"}));
-  EXPECT_TRUE(factsRan("berry", {"render.labels=false"}));           // the cone of B in the twin
+  EXPECT_TRUE(factsRan("berry", {"render.labels=false"}));  // the cone of B in the twin
   EXPECT_FALSE(factsRan("berry", {"render.labels=false", "render.layout=ball"}));
 }
 

@@ -49,7 +49,8 @@ TEST(GlBackend, AutoRendersThroughEglWhenOsMesaIsBroken) {
   // Not a library at all: dlopen fails on it.
   const fs::path dir = test::freshTempDir("gl_broken_osmesa");
   std::ofstream(dir / "libOSMesa.so.8") << "not an ELF file";
-  const auto r = renderSmall(dir / "a.png", {"ROLLSPIN_GL=auto", "ROLLSPIN_OSMESA_LIBRARY=" + (dir / "libOSMesa.so.8").string()});
+  const auto r =
+      renderSmall(dir / "a.png", {"ROLLSPIN_GL=auto", "ROLLSPIN_OSMESA_LIBRARY=" + (dir / "libOSMesa.so.8").string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(has(r.err, "gl: backend     egl")) << r.err;
 }
@@ -112,16 +113,16 @@ TEST(GlBackend, SceneKeyWinsOverTheEnvironmentAndSetWinsOverTheFile) {
                                 << "\"\n[render]\nbackend = \"osmesa\"\n";
   const std::string file = (dir / "s.toml").string();
   auto backendOf = [&](const std::string& sceneFile, std::vector<std::string> extra) {
-    std::vector<std::string> args{"render", sceneFile, "--still", "--width", "32", "--height", "24", "-o",
-                                  (dir / "a.png").string(), "--verbose"};
+    std::vector<std::string> args{
+        "render", sceneFile, "--still", "--width", "32", "--height", "24", "-o", (dir / "a.png").string(), "--verbose"};
     args.insert(args.end(), extra.begin(), extra.end());
     const auto r = test::runRollspin(args, {}, 0, {"ROLLSPIN_GL=egl"});
     EXPECT_EQ(r.exitCode, 0) << r.err;
     return has(r.err, "gl: backend     egl") ? "egl" : has(r.err, "gl: backend     osmesa") ? "osmesa" : "?";
   };
   EXPECT_STREQ(backendOf(test::renderTestScenePath("twin_only"), {}), "egl");  // no key: the variable
-  EXPECT_STREQ(backendOf(file, {}), "osmesa");          // the key wins over the variable
-  EXPECT_STREQ(backendOf(file, {"--set", "render.backend=egl"}), "egl");  // --set wins over the file
+  EXPECT_STREQ(backendOf(file, {}), "osmesa");                                 // the key wins over the variable
+  EXPECT_STREQ(backendOf(file, {"--set", "render.backend=egl"}), "egl");       // --set wins over the file
 }
 
 TEST(GlBackend, UnknownNamesExitTwoNamingTheChoices) {
@@ -217,7 +218,9 @@ TEST(GlBackend, EachFailureExitsOneWithTheReasonAndWhatToTry) {
        {"eglInitialize on the surfaceless platform failed: EGL_NOT_INITIALIZED", "ROLLSPIN_GL=osmesa"},
        true},
       // A driver without OpenGL 4.5 (Mesa capped at 3.3).
-      {{"ROLLSPIN_GL=egl", "MESA_GL_VERSION_OVERRIDE=3.3"}, {"eglCreateContext (OpenGL 4.5 core)", "EGL_BAD_MATCH"}, true},
+      {{"ROLLSPIN_GL=egl", "MESA_GL_VERSION_OVERRIDE=3.3"},
+       {"eglCreateContext (OpenGL 4.5 core)", "EGL_BAD_MATCH"},
+       true},
       // auto with nothing that works: every backend's reason.
       {{"ROLLSPIN_GL=auto", kMissingOsMesa, kMissingEgl},
        {"no GL backend could make an OpenGL 4.5 core context", "osmesa: cannot load", "egl: cannot load"}},

@@ -30,8 +30,8 @@ namespace fs = std::filesystem;
 // a coverage sample on an edge pixel (up to a full sample of 4, i.e. ~64
 // levels at a high-contrast edge). So: a single pixel may move a lot, the
 // image as a whole may not.
-constexpr int kMaxDelta = 96;          // one MSAA coverage sample on a high-contrast edge, plus text hinting
-constexpr double kMeanDelta = 0.6;     // levels per channel averaged over the image: a few edges, not content
+constexpr int kMaxDelta = 96;       // one MSAA coverage sample on a high-contrast edge, plus text hinting
+constexpr double kMeanDelta = 0.6;  // levels per channel averaged over the image: a few edges, not content
 // Rounding drift (a level or two, e.g. a different FMA path in the sRGB
 // encode) may touch most pixels; a visible change may not. So: at most 1 %
 // of the pixels may differ by more than 16 levels in some channel.
@@ -57,8 +57,9 @@ bool regenerate() {
 fs::path renderScene(const std::string& name, const std::vector<std::string>& extra, const std::string& backend = "") {
   const fs::path dir = test::freshTempDir("golden_" + name + (backend.empty() ? "" : "_" + backend));
   const fs::path out = dir / (name + ".png");
-  std::vector<std::string> args{"render", (test::sourceDir() / "tests/render/scenes" / (name + ".toml")).string(),
-                                "--still", "-o", out.string(), "--verbose"};
+  std::vector<std::string> args{"render",     (test::sourceDir() / "tests/render/scenes" / (name + ".toml")).string(),
+                                "--still",    "-o",
+                                out.string(), "--verbose"};
   args.insert(args.end(), extra.begin(), extra.end());
   std::vector<std::string> env;
   if (!backend.empty()) env.push_back("ROLLSPIN_GL=" + backend);

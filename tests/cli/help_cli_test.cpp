@@ -59,8 +59,9 @@ TEST(ScenesCommand, ListsEveryBundledSceneWithOneLine) {
   }
   EXPECT_GE(listed, 10);
   // The description is the first sentence of the file's leading comment, abbreviations kept.
-  EXPECT_TRUE(has(r.out, "The lollipop (Rojo & Bloch, sec. IV): a ball of radius R rolls once, counter-clockwise, "
-                         "around a circle of radius r on the floor.\n"))
+  EXPECT_TRUE(has(r.out,
+                  "The lollipop (Rojo & Bloch, sec. IV): a ball of radius R rolls once, counter-clockwise, "
+                  "around a circle of radius r on the floor.\n"))
       << r.out;
   const auto names = runRollspin({"scenes", "--names"});
   ASSERT_EQ(names.exitCode, 0);
@@ -163,8 +164,8 @@ TEST(Help, ManPageAndCompletionsCoverEveryCommand) {
   ASSERT_EQ(bash.exitCode, 0) << bash.err;
   ASSERT_EQ(zsh.exitCode, 0) << zsh.err;
   EXPECT_TRUE(man.out.starts_with(".TH ROLLSPIN 1")) << man.out.substr(0, 200);
-  for (const char* command : {"solve", "timeline", "scene", "render", "compare", "report", "info", "join", "export",
-                              "keys", "scenes"}) {
+  for (const char* command :
+       {"solve", "timeline", "scene", "render", "compare", "report", "info", "join", "export", "keys", "scenes"}) {
     EXPECT_TRUE(has(man.out, std::string(".SS \"rollspin ") + command)) << command;
     EXPECT_TRUE(has(bash.out, std::string("\"") + command + "\")")) << command;
     EXPECT_TRUE(has(zsh.out, std::string("(") + command + ") _rollspin_cmd_")) << command;

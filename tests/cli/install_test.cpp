@@ -20,9 +20,9 @@ using rollspin::test::freshTempDir;
 
 TEST(Install, LaysOutATool) {
   const fs::path prefix = freshTempDir("install_prefix");
-  const std::string install = "\"" + rollspin::test::cmakeCommand() + "\" --install \"" + rollspin::test::buildDir().string() +
-                              "\" --prefix \"" + prefix.string() + "\" > \"" + (prefix / "install.log").string() +
-                              "\" 2>&1";
+  const std::string install = "\"" + rollspin::test::cmakeCommand() + "\" --install \"" +
+                              rollspin::test::buildDir().string() + "\" --prefix \"" + prefix.string() + "\" > \"" +
+                              (prefix / "install.log").string() + "\" 2>&1";
   ASSERT_EQ(std::system(install.c_str()), 0) << rollspin::test::readFile(prefix / "install.log");
   EXPECT_TRUE(fs::is_regular_file(prefix / "bin" / "rollspin"));
   EXPECT_TRUE(fs::is_regular_file(prefix / "share" / "rollspin" / "scenes" / "lollipop.toml"));
@@ -40,11 +40,12 @@ TEST(Install, LaysOutATool) {
                              "\" render lollipop --still --width 320 --height 180 -o x.png --quiet > render.log 2>&1";
   ASSERT_EQ(std::system(render.c_str()), 0) << rollspin::test::readFile(elsewhere / "render.log");
   EXPECT_GT(fs::file_size(elsewhere / "x.png"), 1000u);
-  const std::string scenes = "\"" + (prefix / "bin" / "rollspin").string() + "\" scenes > \"" +
-                             (elsewhere / "scenes.txt").string() + "\"";
+  const std::string scenes =
+      "\"" + (prefix / "bin" / "rollspin").string() + "\" scenes > \"" + (elsewhere / "scenes.txt").string() + "\"";
   ASSERT_EQ(std::system(scenes.c_str()), 0);
-  EXPECT_NE(rollspin::test::readFile(elsewhere / "scenes.txt").find((prefix / "share" / "rollspin" / "scenes").string()),
-            std::string::npos)
+  EXPECT_NE(
+      rollspin::test::readFile(elsewhere / "scenes.txt").find((prefix / "share" / "rollspin" / "scenes").string()),
+      std::string::npos)
       << rollspin::test::readFile(elsewhere / "scenes.txt");
 }
 
@@ -55,8 +56,9 @@ TEST(Install, LaysOutATool) {
 // and MTIME is 0), and its text unchanged.
 TEST(Install, UnderUsrLaysOutTheDebianPackage) {
   const fs::path stage = freshTempDir("install_deb_stage");
-  const std::string install = "DESTDIR=\"" + stage.string() + "\" \"" + rollspin::test::cmakeCommand() + "\" --install \"" +
-                              rollspin::test::buildDir().string() + "\" --prefix /usr > \"" + (stage / "install.log").string() + "\" 2>&1";
+  const std::string install = "DESTDIR=\"" + stage.string() + "\" \"" + rollspin::test::cmakeCommand() +
+                              "\" --install \"" + rollspin::test::buildDir().string() + "\" --prefix /usr > \"" +
+                              (stage / "install.log").string() + "\" 2>&1";
   ASSERT_EQ(std::system(install.c_str()), 0) << rollspin::test::readFile(stage / "install.log");
   const fs::path usr = stage / "usr";
   EXPECT_TRUE(fs::is_regular_file(usr / "share" / "zsh" / "vendor-completions" / "_rollspin"));
@@ -66,9 +68,9 @@ TEST(Install, UnderUsrLaysOutTheDebianPackage) {
   const std::string roff = rollspin::test::readFile(page);
 
   const fs::path script = rollspin::test::sourceDir() / "scripts" / "cpack_deb_man_pages.cmake";
-  const std::string compress = "\"" + rollspin::test::cmakeCommand() + "\" -DCPACK_GENERATOR=DEB -DCPACK_TEMPORARY_DIRECTORY=\"" +
-                               stage.string() + "\" -P \"" + script.string() + "\" > \"" +
-                               (stage / "compress.log").string() + "\" 2>&1";
+  const std::string compress = "\"" + rollspin::test::cmakeCommand() +
+                               "\" -DCPACK_GENERATOR=DEB -DCPACK_TEMPORARY_DIRECTORY=\"" + stage.string() + "\" -P \"" +
+                               script.string() + "\" > \"" + (stage / "compress.log").string() + "\" 2>&1";
   ASSERT_EQ(std::system(compress.c_str()), 0) << rollspin::test::readFile(stage / "compress.log");
   EXPECT_FALSE(fs::exists(page));
   const fs::path gz = usr / "share" / "man" / "man1" / "rollspin.1.gz";

@@ -75,7 +75,8 @@ TEST(Messages, AnExplicitSetWinsOverAQualityPresetAndSaysSo) {
                                     "animation.fps=29.97", "--frames", "0:0", "-o", (dir / "q.mp4").string()});
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("--quality low would set animation.fps=15; keeping --set animation.fps=29.97"),
-            std::string::npos) << r.err;
+            std::string::npos)
+      << r.err;
   EXPECT_NE(r.err.find("854x480 @ 30000/1001"), std::string::npos) << "the preset's size, the explicit rate: " << r.err;
 }
 
@@ -89,7 +90,8 @@ TEST(Messages, VersionNamesTheReleaseAndWithVerboseTheBackend) {
   const auto v = test::runRollspin({"--version", "--verbose"});
   EXPECT_EQ(v.exitCode, 0);
   // The backend a render would get (ROLLSPIN_GL chooses in CI's second pass) and its GL version.
-  EXPECT_TRUE(v.out.find("GL backend: osmesa") != std::string::npos || v.out.find("GL backend: egl") != std::string::npos)
+  EXPECT_TRUE(v.out.find("GL backend: osmesa") != std::string::npos ||
+              v.out.find("GL backend: egl") != std::string::npos)
       << v.out;
   EXPECT_NE(v.out.find("4.5 (Core Profile)"), std::string::npos) << v.out;
 }
@@ -102,8 +104,8 @@ namespace {
 TEST(Messages, SpinorAngleAtAHalfTurnIsTheSameForEveryMethod) {
   const std::string scene = (test::sourceDir() / "scenes" / "sphere-inside.toml").string();
   for (const char* method : {"exact", "magnus4", "frame4", "magnus6", "rk4"}) {
-    const auto r = test::runRollspin({"solve", scene, "--set", "ball.radius=0.75", "--set",
-                                      std::string("solver.method=") + method, "--json"});
+    const auto r = test::runRollspin(
+        {"solve", scene, "--set", "ball.radius=0.75", "--set", std::string("solver.method=") + method, "--json"});
     ASSERT_EQ(r.exitCode, 0) << method << r.err;
     const auto at = r.out.find("\"spinor_angle\": ");
     ASSERT_NE(at, std::string::npos) << r.out;

@@ -203,8 +203,9 @@ long deadPid() {
 TEST(StaleTemporaries, TheNextRunToTheSameNameRemovesThoseOfDeadProcessesOnly) {
   const fs::path dir = test::freshTempDir("stale_temporaries");
   const std::string dead = std::to_string(deadPid()), alive = std::to_string(getpid());
-  for (const std::string& name : std::vector<std::string>{".t.csv." + dead + ".tmp", ".t.csv." + alive + ".tmp", ".t.csv.12ab.tmp",
-                                 ".u.csv." + dead + ".tmp", ".clip.mp4." + dead + ".tmp"})
+  for (const std::string& name :
+       std::vector<std::string>{".t.csv." + dead + ".tmp", ".t.csv." + alive + ".tmp", ".t.csv.12ab.tmp",
+                                ".u.csv." + dead + ".tmp", ".clip.mp4." + dead + ".tmp"})
     std::ofstream(dir / name) << "half";
   fs::create_directories(dir / (".frames." + dead + ".tmp"));
   std::ofstream(dir / (".frames." + dead + ".tmp") / "frame_00000.png") << "half";
@@ -222,8 +223,13 @@ TEST(StaleTemporaries, TheNextRunToTheSameNameRemovesThoseOfDeadProcessesOnly) {
   std::vector<std::string> top;
   for (const auto& e : fs::directory_iterator(dir)) top.push_back(e.path().filename().string());
   std::sort(top.begin(), top.end());
-  std::vector<std::string> expected{".t.csv." + alive + ".tmp", ".t.csv.12ab.tmp", ".u.csv." + dead + ".tmp",
-                                    "clip.mp4", "frames", "t.csv", "t.csv.json"};
+  std::vector<std::string> expected{".t.csv." + alive + ".tmp",
+                                    ".t.csv.12ab.tmp",
+                                    ".u.csv." + dead + ".tmp",
+                                    "clip.mp4",
+                                    "frames",
+                                    "t.csv",
+                                    "t.csv.json"};
   std::sort(expected.begin(), expected.end());
   EXPECT_EQ(top, expected) << "dead-owner temporaries of these names go; a live owner's, other names and other "
                               "patterns stay";

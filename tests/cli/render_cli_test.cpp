@@ -2,8 +2,8 @@
 // exit codes and messages for bad input.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string_view>
 
@@ -76,8 +76,8 @@ TEST(RenderCli, CameraAndLayoutOptionsRender) {
 TEST(RenderCli, ContextFailureExitsOne) {
   const fs::path dir = test::freshTempDir("cli_nocontext");
   ::setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1);
-  for (const auto& [backend, message] : {std::pair{"osmesa", "OSMesa could not create"},
-                                         std::pair{"egl", "eglCreateContext (OpenGL 4.5 core)"}}) {
+  for (const auto& [backend, message] :
+       {std::pair{"osmesa", "OSMesa could not create"}, std::pair{"egl", "eglCreateContext (OpenGL 4.5 core)"}}) {
     // A GPU's EGL driver ignores Mesa's cap: nothing to provoke there.
     if (std::string_view(backend) == "egl" && test::eglDevicesHere().hardware) continue;
     const auto r =
@@ -202,7 +202,8 @@ TEST(CompareCli, ToleratesPixelsSsimAlternatesAndSpeaksJson) {
   const auto sized = run({p("a.png"), p("small.png"), "--diff", p("sized.png")});
   EXPECT_EQ(sized.exitCode, 1);
   EXPECT_NE(sized.err.find("rollspin: size mismatch: " + p("a.png") + " is 20x10, " + p("small.png") + " is 10x10"),
-            std::string::npos) << sized.err;
+            std::string::npos)
+      << sized.err;
   EXPECT_EQ(media::loadImage(dir / "sized.png", {}).width, 20);
 
   // An unwritable --diff is 2, never the "differ" code; nothing is compared.
@@ -212,9 +213,9 @@ TEST(CompareCli, ToleratesPixelsSsimAlternatesAndSpeaksJson) {
 
   const auto json = run({p("a.png"), p("b.png"), p("a.png"), "--json", "--max-pixels", "1"});
   EXPECT_EQ(json.exitCode, 0);
-  for (const std::string& field :
-       {std::string("\"pass\": true"), "\"matched\": \"" + p("a.png") + "\"", std::string("\"pixels_over_max_delta\": 3"),
-        std::string("\"max_pixels\": \"1\""), std::string("\"ssim\": 1.000000000"), std::string("\"max_delta\": [2, 0, 0, 0]")})
+  for (const std::string& field : {std::string("\"pass\": true"), "\"matched\": \"" + p("a.png") + "\"",
+                                   std::string("\"pixels_over_max_delta\": 3"), std::string("\"max_pixels\": \"1\""),
+                                   std::string("\"ssim\": 1.000000000"), std::string("\"max_delta\": [2, 0, 0, 0]")})
     EXPECT_NE(json.out.find(field), std::string::npos) << field << " in\n" << json.out;
 }
 

@@ -25,9 +25,8 @@ bool has(const std::string& text, const std::string& part) { return text.find(pa
 class OutsideTheClone : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("rollspin-scene-files-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() / ("rollspin-scene-files-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -56,8 +55,10 @@ TEST_F(OutsideTheClone, AMissingBaseSaysWhereItLooked) {
   write("mine.toml", "extends = \"storybord\"\n");
   const auto r = runRollspin({"scene", "mine.toml", "--print"}, dir_, 0, {"ROLLSPIN_SCENE_PATH=/nonexistent/scenes"});
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_TRUE(has(r.err, "mine.toml:1:11: extends: cannot read the scene file 'storybord': there is none; looked in "
-                         "the folder of mine.toml (" + fs::canonical(dir_).string() + "), /nonexistent/scenes"))
+  EXPECT_TRUE(has(r.err,
+                  "mine.toml:1:11: extends: cannot read the scene file 'storybord': there is none; looked in "
+                  "the folder of mine.toml (" +
+                      fs::canonical(dir_).string() + "), /nonexistent/scenes"))
       << r.err;
   EXPECT_TRUE(has(r.err, (sourceDir() / "scenes").string())) << r.err;
   EXPECT_TRUE(has(r.err, "did you mean 'storyboard'?")) << r.err;
@@ -84,7 +85,8 @@ TEST_F(OutsideTheClone, AKeyWithoutItsUnitSuggestsIt) {
   write("sphere.toml", "extends = \"sphere-outside\"\n\n[path]\ncolatitude = 60\n");
   const auto r = runRollspin({"solve", "sphere.toml"}, dir_);
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_TRUE(has(r.err, "sphere.toml:4:14: path.colatitude: unknown key; did you mean `colatitude_deg` (in degrees)?\n"))
+  EXPECT_TRUE(
+      has(r.err, "sphere.toml:4:14: path.colatitude: unknown key; did you mean `colatitude_deg` (in degrees)?\n"))
       << r.err;
 }
 

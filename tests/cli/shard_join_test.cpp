@@ -91,8 +91,7 @@ class ShardJoin : public ::testing::Test {
     dir_ = new fs::path(test::freshTempDir("shard_join"));
     std::string command = "parallel --will-cite -q --halt now,fail=1 -j3 " + shellQuote(test::binaryPath().string());
     for (const std::string& a :
-         tiny({"render", scene("lollipop.toml"), "--shard", "{}/3", "-o", (*dir_ / "parts" / "clip.mp4").string()}))
-    {
+         tiny({"render", scene("lollipop.toml"), "--shard", "{}/3", "-o", (*dir_ / "parts" / "clip.mp4").string()})) {
       command += ' ';  // two appends: GCC 12 warns (-Wrestrict, a false positive) on " " + string here
       command += shellQuote(a);
     }
@@ -149,7 +148,8 @@ TEST_F(ShardJoin, ShardsAreNamedToSortAndTaggedWithTheirRange) {
   }
   // The hash is of the resolved text, so `scene --print`'s input changes it.
   const fs::path other = test::freshTempDir("shard_join_hash") / "other.mp4";
-  auto args = tiny({"render", scene("lollipop.toml"), "--frames", "0:1", "--set", "path.radius=2", "-o", other.string()});
+  auto args =
+      tiny({"render", scene("lollipop.toml"), "--frames", "0:1", "--set", "path.radius=2", "-o", other.string()});
   ASSERT_EQ(test::runRollspin(args).exitCode, 0);
   EXPECT_NE(formatTags(other)["rollspin_scene_sha256"], sceneHash);
 }
@@ -241,10 +241,10 @@ TEST_F(ShardJoin, MovAndWebmPartsJoinTheSameWay) {
     std::vector<std::string> args{"join"};
     for (int k = 1; k <= 3; ++k) {
       const fs::path p = d / fmt::format("clip.part-{}-of-3.{}", k, ext);
-      const std::string codec = std::string(ext) == "mov" ? "-c copy -movflags +use_metadata_tags"
-                                                          : "-c:v libvpx-vp9 -crf 40 -b:v 0 -g 1000";
-      const std::string convert = "ffmpeg -nostdin -v error -i " + shellQuote(part(k).string()) +
-                                  " -map_metadata 0 " + codec + " " + shellQuote(p.string());
+      const std::string codec =
+          std::string(ext) == "mov" ? "-c copy -movflags +use_metadata_tags" : "-c:v libvpx-vp9 -crf 40 -b:v 0 -g 1000";
+      const std::string convert = "ffmpeg -nostdin -v error -i " + shellQuote(part(k).string()) + " -map_metadata 0 " +
+                                  codec + " " + shellQuote(p.string());
       ASSERT_EQ(std::system(convert.c_str()), 0) << convert;
       args.push_back(p.string());
     }
@@ -289,9 +289,8 @@ TEST_F(ShardJoin, JoinRefusesPartsThatDoNotBelongTogether) {
 
   SCOPED_TRACE("another size");
   const fs::path big = test::freshTempDir("shard_join_size") / "clip.part-2-of-3.mp4";
-  const auto bigger =
-      test::runRollspin(tiny({"render", scene("lollipop.toml"), "--shard", "2/3", "-o", big.parent_path() / "clip.mp4"},
-                             "192x108"));
+  const auto bigger = test::runRollspin(
+      tiny({"render", scene("lollipop.toml"), "--shard", "2/3", "-o", big.parent_path() / "clip.mp4"}, "192x108"));
   ASSERT_EQ(bigger.exitCode, 0) << bigger.err;
   expectRefused({part(1), big, part(3)}, big, "is 192x108, but");
 
@@ -313,8 +312,8 @@ TEST_F(ShardJoin, JoinRefusesPartsThatDoNotBelongTogether) {
 TEST(Shard, BadShardArgumentsAreRefused) {
   const fs::path dir = test::freshTempDir("shard_bad");
   for (const char* bad : {"0/3", "4/3", "3", "a/b", "1/0"}) {
-    const auto r = test::runRollspin(
-        tiny({"render", scene("lollipop.toml"), "--shard", bad, "-o", (dir / "c.mp4").string()}));
+    const auto r =
+        test::runRollspin(tiny({"render", scene("lollipop.toml"), "--shard", bad, "-o", (dir / "c.mp4").string()}));
     EXPECT_EQ(r.exitCode, 2) << bad;
     EXPECT_NE(r.err.find(std::string("--shard ") + bad), std::string::npos) << r.err;
   }
@@ -333,7 +332,8 @@ TEST(Shard, BadShardArgumentsAreRefused) {
 TEST(Shard, PngShardsFillTheClipsFolderLikeAFullRender) {
   const fs::path dir = test::freshTempDir("shard_png");
   for (const char* k : {"2/3", "1/3", "3/3"}) {
-    const auto r = test::runRollspin(tiny({"render", scene("lollipop.toml"), "--shard", k, "-o", (dir / "f").string()}));
+    const auto r =
+        test::runRollspin(tiny({"render", scene("lollipop.toml"), "--shard", k, "-o", (dir / "f").string()}));
     ASSERT_EQ(r.exitCode, 0) << r.err;
   }
   ASSERT_EQ(filesIn(dir / "f").size(), static_cast<std::size_t>(kClipFrames));

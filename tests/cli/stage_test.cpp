@@ -56,15 +56,16 @@ TEST(Stages, BallOnlyStillBuildsNoTwinAndNoEncoder) {
                            "render.layout=ball", "-o", (dir / "a.png").string()});
   for (const char* want : {"scene", "model", "solver", "surface-mesh", "gl-context", "shadow-map", "png"})
     EXPECT_TRUE(has(s, want)) << want;
-  for (const char* unwanted : {"twin-geometry", "encoder", "png-frames", "strobe"}) EXPECT_FALSE(has(s, unwanted)) << unwanted;
+  for (const char* unwanted : {"twin-geometry", "encoder", "png-frames", "strobe"})
+    EXPECT_FALSE(has(s, unwanted)) << unwanted;
 }
 
 TEST(Stages, TwinOnlyStillWithoutLabelsBuildsNoSurfaceTextureShadowOrFont) {
   const auto dir = freshTempDir("stages");
-  const auto s = stagesOf({"render", scene("sphere-outside.toml"), "--still", "--width", "160", "--height", "90",
-                           "--set", "render.layout=twin", "--set", "render.labels=false", "--set",
-                           "ball.texture=" + (sourceDir() / "docs").string() + "/none.png", "-o",
-                           (dir / "b.png").string()});
+  const auto s =
+      stagesOf({"render", scene("sphere-outside.toml"), "--still", "--width", "160", "--height", "90", "--set",
+                "render.layout=twin", "--set", "render.labels=false", "--set",
+                "ball.texture=" + (sourceDir() / "docs").string() + "/none.png", "-o", (dir / "b.png").string()});
   EXPECT_TRUE(has(s, "twin-geometry"));
   for (const char* unwanted : {"surface-mesh", "ball-texture", "shadow-map", "font", "encoder"})
     EXPECT_FALSE(has(s, unwanted)) << unwanted;
@@ -72,9 +73,9 @@ TEST(Stages, TwinOnlyStillWithoutLabelsBuildsNoSurfaceTextureShadowOrFont) {
 
 TEST(Stages, StrobeWithoutTrailsOrShadow) {
   const auto dir = freshTempDir("stages");
-  const auto s = stagesOf({"render", scene("tennis-ball.toml"), "--still", "--width", "160", "--height", "90",
-                           "--set", "render.strobe=5", "--set", "render.trails=false", "--set",
-                           "render.shadow=false", "-o", (dir / "c.png").string()});
+  const auto s = stagesOf({"render", scene("tennis-ball.toml"), "--still", "--width", "160", "--height", "90", "--set",
+                           "render.strobe=5", "--set", "render.trails=false", "--set", "render.shadow=false", "-o",
+                           (dir / "c.png").string()});
   EXPECT_TRUE(has(s, "strobe"));
   for (const char* unwanted : {"trails", "shadow-map", "encoder"}) EXPECT_FALSE(has(s, unwanted)) << unwanted;
 }

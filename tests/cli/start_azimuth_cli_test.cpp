@@ -32,7 +32,8 @@ TEST(StartAzimuthCli, ATorusParallelsTimelineStartsAtTheGivenAzimuth) {
   EXPECT_EQ(s, 0.0);
   EXPECT_NEAR(std::atan2(py, px), std::numbers::pi / 2, 1e-12) << first;
 
-  const auto printed = runRollspin({"scene", shippedScenePath("torus"), "--print", "--set", "path.start_azimuth_deg=90"});
+  const auto printed =
+      runRollspin({"scene", shippedScenePath("torus"), "--print", "--set", "path.start_azimuth_deg=90"});
   ASSERT_EQ(printed.exitCode, 0) << printed.err;
   EXPECT_NE(printed.out.find("start_azimuth_deg = 90"), std::string::npos) << printed.out;
 }

@@ -20,8 +20,8 @@ using rollspin::test::sourceDir;
 namespace {
 
 const rollspin::test::BadScene kBad[] = {
-    {"path and segments", "[path]\nkind = \"line\"\n[[segment]]\npath = { kind = \"line\" }\n", "path", ":1:1:",
-     "not both"},
+    {"path and segments", "[path]\nkind = \"line\"\n[[segment]]\npath = { kind = \"line\" }\n", "path",
+     ":1:1:", "not both"},
     {"neither path nor hold", "[[segment]]\ncaption = \"nothing\"\n", "segment[1]", ":1:1:", "hold = SECONDS"},
     {"path and hold", "[[segment]]\npath = { kind = \"line\" }\nhold = 2\n", "segment[1].hold", ":3:8:", "not both"},
     {"unknown key", "[[segment]]\nhold = 1\nwait = 2\n", "segment[1].wait", ":3:8:", "unknown key"},
@@ -30,8 +30,8 @@ const rollspin::test::BadScene kBad[] = {
     {"heading of a later plane segment",
      "[[segment]]\npath = { kind = \"line\" }\n[[segment]]\npath = { kind = \"line\", direction_vector = [0, 1, 0] }\n",
      "segment[2].path.direction_vector", ":4:44:", "tangent-continuous"},
-    {"path kind off the surface", "[[segment]]\npath = { kind = \"parallel\" }\n", "segment[1].path.kind", ":2:17:",
-     "leave the surface"},
+    {"path kind off the surface", "[[segment]]\npath = { kind = \"parallel\" }\n", "segment[1].path.kind",
+     ":2:17:", "leave the surface"},
     {"segments that do not meet on a sphere",
      "[surface]\nkind = \"sphere\"\nradius = 4\n[[segment]]\npath = { kind = \"meridian\", colatitude_start_deg = 30, "
      "colatitude_end_deg = 60 }\n[[segment]]\npath = { kind = \"parallel\", colatitude_deg = 50 }\n",
@@ -45,12 +45,14 @@ const rollspin::test::BadScene kBad[] = {
      ":3:19:", "unknown key"},
     {"camera elevation", "[[segment]]\npath = { kind = \"line\" }\ncamera = { elevation_deg = 95 }\n",
      "segment[1].camera.elevation_deg", ":3:28:", "(-90, 90)"},
-    {"camera follows and targets", "[[segment]]\npath = { kind = \"line\" }\ncamera = { follow = true, target = [0, 0, 0] }\n",
+    {"camera follows and targets",
+     "[[segment]]\npath = { kind = \"line\" }\ncamera = { follow = true, target = [0, 0, 0] }\n",
      "segment[1].camera.target", ":3:36:", "follow"},
-    {"plate and segments", "[plate]\nradius = 2\n[[segment]]\npath = { kind = \"circle\" }\n", "plate", ":1:1:",
-     "cannot be combined"},
+    {"plate and segments", "[plate]\nradius = 2\n[[segment]]\npath = { kind = \"circle\" }\n", "plate",
+     ":1:1:", "cannot be combined"},
     {"segment is not an array of tables", "segment = 3\n", "segment", ":1:11:", "[[segment]]"},
-    {"only holds", "[[segment]]\nhold = 1\n[[segment]]\nhold = 2\n", "segment", ":1:1:", "at least one segment with a path"},
+    {"only holds", "[[segment]]\nhold = 1\n[[segment]]\nhold = 2\n", "segment",
+     ":1:1:", "at least one segment with a path"},
     {"expression in a segment's path", "[[segment]]\npath = { kind = \"uv\", u = \"t +* 2\" }\n", "segment[1].path.u",
      ":2:31:", "cannot parse"},
 };
@@ -93,7 +95,7 @@ TEST(StoryboardCli, TimelineRunsOnThroughTheSegmentsAndNamesEachRowsSegment) {
     }
   }
   EXPECT_EQ(rows, 2001);
-  EXPECT_EQ(seen, (std::vector<int>{1, 2, 4}));  // the hold (3) has no arc length
+  EXPECT_EQ(seen, (std::vector<int>{1, 2, 4}));             // the hold (3) has no arc length
   EXPECT_NEAR(lastS, 7.0 + 6.0 * std::numbers::pi, 1e-12);  // s is cumulative
   const auto solved = runRollspin({"solve", storyboard(), "--json"});
   ASSERT_EQ(solved.exitCode, 0) << solved.err;
@@ -104,9 +106,9 @@ TEST(StoryboardCli, PrintShowsTheResolvedSegmentsAndReadsBack) {
   const auto dir = freshTempDir("storyboard_print");
   const auto first = runRollspin({"scene", storyboard(), "--print"});
   ASSERT_EQ(first.exitCode, 0) << first.err;
-  for (const char* text : {"# segment 1: s 0 to 4 (length 4) in 3 s, 90 frames", "[[segment]]", "[segment.path]",
-                           "[segment.camera]", "hold = 2.5", "follow = true",
-                           "# segment 3: rests at s = 22.8496 for 2.5 s, 75 frames"})
+  for (const char* text :
+       {"# segment 1: s 0 to 4 (length 4) in 3 s, 90 frames", "[[segment]]", "[segment.path]", "[segment.camera]",
+        "hold = 2.5", "follow = true", "# segment 3: rests at s = 22.8496 for 2.5 s, 75 frames"})
     EXPECT_NE(first.out.find(text), std::string::npos) << text << "\n" << first.out;
   EXPECT_EQ(first.out.find("\n[path]"), std::string::npos) << "a storyboard has no [path]";
   // Later plane segments continue from the previous end: no direction printed.
@@ -151,8 +153,9 @@ TEST(StoryboardCli, ExtendsReplacesThePathOrTheSegmentsAsAWhole) {
   std::ofstream(dir / "from_lollipop.toml") << "extends = \"" << scenes << "/lollipop.toml\"\n"
                                             << "[[segment]]\npath = { kind = \"line\", length = 2 }\n";
   // A child storyboard: its one segment replaces all four of the parent's.
-  std::ofstream(dir / "short.toml") << "extends = \"" << storyboard() << "\"\n"
-                                    << "[[segment]]\npath = { kind = \"circle\", radius = 2 }\ncaption = \"only this\"\n";
+  std::ofstream(dir / "short.toml")
+      << "extends = \"" << storyboard() << "\"\n"
+      << "[[segment]]\npath = { kind = \"circle\", radius = 2 }\ncaption = \"only this\"\n";
   // A child with a [path]: the parent's segments give way.
   std::ofstream(dir / "plain.toml") << "extends = \"" << storyboard() << "\"\n[path]\nkind = \"line\"\nlength = 5\n";
   const auto a = runRollspin({"scene", (dir / "from_lollipop.toml").string(), "--print"});
@@ -163,12 +166,14 @@ TEST(StoryboardCli, ExtendsReplacesThePathOrTheSegmentsAsAWhole) {
   ASSERT_EQ(b.exitCode, 0) << b.err;
   EXPECT_EQ(b.out.find("# segment 2"), std::string::npos) << b.out;
   EXPECT_NE(b.out.find("caption = \"only this\""), std::string::npos) << b.out;
-  EXPECT_NE(b.out.find("title = \"A rolling ball is a spin-1/2 in a field\""), std::string::npos);  // the rest is inherited
+  EXPECT_NE(b.out.find("title = \"A rolling ball is a spin-1/2 in a field\""),
+            std::string::npos);  // the rest is inherited
   const auto c = runRollspin({"solve", (dir / "plain.toml").string(), "--json"});
   ASSERT_EQ(c.exitCode, 0) << c.err;
   EXPECT_NE(c.out.find("\"length\": 5,"), std::string::npos) << c.out;
   // A bad key in the parent's segment still names the parent's file and line.
-  std::ofstream(dir / "bad_parent.toml") << "[[segment]]\nhold = 1\n[[segment]]\npath = { kind = \"line\", length = 0 }\n";
+  std::ofstream(dir / "bad_parent.toml")
+      << "[[segment]]\nhold = 1\n[[segment]]\npath = { kind = \"line\", length = 0 }\n";
   std::ofstream(dir / "child.toml") << "extends = \"bad_parent.toml\"\n[ball]\nradius = 2\n";
   const auto d = runRollspin({"solve", (dir / "child.toml").string()});
   EXPECT_EQ(d.exitCode, 2);
@@ -188,10 +193,10 @@ TEST(StoryboardCli, SetReachesIntoASegment) {
     const char* arg;
     const char* message;
   };
-  for (const Bad& b : {Bad{"segment[2].path.radius=-4", "segment[2].path.radius: expected a radius > 0"},
-                       Bad{"segment[7].caption=x", "the scene has 4 segment entries"},
-                       Bad{"segment[0].caption=x", "counted from 1"},
-                       Bad{"segment[2].path.wobble=1", "segment[2].path.wobble: unknown key"}}) {
+  for (const Bad& b :
+       {Bad{"segment[2].path.radius=-4", "segment[2].path.radius: expected a radius > 0"},
+        Bad{"segment[7].caption=x", "the scene has 4 segment entries"}, Bad{"segment[0].caption=x", "counted from 1"},
+        Bad{"segment[2].path.wobble=1", "segment[2].path.wobble: unknown key"}}) {
     const auto bad = runRollspin({"solve", storyboard(), "--set", b.arg});
     EXPECT_EQ(bad.exitCode, 2) << b.arg;
     EXPECT_NE(bad.err.find(std::string("--set ") + b.arg), std::string::npos) << bad.err;

@@ -85,8 +85,8 @@ TEST(StoryboardVideo, HeldFramesAfterACameraMoveMatchAPartStartingThere) {
 // 0.25).
 std::vector<std::string> lecture(std::vector<std::string> args) {
   args.insert(args.begin() + 1, (test::sourceDir() / "scenes/torus-to-floor.toml").string());
-  for (const char* s : {"render.width=96", "render.height=64", "animation.fps=4", "animation.hold=0",
-                        "segment[3].fade_seconds=1"}) {
+  for (const char* s :
+       {"render.width=96", "render.height=64", "animation.fps=4", "animation.hold=0", "segment[3].fade_seconds=1"}) {
     args.push_back("--set");
     args.push_back(s);
   }

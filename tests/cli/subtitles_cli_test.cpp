@@ -63,7 +63,8 @@ std::vector<Cue> parseCues(const std::string& document) {
     for (++i; i < lines.size() && !lines[i].empty(); ++i) cue.text += (cue.text.empty() ? "" : "\n") + lines[i];
     --i;
     for (const auto& [entity, c] : {std::pair{"&lt;", "<"}, {"&gt;", ">"}, {"&amp;", "&"}})
-      for (std::size_t p; (p = cue.text.find(entity)) != std::string::npos;) cue.text.replace(p, std::strlen(entity), c);
+      for (std::size_t p; (p = cue.text.find(entity)) != std::string::npos;)
+        cue.text.replace(p, std::strlen(entity), c);
     cues.push_back(cue);
   }
   return cues;
@@ -130,16 +131,18 @@ std::string commandOutput(const std::string& command) {
 
 // What ffprobe says of the first subtitle stream: "codec,default-flag".
 std::string probeSubtitleStream(const fs::path& video) {
-  std::string out = commandOutput("ffprobe -v error -select_streams s -show_entries stream=codec_name:"
-                                  "stream_disposition=default -of csv=p=0 " + shellQuote(video.string()));
+  std::string out = commandOutput(
+      "ffprobe -v error -select_streams s -show_entries stream=codec_name:"
+      "stream_disposition=default -of csv=p=0 " +
+      shellQuote(video.string()));
   while (!out.empty() && (out.back() == '\n' || out.back() == ',')) out.pop_back();
   return out;
 }
 
 // The in-band track, converted to WebVTT by the ffmpeg tool.
 std::vector<Cue> trackCues(const fs::path& video) {
-  return parseCues(commandOutput("ffmpeg -nostdin -v error -i " + shellQuote(video.string()) +
-                                 " -map 0:s:0 -f webvtt -"));
+  return parseCues(
+      commandOutput("ffmpeg -nostdin -v error -i " + shellQuote(video.string()) + " -map 0:s:0 -f webvtt -"));
 }
 
 bool haveFfmpegTools() { return std::system("command -v ffmpeg >/dev/null && command -v ffprobe >/dev/null") == 0; }
@@ -236,13 +239,16 @@ TEST(SubtitlesCli, BurnCaptionsFalseLeavesTheTextOutOfThePixels) {
   // the hold 4 (frames 6 … 9) at s = 2, closing hold 2: frames 5 and 6 show
   // one pose under two captions.
   auto frames = [&](const char* folder, const char* burn) {
-    std::vector<std::string> args{"render", scene.string(), "--frames", "5:6", "-o", (dir / folder).string(), "--quiet"};
+    std::vector<std::string> args{"render", scene.string(),          "--frames", "5:6",
+                                  "-o",     (dir / folder).string(), "--quiet"};
     if (burn != nullptr) args.insert(args.end(), {"--set", std::string("render.burn_captions=") + burn});
     const auto r = test::runRollspin(args);
     EXPECT_EQ(r.exitCode, 0) << r.err;
-    return std::pair{test::readFile(dir / folder / "frame_00005.png"), test::readFile(dir / folder / "frame_00006.png")};
+    return std::pair{test::readFile(dir / folder / "frame_00005.png"),
+                     test::readFile(dir / folder / "frame_00006.png")};
   };
-  const auto burned = frames("default", nullptr), explicitTrue = frames("true", "true"), bare = frames("false", "false");
+  const auto burned = frames("default", nullptr), explicitTrue = frames("true", "true"),
+             bare = frames("false", "false");
   ASSERT_FALSE(burned.first.empty());
   EXPECT_NE(burned.first, burned.second) << "the caption change should show in the default's pixels";
   EXPECT_TRUE(explicitTrue == burned) << "burn_captions = true must be the default's pixels";
@@ -250,8 +256,8 @@ TEST(SubtitlesCli, BurnCaptionsFalseLeavesTheTextOutOfThePixels) {
   EXPECT_NE(bare.first, burned.first);
   // The clip's track is then the only caption: flagged to show unasked.
   const fs::path video = dir / "two.webm";
-  const auto r = test::runRollspin({"render", scene.string(), "-o", video.string(), "--quiet", "--set",
-                                    "render.burn_captions=false"});
+  const auto r = test::runRollspin(
+      {"render", scene.string(), "-o", video.string(), "--quiet", "--set", "render.burn_captions=false"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(probeSubtitleStream(video), "webvtt,1");
   // Opening hold + line: frames 0 … 5 (0 – 1.5 s); the hold and the closing hold: 6 … 11 (1.5 – 3 s).

@@ -29,7 +29,8 @@ const rollspin::test::BadScene kBad[] = {
      "\"sphere\" }\ntransition = \"wipe\"\n",
      "segment[2].transition", ":6:14:", "\"cut\""},
     {"path off the segment's surface",
-     "[[segment]]\npath = { kind = \"line\" }\n[[segment]]\npath = { kind = \"line\" }\nsurface = { kind = \"sphere\" }\n",
+     "[[segment]]\npath = { kind = \"line\" }\n[[segment]]\npath = { kind = \"line\" }\nsurface = { kind = \"sphere\" "
+     "}\n",
      "segment[2].path.kind", ":4:17:", "segment[2].surface.kind is \"sphere\""},
     {"a surface key of another kind",
      "[[segment]]\npath = { kind = \"line\" }\n[[segment]]\npath = { kind = \"parallel\" }\nsurface = { kind = "
@@ -62,7 +63,9 @@ TEST(SurfaceChangeCli, TimelineHasASurfaceColumnAndQRunsOnAcrossTheCut) {
   std::getline(csv, line);  // the header row (the method is in t.csv.json)
   EXPECT_TRUE(line.ends_with("tau_g,segment,surface")) << line;
   const std::vector<std::string> names = fields(line);
-  auto column = [&](const std::string& name) { return std::size_t(std::find(names.begin(), names.end(), name) - names.begin()); };
+  auto column = [&](const std::string& name) {
+    return std::size_t(std::find(names.begin(), names.end(), name) - names.begin());
+  };
   std::vector<std::vector<double>> rows;
   while (std::getline(csv, line)) {
     std::vector<double> row;
@@ -96,8 +99,8 @@ TEST(SurfaceChangeCli, TimelineHasASurfaceColumnAndQRunsOnAcrossTheCut) {
   }
   EXPECT_EQ(cuts, 1);
   // One surface: no surface column (the storyboard keeps its header).
-  const auto one = runRollspin({"timeline", (sourceDir() / "scenes/storyboard.toml").string(), "-o",
-                                (dir / "one.csv").string()});
+  const auto one =
+      runRollspin({"timeline", (sourceDir() / "scenes/storyboard.toml").string(), "-o", (dir / "one.csv").string()});
   ASSERT_EQ(one.exitCode, 0) << one.err;
   EXPECT_NE(rollspin::test::readFile(dir / "one.csv").find("tau_g,segment\n"), std::string::npos);
 }
@@ -106,8 +109,9 @@ TEST(SurfaceChangeCli, PrintNamesEachSegmentsSurfaceAndReadsBack) {
   const auto dir = freshTempDir("surface_change_print");
   const auto first = runRollspin({"scene", torusToFloor(), "--print"});
   ASSERT_EQ(first.exitCode, 0) << first.err;
-  for (const char* text : {"[segment.surface]\nkind = \"plane\"", "on surface 0 (a torus)", "on surface 1 (a plane)",
-                           "transition = \"fade\"", "fade_seconds = 0.5", "# surface = surface 1 (a plane), as segment[3].surface"})
+  for (const char* text :
+       {"[segment.surface]\nkind = \"plane\"", "on surface 0 (a torus)", "on surface 1 (a plane)",
+        "transition = \"fade\"", "fade_seconds = 0.5", "# surface = surface 1 (a plane), as segment[3].surface"})
     EXPECT_NE(first.out.find(text), std::string::npos) << text << "\n" << first.out;
   const auto printed = dir / "printed.toml";
   std::ofstream(printed) << first.out;

@@ -51,8 +51,8 @@ TEST(VideoCli, Mp4HasH264Bt709TheRightFramesAndMatchesTheStill) {
   // 1.1 s at 10 fps = 11 motion frames (s = L·j/10), holds of 0.2 s = 2 frames.
   // 192×108: big enough that 4:2:0 edges do not dominate the comparison;
   // without labels, which at this size fill half the view with codec noise.
-  const std::vector<std::string> size{"--set", "render.width=192", "--set", "render.height=108", "--set",
-                                      "render.labels=false"};
+  const std::vector<std::string> size{"--set", "render.width=192",   "--set", "render.height=108",
+                                      "--set", "render.labels=false"};
   auto args = small({"render", lollipop(), "--set", "animation.duration=1.1", "--set", "animation.hold=0.2", "--set",
                      "animation.easing=linear", "-o", (dir / "clip.mp4").string()});
   args.insert(args.end(), size.begin(), size.end());

@@ -103,8 +103,8 @@ TEST(TimelineAtS, SamplesTheFilesArcLengthsSortedAsTheDefaultSamplingDoes) {
     std::ofstream arcs(dir / "s.txt");
     arcs << std::setprecision(17) << all.back()[0] << " # the last\n" << all[31][0] << "  " << all[7][0] << "\n";
   }
-  const auto r = test::runRollspin({"timeline", scene, "--at-s", (dir / "s.txt").string(), "-o",
-                                    (dir / "some.csv").string()});
+  const auto r =
+      test::runRollspin({"timeline", scene, "--at-s", (dir / "s.txt").string(), "-o", (dir / "some.csv").string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto some = csvRows(dir / "some.csv");
   ASSERT_EQ(some.size(), 3u);
@@ -117,8 +117,8 @@ TEST(TimelineAtS, SamplesTheFilesArcLengthsSortedAsTheDefaultSamplingDoes) {
 TEST(TimelineAtS, RefusesAnArcLengthOffThePathAtItsLine) {
   const fs::path dir = test::freshTempDir("timeline_at_s_bad");
   std::ofstream(dir / "s.txt") << "0.5\n1e9\n";
-  const auto r = test::runRollspin({"timeline", test::shippedScenePath("lollipop"), "--at-s",
-                                    (dir / "s.txt").string(), "-o", (dir / "x.csv").string()});
+  const auto r = test::runRollspin({"timeline", test::shippedScenePath("lollipop"), "--at-s", (dir / "s.txt").string(),
+                                    "-o", (dir / "x.csv").string()});
   EXPECT_EQ(r.exitCode, 2) << r.err;
   EXPECT_NE(r.err.find((dir / "s.txt").string() + ":2"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("expected an arc length in [0,"), std::string::npos) << r.err;

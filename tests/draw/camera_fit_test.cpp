@@ -24,7 +24,8 @@ FrameExtent extentOf(const model::RollingModel &model) {
   FrameExtent extent;
   const double L = model.path->length(), R = model.ballRadius;
   for (int i = 0; i <= 64; ++i) extent.points.push_back(model.path->at(L * i / 64).centre(R));
-  for (int i = 0; i <= 16; ++i) extent.outline.push_back(extent.points[std::size_t(i) * 4] + Vec3(4.0 * R, -3.0 * R, -R));
+  for (int i = 0; i <= 16; ++i)
+    extent.outline.push_back(extent.points[std::size_t(i) * 4] + Vec3(4.0 * R, -3.0 * R, -R));
   extent.centre = extent.points[32];
   extent.radius = L;
   return extent;
@@ -48,8 +49,8 @@ TEST(CameraFit, AFramingAskedAgainIsTheOneComputedAfresh) {
   const CameraFraming::InnerEdges edges[] = {{}, {true, false, false, false}, {false, false, true, true}};
   const std::pair<int, int> sizes[] = {{480, 270}, {160, 90}, {270, 480}};
   for (const std::string name : {"lollipop", "sphere-outside", "storyboard", "cornu"}) {
-    const scene::SceneSpec spec =
-        model::loadScene((test::sourceDir() / "scenes" / (name + ".toml")).string(), {"render.width=480", "render.height=270"});
+    const scene::SceneSpec spec = model::loadScene((test::sourceDir() / "scenes" / (name + ".toml")).string(),
+                                                   {"render.width=480", "render.height=270"});
     const model::RollingModel model = model::buildSceneModel(spec);
     const FrameExtent extent = extentOf(model);
     const double L = model.path->length();

@@ -75,8 +75,8 @@ TEST(CameraMoves, EveryStoryboardsCameraTurnsNoFasterThanTheStoryboardMovesAndNe
       // in a frame (a turn at kMaxTurnRateDeg moves it by 3.5 % at 30 fps).
       const geometry::Vec3 c = model.path->at(clock.arcLength(f)).centre(model.ballRadius);
       const glm::vec3 ball(float(c.x()), float(c.y()), float(c.z()));
-      const double jump = glm::length(v.camera.position - previous.camera.position) /
-                          glm::length(previous.camera.position - ball);
+      const double jump =
+          glm::length(v.camera.position - previous.camera.position) / glm::length(previous.camera.position - ball);
       if (turnDeg * fps > worstRate) {
         worstRate = turnDeg * fps;
         worstFrame = f;
@@ -109,8 +109,8 @@ TEST(CameraMoves, ATorusTubeOnceRoundIsCutAwayWhenFreeAndWarnedAboutWhenKeyed) {
     const std::vector<std::string> warnings = drawer.cameraWarnings();
     EXPECT_TRUE(warnings.empty()) << warnings.front();
   }
-  const scene::SceneSpec spec = loadScene(file.string(), {"render.width=480", "render.height=270",
-                                                          "render.azimuth_deg=0", "render.elevation_deg=20"});
+  const scene::SceneSpec spec = loadScene(
+      file.string(), {"render.width=480", "render.height=270", "render.azimuth_deg=0", "render.elevation_deg=20"});
   const RollingModel model = buildSceneModel(spec);
   const SceneDrawer drawer(spec, model, nullptr, makeSceneFacts(spec, model));
   const std::vector<std::string> warnings = drawer.cameraWarnings();

@@ -17,11 +17,11 @@
 #include <string>
 #include <vector>
 
-#include "jobs/render_jobs.hpp"
 #include "draw/clip_layout.hpp"
 #include "draw/draw_style.hpp"
-#include "draw/text_blocks.hpp"
 #include "draw/scene_drawer.hpp"
+#include "draw/text_blocks.hpp"
+#include "jobs/render_jobs.hpp"
 #include "model/rolling_model.hpp"
 #include "support/cli_runner.hpp"
 #include "support/sweep.hpp"
@@ -38,7 +38,8 @@ struct Box {
 struct Screen {
   const render::View& v;
   glm::mat4 clipFromWorld;
-  explicit Screen(const render::View& view) : v(view), clipFromWorld(view.camera.clipFromView * view.camera.viewFromWorld) {}
+  explicit Screen(const render::View& view)
+      : v(view), clipFromWorld(view.camera.clipFromView * view.camera.viewFromWorld) {}
   // View pixels (y down); w ≤ 0 behind the eye.
   glm::vec3 project(const glm::vec3& p) const {
     const glm::vec4 c = clipFromWorld * glm::vec4(p, 1.0f);
@@ -69,8 +70,8 @@ bool sameRgb(const glm::vec4& a, const glm::vec3& b) { return glm::length(glm::v
 // The polylines that carry the story: the contact path (whole and
 // travelled), the marker's trail, the plate's trail, the twin's trails.
 bool isStoryLine(const render::PolylineItem& p) {
-  for (const glm::vec4& c : {kPathLineColor, kTravelledColor, kMarkerTrailColor, kPlateTrailColor, kBlochTrailColor,
-                             kFieldTrailColor})
+  for (const glm::vec4& c :
+       {kPathLineColor, kTravelledColor, kMarkerTrailColor, kPlateTrailColor, kBlochTrailColor, kFieldTrailColor})
     if (sameRgb(p.color, glm::vec3(c))) return true;
   return false;
 }
@@ -82,8 +83,8 @@ struct Aspect {
 };
 
 TEST(ClipLayout, NoTextOverTheBallThePathOrTheTrailsAndNoneCutByTheFrame) {
-  const Aspect aspects[] = {{960, 540, "16:9"}, {720, 540, "4:3"}, {600, 600, "1:1"}, {540, 960, "9:16"},
-                            {960, 540, "16:9 inset", "inset"}};
+  const Aspect aspects[] = {
+      {960, 540, "16:9"}, {720, 540, "4:3"}, {600, 600, "1:1"}, {540, 960, "9:16"}, {960, 540, "16:9 inset", "inset"}};
   ASSERT_GE(test::bundledSceneFiles().size(), 15u);
   int checkedLabels = 0, checkedBalls = 0;
   for (const auto& file : test::sweep(test::bundledSceneFiles())) {
@@ -106,7 +107,8 @@ TEST(ClipLayout, NoTextOverTheBallThePathOrTheTrailsAndNoneCutByTheFrame) {
           const Box box = labelBox(l);
           const int w = l.view < 0 ? list.width : list.views[std::size_t(l.view)].width;
           const int h = l.view < 0 ? list.height : list.views[std::size_t(l.view)].height;
-          EXPECT_TRUE(box.lo.x >= -0.5f && box.lo.y >= -0.5f && box.hi.x <= float(w) + 0.5f && box.hi.y <= float(h) + 0.5f)
+          EXPECT_TRUE(box.lo.x >= -0.5f && box.lo.y >= -0.5f && box.hi.x <= float(w) + 0.5f &&
+                      box.hi.y <= float(h) + 0.5f)
               << where << ": \"" << l.text << "\" cut by the frame (" << box.lo.x << ", " << box.lo.y << ")–("
               << box.hi.x << ", " << box.hi.y << ") in " << w << "×" << h;
           ++checkedLabels;
@@ -126,8 +128,8 @@ TEST(ClipLayout, NoTextOverTheBallThePathOrTheTrailsAndNoneCutByTheFrame) {
             const glm::vec3 c = screen.project(glm::vec3(m.worldFromModel[3]));
             const float R = glm::length(glm::vec3(m.worldFromModel[0]));
             if (c.z <= R) continue;
-            const float radiusPx = R * 0.5f * float(screen.v.height) * screen.v.camera.clipFromView[1][1] /
-                                   std::sqrt(c.z * c.z - R * R);
+            const float radiusPx =
+                R * 0.5f * float(screen.v.height) * screen.v.camera.clipFromView[1][1] / std::sqrt(c.z * c.z - R * R);
             EXPECT_GT(distanceTo(box, glm::vec2(c)), radiusPx) << where << ": \"" << l.text << "\" over the ball";
           }
           for (const render::PolylineItem& p : list.polylines) {
@@ -150,8 +152,8 @@ TEST(ClipLayout, NoTextOverTheBallThePathOrTheTrailsAndNoneCutByTheFrame) {
           const glm::vec3 c = screen.project(glm::vec3(m.worldFromModel[3]));
           const float R = glm::length(glm::vec3(m.worldFromModel[0]));
           ASSERT_GT(c.z, R) << where;
-          const float r = R * 0.5f * float(screen.v.height) * screen.v.camera.clipFromView[1][1] /
-                          std::sqrt(c.z * c.z - R * R);
+          const float r =
+              R * 0.5f * float(screen.v.height) * screen.v.camera.clipFromView[1][1] / std::sqrt(c.z * c.z - R * R);
           EXPECT_TRUE(c.x - 0.8f * r >= 0.0f && c.x + 0.8f * r <= float(screen.v.width) && c.y - 0.8f * r >= 0.0f &&
                       c.y + 0.8f * r <= float(screen.v.height))
               << where << ": the ball leaves the frame";
@@ -165,8 +167,8 @@ TEST(ClipLayout, NoTextOverTheBallThePathOrTheTrailsAndNoneCutByTheFrame) {
             int seen = 0, all = 0;
             for (int k = 0; k < 400; ++k, ++all) {  // points spread evenly over the disc
               const float rho = std::sqrt((float(k) + 0.5f) / 400.0f), phi = 2.39996323f * float(k);
-              const glm::vec3 p = centre + R * (rho * (std::cos(phi) * u + std::sin(phi) * w) -
-                                                std::sqrt(1.0f - rho * rho) * view);
+              const glm::vec3 p =
+                  centre + R * (rho * (std::cos(phi) * u + std::sin(phi) * w) - std::sqrt(1.0f - rho * rho) * view);
               const glm::vec3 d = p - eye;
               const float t = std::clamp(-glm::dot(eye, d) / glm::dot(d, d), 0.0f, 1.0f);
               if (glm::length(eye + t * d) >= float(sphere->radius()) * 0.9999f || t >= 1.0f) ++seen;
@@ -339,7 +341,8 @@ TEST(ClipLayout, ALargeSpheresOutlineIsNotCutByTheSeamToTheTwinView) {
       for (int i = 0; i <= 360; ++i)
         for (int k = 0; k < 720; ++k) {
           const double th = M_PI * i / 360, phi = 2.0 * M_PI * k / 720;
-          const glm::vec3 d(float(std::sin(th) * std::cos(phi)), float(std::sin(th) * std::sin(phi)), float(std::cos(th)));
+          const glm::vec3 d(float(std::sin(th) * std::cos(phi)), float(std::sin(th) * std::sin(phi)),
+                            float(std::cos(th)));
           const glm::vec3 p = float(sphere->radius()) * d;
           if (glm::dot(p - eye, d) > 0.0f) continue;  // the far side: inside the outline anyway
           const glm::vec3 q = screen.project(p);

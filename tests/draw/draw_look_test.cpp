@@ -186,8 +186,9 @@ TEST(BallView, ChartCheckerCellsAreAboutTheBallsRadius) {
       const glm::dvec3 e1(b.position - a.position), e2(c.position - a.position);
       for (int k = 0; k < 2; ++k) {
         // d position / d uv_k = e1 · inverse[k][0] + e2 · inverse[k][1]
-        const double edge = glm::length(e1 * inverse[k][0] + e2 * inverse[k][1]) *
-                            double(k == 0 ? surfaceItem->material.patternScale.x : surfaceItem->material.patternScale.y);
+        const double edge =
+            glm::length(e1 * inverse[k][0] + e2 * inverse[k][1]) *
+            double(k == 0 ? surfaceItem->material.patternScale.x : surfaceItem->material.patternScale.y);
         shortest = std::min(shortest, edge);
         longest = std::max(longest, edge);
       }

@@ -24,7 +24,8 @@ TEST(FontAtlas, HasTheSymbolsLabelsUse) {
     const std::u32string symbols =
         U"Landau–Zener — ‘a’ “b” • … · × ÷ ≈ √ ∫ ∞ − ± ° ² ³ ¹ ⁰ ⁴ ⁺ ⁻ ⁿ ₀ ₉ ₊ ₋ ′ ″ → ⇒ ℏ ê é ü "
         U"α β γ δ θ ϑ λ μ π ρ σ φ ϕ χ ψ ω Δ Σ Φ Ψ Ω |0⟩ ⟨ψ| ●";
-    for (char32_t c : symbols) EXPECT_TRUE(atlas.hasGlyph(c)) << "U+" << std::hex << std::uint32_t(c) << " bold " << bold;
+    for (char32_t c : symbols)
+      EXPECT_TRUE(atlas.hasGlyph(c)) << "U+" << std::hex << std::uint32_t(c) << " bold " << bold;
   }
 }
 
@@ -35,7 +36,7 @@ TEST(FontAtlas, LaysAnEnDashOutAsItsOwnGlyphNotAsTheReplacement) {
   atlas.layout("?", 0.0f, 0.0f, &question);
   ASSERT_EQ(dash.size(), 1u);
   ASSERT_EQ(question.size(), 1u);
-  EXPECT_NE(dash[0].s0, question[0].s0);  // a different place in the atlas
+  EXPECT_NE(dash[0].s0, question[0].s0);                                // a different place in the atlas
   EXPECT_LT(dash[0].y1 - dash[0].y0, question[0].y1 - question[0].y0);  // a dash is flat
 }
 
@@ -97,7 +98,8 @@ TEST(FontAdvances, MeasureExactlyAsTheAtlasLaysOut) {
             << "U+" << std::hex << std::uint32_t(cp) << " bold " << bold << " at " << px << " px";
       }
       EXPECT_GT(baked, 600);
-      for (const std::string line : {"s = 3.78 of 18.85", "ψ = −521.5°, ⟨ψ|σ|ψ⟩ ≈ 0.25 ℏ", "Landau–Zener → |1⟩", "\xff?"})
+      for (const std::string line :
+           {"s = 3.78 of 18.85", "ψ = −521.5°, ⟨ψ|σ|ψ⟩ ≈ 0.25 ℏ", "Landau–Zener → |1⟩", "\xff?"})
         EXPECT_EQ(advances.width(line), atlas.layout(line, 0.0f, 0.0f, nullptr)) << line;
     }
 }

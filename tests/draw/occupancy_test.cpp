@@ -29,7 +29,8 @@ bool reaches(glm::vec2 c, float r, float cell, int x, int y) {
 TEST(Occupancy, ADiscMarksExactlyTheCellsItReaches) {
   std::mt19937 random(7);
   int compared = 0, marked = 0;
-  for (const auto& [width, height] : {std::pair{192, 108}, std::pair{640, 360}, std::pair{1920, 1080}, std::pair{85, 301}}) {
+  for (const auto& [width, height] :
+       {std::pair{192, 108}, std::pair{640, 360}, std::pair{1920, 1080}, std::pair{85, 301}}) {
     // The grid's cell, as the constructor sets it (about 160 across the height).
     const float cell = std::max(1.0f, float(height) / 160.0f);
     std::uniform_real_distribution<float> x(-0.2f * float(width), 1.2f * float(width));

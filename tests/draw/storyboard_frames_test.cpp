@@ -8,10 +8,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "draw/scene_drawer.hpp"
-#include "motion/frame_clock.hpp"
-#include "model/rolling_model.hpp"
 #include "core/error.hpp"
+#include "draw/scene_drawer.hpp"
+#include "model/rolling_model.hpp"
+#include "motion/frame_clock.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace rollspin::motion {
@@ -65,8 +65,8 @@ TEST(StoryboardClock, FrameCountIsTheSegmentsFramesPlusTheHolds) {
   const auto& spans = s.model.segments;
   ASSERT_EQ(spans.size(), 4u);
   for (long long k = 0; k < 15; ++k) EXPECT_EQ(clock.arcLength(k), 0.0);
-  EXPECT_GT(clock.arcLength(15), 0.0);                 // the first motion frame has moved
-  EXPECT_EQ(clock.arcLength(15 + 89), spans[0].end);   // each motion ends exactly at its end
+  EXPECT_GT(clock.arcLength(15), 0.0);                // the first motion frame has moved
+  EXPECT_EQ(clock.arcLength(15 + 89), spans[0].end);  // each motion ends exactly at its end
   EXPECT_EQ(clock.arcLength(105 + 209), spans[1].end);
   for (long long k = 315; k < 390; ++k) EXPECT_EQ(clock.arcLength(k), spans[2].start);  // the rest
   EXPECT_EQ(clock.arcLength(449), s.model.path->length());
@@ -83,7 +83,7 @@ TEST(StoryboardClock, FrameCountIsTheSegmentsFramesPlusTheHolds) {
   EXPECT_NEAR(clock.place(135).duration, 7.0, 1e-12);
   EXPECT_EQ(clock.place(315).segment, 2u);
   EXPECT_EQ(clock.place(390).segment, 3u);
-  EXPECT_EQ(clock.place(464).segment, 3u);  // the closing hold belongs to the last segment,
+  EXPECT_EQ(clock.place(464).segment, 3u);                    // the closing hold belongs to the last segment,
   EXPECT_NEAR(clock.place(464).seconds, 74.0 / 30.0, 1e-12);  // whose time runs on
   EXPECT_NEAR(clock.place(464).duration, 2.0, 1e-12);         // (a camera move ended with it)
 }
@@ -149,7 +149,7 @@ TEST(StoryboardFrames, EachSegmentShowsItsCaptionTitleAndCamera) {
   EXPECT_NEAR(glm::length(kept - settled), 0.0, 1e-6);
   const render::DrawList start = frameAt(1, 0.0, 7.0), half = frameAt(1, 0.5, 7.0), after = frameAt(1, 1.0, 7.0);
   EXPECT_NEAR(glm::length(eye(start) - eye(frameAt(0, 0.0, 3.0))), 0.0, 1e-4);  // where segment 1 left it
-  EXPECT_NEAR(glm::length(eye(after) - eye(second)), 0.0, 1e-4);               // settled after 1 s
+  EXPECT_NEAR(glm::length(eye(after) - eye(second)), 0.0, 1e-4);                // settled after 1 s
   EXPECT_GT(glm::length(eye(half) - eye(start)), 0.1);
   EXPECT_GT(glm::length(eye(half) - eye(after)), 0.1);
   const glm::vec3 mid = eyeDirection(half);

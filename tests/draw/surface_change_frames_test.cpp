@@ -10,9 +10,9 @@
 #include <cmath>
 
 #include "draw/scene_drawer.hpp"
+#include "model/rolling_model.hpp"
 #include "motion/frame_clock.hpp"
 #include "motion/frame_sampling.hpp"
-#include "model/rolling_model.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/test_files.hpp"
 
@@ -33,7 +33,8 @@ Lecture lecture(std::vector<std::string> overrides = {}) {
 
 // Where the ball's centre lands in the view's clip space (x, y in [−1, 1]: in view).
 glm::vec2 onScreen(const render::View& v, const geometry::Vec3& c) {
-  const glm::vec4 p = v.camera.clipFromView * v.camera.viewFromWorld * glm::vec4(float(c.x()), float(c.y()), float(c.z()), 1.0f);
+  const glm::vec4 p =
+      v.camera.clipFromView * v.camera.viewFromWorld * glm::vec4(float(c.x()), float(c.y()), float(c.z()), 1.0f);
   return glm::vec2(p) / p.w;
 }
 
@@ -74,7 +75,8 @@ TEST(SurfaceChangeFrames, EachSurfaceHasItsOwnCameraAFadeWeighsTheOldViewDownAnd
     frame.cuts = {{cut, {}}};
     const auto fade = drawer.fadeAt(frame);
     const bool inFade = story.segment == 2 && story.seconds < 0.5;
-    ASSERT_EQ(fade.has_value(), inFade) << "frame " << f << " (segment " << story.segment + 1 << ", " << story.seconds << " s)";
+    ASSERT_EQ(fade.has_value(), inFade) << "frame " << f << " (segment " << story.segment + 1 << ", " << story.seconds
+                                        << " s)";
     if (!fade) continue;
     ++fading;
     EXPECT_NEAR(fade->weight, 1.0 - story.seconds / 0.5, 1e-12);

@@ -61,7 +61,8 @@ std::vector<float> floats(const tinygltf::Model& m, int accessor) {
   EXPECT_EQ(a.componentType, TINYGLTF_COMPONENT_TYPE_FLOAT);
   const std::size_t n = a.count * std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(a.type)));
   std::vector<float> out(n);
-  std::memcpy(out.data(), m.buffers[std::size_t(v.buffer)].data.data() + v.byteOffset + a.byteOffset, n * sizeof(float));
+  std::memcpy(out.data(), m.buffers[std::size_t(v.buffer)].data.data() + v.byteOffset + a.byteOffset,
+              n * sizeof(float));
   return out;
 }
 
@@ -149,7 +150,8 @@ void expectKeysAreTheSolvers(const Loaded& l) {
   for (std::size_t k = 0; k < seconds.size(); ++k) {
     EXPECT_NEAR(arc[k], s[k], 1e-6 * std::max(1.0, s[k]));
     const Vec3 c = l.model.path->at(s[k]).centre(R);
-    EXPECT_NEAR((Vec3(centres[3 * k], centres[3 * k + 1], centres[3 * k + 2]) - c).norm(), 0.0, 1e-6 * (1.0 + c.norm()));
+    EXPECT_NEAR((Vec3(centres[3 * k], centres[3 * k + 1], centres[3 * k + 2]) - c).norm(), 0.0,
+                1e-6 * (1.0 + c.norm()));
     const Su2 key = keyAt(rotations, k);
     const Su2 signedKey{sign[k] * key.w, sign[k] * key.x, sign[k] * key.y, sign[k] * key.z};
     EXPECT_NEAR(std::abs(signedKey.w - q[k].w) + (signedKey.vec() - q[k].vec()).norm(), 0.0, 1e-6) << "key " << k;
@@ -174,10 +176,12 @@ void expectRotationWithinTolerance(const Loaded& l, int samples) {
   const std::vector<Su2> q = solverAt(l, s);
   double worst = 0.0;
   for (std::size_t i = 0; i < times.size(); ++i) {
-    const std::size_t k = std::size_t(std::upper_bound(seconds.begin(), seconds.end(), float(times[i])) - seconds.begin());
+    const std::size_t k =
+        std::size_t(std::upper_bound(seconds.begin(), seconds.end(), float(times[i])) - seconds.begin());
     const std::size_t a = std::min(k, seconds.size() - 1) - 1;
     const double x = (times[i] - seconds[a]) / (double(seconds[a + 1]) - double(seconds[a]));
-    worst = std::max(worst, spin::rotationDistance(slerp(keyAt(rotations, a), keyAt(rotations, a + 1), std::clamp(x, 0.0, 1.0)), q[i]));
+    worst = std::max(worst, spin::rotationDistance(
+                                slerp(keyAt(rotations, a), keyAt(rotations, a + 1), std::clamp(x, 0.0, 1.0)), q[i]));
   }
   EXPECT_LE(worst, 1e-6);
   // The spin arrow turns with the ball: the same keys.
@@ -206,7 +210,8 @@ TEST(GltfExport, KeysAreCanonicalAndTheSignCarriesTheSheet) {
   }
   EXPECT_GT(std::count(sign.begin(), sign.end(), -1.0f), 0);
   EXPECT_GT(std::count(sign.begin(), sign.end(), 1.0f), 0);
-  EXPECT_EQ(std::count(sign.begin(), sign.end(), -1.0f) + std::count(sign.begin(), sign.end(), 1.0f), long(sign.size()));
+  EXPECT_EQ(std::count(sign.begin(), sign.end(), -1.0f) + std::count(sign.begin(), sign.end(), 1.0f),
+            long(sign.size()));
 }
 
 TEST(GltfExport, KeysFollowAStoryboardWithHoldsAndCorners) {

@@ -49,7 +49,8 @@ TEST(GltfValidator, EveryBundledSceneHasNoErrorOrWarning) {
     files += " '" + out.string() + "'";
   }
   std::string report;
-  const int status = run("node '" + (test::sourceDir() / "tests/export/validate_gltf.mjs").string() + "'" + files, report);
+  const int status =
+      run("node '" + (test::sourceDir() / "tests/export/validate_gltf.mjs").string() + "'" + files, report);
   EXPECT_EQ(status, 0) << report;
   std::printf("%s", report.c_str());
 }

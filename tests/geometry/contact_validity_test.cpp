@@ -8,8 +8,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "support/numbers.hpp"
 #include "geometry/surface_paths.hpp"
+#include "support/numbers.hpp"
 #include "support/surface_cases.hpp"
 
 using namespace rollspin;

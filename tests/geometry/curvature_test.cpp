@@ -141,7 +141,9 @@ TEST(Curvature, IdentityAndFiniteDifferencesOnEveryCase) {
       while (seg + 2 < cuts.size() && s >= cuts[seg + 1]) ++seg;
       const double h = 1e-4;
       if (s - 2 * h <= cuts[seg] || s + 2 * h >= cuts[seg + 1]) continue;
-      auto d = [&](auto fn) { return ((-fn(s + 2 * h) + 8 * fn(s + h) - 8 * fn(s - h) + fn(s - 2 * h)) / (12 * h)).eval(); };
+      auto d = [&](auto fn) {
+        return ((-fn(s + 2 * h) + 8 * fn(s + h) - 8 * fn(s - h) + fn(s - 2 * h)) / (12 * h)).eval();
+      };
       const Vec3 dP = d([&](double x) { return path->point(x); });
       const Vec3 dN = d([&](double x) { return path->normal(x); });
       worstSpeed = std::max(worstSpeed, std::abs(dP.norm() - 1.0));

@@ -41,7 +41,7 @@ TEST(Expression, QuotientExpAndPower) {
   const Expression e("x^3*exp(-y)/(1+x*x)", {"x", "y"});
   for (auto& p : kPoints) {
     const double x = p[0], y = p[1], E = std::exp(-y), d = 1 + x * x;
-    const double g = x * x * x / d;                                    // f = g e^{-y}
+    const double g = x * x * x / d;                                   // f = g e^{-y}
     const double gx = (3 * x * x * d - 2 * x * x * x * x) / (d * d);  // = (x⁴ + 3x²)/d²
     const double gxx = ((4 * x * x * x + 6 * x) * d - (x * x * x * x + 3 * x * x) * 4 * x) / (d * d * d);
     expectJet(e, x, y, {g * E, gx * E, -g * E, gxx * E, -gx * E, g * E});

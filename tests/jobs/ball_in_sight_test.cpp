@@ -72,7 +72,8 @@ glm::vec4 outlineExtent(const render::View &v, const glm::vec3 &centre, float ra
 // Whether the ball's outline keeps at least a pixel inside the view (the
 // frame, or a view's edge inside it, does not cut or touch it).
 bool insideTheView(const render::View &v, const render::MeshItem &ball) {
-  const glm::vec4 e = outlineExtent(v, glm::vec3(ball.worldFromModel[3]), glm::length(glm::vec3(ball.worldFromModel[0])));
+  const glm::vec4 e =
+      outlineExtent(v, glm::vec3(ball.worldFromModel[3]), glm::length(glm::vec3(ball.worldFromModel[0])));
   return e.x >= 1.0f && e.y >= 1.0f && e.z <= float(v.width) - 1.0f && e.w <= float(v.height) - 1.0f;
 }
 
@@ -159,8 +160,8 @@ class BallInSight : public ::testing::Test {
                 if (difference > 6) ++seen;
               }
             ASSERT_GT(area, 20) << file.stem() << ": the ball is too small to measure";
-            EXPECT_TRUE(insideTheView(v, *ball)) << file.stem() << " " << width << "x" << height << " at s = " << s
-                                                 << ": the view's edge cuts the ball";
+            EXPECT_TRUE(insideTheView(v, *ball))
+                << file.stem() << " " << width << "x" << height << " at s = " << s << ": the view's edge cuts the ball";
             const double share = double(seen) / area;
             EXPECT_GE(share, 0.9) << file.stem() << " " << width << "x" << height << " at s = " << s << " of " << L
                                   << " (segment " << story.segment + 1 << ", " << story.seconds << " s in)"
@@ -241,7 +242,8 @@ TEST(BallInFrame, EveryFrameOfEveryStoryboardHoldsTheWholeBall) {
       for (long long f = 0; f < clock.frameCount(); ++f) {
         const double s = clock.arcLength(f);
         const render::View v = drawer.ballCamera(clock.place(f), s);
-        const glm::vec4 e = outlineExtent(v, toGlm(model.path->at(s).centre(model.ballRadius)), float(model.ballRadius));
+        const glm::vec4 e =
+            outlineExtent(v, toGlm(model.path->at(s).centre(model.ballRadius)), float(model.ballRadius));
         const float margin = std::min({e.x, e.y, float(v.width) - e.z, float(v.height) - e.w});
         least = std::min(least, margin);
         if (margin < std::max(1.0f, 0.02f * float(v.height)) && cut++ < 3)

@@ -21,13 +21,13 @@
 #include <string>
 #include <vector>
 
+#include "draw/clip_layout.hpp"
 #include "jobs/figure_job.hpp"
 #include "jobs/job_setup.hpp"
 #include "jobs/render_jobs.hpp"
-#include "draw/clip_layout.hpp"
-#include "support/pdf_text_boxes.hpp"
 #include "render/vector_figure.hpp"
 #include "support/cli_runner.hpp"
+#include "support/pdf_text_boxes.hpp"
 #include "support/sweep.hpp"
 
 namespace rollspin {
@@ -62,11 +62,14 @@ double distance(const PdfWord& w, const FigureLayout::Segment& s) {
   auto in = [&](glm::dvec2 p) { return p.x >= w.x0 && p.x <= w.x1 && p.y >= w.y0 && p.y <= w.y1; };
   if (in(s.a) || in(s.b)) return 0.0;
   const glm::dvec2 corners[4] = {{w.x0, w.y0}, {w.x1, w.y0}, {w.x1, w.y1}, {w.x0, w.y1}};
-  auto side = [](glm::dvec2 o, glm::dvec2 p, glm::dvec2 q) { return (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x); };
+  auto side = [](glm::dvec2 o, glm::dvec2 p, glm::dvec2 q) {
+    return (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x);
+  };
   double best = 1e300;
   for (int k = 0; k < 4; ++k) {
     const glm::dvec2 c = corners[k], e = corners[(k + 1) % 4];
-    if ((side(c, e, s.a) > 0) != (side(c, e, s.b) > 0) && (side(s.a, s.b, c) > 0) != (side(s.a, s.b, e) > 0)) return 0.0;
+    if ((side(c, e, s.a) > 0) != (side(c, e, s.b) > 0) && (side(s.a, s.b, c) > 0) != (side(s.a, s.b, e) > 0))
+      return 0.0;
     best = std::min(best, distanceToSegment(c, s));
   }
   for (const glm::dvec2 end : {s.a, s.b})
@@ -105,7 +108,8 @@ void checkFigure(const Figure& f, const std::string& where, double requestedPt) 
   // measures a little smaller: 1 %), and nothing prints under 6 pt.
   for (const FigureLayout::Text& t : layout.texts) {
     EXPECT_GE(t.sizePt, 6.0 - 1e-6) << where << ": \"" << t.text << "\" prints at " << t.sizePt << " pt";
-    if (!t.free) EXPECT_GE(t.sizePt, 0.99 * requestedPt) << where << ": \"" << t.text << "\" shrunk to " << t.sizePt << " pt";
+    if (!t.free)
+      EXPECT_GE(t.sizePt, 0.99 * requestedPt) << where << ": \"" << t.text << "\" shrunk to " << t.sizePt << " pt";
   }
   // No text plate lies over a path (the title's band holds none).
   for (const FigureBox& plate : layout.plates)
@@ -129,15 +133,15 @@ void checkFigure(const Figure& f, const std::string& where, double requestedPt) 
         << word << " leaves the page";
     // Poppler's box is the font's (its ascent and descent, a little more
     // than the layout's for a fallback face): a quarter point of slack.
-    const bool onPlate = std::any_of(layout.plates.begin(), layout.plates.end(),
-                                     [&](const FigureBox& b) { return inside(w, b, 0.25); });
+    const bool onPlate =
+        std::any_of(layout.plates.begin(), layout.plates.end(), [&](const FigureBox& b) { return inside(w, b, 0.25); });
     if (onPlate) continue;
     if (const FigureLayout::Text* label = freeLabelOf(w)) {
       for (const auto* segments : {&layout.arrows, &layout.paths})
         for (const FigureLayout::Segment& s : *segments)
-          EXPECT_GT(distance(w, s), s.halfWidth)
-              << word << " (label \"" << label->text << "\") sits on " << (segments == &layout.arrows ? "an arrow" : "a path")
-              << " from (" << s.a.x << ", " << s.a.y << ") to (" << s.b.x << ", " << s.b.y << ")";
+          EXPECT_GT(distance(w, s), s.halfWidth) << word << " (label \"" << label->text << "\") sits on "
+                                                 << (segments == &layout.arrows ? "an arrow" : "a path") << " from ("
+                                                 << s.a.x << ", " << s.a.y << ") to (" << s.b.x << ", " << s.b.y << ")";
       continue;
     }
     ADD_FAILURE() << word << " at (" << w.x0 << ", " << w.y0 << ")–(" << w.x1 << ", " << w.y1 << ") leaves its plate";
@@ -161,7 +165,8 @@ TEST(FigureLayout, TextStaysOnItsPlateAndLabelsOffArrowsAndPathsAtJournalSizes) 
     std::vector<std::string> overrides{"figure.font=Latin Modern Roman"};
     overrides.insert(overrides.end(), extra.begin(), extra.end());
     const fs::path pdf = dir / ("f" + std::to_string(i) + ".pdf");
-    jobs::DrawJob job = jobs::prepareDrawJob({scene, overrides, {}, {}, {}, false, pdf, media::OutputUse::Still, 0, {}});
+    jobs::DrawJob job =
+        jobs::prepareDrawJob({scene, overrides, {}, {}, {}, false, pdf, media::OutputUse::Still, 0, {}});
     for (std::size_t w = 0; w < kWidthsMm.size(); ++w) {
       const double pt = sizeFor(i, w);
       const std::string where = fs::path(scene).stem().string() + (extra.empty() ? "" : " (strobe)") + " at " +
@@ -213,8 +218,9 @@ void checkTwin(const render::DrawList& list, const FigureLayout& layout, const s
   for (int i = 0; i <= 90; ++i)
     for (int j = 0; j < 180; ++j) {
       const double theta = M_PI * i / 90.0, phi = 2.0 * M_PI * j / 180.0;
-      const glm::vec4 c = clipFromWorld * glm::vec4(float(std::sin(theta) * std::cos(phi)),
-                                                    float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)), 1.0f);
+      const glm::vec4 c =
+          clipFromWorld * glm::vec4(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)),
+                                    float(std::cos(theta)), 1.0f);
       const glm::dvec2 px((c.x / c.w * 0.5 + 0.5) * v.width, (0.5 - c.y / c.w * 0.5) * v.height);
       lo = glm::min(lo, px), hi = glm::max(hi, px);
     }
@@ -226,13 +232,15 @@ void checkTwin(const render::DrawList& list, const FigureLayout& layout, const s
       << where << ": the sphere is " << diameter << " px across in a room " << roomSide << " px (em " << em << " px)";
   for (const char* name : {"x", "y", "z", "|0⟩", "|1⟩"}) {
     if (!labelsOn) break;
-    const auto t = std::find_if(layout.texts.begin(), layout.texts.end(),
-                                [&](const FigureLayout::Text& x) { return x.view == twin && x.free && x.text == name; });
+    const auto t = std::find_if(layout.texts.begin(), layout.texts.end(), [&](const FigureLayout::Text& x) {
+      return x.view == twin && x.free && x.text == name;
+    });
     if (t == layout.texts.end()) {
       ADD_FAILURE() << where << ": the label \"" << name << "\" is left out";
       continue;
     }
-    const glm::dvec2 nearest = glm::clamp(t->anchor, glm::dvec2(t->box.x0, t->box.y0), glm::dvec2(t->box.x1, t->box.y1));
+    const glm::dvec2 nearest =
+        glm::clamp(t->anchor, glm::dvec2(t->box.x0, t->box.y0), glm::dvec2(t->box.x1, t->box.y1));
     const double ems = glm::length(nearest - t->anchor) / t->sizePt;
     EXPECT_LE(ems, kFarthestLabelEm) << where << ": \"" << name << "\" lies " << ems << " em from its point";
     ++labels.count;
@@ -251,7 +259,8 @@ TEST(FigureLayout, TheBlochSphereFillsTheRoomItsTextLeaves) {
     std::vector<std::string> overrides{"figure.font=Latin Modern Roman"};
     overrides.insert(overrides.end(), extra.begin(), extra.end());
     const fs::path pdf = dir / ("t" + std::to_string(i) + ".pdf");
-    jobs::DrawJob job = jobs::prepareDrawJob({scene, overrides, {}, {}, {}, false, pdf, media::OutputUse::Still, 0, {}});
+    jobs::DrawJob job =
+        jobs::prepareDrawJob({scene, overrides, {}, {}, {}, false, pdf, media::OutputUse::Still, 0, {}});
     if (job.spec.render.layout == scene::RenderLayout::Ball) continue;  // no sphere
     for (std::size_t w = 0; w < kWidthsMm.size(); ++w) {
       const double pt = sizeFor(i, w);
@@ -267,8 +276,8 @@ TEST(FigureLayout, TheBlochSphereFillsTheRoomItsTextLeaves) {
     }
   }
   ASSERT_GT(labels.count, 0);
-  EXPECT_GE(labels.close, kCloseShare * labels.count) << labels.close << " of " << labels.count << " labels within "
-                                              << kCloseLabelEm << " em of their points";
+  EXPECT_GE(labels.close, kCloseShare * labels.count)
+      << labels.close << " of " << labels.count << " labels within " << kCloseLabelEm << " em of their points";
   std::printf("%d of %d Bloch labels within %.1f em of their points\n", labels.close, labels.count, kCloseLabelEm);
 }
 
@@ -279,8 +288,16 @@ TEST(FigureLayout, TheLayoutHoldsThePdfsWordsAndTheCliWritesIt) {
   if (std::system("command -v pdftotext > /dev/null") != 0) GTEST_SKIP() << "pdftotext (poppler-utils) missing";
   const fs::path dir = test::freshTempDir("figure_layout_json");
   const fs::path pdf = dir / "fig.pdf";
-  jobs::DrawJob job = jobs::prepareDrawJob({test::shippedScenePath("lollipop"), {"render.strobe=8"}, {}, {}, {}, false,
-                                          pdf, media::OutputUse::Still, 0, {}});
+  jobs::DrawJob job = jobs::prepareDrawJob({test::shippedScenePath("lollipop"),
+                                            {"render.strobe=8"},
+                                            {},
+                                            {},
+                                            {},
+                                            false,
+                                            pdf,
+                                            media::OutputUse::Still,
+                                            0,
+                                            {}});
   const Figure f = figureOf(job, 85.0, 8.0, pdf);
   int found = 0;
   for (const FigureLayout::Text& t : f.layout.texts) {
@@ -296,17 +313,17 @@ TEST(FigureLayout, TheLayoutHoldsThePdfsWordsAndTheCliWritesIt) {
   EXPECT_GE(f.layout.arrows.size(), 2u * 9u);  // the spin, the field and the 8 strobe spins... at least 9
   EXPECT_FALSE(f.layout.paths.empty());
 
-  const test::CliResult r =
-      test::runRollspin({"render", test::shippedScenePath("lollipop"), "--still", "-o", (dir / "cli.pdf").string(),
-                         "--quiet", "--set", "render.strobe=8", "--set", "figure.width=column", "--layout-json",
-                         (dir / "layout.json").string()});
+  const test::CliResult r = test::runRollspin(
+      {"render", test::shippedScenePath("lollipop"), "--still", "-o", (dir / "cli.pdf").string(), "--quiet", "--set",
+       "render.strobe=8", "--set", "figure.width=column", "--layout-json", (dir / "layout.json").string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const std::string json = test::readFile(dir / "layout.json");
   for (const char* key : {"\"width_pt\": 240.945", "\"plates\"", "\"texts\"", "\"arrows\"", "\"paths\"", "\"|0⟩\""})
     EXPECT_NE(json.find(key), std::string::npos) << key << " not in " << json.substr(0, 400);
   // Only for a figure still.
-  const test::CliResult png = test::runRollspin({"render", test::shippedScenePath("lollipop"), "--still", "-o",
-                                                 (dir / "still.png").string(), "--layout-json", (dir / "x.json").string()});
+  const test::CliResult png =
+      test::runRollspin({"render", test::shippedScenePath("lollipop"), "--still", "-o", (dir / "still.png").string(),
+                         "--layout-json", (dir / "x.json").string()});
   EXPECT_EQ(png.exitCode, 2) << png.err;
   EXPECT_NE(png.err.find("--layout-json"), std::string::npos) << png.err;
   EXPECT_FALSE(fs::exists(dir / "x.json"));

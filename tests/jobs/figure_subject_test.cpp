@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
+#include "draw/clip_layout.hpp"
 #include "jobs/figure_job.hpp"
 #include "jobs/job_setup.hpp"
 #include "jobs/render_jobs.hpp"
-#include "draw/clip_layout.hpp"
 #include "render/draw_list.hpp"
 #include "support/sweep.hpp"
 
@@ -76,7 +76,8 @@ Bounds subjectBounds(const render::DrawList& list, int view) {
     if (m.view != view || m.textPlate || m.figureDisc || m.material.opacity < 1.0f) continue;
     const std::size_t step = std::max<std::size_t>(1, m.mesh->vertices.size() / 20000);
     for (std::size_t i = 0; i < m.mesh->vertices.size(); i += step)
-      if (const auto p = pixelOf(v, glm::vec3(m.worldFromModel * glm::vec4(m.mesh->vertices[i].position, 1.0f)))) b.add(*p);
+      if (const auto p = pixelOf(v, glm::vec3(m.worldFromModel * glm::vec4(m.mesh->vertices[i].position, 1.0f))))
+        b.add(*p);
   }
   return b;
 }
@@ -102,8 +103,16 @@ TEST(FigureSubject, DISABLED_TheSurfaceAndTheBallSpanHalfTheBallViewAtJournalSiz
   double least = 1e30;
   std::string leastWhere;
   for (const std::size_t i : test::sweepIndices(scenes.size())) {
-    jobs::DrawJob job = jobs::prepareDrawJob({scenes[i].string(), {"figure.font=Latin Modern Roman"}, {}, {}, {}, false,
-                                            "x.pdf", media::OutputUse::Still, 0, {}});
+    jobs::DrawJob job = jobs::prepareDrawJob({scenes[i].string(),
+                                              {"figure.font=Latin Modern Roman"},
+                                              {},
+                                              {},
+                                              {},
+                                              false,
+                                              "x.pdf",
+                                              media::OutputUse::Still,
+                                              0,
+                                              {}});
     if (job.spec.render.layout == scene::RenderLayout::Twin) continue;  // no ball view
     for (std::size_t w = 0; w < kWidthsMm.size(); ++w) {
       job.spec.figure.widthMm = kWidthsMm[w];
@@ -174,8 +183,16 @@ TEST(FigureSubject, ACaptionNeverBreaksNarrowerThanTwelveEm) {
   int captions = 0;
   const auto scenes = test::bundledSceneFiles();
   for (std::size_t i = 0; i < scenes.size(); ++i) {
-    jobs::DrawJob job = jobs::prepareDrawJob({scenes[i].string(), {"figure.font=Latin Modern Roman"}, {}, {}, {}, false,
-                                            "x.pdf", media::OutputUse::Still, 0, {}});
+    jobs::DrawJob job = jobs::prepareDrawJob({scenes[i].string(),
+                                              {"figure.font=Latin Modern Roman"},
+                                              {},
+                                              {},
+                                              {},
+                                              false,
+                                              "x.pdf",
+                                              media::OutputUse::Still,
+                                              0,
+                                              {}});
     if (job.spec.segments.empty()) continue;
     for (std::size_t w = 0; w < kWidthsMm.size(); ++w) {
       job.spec.figure.widthMm = kWidthsMm[w];
@@ -188,7 +205,8 @@ TEST(FigureSubject, ACaptionNeverBreaksNarrowerThanTwelveEm) {
         if (segment.caption.empty()) continue;
         std::vector<const render::LabelItem*> lines;
         for (const render::LabelItem& l : list.labels)
-          if (l.bold && l.color == kCaptionColor && !l.text.empty() && segment.caption.find(l.text) != std::string::npos)
+          if (l.bold && l.color == kCaptionColor && !l.text.empty() &&
+              segment.caption.find(l.text) != std::string::npos)
             lines.push_back(&l);
         std::string joined;
         for (const render::LabelItem* l : lines) joined += (joined.empty() ? "" : " ") + l->text;
@@ -198,10 +216,12 @@ TEST(FigureSubject, ACaptionNeverBreaksNarrowerThanTwelveEm) {
         EXPECT_LE(lines.size(), atTwelve) << where << ": \"" << segment.caption << "\" on " << lines.size() << " lines";
         ++captions;
       }
-      EXPECT_TRUE(std::none_of(list.leftOut.begin(), list.leftOut.end(), [&](const std::string& t) {
-        return std::any_of(job.spec.segments.begin(), job.spec.segments.end(),
-                           [&](const scene::SegmentSpec& sg) { return sg.caption == t; });
-      })) << where << ": a caption is left out";
+      EXPECT_TRUE(std::none_of(list.leftOut.begin(), list.leftOut.end(),
+                               [&](const std::string& t) {
+                                 return std::any_of(job.spec.segments.begin(), job.spec.segments.end(),
+                                                    [&](const scene::SegmentSpec& sg) { return sg.caption == t; });
+                               }))
+          << where << ": a caption is left out";
     }
   }
   EXPECT_GT(captions, 8);

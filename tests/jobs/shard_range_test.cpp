@@ -2,8 +2,8 @@
 // names that sort, and malformed arguments refused (no GL, no encoder).
 #include <gtest/gtest.h>
 
-#include "jobs/shard_range.hpp"
 #include "core/error.hpp"
+#include "jobs/shard_range.hpp"
 
 namespace rollspin::jobs {
 namespace {

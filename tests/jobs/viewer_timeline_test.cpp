@@ -55,10 +55,13 @@ double largestMidpointError(const std::string& name) {
   for (std::size_t k = 0; k + 1 < timeline.knots.size(); ++k)
     middles.push_back(0.5 * (timeline.knots[k].s + timeline.knots[k + 1].s));
   double worst = 0.0;
-  jobs::sampleTimeline(model, choice, spin::SampleArcLengths(middles), [&](std::size_t k, const jobs::TimelineRow& row) {
-    const Quat q = hermite(timeline.knots[k], timeline.knots[k + 1], middles[k]);
-    for (int i = 0; i < 4; ++i) worst = std::max(worst, std::abs(q[i] - row.values[10 + i]));
-  }, name);
+  jobs::sampleTimeline(
+      model, choice, spin::SampleArcLengths(middles),
+      [&](std::size_t k, const jobs::TimelineRow& row) {
+        const Quat q = hermite(timeline.knots[k], timeline.knots[k + 1], middles[k]);
+        for (int i = 0; i < 4; ++i) worst = std::max(worst, std::abs(q[i] - row.values[10 + i]));
+      },
+      name);
   return worst;
 }
 
@@ -143,9 +146,13 @@ TEST(ViewerTimeline, TheClockIsTheClipsAndChaptersNameTheirSurface) {
 }
 
 TEST(Base64, MatchesRfc4648) {
-  const std::vector<std::pair<std::string, std::string>> vectors{
-      {"", ""}, {"f", "Zg=="}, {"fo", "Zm8="}, {"foo", "Zm9v"}, {"foob", "Zm9vYg=="}, {"fooba", "Zm9vYmE="},
-      {"foobar", "Zm9vYmFy"}};
+  const std::vector<std::pair<std::string, std::string>> vectors{{"", ""},
+                                                                 {"f", "Zg=="},
+                                                                 {"fo", "Zm8="},
+                                                                 {"foo", "Zm9v"},
+                                                                 {"foob", "Zm9vYg=="},
+                                                                 {"fooba", "Zm9vYmE="},
+                                                                 {"foobar", "Zm9vYmFy"}};
   for (const auto& [plain, encoded] : vectors) EXPECT_EQ(jobs::base64(plain), encoded) << plain;
 }
 

@@ -81,11 +81,12 @@ TEST(RollingKinematics, ASphereParallelFollowsTheRotatingFrameClosedForm) {
       for (std::size_t k = 0; k < s.size(); ++k) {
         const double phi = s[k] / rho;
         // The path is the parallel this derivation assumes: starts at φ = 0, φ grows.
-        ASSERT_NEAR((path->point(s[k]) - a * Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
-                                                    std::cos(theta)))
+        ASSERT_NEAR((path->point(s[k]) -
+                     a * Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)))
                         .norm(),
                     0.0, 1e-12);
-        const Mat3 expected = Eigen::AngleAxisd(phi, Vec3::UnitZ()).toRotationMatrix() * rotation(phi * (w0 - Vec3::UnitZ()));
+        const Mat3 expected =
+            Eigen::AngleAxisd(phi, Vec3::UnitZ()).toRotationMatrix() * rotation(phi * (w0 - Vec3::UnitZ()));
         EXPECT_LE(rotationMatrixDistance(q[k], expected), 1e-10)
             << (outside ? "outside" : "inside") << " θ = " << theta << " s = " << s[k];
       }

@@ -47,8 +47,7 @@ TEST(ImageView, CrossFadeWeighsEachByteLinearly) {
   crossFade(half, from, 0.5);
   EXPECT_EQ(none.rgba, black.rgba);
   EXPECT_EQ(all.rgba, from.rgba);
-  for (std::size_t i = 0; i < from.rgba.size(); ++i)
-    ASSERT_EQ(half.rgba[i], (from.rgba[i] + 1) / 2) << i;
+  for (std::size_t i = 0; i < from.rgba.size(); ++i) ASSERT_EQ(half.rgba[i], (from.rgba[i] + 1) / 2) << i;
 }
 
 TEST(ImageIo, PngRoundTripKeepsRgbaExactly) {
@@ -172,8 +171,8 @@ TEST(ImageIo, EveryFuzzSeedLoadsOrIsBadInput) {
   for (const auto& e : std::filesystem::directory_iterator(test::sourceDir() / "tests/fuzz/seeds/image")) {
     const std::string bytes = test::readFile(e.path());
     try {
-      const Image img = decodeImage(bytes, e.path().filename().string(), SourceLoc{"ball.texture"},
-                                    std::int64_t{2048} * 2048);
+      const Image img =
+          decodeImage(bytes, e.path().filename().string(), SourceLoc{"ball.texture"}, std::int64_t{2048} * 2048);
       EXPECT_GT(img.width, 0) << e.path().filename();
       ++loaded;
     } catch (const Error& err) {
@@ -267,7 +266,7 @@ TEST(ImageCompare, HeatMapIsAFaintCopyOfAUnderTheDifferences) {
 
 TEST(ImageCompare, CountsPixelsAboveALevel) {
   Image a = gradient(10, 10), b = a;
-  b.pixel(0, 0)[0] = static_cast<std::uint8_t>(a.pixel(0, 0)[0] ^ 3);   // 1..3 levels
+  b.pixel(0, 0)[0] = static_cast<std::uint8_t>(a.pixel(0, 0)[0] ^ 3);  // 1..3 levels
   b.pixel(5, 5)[1] = static_cast<std::uint8_t>(a.pixel(5, 5)[1] + 10);
   const ImageDifference d = compareImages(a.view(), b.view());
   EXPECT_EQ(d.pixelsAbove(0), 2);
@@ -289,7 +288,8 @@ TEST(ImageCompare, StructuralSimilarity) {
   Image noisy = a;
   for (int y = 0; y < 30; ++y)
     for (int x = 0; x < 40; ++x)
-      for (int c = 0; c < 3; ++c) noisy.pixel(x, y)[c] = static_cast<std::uint8_t>(a.pixel(x, y)[c] + ((x * 7 + y * 3) % 3));
+      for (int c = 0; c < 3; ++c)
+        noisy.pixel(x, y)[c] = static_cast<std::uint8_t>(a.pixel(x, y)[c] + ((x * 7 + y * 3) % 3));
   Image moved(40, 30);
   for (int y = 0; y < 30; ++y)
     for (int x = 0; x < 40; ++x) std::copy_n(a.pixel((x + 8) % 40, y), 4, moved.pixel(x, y));

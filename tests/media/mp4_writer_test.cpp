@@ -79,7 +79,8 @@ TEST(Mp4Writer, WritesH264Yuv420pTaggedBt709WithMonotonicTimestamps) {
   for (int y = 4; y < 48; y += 16)
     for (int x = 4; x < 64; x += 16)
       for (int c = 0; c < 3; ++c)
-        worst = std::max(worst, std::abs(double(probe.kept[0].pixel(x + 4, y + 4)[c]) - expected.pixel(x + 4, y + 4)[c]));
+        worst =
+            std::max(worst, std::abs(double(probe.kept[0].pixel(x + 4, y + 4)[c]) - expected.pixel(x + 4, y + 4)[c]));
   EXPECT_LE(worst, 6.0);
 }
 
@@ -90,9 +91,11 @@ TEST(Mp4Writer, WritesH264Yuv420pTaggedBt709WithMonotonicTimestamps) {
 // Two flat frames each (ultrafast: one reference, far inside every DPB).
 TEST(Mp4Writer, TagsTheLowestH264LevelThatHoldsTheSizeAndRate) {
   const fs::path dir = test::freshTempDir("mp4_levels");
-  struct Case { int width, height, fps, level; };
-  for (const Case c : {Case{640, 360, 30, 30}, Case{1920, 1080, 60, 42}, Case{4096, 2160, 60, 52},
-                       Case{8192, 4320, 30, 60}}) {
+  struct Case {
+    int width, height, fps, level;
+  };
+  for (const Case c :
+       {Case{640, 360, 30, 30}, Case{1920, 1080, 60, 42}, Case{4096, 2160, 60, 52}, Case{8192, 4320, 30, 60}}) {
     const auto expected = media::lowestH264Level(c.width, c.height, c.fps);
     ASSERT_TRUE(expected.has_value()) << c.width << "x" << c.height;
     EXPECT_EQ(expected->idc, c.level) << c.width << "x" << c.height << "@" << c.fps << ": Table A-1";

@@ -49,7 +49,8 @@ TEST(OutputFormat, NamesAndExtensionsAreUnambiguousAndEveryRowIsReachable) {
 TEST(OutputFormat, DefaultsAndFolders) {
   EXPECT_EQ(media::chooseFormat(std::nullopt, {}, "", OutputUse::Animation).name, "mp4");
   EXPECT_EQ(media::chooseFormat(std::nullopt, {}, "", OutputUse::Still).name, "png");
-  EXPECT_EQ(media::chooseFormat(std::nullopt, {}, "frames/", OutputUse::Animation).kind, media::OutputKind::FrameFolder);
+  EXPECT_EQ(media::chooseFormat(std::nullopt, {}, "frames/", OutputUse::Animation).kind,
+            media::OutputKind::FrameFolder);
   EXPECT_EQ(media::chooseFormat(std::nullopt, {}, "frames", OutputUse::Animation).kind, media::OutputKind::FrameFolder);
   EXPECT_EQ(media::chooseFormat(std::nullopt, {}, "x.jpeg", OutputUse::Still).name, "jpg");
   // render.format names the clip's format: a still of the scene keeps its own choice.
@@ -88,8 +89,7 @@ TEST(H264Levels, TheLargestFrameIsLevel62sAndOnlyMp4EncodesH264) {
   EXPECT_FALSE(media::lowestH264Level(8192, 4320, 121).has_value()) << "6.2's MaxMBPS allows 120 fps at 8K";
   EXPECT_EQ(media::lowestH264Level(8192, 4320, 120)->idc, 62);
   EXPECT_EQ(media::lowestH264Level(1280, 720, 30)->idc, 31);
-  for (const media::OutputFormat& f : media::kOutputFormats)
-    EXPECT_EQ(f.encodesH264(), f.name == "mp4") << f.name;
+  for (const media::OutputFormat& f : media::kOutputFormats) EXPECT_EQ(f.encodesH264(), f.name == "mp4") << f.name;
 }
 
 }  // namespace

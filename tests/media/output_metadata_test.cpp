@@ -47,7 +47,8 @@ TEST(OutputMetadata, PngAndJpegRoundTripAndStillDecode) {
     const std::string bytes = encoded(jpeg, &m);
     expectSame(parseOutputMetadata(bytes, "a"), m);
     // The pixels are the same as without the metadata.
-    EXPECT_EQ(decodeImage(bytes, "a", SourceLoc{"a"}).rgba, decodeImage(encoded(jpeg, nullptr), "b", SourceLoc{"b"}).rgba);
+    EXPECT_EQ(decodeImage(bytes, "a", SourceLoc{"a"}).rgba,
+              decodeImage(encoded(jpeg, nullptr), "b", SourceLoc{"b"}).rgba);
   }
 }
 
@@ -59,16 +60,19 @@ TEST(OutputMetadata, ALongSceneSpansSeveralJpegComments) {
 TEST(OutputMetadata, GifSvgAndPdfRoundTrip) {
   const OutputMetadata m = sample(600);  // over a GIF sub-block's 255 bytes
   // GIF89a, a 1x1 screen with a 2-colour table, one image, the trailer.
-  const std::string gif("GIF89a\x01\x00\x01\x00\x80\x00\x00\x00\x00\x00\xff\xff\xff"
-                        "\x2c\x00\x00\x00\x00\x01\x00\x01\x00\x00\x02\x02\x44\x01\x00\x3b", 35);
+  const std::string gif(
+      "GIF89a\x01\x00\x01\x00\x80\x00\x00\x00\x00\x00\xff\xff\xff"
+      "\x2c\x00\x00\x00\x00\x01\x00\x01\x00\x00\x02\x02\x44\x01\x00\x3b",
+      35);
   expectSame(parseOutputMetadata(withGifMetadata(gif, m), "a.gif"), m);
   const std::string svg = "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"1\"><g/></svg>\n";
   const OutputMetadata fromSvg = parseOutputMetadata(withSvgMetadata(svg, m), "a.svg");
   expectSame(fromSvg, m);
   EXPECT_EQ(fromSvg.title, m.title);
-  const std::string pdf = "%PDF-1.5\n1 0 obj\n<< /Type /Catalog\n   /Pages 2 0 R\n>>\nendobj\nxref\n0 2\n"
-                          "0000000000 65535 f \n0000000009 00000 n \ntrailer\n<< /Size 3\n   /Root 1 0 R\n>>\n"
-                          "startxref\n57\n%%EOF\n";
+  const std::string pdf =
+      "%PDF-1.5\n1 0 obj\n<< /Type /Catalog\n   /Pages 2 0 R\n>>\nendobj\nxref\n0 2\n"
+      "0000000000 65535 f \n0000000009 00000 n \ntrailer\n<< /Size 3\n   /Root 1 0 R\n>>\n"
+      "startxref\n57\n%%EOF\n";
   const std::string withMetadata = withPdfMetadata(pdf, m);
   expectSame(parseOutputMetadata(withMetadata, "a.pdf"), m);
   EXPECT_NE(withMetadata.find("/Prev 57"), std::string::npos);

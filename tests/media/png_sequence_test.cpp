@@ -97,7 +97,8 @@ TEST(PngSequence, AnInterruptedRenderGoesToPartialAndLeavesTheFolderAlone) {
   for (int k = 0; k < 8; ++k) old.push_back(PngSequenceWriter::framePath("", k).string());
   EXPECT_EQ(filesIn(dir / "frames"), withForeign(old));
   for (int k = 0; k < 8; ++k) EXPECT_EQ(test::readFile(PngSequenceWriter::framePath(dir / "frames", k)), "old");
-  EXPECT_EQ(filesIn(dir / "frames.partial"), (std::vector<std::string>{"frame_00000.png", "frame_00001.png", "readme"}));
+  EXPECT_EQ(filesIn(dir / "frames.partial"),
+            (std::vector<std::string>{"frame_00000.png", "frame_00001.png", "readme"}));
   EXPECT_EQ(filesIn(dir), (std::vector<std::string>{"frames", "frames.partial"}));
 }
 

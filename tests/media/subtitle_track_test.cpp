@@ -24,8 +24,8 @@ TEST(SubtitleTrack, FrameMillisecondsRoundExactRationalsToNearest) {
       EXPECT_LE(std::abs(static_cast<long double>(ms) - exact), 0.5L) << k << " at " << num << "/" << den;
     }
   }
-  EXPECT_EQ(frameMilliseconds(1, 30000, 1001), 33);   // 33.367 ms
-  EXPECT_EQ(frameMilliseconds(2, 30000, 1001), 67);   // 66.733 ms
+  EXPECT_EQ(frameMilliseconds(1, 30000, 1001), 33);  // 33.367 ms
+  EXPECT_EQ(frameMilliseconds(2, 30000, 1001), 67);  // 66.733 ms
 }
 
 TEST(SubtitleTrack, AppendCueMergesOnlyACueThatContinuesTheLast) {

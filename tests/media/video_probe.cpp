@@ -73,7 +73,8 @@ VideoProbe probeVideo(const std::filesystem::path& file, const std::set<long lon
   probe.timeBaseDen = stream->time_base.den;
   probe.indexBeforeData = moovBeforeMdat(file);
 
-  if (const AVDictionaryEntry* tag = av_dict_get(stream->metadata, "alpha_mode", nullptr, 0)) probe.alphaMode = tag->value;
+  if (const AVDictionaryEntry* tag = av_dict_get(stream->metadata, "alpha_mode", nullptr, 0))
+    probe.alphaMode = tag->value;
   if (const char* name = avcodec_profile_name(par->codec_id, par->profile)) probe.profile = name;
   probe.level = par->level;
   const AVCodec* decoder = par->codec_id == AV_CODEC_ID_VP9 && probe.alphaMode == "1"

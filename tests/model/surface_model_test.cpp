@@ -32,7 +32,8 @@ struct KindScene {
 std::vector<KindScene> kindScenes(double ballRadius) {
   std::vector<KindScene> out;
   for (const geometry::SurfaceKindRow& row : geometry::surfaceKindTable()) {
-    const std::string head = "[ball]\nradius = " + std::to_string(ballRadius) + "\n[surface]\nkind = \"" + row.name + "\"\n";
+    const std::string head =
+        "[ball]\nradius = " + std::to_string(ballRadius) + "\n[surface]\nkind = \"" + row.name + "\"\n";
     out.push_back({row.name, head});
     for (const ParamDecl& p : row.params)
       if (p.type == ParamType::Choice)
@@ -108,7 +109,8 @@ TEST(SurfaceModel, TheTwoSidesOfAKindAreOpposite) {
       std::vector<std::shared_ptr<const geometry::Surface>> sides;
       for (const std::string& choice : p.choices)
         sides.push_back(buildSurface(scene::loadSceneText(
-            "[ball]\nradius = 0.5\n[surface]\nkind = \"" + row.name + "\"\n" + p.key + " = \"" + choice + "\"\n", "<" + row.name + ">")));
+            "[ball]\nradius = 0.5\n[surface]\nkind = \"" + row.name + "\"\n" + p.key + " = \"" + choice + "\"\n",
+            "<" + row.name + ">")));
       const Vec3 x = sides[0]->position(geometry::Vec2(0.4, 0.3));
       EXPECT_NEAR(sides[1]->distance(x), 0.0, 1e-12) << row.name;
       EXPECT_NEAR((sides[0]->normalAt(x) + sides[1]->normalAt(x)).norm(), 0.0, 1e-12) << row.name << " " << p.key;

@@ -119,8 +119,8 @@ Outcome solveAndJudge(const std::string& toml, const std::string& name) {
   worstTrue = std::max(worstTrue, out.trueError);
   worstRatio = std::max(worstRatio, out.errorToReference / std::max(out.estimate, 1e-300));
   if (std::getenv("ROLLSPIN_VERBOSE"))
-    std::printf("%-40s %9lld steps  vs oracle %.2e  vs reference %.2e  estimate %.2e  (%s)\n", name.c_str(),
-                out.steps, out.trueError, out.errorToReference, out.estimate, stats.errorEstimateBasis.c_str());
+    std::printf("%-40s %9lld steps  vs oracle %.2e  vs reference %.2e  estimate %.2e  (%s)\n", name.c_str(), out.steps,
+                out.trueError, out.errorToReference, out.estimate, stats.errorEstimateBasis.c_str());
   return out;
 }
 
@@ -165,8 +165,8 @@ TEST(AutomaticAccuracy, RandomPolylinesOnTiltedPlanes) {
         "[ball]\nradius = {:.17g}\n[surface]\nkind = \"plane\"\nnormal = [{:.17g}, {:.17g}, {:.17g}]\n"
         "[path]\nkind = \"points\"\ninterpolation = \"polyline\"\ncorner_radius = {:.17g}\npoints = [{}]\n",
         R, n.x(), n.y(), n.z(), r, walk(rng, e1, e2, 5));
-    expectAccurateAndEstimated(solveAndJudge(toml, fmt::format("plane polyline {} (R {:.2f}, r/R {:.1e})", c, R, r / R)),
-                               toml);
+    expectAccurateAndEstimated(
+        solveAndJudge(toml, fmt::format("plane polyline {} (R {:.2f}, r/R {:.1e})", c, R, r / R)), toml);
   }
 }
 
@@ -196,9 +196,9 @@ TEST(AutomaticAccuracy, RandomPolylinesOnCurvedSurfaces) {
         "[ball]\nradius = {:.17g}\n[surface]\n{}\n[path]\nkind = \"points\"\ninterpolation = \"polyline\"\n"
         "corner_radius = {:.17g}\npoints = [{}]\n",
         R, surface, r, points);
-    expectAccurateAndEstimated(
-        solveAndJudge(toml, fmt::format("{} polyline {} (R {:.2f}, r {:.1e})", sphere ? "sphere" : "paraboloid", c, R, r)),
-        toml);
+    expectAccurateAndEstimated(solveAndJudge(toml, fmt::format("{} polyline {} (R {:.2f}, r {:.1e})",
+                                                               sphere ? "sphere" : "paraboloid", c, R, r)),
+                               toml);
   }
 }
 
@@ -232,8 +232,7 @@ TEST(AutomaticAccuracy, RandomPolylinesOnEveryOtherSurfaceKind) {
         "corner_radius = {:.17g}\npoints = [{}]\n",
         R, surfaces[kind], r, points);
     expectAccurateAndEstimated(
-        solveAndJudge(toml, fmt::format("{} polyline {} (R {:.2f}, r {:.1e})", names[kind], c, R, r)),
-        toml);
+        solveAndJudge(toml, fmt::format("{} polyline {} (R {:.2f}, r {:.1e})", names[kind], c, R, r)), toml);
   }
 }
 
@@ -280,8 +279,8 @@ TEST(AutomaticAccuracy, RandomStoryboards) {
     expectAccurateAndEstimated(solveAndJudge(toml, fmt::format("storyboard {} (R {:.2f})", c, R)), toml);
   }
   if (std::getenv("ROLLSPIN_VERBOSE"))
-    std::printf("worst error against the oracle %.2e rad, worst error/estimate %.3g (this binary so far)\n",
-                worstTrue, worstRatio);
+    std::printf("worst error against the oracle %.2e rad, worst error/estimate %.3g (this binary so far)\n", worstTrue,
+                worstRatio);
 }
 
 // Geodesics are integrated (RK4, 500 steps per unit length) and fitted
@@ -316,11 +315,11 @@ TEST(AutomaticAccuracy, GeodesicsCountThePathsOwnError) {
       geodesic("paraboloid", 0.4, "kind = \"paraboloid\"\na = 2\nb = 3", "length = 6\nstart_point = [0.5, -1, 0]",
                {0, 1, 0}),
       geodesic("height field", 0.3, "kind = \"height\"\nz = \"0.3*sin(x)*cos(0.7*y)\"", "length = 8", {1, 0.3, 0}),
-      geodesic("torus", 0.5, "kind = \"torus\"\nmajor_radius = 4\nminor_radius = 1.5", "length = 10",
-               {0.2, 1, 0.4}),
-      {"paraboloid storyboard", "[ball]\nradius = 0.5\n[surface]\nkind = \"paraboloid\"\na = 2\nb = 2\n"
-                                "[[segment]]\npath = { kind = \"parallel\", radius = 1, turns = 0.5 }\n"
-                                "[[segment]]\npath = { kind = \"geodesic\", length = 2.5 }\n",
+      geodesic("torus", 0.5, "kind = \"torus\"\nmajor_radius = 4\nminor_radius = 1.5", "length = 10", {0.2, 1, 0.4}),
+      {"paraboloid storyboard",
+       "[ball]\nradius = 0.5\n[surface]\nkind = \"paraboloid\"\na = 2\nb = 2\n"
+       "[[segment]]\npath = { kind = \"parallel\", radius = 1, turns = 0.5 }\n"
+       "[[segment]]\npath = { kind = \"geodesic\", length = 2.5 }\n",
        {0, 0, 0}},
       {"tilted cylinder storyboard",
        "[ball]\nradius = 0.5\n[surface]\nkind = \"cylinder\"\nradius = 2\naxis = [0, 1, 1]\n"

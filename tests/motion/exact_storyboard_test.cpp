@@ -57,21 +57,22 @@ TEST(ExactStoryboard, AgreesWithTheKinematicsOnEverySurfaceWithConstantCurvature
     for (const char* side : {"outside", "inside"}) {
       const std::string head = fmt::format(
           "[ball]\nradius = {:.17g}\n[surface]\nkind = \"sphere\"\nradius = {:.17g}\nside = \"{}\"\n", R, sphere, side);
-      EXPECT_LT(exactAgainstOracle(head + fmt::format("[[segment]]\npath = {{ kind = \"parallel\", colatitude_deg = "
-                                                      "{:.17g}, turns = {:.17g} }}\n"
-                                                      "[[segment]]\npath = {{ kind = \"geodesic\", length = {:.17g} }}\n"
-                                                      "[[segment]]\npath = {{ kind = \"geodesic\", length = {:.17g} }}\n",
-                                                      colatitude, 0.3 + 0.7 * unit(rng), 1.0 + 2.0 * unit(rng),
-                                                      0.5 + unit(rng)),
-                                   fmt::format("sphere {} geodesics {}", side, c)),
+      EXPECT_LT(exactAgainstOracle(
+                    head + fmt::format("[[segment]]\npath = {{ kind = \"parallel\", colatitude_deg = "
+                                       "{:.17g}, turns = {:.17g} }}\n"
+                                       "[[segment]]\npath = {{ kind = \"geodesic\", length = {:.17g} }}\n"
+                                       "[[segment]]\npath = {{ kind = \"geodesic\", length = {:.17g} }}\n",
+                                       colatitude, 0.3 + 0.7 * unit(rng), 1.0 + 2.0 * unit(rng), 0.5 + unit(rng)),
+                    fmt::format("sphere {} geodesics {}", side, c)),
                 1e-10);
-      EXPECT_LT(exactAgainstOracle(head + fmt::format("[[segment]]\npath = {{ kind = \"parallel\", colatitude_deg = "
-                                                      "{:.17g}, turns = 1 }}\n[[segment]]\nhold = 1\n"
-                                                      "[[segment]]\npath = {{ kind = \"meridian\", azimuth_deg = 0, "
-                                                      "colatitude_start_deg = {:.17g}, colatitude_end_deg = {:.17g} }}\n",
-                                                      colatitude, colatitude, 20.0 + 140.0 * unit(rng)),
-                                   fmt::format("sphere {} meridian {}", side, c)),
-                1e-10);
+      EXPECT_LT(
+          exactAgainstOracle(head + fmt::format("[[segment]]\npath = {{ kind = \"parallel\", colatitude_deg = "
+                                                "{:.17g}, turns = 1 }}\n[[segment]]\nhold = 1\n"
+                                                "[[segment]]\npath = {{ kind = \"meridian\", azimuth_deg = 0, "
+                                                "colatitude_start_deg = {:.17g}, colatitude_end_deg = {:.17g} }}\n",
+                                                colatitude, colatitude, 20.0 + 140.0 * unit(rng)),
+                             fmt::format("sphere {} meridian {}", side, c)),
+          1e-10);
     }
     // Cylinder: a parallel, a helix from its end, a parallel where the helix ends.
     const double a = 1.5 + unit(rng), pitch = -60.0 + 120.0 * unit(rng), turns = 0.3 + unit(rng);

@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "motion/frame_clock.hpp"
 #include "core/error.hpp"
+#include "motion/frame_clock.hpp"
 
 namespace rollspin::motion {
 namespace {
@@ -75,7 +75,8 @@ TEST(FrameClock, TooFewOrTooManyFramesAreBadInput) {
 // The continuous clock (a glTF export's key times) is the frame clock at
 // whole frames, non-decreasing in between, and flat over holds.
 void expectContinuousClockAgrees(const FrameClock& clock) {
-  for (long long k = 0; k < clock.frameCount(); ++k) EXPECT_DOUBLE_EQ(clock.arcLengthAt(double(k)), clock.arcLength(k)) << k;
+  for (long long k = 0; k < clock.frameCount(); ++k)
+    EXPECT_DOUBLE_EQ(clock.arcLengthAt(double(k)), clock.arcLength(k)) << k;
   double previous = 0.0;
   for (double f = 0.0; f <= double(clock.frameCount() - 1); f += 0.125) {
     EXPECT_GE(clock.arcLengthAt(f), previous) << f;

@@ -8,8 +8,8 @@
 
 #include <cmath>
 
-#include "motion/frame_poses.hpp"
 #include "model/rolling_model.hpp"
+#include "motion/frame_poses.hpp"
 #include "motion/frame_sampling.hpp"
 #include "support/test_files.hpp"
 

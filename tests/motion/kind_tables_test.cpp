@@ -22,9 +22,7 @@ std::string pathExtras(PathKind kind) {
   return "";
 }
 
-SceneSpec roundTrip(const SceneSpec& spec) {
-  return loadSceneText(writeScene(spec), "<printed>");
-}
+SceneSpec roundTrip(const SceneSpec& spec) { return loadSceneText(writeScene(spec), "<printed>"); }
 
 TEST(KindTables, EverySurfaceKindIsReachableBuildsAndRoundTrips) {
   for (const SurfaceKindRow& row : surfaceKinds()) {

@@ -103,7 +103,8 @@ TEST(SceneFacts, SphereDeltaIsTheDerivedFormulaInsideAndOut) {
     const SceneFacts f(l.spec, l.model, {Fact::Delta});
     const double th = l.spec.path.colatitudeDeg * kPi / 180, rho = l.spec.surface.number("radius") * std::sin(th);
     const double R = l.spec.ball.radius;
-    EXPECT_NEAR(f.delta->measured, 2 * kPi * std::sqrt(rho * rho / (R * R) + std::cos(th) * std::cos(th)), 1e-9) << name;
+    EXPECT_NEAR(f.delta->measured, 2 * kPi * std::sqrt(rho * rho / (R * R) + std::cos(th) * std::cos(th)), 1e-9)
+        << name;
     const kinematics::RollingKinematics kin(*l.model.path, R, {40000, 0.0});
     EXPECT_NEAR(matrixAngle(kin.finalOrientation()), f.delta->closedFormMod, 1e-8) << name;
   }
@@ -186,8 +187,8 @@ TEST(SceneFacts, BerrySplitSumsToTheTotalPhase) {
   // ... and shrinks with R/r.
   const Loaded smaller = load("berry", {"ball.radius=0.025"});
   const SceneFacts g(smaller.spec, smaller.model, {Fact::PhaseSplit});
-  const double smallerGap =
-      std::abs(std::remainder(g.phaseSplit->adiabaticDynamic + g.phaseSplit->berryGeometric - g.phaseSplit->total, 2 * kPi));
+  const double smallerGap = std::abs(
+      std::remainder(g.phaseSplit->adiabaticDynamic + g.phaseSplit->berryGeometric - g.phaseSplit->total, 2 * kPi));
   EXPECT_LT(smallerGap, 0.3 * adiabaticGap);
   EXPECT_LT(std::abs(g.phaseSplit->residual), 1e-9);
 }
@@ -244,7 +245,7 @@ TEST(SceneFacts, OneNumberChangedStillMatches) {
     EXPECT_NEAR(std::abs(f.turns->lab) / (2 * kPi), 4.0, 1e-9);
     EXPECT_NEAR(std::abs(f.turns->lab - f.turns->frame) / (2 * kPi), 6.0, 1e-9);
     EXPECT_LT(f.turns->lab * f.turns->frame, 0.0);  // still against the revolution
-    EXPECT_FALSE(f.turns->paperPenny);  // two circuits: not the paper's statement
+    EXPECT_FALSE(f.turns->paperPenny);              // two circuits: not the paper's statement
   }
   {
     // Outside, at the equator: the lab turns with the revolution, 1 + r/R... (ω = (1/R)(1 + R/r) u).

@@ -11,9 +11,9 @@
 
 #include "core/error.hpp"
 #include "geometry/uv_curve.hpp"
+#include "media/output_format.hpp"
 #include "model/rolling_model.hpp"
 #include "motion/solve_job.hpp"
-#include "media/output_format.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/scene_writer.hpp"
 #include "spin/field.hpp"
@@ -75,8 +75,8 @@ TEST(SceneLoader, IntegersBeyondTwoToThe53AreNumbers) {
       "[surface]\nkind = \"sphere\"\n[path]\nkind = \"geodesic\"\nstart_point = [9007199254740993, 0, 0]\n", "s.toml");
   ASSERT_TRUE(start.path.startPoint.has_value());
   EXPECT_EQ((*start.path.startPoint)[0], nearest);
-  const scene::SceneSpec points = scene::loadSceneText(
-      "[path]\nkind = \"points\"\npoints = [[0, 0], [1, 9007199254740993], [2, 0]]\n", "s.toml");
+  const scene::SceneSpec points =
+      scene::loadSceneText("[path]\nkind = \"points\"\npoints = [[0, 0], [1, 9007199254740993], [2, 0]]\n", "s.toml");
   ASSERT_EQ(points.path.points.size(), 3u);
   EXPECT_EQ(points.path.points[1][1], nearest);
 }
@@ -167,9 +167,9 @@ TEST(Extends, ChildKeysOverrideTheBaseAndBaseKeysKeepTheirLocation) {
   writeFile(dir / "base.toml", "[ball]\nradius = 0.5\n[path]\nturns = 2\nradius = 4\n");
   const auto child = writeFile(dir / "family" / "child.toml", "extends = \"../base.toml\"\n[path]\nradius = 1.5\n");
   const scene::SceneSpec spec = scene::loadSceneFile(child);
-  EXPECT_EQ(spec.ball.radius, 0.5);    // inherited
-  EXPECT_EQ(spec.path.turns, 2.0);     // inherited
-  EXPECT_EQ(spec.path.radius, 1.5);    // overridden
+  EXPECT_EQ(spec.ball.radius, 0.5);  // inherited
+  EXPECT_EQ(spec.path.turns, 2.0);   // inherited
+  EXPECT_EQ(spec.path.radius, 1.5);  // overridden
   EXPECT_EQ(spec.name, "child");
   EXPECT_EQ(spec.where("ball.radius").str(), (dir / "base.toml").lexically_normal().string() + ":2:10");
   EXPECT_EQ(spec.where("path.radius").line, 3);
@@ -232,8 +232,9 @@ TEST(SceneLoader, FrameRatesAreExactRationals) {
   const std::vector<std::string> ntscFilm{"animation.fps=24000/1001"};
   EXPECT_EQ(scene::loadSceneText("", "s.toml", ntscFilm).animation.fps, (FrameRate{24000, 1001}));
 
-  for (const std::string bad : {"0", "-30", "0.5", "241", "240.5", "12.3456", "\"abc\"", "\"30000/0\"", "\"0/1\"",
-                                "\"-30/1\"", "\"30/1001/2\"", "\"99999999999/1\"", "\"1/99999999999\"", "true", "inf"}) {
+  for (const std::string bad :
+       {"0", "-30", "0.5", "241", "240.5", "12.3456", "\"abc\"", "\"30000/0\"", "\"0/1\"", "\"-30/1\"", "\"30/1001/2\"",
+        "\"99999999999/1\"", "\"1/99999999999\"", "true", "inf"}) {
     try {
       (void)rate(bad);
       ADD_FAILURE() << bad << " was accepted";
@@ -252,7 +253,8 @@ TEST(SceneLoader, FrameRatesAreExactRationals) {
 // (jpeg_quality, crf left to the format, loop) round-trip too.
 TEST(SceneLoader, EveryOutputFormatNameLoadsAndPrintsBack) {
   for (const media::OutputFormat& f : media::kOutputFormats) {
-    const std::string text = fmt::format("[render]\nformat = \"{}\"\njpeg_quality = 70\n[animation]\nloop = false\n", f.name);
+    const std::string text =
+        fmt::format("[render]\nformat = \"{}\"\njpeg_quality = 70\n[animation]\nloop = false\n", f.name);
     const scene::SceneSpec spec = scene::loadSceneText(text, "s.toml");
     ASSERT_TRUE(spec.render.format.has_value());
     EXPECT_EQ(*spec.render.format, f.name);

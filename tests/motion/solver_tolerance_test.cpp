@@ -3,9 +3,9 @@
 // the wrong kind of method are bad input naming the key.
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
 #include "model/rolling_model.hpp"
 #include "motion/solve_job.hpp"
-#include "core/error.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/test_files.hpp"
 #include "support/test_paths.hpp"

@@ -27,8 +27,9 @@ struct Case {
 
 const Case kCases[] = {
     {"sphere outside (closed form)", "[surface]\nkind = \"sphere\"\nradius = 3\n[path]\nkind = \"parallel\"\n"},
-    {"sphere inside, cw", "[ball]\nradius = 0.8\n[surface]\nkind = \"sphere\"\nradius = 3\nside = \"inside\"\n"
-                          "[path]\nkind = \"parallel\"\ndirection = \"cw\"\ncolatitude_deg = 70\n"},
+    {"sphere inside, cw",
+     "[ball]\nradius = 0.8\n[surface]\nkind = \"sphere\"\nradius = 3\nside = \"inside\"\n"
+     "[path]\nkind = \"parallel\"\ndirection = \"cw\"\ncolatitude_deg = 70\n"},
     {"cylinder", "[surface]\nkind = \"cylinder\"\nradius = 2\n[path]\nkind = \"parallel\"\nheight = 0.5\n"},
     {"torus", "[ball]\nradius = 0.5\n[surface]\nkind = \"torus\"\n[path]\nkind = \"parallel\"\ntube_angle_deg = 40\n"},
     {"paraboloid", "[ball]\nradius = 0.5\n[surface]\nkind = \"paraboloid\"\n[path]\nkind = \"parallel\"\n"},

@@ -52,7 +52,8 @@ std::string loadError(const std::string& toml) {
   return "(loaded)";
 }
 
-const std::string kTwoSurfaces = "[ball]\nradius = 0.8\n[surface]\nkind = \"torus\"\nmajor_radius = 4\nminor_radius = 1.5\n";
+const std::string kTwoSurfaces =
+    "[ball]\nradius = 0.8\n[surface]\nkind = \"torus\"\nmajor_radius = 4\nminor_radius = 1.5\n";
 
 }  // namespace
 
@@ -152,8 +153,8 @@ TEST(SurfaceChange, LoaderRefusesSurfaceKeysThatMakeNoSense) {
   const std::string floor = "surface = { kind = \"plane\" }\n";
   const std::string torusLap = "[[segment]]\npath = { kind = \"parallel\" }\n";
   // A hold rests on the previous motion's surface.
-  EXPECT_NE(loadError(kTwoSurfaces + torusLap + "[[segment]]\nhold = 1\n" + floor).find(
-                "segment[2].surface: a hold rests where the previous motion ended"),
+  EXPECT_NE(loadError(kTwoSurfaces + torusLap + "[[segment]]\nhold = 1\n" + floor)
+                .find("segment[2].surface: a hold rests where the previous motion ended"),
             std::string::npos);
   // transition and fade_seconds belong where the surface changes.
   EXPECT_NE(loadError(kTwoSurfaces + torusLap + "[[segment]]\npath = { kind = \"parallel\" }\ntransition = \"fade\"\n")
@@ -162,10 +163,10 @@ TEST(SurfaceChange, LoaderRefusesSurfaceKeysThatMakeNoSense) {
   EXPECT_NE(loadError(kTwoSurfaces + "[[segment]]\npath = { kind = \"parallel\" }\n" + floor + "transition = \"cut\"\n")
                 .find("segment[1].transition: applies where the surface changes; the first segment"),
             std::string::npos);
-  EXPECT_NE(loadError(kTwoSurfaces + torusLap + "[[segment]]\npath = { kind = \"line\" }\n" + floor +
-                      "fade_seconds = 1\n")
-                .find("segment[2].fade_seconds: applies to transition = \"fade\""),
-            std::string::npos);
+  EXPECT_NE(
+      loadError(kTwoSurfaces + torusLap + "[[segment]]\npath = { kind = \"line\" }\n" + floor + "fade_seconds = 1\n")
+          .find("segment[2].fade_seconds: applies to transition = \"fade\""),
+      std::string::npos);
   // A segment's path is checked against its own surface, its surface keys against its kind.
   EXPECT_NE(loadError(kTwoSurfaces + torusLap + "[[segment]]\npath = { kind = \"parallel\" }\n" + floor)
                 .find("but segment[2].surface.kind is \"plane\""),
@@ -175,12 +176,13 @@ TEST(SurfaceChange, LoaderRefusesSurfaceKeysThatMakeNoSense) {
                       "minor_radius = 2 }\n")
                 .find("segment[2].surface.minor_radius"),
             std::string::npos);
-  EXPECT_NE(loadError(kTwoSurfaces + torusLap + "[[segment]]\npath = { kind = \"line\" }\nsurface = { kind = "
+  EXPECT_NE(loadError(kTwoSurfaces + torusLap +
+                      "[[segment]]\npath = { kind = \"line\" }\nsurface = { kind = "
                       "\"plane\", radius = 2 }\n")
                 .find("segment[2].surface.radius"),
             std::string::npos);
   // After the change, a line on the floor starts at its own keys: direction_vector is allowed there.
-  EXPECT_EQ(loadError(kTwoSurfaces + torusLap + "[[segment]]\npath = { kind = \"line\", direction_vector = [0, 1, 0] }\n" +
-                      floor),
+  EXPECT_EQ(loadError(kTwoSurfaces + torusLap +
+                      "[[segment]]\npath = { kind = \"line\", direction_vector = [0, 1, 0] }\n" + floor),
             "(loaded)");
 }

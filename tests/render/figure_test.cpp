@@ -50,14 +50,15 @@ media::Image overWhite(const media::Image& in) {
   media::Image out = in;
   for (std::size_t i = 0; i < out.rgba.size(); i += 4) {
     const int a = in.rgba[i + 3];
-    for (int c = 0; c < 3; ++c) out.rgba[i + c] = static_cast<std::uint8_t>((in.rgba[i + c] * a + 255 * (255 - a) + 127) / 255);
+    for (int c = 0; c < 3; ++c)
+      out.rgba[i + c] = static_cast<std::uint8_t>((in.rgba[i + c] * a + 255 * (255 - a) + 127) / 255);
     out.rgba[i + 3] = 255;
   }
   return out;
 }
 
 struct Difference {
-  double mean = 0.0;     // levels per colour channel, over the image
+  double mean = 0.0;      // levels per colour channel, over the image
   double farShare = 0.0;  // share of pixels with a channel off by more than kFar
 };
 constexpr int kFar = 64;
@@ -126,7 +127,8 @@ TEST(FigureCli, PdfAndSvgRasterizedMatchThePngStill) {
     run("pdftoppm -png -scale-to-x 640 -scale-to-y 360 -singlefile " + (dir / (name + ".pdf")).string() + " " + pdfPng,
         &status);
     ASSERT_EQ(status, 0) << "pdftoppm (poppler-utils) failed";
-    run("rsvg-convert -w 640 -h 360 -o " + (dir / (name + "_svg.png")).string() + " " + (dir / (name + ".svg")).string(),
+    run("rsvg-convert -w 640 -h 360 -o " + (dir / (name + "_svg.png")).string() + " " +
+            (dir / (name + ".svg")).string(),
         &status);
     ASSERT_EQ(status, 0) << "rsvg-convert (librsvg2-bin) failed";
     const media::Image still = media::loadImage(dir / (name + ".png"), {});
@@ -144,8 +146,11 @@ TEST(FigureCli, PdfAndSvgRasterizedMatchThePngStill) {
 // glyph, 4.7 levels of mean at this size from the text alone.
 TEST(FigureCli, ThePngStillKeepsTheFiguresCompositionAtAColumnAtEightPoints) {
   const fs::path dir = test::freshTempDir("figure_column");
-  const std::vector<std::string> keys{"--width", "640", "--height", "360", "--set", "figure.transparent=false",
-                                      "--set", "figure.width=column", "--set", "figure.font_size_pt=8"};
+  const std::vector<std::string> keys{"--width",  "640",
+                                      "--height", "360",
+                                      "--set",    "figure.transparent=false",
+                                      "--set",    "figure.width=column",
+                                      "--set",    "figure.font_size_pt=8"};
   for (const std::string name : {"lollipop", "sphere-inside"}) {
     renderStill(name, dir / (name + ".png"), keys);
     std::vector<std::string> figureArgs = keys;
@@ -164,7 +169,8 @@ TEST(FigureCli, ThePngStillKeepsTheFiguresCompositionAtAColumnAtEightPoints) {
     std::smatch m;
     ASSERT_TRUE(std::regex_search(json, m, std::regex(R"("width_pt": ([0-9.]+))")));
     const double scale = 640.0 / std::stod(m[1]);
-    const std::regex boxPattern(R"re("text": "[^"]*", "box": \[([0-9.\-]+), ([0-9.\-]+), ([0-9.\-]+), ([0-9.\-]+)\])re");
+    const std::regex boxPattern(
+        R"re("text": "[^"]*", "box": \[([0-9.\-]+), ([0-9.\-]+), ([0-9.\-]+), ([0-9.\-]+)\])re");
     media::Image stillMasked = still;
     int boxes = 0, inked = 0;
     for (auto it = std::sregex_iterator(json.begin(), json.end(), boxPattern); it != std::sregex_iterator(); ++it) {
@@ -216,7 +222,8 @@ TEST(FigureCli, PdfEmbedsItsFontsAndTheLabelsAreText) {
   // Every font line: "emb sub uni" are yes yes yes (embedded, subset, ToUnicode).
   int fontLines = 0;
   std::size_t pos = fonts.find("---");
-  for (pos = fonts.find('\n', pos); pos != std::string::npos && pos + 1 < fonts.size(); pos = fonts.find('\n', pos + 1)) {
+  for (pos = fonts.find('\n', pos); pos != std::string::npos && pos + 1 < fonts.size();
+       pos = fonts.find('\n', pos + 1)) {
     const std::string line = fonts.substr(pos + 1, fonts.find('\n', pos + 1) - pos - 1);
     if (line.empty()) continue;
     ++fontLines;
@@ -232,8 +239,9 @@ TEST(FigureCli, PdfEmbedsItsFontsAndTheLabelsAreText) {
 
 TEST(FigureCli, LatinModernFromFontsLmodernAtTheGivenSize) {
   const fs::path dir = test::freshTempDir("figure_lm");
-  renderStill("lollipop", dir / "fig.pdf",
-              {"--set", "figure.font=Latin Modern Roman", "--set", "figure.font_size_pt=8", "--set", "figure.width_in=6"});
+  renderStill(
+      "lollipop", dir / "fig.pdf",
+      {"--set", "figure.font=Latin Modern Roman", "--set", "figure.font_size_pt=8", "--set", "figure.width_in=6"});
   const std::string fonts = run("pdffonts " + (dir / "fig.pdf").string());
   EXPECT_NE(fonts.find("LMRoman10-Regular"), std::string::npos) << fonts;
   const std::string info = run("pdfinfo " + (dir / "fig.pdf").string());

@@ -173,7 +173,8 @@ TEST(LayerKey, AViewWhoseCameraMovedIsFreshAndItsItemsAreNotCompared) {
   DrawList list = twoViews();
   StaticKey key = staticKeyOf(list);
   list.views[0].camera.position = {1, 0, 5};
-  list.views[0].camera.viewFromWorld = glm::lookAt(list.views[0].camera.position, glm::vec3(1, 0, 0), glm::vec3(0, 1, 0));
+  list.views[0].camera.viewFromWorld =
+      glm::lookAt(list.views[0].camera.position, glm::vec3(1, 0, 0), glm::vec3(0, 1, 0));
   list.polylines[0].points.push_back({3.0f, 1.0f, 0});  // in the moved view: not compared
   const auto fresh = freshViews(key, list);
   ASSERT_TRUE(fresh.has_value());

@@ -88,8 +88,8 @@ TEST(LayerPlan, AViewWhoseCameraMovedIsFreshBesideTheLayer) {
   ASSERT_EQ(step(memory, list).step, LayerStep::NewLayer);
   DrawList moved = list;
   moved.views[0].camera.position = {1, 0, 5};
-  moved.views[0].camera.viewFromWorld = glm::lookAt(moved.views[0].camera.position, glm::vec3(1, 0, 0),
-                                                    glm::vec3(0, 1, 0));
+  moved.views[0].camera.viewFromWorld =
+      glm::lookAt(moved.views[0].camera.position, glm::vec3(1, 0, 0), glm::vec3(0, 1, 0));
   const LayerPlan plan = step(memory, moved);
   EXPECT_EQ(plan.step, LayerStep::ServedLayer);
   EXPECT_EQ(plan.fresh, (std::vector<bool>{true, false}));

@@ -60,9 +60,7 @@ TEST_F(RendererTest, PolylinesHaveRoundJoinsAndRoundCaps) {
     list.polylines.push_back(line);
     const media::Image img = renderer_->render(list);
     // The pixel that holds view point p: all its points lie within √2 of p.
-    auto at = [&](glm::vec2 p) {
-      return int(img.pixel(v.x + int(std::floor(p.x)), v.y + int(std::floor(p.y)))[0]);
-    };
+    auto at = [&](glm::vec2 p) { return int(img.pixel(v.x + int(std::floor(p.x)), v.y + int(std::floor(p.y)))[0]); };
     // Whole pixels within half a width of the corner: line; beyond it,
     // where a square corner reached (|x|, |y| ≤ half a width from the
     // vertex along the first segment): background.
@@ -168,7 +166,8 @@ TEST_F(RendererTest, PolylineThroughTheNearPlaneDrawsItsVisiblePart) {
   const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
   auto pixelOf = [&](glm::vec3 world) {
     const glm::vec4 c = clipFromWorld * glm::vec4(world, 1.0f);
-    return glm::ivec2(int((c.x / c.w * 0.5f + 0.5f) * float(v.width)), int((0.5f - c.y / c.w * 0.5f) * float(v.height)));
+    return glm::ivec2(int((c.x / c.w * 0.5f + 0.5f) * float(v.width)),
+                      int((0.5f - c.y / c.w * 0.5f) * float(v.height)));
   };
   const glm::ivec2 start = pixelOf(reaching.points[0]);
   for (int x = start.x + 4; x < v.width; ++x) EXPECT_EQ(img.pixel(x, start.y)[0], 255) << "x = " << x;

@@ -25,7 +25,8 @@ std::array<int, 3> texelByDefinition(int width, int x, int y) {
   double best = -1.0;
   for (int k = 0; k < 96 * 24; ++k) {
     const double t = 2.0 * std::numbers::pi * k / (96 * 24);
-    const glm::dvec3 p(a * std::cos(t) + b * std::cos(3 * t), a * std::sin(t) - b * std::sin(3 * t), c * std::sin(2 * t));
+    const glm::dvec3 p(a * std::cos(t) + b * std::cos(3 * t), a * std::sin(t) - b * std::sin(3 * t),
+                       c * std::sin(2 * t));
     best = std::max(best, glm::dot(d, p));
   }
   const double dist = std::acos(std::clamp(best, -1.0, 1.0));
@@ -49,7 +50,8 @@ TEST(TennisBall, EveryTexelIsWhatTheNearestOfAllSeamSamplesGives) {
       for (int x = y % step; x < width; x += step) {
         const std::array<int, 3> expected = texelByDefinition(width, x, y);
         const std::uint8_t* px = &texture->rgba[(std::size_t(y) * width + x) * 4];
-        for (int ch = 0; ch < 3; ++ch) ASSERT_EQ(int(px[ch]), expected[ch]) << "width " << width << " texel " << x << "," << y;
+        for (int ch = 0; ch < 3; ++ch)
+          ASSERT_EQ(int(px[ch]), expected[ch]) << "width " << width << " texel " << x << "," << y;
         EXPECT_EQ(int(px[3]), 255);
         seam += expected[2] > 100;
         ++checked;

@@ -66,8 +66,8 @@ DrawList clipFrame(int k, int samples = 4, bool rayCastGlass = false) {
   list.meshes.push_back(glass);
   MeshItem ball;
   ball.mesh = sphere;
-  ball.worldFromModel = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.3f * float(k) - 0.8f, 0, 0.4f)),
-                                   glm::vec3(0.4f));
+  ball.worldFromModel =
+      glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.3f * float(k) - 0.8f, 0, 0.4f)), glm::vec3(0.4f));
   ball.material.color = {0.8f, 0.7f, 0.1f};
   ball.dynamic = true;
   ball.sphere = true;  // ray-cast at one sample
@@ -306,8 +306,8 @@ TEST_F(RendererTest, OverTheLayerOnlyPartsReachingTheRectanglesAreDrawn) {
     static const std::shared_ptr<MeshData> small = uvSphere(12, 6);
     MeshItem dot;
     dot.mesh = small;
-    dot.worldFromModel =
-        glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(-0.77f + 0.03f * float(k), 0.77f, 1.8f)), glm::vec3(0.08f));
+    dot.worldFromModel = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(-0.77f + 0.03f * float(k), 0.77f, 1.8f)),
+                                    glm::vec3(0.08f));
     dot.material.color = {0.9f, 0.2f, 0.1f};
     dot.dynamic = true;
     list.meshes.push_back(dot);
@@ -366,8 +366,8 @@ DrawList checkpointFrame(int k) {
   }
   MeshItem plate;
   plate.mesh = clipFrame(0).meshes[1].mesh;
-  plate.worldFromModel = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(1.6f, 1.8f, 0.3f)),
-                                    glm::vec3(k < 3 ? 0.2f : 0.3f));
+  plate.worldFromModel =
+      glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(1.6f, 1.8f, 0.3f)), glm::vec3(k < 3 ? 0.2f : 0.3f));
   plate.material.opacity = 0.5f;
   plate.material.castsShadow = false;  // the shadow box hugs the ball alone
   list.meshes.insert(list.meshes.begin() + 1, plate);
@@ -476,8 +476,7 @@ TEST_F(RendererTest, AViewWhoseCameraMovesIsDrawnWholeBesideALayer) {
   plain.setRetainLayers(false);
   for (int k = 0; k < kFrames; ++k) whole[k] = plain.render(followFrame(k));
   Renderer inOrder(*context_, ShaderLibrary{});
-  for (int k = 0; k < kFrames; ++k)
-    EXPECT_TRUE(sameBytes(inOrder.render(followFrame(k)), whole[k])) << "frame " << k;
+  for (int k = 0; k < kFrames; ++k) EXPECT_TRUE(sameBytes(inOrder.render(followFrame(k)), whole[k])) << "frame " << k;
   // Frame 0 whole; frame 1 builds the layer (the twin held); frames 2…5
   // draw the ball's view whole over it, updating it at 2, 3 and 4 (at 5
   // only the ball's view gained a label).

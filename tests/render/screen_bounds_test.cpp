@@ -62,8 +62,8 @@ TEST(ScreenBounds, ASpheresBoundsHoldEveryPointOfItAndLittleMore) {
       for (int j = 0; j < 360; ++j) {
         const float th = std::numbers::pi_v<float> * float(i) / 180.0f;
         const float ph = 2.0f * std::numbers::pi_v<float> * float(j) / 360.0f;
-        points.push_back(centre + radius * glm::vec3(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph),
-                                                     std::cos(th)));
+        points.push_back(centre +
+                         radius * glm::vec3(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)));
       }
     const glm::vec3 inView(v.camera.viewFromWorld * glm::vec4(centre, 1.0f));
     const auto bounds = sphereBounds(v, centre, radius, 0.0f);

@@ -17,7 +17,8 @@ TEST(ShaderLibrary, ExpandsIncludesFromTheOverrideDirectory) {
   std::ofstream(dir / "a.frag.glsl") << "#version 450 core\n#include \"b\"\nvoid main() { f(); }\n";
   std::ofstream(dir / "b.glsl") << "#include \"c\"\nvoid f() { g(); }\n";
   std::ofstream(dir / "c.glsl") << "void g() {}\n";
-  EXPECT_EQ(ShaderLibrary(dir).source("a.frag"), "#version 450 core\nvoid g() {}\nvoid f() { g(); }\nvoid main() { f(); }\n");
+  EXPECT_EQ(ShaderLibrary(dir).source("a.frag"),
+            "#version 450 core\nvoid g() {}\nvoid f() { g(); }\nvoid main() { f(); }\n");
 }
 
 TEST(ShaderLibrary, AnIncludeCycleIsAnError) {

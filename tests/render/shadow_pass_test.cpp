@@ -79,7 +79,7 @@ TEST_F(RendererTest, ARayCastSpheresShadowIsTheShadowOfItsTriangles) {
   EXPECT_GT(shadowedMesh, 400);  // the shadow falls beside the ball
   EXPECT_NEAR(double(shadowedCast), double(shadowedMesh), 0.02 * double(shadowedMesh));
   EXPECT_LT(double(difference) / double(floorPixels), 0.05);  // mean absolute difference, levels
-  EXPECT_LE(worst, 12);  // a penumbra pixel: a tap or two of sixteen
+  EXPECT_LE(worst, 12);                                       // a penumbra pixel: a tap or two of sixteen
 }
 
 // In the shadow the re-shade (drawn over the shadow box, per pixel) mixes

@@ -47,7 +47,8 @@ TEST_F(RendererTest, SamplesAreDrawnOnlyNearAMeshesEdges) {
   list.meshes.push_back(board);
   MeshItem post;  // a cylinder standing on it: silhouettes, a cap's crease, where two meshes meet
   post.mesh = unitCylinder(24);
-  post.worldFromModel = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(1.0f, 1.5f, 0.0f)), glm::vec3(0.4f, 0.4f, 1.2f));
+  post.worldFromModel =
+      glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(1.0f, 1.5f, 0.0f)), glm::vec3(0.4f, 0.4f, 1.2f));
   post.material.color = {0.2f, 0.4f, 0.8f};
   list.meshes.push_back(post);
   Renderer renderer(*context_, ShaderLibrary{});

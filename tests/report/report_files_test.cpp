@@ -83,7 +83,8 @@ TEST(ReportFiles, ErrorsReportOnAUserSceneGivesTheSettingsToUse) {
   ASSERT_NE(at, std::string::npos) << r.out;
   const std::string line = r.out.substr(at + 5, r.out.find('\n', at) - at - 5);
   EXPECT_TRUE(line.find("--set solver.steps=") != std::string::npos ||
-              line.find("--set solver.tolerance=") != std::string::npos) << line;
+              line.find("--set solver.tolerance=") != std::string::npos)
+      << line;
   std::vector<std::string> args{"solve", scene};
   std::istringstream words(line);
   for (std::string w; words >> w;) args.push_back(w);

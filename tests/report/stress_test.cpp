@@ -105,8 +105,8 @@ TEST(Stress, ErrorEstimateIsConservativeAndNotWildlyPessimistic) {
       spin::estimateError(*c.path, c.ballRadius, method, steps, tolerance, st);
       const double error = spin::rotationDistance(st.final, ref);
       if (std::getenv("ROLLSPIN_VERBOSE"))
-        std::printf("%-28s %-8s error %.2e estimate %.2e\n", c.name.c_str(), std::string(spin::methodName(method)).c_str(),
-                    error, st.errorEstimate);
+        std::printf("%-28s %-8s error %.2e estimate %.2e\n", c.name.c_str(),
+                    std::string(spin::methodName(method)).c_str(), error, st.errorEstimate);
       EXPECT_LE(error, 3.0 * st.errorEstimate + 1e-13) << c.name << " " << spin::methodName(method);
       if (error > 1e-12) {
         EXPECT_LE(st.errorEstimate, 1000.0 * error) << c.name << " " << spin::methodName(method);

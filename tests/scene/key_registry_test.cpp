@@ -2,8 +2,8 @@
 // docs/scene-reference.md is the registry's Markdown, byte for byte; every
 // key the shipped scenes and `rollspin scene --print` use is in the
 // registry; and each documented numeric bound is one the loader enforces.
-#include <gtest/gtest.h>
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 #include <toml++/toml.h>
 
 #include <cmath>
@@ -31,10 +31,10 @@ TEST(KeyRegistry, ReferenceListsEveryKeyTheLoaderAccepts) {
   ASSERT_FALSE(docs.empty()) << "docs/scene-reference.md is missing; " << kRegenerate;
   for (const KeyInfo& k : sceneKeys()) {
     // Each section's table starts at its heading; the key must be in that table.
-    const std::size_t heading = docs.find(k.section.empty() ? std::string("## Top level")
-                                          : k.section == "segment" ? std::string("## [[segment]]")
+    const std::size_t heading = docs.find(k.section.empty()               ? std::string("## Top level")
+                                          : k.section == "segment"        ? std::string("## [[segment]]")
                                           : k.section == "segment.camera" ? std::string("## segment camera")
-                                                                           : "## [" + k.section + "]");
+                                                                          : "## [" + k.section + "]");
     ASSERT_NE(heading, std::string::npos) << "no section for " << k.section << "; " << kRegenerate;
     const std::size_t next = docs.find("\n## ", heading + 1);
     const std::string table = docs.substr(heading, next == std::string::npos ? std::string::npos : next - heading);
@@ -109,8 +109,9 @@ std::string sceneFor(const KeyInfo& k, const std::string& value) {
         }
       }
   }
-  if (k.section == "segment") return "[[segment]]\nhold = 1\n[[segment]]\npath = { kind = \"line\" }\n" +
-                                     (k.key == "hold" ? "[[segment]]\nhold = " + value + "\n" : k.key + " = " + value + "\n");
+  if (k.section == "segment")
+    return "[[segment]]\nhold = 1\n[[segment]]\npath = { kind = \"line\" }\n" +
+           (k.key == "hold" ? "[[segment]]\nhold = " + value + "\n" : k.key + " = " + value + "\n");
   if (k.section == "segment.camera") return "[[segment]]\nhold = 1\ncamera = { " + k.key + " = " + value + " }\n";
   if (k.section == "solver" && k.key == "steps") return "[solver]\nmethod = \"rk4\"\nsteps = " + value + "\n";
   if (k.section == "solver" && k.key == "tolerance") return "[solver]\nmethod = \"rk45\"\ntolerance = " + value + "\n";
@@ -120,7 +121,7 @@ std::string sceneFor(const KeyInfo& k, const std::string& value) {
 std::string literal(double v, bool integer) {
   if (integer) return std::to_string(static_cast<long long>(v));
   return fmt::format("{:.17g}", v).find_first_of(".e") == std::string::npos ? fmt::format("{:.17g}.0", v)
-                                                                              : fmt::format("{:.17g}", v);
+                                                                            : fmt::format("{:.17g}", v);
 }
 
 TEST(KeyRegistry, EveryDocumentedBoundIsOneTheLoaderEnforces) {
@@ -132,17 +133,21 @@ TEST(KeyRegistry, EveryDocumentedBoundIsOneTheLoaderEnforces) {
     std::vector<double> outside;
     // animation.fps reads decimals to 3 places (23.976), so its step is 0.001.
     const double step = integer ? 1.0 : k.key == "fps" ? 1e-3 : 1e-9;
-    if (k.bounds->lo) outside.push_back(k.bounds->loOpen ? *k.bounds->lo : *k.bounds->lo - step * std::max(1.0, std::abs(*k.bounds->lo)));
-    if (k.bounds->hi) outside.push_back(k.bounds->hiOpen ? *k.bounds->hi : *k.bounds->hi + step * std::max(1.0, std::abs(*k.bounds->hi)));
+    if (k.bounds->lo)
+      outside.push_back(k.bounds->loOpen ? *k.bounds->lo
+                                         : *k.bounds->lo - step * std::max(1.0, std::abs(*k.bounds->lo)));
+    if (k.bounds->hi)
+      outside.push_back(k.bounds->hiOpen ? *k.bounds->hi
+                                         : *k.bounds->hi + step * std::max(1.0, std::abs(*k.bounds->hi)));
     for (double v : outside) {
       const std::string text = sceneFor(k, literal(v, integer));
-      const std::string full = (k.section == "segment" || k.section == "segment.camera")
-                                   ? k.key
-                                   : k.section + "." + k.key;
+      const std::string full =
+          (k.section == "segment" || k.section == "segment.camera") ? k.key : k.section + "." + k.key;
       try {
         (void)loadSceneText(text, "probe.toml");
         ADD_FAILURE() << full << " = " << literal(v, integer) << " was accepted, but the reference says "
-                      << rangeText(k) << "\n" << text;
+                      << rangeText(k) << "\n"
+                      << text;
       } catch (const rollspin::Error& e) {
         EXPECT_NE(std::string(e.what()).find(full), std::string::npos) << e.what() << "\n" << text;
       }

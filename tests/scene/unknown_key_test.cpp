@@ -42,8 +42,8 @@ TEST(UnknownKey, AKeyWithoutItsUnitSuggestsTheKeyWithIt) {
     // A stem that is a key of its own (figure.width = "column") is not a mistake.
     if (stem.empty() || k.section.starts_with("segment") || keysOf(k.section).contains(stem)) continue;
     const std::string message = messageOf(k.section + "." + stem + "=1");
-    EXPECT_NE(message.find("did you mean `" + k.key + "` (in "), std::string::npos) << k.section << "." << k.key
-                                                                                       << ": " << message;
+    EXPECT_NE(message.find("did you mean `" + k.key + "` (in "), std::string::npos)
+        << k.section << "." << k.key << ": " << message;
     EXPECT_EQ(message.find(" accepts: "), std::string::npos) << "the list buries the answer: " << message;
     ++checked;
   }

@@ -36,7 +36,8 @@ std::vector<Circuit> circuits() {
     const Side side = outside ? Side::Outside : Side::Inside;
     const std::string tag = outside ? " outside" : " inside";
     auto cyl = std::make_shared<const Cylinder>(2.0, Vec3(0, 0, 1), side);
-    out.push_back({"cylinder" + tag, [=] { return std::unique_ptr<ContactPath>(cylinderParallel(cyl, 0.3, 1.0, true)); }, 1.5, 2.0, 0.0});
+    out.push_back({"cylinder" + tag,
+                   [=] { return std::unique_ptr<ContactPath>(cylinderParallel(cyl, 0.3, 1.0, true)); }, 1.5, 2.0, 0.0});
     auto torus = std::make_shared<const Torus>(4.0, 1.5, side);
     for (double psi : {0.0, 50 * kDeg, 120 * kDeg, 180 * kDeg})
       out.push_back({"torus psi=" + std::to_string(int(psi / kDeg)) + tag,

@@ -67,7 +67,11 @@ TEST(Convergence, ExactIsRoundOffAtAnyArcLength) {
   const auto path = lollipopPath(3.0, 2.0);
   const std::vector<double> s{0.0, 0.123, 3.3, 9.99, 20.5, path->length()};
   std::vector<spin::Su2> exact(s.size()), fine(s.size());
-  (void)spin::Propagator(*path, 1.0, Method::Exact, 0).run(s, [&](std::size_t j, double, const spin::Su2& q) { exact[j] = q; });
-  (void)spin::Propagator(*path, 1.0, Method::Magnus4, 40000).run(s, [&](std::size_t j, double, const spin::Su2& q) { fine[j] = q; });
+  (void)spin::Propagator(*path, 1.0, Method::Exact, 0).run(s, [&](std::size_t j, double, const spin::Su2& q) {
+    exact[j] = q;
+  });
+  (void)spin::Propagator(*path, 1.0, Method::Magnus4, 40000).run(s, [&](std::size_t j, double, const spin::Su2& q) {
+    fine[j] = q;
+  });
   for (std::size_t j = 0; j < s.size(); ++j) EXPECT_LT(spin::spinorDistance(exact[j], fine[j]), 1e-12) << s[j];
 }

@@ -68,7 +68,8 @@ TEST(Frame4, FarMoreAccurateThanMagnus4AtEqualStepsWhenKappaGIsLarge) {
     const double frameErr = spin::spinorDistance(finalOf(*path, 1.0, spin::Method::Frame4, steps), reference);
     const double spaceErr = spin::spinorDistance(finalOf(*path, 1.0, spin::Method::Magnus4, steps), reference);
     if (std::getenv("ROLLSPIN_VERBOSE"))
-      std::printf("steps %lld: frame4 %.2e magnus4 %.2e (ratio %.0f)\n", steps, frameErr, spaceErr, spaceErr / frameErr);
+      std::printf("steps %lld: frame4 %.2e magnus4 %.2e (ratio %.0f)\n", steps, frameErr, spaceErr,
+                  spaceErr / frameErr);
     EXPECT_LT(100.0 * frameErr, spaceErr) << "steps " << steps;
   }
   // And the reference itself agrees with the kinematics.

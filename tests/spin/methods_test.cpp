@@ -154,7 +154,8 @@ TEST(Methods, GeometricMethodsDriftLessThan1e13Per1e6Steps) {
                               {lolli.get(), 1.0, Method::Cf4},     {lolli.get(), 1.0, Method::Magnus6},
                               {lox.get(), 0.7, Method::Magnus4},   {lox.get(), 0.7, Method::Frame4}};
   for (const Run& run : test::sweep(runs)) {
-    const std::string name = std::string(run.path == lolli.get() ? "lollipop " : "loxodrome ") + std::string(spin::methodName(run.method));
+    const std::string name =
+        std::string(run.path == lolli.get() ? "lollipop " : "loxodrome ") + std::string(spin::methodName(run.method));
     const auto st = spin::Propagator(*run.path, run.R, run.method, 1'000'000).solveFinal();
     EXPECT_EQ(st.steps, 1'000'000) << name;
     EXPECT_LE(st.unitarityError, 1e-13) << name;
@@ -172,6 +173,5 @@ TEST(Methods, DivergenceIsAStatusNotANumber) {
     EXPECT_EQ(st.status, spin::SolveStatus::Ok);
     EXPECT_LE(st.unitarityError, 1e-14);
   }
-  EXPECT_EQ(spin::Propagator(*path, 1.0, Method::Frame6a, 0, 0.0).solveFinal().status,
-            spin::SolveStatus::BadTolerance);
+  EXPECT_EQ(spin::Propagator(*path, 1.0, Method::Frame6a, 0, 0.0).solveFinal().status, spin::SolveStatus::BadTolerance);
 }

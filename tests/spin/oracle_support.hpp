@@ -39,8 +39,7 @@ inline spin::Su2 fromMatrix(const Eigen::Matrix3d& m) {
 
 // Lifts Q(s) (sampled finely enough that neighbours differ by far less than
 // π) to SU(2) by continuity from U(0) = +1: the sign the spinor must have.
-inline KinematicRun runKinematics(const geometry::ContactPath& path, double R, std::size_t samples,
-                                  long long steps) {
+inline KinematicRun runKinematics(const geometry::ContactPath& path, double R, std::size_t samples, long long steps) {
   // Keyed by what the path is, not where it lives: a freed path's address
   // is soon reused by the next case.
   static std::string lastKey;

@@ -209,7 +209,8 @@ TEST(Oracle, PaperInnerFormulaDisagreesWithKinematicsAwayFromTheEquator) {
     const auto path = sphereParallel(r, false, th);
     const Matrix3d kin = kinematicFinal(*path, R);
     const Vector3d axis = spin::rotationAngleAxis(parallelOracle(*path, R)).axis;
-    return std::pair{rotationMatrixDistance(kin, rot(axis, paper)), rotationMatrixDistance(kin, rot(axis, derivedDelta({R, r, thetaDeg, false})))};
+    return std::pair{rotationMatrixDistance(kin, rot(axis, paper)),
+                     rotationMatrixDistance(kin, rot(axis, derivedDelta({R, r, thetaDeg, false})))};
   };
   const auto [paperErr45, derivedErr45] = at(45.0);
   EXPECT_GT(paperErr45, 0.1);

@@ -118,7 +118,8 @@ TEST(Storyboard, SolvingTheWholeEqualsTheProductOfThePieces) {
   auto constantPieces = [&] {
     std::vector<std::unique_ptr<geometry::ContactPath>> p;
     p.push_back(std::make_unique<geometry::PlaneLinePath>(plane, Vector3d::Zero(), Vector3d::UnitX(), 4.0));
-    p.push_back(std::make_unique<geometry::PlaneCirclePath>(plane, Vector3d(4, 3, 0), -Vector3d::UnitY(), 3.0, 1.0, true));
+    p.push_back(
+        std::make_unique<geometry::PlaneCirclePath>(plane, Vector3d(4, 3, 0), -Vector3d::UnitY(), 3.0, 1.0, true));
     p.push_back(std::make_unique<geometry::PlaneLinePath>(plane, Vector3d(4, 0, 0), Vector3d::UnitX(), 2.0));
     return p;
   };
@@ -140,8 +141,9 @@ TEST(Storyboard, CarriesOrientationAndSignAcrossJoinsLikeTheKinematics) {
     double R;
   };
   // A sweep: the sanitizer pass checks one of the two.
-  for (const Case& c : test::sweep(std::vector<Case>{{"floor: line, circle, clothoid, line", floorPieces, 0.8},
-                                                     {"sphere: meridian, corner, parallel, meridian", spherePieces, 1.0}})) {
+  for (const Case& c :
+       test::sweep(std::vector<Case>{{"floor: line, circle, clothoid, line", floorPieces, 0.8},
+                                     {"sphere: meridian, corner, parallel, meridian", spherePieces, 1.0}})) {
     const geometry::JoinedPath path(c.pieces());
     std::vector<double> s = spin::uniformSamples(path.length(), 33);
     for (const auto& piece : path.pieces()) {

@@ -60,8 +60,9 @@ Residuals rollingResiduals(const ContactPath& path, double R, spin::Method metho
   std::vector<double> sorted;
   for (auto i : order) sorted.push_back(all[i]);
   std::vector<spin::Su2> qSorted(sorted.size()), q(all.size());
-  const auto st = spin::Propagator(path, R, method, steps)
-                      .run(sorted, [&](std::size_t j, double, const spin::Su2& u) { qSorted[j] = u; });
+  const auto st = spin::Propagator(path, R, method, steps).run(sorted, [&](std::size_t j, double, const spin::Su2& u) {
+    qSorted[j] = u;
+  });
   EXPECT_EQ(st.status, spin::SolveStatus::Ok);
   for (std::size_t j = 0; j < order.size(); ++j) q[order[j]] = qSorted[j];
 
@@ -69,7 +70,8 @@ Residuals rollingResiduals(const ContactPath& path, double R, spin::Method metho
   Residuals worst;
   for (std::size_t n = 0; n < usable.size(); ++n) {
     const double s = sampleS[usable[n]];
-    const std::vector<double> nodes(all.begin() + static_cast<long>(n * 10), all.begin() + static_cast<long>(n * 10 + 9));
+    const std::vector<double> nodes(all.begin() + static_cast<long>(n * 10),
+                                    all.begin() + static_cast<long>(n * 10 + 9));
     const auto w = kinematics::firstDerivativeWeights(nodes, s);
     spin::Su2 dq{0, 0, 0, 0};
     for (int k = 0; k < 9; ++k) {

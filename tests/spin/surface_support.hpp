@@ -31,7 +31,7 @@ double oracleDifferenceStep(double R);
 double rotationGap(const spin::Su2& u, const Eigen::Matrix3d& q);
 
 struct OracleComparison {
-  double worstGap = 0.0;       // max over samples of the SO(3) distance
+  double worstGap = 0.0;  // max over samples of the SO(3) distance
   double unitarityError = 0.0;
 };
 

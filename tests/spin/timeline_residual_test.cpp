@@ -61,13 +61,15 @@ Residuals residuals(const geometry::ContactPath& path, double R, spin::Method me
   std::vector<double> sorted;
   for (auto i : order) sorted.push_back(all[i]);
   std::vector<spin::Su2> qSorted(sorted.size()), q(all.size());
-  const auto st = spin::Propagator(path, R, method, 20000)
-                      .run(sorted, [&](std::size_t j, double, const spin::Su2& u) { qSorted[j] = u; });
+  const auto st = spin::Propagator(path, R, method, 20000).run(sorted, [&](std::size_t j, double, const spin::Su2& u) {
+    qSorted[j] = u;
+  });
   EXPECT_EQ(st.status, spin::SolveStatus::Ok);
   for (std::size_t j = 0; j < order.size(); ++j) q[order[j]] = qSorted[j];
   std::vector<spin::Su2> atSample(samples.size());
-  (void)spin::Propagator(path, R, method, 20000)
-      .run(samples, [&](std::size_t j, double, const spin::Su2& u) { atSample[j] = u; });
+  (void)spin::Propagator(path, R, method, 20000).run(samples, [&](std::size_t j, double, const spin::Su2& u) {
+    atSample[j] = u;
+  });
 
   const kinematics::RollingKinematics kin(path, R, {1000, 0.0});
   Residuals worst;

@@ -12,9 +12,9 @@
 
 #include <chrono>
 #include <fstream>
-#include <thread>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 extern char** environ;
 
@@ -28,7 +28,8 @@ void expectBadScene(const BadScene& c) {
   const auto r = runRollspin({"timeline", scene.string(), "-o", out.string()});
   EXPECT_EQ(r.exitCode, 2) << c.name << "\n" << r.err;
   EXPECT_NE(r.err.find(c.key), std::string::npos) << c.name << ": key missing in\n" << r.err;
-  EXPECT_NE(r.err.find(scene.string() + c.where), std::string::npos) << c.name << ": file:line:col missing in\n" << r.err;
+  EXPECT_NE(r.err.find(scene.string() + c.where), std::string::npos) << c.name << ": file:line:col missing in\n"
+                                                                     << r.err;
   EXPECT_NE(r.err.find(c.hint), std::string::npos) << c.name << ": expectation missing in\n" << r.err;
   std::size_t files = 0;  // nothing written, no temporary left behind
   for (const auto& e : std::filesystem::directory_iterator(dir)) files += e.path() != scene;

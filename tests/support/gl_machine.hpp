@@ -11,7 +11,7 @@
 namespace rollspin::test {
 
 struct EglDevicesHere {
-  bool hardware = false;            // "egl: available, hardware": auto and ROLLSPIN_GL=egl take a GPU
+  bool hardware = false;             // "egl: available, hardware": auto and ROLLSPIN_GL=egl take a GPU
   std::optional<int> softwareIndex;  // "N: Mesa's software device" in the EGL device list
 };
 

@@ -7,7 +7,7 @@
 
 #include "geometry/joined_path.hpp"
 #include "geometry/surface_kinds.hpp"
-#include "model/surface_kinds.hpp"
+#include "model/surface_builder.hpp"
 #include "model/surface_model.hpp"
 #include "spin/field.hpp"
 
@@ -31,7 +31,7 @@ RollingModel buildPathModel(const scene::SceneSpec& spec, const Placement& place
 
   // The closed-form paths are laid by the surface kind's own row.
   model.surface = buildSurface(spec);
-  const geometry::SurfaceKindRow& kindRow = *scene::surfaceKindRow(spec.surface.kind).geometry;
+  const geometry::SurfaceKindRow& kindRow = *scene::sceneSurfaceKind(spec.surface.kind).geometry;
   auto closedForm = [&](geometry::ClosedFormCurve curve, const geometry::ClosedFormRequest& request) {
     return kindRow.closedForm(model.surface, curve, request);
   };

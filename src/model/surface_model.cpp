@@ -5,7 +5,7 @@
 
 #include "geometry/surface_kinds.hpp"
 #include "geometry/surface_paths.hpp"
-#include "model/surface_kinds.hpp"
+#include "model/surface_builder.hpp"
 
 namespace rollspin::model {
 
@@ -44,7 +44,7 @@ std::unique_ptr<geometry::SurfaceCurvePath> buildPath(const scene::SceneSpec& sp
     c.pitchAngle = radians(p.pitchAngleDeg);
     c.heading = radians(p.headingDeg);
     c.startAzimuth = radians(p.startAzimuthDeg);
-    const geometry::SurfaceKindRow& row = *scene::surfaceKindRow(sk).geometry;
+    const geometry::SurfaceKindRow& row = *scene::sceneSurfaceKind(sk).geometry;
     return row.curve ? row.curve(surface, family, c) : nullptr;
   };
   switch (p.kind) {

@@ -98,7 +98,7 @@ const PathKindRow& pathKindRow(PathKind kind) {
 bool liesOn(PathKind path, SurfaceKind surface) {
   switch (pathKindRow(path).liesOn) {
     case LiesOn::Plane: return surface == SurfaceKind::Plane;
-    case LiesOn::Revolution: return surfaceKindRow(surface).ofRevolution;
+    case LiesOn::Revolution: return sceneSurfaceKind(surface).ofRevolution;
     case LiesOn::Curved: return surface != SurfaceKind::Plane;
     case LiesOn::Cylinder: return surface == SurfaceKind::Cylinder;
     case LiesOn::Sphere: return surface == SurfaceKind::Sphere;

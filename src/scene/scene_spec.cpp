@@ -23,7 +23,7 @@ KeyRule surfaceKeyRule(const std::string& key, SurfaceKind sk) {
   for (const auto& row : surfaceKinds())
     // Built by appends: gcc 12's -Wrestrict misfires on "\"" + std::string(…) + "\"".
     if (contains(row.keys, key)) kinds.push_back(std::string(1, '"').append(row.name).append(1, '"'));
-  return {contains(surfaceKindRow(sk).keys, key), orList(kinds)};
+  return {contains(sceneSurfaceKind(sk).keys, key), orList(kinds)};
 }
 
 KeyRule pathKeyRule(const std::string& key, PathKind pk, SurfaceKind sk) {
@@ -36,7 +36,7 @@ KeyRule pathKeyRule(const std::string& key, PathKind pk, SurfaceKind sk) {
     for (const auto& k : row.keys) {
       if (k.key != key) continue;
       std::vector<std::string> on;
-      for (SurfaceKind s : k.on) on.emplace_back(surfaceKindRow(s).name);
+      for (SurfaceKind s : k.on) on.emplace_back(sceneSurfaceKind(s).name);
       (on.empty() ? everywhere : somewhere)
           .push_back(std::string(row.name) + (on.empty() ? "" : " on a " + orList(on)));
       if (row.kind == pk && (k.on.empty() || std::find(k.on.begin(), k.on.end(), sk) != k.on.end())) applies = true;
@@ -76,7 +76,7 @@ std::string SceneSpec::surfaceKeyOf(std::size_t index) const {
   return "surface";
 }
 
-std::string toString(SurfaceKind k) { return std::string(surfaceKindRow(k).name); }
+std::string toString(SurfaceKind k) { return std::string(sceneSurfaceKind(k).name); }
 
 std::string toString(PathKind k) { return std::string(pathKindRow(k).name); }
 

@@ -330,7 +330,7 @@ void Reader::readSurface(const toml::table* surface, const std::string& prefix, 
     const KeyRule rule = surfaceKeyRule(key, sk);
     surfaceOnly(key, rule.applies, rule.kinds);
   }
-  const SurfaceKindRow& kindRow = surfaceKindRow(sk);
+  const SceneSurfaceKind& kindRow = sceneSurfaceKind(sk);
   target.params = ParamSet(kindRow.geometry->params);
   for (const ParamDecl& decl : kindRow.geometry->params) {
     const std::string full = prefix + "." + decl.key;
@@ -380,7 +380,7 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
     for (const auto& row : pathKinds())
       if (row.name == *kind) target.kind = row.kind;
   } else if (sk != SurfaceKind::Plane) {
-    target.kind = surfaceKindRow(sk).defaultPath;  // a curved surface's natural path (e.g. a parallel)
+    target.kind = sceneSurfaceKind(sk).defaultPath;  // a curved surface's natural path (e.g. a parallel)
   }
   const PathKind pk = target.kind;
   const std::string pkName = toString(pk);
@@ -420,7 +420,7 @@ PathKind Reader::readPath(const toml::table* path, const std::string& prefix, Pa
                          pkName, along, n[0], n[1], n[2]));
   }
   if (pk == PathKind::Parallel) {
-    const geometry::SurfaceKindRow& surfaceRow = *surfaceKindRow(sk).geometry;
+    const geometry::SurfaceKindRow& surfaceRow = *sceneSurfaceKind(sk).geometry;
     if (surfaceRow.revolutionProblem)
       if (auto problem = surfaceRow.revolutionProblem(surface.params))
         failAt(pathKindGiven ? (prefix + ".kind") : blamedKey(underTable(*problem, surfaceKey)), problem->message);

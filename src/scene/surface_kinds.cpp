@@ -16,9 +16,9 @@ PathKind pathKindNamed(std::string_view name) {
 }
 
 // geometry's rows, with their names as SurfaceKinds and their default paths as PathKinds.
-const std::vector<SurfaceKindRow>& surfaceTable() {
-  static const std::vector<SurfaceKindRow> rows = [] {
-    std::vector<SurfaceKindRow> out;
+const std::vector<SceneSurfaceKind>& surfaceTable() {
+  static const std::vector<SceneSurfaceKind> rows = [] {
+    std::vector<SceneSurfaceKind> out;
     for (const geometry::SurfaceKindRow& g : geometry::surfaceKindTable()) {
       std::vector<std::string> keys;
       for (const ParamDecl& d : g.params) keys.push_back(d.key);
@@ -30,9 +30,9 @@ const std::vector<SurfaceKindRow>& surfaceTable() {
 }
 }  // namespace
 
-std::span<const SurfaceKindRow> surfaceKinds() { return surfaceTable(); }
+std::span<const SceneSurfaceKind> surfaceKinds() { return surfaceTable(); }
 
-const SurfaceKindRow& surfaceKindRow(SurfaceKind kind) {
+const SceneSurfaceKind& sceneSurfaceKind(SurfaceKind kind) {
   for (const auto& row : surfaceTable())
     if (row.kind == kind) return row;
   assert(false && "every SurfaceKind has a row");
@@ -50,6 +50,6 @@ const std::vector<std::string>& allSurfaceKeys() {
   return keys;
 }
 
-const std::vector<ParamDecl>& surfaceKeyDecls(SurfaceKind kind) { return surfaceKindRow(kind).geometry->params; }
+const std::vector<ParamDecl>& surfaceKeyDecls(SurfaceKind kind) { return sceneSurfaceKind(kind).geometry->params; }
 
 }  // namespace rollspin::scene

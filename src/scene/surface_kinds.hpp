@@ -1,4 +1,5 @@
-// Surface kinds as the scene sees them: geometry's table
+// Surface kinds as the scene sees them (SceneSurfaceKind; geometry's own row
+// is geometry::SurfaceKindRow, one name per concept): geometry's table
 // (geometry/surface_kinds.hpp: each kind's name, its own keys with type,
 // default, range, units and meaning, and its factory) with the path a kind
 // gets when [path] names none as a PathKind. The loader, the printer and the
@@ -39,7 +40,7 @@ inline constexpr SurfaceKind SurfaceKind::Height{"height"};
 
 enum class PathKind;
 
-struct SurfaceKindRow {
+struct SceneSurfaceKind {
   SurfaceKind kind;
   std::string_view name;                     // kind.name()
   std::vector<std::string> keys;             // its own keys of [surface] (besides kind)
@@ -48,8 +49,8 @@ struct SurfaceKindRow {
   const geometry::SurfaceKindRow* geometry;  // its keys' declarations and its factory
 };
 
-[[nodiscard]] std::span<const SurfaceKindRow> surfaceKinds();
-[[nodiscard]] const SurfaceKindRow& surfaceKindRow(SurfaceKind kind);
+[[nodiscard]] std::span<const SceneSurfaceKind> surfaceKinds();
+[[nodiscard]] const SceneSurfaceKind& sceneSurfaceKind(SurfaceKind kind);
 // Every kind-specific key of any kind, in the table's order (no duplicates).
 [[nodiscard]] const std::vector<std::string>& allSurfaceKeys();
 // The declarations (type, default, range, units, meaning) of a kind's own

@@ -14,7 +14,7 @@
 #include "geometry/surface_kinds.hpp"
 #include "geometry/surface_paths.hpp"
 #include "model/rolling_model.hpp"
-#include "model/surface_kinds.hpp"
+#include "model/surface_builder.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace rollspin::model {

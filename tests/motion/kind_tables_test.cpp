@@ -25,7 +25,7 @@ std::string pathExtras(PathKind kind) {
 SceneSpec roundTrip(const SceneSpec& spec) { return loadSceneText(writeScene(spec), "<printed>"); }
 
 TEST(KindTables, EverySurfaceKindIsReachableBuildsAndRoundTrips) {
-  for (const SurfaceKindRow& row : surfaceKinds()) {
+  for (const SceneSurfaceKind& row : surfaceKinds()) {
     SCOPED_TRACE(std::string(row.name));
     const std::string text = "[surface]\nkind = \"" + std::string(row.name) + "\"\n";
     const SceneSpec spec = loadSceneText(text, "<table>");
@@ -55,7 +55,7 @@ TEST(KindTables, EverySurfaceKindIsReachableBuildsAndRoundTrips) {
 // and a meaning (what `rollspin keys` lists), and a scene that sets it to its
 // default prints it back unchanged.
 TEST(KindTables, EverySurfaceKeyIsDeclaredWithAValidDefault) {
-  for (const SurfaceKindRow& row : surfaceKinds()) {
+  for (const SceneSurfaceKind& row : surfaceKinds()) {
     ASSERT_EQ(surfaceKeyDecls(row.kind).size(), row.keys.size());
     for (const ParamDecl& decl : surfaceKeyDecls(row.kind)) {
       SCOPED_TRACE(std::string(row.name) + "." + decl.key);
@@ -87,7 +87,7 @@ TEST(KindTables, EverySurfaceKeyIsDeclaredWithAValidDefault) {
 // A value below a number key's range is refused at its file:line:col, naming
 // the key and the range.
 TEST(KindTables, ANumberKeyBelowItsRangeIsRefusedAtItsLocation) {
-  for (const SurfaceKindRow& row : surfaceKinds())
+  for (const SceneSurfaceKind& row : surfaceKinds())
     for (const ParamDecl& decl : surfaceKeyDecls(row.kind)) {
       if (decl.type != ParamType::Number) continue;
       SCOPED_TRACE(std::string(row.name) + "." + decl.key);
@@ -107,7 +107,7 @@ TEST(KindTables, ANumberKeyBelowItsRangeIsRefusedAtItsLocation) {
 TEST(KindTables, EveryPathKindIsReachableOnEachSurfaceItLiesOnAndRoundTrips) {
   for (const PathKindRow& path : pathKinds()) {
     int surfaces = 0;
-    for (const SurfaceKindRow& surface : surfaceKinds()) {
+    for (const SceneSurfaceKind& surface : surfaceKinds()) {
       if (!liesOn(path.kind, surface.kind)) continue;
       // A parallel on a paraboloid needs a = b (a surface of revolution).
       SCOPED_TRACE(std::string(path.name) + " on " + std::string(surface.name));
@@ -137,7 +137,7 @@ TEST(KindTables, EveryPathKindIsReachableOnEachSurfaceItLiesOnAndRoundTrips) {
 
 TEST(KindTables, APathOffItsSurfacesIsRejected) {
   for (const PathKindRow& path : pathKinds())
-    for (const SurfaceKindRow& surface : surfaceKinds()) {
+    for (const SceneSurfaceKind& surface : surfaceKinds()) {
       if (liesOn(path.kind, surface.kind)) continue;
       const std::string text = "[surface]\nkind = \"" + std::string(surface.name) + "\"\n[path]\nkind = \"" +
                                std::string(path.name) + "\"\n";

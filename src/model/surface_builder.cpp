@@ -1,4 +1,4 @@
-#include "model/surface_kinds.hpp"
+#include "model/surface_builder.hpp"
 
 #include "geometry/surface_kinds.hpp"
 
@@ -35,7 +35,7 @@ std::string surfaceFormulaKey(const scene::SceneSpec& spec) {
 
 std::shared_ptr<const geometry::Surface> buildSurface(const scene::SceneSpec& spec) {
   try {
-    return scene::surfaceKindRow(spec.surface.kind).geometry->create(spec.surface.params);
+    return scene::sceneSurfaceKind(spec.surface.kind).geometry->create(spec.surface.params);
   } catch (const geometry::ExpressionError& e) {
     // The kind's formula key (its Expression parameter) is the one to blame.
     const std::string key = surfaceFormulaKey(spec);

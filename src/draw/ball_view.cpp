@@ -69,6 +69,7 @@ BallView::BallView(const scene::SceneSpec& spec, const model::RollingModel& mode
   else if (model.surface && look.mesh == geometry::SurfaceLook::Mesh::Sphere)
     shape = sphereSurface(look, box, spec, model, pathPoints_);
   else if (model.surface) shape = chartSurface(*model.surface, box, R, pathPoints_, extent_.points);
+  surfaceIsBoard_ = !model.surface || look.mesh == geometry::SurfaceLook::Mesh::Board;
   surfaceMesh_ = std::move(shape.mesh);
   surfaceMaterial_ = shape.material;
   cutRim_ = std::move(shape.cutRim);

@@ -62,6 +62,13 @@ class BallView {
   // Marks what the view shows at s that text must not cover: the ball and
   // (withPath) the contact path; the plate's trail so far.
   void markImportant(Occupancy& occupancy, const render::View& v, double s, bool withPath) const;
+  // The screen bounds (the view's pixels, y down, clipped to it) of the
+  // surface as drawn and the ball at s: the subject a figure keeps at half
+  // its view (docs/figures.md).
+  [[nodiscard]] std::pair<glm::vec2, glm::vec2> subjectBounds(const render::View& v, double s) const;
+  // Whether the surface is drawn as a board (a plane): a patch cut to the
+  // path, not a subject of its own.
+  [[nodiscard]] bool surfaceIsBoard() const { return surfaceIsBoard_; }
 
  private:
   void addSurface(render::DrawList& list, double s, int view, const std::optional<geometry::Vec3>& cutAwayFrom) const;
@@ -101,6 +108,7 @@ class BallView {
   std::shared_ptr<const motion::SceneFacts> facts_;
   std::shared_ptr<render::MeshData> sphereMesh_, dotMesh_, surfaceMesh_, discMesh_;
   render::Material surfaceMaterial_;
+  bool surfaceIsBoard_ = true;  // see surfaceIsBoard()
   geometry::Vec3 plateCircleCentre_ = geometry::Vec3::Zero();
   std::vector<geometry::Vec3> cutRim_;
   std::vector<std::vector<geometry::Vec3>>

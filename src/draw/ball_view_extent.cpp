@@ -1,7 +1,10 @@
-// BallView::stillExtent: what a figure's camera frames for one still.
+// BallView::stillExtent and subjectBounds: what a figure's camera frames
+// for one still, and how large its subject comes out.
 #include <algorithm>
+#include <cmath>
 
 #include "draw/ball_view.hpp"
+#include "draw/draw_style.hpp"
 
 namespace rollspin::draw {
 
@@ -46,6 +49,32 @@ FrameExtent BallView::stillExtent(double s) const {
   for (std::size_t i = centrePoints_; i < extent_.points.size(); ++i)
     add(extent_.points[i], std::binary_search(surfacePoints_.begin(), surfacePoints_.end(), i) ? onSurface : R);
   return still;
+}
+
+std::pair<glm::vec2, glm::vec2> BallView::subjectBounds(const render::View& v, double s) const {
+  const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
+  glm::vec2 lo(1e30f), hi(-1e30f);
+  auto add = [&](const glm::vec3& p, float radius) {
+    const glm::vec4 c = clipFromWorld * glm::vec4(p, 1.0f);
+    if (c.w <= 1e-6f) return;
+    const glm::vec2 ndc = glm::vec2(c) / c.w;
+    // A sphere's outline: about R f / depth (a little more off the axis;
+    // the clamp below keeps it inside the view).
+    const glm::vec2 r = radius * glm::vec2(v.camera.clipFromView[0][0], v.camera.clipFromView[1][1]) / c.w;
+    for (const glm::vec2 corner : {ndc - r, ndc + r}) {
+      const glm::vec2 q = glm::clamp(corner, glm::vec2(-1.0f), glm::vec2(1.0f));
+      const glm::vec2 px((q.x + 1.0f) * 0.5f * float(v.width), (1.0f - q.y) * 0.5f * float(v.height));
+      lo = glm::min(lo, px), hi = glm::max(hi, px);
+    }
+  };
+  const double R = model_.ballRadius;
+  add(toGlm(model_.path->at(std::clamp(s, 0.0, model_.path->length())).centre(R)), float(R));
+  if (surfaceMesh_) {
+    const std::size_t every = std::max<std::size_t>(1, surfaceMesh_->vertices.size() / 4000);
+    for (std::size_t i = 0; i < surfaceMesh_->vertices.size(); i += every)
+      add(surfaceMesh_->vertices[i].position, 0.0f);
+  }
+  return {lo, hi};
 }
 
 }  // namespace rollspin::draw

@@ -336,7 +336,8 @@ FailedBlock placeBlocks(int w, int h, const std::vector<TextBlock>& blocks, cons
 // What layOutBlocks needs to narrow the window for text.
 struct WindowLimits {
   const std::function<Occupancy(const NdcWindow&)>& occupancyFor;
-  double minWindow, minSubjectShare;
+  double minWindow;
+  const SubjectShare& subject;
 };
 
 // The window narrowed to leave the failed block's column or band free,
@@ -344,9 +345,9 @@ struct WindowLimits {
 // width over its projected width, or height over height); the other if
 // that one is not usable: the same window, under minWindow, or (a figure's
 // subject keeps its share of the view: its text gives way first) leaving
-// the subject under minSubjectShare. A side already given to text grows
-// (the block stacks there) before a new one is taken. None where neither
-// is usable.
+// the subject under its least share (SubjectShare). A side already given
+// to text grows (the block stacks there) before a new one is taken. None
+// where neither is usable.
 std::optional<NdcWindow> windowClearOf(int w, int h, const TextBlock& block, glm::vec2 size, FailedBlock failed,
                                        const NdcWindow& window, const Occupancy& occupancy,
                                        const WindowLimits& limits) {
@@ -383,12 +384,12 @@ std::optional<NdcWindow> windowClearOf(int w, int h, const TextBlock& block, glm
     return win;
   };
   auto subjectShare = [&](const NdcWindow& win) {
-    const auto [lo, hi] = limits.occupancyFor(win).bounds();
+    const auto [lo, hi] = limits.subject.boundsFor ? limits.subject.boundsFor(win) : limits.occupancyFor(win).bounds();
     return hi.x > lo.x ? double(std::max(hi.x - lo.x, hi.y - lo.y)) / double(std::min(w, h)) : 1.0;
   };
   auto usable = [&](const NdcWindow& win) {
     return !sameWindow(win, window) && win.x1 - win.x0 >= limits.minWindow && win.y1 - win.y0 >= limits.minWindow &&
-           (limits.minSubjectShare <= 0.0 || subjectShare(win) >= limits.minSubjectShare);
+           (limits.subject.least <= 0.0 || subjectShare(win) >= limits.subject.least);
   };
   const auto [subjectLo, subjectHi] = occupancy.bounds();
   const double subjectAspect =
@@ -411,7 +412,7 @@ std::optional<NdcWindow> windowClearOf(int w, int h, const TextBlock& block, glm
 // and the layout starts again from the widest window.
 ViewLayout layOutBlocks(int w, int h, const std::vector<TextBlock>& given,
                         const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow,
-                        double minWindow, double minSubjectShare, bool& clear) {
+                        double minWindow, const SubjectShare& subject, bool& clear) {
   ViewLayout layout;
   std::vector<TextBlock> blocks = given;
   std::vector<glm::vec2> sizes;
@@ -426,7 +427,7 @@ ViewLayout layOutBlocks(int w, int h, const std::vector<TextBlock>& given,
     for (const TextBlock& b : blocks) layout.lines.push_back(b.lines.size());
     return layout;
   };
-  const WindowLimits limits{occupancyFor, minWindow, minSubjectShare};
+  const WindowLimits limits{occupancyFor, minWindow, subject};
   for (int attempt = 0;; ++attempt) {
     const Occupancy occupancy = occupancyFor(layout.window);
     const FailedBlock failed = placeBlocks(w, h, blocks, sizes, occupancy, fixedWindow, layout);
@@ -451,7 +452,7 @@ ViewLayout layOutBlocks(int w, int h, const std::vector<TextBlock>& given,
 
 ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
                       const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow,
-                      double minWindow, double minSubjectShare) {
+                      double minWindow, const SubjectShare& subject) {
   // The passes below try the same windows again (each starts from the
   // whole view; a dropped line starts over): each window's occupancy is
   // computed once. It is a function of the window alone, and costly (the
@@ -464,12 +465,12 @@ ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
     return seen.back().second;
   };
   bool clear = false;
-  ViewLayout layout = layOutBlocks(w, h, blocks, occupancyOnce, fixedWindow, minWindow, minSubjectShare, clear);
+  ViewLayout layout = layOutBlocks(w, h, blocks, occupancyOnce, fixedWindow, minWindow, subject, clear);
   // Text over the subject is worse than a smaller subject: where even the
   // lines that must stay find no room, allow the narrowest window.
   constexpr double kNarrowest = 0.6;
   if (!clear && minWindow > kNarrowest)
-    layout = layOutBlocks(w, h, blocks, occupancyOnce, fixedWindow, kNarrowest, minSubjectShare, clear);
+    layout = layOutBlocks(w, h, blocks, occupancyOnce, fixedWindow, kNarrowest, subject, clear);
   // Still no room (large text in a small figure): the lines each block
   // keeps give way too, down to its first (a heading, a caption's first
   // line with the rest of it), rather than lie over the subject.
@@ -481,7 +482,7 @@ ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
       b.keep = std::min(b.keep, first);
     }
     bool fewerClear = false;
-    ViewLayout relaxed = layOutBlocks(w, h, fewer, occupancyOnce, fixedWindow, kNarrowest, minSubjectShare, fewerClear);
+    ViewLayout relaxed = layOutBlocks(w, h, fewer, occupancyOnce, fixedWindow, kNarrowest, subject, fewerClear);
     if (fewerClear) layout = relaxed;
   }
   return layout;

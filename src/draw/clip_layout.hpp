@@ -107,11 +107,18 @@ inline constexpr float kLeastCaptionEm = 12.0f;
 // the camera itself) the window stays whole and a block with no free slot
 // takes its first slot. The window keeps at least minWindow of the view's
 // NDC extent (2) on each axis; past that, blocks give up lines instead.
-// With minSubjectShare > 0 (a figure) the window also keeps the subject
-// (the occupancy's bounds) at least that share of the view's shorter side.
+// With a SubjectShare (a figure) the window also keeps the subject at
+// least that share of the view's shorter side.
+struct SubjectShare {
+  double least = 0.0;  // 0: no such rule
+  // The subject's bounds in the view's pixels for a camera framed into a
+  // window (a figure: its surface as drawn and the ball); none: the
+  // occupancy's bounds.
+  std::function<std::pair<glm::vec2, glm::vec2>(const NdcWindow&)> boundsFor;
+};
 ViewLayout layoutView(int w, int h, const std::vector<TextBlock>& blocks,
                       const std::function<Occupancy(const NdcWindow&)>& occupancyFor, bool fixedWindow,
-                      double minWindow = 0.6, double minSubjectShare = 0.0);
+                      double minWindow = 0.6, const SubjectShare& subject = {});
 
 // The largest part of a view w × h clear of `boxes` (pixels, y down; each
 // padded by `gap`), as a window: of the rectangles between the view's edges

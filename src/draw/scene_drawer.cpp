@@ -44,8 +44,9 @@ const glm::vec4 kCaptionColor{0.55f, 0.12f, 0.02f, 1.0f};
 // A figure's twin: the room left round its sphere's window for the axis
 // and pole labels, in lines of body text (a line is about 1.4 em).
 constexpr double kTwinLabelMargin = 0.9;
-// The least share of its view's shorter side a figure's subject (the ball
-// and its path as the layout marks them) keeps.
+// The least share of its view's shorter side a figure's subject (the
+// surface as drawn and the ball; on a plane the ball and its path as the
+// layout marks them) keeps.
 constexpr double kFigureSubjectShare = 0.5;
 
 // A segment's caption: the lecturer's own text, so it shows even with
@@ -82,18 +83,27 @@ SceneDrawer::SceneDrawer(const scene::SceneSpec& spec, const RollingModel& model
     return;
   }
   // Several surfaces: a drawer per stretch, each with the whole clip's
-  // model for its twin and the whole clip's marker.
-  for (const motion::SurfaceStretch& stretch : stretches_) {
-    parts_.push_back(
-        std::unique_ptr<SceneDrawer>(new SceneDrawer(stretch, model, ballTexture, facts, markerBody_, figureText_)));
+  // model for its twin and the whole clip's marker; a figure's still is
+  // framed by the stretch that shows it, in that stretch's arc length.
+  std::optional<std::size_t> stillStretch;
+  if (figure() && spec.render.strobe <= 1 && figureStillAt)
+    stillStretch =
+        stretchOf(motion::storyPlaceAt(model, std::clamp(*figureStillAt, 0.0, model.path->length())).segment);
+  for (std::size_t k = 0; k < stretches_.size(); ++k) {
+    const motion::SurfaceStretch& stretch = stretches_[k];
+    const std::optional<double> stillAt =
+        stillStretch == k ? std::optional<double>(*figureStillAt - stretch.start) : std::nullopt;
+    parts_.push_back(std::unique_ptr<SceneDrawer>(
+        new SceneDrawer(stretch, model, ballTexture, facts, markerBody_, figureText_, stillAt)));
   }
 }
 
 SceneDrawer::SceneDrawer(const motion::SurfaceStretch& stretch, const RollingModel& whole,
                          std::shared_ptr<const render::TextureImage> ballTexture,
                          std::shared_ptr<const SceneFacts> facts, const geometry::Vec3& markerBody,
-                         FigureText figureText)
+                         FigureText figureText, std::optional<double> stillAt)
     : spec_(stretch.spec), figureText_(figureText), stretchStart_(stretch.start), markerBody_(markerBody) {
+  stillAt_ = stillAt;
   build(stretch.model, whole, std::move(ballTexture), std::move(facts));
 }
 
@@ -364,10 +374,28 @@ bool SceneDrawer::layOutBallView(const RollingModel& model, const Rects& r, doub
   // (docs/figures.md): text that finds no room beside it is left out (and
   // named) rather than shrink it further. (A strobe's or several
   // surfaces' figure keeps the clip's framing and its text.)
-  ballLayout_ = layoutView(r.ball.width, r.ball.height, blocks, occupancyFor, camera_->fixedByScene(), minWindow,
-                           stillAt_ ? kFigureSubjectShare : 0.0);
+  // The subject: the surface as drawn and the ball; a plane's board, cut
+  // to the path, is no subject of its own: there the ball, its path and
+  // its trail (the occupancy) are.
+  SubjectShare subject;
+  if (stillAt_) subject.least = kFigureSubjectShare;
+  if (stillAt_ && !ball_->surfaceIsBoard()) {
+    const double s = std::clamp(*stillAt_, 0.0, L);
+    subject.boundsFor = [&, s](const NdcWindow& window) {
+      camera_->setWindow(window);
+      const render::View v = camera_->ballCamera(0, 0, r.ball.width, r.ball.height, s, motion::storyPlaceAt(model, s));
+      return ball_->subjectBounds(v, s);
+    };
+  }
+  ballLayout_ =
+      layoutView(r.ball.width, r.ball.height, blocks, occupancyFor, camera_->fixedByScene(), minWindow, subject);
   camera_->setWindow(ballLayout_.window);
   if (moveCaptionsBelow(ballLayout_, blocks, float(r.ball.width))) return true;
+  // A figure's block that found no room beside a subject of half the view
+  // is left out (and named) rather than put over the subject.
+  if (subject.least > 0.0)
+    for (std::size_t i = 0; i < ballLayout_.found.size(); ++i)
+      if (!ballLayout_.found[i]) ballLayout_.lines[i] = 0, ballLayout_.found[i] = true;
   // A figure's subject fills the room its text leaves: the layout narrows
   // the window by a column or a band at a time, and only as far as the
   // text needs; the largest rectangle clear of the placed plates (by the

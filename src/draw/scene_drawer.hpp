@@ -90,10 +90,11 @@ class SceneDrawer {
  private:
   // One surface's stretch: its scene and model for the ball view and the
   // camera, the whole clip's model (`whole`) for the twin, the marker body
-  // direction of the whole clip.
+  // direction of the whole clip; `stillAt`: the figure's still lies in
+  // this stretch, at this arc length of its own.
   SceneDrawer(const motion::SurfaceStretch& stretch, const RollingModel& whole,
               std::shared_ptr<const render::TextureImage> ballTexture, std::shared_ptr<const SceneFacts> facts,
-              const geometry::Vec3& markerBody, FigureText figureText);
+              const geometry::Vec3& markerBody, FigureText figureText, std::optional<double> stillAt);
   void build(const RollingModel& ball, const RollingModel& whole,
              std::shared_ptr<const render::TextureImage> ballTexture, std::shared_ptr<const SceneFacts> facts);
   // The stretch that shows segment k, and a frame in its own arc length

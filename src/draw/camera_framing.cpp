@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "draw/draw_style.hpp"
+#include "draw/screen_axes.hpp"
 #include "motion/frame_clock.hpp"
 
 namespace rollspin::draw {
@@ -159,7 +160,22 @@ OrbitAngles CameraFraming::along(const std::vector<Keyframe> &keys, double s) {
   return {near + std::remainder(azimuth - near, 2.0 * std::numbers::pi), std::asin(std::clamp(d.z(), -1.0, 1.0))};
 }
 
-CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingModel &model, FrameExtent extent)
+// A segment's camera keys laid over the shot it starts from.
+void CameraFraming::layCameraKeys(const scene::CameraSpec &c, Shot &shot) {
+  if (c.azimuthDeg) shot.azimuth = *c.azimuthDeg * kDeg;
+  if (c.elevationDeg) shot.elevation = *c.elevationDeg * kDeg;
+  if (c.fovDeg) shot.fovDeg = *c.fovDeg;
+  if (c.distance) shot.distance = *c.distance;
+  if (c.follow) shot.follow = *c.follow;
+  if (c.follow && *c.follow) shot.target.reset();
+  if (c.target) {
+    shot.target = Vec3((*c.target)[0], (*c.target)[1], (*c.target)[2]);
+    shot.follow = false;
+  }
+}
+
+CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingModel &model, FrameExtent extent,
+                             bool forStill)
     : spec_(spec), model_(model), extent_(std::move(extent)) {
   const OrbitAngles sceneAngles = orbitAngles(spec, model);
   bool azimuthGiven = spec.locations.contains("render.azimuth_deg");
@@ -208,18 +224,9 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
     shot.orbitOffset = 0.0;
     shot.keys.clear();
     shot.cutsAway = false;
-    if (c.azimuthDeg) shot.azimuth = *c.azimuthDeg * kDeg;
-    if (c.elevationDeg) shot.elevation = *c.elevationDeg * kDeg;
+    layCameraKeys(c, shot);
     azimuthGiven = azimuthGiven || c.azimuthDeg.has_value();
     elevationGiven = elevationGiven || c.elevationDeg.has_value();
-    if (c.fovDeg) shot.fovDeg = *c.fovDeg;
-    if (c.distance) shot.distance = *c.distance;
-    if (c.follow) shot.follow = *c.follow;
-    if (c.follow && *c.follow) shot.target.reset();
-    if (c.target) {
-      shot.target = Vec3((*c.target)[0], (*c.target)[1], (*c.target)[2]);
-      shot.follow = false;
-    }
     shot.moveSeconds = kCameraMove;
     if (!(shot.target && shot.distance)) {  // follow: the angles are still free
       model::SegmentSpan span = model.segments[k];
@@ -232,6 +239,13 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
           span = model.segments[k + 1];
           seconds = segmentSeconds[k + 1];
         }
+      }
+      // (A closing hold keeps the stretch of the shot before it: the ball
+      // rests where that one framed it.)
+      if (span.end > span.start) {
+        shot.ownStretch = !forStill && spec.segments.size() > 1 && !shot.follow && !shot.target;
+        shot.stretchStart = span.start;
+        shot.stretchEnd = span.end;
       }
       const OrbitAngles base{shot.azimuth, shot.elevation};
       Unhidden u = unhiddenAngles(base, span.start, span.end, !azimuthGiven, !elevationGiven, true,
@@ -257,7 +271,12 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
     shot.keyed = (shot.target && shot.distance) || azimuthGiven || elevationGiven;
     shots_.push_back(shot);
   }
+  holdTheMovesAhead(segmentSeconds);
   findHiddenSpans();
+}
+
+bool CameraFraming::closesIn() const {
+  return std::any_of(shots_.begin(), shots_.end(), [](const Shot &s) { return s.ownStretch; });
 }
 
 bool CameraFraming::fixedByScene() const {
@@ -344,8 +363,11 @@ CameraFraming::Aim CameraFraming::aimOf(const Shot &shot, int w, int h, double s
   // gives, uses nothing of the fit.
   Vec3 target = Vec3::Zero();
   double distance = 0.0;
-  if (!shot.follow && !(shot.target && shot.distance))
+  if (!shot.follow && !(shot.target && shot.distance)) {
     std::tie(target, distance) = framedFit(a, fovDeg, aspect, !shot.target);
+    if (closeIn_ > 0.0 && shot.ownStretch && !shot.distance)
+      closeInOnStretch(shot, a, fovDeg, aspect, target, distance);
+  }
   if (shot.follow) {
     target = model_.path->at(s).centre(R);
     distance = fitDistance(4.0 * R, fovDeg, aspect);
@@ -379,23 +401,6 @@ std::pair<Vec3, double> CameraFraming::framedFit(const OrbitAngles &a, double fo
   return {target, distance};
 }
 
-namespace {
-
-// The view's right and up directions and the tangents of its half angles
-// across them, for a camera looking along the orbit angles `a`.
-struct ScreenAxes {
-  Vec3 toEye;
-  Vec3 axes[2];
-  double tans[2];
-};
-ScreenAxes screenAxes(const OrbitAngles &a, double fovDeg, double aspect) {
-  const Vec3 toEye = towardEye(a);
-  const Vec3 right = Vec3::UnitZ().cross(toEye).normalized();
-  const double tanV = std::tan(0.5 * fovDeg * kDeg);
-  return {toEye, {right, toEye.cross(right)}, {tanV * aspect, tanV}};
-}
-
-}  // namespace
 
 // In the window's own NDC the subject's points (padded by R) must stay in
 // [-1, 1]; the view's edge lies at (±1 − centre) / half-width of the
@@ -518,8 +523,10 @@ CameraFraming::Aim CameraFraming::aimAt(const StoryPlace &story, int w, int h, d
       azimuth = from.azimuth + std::remainder(std::atan2(d.y(), d.x()) - from.azimuth, 2.0 * std::numbers::pi);
     elevation = std::asin(std::clamp(d.z(), -1.0, 1.0));
   }
-  return {from.target + (to.target - from.target) * x, mix(from.distance, to.distance), azimuth, elevation,
-          mix(from.fovDeg, to.fovDeg)};
+  Aim mixed{from.target + (to.target - from.target) * x, mix(from.distance, to.distance), azimuth, elevation,
+            mix(from.fovDeg, to.fovDeg)};
+  if (closeIn_ > 0.0 && (shots_[k].ownStretch || shots_[k - 1].ownStretch)) keepBallInView(mixed, from, to, x, w, h, s);
+  return mixed;
 }
 
 render::View CameraFraming::ballCamera(int x, int y, int w, int h, double s, const StoryPlace &story) const {

@@ -97,7 +97,10 @@ class CameraFraming {
 
   // Cameras: [render]'s (with the defaults orbitAngles derives), then each
   // segment's keys laid over the previous segment's camera.
-  CameraFraming(const scene::SceneSpec &spec, const model::RollingModel &model, FrameExtent extent);
+  // `forStill`: the extent is one still's (BallView::stillExtent), already
+  // framed for its own place: no segment closes in (kLeastBallShare).
+  CameraFraming(const scene::SceneSpec &spec, const model::RollingModel &model, FrameExtent extent,
+                bool forStill = false);
 
   // The camera of a frame: its segment's, or on the way there from the
   // previous segment's during the first kCameraMove seconds.
@@ -114,6 +117,12 @@ class CameraFraming {
     bool left = false, right = false, bottom = false, top = false;
   };
   void setInnerEdges(const InnerEdges &edges) { innerEdges_ = edges; }
+  // Whether a storyboard's segments may frame their own stretches where
+  // the whole clip's framing leaves the ball small (kLeastBallShare), and
+  // how far of the way they go: 0 frames the whole clip in every segment,
+  // 1 as close as the ball asks (where the text leaves less room, between).
+  [[nodiscard]] bool closesIn() const;  // (whatever setCloseIn says)
+  void setCloseIn(double share) { closeIn_ = share; }
   // Whether the scene fixes the camera itself (target and distance, or
   // follow), so that the framing cannot make room for text.
   [[nodiscard]] bool fixedByScene() const;
@@ -166,7 +175,26 @@ class CameraFraming {
     bool cutsAway = false;             // the surface is cut away where it hides the ball
     std::vector<Keyframe> keys;        // non-empty: the view direction turns with s
                                        // through these (unhiddenAngles)
+    // A storyboard's free camera: the stretch of path it is framed for
+    // (a hold: the next motion's), closer than the whole clip's framing
+    // where that leaves the ball under kLeastBallShare (ownStretch).
+    bool ownStretch = false;
+    double stretchStart = 0.0, stretchEnd = 0.0;
   };
+  // A storyboard's ball takes at least this share of its view's height
+  // (docs/rendering.md) unless its segment's own path spans more: the
+  // camera of that segment comes closer, towards the fit of its own stretch.
+  static constexpr double kLeastBallShare = 0.105;
+  // The target and distance of `shot`, framed for the whole clip, brought
+  // closer where the ball would be under kLeastBallShare (ownStretch).
+  static void layCameraKeys(const scene::CameraSpec &c, Shot &shot);
+  // Steps a camera moving between two shots back where the ball at s would
+  // come closer than kEdgeMargin to the window's edge.
+  void keepBallInView(Aim &mixed, const Aim &from, const Aim &to, double x, int w, int h, double s) const;
+  // Widens each ownStretch shot's stretch over the next motion's camera move.
+  void holdTheMovesAhead(const std::vector<double> &segmentSeconds);
+  void closeInOnStretch(const Shot &shot, const OrbitAngles &a, double fovDeg, double aspect, geometry::Vec3 &target,
+                        double &distance) const;
   // A view chosen to keep the ball in sight over [s0, s1].
   struct Unhidden {
     OrbitAngles angles;
@@ -220,6 +248,7 @@ class CameraFraming {
   FrameExtent extent_;
   NdcWindow window_;
   InnerEdges innerEdges_;
+  double closeIn_ = 1.0;
   std::vector<Shot> shots_;  // one per storyboard segment (one for a scene without segments)
   std::vector<std::string> hiddenWarnings_;
   mutable std::mutex fitsMutex_;

@@ -133,7 +133,8 @@ void SceneDrawer::build(const RollingModel& model, const RollingModel& whole,
   ball_ = std::make_unique<BallView>(spec, model, std::move(ballTexture), std::move(facts), markerBody_, dotMesh,
                                      figureText_);
   if (&model != &whole) ball_->showWholeArcLength(stretchStart_, whole.path->length());
-  camera_ = std::make_unique<CameraFraming>(spec, model, stillAt_ ? ball_->stillExtent(*stillAt_) : ball_->extent());
+  camera_ = std::make_unique<CameraFraming>(spec, model, stillAt_ ? ball_->stillExtent(*stillAt_) : ball_->extent(),
+                                            stillAt_.has_value());
   layOut(model);
 }
 
@@ -387,8 +388,10 @@ bool SceneDrawer::layOutBallView(const RollingModel& model, const Rects& r, doub
       return ball_->subjectBounds(v, s);
     };
   }
+  camera_->setCloseIn(0.0);
   ballLayout_ =
       layoutView(r.ball.width, r.ball.height, blocks, occupancyFor, camera_->fixedByScene(), minWindow, subject);
+  closeInBesideText(blocks, r, occupancyFor);
   camera_->setWindow(ballLayout_.window);
   if (moveCaptionsBelow(ballLayout_, blocks, float(r.ball.width))) return true;
   // A figure's block that found no room beside a subject of half the view
@@ -415,6 +418,23 @@ bool SceneDrawer::layOutBallView(const RollingModel& model, const Rects& r, doub
     camera_->setWindow(ballLayout_.window);
   }
   return false;
+}
+
+// Segments framed closer than the whole clip (a small ball) take only the
+// room the text leaves: the text is laid out beside the whole clip's
+// framing, and the closer views go as far of the way as clears every plate.
+void SceneDrawer::closeInBesideText(const std::vector<TextBlock>& blocks, const Rects& r,
+                                    const std::function<Occupancy(const NdcWindow&)>& occupancyFor) {
+  if (!camera_->closesIn()) return;
+  camera_->setWindow(ballLayout_.window);
+  const auto plates = placedPlates(blocks, ballLayout_, ballReserved_, r.ball.width, r.ball.height, false);
+  for (const double share : {1.0, 0.75, 0.5, 0.25, 0.0}) {
+    camera_->setCloseIn(share);
+    const Occupancy closer = occupancyFor(ballLayout_.window);
+    if (share == 0.0 ||
+        std::none_of(plates.begin(), plates.end(), [&](const auto& p) { return closer.anyIn(p.first, p.second); }))
+      return;
+  }
 }
 
 // The twin view's text, and the window its camera frames the sphere into;

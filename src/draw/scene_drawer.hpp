@@ -122,6 +122,8 @@ class SceneDrawer {
   void layOut(const RollingModel& model);
   bool layOutBallView(const RollingModel& model, const Rects& r, double minWindow,
                       const std::vector<FrameOrientations>& samples);
+  void closeInBesideText(const std::vector<TextBlock>& blocks, const Rects& r,
+                         const std::function<Occupancy(const NdcWindow&)>& occupancyFor);
   bool layOutTwinView(const Rects& r, double minWindow, const std::vector<FrameOrientations>& samples);
   render::DrawList drawList(const FrameOrientations& frame, const FrameOrientations& whole) const;
   // Whether a caption would break narrower than kLeastCaptionEm, or find

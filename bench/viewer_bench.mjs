@@ -4,7 +4,9 @@
 //   - the page's size and what it is made of (three.js bundle, GLB, timeline, scene),
 // and for the scenes given with --fps (default lollipop, storyboard, torus):
 //   - playback in headless Chromium on SwiftShader at 1280×720, counted by the
-//     page itself over 5 s (window.rollspin.measureFps(5)).
+//     page itself over 5 s (window.rollspin.measureFps(5)): as the page plays
+//     (its render scale adapting to hold 30 frames/s, web/src/frame_pacer.js;
+//     the scale it settled at), then at full resolution throughout.
 // Usage: node bench/viewer_bench.mjs [--rollspin build/rollspin] [--fps a,b] [SCENE ...]
 import { execFileSync } from 'node:child_process';
 import { createRequire } from 'node:module';
@@ -67,8 +69,20 @@ async function measureFps(files) {
       const info = gl && gl.getExtension('WEBGL_debug_renderer_info');
       return info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : 'unknown';
     });
-    const fps = await page.evaluate(() => window.rollspin.measureFps(5));
-    results.push({ scene, fps, renderer });
+    // Playing as a viewer does (the render scale adapts to hold 30 frames/s;
+    // the scale it settled at, read just before the count ends), then at
+    // full resolution throughout.
+    const adaptive = await page.evaluate(async () => {
+      const counting = window.rollspin.measureFps(5);
+      await new Promise((r) => setTimeout(r, 4900));
+      const scale = window.rollspin.renderScale();
+      return { fps: await counting, scale };
+    });
+    const full = await page.evaluate(() => {
+      window.rollspin.adaptiveResolution = false;
+      return window.rollspin.measureFps(5);
+    });
+    results.push({ scene, fps: adaptive.fps, scale: adaptive.scale, full, renderer });
     await page.close();
   }
   await context.close();
@@ -84,9 +98,10 @@ for (const e of exports)
   console.log(`| ${e.scene} | ${e.seconds.toFixed(2)} | ${kb(e.bytes)} | ${kb(e.bundle)} | ${kb(e.glb)} | ${kb(e.timeline)} | ${kb(e.sceneText)} |`);
 const files = fpsScenes.map((s) => [s, exports.find((e) => e.scene === s)?.file ?? exportScene(s).file]);
 const fps = await measureFps(files);
-console.log('\n| scene | frames per second, 1280×720, 5 s | renderer |');
-console.log('| --- | ---: | --- |');
-for (const f of fps) console.log(`| ${f.scene} | ${f.fps.toFixed(1)} | ${f.renderer} |`);
+console.log('\n| scene | frames/s, 1280×720, 5 s | render scale | frames/s at full resolution | renderer |');
+console.log('| --- | ---: | ---: | ---: | --- |');
+for (const f of fps)
+  console.log(`| ${f.scene} | ${f.fps.toFixed(1)} | ${f.scale.toFixed(2)} | ${f.full.toFixed(1)} | ${f.renderer} |`);
 fs.rmSync(work, { recursive: true, force: true });
 const slow = fps.filter((f) => f.fps < 30), big = exports.filter((e) => e.bytes > 3 * 1024 * 1024 || e.seconds >= 1);
 if (slow.length || big.length) {

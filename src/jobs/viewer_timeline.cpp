@@ -81,6 +81,7 @@ ViewerClock viewerClock(const scene::SceneSpec& spec, const model::RollingModel&
       s0 = s1 = std::max(0.0, s0 - kTwinKnotGap * length);
     out.s0.push_back(s0);
     out.s1.push_back(s1);
+    out.segment.push_back(held);
   }
   return out;
 }
@@ -123,8 +124,6 @@ ViewerTimeline sampleViewerTimeline(const scene::SceneSpec& spec, const model::R
   timeline.length = model.path->length();
   timeline.ballRadius = model.ballRadius;
   const double R = model.ballRadius;
-  const motion::FrameClock clock = motion::clipClock(spec, model);
-  timeline.seconds = std::max(1e-3, double(clock.motionFrames()) / spec.animation.fps.value());
   // The Bloch vector is the image of the marker (the renders' twin view): ball.marker, else n(0).
   geometry::Vec3 marker = spec.ball.marker
                               ? geometry::Vec3((*spec.ball.marker)[0], (*spec.ball.marker)[1], (*spec.ball.marker)[2])
@@ -175,15 +174,16 @@ std::string viewerTimelineJson(const ViewerTimeline& timeline) {
         chapters.empty() ? "" : ", ", ch.number, ch.start, ch.end, quoted(ch.caption), quoted(ch.title), ch.surface);
   const ViewerClock& clock = timeline.clock;
   const std::string clockJson =
-      fmt::format("{{\"seconds\": [{:.17g}], \"s0\": [{:.17g}], \"s1\": [{:.17g}], \"smooth\": {}}}",
-                  fmt::join(clock.seconds, ","), fmt::join(clock.s0, ","), fmt::join(clock.s1, ","), clock.smooth);
+      fmt::format("{{\"seconds\": [{:.17g}], \"s0\": [{:.17g}], \"s1\": [{:.17g}], \"segment\": [{}], \"smooth\": {}}}",
+                  fmt::join(clock.seconds, ","), fmt::join(clock.s0, ","), fmt::join(clock.s1, ","),
+                  fmt::join(clock.segment, ","), clock.smooth);
   return fmt::format(
-      "{{\"length\": {:.17g}, \"seconds\": {:.17g}, \"ballRadius\": {:.17g}, \"marker\": [{:.17g}], \"viewDeg\": "
+      "{{\"length\": {:.17g}, \"ballRadius\": {:.17g}, \"marker\": [{:.17g}], \"viewDeg\": "
       "[{:.17g}], \"chapters\": [{}],\n\"clock\": {},\n"
       "\"s\": [{:.17g}],\n\"q\": [{:.17g}],\n\"B\": [{:.17g}],\n\"centre\": [{:.17g}],\n\"centreRate\": [{:.17g}]}}",
-      timeline.length, timeline.seconds, timeline.ballRadius, fmt::join(timeline.marker, ", "),
-      fmt::join(timeline.viewDeg, ", "), chapters, clockJson, fmt::join(s, ","), fmt::join(q, ","), fmt::join(b, ","),
-      fmt::join(c, ","), fmt::join(dc, ","));
+      timeline.length, timeline.ballRadius, fmt::join(timeline.marker, ", "), fmt::join(timeline.viewDeg, ", "),
+      chapters, clockJson, fmt::join(s, ","), fmt::join(q, ","), fmt::join(b, ","), fmt::join(c, ","),
+      fmt::join(dc, ","));
 }
 
 }  // namespace rollspin::jobs

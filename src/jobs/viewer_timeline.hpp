@@ -52,14 +52,14 @@ struct ViewerChapter {
 // surface change that still shows the earlier surface holds a hair before
 // the join (kTwinKnotGap · L), so that s names the surface the clip shows.
 struct ViewerClock {
-  std::vector<double> seconds;  // the pieces' bounds, from 0 to the clip's last frame
-  std::vector<double> s0, s1;   // one per piece
+  std::vector<double> seconds;       // the pieces' bounds, from 0 to the clip's last frame
+  std::vector<double> s0, s1;        // one per piece
+  std::vector<std::size_t> segment;  // one per piece: the scene segment it shows (0 without a storyboard)
   bool smooth = true;
 };
 
 struct ViewerTimeline {
   double length = 0.0, ballRadius = 1.0;
-  double seconds = 1.0;             // how long the clip's motion lasts (holds left out): playback at 1×
   std::array<double, 3> marker{};   // the body point whose image is the Bloch vector
   std::array<double, 2> viewDeg{};  // render.azimuth_deg, render.elevation_deg: where the views look from
   std::vector<ViewerKnot> knots;

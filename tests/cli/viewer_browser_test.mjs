@@ -104,7 +104,8 @@ async function checkStates(page, scene, dir) {
 async function checkPixels(page, scene, dir) {
   const shot = path.join(dir, `${scene}.png`);
   await page.screenshot({ path: shot });
-  const views = await page.evaluate(() => window.rollspin.views().map((v) => {
+  // (drawNow: the canvases keep no drawing buffer past the frame's task.)
+  const views = await page.evaluate(() => (window.rollspin.drawNow(), window.rollspin.views()).map((v) => {
     const canvas = document.querySelector(`#${v.element} canvas`);
     const probe = document.createElement('canvas');
     probe.width = canvas.width;
@@ -166,6 +167,19 @@ async function checkChapters(page, scene) {
     if (chapters[k].end > chapters[k].start)
       check(st.segment === chapters[k].number, `${scene}: chapter ${chapters[k].number} shows segment ${st.segment}`);
   }
+  // Played through on the clip's clock, every chapter's caption shows in its
+  // time, a hold's too (while s rests where the motion before it ended).
+  const shown = await page.evaluate(async () => {
+    const v = window.rollspin, seen = new Set();
+    for (let i = 0; i <= 400; ++i) {
+      v.seekTime((v.duration * i) / 400);
+      await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+      seen.add(document.getElementById('caption').textContent);
+    }
+    return [...seen];
+  });
+  for (const c of chapters)
+    if (c.caption) check(shown.includes(c.caption), `${scene}: chapter ${c.number}'s caption "${c.caption}" never shows in time`);
 }
 
 // The GLB's JSON chunk and an accessor's floats (tightly packed, as the exporter writes them).

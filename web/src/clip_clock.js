@@ -28,6 +28,7 @@ export class ClipClock {
     this.s0 = data.s0;
     this.s1 = data.s1;
     this.smooth = data.smooth;
+    this.segments = data.segment ?? [];  // the scene segment each piece shows (a hold: its own)
     this.duration = this.seconds[this.seconds.length - 1];
   }
 
@@ -44,6 +45,12 @@ export class ClipClock {
     const k = this.piece(t), t0 = this.seconds[k], t1 = this.seconds[k + 1];
     if (!(this.s1[k] > this.s0[k])) return this.s0[k];
     return this.s0[k] + (this.s1[k] - this.s0[k]) * ease(this.smooth, (t - t0) / (t1 - t0));
+  }
+
+  // The scene segment the clip shows at second t (a hold's own, where s
+  // alone would name the motion before it); null without pieces' segments.
+  segmentAt(t) {
+    return this.segments.length ? this.segments[this.piece(Math.min(this.duration, Math.max(0, Number(t))))] : null;
   }
 
   // The clip's second where a motion shows s (its start when s begins one,

@@ -9,10 +9,14 @@
 //   window.rollspin.sAt(t), timeAt(s), seekTime(t)   the clip's clock (playback at 1× follows it)
 //   window.rollspin.play(), pause(), chapters, measureFps(seconds) → Promise<frames per second>,
 //   views() → [{name: "ball" | "bloch", element, centre: [x, y]}] (page pixels)
+//   renderScale()  the share of the device pixel ratio the views render at (FramePacer: below 1 only while playing)
+//   drawNow()      draws both views in this task, for a caller that reads the canvases right after
+//   adaptiveResolution   true (the default): playback lowers renderScale to hold 30 frames/s; false: full resolution
 import { Timeline } from './timeline.js';
 import { TwinScene, embeddedBytes } from './twin_scene.js';
 import { Player, bindControls } from './player.js';
 import { ClipClock } from './clip_clock.js';
+import { FramePacer } from './frame_pacer.js';
 
 function readJson(id) {
   return JSON.parse(document.getElementById(id).textContent);
@@ -69,11 +73,19 @@ function start() {
     pause: () => player.pause(),
     measureFps: (seconds = 5) => measureFps(player, counter, seconds),
     views: () => twin.screenCentres(),
+    renderScale: () => twin.renderScale,
+    // Draws both views now: their canvases hold the frame until this task
+    // ends (the page does not preserve drawing buffers: cheaper to present),
+    // so a caller reads them (drawImage, toDataURL) right after.
+    drawNow: () => { twin.pose(timeline, player.s); twin.render(); },
   };
   window.rollspin = api;
   api.ready = twin.load(embeddedBytes(document.getElementById('rollspin-glb'))).then(() => {
     new ResizeObserver(() => { twin.resize(); dirty = true; }).observe(document.getElementById('stage'));
     twin.resize();
+    const pacer = new FramePacer(twin);
+    Object.defineProperty(api, 'adaptiveResolution', {
+      get: () => pacer.enabled, set: (on) => (pacer.enabled = Boolean(on)), enumerable: true });
     const frame = (now) => {
       if (player.tick(now)) dirty = true;
       if (dirty) {
@@ -83,6 +95,7 @@ function start() {
         counter.frames += 1;
         dirty = false;
       }
+      if (pacer.drawn(now, player.playing)) dirty = true;
       requestAnimationFrame(frame);
     };
     twin.pose(timeline, 0);

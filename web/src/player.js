@@ -108,8 +108,11 @@ function buildChapters(player, timeline) {
     return b;
   });
   let shown = null;
-  return (s) => {
-    const current = timeline.segment(s);
+  // The chapter of the clip's second t (a hold shows its own caption while
+  // s rests where the motion before it ended); by s where the clock has none.
+  return (s, t) => {
+    const atTime = player.clock?.segmentAt(t);
+    const current = atTime === null || atTime === undefined ? timeline.segment(s) : atTime + 1;
     if (current === shown) return;
     shown = current;
     buttons.forEach((b, k) => {
@@ -175,6 +178,6 @@ export function bindControls(player, timeline, actions) {
     scrubber.value = String(s);
     scrubber.setAttribute('aria-valuetext', `s = ${s.toFixed(2)} of ${timeline.length.toFixed(2)}`);
     showReadouts(timeline, s);
-    showChapter(s);
+    showChapter(s, player.t);
   };
 }

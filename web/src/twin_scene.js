@@ -35,8 +35,9 @@ class View {
   constructor(element, layer, viewDeg) {
     this.element = element;
     this.viewDeg = viewDeg;
-    this.renderer = new THREE.WebGLRenderer({ antialias: false, alpha: true, preserveDrawingBuffer: true });
-    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+    this.renderer = new THREE.WebGLRenderer({ antialias: false, alpha: true, preserveDrawingBuffer: false });
+    this.basePixelRatio = Math.min(window.devicePixelRatio || 1, 2);
+    this.renderer.setPixelRatio(this.basePixelRatio);
     this.renderer.outputColorSpace = THREE.SRGBColorSpace;
     this.renderer.setClearColor(0x000000, 0);
     element.prepend(this.renderer.domElement);
@@ -147,11 +148,14 @@ function shadeAsTheRenders(root) {
     const phong = o.isMesh ? o.material.userData?.rollspin : null;
     if (!phong || !o.material.isMeshStandardMaterial) return;
     const m = o.material;
-    o.material = new THREE.MeshPhongMaterial({
-      name: m.name, color: m.color, map: m.map, transparent: m.transparent, opacity: m.opacity, side: m.side,
-      depthWrite: m.depthWrite, shininess: phong.shininess,
-      specular: new THREE.Color().setScalar(phong.specular * PHONG_SCALE / (0.5 * phong.shininess + 1)),
-    });
+    const common = { name: m.name, color: m.color, map: m.map, transparent: m.transparent, opacity: m.opacity,
+      side: m.side, depthWrite: m.depthWrite };
+    // No highlight (the surface, the path): Lambert's diffuse term is
+    // Phong's without the specular lobe, the same pixels for less work.
+    o.material = phong.specular > 0
+      ? new THREE.MeshPhongMaterial({ ...common, shininess: phong.shininess,
+        specular: new THREE.Color().setScalar(phong.specular * PHONG_SCALE / (0.5 * phong.shininess + 1)) })
+      : new THREE.MeshLambertMaterial(common);
     m.dispose();
   });
 }
@@ -165,6 +169,7 @@ export class TwinScene {
     this.ballView.renderer.shadowMap.enabled = true;
     this.ballView.renderer.shadowMap.type = THREE.PCFShadowMap;
     this.views = [this.ballView, this.blochView];
+    this.renderScale = 1;
   }
 
   async load(buffer) {
@@ -265,6 +270,16 @@ export class TwinScene {
 
   resize() {
     for (const v of this.views) v.resize();
+  }
+
+  // The share of the device's pixels each view renders (1: all of them);
+  // the canvases keep their size on the page (FramePacer).
+  setRenderScale(scale) {
+    this.renderScale = scale;
+    for (const v of this.views) {
+      v.renderer.setPixelRatio(v.basePixelRatio * scale);
+      v.resize();
+    }
   }
 
   render() {

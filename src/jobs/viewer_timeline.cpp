@@ -147,10 +147,12 @@ ViewerTimeline sampleViewerTimeline(const scene::SceneSpec& spec, const model::R
       },
       spec.sourceFile.empty() ? spec.name : spec.sourceFile);
   const std::vector<std::size_t> stretchOfSegment = segmentStretches(spec, model);
+  std::array<double, 2> view = timeline.viewDeg;
   for (std::size_t k = 0; k < spec.segments.size() && k < model.segments.size(); ++k) {
     const scene::SegmentSpec& seg = spec.segments[k];
+    view = {seg.camera.azimuthDeg.value_or(view[0]), seg.camera.elevationDeg.value_or(view[1])};
     timeline.chapters.push_back({k + 1, model.segments[k].start, model.segments[k].end, seg.caption,
-                                 seg.title.value_or(spec.render.title), stretchOfSegment[k]});
+                                 seg.title.value_or(spec.render.title), stretchOfSegment[k], view});
   }
   timeline.clock = viewerClock(spec, model, stretchOfSegment);
   return timeline;
@@ -170,8 +172,9 @@ std::string viewerTimelineJson(const ViewerTimeline& timeline) {
   for (const ViewerChapter& ch : timeline.chapters)
     chapters += fmt::format(
         "{}{{\"number\": {}, \"start\": {:.17g}, \"end\": {:.17g}, \"caption\": {}, \"title\": {}, "
-        "\"surface\": {}}}",
-        chapters.empty() ? "" : ", ", ch.number, ch.start, ch.end, quoted(ch.caption), quoted(ch.title), ch.surface);
+        "\"surface\": {}, \"viewDeg\": [{:.17g}]}}",
+        chapters.empty() ? "" : ", ", ch.number, ch.start, ch.end, quoted(ch.caption), quoted(ch.title), ch.surface,
+        fmt::join(ch.viewDeg, ", "));
   const ViewerClock& clock = timeline.clock;
   const std::string clockJson =
       fmt::format("{{\"seconds\": [{:.17g}], \"s0\": [{:.17g}], \"s1\": [{:.17g}], \"segment\": [{}], \"smooth\": {}}}",

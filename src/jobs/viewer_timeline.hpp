@@ -43,6 +43,10 @@ struct ViewerChapter {
   double start = 0.0, end = 0.0;
   std::string caption, title;
   std::size_t surface = 0;  // the surface stretch it is on: GLB node "surface" (0), "surface.1", …
+  // Where the ball view looks from in this segment, [azimuth, elevation] in
+  // degrees: render.azimuth_deg / elevation_deg with each segment's camera
+  // keys laid over the previous segment's, as the renders' storyboard does.
+  std::array<double, 2> viewDeg{};
 };
 
 // The clip's clock (motion::FrameClock) as pieces in the clip's seconds:

@@ -180,6 +180,20 @@ async function checkChapters(page, scene) {
   });
   for (const c of chapters)
     if (c.caption) check(shown.includes(c.caption), `${scene}: chapter ${c.number}'s caption "${c.caption}" never shows in time`);
+  // Each motion's ball view looks from its segment's angles (camera keys laid
+  // over the earlier segments'), from Reset on with no orbit in between.
+  await page.locator('#reset').click();
+  for (const c of chapters.filter((ch) => ch.end > ch.start)) {
+    const eye = await page.evaluate(async (s) => {
+      window.rollspin.seek(s);
+      await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+      return window.rollspin.views()[0].eye;
+    }, 0.5 * (c.start + c.end));
+    const [az, el] = c.viewDeg.map((d) => (d * Math.PI) / 180);
+    const want = [Math.cos(el) * Math.cos(az), Math.cos(el) * Math.sin(az), Math.sin(el)];
+    const off = Math.max(...want.map((w, i) => Math.abs(w - eye[i])));
+    check(off < 1e-6, `${scene}: chapter ${c.number} looks from [${eye}], not its angles ${c.viewDeg} (off by ${off})`);
+  }
 }
 
 // The GLB's JSON chunk and an accessor's floats (tightly packed, as the exporter writes them).

@@ -118,6 +118,13 @@ export class Timeline {
     return number;
   }
 
+  // Where the ball view looks from at s, [azimuth, elevation] (degrees): the
+  // current segment's camera keys over the earlier ones' (null without chapters).
+  viewDeg(s) {
+    const current = this.segment(s);
+    return this.chapters.find((c) => c.number === current)?.viewDeg ?? null;
+  }
+
   // The surface shown at s: the current segment's (0 for GLB node "surface", k for "surface.k").
   surface(s) {
     const current = this.segment(s);

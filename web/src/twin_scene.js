@@ -235,9 +235,22 @@ export class TwinScene {
     this.ballView.frame(this.surfaces[k].sphere);
   }
 
+  // Looks at the ball view from a segment's angles where its camera keys
+  // turn it (as the renders' storyboard moves its camera); the reader's own
+  // orbit stays until the next such change.
+  showViewDeg(deg) {
+    if (!deg || (this.shownViewDeg && deg[0] === this.shownViewDeg[0] && deg[1] === this.shownViewDeg[1])) return;
+    const first = !this.shownViewDeg;
+    this.shownViewDeg = deg;
+    if (first && deg[0] === this.ballView.viewDeg[0] && deg[1] === this.ballView.viewDeg[1]) return;
+    this.ballView.viewDeg = deg;
+    this.ballView.reset();
+  }
+
   // Poses the ball (centre, rotation) and the arrows at arc length s, on its surface.
   pose(timeline, s) {
     this.showSurface(timeline.surface(s));
+    this.showViewDeg(timeline.viewDeg(s));
     const q = rotationOf(timeline.quaternion(s));
     const { ball, spin, field } = this.nodes;
     if (ball) {
@@ -265,7 +278,13 @@ export class TwinScene {
       return { name, element: view.element.id,
         centre: [box.left + ((p.x + 1) / 2) * box.width, box.top + ((1 - p.y) / 2) * box.height] };
     };
-    return [centreOf(this.ballView, this.nodes.ball, 'ball'), centreOf(this.blochView, this.nodes.bloch, 'bloch')];
+    // (eye: the unit vector from the view's target to its camera, in the scene's z-up frame.)
+    const eyeOf = (view) => {
+      const d = view.camera.position.clone().sub(view.controls.target).normalize();
+      return [d.x, -d.z, d.y];
+    };
+    return [{ ...centreOf(this.ballView, this.nodes.ball, 'ball'), eye: eyeOf(this.ballView) },
+      { ...centreOf(this.blochView, this.nodes.bloch, 'bloch'), eye: eyeOf(this.blochView) }];
   }
 
   resize() {

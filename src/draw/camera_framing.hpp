@@ -191,7 +191,8 @@ class CameraFraming {
   // Steps a camera moving between two shots back where the ball at s would
   // come closer than kEdgeMargin to the window's edge.
   void keepBallInView(Aim &mixed, const Aim &from, const Aim &to, double x, int w, int h, double s) const;
-  // Widens each ownStretch shot's stretch over the next motion's camera move.
+  // Gives back-to-back turning cameras a move where either frames its own
+  // stretch, and widens each ownStretch shot's stretch over the next motion's camera move.
   void holdTheMovesAhead(const std::vector<double> &segmentSeconds);
   void closeInOnStretch(const Shot &shot, const OrbitAngles &a, double fovDeg, double aspect, geometry::Vec3 &target,
                         double &distance) const;

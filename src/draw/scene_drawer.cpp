@@ -373,8 +373,9 @@ bool SceneDrawer::layOutBallView(const RollingModel& model, const Rects& r, doub
   };
   // A figure's subject takes at least half of its view's shorter side
   // (docs/figures.md): text that finds no room beside it is left out (and
-  // named) rather than shrink it further. (A strobe's or several
-  // surfaces' figure keeps the clip's framing and its text.)
+  // named) rather than shrink it further. (A strobe's figure keeps the
+  // clip's framing and its text; several surfaces': the stretch that shows
+  // the still frames it.)
   // The subject: the surface as drawn and the ball; a plane's board, cut
   // to the path, is no subject of its own: there the ball, its path and
   // its trail (the occupancy) are.

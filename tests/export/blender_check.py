@@ -1,11 +1,12 @@
 # Run by Blender (blender -b --factory-startup --python-exit-code 1 --python
-# THIS -- FILE.glb TIMELINE.csv FPS FRAME ...): imports the glTF export with
-# Blender's own importer and checks, at each given frame of the animation
-# "roll", that the ball's world rotation and centre are the solver's (row
-# FRAME of the timeline, whose samples are the clip's frames: the scene was
-# exported and timed with linear easing and no holds), and that the ball
-# carries extras.rollspin. Blender's world is z-up, as the scene is: its
-# importer undoes the root node's z-up → y-up rotation.
+# THIS -- FILE.glb TIMELINE.csv FPS PICK ...): imports the glTF export with
+# Blender's own importer and checks, at each pick SECONDS:ROW[:SURFACE] of
+# the animation "roll", that the ball's world rotation and centre are the
+# solver's (row ROW of the timeline), that the ball carries extras.rollspin,
+# and, where SURFACE is given, that only that surface's node is shown
+# (several surfaces take turns by a STEP scale of 0 or 1). Blender's world
+# is z-up, as the scene is: its importer undoes the root node's z-up → y-up
+# rotation.
 import csv
 import math
 import sys
@@ -15,7 +16,8 @@ import bpy
 from mathutils import Quaternion, Vector
 
 args = sys.argv[sys.argv.index("--") + 1:]
-glb, timeline, fps, frames = args[0], args[1], int(args[2]), [int(f) for f in args[3:]]
+glb, timeline, fps = args[0], args[1], int(args[2])
+picks = [[float(field) for field in pick.split(":")] for pick in args[3:]]
 
 # The importer is a bundled add-on; enable it where it is not (a factory
 # start-up enables it in Debian's 3.4, but say so if that changes).
@@ -38,9 +40,13 @@ ball = bpy.data.objects["ball"]
 failures = []
 if "rollspin" not in ball.keys() or "version" not in ball["rollspin"].keys():
     failures.append("the ball has no extras.rollspin.version: " + str(ball.keys()))
-for frame in frames:
-    bpy.context.scene.frame_set(frame)
-    row = rows[frame]
+surfaces = sorted(name for name in bpy.data.objects.keys() if name.startswith("surface"))
+for pick in picks:
+    seconds, row = pick[0], rows[int(pick[1])]
+    # The importer keys frame = seconds × fps, not rounded: a key between
+    # frames is reached with a subframe.
+    frame = seconds * fps
+    bpy.context.scene.frame_set(math.floor(frame), subframe=frame - math.floor(frame))
     solver = Quaternion((float(row["qw"]), float(row["qx"]), float(row["qy"]), float(row["qz"])))
     centre = Vector((float(row["cx"]), float(row["cy"]), float(row["cz"])))
     world = ball.matrix_world
@@ -52,9 +58,15 @@ for frame in frames:
     angle = solver.rotation_difference(q).angle
     angle = abs(min(angle, 2 * math.pi - angle))  # q and -q are one rotation
     offset = (world.translation - centre).length
-    print(f"blender_check: frame {frame}: s = {row['s']}, rotation off by {angle:.3g} rad, centre by {offset:.3g}")
+    print(f"blender_check: {seconds:.4f} s: s = {row['s']}, rotation off by {angle:.3g} rad, centre by {offset:.3g}")
     if angle > 1e-5 or offset > 1e-5 * (1 + centre.length):
-        failures.append(f"frame {frame}: rotation {angle:.3g} rad, centre {offset:.3g}")
+        failures.append(f"{seconds:.4f} s: rotation {angle:.3g} rad, centre {offset:.3g}")
+    if len(pick) > 2:
+        shown = [name for name in surfaces if bpy.data.objects[name].matrix_world.to_scale().length > 0.5]
+        expected = "surface" if pick[2] == 0 else f"surface.{int(pick[2])}"
+        print(f"blender_check: {seconds:.4f} s: shown {shown}, the timeline's surface {row.get('surface', '-')}")
+        if shown != [expected] or ("surface" in row and int(row["surface"]) != int(pick[2])):
+            failures.append(f"{seconds:.4f} s: shown {shown}, expected {expected} (timeline: {row.get('surface')})")
 if failures:
     print("blender_check: FAILED: " + "; ".join(failures))
     sys.exit(1)

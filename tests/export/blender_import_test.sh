@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Blender (Debian's, headless) imports `rollspin export` and its ball turns
-# as the solver says (tests/export/blender_check.py). Exit 77 (ctest skips)
+# as the solver says (tests/export/blender_check.py): a lollipop at five of
+# the clip's frames, and torus-to-floor (two surfaces, holds, a fade) at
+# keys either side of the change of surface, where only the surface the
+# ball is on may be shown. Exit 77 (ctest skips)
 # where Blender is not installed: scripts/install-deps.sh --with-blender.
 #   blender_import_test.sh ROLLSPIN WORKDIR
 set -euo pipefail
@@ -17,9 +20,27 @@ rm -rf "$work" && mkdir -p "$work"
 set_args=(--set animation.easing=linear --set animation.hold=0 --set animation.duration=10 --set animation.fps=30)
 "$rollspin" export lollipop "${set_args[@]}" -o "$work/lollipop.glb"
 "$rollspin" timeline lollipop "${set_args[@]}" --set timeline.samples=300 -o "$work/lollipop.csv"
+lollipop_picks=()
+for frame in 0 37 150 223 299; do lollipop_picks+=("$(awk -v f="$frame" 'BEGIN { printf "%.17g:%d", f / 30, f }')"); done
+
+# Several surfaces: the picks are keys of the export itself (gltf_keys.py),
+# and the solver's rows are taken at their arc lengths.
+"$rollspin" export torus-to-floor -o "$work/torus-to-floor.glb"
+python3 "$here/gltf_keys.py" "$work/torus-to-floor.glb" 7 "$work/torus-to-floor-s.txt" >"$work/torus-to-floor-keys.txt"
+"$rollspin" timeline torus-to-floor --at-s "$work/torus-to-floor-s.txt" -o "$work/torus-to-floor.csv"
+surface_picks=()
+row=0
+while read -r seconds surface; do surface_picks+=("$seconds:$row:$surface"); row=$((row + 1)); done <"$work/torus-to-floor-keys.txt"
+
 status=0
-blender -b --factory-startup --python-exit-code 1 --python "$here/blender_check.py" -- \
-  "$work/lollipop.glb" "$work/lollipop.csv" 30 0 37 150 223 299 >"$work/blender.log" 2>&1 || status=$?
-# Blender's banner and the importer's progress left out.
-grep -E "blender_check|Error|rror:" "$work/blender.log" || cat "$work/blender.log"
+check() {
+  local name=$1; shift
+  echo "blender_import_test: $name"
+  blender -b --factory-startup --python-exit-code 1 --python "$here/blender_check.py" -- \
+    "$work/$name.glb" "$work/$name.csv" 30 "$@" >"$work/$name-blender.log" 2>&1 || status=1
+  # Blender's banner and the importer's progress left out.
+  grep -E "blender_check|Error|rror:" "$work/$name-blender.log" || cat "$work/$name-blender.log"
+}
+check lollipop "${lollipop_picks[@]}"
+check torus-to-floor "${surface_picks[@]}"
 exit "$status"

@@ -12,6 +12,8 @@
 //   renderScale()  the share of the device pixel ratio the views render at (FramePacer: below 1 only while playing)
 //   drawNow()      draws both views in this task, for a caller that reads the canvases right after
 //   adaptiveResolution   true (the default): playback lowers renderScale to hold 30 frames/s; false: full resolution
+//   cheapSurfaces  true (the default): closed surfaces culled, shadow lookups only near the ball (surface_cost.js);
+//                  false: every surface triangle drawn both sides with the lookups (the same picture, slower)
 import { Timeline } from './timeline.js';
 import { TwinScene, embeddedBytes } from './twin_scene.js';
 import { Player, bindControls } from './player.js';
@@ -86,6 +88,8 @@ function start() {
     const pacer = new FramePacer(twin);
     Object.defineProperty(api, 'adaptiveResolution', {
       get: () => pacer.enabled, set: (on) => (pacer.enabled = Boolean(on)), enumerable: true });
+    Object.defineProperty(api, 'cheapSurfaces', {
+      get: () => twin.cheapSurfaces, set: (on) => { twin.cheapSurfaces = on; dirty = true; }, enumerable: true });
     const frame = (now) => {
       if (player.tick(now)) dirty = true;
       if (dirty) {

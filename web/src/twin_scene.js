@@ -6,6 +6,7 @@
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { SurfaceCost, hasShadowLookups, withoutShadowLookups } from './surface_cost.js';
 
 const BALL_LAYER = 0;
 const BLOCH_LAYER = 1;
@@ -103,8 +104,8 @@ const KEY_DIRECTION = new THREE.Vector3(-0.45, 1.0, 0.7).normalize();
 // light, a ball of radius R shades a disc of radius R round its centre on
 // whatever lies behind it, so a square of ±SHADOW_REACH R about the ball
 // holds all of it at any surface's shape; 256 texels across it are R/85
-// each, finer than a map over the whole scene, and the surface's fragments
-// outside it skip the shadow lookups (most of the view).
+// each, finer than a map over the whole scene, and only the surface's
+// triangles that meet it do the shadow lookups (SurfaceCost).
 const KEY_INTENSITY = 2.2;
 const SHADOW_MAP_SIZE = 256;
 const SHADOW_REACH = 1.5;
@@ -198,6 +199,13 @@ export class TwinScene {
     for (const name of ['spin', 'field'])
       if (this.nodes[name]) this.nodes[name].traverse((o) => o.layers.set(BLOCH_LAYER));
     shadeAsTheRenders(this.root);
+    // (After the materials are final: the shadow patches copy them.)
+    for (const surface of this.surfaces) surface.cost = surface.parts[0] ? new SurfaceCost(surface.parts[0]) : null;
+    // The ball and the paths receive no shadow: their programs need no lookups.
+    this.root.traverse((o) => {
+      if (o.isMesh && !o.receiveShadow && !o.userData.shadowPatch && !o.layers.isEnabled(BLOCH_LAYER) && hasShadowLookups(o.material))
+        o.material = withoutShadowLookups(o.material);
+    });
     this.frameViews();
   }
 
@@ -256,8 +264,9 @@ export class TwinScene {
     if (ball) {
       ball.position.set(...timeline.ballCentre(s));
       ball.quaternion.copy(q);
-      aimKeyLight(this.keyLight, this.surfaces[this.shownSurface]?.sphere ?? new THREE.Sphere(),
-                  ball.getWorldPosition(new THREE.Vector3()), timeline.ballRadius);
+      const centre = ball.getWorldPosition(new THREE.Vector3());
+      aimKeyLight(this.keyLight, this.surfaces[this.shownSurface]?.sphere ?? new THREE.Sphere(), centre, timeline.ballRadius);
+      this.surfaces[this.shownSurface]?.cost?.shadowAt(centre, KEY_DIRECTION, SHADOW_REACH * timeline.ballRadius);
     }
     // The exporter's arrows (src/export/gltf_export.hpp): "spin" points at X(0) and
     // turns by q(s); "field" points along +z and turns onto B(s)/|B(s)|.
@@ -291,6 +300,15 @@ export class TwinScene {
     for (const v of this.views) v.resize();
   }
 
+  // SurfaceCost's savings on (the default) or off, for the next pose.
+  set cheapSurfaces(on) {
+    for (const surface of this.surfaces ?? []) if (surface.cost) surface.cost.enabled = Boolean(on);
+  }
+
+  get cheapSurfaces() {
+    return this.surfaces?.find((x) => x.cost)?.cost.enabled ?? true;
+  }
+
   // The share of the device's pixels each view renders (1: all of them);
   // the canvases keep their size on the page (FramePacer).
   setRenderScale(scale) {
@@ -302,6 +320,7 @@ export class TwinScene {
   }
 
   render() {
+    this.surfaces?.[this.shownSurface]?.cost?.cull(this.ballView.camera);
     for (const v of this.views) v.render(this.scene);
   }
 }

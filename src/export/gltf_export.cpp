@@ -1,7 +1,9 @@
 #include "export/gltf_export.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <numbers>
 #include <string>
@@ -30,10 +32,15 @@ namespace {
 // The twin view's spin arrow radius; its field arrow is 0.8 of it.
 constexpr float kArrowRadius = 0.028f;
 constexpr int kArrowSegments = 32;
-// How far the exported surface may depart from the ball view's mesh, as a
-// share of the ball's radius, in each direction of its grid: the ball sinks
-// into a chord by at most twice this (1 % of R, a pixel or less).
+// How far the exported surface may depart from the ball view's mesh, in
+// each direction of its grid. Where the ball rolls (within
+// kNearPathOfRadius R of the contact path) a share of the ball's radius:
+// the ball sinks into a chord by at most twice this (1 % of R, a pixel or
+// less). Farther off, where nothing touches it, a share of the mesh's
+// diagonal: about a pixel where the whole surface fills a 1080p frame.
 constexpr double kSurfaceToleranceOfRadius = 0.005;
+constexpr double kNearPathOfRadius = 3.0;
+constexpr double kSurfaceToleranceOfDiagonal = 1.0 / 2000.0;
 // The path tube's rings: kept where its centre line bends more than this
 // share of the tube's radius off the chord between kept rings.
 constexpr double kTubeToleranceOfItsRadius = 0.1;
@@ -236,6 +243,51 @@ struct Built {
   double blochRadius = 1.0;
 };
 
+// Each vertex's tolerance for thinning the surface's grid (see
+// kSurfaceToleranceOfRadius): fine within kNearPathOfRadius R of a point
+// of the contact path (sampled every R/4, in cells of that size), coarse
+// farther off, never finer than near it.
+std::vector<double> surfaceTolerances(const render::MeshData& mesh, const model::RollingModel& model) {
+  const double R = model.ballRadius, near = kNearPathOfRadius * R, fine = kSurfaceToleranceOfRadius * R;
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (const render::Vertex& v : mesh.vertices) {
+    lo = glm::min(lo, v.position);
+    hi = glm::max(hi, v.position);
+  }
+  const double coarse = std::max(fine, kSurfaceToleranceOfDiagonal * double(glm::length(hi - lo)));
+  const geometry::ContactPath& path = *model.path;
+  const auto cellOf = [&](const Vec3& p) {
+    return std::array<long long, 3>{std::llround(std::floor(p.x() / near)), std::llround(std::floor(p.y() / near)),
+                                    std::llround(std::floor(p.z() / near))};
+  };
+  std::map<std::array<long long, 3>, std::vector<Vec3>> cells;
+  const int samples = int(std::clamp(std::ceil(path.length() / (0.25 * R)), 2.0, 200000.0));
+  for (int k = 0; k <= samples; ++k) {
+    const Vec3 p = path.point(path.length() * double(k) / double(samples));
+    cells[cellOf(p)].push_back(p);
+  }
+  std::vector<double> tolerances;
+  tolerances.reserve(mesh.vertices.size());
+  for (const render::Vertex& v : mesh.vertices) {
+    const Vec3 p(v.position.x, v.position.y, v.position.z);
+    const auto c = cellOf(p);
+    bool isNear = false;
+    for (long long dx = -1; dx <= 1 && !isNear; ++dx)
+      for (long long dy = -1; dy <= 1 && !isNear; ++dy)
+        for (long long dz = -1; dz <= 1 && !isNear; ++dz) {
+          const auto found = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (found == cells.end()) continue;
+          for (const Vec3& q : found->second)
+            if ((q - p).norm() <= near) {
+              isNear = true;
+              break;
+            }
+        }
+    tolerances.push_back(isNear ? fine : coarse);
+  }
+  return tolerances;
+}
+
 // The surface node, or none where the scene has no surface. A surface the
 // ball view could not mesh (no point of the path on its chart, or a chart
 // that is not finite where the path runs) is bad input.
@@ -243,11 +295,11 @@ int addSurface(GltfBuilder& b, const draw::BallView& view, const scene::SceneSpe
                const model::RollingModel& model, const std::string& name) {
   if (!model.surface) return -1;
   const auto mesh = view.surfaceMesh();
-  const double tolerance = kSurfaceToleranceOfRadius * model.ballRadius;
   // The renders' grid is fine everywhere (4 vertices a checker cell); the
   // file keeps only the rows and columns its curvature needs.
   const render::MeshData shown =
-      mesh ? surfaceForExport(thinGrid(*mesh, tolerance, tolerance), view.surfaceMaterial()) : render::MeshData{};
+      mesh ? surfaceForExport(thinGrid(*mesh, surfaceTolerances(*mesh, model)), view.surfaceMaterial())
+           : render::MeshData{};
   if (shown.indices.empty())
     throw badInput(spec.where("surface.kind"),
                    "surface.kind: the {} surface cannot be meshed where the path runs "

@@ -3,11 +3,14 @@
 // column i at j (na + 1) + i), keep whole columns and rows, greedily as far
 // apart as the dropped ones allow: a dropped column i between kept i0 < i1
 // must lie within `tolerance` of the chord of every row,
-//   |P(i, j) − lerp(P(i0, j), P(i1, j), (i − i0) / (i1 − i0))| ≤ tolerance,
+//   |P(i, j) − lerp(P(i0, j), P(i1, j), (i − i0) / (i1 − i0))| ≤ tolerance
+// (a tolerance of its own per vertex: tolerance(i, j)),
 // and rows likewise. Texture coordinates are linear in (i, j) on such a
 // patch, so the kept vertices carry the same checker cells; the surface
 // moves by at most about twice the tolerance (a column's and a row's sag).
 #pragma once
+
+#include <vector>
 
 #include "render/draw_list.hpp"
 
@@ -25,5 +28,9 @@ struct GridSize {
 // not a grid. Columns (along a) keep within `columnTolerance`, rows (along
 // b) within `rowTolerance` (0: only rows in line with their neighbours go).
 [[nodiscard]] render::MeshData thinGrid(const render::MeshData& mesh, double columnTolerance, double rowTolerance);
+
+// The same with a tolerance of each vertex's own (`tolerances[v]` for
+// mesh.vertices[v], both directions): a dropped vertex keeps within its own.
+[[nodiscard]] render::MeshData thinGrid(const render::MeshData& mesh, const std::vector<double>& tolerances);
 
 }  // namespace rollspin::gltf

@@ -39,6 +39,28 @@ TEST(GridThinning, AFlatPatchKeepsItsCornersAndTheirCells) {
   EXPECT_EQ(thin.vertices[3].position, glm::vec3(3.0f, 2.0f, 0.0f));
 }
 
+// A tolerance per vertex: tight on the first half of the columns, loose on
+// the rest; the columns thin only where they may, and a scalar tolerance is
+// the same as that value at every vertex.
+TEST(GridThinning, EachVertexKeepsWithinItsOwnTolerance) {
+  const double radius = 2.0, tight = 0.001, loose = 0.02;
+  const auto fine = cylinderPatch(256, 16, radius);
+  std::vector<double> tolerances(fine->vertices.size());
+  for (std::size_t v = 0; v < tolerances.size(); ++v) tolerances[v] = v % 257 < 128 ? tight : loose;
+  const render::MeshData thin = thinGrid(*fine, tolerances);
+  int tightColumns = 0, looseColumns = 0;
+  for (int k = 0; k <= gridSizeOf(thin).na; ++k) {
+    const glm::vec3 p = thin.vertices[std::size_t(k)].position;
+    for (int i = 0; i <= 256; ++i)
+      if (fine->vertices[std::size_t(i)].position == p) (i < 128 ? tightColumns : looseColumns) += 1;
+  }
+  EXPECT_GT(tightColumns, 3 * looseColumns);
+  EXPECT_EQ(gridSizeOf(thinGrid(*fine, std::vector<double>(fine->vertices.size(), loose))).na,
+            gridSizeOf(thinGrid(*fine, loose, loose)).na);
+  EXPECT_EQ(thinGrid(*fine, std::vector<double>(3, loose)).vertices.size(), fine->vertices.size())
+      << "a tolerance for each vertex, or none thinned";
+}
+
 TEST(GridThinning, ACurvedPatchKeepsEveryDroppedColumnWithinItsChord) {
   const double radius = 2.0, tolerance = 0.01;
   const auto fine = cylinderPatch(256, 16, radius);

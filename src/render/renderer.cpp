@@ -56,20 +56,20 @@ void Renderer::Impl::render(const DrawList& list, media::Image& image, ImageHist
   }
   image.rgba.resize(bytes);  // reused across frames
 
-  const LayerPlan plan = planLayer(layer.memory, list, retainLayers, itemBounds(list));
+  const LayerPlan plan = planLayer(layer.memory, list, retainLayers, itemBounds(caches, list));
   if (plan.step == LayerStep::ServedLayer && !plan.changes.empty())
-    updateLayer(list, perView, plan.changes, plan.fresh);
-  if (plan.step == LayerStep::NewLayer) buildLayer(list, perView);
+    layer.update(drawing(), readback, list, perView, plan.changes, plan.fresh);
+  if (plan.step == LayerStep::NewLayer) layer.build(drawing(), readback, list, perView);
   remember(layer.memory, plan, list);
   if (plan.overLayer()) {
     std::vector<PixelRect> drawn =
-        drawOverLayer(list, perView, plan.fresh, image, history != nullptr ? &known : nullptr);
-    if (history != nullptr) *history = {layer.identity, layer.version, std::move(drawn), image.rgba.data()};
+        layer.drawOver(drawing(), readback, list, perView, plan.fresh, image, history != nullptr ? &known : nullptr);
+    if (history != nullptr) *history = {layer.identity(), layer.version(), std::move(drawn), image.rgba.data()};
     ++stats.retainedFrames;
   } else {
     captures.clear();  // no layer: a camera move, most likely, which they would not survive
     targets.clear(list, false);
-    drawWhole(list, perView);
+    drawWhole(drawing(), list, perView);
     readback.pixels(list, image, PixelRect{0, 0, list.width, list.height}, targets.sceneFbo);
     ++stats.wholeFrames;
   }

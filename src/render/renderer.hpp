@@ -60,6 +60,7 @@ class ImageHistory {
 
  private:
   friend class Renderer;
+  friend class RetainedLayer;  // reads and writes what the image holds
   struct State;
   std::unique_ptr<State> state_;
 };

@@ -1,11 +1,15 @@
 // Renderer::Impl: the renderer's state, gathered in one place, and the
-// steps of a frame that use all of it:
-//   renderer.cpp        the frame: shadow maps, the layer plan, eviction
-//   view_pass.cpp       a view's steps
-//   retained_layers.cpp the retained layer: build, update, frames over it
-// The passes they call are objects or functions of their own, and take
-// what they read and write as arguments; each pass object holds only the
-// vectors it reuses from draw to draw (no allocation per draw):
+// frame that lends it to the steps (renderer.cpp: the shadow maps, the
+// layer plan, eviction). The steps are functions and objects of their own
+// that take what they read and write as arguments:
+//   view_pass (view_pass.hpp)  a view's steps, drawing with a ViewDrawing
+//                             (the programs, streams, caches, captures,
+//                             framebuffers, mesh and line passes, stats)
+//   RetainedLayer (retained_layers.hpp) the layer it owns (its image, keys
+//                             and reused vectors): build, update, frames
+//                             over it, with a ViewDrawing and the readback
+// Each pass object holds only the vectors it reuses from draw to draw (no
+// allocation per draw):
 //   shadowPass (shadow_pass)  the view, its casters, the map, the caches,
 //                             the programs and streams
 //   MeshPass (mesh_pass)      the drawables, the scope, and MeshDrawing (the
@@ -53,22 +57,13 @@
 #include "render/programs.hpp"
 #include "render/readback.hpp"
 #include "render/renderer.hpp"
+#include "render/retained_layers.hpp"
 #include "render/shadow_pass.hpp"
 #include "render/sphere_pass.hpp"
 #include "render/text_pass.hpp"
+#include "render/view_pass.hpp"
 
 namespace rollspin::render {
-
-// An image's pixels: the layer image `layer` at `version`, except inside
-// `written` (a frame's rectangles). A layer's identity is an object of its
-// own, which a history keeps alive: it never matches another layer, of this
-// renderer or another.
-struct ImageHistory::State {
-  std::shared_ptr<const LayerIdentity> layer;  // null: unknown
-  std::uint64_t version = 0;
-  std::vector<PixelRect> written;
-  const std::uint8_t* pixels = nullptr;  // the buffer it describes
-};
 
 struct Renderer::Impl {
   Impl(const GlContext& context, const ShaderLibrary& lib) : context(context), programs(lib) {}
@@ -77,45 +72,8 @@ struct Renderer::Impl {
   // Off: every frame drawn whole, and the layer's memory forgotten.
   void setRetainLayers(bool on);
 
-  // What the mesh pass (mesh_pass.hpp) draws with.
-  MeshDrawing meshDrawing() { return {programs, caches, streams, captures, stats, targets}; }
-  // What the text pass (text_pass.hpp) draws with.
-  TextDrawing textDrawing() { return {programs.text, streams, caches}; }
-  // ---- view_pass.cpp
-  DrawScope beginView(const DrawList& list, const View& v, const ViewItems& viewItems, const PixelRect* clip,
-                      GLuint fbo = 0);
-  std::vector<PixelRect> sampleTiles(const DrawList& list, const View& v, const ViewItems& viewItems, Items which);
-  std::vector<PixelRect> drawViewOpaque(const DrawList& list, const View& v, const ViewItems& viewItems, bool clear,
-                                        std::vector<PixelRect>* under);
-  void drawViewAfterOpaque(const DrawList& list, int view, const ViewItems& viewItems, std::vector<PixelRect> sampled,
-                           const DrawScope& scope);
-  void drawAfterResolve(const ViewItems& viewItems, const DrawScope& scope);
-  void drawRest(const DrawList& list, int index, const ViewItems& viewItems, Items which, const DrawScope& scope);
-  void drawWhole(const DrawList& list, const std::vector<ViewItems>& perView);
-  void meshBounds(const View& v, const glm::mat4& clipFromWorld, const Drawable& d, std::vector<PixelRect>& out);
-  // ---- retained_layers.cpp
-  void buildLayer(const DrawList& list, const std::vector<ViewItems>& perView);
-  std::vector<PixelRect> drawOverLayer(const DrawList& list, const std::vector<ViewItems>& perView,
-                                       const std::vector<bool>& fresh, media::Image& image,
-                                       const ImageHistory::State* history);
-  void updateLayer(const DrawList& list, const std::vector<ViewItems>& perView, const std::vector<PixelRect>& rects,
-                   const std::vector<bool>& fresh);
-  ItemBounds itemBounds(const DrawList& list);
-  // A frame's lists, and its views drawn whole inside a frame over the layer.
-  struct RedrawJob {
-    const DrawList& list;
-    const std::vector<ViewItems>& perView;
-    const std::vector<bool>& fresh;
-  };
-  std::vector<PixelRect> dirtyRects(const DrawList& list, const std::vector<ViewItems>& perView,
-                                    const std::vector<bool>& fresh);
-  void forEachIsland(const RedrawJob& job, const std::vector<PixelRect>& rects, GLuint fbo,
-                     std::vector<PixelRect>* under,
-                     const std::function<void(std::size_t, const PixelRect&, const DrawScope&)>& island,
-                     const std::function<void(std::size_t)>& whole = {});
-  void redrawSamples(const RedrawJob& job, std::vector<PixelRect>* under);
-  void redrawRects(const RedrawJob& job, const std::vector<PixelRect>& rects, Items which, media::Image& image,
-                   std::vector<PixelRect>* under);
+  // What a frame's steps draw with (view_pass.hpp), lent for the frame.
+  ViewDrawing drawing() { return {programs, streams, caches, captures, targets, meshes, lines, stats}; }
 
   const GlContext& context;  // current on this thread; named in GL errors
   bool retainLayers = true;
@@ -129,23 +87,7 @@ struct Renderer::Impl {
   LinePass lines;
   Readback readback;
 
-  // The retained layer (see retained_layers.cpp): its keys, its finished
-  // image of the static items, and that image's identity: a new one per
-  // build, a new version per update in place, with the rectangles each
-  // recent update changed (what an image drawn over an older version must
-  // put back besides its own rectangles).
-  struct Layer {
-    LayerMemory memory;
-    media::Image image;
-    std::vector<PixelRect> edgeRects;  // tiles where its opaque meshes cover pixels in part
-    std::shared_ptr<const LayerIdentity> identity;
-    std::uint64_t version = 0, restorableFrom = 0;
-    std::deque<std::pair<std::uint64_t, std::vector<PixelRect>>> updates;
-    static constexpr std::size_t kUpdatesKept = 64;
-    // What a frame over it restores from it, and the parts outside the
-    // fresh views: reused from frame to frame (drawOverLayer, redrawRects).
-    std::vector<PixelRect> restoredParts, splitParts;
-  } layer;
+  RetainedLayer layer;  // the static items kept from frame to frame (retained_layers.hpp)
 
   RenderStats stats;
 

@@ -23,12 +23,16 @@
 // same bytes: a frame does not depend on the frames before it (tested),
 // and the first frame of a span is simply drawn whole.
 // The retained layer: (a) in the targets' snapshot framebuffers, (b) in
-// layer.image; valid while layer.memory.layerKey matches (layer_plan.hpp).
+// RetainedLayer's image; valid while its memory's layerKey matches
+// (layer_plan.hpp).
+#include "render/retained_layers.hpp"
+
 #include <algorithm>
 #include <cstring>
 #include <functional>
 
-#include "render/renderer_impl.hpp"
+#include "render/screen_bounds.hpp"
+#include "render/text_pass.hpp"
 
 namespace rollspin::render {
 
@@ -106,14 +110,12 @@ PixelRect reshadeBounds(const View& v, const glm::mat4& clipFromWorld, const glm
   return screenBounds(v, clipFromWorld, inside.data(), inside.size(), 3.0f);
 }
 
-}  // namespace
-
 // The pixels a frame must redraw over the retained layer, as disjoint
 // rectangles of whole tiles: the tiles that any dynamic item (a line
 // segment by segment, so that a long trail dirties a thin band along
 // itself) or a receiver's shadow box can touch. A fresh view is dirty whole.
-std::vector<PixelRect> Renderer::Impl::dirtyRects(const DrawList& list, const std::vector<ViewItems>& perView,
-                                                  const std::vector<bool>& fresh) {
+std::vector<PixelRect> dirtyRects(GpuCaches& caches, const DrawList& list, const std::vector<ViewItems>& perView,
+                                  const std::vector<bool>& fresh) {
   TileGrid grid(list.width, list.height);
   auto add = [&](const PixelRect& rect) { grid.add(rect); };
   std::vector<PixelRect> meshRects;
@@ -128,7 +130,7 @@ std::vector<PixelRect> Renderer::Impl::dirtyRects(const DrawList& list, const st
     for (const Drawable& d : perView[i].items) {
       if (d.dynamic) {
         meshRects.clear();
-        meshBounds(v, clipFromWorld, d, meshRects);
+        meshBounds(caches, v, clipFromWorld, d, meshRects);
         for (const PixelRect& rect : meshRects) add(rect);
       }
       if (perView[i].shadowMap != nullptr && d.material->receivesShadow && d.material->opacity >= 1.0f)
@@ -149,10 +151,11 @@ std::vector<PixelRect> Renderer::Impl::dirtyRects(const DrawList& list, const st
 // the scene) and scissored to the island, its meshes, lines and labels
 // clipped to the rects (scope.clips); `whole(view)` for a fresh view, in
 // the views' order.
-void Renderer::Impl::forEachIsland(const RedrawJob& job, const std::vector<PixelRect>& rects, GLuint fbo,
-                                   std::vector<PixelRect>* under,
-                                   const std::function<void(std::size_t, const PixelRect&, const DrawScope&)>& island,
-                                   const std::function<void(std::size_t)>& whole) {
+template <class Job>
+void forEachIsland(const FrameTargets& targets, const Job& job, const std::vector<PixelRect>& rects, GLuint fbo,
+                   std::vector<PixelRect>* under,
+                   const std::function<void(std::size_t, const PixelRect&, const DrawScope&)>& island,
+                   const std::function<void(std::size_t)>& whole = {}) {
   std::vector<PixelRect> islandRects;
   for (std::size_t i = 0; i < job.list.views.size(); ++i) {
     const View& v = job.list.views[i];
@@ -164,7 +167,7 @@ void Renderer::Impl::forEachIsland(const RedrawJob& job, const std::vector<Pixel
       islandRects.clear();
       for (const PixelRect& rect : rects)
         if (overlaps(rect, box)) islandRects.push_back(intersect(rect, box));
-      DrawScope scope = beginView(job.list, v, job.perView[i], &box, fbo);
+      DrawScope scope = beginView(targets, job.list, v, job.perView[i], &box, fbo);
       scope.clips = &islandRects;
       scope.under = under;
       island(i, box, scope);
@@ -177,35 +180,43 @@ void Renderer::Impl::forEachIsland(const RedrawJob& job, const std::vector<Pixel
 // layer's scene, then in samples over the layer's static samples in the
 // tiles they reach (sampleTiles), island by island, resolved there. Their
 // tiles join `under` (their edges are over the layer's).
-void Renderer::Impl::redrawSamples(const RedrawJob& job, std::vector<PixelRect>* under) {
+template <class Job>
+void redrawSamples(const ViewDrawing& drawing, const Job& job, std::vector<PixelRect>* under) {
+  const FrameTargets& targets = drawing.targets;
   if (targets.opaqueFbo == 0) return;
   std::vector<PixelRect> reached;  // inside the dirty rectangles: dirtyRects adds the same bounds
   for (std::size_t i = 0; i < job.list.views.size(); ++i) {
     if (job.fresh[i]) continue;
-    const std::vector<PixelRect> tiles = sampleTiles(job.list, job.list.views[i], job.perView[i], Items::DynamicOnly);
+    const std::vector<PixelRect> tiles =
+        sampleTiles(drawing.caches, targets, job.list, job.list.views[i], job.perView[i], Items::DynamicOnly);
     reached.insert(reached.end(), tiles.begin(), tiles.end());
   }
   if (reached.empty()) return;
   if (under != nullptr) under->insert(under->end(), reached.begin(), reached.end());
-  forEachIsland(job, reached, 0, under, [&](std::size_t i, const PixelRect&, const DrawScope& scope) {
-    meshes.drawOpaqueAtCentres(job.perView[i], scope, Items::DynamicOnly, meshDrawing());
+  forEachIsland(targets, job, reached, 0, under, [&](std::size_t i, const PixelRect&, const DrawScope& scope) {
+    drawing.meshes.drawOpaqueAtCentres(job.perView[i], scope, Items::DynamicOnly, drawing.meshDrawing());
   });
   FrameTargets::copyRects(job.list, targets.snapshotSamplesFbo, targets.opaqueFbo, reached);
-  forEachIsland(job, reached, targets.opaqueFbo, under, [&](std::size_t i, const PixelRect&, const DrawScope& scope) {
-    meshes.drawOpaque(job.perView[i], scope, Items::DynamicOnly, Pass::Samples, meshDrawing());
-  });
-  for (const PixelRect& rect : reached) targets.resolve(job.list, rect, programs, streams);
+  forEachIsland(
+      targets, job, reached, targets.opaqueFbo, under, [&](std::size_t i, const PixelRect&, const DrawScope& scope) {
+        drawing.meshes.drawOpaque(job.perView[i], scope, Items::DynamicOnly, Pass::Samples, drawing.meshDrawing());
+      });
+  for (const PixelRect& rect : reached) drawing.targets.resolve(job.list, rect, drawing.programs, drawing.streams);
 }
+
+}  // namespace
 
 // Redraws `rects` (disjoint) of `image` from the snapshot on: the dynamic
 // opaque meshes when `which` takes them, then every later step. A fresh
 // view (its rectangle among `rects`) is cleared and drawn whole instead,
 // exactly as a whole frame draws it, when `which` takes the dynamic items;
 // a layer's update leaves it alone.
-void Renderer::Impl::redrawRects(const RedrawJob& job, const std::vector<PixelRect>& rects, Items which,
-                                 media::Image& image, std::vector<PixelRect>* under) {
+void RetainedLayer::redrawRects(const ViewDrawing& drawing, Readback& readback, const RedrawJob& job,
+                                const std::vector<PixelRect>& rects, Items which, media::Image& image,
+                                std::vector<PixelRect>* under) {
   if (rects.empty()) return;
   const DrawList& list = job.list;
+  FrameTargets& targets = drawing.targets;
   // The rectangles are disjoint: all copies first, then all draws, so the
   // binned scene is not flushed between them.
   // Unscissored: a blit copies every sample of the rectangle's pixels.
@@ -220,10 +231,10 @@ void Renderer::Impl::redrawRects(const RedrawJob& job, const std::vector<PixelRe
   } else {
     targets.clear(list, false);
     std::vector<PixelRect> kept = rects;
-    outsideFreshViews(list, job.fresh, kept, layer.splitParts);
+    outsideFreshViews(list, job.fresh, kept, splitParts_);
     FrameTargets::copyRects(list, targets.snapshotFbo, targets.sceneFbo, kept);
   }
-  if (which != Items::StaticOnly) redrawSamples(job, under);
+  if (which != Items::StaticOnly) redrawSamples(drawing, job, under);
   // Then each view drawn once per island of its dirty rectangles (see
   // separatedIslands), scissored to the island's box: the pixels of a box
   // outside the rectangles are drawn over stale samples, but they are
@@ -236,38 +247,40 @@ void Renderer::Impl::redrawRects(const RedrawJob& job, const std::vector<PixelRe
   // frame along the row where two met; redrawSamples still draws so).
   PixelRect allBounds{list.width, list.height, 0, 0};
   forEachIsland(
-      job, rects, 0, under,
+      targets, job, rects, 0, under,
       [&](std::size_t i, const PixelRect& island, const DrawScope& scope) {
         allBounds = unite(allBounds, island);
-        if (which != Items::StaticOnly) drawAfterResolve(job.perView[i], scope);
-        drawRest(list, static_cast<int>(i), job.perView[i], which, scope);
+        if (which != Items::StaticOnly) drawAfterResolve(drawing, job.perView[i], scope);
+        drawRest(drawing, list, static_cast<int>(i), job.perView[i], which, scope);
       },
       [&](std::size_t i) {
         if (which == Items::StaticOnly) return;
         const View& v = list.views[i];
         std::vector<PixelRect> sampled =
-            drawViewOpaque(list, v, job.perView[i], false, under);  // cleared with the scene
-        DrawScope scope = beginView(list, v, job.perView[i], nullptr);
+            drawViewOpaque(drawing, list, v, job.perView[i], false, under);  // cleared with the scene
+        DrawScope scope = beginView(targets, list, v, job.perView[i], nullptr);
         scope.under = under;
-        drawViewAfterOpaque(list, static_cast<int>(i), job.perView[i], std::move(sampled), scope);
+        drawViewAfterOpaque(drawing, list, static_cast<int>(i), job.perView[i], std::move(sampled), scope);
         allBounds = unite(allBounds, PixelRect{v.x, v.y, v.x + v.width, v.y + v.height});
       });
   for (const PixelRect& rect : rects) allBounds = unite(allBounds, rect);
-  drawImageLabels(list, which, allBounds, targets.sceneFbo, textDrawing());
+  drawImageLabels(list, which, allBounds, targets.sceneFbo, drawing.textDrawing());
   for (const PixelRect& rect : rects) readback.pixels(list, image, rect, targets.sceneFbo);
 }
 
 // Draws the static items into the scene, keeping the samples after their
 // opaque meshes, and reads their finished image into the layer's image.
-void Renderer::Impl::buildLayer(const DrawList& list, const std::vector<ViewItems>& perView) {
+void RetainedLayer::build(const ViewDrawing& drawing, Readback& readback, const DrawList& list,
+                          const std::vector<ViewItems>& perView) {
+  FrameTargets& targets = drawing.targets;
   targets.ensureSnapshot();
   targets.clear(list, true);
   if (targets.opaqueFbo != 0) {
     // Every sample, kept for the moving meshes drawn in samples over the
     // layer (redrawSamples), wherever they go.
     for (std::size_t i = 0; i < list.views.size(); ++i) {
-      const DrawScope scope = beginView(list, list.views[i], perView[i], nullptr, targets.opaqueFbo);
-      meshes.drawOpaque(perView[i], scope, Items::StaticOnly, Pass::Samples, meshDrawing());
+      const DrawScope scope = beginView(targets, list, list.views[i], perView[i], nullptr, targets.opaqueFbo);
+      drawing.meshes.drawOpaque(perView[i], scope, Items::StaticOnly, Pass::Samples, drawing.meshDrawing());
     }
     glDisable(GL_SCISSOR_TEST);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.opaqueFbo);
@@ -279,32 +292,34 @@ void Renderer::Impl::buildLayer(const DrawList& list, const std::vector<ViewItem
   // resolved from the samples near their edges.
   std::vector<PixelRect> resolved;
   for (std::size_t i = 0; i < list.views.size(); ++i) {
-    const DrawScope scope = beginView(list, list.views[i], perView[i], nullptr);
-    meshes.drawOpaqueAtCentres(perView[i], scope, Items::StaticOnly, meshDrawing());
+    const DrawScope scope = beginView(targets, list, list.views[i], perView[i], nullptr);
+    drawing.meshes.drawOpaqueAtCentres(perView[i], scope, Items::StaticOnly, drawing.meshDrawing());
     if (targets.opaqueFbo == 0) continue;
-    const std::vector<PixelRect> tiles = sampleTiles(list, list.views[i], perView[i], Items::StaticOnly);
+    const std::vector<PixelRect> tiles =
+        sampleTiles(drawing.caches, targets, list, list.views[i], perView[i], Items::StaticOnly);
     resolved.insert(resolved.end(), tiles.begin(), tiles.end());
   }
-  for (const PixelRect& r : resolved) targets.resolve(list, r, programs, streams);
-  layer.edgeRects = partlyCoveredTiles(list, targets.sceneFbo);
+  for (const PixelRect& r : resolved) targets.resolve(list, r, drawing.programs, drawing.streams);
+  edgeRects_ = partlyCoveredTiles(list, targets.sceneFbo);
   glDisable(GL_SCISSOR_TEST);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.sceneFbo);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.snapshotFbo);
   glBlitFramebuffer(0, 0, list.width, list.height, 0, 0, list.width, list.height,
                     GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
   for (std::size_t i = 0; i < list.views.size(); ++i) {
-    const DrawScope scope = beginView(list, list.views[i], perView[i], nullptr);
-    drawRest(list, static_cast<int>(i), perView[i], Items::StaticOnly, scope);
+    const DrawScope scope = beginView(targets, list, list.views[i], perView[i], nullptr);
+    drawRest(drawing, list, static_cast<int>(i), perView[i], Items::StaticOnly, scope);
   }
-  drawImageLabels(list, Items::StaticOnly, PixelRect{0, 0, list.width, list.height}, targets.sceneFbo, textDrawing());
-  layer.image.width = list.width;
-  layer.image.height = list.height;
-  layer.image.rgba.resize(static_cast<std::size_t>(list.width) * list.height * 4);
-  readback.pixels(list, layer.image, PixelRect{0, 0, list.width, list.height}, targets.sceneFbo);
-  ++stats.layerBuilds;
-  layer.identity = std::make_shared<const LayerIdentity>();
-  layer.version = layer.restorableFrom = 0;
-  layer.updates.clear();
+  drawImageLabels(list, Items::StaticOnly, PixelRect{0, 0, list.width, list.height}, targets.sceneFbo,
+                  drawing.textDrawing());
+  image_.width = list.width;
+  image_.height = list.height;
+  image_.rgba.resize(static_cast<std::size_t>(list.width) * list.height * 4);
+  readback.pixels(list, image_, PixelRect{0, 0, list.width, list.height}, targets.sceneFbo);
+  ++drawing.stats.layerBuilds;
+  identity_ = std::make_shared<const LayerIdentity>();
+  version_ = restorableFrom_ = 0;
+  updates_.clear();
 }
 
 // A frame over the retained layer: its image, with the dirty rectangles
@@ -312,31 +327,32 @@ void Renderer::Impl::buildLayer(const DrawList& list, const std::vector<ViewItem
 // ImageHistory), only what differs from the layer image is put back: the
 // rectangles the image's last frame wrote, and those the layer's updates
 // since then changed. Returns the rectangles drawn.
-std::vector<PixelRect> Renderer::Impl::drawOverLayer(const DrawList& list, const std::vector<ViewItems>& perView,
-                                                     const std::vector<bool>& fresh, media::Image& image,
-                                                     const ImageHistory::State* history) {
-  const std::vector<PixelRect> rects = dirtyRects(list, perView, fresh);
+std::vector<PixelRect> RetainedLayer::drawOver(const ViewDrawing& drawing, Readback& readback, const DrawList& list,
+                                               const std::vector<ViewItems>& perView, const std::vector<bool>& fresh,
+                                               media::Image& image, const ImageHistory::State* history) {
+  const std::vector<PixelRect> rects = dirtyRects(drawing.caches, list, perView, fresh);
+  RenderStats& stats = drawing.stats;
   stats.retainedPixels += static_cast<long long>(list.width) * list.height;
   for (const bool f : fresh) stats.freshViews += f ? 1 : 0;
   // A fresh view is read back whole below: its pixels in the layer are
   // not restored first (a follow camera's view, 5 MB at 1080p a frame).
   auto restore = [&](const PixelRect& r) {
-    layer.restoredParts.assign(1, r);
-    outsideFreshViews(list, fresh, layer.restoredParts, layer.splitParts);
-    for (const PixelRect& part : layer.restoredParts) copyPixels(layer.image, image, part);
+    restoredParts_.assign(1, r);
+    outsideFreshViews(list, fresh, restoredParts_, splitParts_);
+    for (const PixelRect& part : restoredParts_) copyPixels(image_, image, part);
   };
-  if (history != nullptr && history->layer == layer.identity && history->version >= layer.restorableFrom) {
+  if (history != nullptr && history->layer == identity_ && history->version >= restorableFrom_) {
     for (const PixelRect& r : history->written) restore(r);
-    for (const auto& [version, changed] : layer.updates)
+    for (const auto& [version, changed] : updates_)
       if (version > history->version)
         for (const PixelRect& r : changed) restore(r);
   } else if (std::find(fresh.begin(), fresh.end(), true) != fresh.end()) {
     restore(PixelRect{0, 0, list.width, list.height});
   } else {
-    image.rgba = layer.image.rgba;  // same size: copies into the existing storage
+    image.rgba = image_.rgba;  // same size: copies into the existing storage
   }
-  std::vector<PixelRect> under = layer.edgeRects;
-  redrawRects(RedrawJob{list, perView, fresh}, rects, Items::All, image, &under);
+  std::vector<PixelRect> under = edgeRects_;
+  redrawRects(drawing, readback, RedrawJob{list, perView, fresh}, rects, Items::All, image, &under);
   long long area = 0;
   for (const PixelRect& r : rects) area += static_cast<long long>(r.x1 - r.x0) * (r.y1 - r.y0);
   stats.redrawnPixels += area;
@@ -348,25 +364,24 @@ std::vector<PixelRect> Renderer::Impl::drawOverLayer(const DrawList& list, const
 // buildLayer draws them whole. A checkpoint of a growing line then costs
 // about a frame over the layer instead of a frame drawn whole.
 // A fresh view is not drawn: its pixels in the layer become stale.
-void Renderer::Impl::updateLayer(const DrawList& list, const std::vector<ViewItems>& perView,
-                                 const std::vector<PixelRect>& rects, const std::vector<bool>& fresh) {
-  redrawRects(RedrawJob{list, perView, fresh}, rects, Items::StaticOnly, layer.image, nullptr);
-  ++stats.layerUpdates;
-  layer.updates.emplace_back(++layer.version, rects);
-  if (layer.updates.size() > Layer::kUpdatesKept) {
-    layer.restorableFrom = layer.updates.front().first;  // an image at this version needs only the updates kept
-    layer.updates.pop_front();
+void RetainedLayer::update(const ViewDrawing& drawing, Readback& readback, const DrawList& list,
+                           const std::vector<ViewItems>& perView, const std::vector<PixelRect>& rects,
+                           const std::vector<bool>& fresh) {
+  redrawRects(drawing, readback, RedrawJob{list, perView, fresh}, rects, Items::StaticOnly, image_, nullptr);
+  ++drawing.stats.layerUpdates;
+  updates_.emplace_back(++version_, rects);
+  if (updates_.size() > kUpdatesKept) {
+    restorableFrom_ = updates_.front().first;  // an image at this version needs only the updates kept
+    updates_.pop_front();
   }
 }
 
-
-// What layerChanges needs to know of the items' extents.
-ItemBounds Renderer::Impl::itemBounds(const DrawList& list) {
+ItemBounds itemBounds(GpuCaches& caches, const DrawList& list) {
   ItemBounds b;
-  b.mesh = [this](const MeshItem& m, const View& v, const glm::mat4& clipFromWorld, std::vector<PixelRect>& out) {
-    meshBounds(v, clipFromWorld, Drawable{m.mesh, m.worldFromModel, &m.material, false}, out);
+  b.mesh = [&caches](const MeshItem& m, const View& v, const glm::mat4& clipFromWorld, std::vector<PixelRect>& out) {
+    meshBounds(caches, v, clipFromWorld, Drawable{m.mesh, m.worldFromModel, &m.material, false}, out);
   };
-  b.label = [this, &list](const LabelItem& l, const View* v, const glm::mat4& clipFromWorld) {
+  b.label = [&caches, &list](const LabelItem& l, const View* v, const glm::mat4& clipFromWorld) {
     return labelBounds(l, list, v, clipFromWorld, caches);
   };
   return b;

@@ -1,20 +1,19 @@
-// The view pass: a view's steps over a frame, in order (see
-// retained_layers.cpp for the order and why). The opaque meshes at one
-// sample, then in samples in the tiles near their edges, resolved there
-// (drawViewOpaque); then at one sample, each step antialiased by its own
-// coverage: the re-shade and the moving spheres (drawAfterResolve), lines,
-// translucent meshes and overlays (drawRest).
+// The view pass (view_pass.hpp): a view's steps over a frame, in order.
+#include "render/view_pass.hpp"
+
 #include <algorithm>
 
-#include "render/renderer_impl.hpp"
+#include "render/coverage_edges.hpp"
+#include "render/layer_plan.hpp"
+#include "render/screen_bounds.hpp"
 
 namespace rollspin::render {
 
 // Binds the scene (or `fbo`), the view's viewport and shadow map, scissored
 // to `clip` (image pixels, top-left origin; the view's own rectangle if
 // null); the scope of the draws that follow.
-DrawScope Renderer::Impl::beginView(const DrawList& list, const View& v, const ViewItems& viewItems,
-                                    const PixelRect* clip, GLuint fbo) {
+DrawScope beginView(const FrameTargets& targets, const DrawList& list, const View& v, const ViewItems& viewItems,
+                    const PixelRect* clip, GLuint fbo) {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo != 0 ? fbo : GLuint(targets.sceneFbo));
   DrawScope scope;
   scope.samples = fbo != 0 && fbo == targets.opaqueFbo ? targets.samples : 1;
@@ -42,8 +41,8 @@ DrawScope Renderer::Impl::beginView(const DrawList& list, const View& v, const V
 // intersection is no edge of either), and all over a moving one's bounds
 // (an arrow: the same tiles redrawSamples redraws over a layer).
 // A surface that intersects itself gets no samples along the crossing.
-std::vector<PixelRect> Renderer::Impl::sampleTiles(const DrawList& list, const View& v, const ViewItems& viewItems,
-                                                   Items which) {
+std::vector<PixelRect> sampleTiles(GpuCaches& caches, const FrameTargets& targets, const DrawList& list, const View& v,
+                                   const ViewItems& viewItems, Items which) {
   TileGrid grid(list.width, list.height);
   const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
   std::vector<PixelRect> bounds;
@@ -52,7 +51,7 @@ std::vector<PixelRect> Renderer::Impl::sampleTiles(const DrawList& list, const V
     if (d.material->opacity < 1.0f || !MeshPass::inSamplesPass(d, targets) || !takes(which, d.dynamic)) continue;
     if (d.dynamic) {
       bounds.clear();
-      meshBounds(v, clipFromWorld, d, bounds);
+      meshBounds(caches, v, clipFromWorld, d, bounds);
       for (const PixelRect& r : bounds) grid.add(r);
       continue;
     }
@@ -84,8 +83,8 @@ std::vector<PixelRect> Renderer::Impl::sampleTiles(const DrawList& list, const V
 // its outline). A long thin mesh (an arrow's shaft) is cut across its
 // length into slabs of about its width, each bounded alone: a diagonal
 // arrow dirties a band along itself, not the square it spans.
-void Renderer::Impl::meshBounds(const View& v, const glm::mat4& clipFromWorld, const Drawable& d,
-                                std::vector<PixelRect>& out) {
+void meshBounds(GpuCaches& caches, const View& v, const glm::mat4& clipFromWorld, const Drawable& d,
+                std::vector<PixelRect>& out) {
   const GpuMesh& g = caches.mesh(d.mesh);
   const glm::mat3 linear(d.worldFromModel);
   const glm::vec3 extent =
@@ -117,20 +116,21 @@ void Renderer::Impl::meshBounds(const View& v, const glm::mat4& clipFromWorld, c
 // moves drew its ball view's floor in samples in full.
 // Returns the tiles drawn in samples: the only pixels that the meshes
 // cover in part (alpha strictly between 0 and 1).
-std::vector<PixelRect> Renderer::Impl::drawViewOpaque(const DrawList& list, const View& v, const ViewItems& viewItems,
-                                                      bool clear, std::vector<PixelRect>* under) {
-  DrawScope scope = beginView(list, v, viewItems, nullptr);
+std::vector<PixelRect> drawViewOpaque(const ViewDrawing& drawing, const DrawList& list, const View& v,
+                                      const ViewItems& viewItems, bool clear, std::vector<PixelRect>* under) {
+  const FrameTargets& targets = drawing.targets;
+  DrawScope scope = beginView(targets, list, v, viewItems, nullptr);
   scope.under = under;
   if (clear) {
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
   }
-  meshes.drawOpaqueAtCentres(viewItems, scope, Items::StaticOnly, meshDrawing());
-  meshes.drawOpaqueAtCentres(viewItems, scope, Items::DynamicOnly, meshDrawing());
+  drawing.meshes.drawOpaqueAtCentres(viewItems, scope, Items::StaticOnly, drawing.meshDrawing());
+  drawing.meshes.drawOpaqueAtCentres(viewItems, scope, Items::DynamicOnly, drawing.meshDrawing());
   if (targets.opaqueFbo == 0) return {};
-  const std::vector<PixelRect> tiles = sampleTiles(list, v, viewItems, Items::All);
-  stats.wholeViewPixels += static_cast<long long>(v.width) * v.height;
-  for (const PixelRect& r : tiles) stats.sampledPixels += static_cast<long long>(r.x1 - r.x0) * (r.y1 - r.y0);
+  const std::vector<PixelRect> tiles = sampleTiles(drawing.caches, targets, list, v, viewItems, Items::All);
+  drawing.stats.wholeViewPixels += static_cast<long long>(v.width) * v.height;
+  for (const PixelRect& r : tiles) drawing.stats.sampledPixels += static_cast<long long>(r.x1 - r.x0) * (r.y1 - r.y0);
   // Each tile rectangle drawn in a box of its own, a pixel wider than it:
   // a multisampled pixel on a scissor's edge can lose samples, and those
   // it keeps are shaded at their centroid, off the pixel's (seen: one
@@ -159,20 +159,20 @@ std::vector<PixelRect> Renderer::Impl::drawViewOpaque(const DrawList& list, cons
     for (std::size_t i = 0; i < tiles.size(); ++i) {
       if (roundOf[i] != round) continue;
       oneBox[0] = boxes[i];
-      beginView(list, v, viewItems, &oneBox[0], targets.opaqueFbo);
+      (void)beginView(targets, list, v, viewItems, &oneBox[0], targets.opaqueFbo);
       glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
     }
     for (std::size_t i = 0; i < tiles.size(); ++i) {
       if (roundOf[i] != round) continue;
       oneBox[0] = boxes[i];
-      DrawScope inBox = beginView(list, v, viewItems, &oneBox[0], targets.opaqueFbo);
+      DrawScope inBox = beginView(targets, list, v, viewItems, &oneBox[0], targets.opaqueFbo);
       inBox.clips = &oneBox;
       inBox.under = under;
-      meshes.drawOpaque(viewItems, inBox, Items::StaticOnly, Pass::Samples, meshDrawing());
-      meshes.drawOpaque(viewItems, inBox, Items::DynamicOnly, Pass::Samples, meshDrawing());
+      drawing.meshes.drawOpaque(viewItems, inBox, Items::StaticOnly, Pass::Samples, drawing.meshDrawing());
+      drawing.meshes.drawOpaque(viewItems, inBox, Items::DynamicOnly, Pass::Samples, drawing.meshDrawing());
     }
     for (std::size_t i = 0; i < tiles.size(); ++i)
-      if (roundOf[i] == round) targets.resolve(list, tiles[i], programs, streams);
+      if (roundOf[i] == round) drawing.targets.resolve(list, tiles[i], drawing.programs, drawing.streams);
   }
   return tiles;
 }
@@ -181,25 +181,25 @@ std::vector<PixelRect> Renderer::Impl::drawViewOpaque(const DrawList& list, cons
 // under pass only where the meshes cover pixels in part (`sampled`) or a
 // sphere drawn before it does (the pass changes nothing elsewhere: see
 // SpherePass::draw), then the rest.
-void Renderer::Impl::drawViewAfterOpaque(const DrawList& list, int view, const ViewItems& viewItems,
-                                         std::vector<PixelRect> sampled, const DrawScope& scope) {
+void drawViewAfterOpaque(const ViewDrawing& drawing, const DrawList& list, int view, const ViewItems& viewItems,
+                         std::vector<PixelRect> sampled, const DrawScope& scope) {
   DrawScope afterResolve = scope;
   afterResolve.under = &sampled;
-  drawAfterResolve(viewItems, afterResolve);
-  drawRest(list, view, viewItems, Items::All, scope);
+  drawAfterResolve(drawing, viewItems, afterResolve);
+  drawRest(drawing, list, view, viewItems, Items::All, scope);
 }
 
 // What a frame draws at one sample after the resolve, before drawRest.
-void Renderer::Impl::drawAfterResolve(const ViewItems& viewItems, const DrawScope& scope) {
-  meshes.drawReshades(viewItems, scope, meshDrawing());
-  meshes.drawOpaque(viewItems, scope, Items::DynamicOnly, Pass::Coverage, meshDrawing());
+void drawAfterResolve(const ViewDrawing& drawing, const ViewItems& viewItems, const DrawScope& scope) {
+  drawing.meshes.drawReshades(viewItems, scope, drawing.meshDrawing());
+  drawing.meshes.drawOpaque(viewItems, scope, Items::DynamicOnly, Pass::Coverage, drawing.meshDrawing());
 }
 
 // Everything after the opaque meshes and the re-shade: depth-tested lines,
 // translucent meshes far to near, then lines over everything, labels and
 // the inset frame.
-void Renderer::Impl::drawRest(const DrawList& list, int index, const ViewItems& viewItems, Items which,
-                              const DrawScope& scope) {
+void drawRest(const ViewDrawing& drawing, const DrawList& list, int index, const ViewItems& viewItems, Items which,
+              const DrawScope& scope) {
   const View& v = list.views[static_cast<std::size_t>(index)];
   const glm::mat4 clipFromWorld = v.camera.clipFromView * v.camera.viewFromWorld;
   // A line's quad faces either way: no culling, whatever ran before (the
@@ -209,7 +209,7 @@ void Renderer::Impl::drawRest(const DrawList& list, int index, const ViewItems& 
   glEnable(GL_BLEND);
   for (const PolylineItem& p : list.polylines)
     if (p.view == index && p.depthTested && takes(which, p.dynamic))
-      lines.draw(p, scope, programs.line, streams, targets.height, stats);
+      drawing.lines.draw(p, scope, drawing.programs.line, drawing.streams, drawing.targets.height, drawing.stats);
 
   // Far to near. A closed translucent mesh shows its front half only: its
   // back half would double the blending cost for little visual gain.
@@ -222,27 +222,29 @@ void Renderer::Impl::drawRest(const DrawList& list, int index, const ViewItems& 
   {
     const ClipDistances clipped;
     // Translucent layers (glass, the Bloch sphere) take no shadow.
-    for (const Drawable* d : translucent) meshes.draw(*d, scope, false, d->material->cull, meshDrawing());
+    for (const Drawable* d : translucent)
+      drawing.meshes.draw(*d, scope, false, d->material->cull, drawing.meshDrawing());
   }
   glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);
   for (const PolylineItem& p : list.polylines)
     if (p.view == index && !p.depthTested && takes(which, p.dynamic))
-      lines.draw(p, scope, programs.line, streams, targets.height, stats);
+      drawing.lines.draw(p, scope, drawing.programs.line, drawing.streams, drawing.targets.height, drawing.stats);
   for (const LabelItem& l : list.labels)
-    if (l.view == index) drawLabelAs(l, which, glm::vec2(v.width, v.height), &clipFromWorld, scope, textDrawing());
+    if (l.view == index)
+      drawLabelAs(l, which, glm::vec2(v.width, v.height), &clipFromWorld, scope, drawing.textDrawing());
   if (v.frame && which != Items::DynamicOnly) {
     const float w = float(v.width), h = float(v.height), t = std::max(1.0f, h / 300.0f);
     const std::vector<GlyphQuad> border{
         {0, 0, w, t, 0, 0, 0, 0}, {0, h - t, w, h, 0, 0, 0, 0}, {0, 0, t, h, 0, 0, 0, 0}, {w - t, 0, w, h, 0, 0, 0, 0}};
-    drawQuads(border, glm::vec2(w, h), glm::vec4(0.35f, 0.38f, 0.42f, 1.0f), 0, true, textDrawing());
+    drawQuads(border, glm::vec2(w, h), glm::vec4(0.35f, 0.38f, 0.42f, 1.0f), 0, true, drawing.textDrawing());
   }
   glDepthMask(GL_TRUE);
 }
 
 // The whole frame, as the static items' layer and dynamic items would
 // draw it, step for step (see retained_layers.cpp).
-void Renderer::Impl::drawWhole(const DrawList& list, const std::vector<ViewItems>& perView) {
+void drawWhole(const ViewDrawing& drawing, const DrawList& list, const std::vector<ViewItems>& perView) {
   for (std::size_t i = 0; i < list.views.size(); ++i) {
     const View& v = list.views[i];
     bool overlapsEarlier = false;
@@ -250,11 +252,12 @@ void Renderer::Impl::drawWhole(const DrawList& list, const std::vector<ViewItems
     // An inset over a view drawn before clears its own rectangle (a
     // scissored clear is a full-screen quad on llvmpipe: only an inset
     // pays for it).
-    std::vector<PixelRect> sampled = drawViewOpaque(list, v, perView[i], overlapsEarlier, nullptr);
-    const DrawScope scope = beginView(list, v, perView[i], nullptr);
-    drawViewAfterOpaque(list, static_cast<int>(i), perView[i], std::move(sampled), scope);
+    std::vector<PixelRect> sampled = drawViewOpaque(drawing, list, v, perView[i], overlapsEarlier, nullptr);
+    const DrawScope scope = beginView(drawing.targets, list, v, perView[i], nullptr);
+    drawViewAfterOpaque(drawing, list, static_cast<int>(i), perView[i], std::move(sampled), scope);
   }
-  drawImageLabels(list, Items::All, PixelRect{0, 0, list.width, list.height}, targets.sceneFbo, textDrawing());
+  drawImageLabels(list, Items::All, PixelRect{0, 0, list.width, list.height}, drawing.targets.sceneFbo,
+                  drawing.textDrawing());
 }
 
 }  // namespace rollspin::render

@@ -9,6 +9,11 @@ const TARGET_MS = 1000 / 30;
 const MIN_SCALE = 0.5;
 const STEP = 0.1;
 const SETTLE_MS = 400;  // frames at one scale before the next step
+// Lower the scale when frames come slower than 29.4 a second (a mean
+// frame of two 60 Hz refreshes, 33.3 ms, stays), raise it only when they
+// come faster than 37.5: between the two the scale stays (no hunting).
+const SLOWER_THAN = 1.02 * TARGET_MS;
+const FASTER_THAN = 0.8 * TARGET_MS;
 
 export class FramePacer {
   constructor(twin) {
@@ -41,9 +46,8 @@ export class FramePacer {
     if (!this.mean || now - this.changed < SETTLE_MS) return false;
     const scale = this.twin.renderScale;
     let next = scale;
-    // (Between 0.9 and 1.1 of the target the scale stays: no hunting.)
-    if (this.mean > 1.1 * TARGET_MS) next = Math.max(MIN_SCALE, scale - STEP);
-    else if (this.mean < 0.9 * TARGET_MS) next = Math.min(1, scale + STEP);
+    if (this.mean > SLOWER_THAN) next = Math.max(MIN_SCALE, scale - STEP);
+    else if (this.mean < FASTER_THAN) next = Math.min(1, scale + STEP);
     if (next !== scale) {
       this.twin.setRenderScale(Math.round(next * 100) / 100);
       this.changed = now;

@@ -46,7 +46,7 @@ TEST_F(TempFilesTest, OnlyADeadProcesssTemporariesAreRemoved) {
   const std::string dead = std::to_string(deadPid()), alive = std::to_string(::getpid());
   std::ofstream(dir / (".clip.mp4." + dead + ".tmp")) << "stale";
   fs::create_directories(dir / (".clip.mp4." + dead + "9.tmp") / "frames");  // another dead one, a folder
-  std::ofstream(dir / (".clip.mp4." + alive + ".tmp")) << "ours";              // a running process's
+  std::ofstream(dir / (".clip.mp4." + alive + ".tmp")) << "ours";            // a running process's
   std::ofstream(dir / (".other.mp4." + dead + ".tmp")) << "another output's";
   std::ofstream(dir / (".clip.mp4." + dead + ".tmp.bak")) << "not the pattern";
   std::ofstream(dir / "clip.mp4") << "the output";

@@ -16,15 +16,13 @@ const std::string kScene = "[ball]\nradius = 1\n[path]\nkind = \"circle\"\nradiu
 
 TEST(FlagOverrides, AFlagOverridesTheFileAndASet) {
   const scene::SceneSpec spec = loadSceneWithFlags(
-      "flags.toml", {"render.width=800"}, {flagOverride("--width 1000", "render", scene::key::kWidth, 1000LL)},
-      kScene);
+      "flags.toml", {"render.width=800"}, {flagOverride("--width 1000", "render", scene::key::kWidth, 1000LL)}, kScene);
   EXPECT_EQ(spec.render.width, 1000);
 }
 
 TEST(FlagOverrides, APresetGivesWayToAnExplicitSet) {
-  const std::vector<FlagOverride> preset{
-      flagOverride("--quality low", "render", scene::key::kWidth, 854LL, true),
-      flagOverride("--quality low", "render", scene::key::kHeight, 480LL, true)};
+  const std::vector<FlagOverride> preset{flagOverride("--quality low", "render", scene::key::kWidth, 854LL, true),
+                                         flagOverride("--quality low", "render", scene::key::kHeight, 480LL, true)};
   const scene::SceneSpec spec = loadSceneWithFlags("flags.toml", {"render.width=1024"}, preset, kScene);
   EXPECT_EQ(spec.render.width, 1024) << "the user's --set stands";
   EXPECT_EQ(spec.render.height, 480) << "the preset's other key applies";
@@ -32,8 +30,7 @@ TEST(FlagOverrides, APresetGivesWayToAnExplicitSet) {
 
 TEST(FlagOverrides, AnOutOfRangeFlagIsNamedInTheMessage) {
   try {
-    (void)loadSceneWithFlags("flags.toml", {}, {flagOverride("--width 0", "render", scene::key::kWidth, 0LL)},
-                             kScene);
+    (void)loadSceneWithFlags("flags.toml", {}, {flagOverride("--width 0", "render", scene::key::kWidth, 0LL)}, kScene);
     FAIL() << "a width of 0 was accepted";
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::BadInput);

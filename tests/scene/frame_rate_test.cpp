@@ -39,8 +39,8 @@ TEST(FrameRate, TextIsARatioOrADecimal) {
   EXPECT_EQ(frameRateFromText("60/2"), (FrameRate{30, 1})) << "reduced";
   EXPECT_EQ(frameRateFromText("29.97"), (FrameRate{30000, 1001}));
   EXPECT_EQ(frameRateFromText("24"), (FrameRate{24, 1}));
-  for (const char* bad : {"", "/", "30/", "/1001", "30/0", "0/1", "-30/1", "30 /1", "3e1/1", "abc", "30fps",
-                          "4294967296/1"})
+  for (const char* bad :
+       {"", "/", "30/", "/1001", "30/0", "0/1", "-30/1", "30 /1", "3e1/1", "abc", "30fps", "4294967296/1"})
     EXPECT_EQ(frameRateFromText(bad), std::nullopt) << bad;
   EXPECT_EQ(frameRateFromText(std::to_string(INT_MAX) + "/1"), (FrameRate{INT_MAX, 1}));
 }

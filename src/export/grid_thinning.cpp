@@ -1,6 +1,8 @@
 #include "export/grid_thinning.hpp"
 
+#include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -34,6 +36,46 @@ std::vector<int> keptLines(int lines, int acrossCount, const At& at, const Toler
     kept.push_back(next);
   }
   return kept;
+}
+
+// Rows and columns are each thinned along their own lines, which misses a
+// surface's twist (z = xy is straight along every row and column, yet a
+// quad's two triangles cut its middle off by a quarter of its corners'
+// spread): each dropped vertex is checked against the triangle of the kept
+// quad it falls in (at its own place in the quad's index square: a, b, d
+// or a, d, c as keptGrid splits it), and a quad that misses one gets back
+// the column or row through its worst vertex (across its longer side),
+// until none misses.
+template <typename At, typename Tolerance>
+void keepTheTwist(const At& at, const Tolerance& tolerance, std::vector<int>& columns, std::vector<int>& rows) {
+  for (;;) {
+    std::vector<int> addColumns, addRows;
+    for (std::size_t q = 0; q + 1 < rows.size(); ++q)
+      for (std::size_t p = 0; p + 1 < columns.size(); ++p) {
+        const int i0 = columns[p], i1 = columns[p + 1], j0 = rows[q], j1 = rows[q + 1];
+        if (i1 - i0 < 2 && j1 - j0 < 2) continue;
+        const glm::vec3 a = at(i0, j0), b = at(i1, j0), c = at(i0, j1), d = at(i1, j1);
+        double worst = 0.0;
+        int worstI = -1, worstJ = -1;
+        for (int j = j0; j <= j1; ++j)
+          for (int i = i0; i <= i1; ++i) {
+            const float x = float(i - i0) / float(i1 - i0), y = float(j - j0) / float(j1 - j0);
+            const glm::vec3 onMesh = x >= y ? a + x * (b - a) + y * (d - b) : a + y * (c - a) + x * (d - c);
+            const double excess = double(glm::length(at(i, j) - onMesh)) - tolerance(i, j);
+            if (excess > worst) worst = excess, worstI = i, worstJ = j;
+          }
+        if (worstI < 0) continue;
+        const bool splitColumns = (i1 - i0 >= j1 - j0 && worstI != i0 && worstI != i1) || worstJ == j0 || worstJ == j1;
+        if (splitColumns) addColumns.push_back(worstI);
+        else addRows.push_back(worstJ);
+      }
+    if (addColumns.empty() && addRows.empty()) return;
+    for (auto [kept, added] : {std::pair{&columns, &addColumns}, std::pair{&rows, &addRows}}) {
+      kept->insert(kept->end(), added->begin(), added->end());
+      std::sort(kept->begin(), kept->end());
+      kept->erase(std::unique(kept->begin(), kept->end()), kept->end());
+    }
+  }
 }
 
 // The grid of the kept columns and rows.
@@ -75,10 +117,12 @@ render::MeshData thinGrid(const render::MeshData& mesh, double columnTolerance, 
   const auto vertex = [&](int i, int j) -> const glm::vec3& {
     return mesh.vertices[std::size_t(j * (grid.na + 1) + i)].position;
   };
-  const std::vector<int> columns = keptLines(
+  std::vector<int> columns = keptLines(
       grid.na, grid.nb, [&](int i, int j) { return vertex(i, j); }, [&](int, int) { return columnTolerance; });
-  const std::vector<int> rows = keptLines(
+  std::vector<int> rows = keptLines(
       grid.nb, grid.na, [&](int j, int i) { return vertex(i, j); }, [&](int, int) { return rowTolerance; });
+  keepTheTwist(
+      vertex, [&](int, int) { return columnTolerance + rowTolerance; }, columns, rows);
   return keptGrid(mesh, grid, columns, rows);
 }
 
@@ -86,12 +130,13 @@ render::MeshData thinGrid(const render::MeshData& mesh, const std::vector<double
   const GridSize grid = gridSizeOf(mesh);
   if (grid.na == 0 || tolerances.size() != mesh.vertices.size()) return mesh;
   const auto index = [&](int i, int j) { return std::size_t(j * (grid.na + 1) + i); };
-  const std::vector<int> columns = keptLines(
-      grid.na, grid.nb, [&](int i, int j) { return mesh.vertices[index(i, j)].position; },
-      [&](int i, int j) { return tolerances[index(i, j)]; });
-  const std::vector<int> rows = keptLines(
-      grid.nb, grid.na, [&](int j, int i) { return mesh.vertices[index(i, j)].position; },
+  const auto vertex = [&](int i, int j) -> const glm::vec3& { return mesh.vertices[index(i, j)].position; };
+  std::vector<int> columns = keptLines(grid.na, grid.nb, vertex, [&](int i, int j) { return tolerances[index(i, j)]; });
+  std::vector<int> rows = keptLines(
+      grid.nb, grid.na, [&](int j, int i) { return vertex(i, j); },
       [&](int j, int i) { return tolerances[index(i, j)]; });
+  keepTheTwist(
+      vertex, [&](int i, int j) { return 2.0 * tolerances[index(i, j)]; }, columns, rows);
   return keptGrid(mesh, grid, columns, rows);
 }
 

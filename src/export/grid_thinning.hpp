@@ -5,9 +5,13 @@
 // must lie within `tolerance` of the chord of every row,
 //   |P(i, j) − lerp(P(i0, j), P(i1, j), (i − i0) / (i1 − i0))| ≤ tolerance
 // (a tolerance of its own per vertex: tolerance(i, j)),
-// and rows likewise. Texture coordinates are linear in (i, j) on such a
-// patch, so the kept vertices carry the same checker cells; the surface
-// moves by at most about twice the tolerance (a column's and a row's sag).
+// and rows likewise. Then every dropped vertex is checked against the
+// triangle of its kept quad that holds it (a twisting surface, z = xy, is
+// straight along rows and columns but not across a quad), and quads off by
+// more than the two tolerances get lines back until none is. Texture
+// coordinates are linear in (i, j) on such a patch, so the kept vertices
+// carry the same checker cells; the surface moves by at most twice the
+// tolerance (a column's and a row's sag, or the quad check's bound).
 #pragma once
 
 #include <vector>

@@ -61,6 +61,39 @@ TEST(GridThinning, EachVertexKeepsWithinItsOwnTolerance) {
       << "a tolerance for each vertex, or none thinned";
 }
 
+// z = x y is straight along every row and column: thinned by its lines
+// alone it would keep only the corners, and the two triangles would miss
+// its middle by a quarter of the corners' spread. Every fine vertex stays
+// within the two tolerances of the triangle of its kept quad.
+TEST(GridThinning, ATwistedPatchKeepsItsMiddle) {
+  const double tolerance = 0.01;
+  const auto fine = render::parametricPatch(
+      [](float a, float b, glm::vec3& p, glm::vec3& n) {
+        p = glm::vec3(2.0f * a - 1.0f, 2.0f * b - 1.0f, (2.0f * a - 1.0f) * (2.0f * b - 1.0f));
+        n = glm::normalize(glm::vec3(-p.y, -p.x, 1.0f));
+      },
+      64, 64);
+  const render::MeshData thin = thinGrid(*fine, tolerance, tolerance);
+  EXPECT_GT(thin.vertices.size(), 4u);
+  EXPECT_LT(thin.vertices.size(), fine->vertices.size());
+  double worst = 0.0;
+  for (const render::Vertex& v : fine->vertices) {
+    // The thinned mesh's height at (x, y): the triangle that holds it.
+    double z = 1e300;
+    for (std::size_t t = 0; t + 2 < thin.indices.size() && z == 1e300; t += 3) {
+      const glm::vec3 a = thin.vertices[thin.indices[t]].position, b = thin.vertices[thin.indices[t + 1]].position,
+                      c = thin.vertices[thin.indices[t + 2]].position;
+      const float d = (b.y - c.y) * (a.x - c.x) + (c.x - b.x) * (a.y - c.y);
+      const float l1 = ((b.y - c.y) * (v.position.x - c.x) + (c.x - b.x) * (v.position.y - c.y)) / d;
+      const float l2 = ((c.y - a.y) * (v.position.x - c.x) + (a.x - c.x) * (v.position.y - c.y)) / d;
+      if (std::min({l1, l2, 1.0f - l1 - l2}) >= -1e-5f) z = l1 * a.z + l2 * b.z + (1.0f - l1 - l2) * c.z;
+    }
+    ASSERT_NE(z, 1e300) << "a fine vertex outside the thinned patch";
+    worst = std::max(worst, std::abs(z - double(v.position.z)));
+  }
+  EXPECT_LE(worst, 2.0 * tolerance + 1e-6);
+}
+
 TEST(GridThinning, ACurvedPatchKeepsEveryDroppedColumnWithinItsChord) {
   const double radius = 2.0, tolerance = 0.01;
   const auto fine = cylinderPatch(256, 16, radius);

@@ -68,7 +68,7 @@ struct SceneSource {
   std::string name;                 // the path as given, or "<string>"
   std::optional<std::string> text;  // loads(): the TOML itself
   std::vector<std::string> overrides;
-  std::string sceneName;  // load_output(): the name the output's job records
+  std::string sceneName{};  // load_output(): the name the output's job records
 };
 
 // One still size and alpha of a scene: the drawing job (spec with the size

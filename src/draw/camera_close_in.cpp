@@ -144,7 +144,7 @@ void CameraFraming::closeInOnStretch(const Shot &shot, const OrbitAngles &a, dou
     }
     return aim;
   };
-  // (Part of the way only, where the text asks: setCloseIn.)
+  // (Part of the way only, where the text asks: setCloseInShare.)
   const double goal = 1.0 - closeIn_ * (1.0 - std::max(0.05, (closest - behindP) / depthOfP));
   double least = goal, most = 1.0;  // the least scale that holds lies in (least, most]
   if (holds(scaled(goal))) most = goal;

@@ -180,8 +180,11 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
   const OrbitAngles sceneAngles = orbitAngles(spec, model);
   bool azimuthGiven = spec.locations.contains("render.azimuth_deg");
   bool elevationGiven = spec.locations.contains("render.elevation_deg");
-  Shot shot{sceneAngles.azimuth, sceneAngles.elevation, spec.render.fovDeg,
-            std::nullopt,        spec.render.distance,  spec.render.follow};
+  Shot shot{.azimuth = sceneAngles.azimuth,
+            .elevation = sceneAngles.elevation,
+            .fovDeg = spec.render.fovDeg,
+            .distance = spec.render.distance,
+            .follow = spec.render.follow};
   if (spec.render.target)
     shot.target = Vec3((*spec.render.target)[0], (*spec.render.target)[1], (*spec.render.target)[2]);
   auto freeCamera = [](const Shot &sh) { return !sh.follow && !(sh.target && sh.distance); };
@@ -275,7 +278,7 @@ CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingM
   findHiddenSpans();
 }
 
-bool CameraFraming::closesIn() const {
+bool CameraFraming::mayCloseIn() const {
   return std::any_of(shots_.begin(), shots_.end(), [](const Shot &s) { return s.ownStretch; });
 }
 

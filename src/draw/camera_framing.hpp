@@ -121,8 +121,8 @@ class CameraFraming {
   // the whole clip's framing leaves the ball small (kLeastBallShare), and
   // how far of the way they go: 0 frames the whole clip in every segment,
   // 1 as close as the ball asks (where the text leaves less room, between).
-  [[nodiscard]] bool closesIn() const;  // (whatever setCloseIn says)
-  void setCloseIn(double share) { closeIn_ = share; }
+  [[nodiscard]] bool mayCloseIn() const;  // some segment may (whatever share setCloseInShare gives)
+  void setCloseInShare(double share) { closeIn_ = share; }
   // Whether the scene fixes the camera itself (target and distance, or
   // follow), so that the framing cannot make room for text.
   [[nodiscard]] bool fixedByScene() const;
@@ -164,8 +164,8 @@ class CameraFraming {
   struct Shot {
     double azimuth = 0.0, elevation = 0.0,
            fovDeg = 32.0;  // radians, radians, degrees
-    std::optional<geometry::Vec3> target;
-    std::optional<double> distance;
+    std::optional<geometry::Vec3> target{};
+    std::optional<double> distance{};
     bool follow = false;
     bool orbits = false;               // the azimuth follows the ball's longitude (a path
                                        // round the z axis)
@@ -173,7 +173,7 @@ class CameraFraming {
     double moveSeconds = kCameraMove;  // the move here from the previous segment's camera
     bool keyed = false;                // the scene's keys fix (part of) this camera
     bool cutsAway = false;             // the surface is cut away where it hides the ball
-    std::vector<Keyframe> keys;        // non-empty: the view direction turns with s
+    std::vector<Keyframe> keys{};      // non-empty: the view direction turns with s
                                        // through these (unhiddenAngles)
     // A storyboard's free camera: the stretch of path it is framed for
     // (a hold: the next motion's), closer than the whole clip's framing
@@ -201,9 +201,9 @@ class CameraFraming {
     OrbitAngles angles;
     bool orbits = false;
     double orbitOffset = 0.0;
-    double share = 1.0;          // the least share of the ball seen (sight lines)
-    bool cutAway = false;        // none sees it: cut the surface away towards the eye
-    std::vector<Keyframe> keys;  // see Shot
+    double share = 1.0;            // the least share of the ball seen (sight lines)
+    bool cutAway = false;          // none sees it: cut the surface away towards the eye
+    std::vector<Keyframe> keys{};  // see Shot
   };
   // The view direction at s through keyframes (mixed between neighbours).
   [[nodiscard]] static OrbitAngles along(const std::vector<Keyframe> &keys, double s);

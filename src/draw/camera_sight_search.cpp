@@ -295,7 +295,7 @@ std::optional<TurningPath> turningWithBall(const SightEyes &eyes, const OrbitAng
 CameraFraming::Unhidden CameraFraming::unhiddenAngles(OrbitAngles base, double s0, double s1, bool azimuthFree,
                                                       bool elevationFree, bool mayOrbit, double maxTurnDeg,
                                                       double seconds, bool mayLower, bool follow) const {
-  Unhidden out{base, false, 0.0};
+  Unhidden out{.angles = base};
   const bool cutOpen = model_.surface && model_.surface->look().cutAwayTowardEye;
   if (!extent_.surface || cutOpen || !(azimuthFree || elevationFree)) return out;
   const double aspect = double(spec_.render.width) / double(std::max<long long>(spec_.render.height, 1));
@@ -338,11 +338,12 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(OrbitAngles base, double s
   if (pickStill(0.96)) return out;
 
   // An orbit that sees ≥ 96 % is preferred to a still view that sees 90 %.
-  Unhidden orbit{base, false, 0.0, -1.0};
+  Unhidden orbit{.angles = base, .share = -1.0};
   if (azimuthFree && mayOrbit && s1 > s0) {
     const LongitudeOrbit o =
         orbitWithLongitude(eyes, base, s0, s1, elevationFree, maxTurnDeg, seconds, kMaxTurnRateDeg);
-    if (o.share > -1.0) orbit = {{base.azimuth, o.elevation}, true, o.offset, o.share};
+    if (o.share > -1.0)
+      orbit = {.angles = {base.azimuth, o.elevation}, .orbits = true, .orbitOffset = o.offset, .share = o.share};
   }
   if (orbit.share >= 0.96) return orbit;
   if (pickStill(0.9)) return out;
@@ -356,7 +357,7 @@ CameraFraming::Unhidden CameraFraming::unhiddenAngles(OrbitAngles base, double s
             turningWithBall(eyes, base, s0, s1, seconds, anchored, kMaxFreeMoveDeg)) {
       std::vector<Keyframe> keys(path->s.size());
       for (std::size_t i = 0; i < keys.size(); ++i) keys[i] = {path->s[i], path->angles[i]};
-      out = {keys.front().angles, false, 0.0, path->share};
+      out = {.angles = keys.front().angles, .share = path->share};
       out.keys = std::move(keys);
       return out;
     }

@@ -389,7 +389,7 @@ bool SceneDrawer::layOutBallView(const RollingModel& model, const Rects& r, doub
       return ball_->subjectBounds(v, s);
     };
   }
-  camera_->setCloseIn(0.0);
+  camera_->setCloseInShare(0.0);
   ballLayout_ =
       layoutView(r.ball.width, r.ball.height, blocks, occupancyFor, camera_->fixedByScene(), minWindow, subject);
   closeInBesideText(blocks, r, occupancyFor);
@@ -426,11 +426,11 @@ bool SceneDrawer::layOutBallView(const RollingModel& model, const Rects& r, doub
 // framing, and the closer views go as far of the way as clears every plate.
 void SceneDrawer::closeInBesideText(const std::vector<TextBlock>& blocks, const Rects& r,
                                     const std::function<Occupancy(const NdcWindow&)>& occupancyFor) {
-  if (!camera_->closesIn()) return;
+  if (!camera_->mayCloseIn()) return;
   camera_->setWindow(ballLayout_.window);
   const auto plates = placedPlates(blocks, ballLayout_, ballReserved_, r.ball.width, r.ball.height, false);
   for (const double share : {1.0, 0.75, 0.5, 0.25, 0.0}) {
-    camera_->setCloseIn(share);
+    camera_->setCloseInShare(share);
     const Occupancy closer = occupancyFor(ballLayout_.window);
     if (share == 0.0 ||
         std::none_of(plates.begin(), plates.end(), [&](const auto& p) { return closer.anyIn(p.first, p.second); }))

@@ -5,9 +5,9 @@
 #pragma once
 
 #include <cmath>
-#include <numbers>
 
 #include "draw/camera_framing.hpp"
+#include "draw/draw_style.hpp"
 
 namespace rollspin::draw {
 
@@ -20,7 +20,7 @@ struct ScreenAxes {
 inline ScreenAxes screenAxes(const OrbitAngles &a, double fovDeg, double aspect) {
   const geometry::Vec3 toEye = towardEye(a);
   const geometry::Vec3 right = geometry::Vec3::UnitZ().cross(toEye).normalized();
-  const double tanV = std::tan(0.5 * fovDeg * std::numbers::pi / 180.0);
+  const double tanV = std::tan(0.5 * fovDeg * kDeg);
   return {toEye, {right, toEye.cross(right)}, {tanV * aspect, tanV}};
 }
 

@@ -103,8 +103,9 @@ TEST(SurfaceChangeFrames, EachSurfaceHasItsOwnCameraAFadeWeighsTheOldViewDownAnd
   // line after it, within 3√2 of the axis, a marker R further): none
   // reaches the torus's equator (5.5).
   for (const render::PolylineItem& p : list.polylines)
-    if (p.view == 1)
+    if (p.view == 1) {
       for (const glm::vec3& q : p.points) EXPECT_LT(std::hypot(q.x, q.y), 5.3f);
+    }
 }
 
 // transition = "cut" (the default): no frame fades. Two floors, cheap to frame.

@@ -108,8 +108,9 @@ void checkFigure(const Figure& f, const std::string& where, double requestedPt) 
   // measures a little smaller: 1 %), and nothing prints under 6 pt.
   for (const FigureLayout::Text& t : layout.texts) {
     EXPECT_GE(t.sizePt, 6.0 - 1e-6) << where << ": \"" << t.text << "\" prints at " << t.sizePt << " pt";
-    if (!t.free)
+    if (!t.free) {
       EXPECT_GE(t.sizePt, 0.99 * requestedPt) << where << ": \"" << t.text << "\" shrunk to " << t.sizePt << " pt";
+    }
   }
   // No text plate lies over a path (the title's band holds none).
   for (const FigureBox& plate : layout.plates)

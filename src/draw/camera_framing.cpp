@@ -174,19 +174,25 @@ void CameraFraming::layCameraKeys(const scene::CameraSpec &c, Shot &shot) {
   }
 }
 
+// The camera [render] gives, at the scene's angles.
+CameraFraming::Shot CameraFraming::sceneShot(const scene::SceneSpec &spec, const OrbitAngles &angles) {
+  Shot shot{.azimuth = angles.azimuth,
+            .elevation = angles.elevation,
+            .fovDeg = spec.render.fovDeg,
+            .distance = spec.render.distance,
+            .follow = spec.render.follow};
+  if (spec.render.target)
+    shot.target = Vec3((*spec.render.target)[0], (*spec.render.target)[1], (*spec.render.target)[2]);
+  return shot;
+}
+
 CameraFraming::CameraFraming(const scene::SceneSpec &spec, const model::RollingModel &model, FrameExtent extent,
                              bool forStill)
     : spec_(spec), model_(model), extent_(std::move(extent)) {
   const OrbitAngles sceneAngles = orbitAngles(spec, model);
   bool azimuthGiven = spec.locations.contains("render.azimuth_deg");
   bool elevationGiven = spec.locations.contains("render.elevation_deg");
-  Shot shot{.azimuth = sceneAngles.azimuth,
-            .elevation = sceneAngles.elevation,
-            .fovDeg = spec.render.fovDeg,
-            .distance = spec.render.distance,
-            .follow = spec.render.follow};
-  if (spec.render.target)
-    shot.target = Vec3((*spec.render.target)[0], (*spec.render.target)[1], (*spec.render.target)[2]);
+  Shot shot = sceneShot(spec, sceneAngles);
   auto freeCamera = [](const Shot &sh) { return !sh.follow && !(sh.target && sh.distance); };
   if (spec.segments.empty()) {
     if (freeCamera(shot)) {

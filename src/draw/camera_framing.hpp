@@ -181,6 +181,7 @@ class CameraFraming {
     bool ownStretch = false;
     double stretchStart = 0.0, stretchEnd = 0.0;
   };
+  [[nodiscard]] static Shot sceneShot(const scene::SceneSpec &spec, const OrbitAngles &angles);
   // A storyboard's ball takes at least this share of its view's height
   // (docs/rendering.md) unless its segment's own path spans more: the
   // camera of that segment comes closer, towards the fit of its own stretch.

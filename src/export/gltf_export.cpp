@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -256,26 +257,33 @@ std::vector<double> surfaceTolerances(const render::MeshData& mesh, const model:
   }
   const double coarse = std::max(fine, kSurfaceToleranceOfDiagonal * double(glm::length(hi - lo)));
   const geometry::ContactPath& path = *model.path;
-  const auto cellOf = [&](const Vec3& p) {
-    return std::array<long long, 3>{std::llround(std::floor(p.x() / near)), std::llround(std::floor(p.y() / near)),
-                                    std::llround(std::floor(p.z() / near))};
+  // A point's cell, or none where it is not finite (a chart the path
+  // leaves: the mesh is refused after this) or beyond any cell index.
+  const auto cellOf = [&](const Vec3& p) -> std::optional<std::array<long long, 3>> {
+    std::array<long long, 3> cell{};
+    for (int k = 0; k < 3; ++k) {
+      const double at = std::floor(p[k] / near);
+      if (!std::isfinite(at) || std::abs(at) > 1e15) return std::nullopt;
+      cell[std::size_t(k)] = std::llround(at);
+    }
+    return cell;
   };
   std::map<std::array<long long, 3>, std::vector<Vec3>> cells;
   const int samples = int(std::clamp(std::ceil(path.length() / (0.25 * R)), 2.0, 200000.0));
   for (int k = 0; k <= samples; ++k) {
     const Vec3 p = path.point(path.length() * double(k) / double(samples));
-    cells[cellOf(p)].push_back(p);
+    if (const auto cell = cellOf(p)) cells[*cell].push_back(p);
   }
   std::vector<double> tolerances;
   tolerances.reserve(mesh.vertices.size());
   for (const render::Vertex& v : mesh.vertices) {
     const Vec3 p(v.position.x, v.position.y, v.position.z);
     const auto c = cellOf(p);
-    bool isNear = false;
+    bool isNear = !c;  // (fine where unknown)
     for (long long dx = -1; dx <= 1 && !isNear; ++dx)
       for (long long dy = -1; dy <= 1 && !isNear; ++dy)
         for (long long dz = -1; dz <= 1 && !isNear; ++dz) {
-          const auto found = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          const auto found = cells.find({(*c)[0] + dx, (*c)[1] + dy, (*c)[2] + dz});
           if (found == cells.end()) continue;
           for (const Vec3& q : found->second)
             if ((q - p).norm() <= near) {

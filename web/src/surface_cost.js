@@ -122,6 +122,10 @@ class ShadowPatch {
   // half-width `reach` about `centre` along `direction` (world), with a
   // margin for the square's corners (√2).
   update(centre, direction, reach) {
+    // (A frame that only turns the camera keeps the split it has.)
+    const key = `${centre.x},${centre.y},${centre.z},${direction.x},${direction.y},${direction.z},${reach}`;
+    if (key === this.lastKey) return;
+    this.lastKey = key;
     const toLocal = this.source.matrixWorld.clone().invert();
     const c = centre.clone().applyMatrix4(toLocal);
     const d = direction.clone().transformDirection(toLocal);

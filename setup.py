@@ -13,8 +13,8 @@ from setuptools.command.build_ext import build_ext
 from setuptools.command.build_py import build_py
 
 ROOT = os.path.dirname(os.path.abspath(__file__))
-# CMake's tree for this Python version, beside build/: at build/'s depth,
-# ccache hits the objects build/ compiled (scripts/build_python_module.sh).
+# CMake's tree for this Python version, beside build/, kept between installs
+# (scripts/build_python_module.sh).
 BUILD_DIR = os.path.join(ROOT, "build-python-" + sys.implementation.cache_tag)
 
 

@@ -22,7 +22,7 @@ std::vector<std::string> entries(const fs::path& dir) {
   return names;
 }
 
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using rollspin::test::has;
 
 TEST(ExportCli, WritesTheDefaultGlbAndAGltfWithItsBin) {
   const fs::path dir = test::freshTempDir("export_cli_default");

@@ -35,7 +35,7 @@ test::CliResult renderSmall(const fs::path& out, std::vector<std::string> env, s
   return test::runRollspin(args, {}, 0, env);
 }
 
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using rollspin::test::has;
 
 TEST(GlBackend, AutoRendersThroughEglWhenOsMesaIsMissing) {
   const fs::path dir = test::freshTempDir("gl_no_osmesa");

@@ -19,7 +19,7 @@ using rollspin::test::freshTempDir;
 using rollspin::test::runRollspin;
 using rollspin::test::sourceDir;
 
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using rollspin::test::has;
 
 TEST(KeysCommand, ListsAKeyWithItsDefaultAndMeaning) {
   const auto r = runRollspin({"keys", "ball"});
@@ -178,8 +178,9 @@ TEST(Help, ManPageAndCompletionsCoverEveryCommand) {
   std::ofstream(dir / "rollspin.bash") << bash.out;
   EXPECT_EQ(std::system(("bash -n " + (dir / "rollspin.bash").string()).c_str()), 0);
   std::ofstream(dir / "_rollspin") << zsh.out;
-  if (std::system("command -v zsh > /dev/null") == 0)
+  if (std::system("command -v zsh > /dev/null") == 0) {
     EXPECT_EQ(std::system(("zsh -n " + (dir / "_rollspin").string()).c_str()), 0);
+  }
 }
 
 }  // namespace

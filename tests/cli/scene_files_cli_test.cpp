@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 using rollspin::test::runRollspin;
 using rollspin::test::sourceDir;
 
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using rollspin::test::has;
 
 // A fresh folder outside the clone (the system's temporary folder), removed afterwards.
 class OutsideTheClone : public ::testing::Test {

@@ -18,7 +18,7 @@ using rollspin::test::sourceDir;
 
 namespace {
 
-const rollspin::test::BadScene kCases[] = {
+const rollspin::test::BadScene kSurfaceCases[] = {
     {"height expression does not parse", "[surface]\nkind = \"height\"\nz = \"0.3*sin(x)**cos(y)\"\n", "surface.z",
      ":3:17:", "at character 12"},
     {"unknown variable in a height", "[surface]\nkind = \"height\"\nz = \"x + w\"\n", "surface.z",
@@ -66,7 +66,7 @@ const rollspin::test::BadScene kCases[] = {
 };
 
 TEST(SurfaceCli, BadCurvedScenesExitTwoAndWriteNothing) {
-  for (const auto& c : kCases) rollspin::test::expectBadScene(c);
+  for (const auto& c : kSurfaceCases) rollspin::test::expectBadScene(c);
 }
 
 TEST(SurfaceCli, CurvedScenesSolve) {

@@ -6,11 +6,15 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "support/test_files.hpp"
 
 namespace rollspin::test {
+
+// Whether the CLI's output (or a file it wrote) holds `part`.
+inline bool has(std::string_view text, std::string_view part) { return text.find(part) != std::string_view::npos; }
 
 struct CliResult {
   int exitCode = -1;

@@ -27,7 +27,7 @@ done
 # fonts, gnuplot (`rollspin report errors` draws its plot with it), the man
 # page; the Python package (pybind11, numpy; `pip install .` in a venv).
 packages=(
-  build-essential cmake pkg-config git ccache
+  build-essential cmake ninja-build pkg-config git ccache
   libeigen3-dev libglm-dev
   libtomlplusplus-dev libcli11-dev libfmt-dev
   libosmesa6-dev libstb-dev fonts-dejavu-core

@@ -23,7 +23,7 @@ done
 # What the build and the program need at run time. gnuplot: `report errors`
 # runs it for its plot (src/report), so it is not a test-only package.
 grep -rq '"gnuplot ' "$src/src/report" || fail "report runs gnuplot" "src/report no longer runs gnuplot: move gnuplot-nox to the tests' list"
-for p in cmake build-essential libosmesa6-dev libavcodec-dev libcairo2-dev gnuplot-nox pybind11-dev python3-dev \
+for p in cmake ninja-build build-essential libosmesa6-dev libavcodec-dev libcairo2-dev gnuplot-nox pybind11-dev python3-dev \
          python3-numpy python3-venv; do
   if has "$core" "$p"; then pass "quick start has $p"; else fail "quick start has $p" "missing"; fi
 done

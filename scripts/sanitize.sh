@@ -71,8 +71,9 @@ fi
 # (rendering sweeps: every scene, size and backend; 4-6x slower under ASan
 # for the same code paths the fault tests render through), python (not
 # built here: an instrumented module cannot load into an uninstrumented
-# interpreter), and the tool-checked ones (cluster, recipes,
+# interpreter), the tool-checked ones (cluster, recipes,
 # docs, browser, Blender, glTF validator, pip install), which test scripts
-# and readers, not our memory. Together the passes took 42 min in CI; the
+# and readers, not our memory, and the checks of the source tree (label
+# source: format, file and function lengths, test layout, key spellings). Together the passes took 42 min in CI; the
 # whole suite under ASan was over half of it (docs/speed-history.md, CI).
 ctest --output-on-failure -j"$jobs" -L 'unit|faults'

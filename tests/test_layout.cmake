@@ -140,5 +140,5 @@ function(rollspin_check_test_layout)
   add_test(NAME TestLayout.EachTestLinksOnlyItsModule
            COMMAND ${CMAKE_COMMAND} -DREPORT=${CMAKE_CURRENT_BINARY_DIR}/test_layout.txt
                    -P ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/test_layout_report.cmake)
-  set_tests_properties(TestLayout.EachTestLinksOnlyItsModule PROPERTIES LABELS unit)
+  set_tests_properties(TestLayout.EachTestLinksOnlyItsModule PROPERTIES LABELS source)
 endfunction()

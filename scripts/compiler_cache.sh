@@ -8,5 +8,9 @@ if command -v ccache >/dev/null; then
   export CCACHE_BASEDIR="$PWD"
   # Release, ASan and fuzz builds share one cache; 5 GiB keeps all three.
   export CCACHE_MAXSIZE="${CCACHE_MAXSIZE:-5G}"
+  # The test programs share a precompiled header (tests/CMakeLists.txt):
+  # ccache caches a file compiled with one only when told that the header's
+  # macros and __DATE__/__TIME__ (which rollspin never uses) may be ignored.
+  export CCACHE_SLOPPINESS="${CCACHE_SLOPPINESS:-pch_defines,time_macros}"
   cache_flags=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi

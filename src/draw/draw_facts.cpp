@@ -52,7 +52,8 @@ void marksLines(const SceneFacts& facts, const FrameOrientations& frame, bool st
   out.push_back(fmt::format("a mark every β = π/√(1 + (r/R)²) = {:.2f}°", m.beta / kDeg));
   const int passed = strobe ? int(m.s.size()) : facts.marksPassed(frame.current.s);
   out.push_back(fmt::format("of path angle; marks passed: {} of {}", passed, m.s.size()));
-  // The latest completed interval, else the turn since mark 0 so far.
+  // The latest completed interval, else the turn since mark 0 so far: two
+  // lines either way, so that no line jumps when the second mark passes.
   if (passed >= 2) {
     const std::size_t k = std::size_t(passed) - 2;
     out.push_back(fmt::format("turn from mark {} to {}: {:.6f}°", k, k + 1, m.turn[k] / kDeg));
@@ -61,6 +62,7 @@ void marksLines(const SceneFacts& facts, const FrameOrientations& frame, bool st
     const spin::Su2 v = facts.rollingFrame(frame.current.s, frame.current.q);
     const double since = spin::rotationAngleAxis(v * m.rolling.front().conjugate()).angle;
     out.push_back({fmt::format("turn since mark 0: {:.2f}°", since / kDeg), true});
+    out.push_back({fmt::format("  = {:.2f}π", since / kPi), true});
   }
   out.push_back("(in the frame turning with the path)");
 }

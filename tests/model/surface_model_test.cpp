@@ -5,16 +5,22 @@
 // where the ball is: a board's `up` is the normal the ball stands on, a
 // sphere mesh passes through the path and is cut away exactly when the ball
 // rolls inside it, and a chart mesh's parameters reach every contact point.
+// surface_model itself: which scenes are the foundation's closed forms
+// (isAnalyticScene), points in space mapped to a chart, and the BadInput of
+// buildSurfaceModel at the key responsible (a point with no parameters, a
+// geodesic along the normal, a ball that stops touching at one point).
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/param_table.hpp"
 #include "geometry/surface_kinds.hpp"
 #include "geometry/surface_paths.hpp"
 #include "model/rolling_model.hpp"
 #include "model/surface_builder.hpp"
+#include "model/surface_model.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace rollspin::model {
@@ -117,6 +123,107 @@ TEST(SurfaceModel, TheTwoSidesOfAKindAreOpposite) {
       ++pairs;
     }
   EXPECT_GE(pairs, 3);
+}
+
+// The foundation's closed-form paths are exactly a plane's line, circle and
+// clothoid and a sphere's parallel; every other scene is a curve laid on a
+// chart by buildSurfaceModel.
+TEST(SurfaceModel, OnlyThePlanesLinesCirclesAndClothoidsAndTheSpheresParallelsAreAnalytic) {
+  struct Case {
+    const char* surface;
+    const char* path;
+    bool analytic;
+  };
+  const Case cases[] = {
+      {"plane", "line", true},       {"plane", "circle", true},         {"plane", "clothoid", true},
+      {"sphere", "parallel", true},  {"plane", "points", false},        {"plane", "uv", false},
+      {"plane", "geodesic", false},  {"sphere", "meridian", false},     {"sphere", "loxodrome", false},
+      {"sphere", "geodesic", false}, {"torus", "parallel", false},      {"cylinder", "parallel", false},
+      {"cylinder", "helix", false},  {"paraboloid", "parallel", false},
+  };
+  for (const Case& c : cases) {
+    const std::string label = std::string(c.surface) + " " + c.path;
+    const std::string points = std::string(c.path) == "points" ? "points = [[0, 0], [1, 1], [2, 0]]\n" : "";
+    const scene::SceneSpec spec = scene::loadSceneText(
+        std::string("[surface]\nkind = \"") + c.surface + "\"\n[path]\nkind = \"" + c.path + "\"\n" + points,
+        "<" + label + ">");
+    EXPECT_EQ(isAnalyticScene(spec), c.analytic) << label;
+    if (!c.analytic) {
+      const RollingModel m = buildSurfaceModel(spec);
+      EXPECT_NE(dynamic_cast<const geometry::SurfaceCurvePath*>(m.path.get()), nullptr) << label;
+      EXPECT_EQ(m.ballRadius, spec.ball.radius) << label;
+    }
+  }
+}
+
+// Points may be given in the surface's parameters (two numbers) or in space
+// (three, mapped to the parameters of that point): on a sphere of radius 2
+// the path then starts on the sphere in the direction of the first point.
+TEST(SurfaceModel, PointsInSpaceAreMappedToTheSurfacesParameters) {
+  const scene::SceneSpec spec = scene::loadSceneText(
+      "[surface]\nkind = \"sphere\"\nradius = 2\n[path]\nkind = \"points\"\nclosed = true\n"
+      "points = [[2, 0, 0.5], [0, 2, 0.5], [-2, 0, 0.5], [0, -2, 1]]\n",
+      "<points in space>");
+  const RollingModel m = buildSurfaceModel(spec);
+  EXPECT_NEAR((m.path->point(0.0) - 2.0 * Vec3(2, 0, 0.5).normalized()).norm(), 0.0, 1e-12);
+  const scene::SceneSpec flat = scene::loadSceneText(
+      "[path]\nkind = \"points\"\npoints = [[0.5, -1], [2, 0], [3, 2]]\n", "<points in parameters>");
+  EXPECT_NEAR((buildSurfaceModel(flat).path->point(0.0) - Vec3(0.5, -1, 0)).norm(), 0.0, 1e-12);
+}
+
+// A scene's BadInput from buildSurfaceModel, with the key's line in the scene text.
+Error surfaceModelError(const std::string& toml) {
+  try {
+    (void)buildSurfaceModel(scene::loadSceneText(toml, "scene.toml"));
+  } catch (const Error& e) {
+    return e;
+  }
+  ADD_FAILURE() << "expected BadInput from:\n" << toml;
+  return Error(ErrorKind::Runtime, {}, "");
+}
+
+// A point on a torus's axis (or a cylinder's) has no (φ, ψ): refused at the
+// key that gave it, with the point and what the parameters are.
+TEST(SurfaceModel, APointWithNoSurfaceParametersIsBadInputAtTheKeyThatGaveIt) {
+  const Error start =
+      surfaceModelError("[surface]\nkind = \"torus\"\n[path]\nkind = \"geodesic\"\nstart_point = [0, 0, 1]\n");
+  EXPECT_EQ(start.kind(), ErrorKind::BadInput);
+  EXPECT_EQ(start.where().file, "scene.toml");
+  EXPECT_EQ(start.where().line, 5);
+  EXPECT_EQ(start.message().rfind("path.start_point: the point (0, 0, 1) has no surface parameters here (", 0), 0u)
+      << start.what();
+  const Error points = surfaceModelError(
+      "[surface]\nkind = \"cylinder\"\n[path]\nkind = \"points\"\npoints = [[1, 0, 0], [0, 0, 2], [0, 1, 3]]\n");
+  EXPECT_EQ(points.kind(), ErrorKind::BadInput);
+  EXPECT_EQ(points.where().line, 5);
+  EXPECT_EQ(points.message().rfind("path.points: the point (0, 0, 2) has no surface parameters here", 0), 0u)
+      << points.what();
+}
+
+// A geodesic needs a direction along the surface: one along the normal at
+// the start point is refused at path.direction_vector.
+TEST(SurfaceModel, AGeodesicDirectionAlongTheNormalIsBadInputAtTheDirection) {
+  const Error e = surfaceModelError(
+      "[surface]\nkind = \"sphere\"\nradius = 2\n[path]\nkind = \"geodesic\"\nstart_point = [0, 2, 0]\n"
+      "direction_vector = [0, -3, 0]\n");
+  EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+  EXPECT_EQ(e.where().line, 7);
+  EXPECT_EQ(e.message().rfind("path.direction_vector: perpendicular to the surface at the start point", 0), 0u)
+      << e.what();
+}
+
+// A ball that the scene loader lets through but that stops touching at one
+// point somewhere along the curve (on a saddle's meridian, where the
+// surface curves towards it more tightly than 1/R) is blamed on
+// ball.radius, with the first arc length where the check fails.
+TEST(SurfaceModel, ABallThatDoesNotTouchAtOnePointIsBadInputAtTheBallRadius) {
+  const Error e = surfaceModelError(
+      "[ball]\nradius = 1.5\n[surface]\nkind = \"saddle\"\na = 1\nb = 2\n[path]\nkind = \"meridian\"\n"
+      "azimuth_deg = 90\nlength = 6\n");
+  EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+  EXPECT_EQ(e.where().line, 2);
+  EXPECT_EQ(e.message().rfind("ball.radius: ", 0), 0u) << e.what();
+  EXPECT_NE(e.message().find("arc length s = "), std::string::npos) << e.what();
 }
 
 }  // namespace

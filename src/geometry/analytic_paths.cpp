@@ -71,7 +71,7 @@ DarbouxSample PlaneCirclePath::at(double s) const {
 }
 
 std::string PlaneCirclePath::describe() const {
-  return "circle of radius " + describeNumber(radius_) + " (" + describeNumber(turns_) + " turns, " +
+  return "circle of radius " + describeNumber(radius_) + " (" + describeTurns(turns_) + ", " +
          (sense_ > 0 ? "ccw" : "cw") + ") on a " + plane_->describe();
 }
 
@@ -126,7 +126,7 @@ std::string SphereParallelPath::describe() const {
   const std::string from =
       startAzimuth_ == 0.0 ? "" : " from azimuth " + describeNumber(startAzimuth_ * 180.0 / std::numbers::pi) + " deg";
   return "parallel at colatitude " + describeNumber(colatitude_ * 180.0 / std::numbers::pi) + " deg" + from + " (" +
-         describeNumber(turns_) + " turns, " + (sense_ > 0 ? "ccw" : "cw") + ") on a " + sphere_->describe();
+         describeTurns(turns_) + ", " + (sense_ > 0 ? "ccw" : "cw") + ") on a " + sphere_->describe();
 }
 
 }  // namespace rollspin::geometry

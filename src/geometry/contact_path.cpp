@@ -14,6 +14,8 @@ std::string describeNumber(double v) {
   return buf;
 }
 
+std::string describeTurns(double turns) { return describeNumber(turns) + (turns == 1.0 ? " turn" : " turns"); }
+
 Vec3 defaultTangentFor(const Vec3& n) {
   const Vec3 unitN = n.normalized();
   const Vec3 horizontal = Vec3::UnitZ().cross(unitN);

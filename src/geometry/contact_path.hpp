@@ -78,6 +78,9 @@ class ContactPath {
 // A number as describe() strings show it ("%g").
 [[nodiscard]] std::string describeNumber(double v);
 
+// A count of turns as describe() strings show it: "1 turn", "2.5 turns".
+[[nodiscard]] std::string describeTurns(double turns);
+
 // A unit vector perpendicular to n, chosen deterministically: horizontal
 // (ẑ × n) when n is not vertical, else x̂. The default in-plane direction.
 [[nodiscard]] Vec3 defaultTangentFor(const Vec3& n);

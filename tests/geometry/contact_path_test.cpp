@@ -1,4 +1,5 @@
-// geometry/contact_path: the Darboux vector, describeNumber's "%g", the default tangent and a path's defaults.
+// geometry/contact_path: the Darboux vector, describeNumber's "%g" and describeTurns' plural, the default tangent and a
+// path's defaults.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -9,6 +10,7 @@
 #include "geometry/contact_path.hpp"
 #include "geometry/surface_paths.hpp"
 #include "support/numbers.hpp"
+#include "support/test_paths.hpp"
 
 namespace rollspin::geometry {
 namespace {
@@ -93,6 +95,19 @@ TEST(DescribeNumber, PrintsANumberAsPercentGDoes) {
   EXPECT_EQ(describeNumber(1234567.0), "1.23457e+06");
   EXPECT_EQ(describeNumber(1e-7), "1e-07");
   EXPECT_EQ(describeNumber(-1.5e300), "-1.5e+300");
+}
+
+// One turn is singular, every other count plural ("0.5 turns" as English
+// writes it), and a path's description uses the same words.
+TEST(DescribeTurns, OneTurnIsSingularAndEveryOtherCountPlural) {
+  EXPECT_EQ(describeTurns(1.0), "1 turn");
+  EXPECT_EQ(describeTurns(2.0), "2 turns");
+  EXPECT_EQ(describeTurns(0.5), "0.5 turns");
+  EXPECT_EQ(describeTurns(1.25), "1.25 turns");
+  const std::string one = test::lollipopPath(3.0, 1.0, true)->describe();
+  EXPECT_NE(one.find("(1 turn, ccw)"), std::string::npos) << one;
+  const std::string two = test::lollipopPath(3.0, 2.0, false)->describe();
+  EXPECT_NE(two.find("(2 turns, cw)"), std::string::npos) << two;
 }
 
 // ẑ × n, normalised, for any length of n: horizontal and perpendicular to n.

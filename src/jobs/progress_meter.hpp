@@ -29,6 +29,7 @@ class ProgressMeter {
   std::atomic<long long> done_{0};
   Clock::time_point start_ = Clock::now();
   Clock::time_point lastDraw_{};
+  long long shownDone_ = 0;  // the count the bar on screen shows
   std::mutex drawMutex_;
   bool drawn_ = false;
 };

@@ -157,6 +157,23 @@ TEST(ProgressMeter, ClearErasesTheBarOnceAndOnlyIfOneIsDrawn) {
   EXPECT_EQ(err.written(), "") << "already erased";
 }
 
+// A caller that counts one frame too many (a retried frame, say) still sees a full bar, not an exception from a
+// negative remainder of the 30 places.
+TEST(ProgressMeter, AFramePastTheTotalDrawsAFullBar) {
+  MeterStderr err(true);
+  if (!err.ok()) GTEST_SKIP() << "no pseudo-terminal to draw on (/dev/ptmx)";
+  ProgressMeter meter(2, false);
+  meter.frameDone();
+  meter.frameDone();
+  (void)err.written();
+  std::this_thread::sleep_for(std::chrono::milliseconds(220));  // past the throttle: this frame is drawn
+  EXPECT_NO_THROW(meter.frameDone());
+  const std::string drawn = err.written();
+  EXPECT_EQ(drawn.substr(0, 33), meterBarDrawn(30)) << drawn;
+  EXPECT_NE(drawn.find("3/2 frames"), std::string::npos) << drawn;
+  EXPECT_NE(drawn.find("ETA 0:00"), std::string::npos) << drawn;
+}
+
 // A bar redrawn for every frame would slow the render it shows: at most one redraw per 200 ms, so no more
 // redraws than the time taken allows, however slow the machine (the last frame, always drawn, is not reached).
 TEST(ProgressMeter, RedrawsAtMostFiveTimesASecond) {

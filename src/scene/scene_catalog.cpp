@@ -102,8 +102,15 @@ std::optional<fs::path> findBundledScene(const std::string& name) {
 }
 
 std::string sceneSearchText() {
+  // A folder both in $ROLLSPIN_SCENE_PATH and among the program's is
+  // searched once, and said once.
+  std::vector<fs::path> said;
   std::string out;
-  for (const fs::path& folder : candidateFolders()) out += (out.empty() ? "" : ", ") + folder.string();
+  for (const fs::path& folder : candidateFolders()) {
+    if (std::find(said.begin(), said.end(), folder) != said.end()) continue;
+    said.push_back(folder);
+    out += (out.empty() ? "" : ", ") + folder.string();
+  }
   return out;
 }
 
@@ -164,13 +171,14 @@ std::string sceneDescription(const std::string& text) {
     joined += (joined.empty() ? "" : " ") + body;
   }
   // Its first sentence: a '.' before a space or the end, unless it closes an
-  // abbreviation ("sec. IV", "e.g. a").
-  static const std::vector<std::string> abbreviations{"sec", "e.g", "i.e", "cf", "eq", "fig", "vs", "etc", "Eq", "Fig"};
+  // abbreviation ("sec. IV", "e.g. a"), in any case ("Cf. Berry").
+  static const std::vector<std::string> abbreviations{"sec", "e.g", "i.e", "cf", "eq", "fig", "vs", "etc"};
   for (std::size_t i = joined.find('.'); i != std::string::npos; i = joined.find('.', i + 1)) {
     if (i + 1 < joined.size() && joined[i + 1] != ' ') continue;
     const std::size_t wordStart = joined.find_last_of(" (", i);
-    const std::string word = joined.substr(wordStart == std::string::npos ? 0 : wordStart + 1,
-                                           i - (wordStart == std::string::npos ? 0 : wordStart + 1));
+    std::string word = joined.substr(wordStart == std::string::npos ? 0 : wordStart + 1,
+                                     i - (wordStart == std::string::npos ? 0 : wordStart + 1));
+    for (char& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (std::find(abbreviations.begin(), abbreviations.end(), word) != abbreviations.end()) continue;
     return joined.substr(0, i + 1);
   }

@@ -59,6 +59,8 @@ TEST(SceneDescription, AnAbbreviationOrADecimalPointEndsNoSentence) {
   EXPECT_EQ(sceneDescription("# As in sec. IV and Fig. 2 (cf. Berry), e.g. a radius of 1.5 turns. Not this.\n"),
             "As in sec. IV and Fig. 2 (cf. Berry), e.g. a radius of 1.5 turns.");
   EXPECT_EQ(sceneDescription("# Fig. 3 vs. Eq. 4 etc.\n"), "Fig. 3 vs. Eq. 4 etc.");
+  // At a sentence's start too, capitalised: "Cf." and "Sec." and "E.g.".
+  EXPECT_EQ(sceneDescription("# Cf. Berry and Sec. II, E.g. here. Not this.\n"), "Cf. Berry and Sec. II, E.g. here.");
   EXPECT_EQ(sceneDescription("# A word.like this one. Next.\n"), "A word.like this one.");
 }
 
@@ -79,6 +81,10 @@ TEST_F(SceneCatalogTest, FoldersAreTheEnvironmentsThenTheProgramsExistingOnesOnc
   ::setenv("ROLLSPIN_SCENE_PATH", (a.string() + ":" + missing.string()).c_str(), 1);
   setProgramSceneFolders({c});
   EXPECT_EQ(sceneSearchText(), a.string() + ", " + missing.string() + ", " + c.string());
+  // A folder named both ways is searched once, so said once.
+  ::setenv("ROLLSPIN_SCENE_PATH", (a.string() + ":" + c.string()).c_str(), 1);
+  setProgramSceneFolders({c, a});
+  EXPECT_EQ(sceneSearchText(), a.string() + ", " + c.string());
 }
 
 TEST_F(SceneCatalogTest, ABareNameIsTheFirstFoldersFileWithOrWithoutToml) {

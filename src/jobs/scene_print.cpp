@@ -29,12 +29,15 @@ std::string resolvedSceneText(const std::string& sourceName, const scene::SceneS
     const FrameClock clock(model.segments, spec);
     const std::vector<double> seconds = FrameClock::segmentSeconds(model.segments, spec);
     const double fps = spec.animation.fps.value();
+    long long segmentFrames = 0;
     for (std::size_t k = 0; k < spec.segments.size(); ++k) {
       const SegmentSpan& span = model.segments[k];
       // Beside the segment's own duration/speed key (or in place of it, as a
       // comment): how long this segment really lasts, so that no duration
       // printed in a storyboard reads as the clip's.
       const scene::SegmentSpec& segment = spec.segments[k];
+      const long long frames = std::llround((segment.path ? seconds[k] : segment.hold) * fps);
+      segmentFrames += frames;
       if (segment.path) {
         const std::string range = fmt::format("s {:.6g} to {:.6g}", span.start, span.end);
         const bool own = segment.duration || segment.speed;
@@ -44,21 +47,25 @@ std::string resolvedSceneText(const std::string& sourceName, const scene::SceneS
                               range);
       }
       notes[scene::SceneSpec::segmentKey(k)] =
-          spec.segments[k].path
-              ? fmt::format("segment {}: s {:.6g} to {:.6g} (length {:.6g}) in {:.6g} s, {} frames", k + 1, span.start,
-                            span.end, span.end - span.start, seconds[k], std::llround(seconds[k] * fps))
-              : fmt::format("segment {}: rests at s = {:.6g} for {:.6g} s, {} frames", k + 1, span.start,
-                            spec.segments[k].hold, std::llround(spec.segments[k].hold * fps));
+          spec.segments[k].path ? fmt::format("segment {}: s {:.6g} to {:.6g} (length {:.6g}) in {:.6g} s, {} frames",
+                                              k + 1, span.start, span.end, span.end - span.start, seconds[k], frames)
+                                : fmt::format("segment {}: rests at s = {:.6g} for {:.6g} s, {} frames", k + 1,
+                                              span.start, spec.segments[k].hold, frames);
       if (model.surfaces.size() > 1)
         notes[scene::SceneSpec::segmentKey(k)] +=
             fmt::format(", on surface {} (a {})", span.surface, scene::toString(spec.surfaceOf(k).kind));
     }
+    // The clip's frames are the segments' and the holds at its ends (the
+    // opening one at least one frame: the start), said so that the sum of
+    // the segments' counts above never reads as a miscount.
     const double clipSeconds = static_cast<double>(clock.frameCount()) / fps;
-    notes[spec.animation.speed ? "animation.speed" : "animation.duration"] =
-        fmt::format("{}segments without their own timing move at {:.6g} per second; the clip lasts {:.6g} s, {} frames",
-                    spec.animation.speed ? "" : "the whole path's time at one speed, not the clip's: ",
-                    spec.animation.speed ? *spec.animation.speed : model.path->length() / spec.animation.duration,
-                    clipSeconds, clock.frameCount());
+    const long long closing = clock.holdFrames(), opening = clock.frameCount() - segmentFrames - closing;
+    notes[spec.animation.speed ? "animation.speed" : "animation.duration"] = fmt::format(
+        "{}segments without their own timing move at {:.6g} per second; the clip lasts {:.6g} s, {} frames ({} "
+        "opening, {} in the segments, {} closing)",
+        spec.animation.speed ? "" : "the whole path's time at one speed, not the clip's: ",
+        spec.animation.speed ? *spec.animation.speed : model.path->length() / spec.animation.duration, clipSeconds,
+        clock.frameCount(), opening, segmentFrames, closing);
   }
   if (model.plate)
     notes["plate.radius"] =

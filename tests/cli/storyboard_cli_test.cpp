@@ -133,11 +133,13 @@ TEST(StoryboardCli, PrintSaysHowLongEachSegmentReallyLasts) {
   const auto first = runRollspin({"scene", (dir / "story.toml").string(), "--print"});
   ASSERT_EQ(first.exitCode, 0) << first.err;
   // Segment 2 moves at 8 / 4 = 2 per second: 6 long, 3 s. The clip: 10 + 3 s
-  // and animation.hold (0.5 s) at each end, 14 s.
-  for (const char* text : {"duration = 10  # this segment lasts 10 s (s 0 to 2), not the clip",
-                           "# duration = 3 s: this segment (s 2 to 8) at the storyboard's speed",
-                           "duration = 4  # the whole path's time at one speed, not the clip's: segments without "
-                           "their own timing move at 2 per second; the clip lasts 14 s, 420 frames"})
+  // and animation.hold (0.5 s) at each end, 14 s: 15 + 300 + 90 + 15 frames at 30 fps.
+  for (const char* text :
+       {"duration = 10  # this segment lasts 10 s (s 0 to 2), not the clip",
+        "# duration = 3 s: this segment (s 2 to 8) at the storyboard's speed",
+        "duration = 4  # the whole path's time at one speed, not the clip's: segments without "
+        "their own timing move at 2 per second; the clip lasts 14 s, 420 frames (15 opening, 390 in the "
+        "segments, 15 closing)"})
     EXPECT_NE(first.out.find(text), std::string::npos) << text << "\n" << first.out;
   const auto printed = dir / "printed.toml";
   std::ofstream(printed) << first.out;

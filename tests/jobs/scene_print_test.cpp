@@ -105,10 +105,12 @@ TEST(ScenePrint, EachStoryboardSegmentSaysWhereAndForHowLong) {
                        "# duration = 6.11015 s: this segment (s 4 to 10.2832) at the storyboard's speed "
                        "(see [animation])\n"))
       << text;
+  // hold = 0: the clip opens on one frame of the start, then the segments' 20 + 10 + 61, and ends on their last.
   const motion::FrameClock clock(model::buildSceneModel(spec).segments, spec);
+  EXPECT_EQ(clock.frameCount(), 1 + 20 + 10 + 61);
   EXPECT_TRUE(printHas(text, fmt::format("\nduration = 10  # the whole path's time at one speed, not the clip's: "
                                          "segments without their own timing move at 1.02832 per second; the clip "
-                                         "lasts {:.6g} s, {} frames\n",
+                                         "lasts {:.6g} s, {} frames (1 opening, 91 in the segments, 0 closing)\n",
                                          double(clock.frameCount()) / 10.0, clock.frameCount())))
       << text;
 }
@@ -132,9 +134,12 @@ path = { kind = "circle", radius = 2, turns = 0.5 }
                        "speed = 4  # this segment lasts 1 s (s 0 to 4), not the clip\n"))
       << text;
   EXPECT_TRUE(printHas(text, "\n# segment 2: s 4 to 10.2832 (length 6.28319) in 3.14159 s, 31 frames\n")) << text;
+  // hold = 0: the clip opens on one frame of the start, then the segments' 10 + 31, and ends on their last.
   const motion::FrameClock clock(model::buildSceneModel(spec).segments, spec);
+  EXPECT_EQ(clock.frameCount(), 1 + 10 + 31);
   EXPECT_TRUE(printHas(text, fmt::format("\nspeed = 2  # segments without their own timing move at 2 per second; "
-                                         "the clip lasts {:.6g} s, {} frames\n",
+                                         "the clip lasts {:.6g} s, {} frames (1 opening, 41 in the segments, 0 "
+                                         "closing)\n",
                                          double(clock.frameCount()) / 10.0, clock.frameCount())))
       << text;
   EXPECT_FALSE(printHas(text, "not the clip's")) << text;

@@ -293,12 +293,13 @@ std::vector<glm::vec2> keepBlocksClear(const render::DrawList& list, int view, s
       const float gap = 0.25f * block.lines.front().sizePx, step = 0.5f * block.lines.front().sizePx;
       // Where the layout put it, else the nearest clear place on a grid
       // half an em fine.
+      const glm::vec2 wanted = origins[i];
       std::optional<glm::vec2> best;
       if (clear({origins[i], origins[i] + size}, gap)) best = origins[i];
       float bestDistance = std::numeric_limits<float>::max();
       for (float y = gap; !best && y + size.y + gap <= float(v.height); y += step)
         for (float x = gap; x + size.x + gap <= float(v.width); x += step) {
-          const float d = glm::length(glm::vec2(x, y) - origins[i]);
+          const float d = glm::length(glm::vec2(x, y) - wanted);
           if (d < bestDistance && clear({{x, y}, glm::vec2(x, y) + size}, gap)) {
             bestDistance = d;
             origins[i] = {x, y};

@@ -107,8 +107,9 @@ media::OutputMetadata fromJson(const std::string& bytes, const std::string& name
   // glTF (branch gltf): the node named "ball" carries extras.rollspin.scene.
   if (doc.contains("nodes") && doc["nodes"].is_array()) {
     for (const auto& node : doc["nodes"])
-      if (node.value("name", "") == "ball" && node.contains("extras") && node["extras"].contains("rollspin") &&
-          node["extras"]["rollspin"].contains("scene") && node["extras"]["rollspin"]["scene"].is_string())
+      if (node.is_object() && node.contains("name") && node["name"] == "ball" && node.contains("extras") &&
+          node["extras"].contains("rollspin") && node["extras"]["rollspin"].contains("scene") &&
+          node["extras"]["rollspin"]["scene"].is_string())
         return {"", node["extras"]["rollspin"]["scene"].get<std::string>(), "", "", ""};
     throw badInput(SourceLoc{name},
                    "'{}' carries no rollspin metadata: no node named 'ball' with "

@@ -13,7 +13,7 @@ source scripts/jobs.sh
 # them out (NDEBUG).
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2" \
   -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2" -DROLLSPIN_SANITIZE=ON -DROLLSPIN_BUILD_BENCHMARKS=OFF "${cache_flags[@]}" >/dev/null
-cmake --build build-asan -j"$jobs" --target rollspin_unit_tests
+cmake --build build-asan -j"$build_jobs" --target rollspin_unit_tests
 # Mesa's llvmpipe keeps some allocations for the life of the process (its
 # LLVM JIT and screen caches): suppress leaks from inside the GL stack only.
 export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0"

@@ -56,6 +56,9 @@ struct Part {
   AVRational timeBase{0, 1}, frameRate{0, 1};
   long long packets = 0;
   std::int64_t firstPts = 0;  // the smallest presentation timestamp
+  // The encoder's reorder (B-frame) delay: the first packet's presentation
+  // less its decoding time, in ticks (0 where the container keeps no DTS).
+  std::int64_t decodeDelay = 0;
   bool startsWithKeyframe = false;
 
   [[nodiscard]] SourceLoc loc() const { return SourceLoc{name}; }
@@ -143,7 +146,10 @@ Part inspectPart(const fs::path& path) {
       if (part.cues.back().cue.text.empty()) part.cues.pop_back();  // MP4's filler between captions
       continue;
     }
-    if (pts.empty()) part.startsWithKeyframe = (packet->flags & AV_PKT_FLAG_KEY) != 0;
+    if (pts.empty()) {
+      part.startsWithKeyframe = (packet->flags & AV_PKT_FLAG_KEY) != 0;
+      if (packet->pts != AV_NOPTS_VALUE && packet->dts != AV_NOPTS_VALUE) part.decodeDelay = packet->pts - packet->dts;
+    }
     const std::int64_t t = packet->pts;
     av_packet_unref(packet.get());
     if (t == AV_NOPTS_VALUE) throw badInput(part.loc(), "packet {} has no presentation timestamp", pts.size());
@@ -439,12 +445,16 @@ void writeJoinedHeader(Output& out, const ContainerTags& whole, const Part& ref,
 }
 
 // Pass 2: copy the packets, each moved to its frame's index in the clip.
-// Decoding timestamps move with their packet and keep the encoder's
-// reorder delay, so they run on across the joins too (checked). False when
-// stopped.
+// Decoding timestamps move with their packet, and a part encoded with less
+// reorder delay than the clip's (the largest of the parts': x264 gives a
+// short part none) moves them earlier by the difference: so they run on one
+// frame a packet across the joins, and none comes after its presentation
+// (checked: they must rise). False when stopped.
 bool copyPartPackets(const std::vector<const Part*>& sorted, const Part& ref, Output& out, const AVStream* stream,
                      CaptionCopier& captions, const SourceLoc& where, const std::function<bool()>& stop) {
   const AVRational frameDuration = av_inv_q(ref.frameRate);
+  std::int64_t clipDelay = 0;
+  for (const Part* part : sorted) clipDelay = std::max(clipDelay, part->decodeDelay);
   std::int64_t lastDts = std::numeric_limits<std::int64_t>::min();
   const Packet packet(av_packet_alloc());
   if (!packet) throw std::bad_alloc();
@@ -469,12 +479,11 @@ bool copyPartPackets(const std::vector<const Part*>& sorted, const Part& ref, Ou
       const std::int64_t shift = pts - packet->pts;
       packet->pts = pts;
       if (packet->dts != AV_NOPTS_VALUE) {
-        packet->dts += shift;
+        packet->dts += shift - (clipDelay - part->decodeDelay);
         if (packet->dts <= lastDts) {
           av_packet_unref(packet.get());
           throw badInput(part->loc(),
-                         "its decoding order runs back into the previous part's (a different B-frame "
-                         "delay): the parts were not encoded alike");
+                         "its decoding order runs back into the previous part's: the parts were not encoded alike");
         }
         lastDts = packet->dts;
       }

@@ -15,9 +15,11 @@
 // of one codec; each part's track holds its own frames' cues, so a cue that
 // a part boundary cut in two is joined again (same text, touching ends).
 // The timestamps are rewritten into one timeline (frame k at k·den/num s, as
-// a whole render), the joined clip is tagged as frames 0 … total − 1 (so it
-// can itself be joined, or checked, again), MP4/MOV get +faststart, and the
-// file is written under a temporary name and renamed when complete.
+// a whole render; decoding times one frame a packet across the joins, a part
+// with less B-frame delay than another's moved to the larger delay), the
+// joined clip is tagged as frames 0 … total − 1 (so it can itself be joined,
+// or checked, again), MP4/MOV get +faststart, and the file is written under a
+// temporary name and renamed when complete.
 // Anything that does not fit throws Error BadInput (exit 2); a failing write
 // throws Runtime (exit 1); neither leaves a file behind.
 #pragma once

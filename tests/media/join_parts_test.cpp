@@ -96,9 +96,6 @@ std::vector<std::string> joinDirEntries(const fs::path& dir) {
 
 TEST(JoinParts, PartsGivenInAnyOrderMakeOneClipOnOneTimeline) {
   const fs::path dir = test::freshTempDir("join_order");
-  // Three frames a part: x264 (preset medium) gives each the same B-frame
-  // delay. A 2-frame part gets none, and join then leaves a gap in the clip's
-  // decoding times (its stated rate drops): a known gap, not checked here.
   const long long total = 9;
   const fs::path a = writeJoinPart(dir / "a.mp4", {.first = 0, .last = 2, .clipFrames = total});
   const fs::path b = writeJoinPart(dir / "b.mp4", {.first = 3, .last = 5, .clipFrames = total});
@@ -139,6 +136,74 @@ TEST(JoinParts, PartsGivenInAnyOrderMakeOneClipOnOneTimeline) {
 
   const fs::path again = dir / "again.mp4";
   EXPECT_EQ(joinParts({out}, again).frames, total) << "the joined clip is itself a whole part";
+}
+
+// A joined clip must play, and be described by its container, as the whole
+// render would be: every frame at its time and in its place; decoding
+// timestamps that rise by one frame a packet (a constant-rate stream: each
+// sample lasts one frame, so a longer step is a gap that lowers the rate the
+// container states) and never come after the packet's presentation; and the
+// whole render's frame rate and duration.
+void expectPlaysAsTheWholeRender(const fs::path& clip, const test::VideoProbe& whole, long long total) {
+  SCOPED_TRACE(clip.filename().string());
+  std::set<long long> all;
+  for (long long k = 0; k < total; ++k) all.insert(k);
+  const test::VideoProbe probe = test::probeVideo(clip, all);
+  ASSERT_EQ(probe.ptsSeconds.size(), std::size_t(total));
+  ASSERT_EQ(probe.kept.size(), std::size_t(total));
+  for (std::size_t k = 0; k < probe.ptsSeconds.size(); ++k) {
+    EXPECT_NEAR(probe.ptsSeconds[k], double(k) / 10.0, 1e-6) << "frame " << k;
+    const auto want = joinColour(static_cast<long long>(k));
+    const std::uint8_t* got = probe.kept[k].pixel(kJoinSize / 2, kJoinSize / 2);
+    for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(int(got[ch]), int(want[ch]), 6) << "frame " << k << " channel " << ch;
+  }
+
+  // One frame (1/10 s) in the stream's ticks: MP4's time base holds it whole.
+  ASSERT_GT(probe.timeBaseNum, 0);
+  const long long frame = probe.timeBaseDen / (10LL * probe.timeBaseNum);
+  ASSERT_EQ(frame * 10 * probe.timeBaseNum, probe.timeBaseDen);
+  ASSERT_EQ(probe.packetDtsTicks.size(), std::size_t(total));
+  ASSERT_EQ(probe.packetPtsTicks.size(), std::size_t(total));
+  for (std::size_t k = 0; k < probe.packetDtsTicks.size(); ++k) {
+    EXPECT_LE(probe.packetDtsTicks[k], probe.packetPtsTicks[k]) << "packet " << k << " decoded after it is shown";
+    if (k > 0) {
+      EXPECT_EQ(probe.packetDtsTicks[k] - probe.packetDtsTicks[k - 1], frame)
+          << "packet " << k << ": decoding times " << probe.packetDtsTicks[k - 1] << " then "
+          << probe.packetDtsTicks[k];
+    }
+  }
+  EXPECT_EQ(probe.frameRateNum, 10 * probe.frameRateDen) << probe.frameRateNum << "/" << probe.frameRateDen;
+  EXPECT_EQ(probe.frameRateNum * whole.frameRateDen, whole.frameRateNum * probe.frameRateDen);
+  EXPECT_EQ(probe.durationTicks * whole.timeBaseDen * probe.timeBaseNum,
+            whole.durationTicks * probe.timeBaseDen * whole.timeBaseNum)
+      << "the whole render's duration";
+}
+
+// Joins `parts` (given last first), checks the clip against a whole render,
+// then joins the clip alone and checks that too.
+void expectJoinedTwiceAsTheWholeRender(const std::vector<JoinPart>& parts) {
+  const fs::path dir = test::freshTempDir("join_bframes");
+  SCOPED_TRACE(fmt::format("first part: frames {}-{}", parts.front().first, parts.front().last));
+  const test::VideoProbe whole =
+      test::probeVideo(writeJoinPart(dir / "whole.mp4", {.first = 0, .last = kJoinClipFrames - 1}));
+  std::vector<fs::path> paths;
+  for (const JoinPart& p : parts) paths.push_back(writeJoinPart(dir / fmt::format("p{}.mp4", p.first), p));
+  std::reverse(paths.begin(), paths.end());
+  const fs::path out = dir / "clip.mp4";
+  ASSERT_NO_THROW((void)joinParts(paths, out));
+  expectPlaysAsTheWholeRender(out, whole, kJoinClipFrames);
+
+  // "It can itself be joined, or checked, again" (join_parts.hpp).
+  const fs::path again = dir / "again.mp4";
+  ASSERT_NO_THROW((void)joinParts({out}, again));
+  expectPlaysAsTheWholeRender(again, whole, kJoinClipFrames);
+}
+
+TEST(JoinParts, PartsWithDifferentBFrameDelaysJoinIntoOneSteadyStream) {
+  // x264 (preset medium) gives a 2-frame part no B-frame delay and a 3-frame
+  // part some: the short part last, then first.
+  expectJoinedTwiceAsTheWholeRender({{.first = 0, .last = 2}, {.first = 3, .last = 5}, {.first = 6, .last = 7}});
+  expectJoinedTwiceAsTheWholeRender({{.first = 0, .last = 1}, {.first = 2, .last = 4}, {.first = 5, .last = 7}});
 }
 
 TEST(JoinParts, KeepsWhatThePartsRememberButNotAPartsFrameRange) {

@@ -71,6 +71,7 @@ VideoProbe probeVideo(const std::filesystem::path& file, const std::set<long lon
   probe.frameRateDen = stream->avg_frame_rate.den;
   probe.timeBaseNum = stream->time_base.num;
   probe.timeBaseDen = stream->time_base.den;
+  probe.durationTicks = stream->duration;
   probe.indexBeforeData = moovBeforeMdat(file);
 
   if (const AVDictionaryEntry* tag = av_dict_get(stream->metadata, "alpha_mode", nullptr, 0))
@@ -117,6 +118,8 @@ VideoProbe probeVideo(const std::filesystem::path& file, const std::set<long lon
   };
   while (av_read_frame(format, packet) >= 0) {
     if (packet->stream_index == index) {
+      probe.packetDtsTicks.push_back(packet->dts);
+      probe.packetPtsTicks.push_back(packet->pts);
       avcodec_send_packet(codec, packet);
       drain();
     }

@@ -33,6 +33,10 @@ struct VideoProbe {
   std::vector<long long> ptsTicks;         // the same in time-base units, exactly
   std::vector<media::Image> kept;          // the frames asked for, in index order
   bool indexBeforeData = false;            // 'moov' before 'mdat' (+faststart)
+  // The video stream's packets as the container stores them (decode order):
+  // their decoding and presentation timestamps, in time-base units.
+  std::vector<long long> packetDtsTicks, packetPtsTicks;
+  long long durationTicks = 0;  // the stream's duration as the container states it (time-base units)
 };
 
 // VP9 with an ALPHA_MODE tag is decoded with libvpx (FFmpeg's own VP9

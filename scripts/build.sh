@@ -11,7 +11,7 @@ source scripts/jobs.sh
 # shellcheck disable=SC2086
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${cache_flags[@]}" ${ROLLSPIN_CMAKE_FLAGS:-}
 if [ $# -gt 0 ]; then
-  cmake --build build -j"$build_jobs" --target "$@"
+  cmake --build build -j"$jobs" --target "$@"
 else
-  cmake --build build -j"$build_jobs"
+  cmake --build build -j"$jobs"
 fi

@@ -14,7 +14,7 @@ source scripts/compiler_cache.sh
 source scripts/jobs.sh
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DROLLSPIN_FUZZ=ON \
   -DROLLSPIN_BUILD_TESTS=OFF -DROLLSPIN_BUILD_BENCHMARKS=OFF "${cache_flags[@]}" >/dev/null
-cmake --build build-fuzz -j"$build_jobs" --target fuzz_scene fuzz_expression fuzz_image
+cmake --build build-fuzz -j"$jobs" --target fuzz_scene fuzz_expression fuzz_image
 mkdir -p build-fuzz/artifacts build-fuzz/corpus/scene build-fuzz/corpus/expression build-fuzz/corpus/image
 cp scenes/*.toml tests/fuzz/seeds/scene/* build-fuzz/corpus/scene/
 cp tests/fuzz/seeds/expression/* build-fuzz/corpus/expression/

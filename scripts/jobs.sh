@@ -3,20 +3,15 @@
 # and the build tool. One a core, but no more than one for every
 # 3 GiB of memory (a compile of the bigger sources under the sanitizers, or
 # an ASan test that renders, stays below that), and at least 2, the reference
-# machine's count (2 cores, 24 GiB: 2 jobs). A build runs one compile more
-# (`build_jobs`) where memory allows: a core waits now and then on a link, a
-# cache write or the build tool itself, and the extra compile fills it
-# (docs/speed-history.md, ci14). ROLLSPIN_JOBS overrides both.
-# Sets `jobs` and `build_jobs`.
+# machine's count (2 cores, 24 GiB: 2 jobs). ROLLSPIN_JOBS overrides it.
+# Sets `jobs`.
 if [ -n "${ROLLSPIN_JOBS:-}" ]; then
   jobs=$ROLLSPIN_JOBS
-  build_jobs=$ROLLSPIN_JOBS
 else
   cores=$(nproc 2>/dev/null || echo 2)
   memory_gib=$(awk '/^MemTotal:/ {print int($2 / 1048576)}' /proc/meminfo 2>/dev/null || echo 6)
   jobs=$((cores < memory_gib / 3 ? cores : memory_gib / 3))
   [ "$jobs" -ge 2 ] || jobs=2
-  build_jobs=$((jobs + 1 <= memory_gib / 3 ? jobs + 1 : jobs))
 fi
 # A new build tree uses Ninja where it is installed (install-deps.sh installs
 # it): it starts a target's compiles while the libraries it links are still

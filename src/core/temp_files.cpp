@@ -235,7 +235,7 @@ std::string signalName(int signal) {
 }
 
 void installCrashReport() {
-#if !defined(__SANITIZE_ADDRESS__)  // the sanitizers report crashes themselves, better
+#if !defined(ROLLSPIN_ADDRESS_SANITIZER)  // the sanitizers report crashes themselves, better
   std::array<void*, 1> warmUp{};
   (void)::backtrace(warmUp.data(), 1);  // loads libgcc_s now, not in the handler
   // Its own stack, so that a stack overflow can still be reported.

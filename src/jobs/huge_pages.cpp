@@ -36,7 +36,7 @@ HugePagesFacts readHugePagesFacts() {
   facts.ldPreload = environmentValue("LD_PRELOAD");
   std::ifstream mode("/sys/kernel/mm/transparent_hugepage/enabled");
   facts.transparentHugePages.assign(std::istreambuf_iterator<char>(mode), {});
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(ROLLSPIN_ADDRESS_SANITIZER)
   facts.sanitized = true;
 #endif
   return facts;

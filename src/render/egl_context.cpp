@@ -243,7 +243,7 @@ const EglDevice& requestedDevice(const DeviceChoice& choice, const EglDevices& d
 // into every process of the sanitizer pass did the same, at a tenth of a
 // second for each of its processes, GL or not: ffprobe, pdftotext too.)
 void keepDriversMappedForLeakCheck() {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(ROLLSPIN_ADDRESS_SANITIZER)
   dl_iterate_phdr(
       [](dl_phdr_info* info, std::size_t, void*) {
         const std::string_view name = info->dlpi_name != nullptr ? info->dlpi_name : "";

@@ -317,7 +317,7 @@ TEST(BadInputMatrix, EveryCaseFailsCleanly) {
 }
 
 TEST(BadInputMatrix, FrameBuffersLargerThanMemoryAreRefusedUpFront) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(ROLLSPIN_ADDRESS_SANITIZER)
   GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: RLIMIT_AS cannot be set";
 #else
   // 8192² with 4× MSAA needs ~3.1 GiB; allow the process 2 GiB of address space.

@@ -17,7 +17,7 @@ TEST(Messages, SizeFlagsAreNamedAsTyped) {
   EXPECT_EQ(odd.exitCode, 2);
   EXPECT_NE(odd.err.find("rollspin: error: --width 641: "), std::string::npos) << odd.err;
   EXPECT_EQ(odd.err.find("--set"), std::string::npos) << odd.err;
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(ROLLSPIN_ADDRESS_SANITIZER)
   return;  // AddressSanitizer reserves terabytes of address space: RLIMIT_AS cannot be set
 #endif
   // The frame-memory check, in a process limited to 1.5 GiB.

@@ -159,7 +159,7 @@ TEST(SecondSignal, EndsAVideoAtOnceWithoutATemporary) {
 class Crashed : public ::testing::TestWithParam<int> {};
 
 TEST_P(Crashed, SaysWhereRemovesTheTemporaryAndDiesOfTheSignal) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(ROLLSPIN_ADDRESS_SANITIZER)
   GTEST_SKIP() << "under the sanitizers their own crash report runs instead";
 #endif
   const int signal = GetParam();

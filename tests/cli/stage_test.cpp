@@ -93,7 +93,7 @@ TEST(Stages, VideoOpensTheEncoderOnce) {
 // (jobs/huge_pages.hpp); other commands do not, a user's own setting wins, and
 // the pixels do not depend on it.
 TEST(Stages, RenderRestartsOnceForHugePages) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(ROLLSPIN_ADDRESS_SANITIZER)
   GTEST_SKIP() << "AddressSanitizer's malloc is not glibc's: no restart";
 #endif
   if (rollspin::test::readFile("/sys/kernel/mm/transparent_hugepage/enabled").find("[madvise]") == std::string::npos)

@@ -21,7 +21,7 @@ TEST(MemoryBudget, ReadsTheMachinesMemoryAndWhatThisProcessHasMapped) {
 }
 
 TEST(MemoryBudget, AnAddressSpaceLimitCapsWhatIsAvailable) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(ROLLSPIN_ADDRESS_SANITIZER)
   GTEST_SKIP() << "AddressSanitizer reserves terabytes of shadow memory: a limit just above VmSize starves it";
 #endif
   const pid_t child = ::fork();

@@ -29,8 +29,9 @@ cmake --build build-asan -j"$jobs" --target rollspin_unit_tests
 # LLVM JIT and screen caches): suppress leaks from inside the GL stack only.
 export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0"
 # intercept_tls_get_addr=0: the sanitizer runtime's __tls_get_addr
-# interceptor (GCC's up to 13, and LLVM 14's, which GCC's copies) can mistake a dynamic TLS block (Mesa and LLVM, loaded with
-# dlopen, have them) for a pre-2.25 glibc header when it happens to start at
+# interceptor (GCC's up to 13, and LLVM 14's, which GCC's copies) can
+# mistake a dynamic TLS block (Mesa and LLVM, loaded with dlopen, have
+# them) for a pre-2.25 glibc header when it happens to start at
 # a certain page offset, and LeakSanitizer's tracer then segfaults at exit
 # ("Tracer caught signal 11", a rare flake seen once in CI on a GL test that
 # had passed). Leaks are still checked; dynamic TLS is just not scanned.

@@ -191,13 +191,15 @@ TEST(CliReference, ManPageHasEachVisibleCommandOnceWithItsUsageInOrder) {
 TEST(CliReference, ManPageEntriesOfACommandNameItsPositionalsAndOptions) {
   const ReferenceApp r;
   const std::vector<std::string> lines = linesOf(rollspin::cli::manPage(r.app, "1.2.3"));
-  const std::vector<std::string> render = blockAfter(lines, ".SS \"rollspin render SCENE [OPTIONS]\"", {".SS ", ".SH "});
+  const std::vector<std::string> render =
+      blockAfter(lines, ".SS \"rollspin render SCENE [OPTIONS]\"", {".SS ", ".SH "});
   ASSERT_FALSE(render.empty());
   EXPECT_EQ(render.front(), "Render the ball's still");
   const std::vector<std::string> t = tags(render);
   EXPECT_EQ(std::count(t.begin(), t.end(), ".I scene"), 1);
   // An option that takes a value says so; a flag does not.
-  EXPECT_EQ(std::count(t.begin(), t.end(), "\\fB\\-o, \\-\\-output \\fIVALUE\\fR\\fR"), 1) << ::testing::PrintToString(t);
+  EXPECT_EQ(std::count(t.begin(), t.end(), "\\fB\\-o, \\-\\-output \\fIVALUE\\fR\\fR"), 1)
+      << ::testing::PrintToString(t);
   EXPECT_EQ(std::count(t.begin(), t.end(), "\\fB\\-\\-still\\fR"), 1) << ::testing::PrintToString(t);
   EXPECT_EQ(tagsNaming(t, "--max-delta"), 0);  // report errors' option
   const std::vector<std::string> errors =

@@ -1,8 +1,9 @@
 // version_info in-process: `rollspin --version`'s line (the release from the
 // top-level project(), then git describe or "not built from a git clone") and
 // the GL backend line, which names why no context can be made instead of
-// throwing. version_info.cpp is compiled into this program with the build's
-// generated git_describe.hpp (tests/cli/CMakeLists.txt).
+// throwing. The build's `git describe` is read from its generated header as
+// a file (src/cli/git_describe.cmake writes it), not included: an include
+// would compile this program again at every commit.
 #include "cli/version_info.hpp"
 
 #include <gtest/gtest.h>
@@ -12,7 +13,6 @@
 #include <regex>
 #include <string>
 
-#include "git_describe.hpp"  // the build's `git describe` (src/cli/git_describe.cmake)
 #include "support/cli_runner.hpp"
 #include "support/test_files.hpp"
 
@@ -26,6 +26,15 @@ std::string declaredRelease() {
   std::smatch m;
   static const std::regex project(R"(project\(rollspin VERSION ([0-9]+\.[0-9]+\.[0-9]+))");
   return std::regex_search(lists, m, project) ? m[1].str() : "";
+}
+
+// The describe text of the build's generated header: #define ROLLSPIN_GIT_DESCRIBE "..." (empty outside a clone).
+std::optional<std::string> builtDescribe() {
+  const std::string header = rollspin::test::readFile(rollspin::test::buildDir() / "generated" / "git_describe.hpp");
+  std::smatch m;
+  static const std::regex define(R"re(#define ROLLSPIN_GIT_DESCRIBE "([^"]*)")re");
+  if (!std::regex_search(header, m, define)) return std::nullopt;
+  return m[1].str();
 }
 
 // Sets an environment variable for one scope and puts the old value back.
@@ -50,7 +59,9 @@ class ScopedVariable {
 TEST(VersionInfo, LineNamesTheReleaseThenGitDescribeOrItsAbsence) {
   const std::string release = declaredRelease();
   ASSERT_FALSE(release.empty()) << "no project(rollspin VERSION ...) in " << rollspin::test::sourceDir();
-  const std::string describe = ROLLSPIN_GIT_DESCRIBE;
+  const std::optional<std::string> built = builtDescribe();
+  ASSERT_TRUE(built) << "no ROLLSPIN_GIT_DESCRIBE in " << rollspin::test::buildDir() / "generated/git_describe.hpp";
+  const std::string describe = *built;
   const std::string expected = "rollspin " + release + " (" +
                                (describe.empty() ? std::string("not built from a git clone") : "git " + describe) + ")";
   EXPECT_EQ(rollspin::cli::versionLine(), expected);

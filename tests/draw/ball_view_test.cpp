@@ -17,6 +17,7 @@
 
 #include "draw/ball_view.hpp"
 #include "draw/draw_style.hpp"
+#include "loaded_scene.hpp"
 #include "model/rolling_model.hpp"
 #include "motion/frame_sampling.hpp"
 #include "render/mesh_builders.hpp"
@@ -29,16 +30,8 @@ using geometry::Vec3;
 using Complex = std::complex<double>;
 using Pauli = std::array<std::array<Complex, 2>, 2>;
 
-struct Loaded {
-  scene::SceneSpec spec;
-  model::RollingModel model;
-};
-
-Loaded load(const std::string& relative, const std::vector<std::string>& overrides = {}) {
-  Loaded l{model::loadScene((test::sourceDir() / relative).string(), overrides), {}};
-  l.model = model::buildSceneModel(l.spec);
-  return l;
-}
+using scene_fixture::load;
+using scene_fixture::Loaded;
 
 Vec3 toVec(const glm::vec3& p) { return {double(p.x), double(p.y), double(p.z)}; }
 

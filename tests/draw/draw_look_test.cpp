@@ -17,6 +17,7 @@
 
 #include "draw/draw_style.hpp"
 #include "draw/scene_drawer.hpp"
+#include "loaded_scene.hpp"
 #include "model/rolling_model.hpp"
 #include "motion/frame_sampling.hpp"
 #include "support/sweep.hpp"
@@ -27,16 +28,8 @@ namespace {
 using namespace rollspin::model;
 using namespace rollspin::motion;
 
-struct Loaded {
-  scene::SceneSpec spec;
-  RollingModel model;
-};
-
-Loaded load(const std::string& relative, const std::vector<std::string>& overrides = {}) {
-  Loaded l{loadScene((test::sourceDir() / relative).string(), overrides), {}};
-  l.model = buildSceneModel(l.spec);
-  return l;
-}
+using scene_fixture::load;
+using scene_fixture::Loaded;
 
 glm::vec3 ndc(const render::View& v, const glm::vec3& world) {
   const glm::vec4 c = v.camera.clipFromView * v.camera.viewFromWorld * glm::vec4(world, 1.0f);

@@ -18,22 +18,15 @@
 
 #include "draw/camera_framing.hpp"
 #include "draw/surface_looks.hpp"
+#include "loaded_scene.hpp"
 #include "model/rolling_model.hpp"
 #include "support/test_files.hpp"
 
 namespace rollspin::draw {
 namespace surface_looks_test {
 
-struct Loaded {
-  scene::SceneSpec spec;
-  model::RollingModel model;
-};
-
-Loaded load(const std::string& relative) {
-  Loaded l{model::loadScene((test::sourceDir() / relative).string(), {}), {}};
-  l.model = model::buildSceneModel(l.spec);
-  return l;
-}
+using scene_fixture::load;
+using scene_fixture::Loaded;
 
 Vec3 toVec(const glm::vec3& p) { return {double(p.x), double(p.y), double(p.z)}; }
 

@@ -16,6 +16,7 @@
 
 #include "draw/draw_style.hpp"
 #include "draw/twin_view.hpp"
+#include "loaded_scene.hpp"
 #include "model/rolling_model.hpp"
 #include "motion/frame_sampling.hpp"
 #include "render/mesh_builders.hpp"
@@ -27,16 +28,8 @@ namespace twin_view_test {
 using geometry::Vec3;
 using Complex = std::complex<double>;
 
-struct Loaded {
-  scene::SceneSpec spec;
-  model::RollingModel model;
-};
-
-Loaded load(const std::string& relative, const std::vector<std::string>& overrides = {}) {
-  Loaded l{model::loadScene((test::sourceDir() / relative).string(), overrides), {}};
-  l.model = model::buildSceneModel(l.spec);
-  return l;
-}
+using scene_fixture::load;
+using scene_fixture::Loaded;
 
 Vec3 toVec(const glm::vec3& p) { return {double(p.x), double(p.y), double(p.z)}; }
 

@@ -212,4 +212,8 @@ using GlProcResolver = GlProc (*)(const char* name);
 // (the table serves one backend at a time: the last one to fill it). Throws
 // rollspin::Error (Runtime) naming `library` and the first missing function.
 void loadGlFunctions(GlProcResolver resolve, std::string_view library);
+// Any GL entry point of the backend that filled the table last, for a call
+// the table does not carry (the tests' queries: glIsTexture,
+// glGetTextureImage); null when there is none or no table was filled.
+GlProc glProcAddress(const char* name);
 }  // namespace rollspin::render

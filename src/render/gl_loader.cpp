@@ -43,15 +43,25 @@ void* openGlLibrary(const char* overrideVariable, std::initializer_list<const ch
   return nullptr;
 }
 
+namespace {
+// Contexts are made on several threads in tests; the table is process-wide.
+std::mutex tableMutex;
+GlProcResolver tableResolver = nullptr;  // the one that filled the table last
+}  // namespace
+
 void loadGlFunctions(GlProcResolver resolve, std::string_view library) {
-  // Contexts are made on several threads in tests; the table is process-wide.
-  static std::mutex mutex;
-  const std::lock_guard lock(mutex);
+  const std::lock_guard lock(tableMutex);
+  tableResolver = resolve;
 #define ROLLSPIN_GL_LOAD(name) \
   name = reinterpret_cast<gl_api::name##_type>(resolve(#name)); \
   if (name == nullptr) throw runtimeError({}, "{} does not provide {}: OpenGL 4.5 needed", library, #name);
   ROLLSPIN_GL_FUNCTIONS(ROLLSPIN_GL_LOAD)
 #undef ROLLSPIN_GL_LOAD
+}
+
+GlProc glProcAddress(const char* name) {
+  const std::lock_guard lock(tableMutex);
+  return tableResolver != nullptr ? tableResolver(name) : nullptr;
 }
 
 bool isSoftwareRenderer(std::string_view glRenderer) {

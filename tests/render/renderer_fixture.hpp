@@ -1,4 +1,4 @@
-// The renderer tests' shared fixture: one GL context and renderer for the
+// The renderer tests' shared fixtures: one GL context (and renderer) for the
 // suite (ROLLSPIN_GL chooses the backend), and the views and materials that
 // several passes' tests draw.
 #pragma once
@@ -14,6 +14,15 @@
 #include "render/renderer.hpp"
 
 namespace rollspin::render {
+
+// A GL context and nothing else, for the renderer's internals (its GL
+// objects, programs, caches and targets) tested one by one.
+class GlContextTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { context_ = createContext().release(); }
+  static void TearDownTestSuite() { delete context_; }
+  inline static GlContext* context_ = nullptr;
+};
 
 class RendererTest : public ::testing::Test {
  protected:

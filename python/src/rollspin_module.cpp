@@ -228,8 +228,8 @@ class Scene {
     auto found = stills_.find(key);
     if (found != stills_.end()) return *found->second;
     auto still = std::make_unique<StillJob>();
-    still->request = {source_.name, source_.overrides,       {}, width,       height, transparent,
-                      {},           media::OutputUse::Still, 0,  source_.text};
+    still->request = {source_.name, source_.overrides,       {}, width,        height,    transparent,
+                      {},           media::OutputUse::Still, 0,  source_.text, spec_.name};
     still->job = jobs::prepareDrawJob(still->request);
     // As `render --still`: a scene with [figure] keys keeps the figure's composition.
     if (jobs::setsFigureKeys(still->job.spec)) still->job.figureText = jobs::fitTextToFigure(still->job.spec);
@@ -336,6 +336,7 @@ py::tuple renderClip(const std::shared_ptr<const Scene>& scene, const fs::path& 
   jobs::AnimationOptions o;
   o.scenePath = scene->source().name;
   o.sceneText = scene->source().text;
+  o.sceneName = scene->spec().name;  // a text scene's ("scene", or the name load_output() read)
   o.overrides = scene->source().overrides;
   o.output = output;
   o.frames = std::move(frames);
@@ -364,6 +365,7 @@ std::string viewerHtml(const std::shared_ptr<const Scene>& scene) {
   jobs::DrawJobRequest request;
   request.scenePath = scene->source().name;
   request.sceneText = scene->source().text;
+  request.sceneName = scene->spec().name;
   request.overrides = scene->source().overrides;
   request.use = media::OutputUse::Animation;
   return jobs::viewerHtml(jobs::prepareDrawJob(request), scene->source().name);

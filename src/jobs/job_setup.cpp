@@ -27,6 +27,9 @@ DrawJob prepareDrawJob(const DrawJobRequest& r) {
   DrawJob job{loadSceneWithFlags(r.scenePath, r.overrides, flags, r.sceneText), nullptr, {}, {}};
   scene::SceneSpec& spec = job.spec;
   if (!r.sceneName.empty()) spec.name = r.sceneName;
+  // Text without a name (an API caller's): the name Python gives one, not
+  // "" (a job record without a scene, a default output "output/.mp4").
+  if (spec.name.empty()) spec.name = "scene";
   const media::OutputFormat& format = chooseOutputFormat(spec, r.output, r.use);
   job.format = &format;
   // What the format's row asks of the output. A GIF: its own default size

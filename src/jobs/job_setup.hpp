@@ -35,7 +35,7 @@ struct DrawJobRequest {
   media::OutputUse use = media::OutputUse::Still;
   std::uint64_t extraBytesPerPixel = 0;  // what the job adds to the renderer's frame memory
   std::optional<std::string> sceneText;  // the scene itself (Python's loads()); scenePath names it
-  std::string sceneName{};               // with sceneText: the scene's name ("" = keep the loader's)
+  std::string sceneName{};               // with sceneText: the scene's name ("" = "scene")
 };
 
 struct DrawJob {

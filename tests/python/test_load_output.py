@@ -26,3 +26,20 @@ def test_load_of_an_output_without_metadata_is_a_scene_error(tmp_path):
     run_cli("render", "torus", "--still", "--width", "64", "--height", "48", "--no-metadata", "-o", png)
     with pytest.raises(rollspin.SceneError, match="no rollspin metadata"):
         rollspin.load(png)
+
+
+def test_what_python_writes_remembers_the_scenes_name(tmp_path):
+    # A scene from text is "scene"; one read back from an output keeps the
+    # name its job recorded, through a still and a clip written from Python.
+    text = '[ball]\nradius = 0.5\n[path]\nkind = "circle"\nradius = 2\n[animation]\nduration = 1\nfps = 4\nhold = 0\n'
+    still = tmp_path / "still.png"
+    rollspin.loads(text).still(width=64, height=48).save(still)
+    assert rollspin.load(still).name == "scene"
+    png = tmp_path / "fig.png"
+    run_cli("render", "torus", "--still", "--width", "64", "--height", "48", "-o", png)
+    clip = tmp_path / "again.gif"
+    rollspin.load(png).render(clip, width=64, height=48, frames="0:1")
+    assert rollspin.load(clip).name == "torus"
+    again = tmp_path / "again.png"
+    rollspin.load(clip).still(width=64, height=48).save(again)
+    assert rollspin.load(again).name == "torus"

@@ -76,8 +76,8 @@ TEST(AnimationJob, AFrameRangeIntoAFolderWritesThoseFramesUnderTheirClipIndex) {
   EXPECT_EQ(r.framesRequested, 4);
   EXPECT_EQ(r.framesWritten, 4);
   EXPECT_EQ(r.interruptedBy, 0);
-  EXPECT_EQ(namesIn(dir / "frames"), (std::vector<std::string>{"frame_00003.png", "frame_00004.png",
-                                                               "frame_00005.png", "frame_00006.png"}));
+  EXPECT_EQ(namesIn(dir / "frames"),
+            (std::vector<std::string>{"frame_00003.png", "frame_00004.png", "frame_00005.png", "frame_00006.png"}));
   EXPECT_EQ(progress, (std::vector<std::pair<long long, long long>>{{1, 4}, {2, 4}, {3, 4}, {4, 4}}));
 }
 

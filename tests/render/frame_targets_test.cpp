@@ -69,8 +69,8 @@ TEST_F(GlContextTest, TheScenesPackedViewIsItsColourOneWordAPixelRedInTheLowByte
   targets.ensure(4, 4, 1);
   clearTo(targets.sceneFbo, {0x11 / 255.0f, 0x22 / 255.0f, 0x33 / 255.0f, 0x44 / 255.0f}, 1.0f);
   std::vector<std::uint32_t> words(16);
-  TEST_GL(glGetTextureImage)(targets.scenePacked, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, GLsizei(words.size() * 4),
-                             words.data());
+  TEST_GL(glGetTextureImage)
+  (targets.scenePacked, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, GLsizei(words.size() * 4), words.data());
   EXPECT_EQ(words[0], 0x44332211u);
   EXPECT_EQ(words[15], 0x44332211u);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

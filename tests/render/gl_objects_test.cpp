@@ -20,7 +20,8 @@ namespace rollspin::render {
 namespace {
 
 // A library read from `dir`, holding `files` (name → source).
-ShaderLibrary libraryOf(const std::filesystem::path& dir, const std::vector<std::pair<std::string, std::string>>& files) {
+ShaderLibrary libraryOf(const std::filesystem::path& dir,
+                        const std::vector<std::pair<std::string, std::string>>& files) {
   for (const auto& [name, source] : files) std::ofstream(dir / (name + ".glsl")) << source;
   return ShaderLibrary(dir);
 }
@@ -131,8 +132,7 @@ TEST_F(GlContextTest, AFramebufferGlCannotCompleteIsAnErrorThatSaysWhatAndHowLar
     FAIL() << "a framebuffer with no attachment is incomplete";
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::Runtime);
-    EXPECT_NE(std::string(e.what()).find("could not create a 640x360 retained layer with 4 samples"),
-              std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("could not create a 640x360 retained layer with 4 samples"), std::string::npos)
         << e.what();
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -142,11 +142,11 @@ TEST_F(GlContextTest, AFramebufferGlCannotCompleteIsAnErrorThatSaysWhatAndHowLar
 // a uniform is set by name, its location looked up once.
 TEST_F(GlContextTest, AProgramTakesItsDefinesAfterTheVersionLineAndItsUniformsByName) {
   const auto dir = test::freshTempDir("gl_objects_program");
-  const ShaderLibrary lib =
-      libraryOf(dir, {{"full.vert", kFullScreen},
-                      {"level.frag", "#version 450 core\n#ifndef RED\n#error RED is not defined\n#endif\n"
-                                     "uniform float green;\nout vec4 colour;\n"
-                                     "void main() { colour = vec4(RED, green, 0.0, 1.0); }\n"}});
+  const ShaderLibrary lib = libraryOf(dir, {{"full.vert", kFullScreen},
+                                            {"level.frag",
+                                             "#version 450 core\n#ifndef RED\n#error RED is not defined\n#endif\n"
+                                             "uniform float green;\nout vec4 colour;\n"
+                                             "void main() { colour = vec4(RED, green, 0.0, 1.0); }\n"}});
   Program program(lib, "full.vert", "level.frag", {}, "#define RED 1.0\n");
   GlObject target = GlObject::createTexture(GL_TEXTURE_2D);
   glTextureStorage2D(target, 1, GL_RGBA8, 2, 2);
@@ -179,8 +179,9 @@ TEST_F(GlContextTest, AShaderThatDoesNotCompileOrLinkIsNamedWithGlsLog) {
   const ShaderLibrary lib =
       libraryOf(dir, {{"full.vert", kFullScreen},
                       {"broken.frag", "#version 450 core\nout vec4 colour;\nvoid main() { colour = vec4(1.0) }\n"},
-                      {"unfed.frag", "#version 450 core\nin vec3 neverWritten;\nout vec4 colour;\n"
-                                     "void main() { colour = vec4(neverWritten, 1.0); }\n"}});
+                      {"unfed.frag",
+                       "#version 450 core\nin vec3 neverWritten;\nout vec4 colour;\n"
+                       "void main() { colour = vec4(neverWritten, 1.0); }\n"}});
   try {
     Program bad(lib, "full.vert", "broken.frag");
     FAIL() << "a missing semicolon compiles";

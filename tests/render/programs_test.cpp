@@ -21,7 +21,7 @@ TEST_F(GlContextTest, AMeshVariantIsCompiledOnceAndEachSwitchMakesItsOwn) {
   // one compiles and links, and none is another's program.
   std::set<const Program*> variants{&plain};
   for (int pattern = 1; pattern <= 3; ++pattern) variants.insert(&programs.mesh(pattern, false, true, true));
-  variants.insert(&programs.mesh(0, true, true, true));    // shadowed
+  variants.insert(&programs.mesh(0, true, true, true));     // shadowed
   variants.insert(&programs.mesh(0, false, false, false));  // unlit
   variants.insert(&programs.mesh(0, false, true, false));   // no highlight
   variants.insert(&programs.mesh(0, false, true, true, 1));

@@ -47,8 +47,8 @@ class TextPassTest : public GlContextTest {
     const auto p = pixels();
     for (int y = 0; y < kHeight; ++y)
       for (int x = 0; x < kWidth; ++x)
-        if (const auto& c = p[std::size_t(y * kWidth + x)]; std::min({c[0], c[1], c[2]}) < 250) r = PixelRect{std::min(r.x0, x), std::min(r.y0, y),
-                                                                    std::max(r.x1, x + 1), std::max(r.y1, y + 1)};
+        if (const auto& c = p[std::size_t(y * kWidth + x)]; std::min({c[0], c[1], c[2]}) < 250)
+          r = PixelRect{std::min(r.x0, x), std::min(r.y0, y), std::max(r.x1, x + 1), std::max(r.y1, y + 1)};
     return r.empty() ? PixelRect{} : r;
   }
   static LabelItem label(const char* text, glm::vec2 anchor) {

@@ -62,15 +62,19 @@ std::string joined(const std::vector<std::string>& items, const std::string& sep
   return out;
 }
 
-// roff: backslashes and hyphens escaped, a leading '.' or '\'' neutralised.
+// roff: backslashes and hyphens escaped, a '.' or '\'' that starts a line
+// (the text's first, or one after a newline in a description) neutralised:
+// roff would read the line as a request.
 std::string roff(const std::string& text) {
   std::string out;
+  bool lineStart = true;
   for (char c : text) {
+    if (lineStart && (c == '.' || c == '\'')) out += "\\&";
     if (c == '\\') out += "\\e";
     else if (c == '-') out += "\\-";
     else out += c;
+    lineStart = c == '\n';
   }
-  if (!out.empty() && (out[0] == '.' || out[0] == '\'')) out = "\\&" + out;
   return out;
 }
 

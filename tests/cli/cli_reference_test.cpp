@@ -38,7 +38,7 @@ struct ReferenceApp {
     render->add_flag("--still", still, ".starts with a dot and a back\\slash");
     CLI::App* report = app.add_subcommand("report", "Write a report");
     CLI::App* errors = report->add_subcommand("errors", "The error report");
-    errors->add_option("--max-delta", delta, "Largest difference");
+    errors->add_option("--max-delta", delta, "Largest difference\n.in radians\n'or none'");
     errors->add_option("scenes", scenes, "Scenes to compare");
     CLI::App* hidden = app.add_subcommand("secretcmd", "Hidden from the reference");
     hidden->group("");
@@ -213,6 +213,8 @@ TEST(CliReference, ManPageEscapesRoffInDescriptions) {
   // A leading '.' would be read as a macro, a backslash as an escape.
   EXPECT_TRUE(has(man, "\n\\&.starts with a dot and a back\\eslash\n")) << man;
   EXPECT_FALSE(has(man, "\n.starts with")) << man;
+  // So would a line of a description that starts with '.' or '\''.
+  EXPECT_TRUE(has(man, "Largest difference\n\\&.in radians\n\\&'or none'\n")) << man;
 }
 
 TEST(CliReference, RealAppManPageHasEveryVisibleCommandAndOptionOnce) {

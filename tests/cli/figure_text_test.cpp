@@ -141,8 +141,12 @@ TEST(FigureText, ATextLeftOutIsNamedWithTheWidthAndTheSizeThatKeepIt) {
   for (const LeftOutEntry& e : leftOut) {
     EXPECT_NE(err.find("\"" + e.text + "\" left out: no room at 85 mm and 8 pt"), std::string::npos) << err;
     EXPECT_EQ(json.find("{\"text\": \"" + e.text + "\", \"box\""), std::string::npos) << e.text << " is drawn too";
-    if (e.widthMm) EXPECT_GT(*e.widthMm, 85.0) << e.text;
-    if (e.fontPt) EXPECT_LT(*e.fontPt, 8.0) << e.text;
+    if (e.widthMm) {
+      EXPECT_GT(*e.widthMm, 85.0) << e.text;
+    }
+    if (e.fontPt) {
+      EXPECT_LT(*e.fontPt, 8.0) << e.text;
+    }
   }
   const auto named = std::find_if(leftOut.begin(), leftOut.end(), [](const LeftOutEntry& e) { return e.widthMm; });
   ASSERT_NE(named, leftOut.end()) << "no width keeps any of them: " << json;

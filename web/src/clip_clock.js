@@ -1,5 +1,5 @@
 // The clip's clock (the MP4's timing: motion::FrameClock, embedded by
-// src/app/viewer_timeline.cpp as pieces in the clip's seconds): piece k runs
+// src/jobs/viewer_timeline.cpp as pieces in the clip's seconds): piece k runs
 // from seconds[k] to seconds[k + 1] and shows
 //   s(t) = s0[k] + (s1[k] − s0[k]) · ease(x),  x = (t − seconds[k]) / (seconds[k + 1] − seconds[k])
 // with ease(x) = x, or 3x² − 2x³ when smooth; a hold where s0 = s1. The

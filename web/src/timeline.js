@@ -1,5 +1,5 @@
 // The solver's timeline at any arc length s, from the knots the C++ side
-// embeds (src/app/viewer_timeline.hpp): cubic Hermite interpolation with the
+// embeds (src/jobs/viewer_timeline.hpp): cubic Hermite interpolation with the
 // solver's own derivatives, never slerp.
 //   dq/ds = −½ (0, B) ⊗ q            (U = qw − i q·σ, dU/ds = −(i/2) ω·σ U, B = −ω)
 //   dC/ds = embedded per knot         ((1 − κ_n R) t − R τ_g u)
